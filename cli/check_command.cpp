@@ -1,0 +1,45 @@
+// polyplan check WORLD.json PATH.json [--json -]: is this polyline a valid motion? Exit 0 when
+// it is, 1 when it is not, 2 on bad input.
+#include "cli/command.hpp"
+
+#include "geometry/cspace.hpp"
+#include "geometry/path_check.hpp"
+#include "geometry/world_reader.hpp"
+
+#include <iostream>
+
+namespace polyplan::cli {
+namespace {
+
+struct CheckOptions {
+  std::string world;
+  std::string path;
+  std::string json;
+};
+
+int run_check(const CheckOptions& options) {
+  std::vector<std::string> warnings;
+  const World world = read_world(options.world, &warnings);
+  print_warnings(warnings);
+  const std::vector<ExactPoint> path = read_path(options.path);
+  const CSpace cspace(world);
+  const PathCheck result = check_path(cspace, path);
+  nlohmann::json out{{"valid", result.valid}, {"reason", result.reason}};
+  if (result.segment) out["segment"] = *result.segment;
+  if (!options.json.empty()) write_json(out, options.json);
+  if (options.json != "-") std::cout << (result.valid ? "valid" : "invalid: " + result.reason) << '\n';
+  return result.valid ? ok : invalid_path;
+}
+
+}  // namespace
+
+void add_check_command(CLI::App& app, Action& run) {
+  auto options = std::make_shared<CheckOptions>();
+  CLI::App* command = app.add_subcommand("check", "Check exactly whether a path is free in a world");
+  command->add_option("world", options->world, "World file (JSON)")->required();
+  command->add_option("path", options->path, "Path file: {\"path\": [[x, y], ...]}")->required();
+  command->add_option("--json", options->json, "Write {\"valid\", \"reason\"} as JSON to this file ('-' for standard output)");
+  command->callback([options, &run] { run = [options] { return run_check(*options); }; });
+}
+
+}  // namespace polyplan::cli

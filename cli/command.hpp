@@ -1,0 +1,27 @@
+#pragma once
+// What every subcommand shares: how it reports output and which exit codes it uses.
+#include <nlohmann/json.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace polyplan::cli {
+
+// DESIGN.md: 0 for answers (including "no path"), 1 for a path that is not free, 2 for bad input.
+enum Exit : int { ok = 0, invalid_path = 1, bad_input = 2, internal_error = 3 };
+
+// Each command registers itself on the app and leaves its action in `run`, called after parsing.
+using Action = std::function<int()>;
+
+void add_cspace_command(CLI::App& app, Action& run);
+void add_check_command(CLI::App& app, Action& run);
+
+// Writes `value` to `target` ("-" is standard output); throws InputError if it cannot.
+void write_json(const nlohmann::json& value, const std::string& target);
+
+// Prints warnings of the world reader on stderr.
+void print_warnings(const std::vector<std::string>& warnings);
+
+}  // namespace polyplan::cli

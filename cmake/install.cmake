@@ -1,0 +1,23 @@
+# `cmake --install` puts headers, libraries, the polyplan program and a package config in the
+# prefix, so that find_package(polyplan) + target_link_libraries(app polyplan::polyplan) works.
+include(CMakePackageConfigHelpers)
+
+install(TARGETS polyplan polyplan_geometry polyplan_search polyplan_roadmaps polyplan_arm
+  EXPORT polyplanTargets
+  LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+  RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS polyplan_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+foreach(folder geometry search roadmaps arm)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/polyplan/${folder}
+    FILES_MATCHING PATTERN "*.hpp" PATTERN "detail" EXCLUDE)
+endforeach()
+
+set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/polyplan)
+install(EXPORT polyplanTargets NAMESPACE polyplan:: DESTINATION ${config_dir})
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/polyplanConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/polyplanConfig.cmake INSTALL_DESTINATION ${config_dir})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/polyplanConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/polyplanConfig.cmake ${PROJECT_BINARY_DIR}/polyplanConfigVersion.cmake
+  DESTINATION ${config_dir})

@@ -1,0 +1,30 @@
+#pragma once
+// Exact rational numbers as they appear in files and in public interfaces.
+// GMP's C++ class is used here (not CGAL's number types) so that every includer
+// of a public header compiles in milliseconds; geometry/detail converts to CGAL.
+#include <gmpxx.h>
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace polyplan {
+
+using Rational = mpq_class;
+
+struct ExactPoint {
+  Rational x, y;
+  friend bool operator==(const ExactPoint& a, const ExactPoint& b) { return a.x == b.x && a.y == b.y; }
+};
+
+// Parses a number written as text exactly: integers ("-12"), decimals ("0.1" is 1/10),
+// exponents ("1e-3", "2.5E+2"), and rationals ("3/4", "-1/3"). On failure returns nullopt
+// and, if `why` is given, stores a short reason ("zero denominator", "not a number").
+std::optional<Rational> parse_rational(std::string_view text, std::string* why = nullptr);
+
+// "p/q" in lowest terms, or "n" for an integer: the inverse of parse_rational.
+std::string to_string(const Rational& value);
+
+inline double to_double(const Rational& value) { return value.get_d(); }
+
+}  // namespace polyplan

@@ -1,0 +1,68 @@
+// WKT obstacles through CGAL's reader. It parses numbers as double (Boost.Geometry under the
+// hood), so WKT coordinates are exact only as the doubles they become; the JSON world format
+// is the exact one.
+#include "geometry/detail/world_checks.hpp"
+#include "geometry/input_error.hpp"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/IO/WKT.h>
+#include <CGAL/Polygon_with_holes_2.h>
+
+#include <cctype>
+#include <fstream>
+#include <sstream>
+
+namespace polyplan::detail {
+namespace {
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+
+template <typename Polygon2>
+Ring ring_from(const Polygon2& polygon) {
+  Ring ring;
+  for (const auto& p : polygon.vertices()) ring.push_back({Rational(p.x()), Rational(p.y())});
+  return ring;
+}
+
+bool has_text(const std::string& s) {
+  for (char c : s)
+    if (!std::isspace(static_cast<unsigned char>(c))) return true;
+  return false;
+}
+
+}  // namespace
+
+std::vector<PolygonWithHoles> read_wkt_obstacles(const std::string& wkt_path, const std::string& from_file) {
+  const std::string prefix = from_file + ": obstacles_wkt \"" + wkt_path + "\": ";
+  std::ifstream in(wkt_path);
+  if (!in) throw InputError(prefix + "cannot open file");
+  std::ostringstream content;
+  content << in.rdbuf();
+  const std::string text = content.str();
+
+  std::istringstream lines(text);
+  std::string line;
+  std::size_t line_number = 0;
+  std::vector<PolygonWithHoles> obstacles;
+  while (std::getline(lines, line)) {
+    ++line_number;
+    if (!has_text(line)) continue;
+    std::vector<Epick::Point_2> points;
+    std::vector<std::vector<Epick::Point_2>> polylines;
+    std::vector<CGAL::Polygon_with_holes_2<Epick>> polygons;
+    std::istringstream one(line);
+    const bool ok = CGAL::IO::read_WKT(one, points, polylines, polygons);
+    if (!ok || polygons.empty())
+      throw InputError(prefix + "line " + std::to_string(line_number) +
+                       ": cannot read WKT: expected a POLYGON or MULTIPOLYGON");
+    for (const auto& polygon : polygons) {
+      PolygonWithHoles obstacle{ring_from(polygon.outer_boundary()), {}};
+      for (auto h = polygon.holes_begin(); h != polygon.holes_end(); ++h) obstacle.holes.push_back(ring_from(*h));
+      obstacles.push_back(std::move(obstacle));
+    }
+  }
+  if (obstacles.empty()) throw InputError(prefix + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
+  return obstacles;
+}
+
+}  // namespace polyplan::detail

@@ -1,0 +1,223 @@
+#include "geometry/world_reader.hpp"
+
+#include "geometry/detail/world_checks.hpp"
+#include "geometry/input_error.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace polyplan {
+namespace {
+
+using json = nlohmann::json;
+
+// Builds the usual DOM, except that floating-point literals are kept as their source text
+// (a string), so that 0.1 can be read as exactly 1/10. Integers arrive exact already.
+class ExactNumberSax {
+ public:
+  explicit ExactNumberSax(json& root) : dom_(root, /*allow_exceptions=*/false) {}
+  bool null() { return dom_.null(); }
+  bool boolean(bool v) { return dom_.boolean(v); }
+  bool number_integer(json::number_integer_t v) { return dom_.number_integer(v); }
+  bool number_unsigned(json::number_unsigned_t v) { return dom_.number_unsigned(v); }
+  bool number_float(json::number_float_t, const json::string_t& text) {
+    json::string_t copy = text;
+    return dom_.string(copy);
+  }
+  bool string(json::string_t& v) { return dom_.string(v); }
+  bool binary(json::binary_t& v) { return dom_.binary(v); }
+  bool start_object(std::size_t n) { return dom_.start_object(n); }
+  bool key(json::string_t& k) { return dom_.key(k); }
+  bool end_object() { return dom_.end_object(); }
+  bool start_array(std::size_t n) { return dom_.start_array(n); }
+  bool end_array() { return dom_.end_array(); }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) {
+    error = "invalid JSON at byte " + std::to_string(position) + ": " + ex.what();
+    return false;
+  }
+  std::string error;
+
+ private:
+  nlohmann::detail::json_sax_dom_parser<json> dom_;
+};
+
+// Reading context: the file name and a path of keys, so every message names the object.
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& object, const std::string& problem) const {
+    throw InputError(file_ + ": " + object + ": " + problem);
+  }
+
+  json parse(const std::string& text) const {
+    json root;
+    ExactNumberSax sax(root);
+    bool ok = json::sax_parse(text, &sax);
+    if (!ok) throw InputError(file_ + ": " + (sax.error.empty() ? "invalid JSON" : sax.error));
+    return root;
+  }
+
+  Rational number(const json& v, const std::string& object) const {
+    std::string text;
+    if (v.is_number_integer()) return v.is_number_unsigned() ? Rational(mpz_class(std::to_string(v.get<std::uint64_t>()))) :
+                                                            Rational(mpz_class(std::to_string(v.get<std::int64_t>())));
+    if (!v.is_string()) fail(object, "not a number: " + v.dump());
+    std::string why;
+    auto value = parse_rational(v.get<std::string>(), &why);
+    if (!value) fail(object, why + ": " + v.dump());
+    return *value;
+  }
+
+  ExactPoint point(const json& v, const std::string& object) const {
+    if (!v.is_array() || v.size() < 2) fail(object, "expected a point [x, y], got " + abbreviated(v));
+    if (v.size() == 3)
+      fail(object, "orientation given ([x, y, theta]) but rotating robots are not supported yet");
+    if (v.size() != 2) fail(object, "expected a point [x, y], got " + abbreviated(v));
+    return {number(v[0], object + "[0]"), number(v[1], object + "[1]")};
+  }
+
+  Ring ring(const json& v, const std::string& object) const {
+    if (!v.is_array()) fail(object, "expected a list of points [[x, y], ...], got " + abbreviated(v));
+    Ring r;
+    r.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) r.push_back(point(v[i], object + "[" + std::to_string(i) + "]"));
+    return r;
+  }
+
+  PolygonWithHoles polygon(const json& v, const std::string& object, std::vector<std::string>* warnings) const {
+    if (v.is_array()) return {ring(v, object), {}};
+    if (!v.is_object()) fail(object, "expected a polygon (a list of points or {\"outer\", \"holes\"}), got " + abbreviated(v));
+    warn_unknown(v, object, {"outer", "holes"}, warnings);
+    PolygonWithHoles p;
+    p.outer = ring(required(v, "outer", object), object + ".outer");
+    if (v.contains("holes")) {
+      const json& holes = v["holes"];
+      if (!holes.is_array()) fail(object + ".holes", "expected a list of rings");
+      for (std::size_t i = 0; i < holes.size(); ++i)
+        p.holes.push_back(ring(holes[i], object + ".holes[" + std::to_string(i) + "]"));
+    }
+    return p;
+  }
+
+  const json& required(const json& object_value, const char* key, const std::string& object) const {
+    if (!object_value.contains(key)) fail(object, std::string("missing field \"") + key + "\"");
+    return object_value[key];
+  }
+
+  void warn_unknown(const json& v, const std::string& object, const std::set<std::string>& known,
+                    std::vector<std::string>* warnings) const {
+    if (!warnings) return;
+    for (const auto& item : v.items())
+      if (!known.count(item.key()))
+        warnings->push_back(file_ + ": " + object + ": unknown field \"" + item.key() + "\" ignored");
+  }
+
+  static std::string abbreviated(const json& v) {
+    std::string s = v.dump();
+    return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+};
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+World parse_world(const std::string& text, const std::string& name, std::vector<std::string>* warnings) {
+  Reader r(name);
+  json root = r.parse(text);
+  if (!root.is_object()) r.fail("world", "expected a JSON object at the top level");
+  r.warn_unknown(root, "world", {"bounds", "obstacles", "obstacles_wkt", "robot", "start", "goal", "queries"}, warnings);
+
+  World world;
+  world.source = name;
+
+  if (root.contains("bounds")) {
+    const json& b = root["bounds"];
+    if (!b.is_array() || b.size() != 4) r.fail("bounds", "expected [xmin, ymin, xmax, ymax], got " + Reader::abbreviated(b));
+    world.bounds = Bounds{r.number(b[0], "bounds[0]"), r.number(b[1], "bounds[1]"), r.number(b[2], "bounds[2]"),
+                          r.number(b[3], "bounds[3]")};
+  }
+
+  if (!root.contains("obstacles") && !root.contains("obstacles_wkt"))
+    r.fail("world", "missing field \"obstacles\" (use [] for a world without obstacles)");
+  if (root.contains("obstacles")) {
+    const json& obstacles = root["obstacles"];
+    if (!obstacles.is_array()) r.fail("obstacles", "expected a list of polygons, got " + Reader::abbreviated(obstacles));
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      std::string object = "obstacles[" + std::to_string(i) + "]";
+      world.obstacles.push_back(r.polygon(obstacles[i], object, warnings));
+      world.obstacle_names.push_back(object);
+    }
+  }
+  if (root.contains("obstacles_wkt")) {
+    const json& wkt = root["obstacles_wkt"];
+    if (!wkt.is_string()) r.fail("obstacles_wkt", "expected a file name");
+    std::filesystem::path wkt_path = wkt.get<std::string>();
+    if (wkt_path.is_relative()) wkt_path = std::filesystem::path(name).parent_path() / wkt_path;
+    auto polygons = detail::read_wkt_obstacles(wkt_path.string(), name);
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      world.obstacles.push_back(std::move(polygons[i]));
+      world.obstacle_names.push_back(wkt_path.filename().string() + " polygon " + std::to_string(i));
+    }
+  }
+
+  if (root.contains("robot")) {
+    const json& robot = root["robot"];
+    if (!robot.is_object()) r.fail("robot", "expected {\"parts\": [...]}");
+    r.warn_unknown(robot, "robot", {"parts"}, warnings);
+    const json& parts = r.required(robot, "parts", "robot");
+    if (!parts.is_array()) r.fail("robot.parts", "expected a list of polygons");
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      world.robot.parts.push_back(r.ring(parts[i], "robot.parts[" + std::to_string(i) + "]"));
+  }
+
+  if (root.contains("start") != root.contains("goal"))
+    r.fail("world", root.contains("start") ? "missing field \"goal\" (start is given)" : "missing field \"start\" (goal is given)");
+  if (root.contains("start")) world.queries.push_back({r.point(root["start"], "start"), r.point(root["goal"], "goal"), "start/goal"});
+  if (root.contains("queries")) {
+    const json& queries = root["queries"];
+    if (!queries.is_array()) r.fail("queries", "expected a list of {\"start\", \"goal\"}");
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      std::string object = "queries[" + std::to_string(i) + "]";
+      const json& q = queries[i];
+      if (!q.is_object()) r.fail(object, "expected {\"start\": [x, y], \"goal\": [x, y]}");
+      r.warn_unknown(q, object, {"start", "goal"}, warnings);
+      world.queries.push_back({r.point(r.required(q, "start", object), object + ".start"),
+                               r.point(r.required(q, "goal", object), object + ".goal"), object});
+    }
+  }
+
+  detail::check_and_orient_world(world);
+  return world;
+}
+
+World read_world(const std::string& path, std::vector<std::string>* warnings) {
+  return parse_world(read_file(path), path, warnings);
+}
+
+std::vector<ExactPoint> read_path(const std::string& path) {
+  Reader r(path);
+  json root = r.parse(read_file(path));
+  if (!root.is_object()) r.fail("path file", "expected a JSON object {\"path\": [[x, y], ...]}");
+  const json& points = r.required(root, "path", "path file");
+  if (!points.is_array() || points.empty()) r.fail("path", "expected a non-empty list of points [[x, y], ...]");
+  return r.ring(points, "path");
+}
+
+}  // namespace polyplan

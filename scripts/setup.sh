@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# Installs the Debian packages polyplan builds with, if any is missing; does nothing otherwise.
+set -euo pipefail
+packages=(
+  cmake g++ make pkg-config
+  libcgal-dev libgmp-dev libmpfr-dev      # exact geometry and its numbers
+  libboost-dev libboost-graph-dev         # graph search
+  libeigen3-dev                           # arm kinematics
+  nlohmann-json3-dev libcli11-dev         # files and command line
+  libnanoflann-dev                        # nearest neighbours
+  libgtest-dev libbenchmark-dev           # tests and benchmarks
+  librsvg2-bin                            # rsvg-convert: look at the SVGs as PNGs
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+echo "setup: installing ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -eq 0 ] || sudo="sudo"
+$sudo apt-get update -q
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"

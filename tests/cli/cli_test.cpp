@@ -1,0 +1,153 @@
+// The polyplan program run as a user runs it: exit codes, one-line errors, JSON output.
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <sys/wait.h>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSource = POLYPLAN_SOURCE_DIR;
+
+struct Run {
+  int exit_code;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+Run polyplan(const std::string& arguments) {
+  const fs::path dir = fs::temp_directory_path() / ("polyplan_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string command = std::string("'") + POLYPLAN_CLI + "' " + arguments + " >'" + (dir / "out").string() +
+                              "' 2>'" + (dir / "err").string() + "' </dev/null";
+  const int status = std::system(command.c_str());
+  Run run{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(dir / "out"), slurp(dir / "err")};
+  fs::remove_all(dir);
+  return run;
+}
+
+std::string world(const std::string& name) { return "'" + kSource + "/data/worlds/" + name + "'"; }
+std::string path_file(const std::string& name) { return "'" + kSource + "/tests/data/paths/" + name + "'"; }
+
+std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+struct BadFile {
+  std::string file, expected;
+};
+
+std::vector<BadFile> bad_corpus() {
+  std::vector<BadFile> corpus;
+  std::ifstream in(kSource + "/tests/data/bad/expected.tsv");
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto tab = line.find('\t');
+    if (line.empty() || line[0] == '#' || tab == std::string::npos) continue;
+    corpus.push_back({line.substr(0, tab), line.substr(tab + 1)});
+  }
+  return corpus;
+}
+
+}  // namespace
+
+TEST(BadInput, CorpusIsLargeEnough) { EXPECT_GE(bad_corpus().size(), 20u); }
+
+TEST(BadInput, EveryFileExitsTwoWithOneLineNamingTheProblem) {
+  for (const BadFile& bad : bad_corpus()) {
+    SCOPED_TRACE(bad.file);
+    const Run run = polyplan("cspace '" + kSource + "/tests/data/bad/" + bad.file + "'");
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_EQ(lines(run.err), 1u) << run.err;
+    EXPECT_NE(run.err.find(bad.expected), std::string::npos) << "expected \"" << bad.expected << "\" in: " << run.err;
+    EXPECT_NE(run.err.find(bad.file), std::string::npos) << "the message should name the file: " << run.err;
+  }
+}
+
+TEST(Cspace, EveryShippedWorldBuilds) {
+  std::size_t worlds = 0;
+  for (const auto& entry : fs::directory_iterator(kSource + "/data/worlds")) {
+    if (entry.path().extension() != ".json") continue;
+    SCOPED_TRACE(entry.path().string());
+    ++worlds;
+    const Run run = polyplan("cspace '" + entry.path().string() + "' --json -");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto summary = nlohmann::json::parse(run.out);
+    EXPECT_GE(summary["free_components"].size(), 1u);
+    EXPECT_GE(summary["seconds"].get<double>(), 0.0);
+  }
+  EXPECT_GE(worlds, 7u);
+}
+
+TEST(Cspace, ExactFitCorridorSplitsTheFreeSpace) {
+  const auto exact = nlohmann::json::parse(polyplan("cspace " + world("corridor_exact.json") + " --json -").out);
+  const auto wide = nlohmann::json::parse(polyplan("cspace " + world("corridor_wide.json") + " --json -").out);
+  EXPECT_EQ(exact["free_components"].size() + 1, wide["free_components"].size());
+}
+
+TEST(Cspace, AreasAreExactRationals) {
+  const auto summary = nlohmann::json::parse(polyplan("cspace " + world("touching_corners.json") + " --json -").out);
+  ASSERT_EQ(summary["free_components"].size(), 2u);
+  for (const auto& c : summary["free_components"]) {
+    EXPECT_EQ(c["area"], "4");
+    EXPECT_EQ(c["area_double"], 4.0);
+  }
+}
+
+TEST(Cspace, WritesAnSvgAndATable) {
+  const fs::path svg = fs::temp_directory_path() / "polyplan_cli_test_office.svg";
+  const Run run = polyplan("cspace " + world("office.json") + " --svg '" + svg.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("free component"), std::string::npos) << run.out;
+  EXPECT_NE(slurp(svg).find("<svg"), std::string::npos);
+  fs::remove(svg);
+}
+
+TEST(Check, ExitCodesFollowTheVerdict) {
+  struct Case {
+    const char *world, *path;
+    int exit_code;
+  } cases[] = {
+      {"touching_corners.json", "touching_corners_through_pinch.json", 1},
+      {"touching_corners.json", "touching_corners_touch_and_back.json", 0},
+      {"corridor_exact.json", "corridor_exact_through.json", 1},
+      {"corridor_wide.json", "corridor_wide_through.json", 0},
+      {"maze.json", "maze_solution.json", 0},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(std::string(c.world) + " " + c.path);
+    const Run run = polyplan("check " + world(c.world) + " " + path_file(c.path) + " --json -");
+    EXPECT_EQ(run.exit_code, c.exit_code) << run.out << run.err;
+    const auto verdict = nlohmann::json::parse(run.out);
+    EXPECT_EQ(verdict["valid"].get<bool>(), c.exit_code == 0);
+    EXPECT_EQ(verdict["reason"].get<std::string>().empty(), c.exit_code == 0);
+  }
+}
+
+TEST(Check, BadPathFileExitsTwo) {
+  const fs::path bad = fs::temp_directory_path() / "polyplan_cli_test_bad_path.json";
+  std::ofstream(bad) << R"({"path": [[0, 0], [1, "x"]]})";
+  const Run run = polyplan("check " + world("maze.json") + " '" + bad.string() + "'");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_NE(run.err.find("path[1][1]: not a number"), std::string::npos) << run.err;
+  fs::remove(bad);
+}
+
+TEST(Usage, HelpExitsZeroAndUnknownOptionsExitTwo) {
+  EXPECT_EQ(polyplan("--help").exit_code, 0);
+  EXPECT_EQ(polyplan("cspace --help").exit_code, 0);
+  EXPECT_EQ(polyplan("check --help").exit_code, 0);
+  EXPECT_EQ(polyplan("cspace").exit_code, 2);
+  EXPECT_EQ(polyplan("cspace " + world("maze.json") + " --frobnicate").exit_code, 2);
+  EXPECT_EQ(polyplan("teleport").exit_code, 2);
+}

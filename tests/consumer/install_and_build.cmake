@@ -1,0 +1,21 @@
+# Installs the build tree into a fresh prefix, then configures, builds and runs the consumer
+# project against it. Run with cmake -P (see tests/CMakeLists.txt).
+function(run)
+  execute_process(COMMAND ${ARGV} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT code EQUAL 0)
+    message(FATAL_ERROR "failed (${code}): ${ARGV}\n${out}\n${err}")
+  endif()
+  set(last_output "${out}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE ${WORK_DIR})
+set(prefix ${WORK_DIR}/prefix)
+run(${CMAKE_COMMAND} --install ${POLYPLAN_BUILD_DIR} --prefix ${prefix})
+if(EXISTS ${prefix}/include/polyplan/geometry/detail)
+  message(FATAL_ERROR "detail/ headers (CGAL) must not be installed")
+endif()
+run(${CMAKE_COMMAND} -S ${CONSUMER_SOURCE_DIR} -B ${WORK_DIR}/build -DCMAKE_PREFIX_PATH=${prefix} -DCMAKE_BUILD_TYPE=Release)
+run(${CMAKE_COMMAND} --build ${WORK_DIR}/build)
+run(${WORK_DIR}/build/consumer ${WORLD})
+message(STATUS "consumer says: ${last_output}")
+run(${prefix}/bin/polyplan cspace ${WORLD})

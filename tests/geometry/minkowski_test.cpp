@@ -1,0 +1,132 @@
+// C-obstacles against Minkowski sums worked out by hand.
+#include "geometry/cspace.hpp"
+#include "world_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace polyplan;
+using polyplan::test::canonical;
+using polyplan::test::pt;
+using polyplan::test::world_from;
+
+namespace {
+
+Rational area(const Ring& ring) {
+  Rational twice = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const auto &a = ring[i], &b = ring[(i + 1) % ring.size()];
+    twice += a.x * b.y - b.x * a.y;
+  }
+  return twice / 2;
+}
+
+Rational area(const PolygonWithHoles& p) {
+  Rational a = area(p.outer);
+  for (const auto& h : p.holes) a += area(h);  // holes are clockwise
+  return a;
+}
+
+}  // namespace
+
+TEST(Minkowski, SquareRobotAroundSquare) {
+  // Robot [0,1]^2 with its reference at the lower-left corner: the obstacle [0,2]^2 grows by the
+  // reflected robot [-1,0]^2 into [-1,2]^2.
+  const CSpace c(world_from(R"({"obstacles": [[[0, 0], [2, 0], [2, 2], [0, 2]]],
+                                "robot": {"parts": [[[0, 0], [1, 0], [1, 1], [0, 1]]]}})"));
+  ASSERT_EQ(c.cobstacles().size(), 1u);
+  EXPECT_EQ(canonical(c.cobstacles()[0].outer), (Ring{pt("-1", "-1"), pt("2", "-1"), pt("2", "2"), pt("-1", "2")}));
+}
+
+TEST(Minkowski, TriangleRobotAroundSquare) {
+  // -R = {(0,0), (-1,0), (0,-1)}: the lower-left corner of [-1,2]^2 is cut by the diagonal.
+  const CSpace c(world_from(R"({"obstacles": [[[0, 0], [2, 0], [2, 2], [0, 2]]],
+                                "robot": {"parts": [[[0, 0], [1, 0], [0, 1]]]}})"));
+  ASSERT_EQ(c.cobstacles().size(), 1u);
+  EXPECT_EQ(canonical(c.cobstacles()[0].outer),
+            (Ring{pt("-1", "0"), pt("0", "-1"), pt("2", "-1"), pt("2", "2"), pt("-1", "2")}));
+  EXPECT_EQ(area(c.cobstacles()[0]), Rational(17, 2));
+}
+
+TEST(Minkowski, ObstacleWithAHoleKeepsAShrunkHole) {
+  // A 6x6 ring with a 2x2 hole; a centred unit square robot shrinks the hole to 1x1.
+  const CSpace c(world_from(R"({"obstacles": [{"outer": [[0, 0], [6, 0], [6, 6], [0, 6]],
+                                                "holes": [[[2, 2], [4, 2], [4, 4], [2, 4]]]}],
+                                "robot": {"parts": [[[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]]}})"));
+  ASSERT_EQ(c.cobstacles().size(), 1u);
+  const PolygonWithHoles& cobstacle = c.cobstacles()[0];
+  ASSERT_EQ(cobstacle.holes.size(), 1u);
+  Ring hole = cobstacle.holes[0];
+  std::reverse(hole.begin(), hole.end());
+  EXPECT_EQ(canonical(hole), (Ring{pt("2.5", "2.5"), pt("3.5", "2.5"), pt("3.5", "3.5"), pt("2.5", "3.5")}));
+  EXPECT_EQ(area(cobstacle), Rational(48));
+  // The inside of the hole is a free component of its own: area exactly 1.
+  ASSERT_EQ(c.free_components().size(), 2u);
+  bool found_hole_component = false;
+  for (const auto& f : c.free_components()) found_hole_component |= f.area && *f.area == 1;
+  EXPECT_TRUE(found_hole_component);
+}
+
+TEST(Minkowski, RobotTooBigForTheHoleFillsIt) {
+  const CSpace c(world_from(R"({"obstacles": [{"outer": [[0, 0], [6, 0], [6, 6], [0, 6]],
+                                                "holes": [[[2, 2], [4, 2], [4, 4], [2, 4]]]}],
+                                "robot": {"parts": [[[-1, -1], [1, -1], [1, 1], [-1, 1]]]}})"));
+  ASSERT_EQ(c.cobstacles().size(), 1u);
+  EXPECT_TRUE(c.cobstacles()[0].holes.empty());
+  EXPECT_EQ(area(c.cobstacles()[0]), Rational(64));
+}
+
+TEST(Minkowski, NonConvexLShape) {
+  // L = [0,3]x[0,1] u [0,1]x[0,3] grown by a centred unit square: two 4x2 bars sharing 2x2.
+  const CSpace c(world_from(R"({"obstacles": [[[0, 0], [3, 0], [3, 1], [1, 1], [1, 3], [0, 3]]],
+                                "robot": {"parts": [[[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]]}})"));
+  ASSERT_EQ(c.cobstacles().size(), 1u);
+  EXPECT_EQ(area(c.cobstacles()[0]), Rational(12));
+  EXPECT_EQ(c.cobstacles()[0].outer.size(), 6u);
+}
+
+TEST(Minkowski, TwoPartRobotIsTheUnionOfThePartsSums) {
+  // House-shaped robot: rectangle [0,2]x[0,1] and roof triangle (0,1) (2,1) (1,2). Obstacle
+  // [0,1]^2. Rectangle's sum: [-2,1]x[-1,1], area 6. Roof's sum: hexagon of area 5 that overlaps
+  // it in [-2,1]x[-1,0] (area 3). Union: 6 + 5 - 3 = 8.
+  const std::string obstacle = R"("obstacles": [[[0, 0], [1, 0], [1, 1], [0, 1]]])";
+  const CSpace both(world_from("{" + obstacle + R"(, "robot": {"parts": [[[0, 0], [2, 0], [2, 1], [0, 1]],
+                                                                    [[0, 1], [2, 1], [1, 2]]]}})"));
+  ASSERT_EQ(both.cobstacles().size(), 1u);
+  EXPECT_EQ(area(both.cobstacles()[0]), Rational(8));
+  const CSpace roof(world_from("{" + obstacle + R"(, "robot": {"parts": [[[0, 1], [2, 1], [1, 2]]]}})"));
+  EXPECT_EQ(area(roof.cobstacles()[0]), Rational(5));
+  EXPECT_EQ(canonical(roof.cobstacles()[0].outer),
+            (Ring{pt("-2", "-1"), pt("-1", "-2"), pt("0", "-2"), pt("1", "-1"), pt("1", "0"), pt("-2", "0")}));
+}
+
+TEST(CSpace, TouchingObstaclesAreOneSolid) {
+  const CSpace c(world_from(R"({"obstacles": [[[0, 0], [1, 0], [1, 1], [0, 1]], [[1, 0], [2, 0], [2, 1], [1, 1]],
+                                              [[5, 5], [6, 5], [6, 6], [5, 6]]]})"));
+  EXPECT_EQ(c.solids().size(), 2u);
+}
+
+TEST(CSpace, BoundsAreWalls) {
+  // A 1x1 robot in a 10x10 box: its reference point keeps to [0,9]^2 (reference at lower left).
+  const CSpace c(world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [],
+                                "robot": {"parts": [[[0, 0], [1, 0], [1, 1], [0, 1]]]}})"));
+  ASSERT_TRUE(c.reference_box());
+  EXPECT_EQ(c.reference_box()->xmax, Rational(9));
+  ASSERT_EQ(c.free_components().size(), 1u);
+  EXPECT_EQ(*c.free_components()[0].area, Rational(81));
+  EXPECT_EQ(c.locate(pt("9", "9")).kind, Location::Kind::contact);
+  EXPECT_EQ(c.locate(pt("9.5", "1")).kind, Location::Kind::blocked);
+  EXPECT_EQ(*c.collision_at(pt("9.5", "1")), "the robot leaves the bounds");
+}
+
+TEST(CSpace, ExactFitCorridorClosesAndOneBillionthMoreOpensIt) {
+  // Two walls 1 apart across the whole box; a unit square robot fits only exactly.
+  const std::string walls = R"("bounds": [0, 0, 10, 9], "robot": {"parts": [[[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]]})";
+  const CSpace exact(world_from("{" + walls + R"(, "obstacles": [[[0, 3], [10, 3], [10, 4], [0, 4]], [[0, 5], [10, 5], [10, 6], [0, 6]]]})"));
+  const CSpace wider(world_from("{" + walls + R"(, "obstacles": [[[0, 3], [10, 3], [10, 4], [0, 4]], [[0, 5.000000001], [10, 5.000000001], [10, 6], [0, 6]]]})"));
+  EXPECT_EQ(exact.free_components().size(), 2u);  // below and above the walls
+  EXPECT_EQ(wider.free_components().size(), 3u);  // plus the corridor
+  EXPECT_EQ(exact.locate(pt("5", "4.5")).kind, Location::Kind::blocked);
+  EXPECT_EQ(wider.locate(pt("5", "4.5")).kind, Location::Kind::contact);  // on the lower wall's C-obstacle
+  EXPECT_EQ(wider.locate(pt("5", "4.5000000005")).kind, Location::Kind::free);
+  EXPECT_NE(exact.collision_at(pt("5", "4.5"))->find("only exactly"), std::string::npos);
+}
