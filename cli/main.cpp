@@ -30,6 +30,8 @@ int main(int argc, char** argv) {
   Action run;
   add_cspace_command(app, run);
   add_check_command(app, run);
+  add_plan_command(app, run);
+  add_scen_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -123,6 +123,38 @@ void build(Impl& impl) {
   impl.point_location = std::make_unique<Impl::PointLocation>(impl.free_set.arrangement());
 }
 
+// Winding number of a closed ring around p (exact; valid for the weakly simple rings that
+// regularized operations produce, where CGAL's Polygon_2 predicates require simple ones).
+int winding_number(const Ring& ring, const ExactPoint& p) {
+  int winding = 0;
+  for (std::size_t i = 0; i < ring.size(); ++i) {
+    const ExactPoint& a = ring[i];
+    const ExactPoint& b = ring[(i + 1) % ring.size()];
+    const Rational cross = (b.x - a.x) * (p.y - a.y) - (p.x - a.x) * (b.y - a.y);
+    if (a.y <= p.y && p.y < b.y && cross > 0) ++winding;
+    if (b.y <= p.y && p.y < a.y && cross < 0) --winding;
+  }
+  return winding;
+}
+
+// p lies in the interior of the polygon, not on its boundary and not in (or on) a hole.
+bool strictly_inside(const PolygonWithHoles& polygon, const ExactPoint& p) {
+  auto on_boundary = [&](const Ring& ring) {
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const ExactPoint& a = ring[i];
+      const ExactPoint& b = ring[(i + 1) % ring.size()];
+      if ((b.x - a.x) * (p.y - a.y) == (p.x - a.x) * (b.y - a.y) && std::min(a.x, b.x) <= p.x &&
+          p.x <= std::max(a.x, b.x) && std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y))
+        return true;
+    }
+    return false;
+  };
+  if (winding_number(polygon.outer, p) == 0 || on_boundary(polygon.outer)) return false;
+  for (const Ring& hole : polygon.holes)
+    if (winding_number(hole, p) != 0 || on_boundary(hole)) return false;
+  return true;
+}
+
 bool inside_closed_box(const Bounds& b, const ExactPoint& p) {
   return b.xmin <= p.x && p.x <= b.xmax && b.ymin <= p.y && p.y <= b.ymax;
 }
@@ -174,15 +206,12 @@ std::optional<std::string> CSpace::collision_at(const ExactPoint& p) const {
   if (locate(p).kind != Location::Kind::blocked) return std::nullopt;
   if (impl.reference_box && !inside_closed_box(*impl.reference_box, p))
     return std::string(impl.world.robot.is_point() ? "it is outside the bounds" : "the robot leaves the bounds");
-  const Point at = to_point(p);
   for (std::size_t i = 0; i < impl.world.obstacles.size(); ++i) {
-    const PolygonH obstacle = to_polygon(impl.world.obstacles[i]);
     bool hit = false;
     if (impl.world.robot.is_point()) {
-      hit = obstacle.outer_boundary().bounded_side(at) == CGAL::ON_BOUNDED_SIDE;
-      for (auto h = obstacle.holes_begin(); hit && h != obstacle.holes_end(); ++h)
-        hit = h->bounded_side(at) == CGAL::ON_UNBOUNDED_SIDE;
+      hit = strictly_inside(impl.world.obstacles[i], p);
     } else {
+      const PolygonH obstacle = to_polygon(impl.world.obstacles[i]);
       for (const Ring& part : impl.world.robot.parts) {
         Polygon placed;
         for (const ExactPoint& v : part) placed.push_back(Point(to_ft(v.x + p.x), to_ft(v.y + p.y)));

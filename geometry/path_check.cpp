@@ -1,6 +1,7 @@
 #include "geometry/path_check.hpp"
 
 #include "geometry/detail/cspace_impl.hpp"
+#include "geometry/detail/vertex_wedges.hpp"
 
 #include <boost/variant/get.hpp>
 
@@ -12,48 +13,6 @@ namespace {
 using namespace detail;
 using Impl = CSpace::Impl;
 using Arrangement = Impl::Arrangement;
-using Direction = Kernel::Direction_2;
-
-// The free wedges at an arrangement vertex, in counter-clockwise order of the edges leaving it.
-// Wedge k spans from edge k (included) to edge k+1 and lies in the face left of edge k.
-class VertexWedges {
- public:
-  explicit VertexWedges(Impl::Vertex v) : at_(v->point()) {
-    auto edge = v->incident_halfedges(), first = edge;
-    do {
-      auto out = edge->twin();  // leaves v
-      edges_.push_back({Direction(out->target()->point() - at_), out->face()->contained()});
-    } while (++edge != first);
-    std::sort(edges_.begin(), edges_.end(), [](const auto& a, const auto& b) { return a.direction < b.direction; });
-  }
-
-  // Two or more free wedges meet here: the free space has zero width at this point.
-  bool is_pinch() const {
-    return std::count_if(edges_.begin(), edges_.end(), [](const auto& e) { return e.free_on_left; }) >= 2;
-  }
-
-  // The free wedge that a motion leaving the vertex in direction d moves into; a direction
-  // along an edge belongs to the free side of that edge. nullopt when d points into an obstacle.
-  std::optional<std::size_t> wedge(const Direction& d) const {
-    const std::size_t n = edges_.size();
-    auto after = std::upper_bound(edges_.begin(), edges_.end(), d,
-                                  [](const Direction& dir, const auto& e) { return dir < e.direction; });
-    std::size_t k = after == edges_.begin() ? n - 1 : static_cast<std::size_t>(after - edges_.begin()) - 1;
-    if (edges_[k].direction == d && !edges_[k].free_on_left) k = (k + n - 1) % n;
-    if (!edges_[k].free_on_left) return std::nullopt;
-    return k;
-  }
-
-  const Point& point() const { return at_; }
-
- private:
-  struct Edge {
-    Direction direction;
-    bool free_on_left;
-  };
-  Point at_;
-  std::vector<Edge> edges_;
-};
 
 std::string segment_text(std::size_t i, const Point& a, const Point& b) {
   return "segment " + std::to_string(i) + " " + to_text(a) + "-" + to_text(b);
@@ -83,8 +42,8 @@ Zone zone_of(const Impl& impl, const Point& a, const Point& b) {
   return zone;
 }
 
-// A point of the open segment a-b inside a blocked face, to name what the segment runs into:
-// the midpoints between consecutive crossings with the zone's edges are each inside one face.
+// A point of the open segment a-b inside a blocked face, if there is one: the midpoints between
+// consecutive crossings with the zone's edges and vertices each lie in one cell.
 std::optional<Point> blocked_witness(const CSpace& cspace, const Zone& zone, const Point& a, const Point& b) {
   const Segment s(a, b);
   std::vector<Point> cuts{a, b};
@@ -126,19 +85,23 @@ PathCheck check_path(const CSpace& cspace, const std::vector<ExactPoint>& path) 
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
     const Point &a = points[i], &b = points[i + 1];
     const Zone zone = zone_of(impl, a, b);
-    for (const auto& face : zone.faces)
-      if (!face->contained()) {
-        auto witness = blocked_witness(cspace, zone, a, b);
-        std::string what = witness ? cspace.collision_at(to_exact(*witness)).value_or("") : "";
-        return invalid(i, segment_text(i, a, b) + " enters a C-obstacle" +
-                              (witness ? " at " + to_text(*witness) + (what.empty() ? "" : ": " + what) : ""));
+    // The zone may list a face the segment only touches at an end (CGAL reports the face beyond
+    // an endpoint that lies on an edge), so a blocked face is a reason to look, and the verdict
+    // is a blocked point: each open piece between consecutive crossings lies in a single cell.
+    const bool touches_blocked_face =
+        std::any_of(zone.faces.begin(), zone.faces.end(), [](const auto& face) { return !face->contained(); });
+    if (touches_blocked_face)
+      if (auto witness = blocked_witness(cspace, zone, a, b)) {
+        const std::string what = cspace.collision_at(to_exact(*witness)).value_or("");
+        return invalid(i, segment_text(i, a, b) + " enters a C-obstacle at " + to_text(*witness) +
+                              (what.empty() ? "" : ": " + what));
       }
     // Passing straight through a pinch point: arriving and leaving wedges must be the same.
     for (const auto& v : zone.vertices) {
       if (v->point() == a || v->point() == b || v->is_isolated()) continue;
-      VertexWedges wedges(v);
+      VertexWedges wedges(v->point(), v->incident_halfedges());
       if (!wedges.is_pinch()) continue;
-      if (wedges.wedge(Direction(a - v->point())) != wedges.wedge(Direction(b - v->point())))
+      if (wedges.wedge(Kernel::Direction_2(a - v->point())) != wedges.wedge(Kernel::Direction_2(b - v->point())))
         return invalid(i, segment_text(i, a, b) + " passes through the pinch point " + to_text(v->point()) +
                               " where C-obstacles touch (zero-width passage)");
     }
@@ -149,9 +112,9 @@ PathCheck check_path(const CSpace& cspace, const std::vector<ExactPoint>& path) 
     auto where = impl.point_location->locate(points[i]);
     auto* vertex = boost::get<Impl::Vertex>(&where);
     if (!vertex || (*vertex)->is_isolated()) continue;
-    VertexWedges wedges(*vertex);
+    VertexWedges wedges((*vertex)->point(), (*vertex)->incident_halfedges());
     if (!wedges.is_pinch()) continue;
-    if (wedges.wedge(Direction(points[i - 1] - points[i])) != wedges.wedge(Direction(points[i + 1] - points[i])))
+    if (wedges.wedge(Kernel::Direction_2(points[i - 1] - points[i])) != wedges.wedge(Kernel::Direction_2(points[i + 1] - points[i])))
       return invalid(i, "the path turns at the pinch point " + to_text(points[i]) +
                             " into another free wedge than it came from (zero-width passage)");
   }

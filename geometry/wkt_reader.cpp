@@ -44,22 +44,40 @@ std::vector<PolygonWithHoles> read_wkt_obstacles(const std::string& wkt_path, co
   std::string line;
   std::size_t line_number = 0;
   std::vector<PolygonWithHoles> obstacles;
+  auto add = [&](const CGAL::Polygon_with_holes_2<Epick>& polygon) {
+    PolygonWithHoles obstacle{ring_from(polygon.outer_boundary()), {}};
+    for (auto h = polygon.holes_begin(); h != polygon.holes_end(); ++h) obstacle.holes.push_back(ring_from(*h));
+    obstacles.push_back(std::move(obstacle));
+  };
   while (std::getline(lines, line)) {
     ++line_number;
     if (!has_text(line)) continue;
-    std::vector<Epick::Point_2> points;
-    std::vector<std::vector<Epick::Point_2>> polylines;
-    std::vector<CGAL::Polygon_with_holes_2<Epick>> polygons;
-    std::istringstream one(line);
-    const bool ok = CGAL::IO::read_WKT(one, points, polylines, polygons);
-    if (!ok || polygons.empty())
-      throw InputError(prefix + "line " + std::to_string(line_number) +
-                       ": cannot read WKT: expected a POLYGON or MULTIPOLYGON");
-    for (const auto& polygon : polygons) {
-      PolygonWithHoles obstacle{ring_from(polygon.outer_boundary()), {}};
-      for (auto h = polygon.holes_begin(); h != polygon.holes_end(); ++h) obstacle.holes.push_back(ring_from(*h));
-      obstacles.push_back(std::move(obstacle));
+    const std::string where = prefix + "line " + std::to_string(line_number) + ": ";
+    // CGAL's read_WKT() loops forever on a line it does not know, so the type is dispatched here
+    // and only the two polygon readers are called, each on its own line.
+    std::string type;
+    for (char c : line) {
+      if (c == '(' || std::isspace(static_cast<unsigned char>(c))) {
+        if (!type.empty()) break;
+        continue;
+      }
+      type.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
     }
+    std::istringstream one(line);
+    bool ok = false;
+    if (type == "POLYGON") {
+      CGAL::Polygon_with_holes_2<Epick> polygon;
+      ok = CGAL::IO::read_polygon_WKT(one, polygon) && !polygon.outer_boundary().is_empty();
+      if (ok) add(polygon);
+    } else if (type == "MULTIPOLYGON") {
+      std::vector<CGAL::Polygon_with_holes_2<Epick>> polygons;
+      ok = CGAL::IO::read_multi_polygon_WKT(one, polygons) && !polygons.empty();
+      if (ok)
+        for (const auto& polygon : polygons) add(polygon);
+    } else {
+      throw InputError(where + "cannot read WKT: expected POLYGON or MULTIPOLYGON, got \"" + type + "\"");
+    }
+    if (!ok) throw InputError(where + "cannot read WKT: malformed " + type);
   }
   if (obstacles.empty()) throw InputError(prefix + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
   return obstacles;

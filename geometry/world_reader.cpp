@@ -36,7 +36,12 @@ class ExactNumberSax {
   bool start_array(std::size_t n) { return dom_.start_array(n); }
   bool end_array() { return dom_.end_array(); }
   bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) {
-    error = "invalid JSON at byte " + std::to_string(position) + ": " + ex.what();
+    // nlohmann converts numbers to double while lexing: one beyond double's range fails here,
+    // before its text reaches number_float.
+    if (ex.id == 406)
+      error = "number out of range at byte " + std::to_string(position) + " (exponent too large): " + ex.what();
+    else
+      error = "invalid JSON at byte " + std::to_string(position) + ": " + ex.what();
     return false;
   }
   std::string error;

@@ -1,0 +1,58 @@
+// The table of seed 004's report: on the seed 004 world, every search of a course over one
+// visibility graph — number of path segments, path cost, nodes explored — and all paths in one
+// picture. Usage: search_comparison [WORLD.json] [OUT.svg]
+#include "geometry/cspace.hpp"
+#include "geometry/cspace_svg.hpp"
+#include "geometry/input_error.hpp"
+#include "geometry/world_reader.hpp"
+#include "roadmaps/roadmap_svg.hpp"
+#include "roadmaps/visibility_graph.hpp"
+
+#include <cstdio>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  using namespace polyplan;
+  const std::string world_file = argc > 1 ? argv[1] : POLYPLAN_DATA_DIR "/worlds/seed004.json";
+  const std::string picture = argc > 2 ? argv[2] : "search_comparison.svg";
+  try {
+    const World world = read_world(world_file);
+    if (world.queries.empty()) throw InputError(world_file + ": world: needs a start and a goal");
+    const CSpace cspace(world);
+    cspace.require_free_queries();
+    VisibilityGraph graph(cspace, VisibilityKind::full);  // the graph a course draws: every visible pair
+    const Query& query = world.queries.front();
+
+    struct Row {
+      const char* name;
+      SearchOptions options;
+      const char* colour;
+    } rows[] = {{"DFS", {Search::dfs}, "#7f7f7f"},
+                {"BFS", {Search::bfs}, "#1f77b4"},
+                {"UCS (Dijkstra)", {Search::dijkstra}, "#ff7f0e"},
+                {"A* (admissible)", {Search::astar}, "#2ca02c"},
+                {"Weighted A* (w = 3)", {Search::wastar, 3.0}, "#d62728"},
+                {"Greedy best-first", {Search::greedy}, "#9467bd"}};
+
+    svg::Drawing drawing(view_box(world, cspace));
+    draw_cspace(drawing, cspace);
+    draw_roadmap(drawing, graph.roadmap(), graph.facts().vertices);
+    std::printf("%s: visibility graph with %zu vertices and %zu edges\n\n", world_file.c_str(), graph.facts().vertices,
+                graph.facts().edges);
+    std::printf("%-22s %22s %12s %20s\n", "Algorithm", "# of segments in path", "path cost", "# of nodes explored");
+    for (const Row& row : rows) {
+      const Plan plan = graph.plan(query.start, query.goal, row.options);
+      if (!plan.found) {
+        std::printf("%-22s %22s\n", row.name, "no path");
+        continue;
+      }
+      std::printf("%-22s %22zu %12.2f %20zu\n", row.name, plan.path.size() - 1, plan.length, plan.expanded);
+      draw_path(drawing, plan.path, row.name, row.colour);
+    }
+    drawing.write(picture);
+    std::printf("\npicture: %s\n", picture.c_str());
+  } catch (const InputError& e) {
+    std::cerr << "error: " << e.what() << '\n';
+    return 2;
+  }
+}

@@ -1,0 +1,297 @@
+#include "roadmaps/detail/free_space_triangulation.hpp"
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <unordered_map>
+
+namespace polyplan::detail {
+namespace {
+
+struct FaceInfo {
+  bool free = false;
+  bool visited = false;  // flood fill
+};
+constexpr int kNoVertex = -1;  // triangulation vertices that are not free-space vertices (frame)
+
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<int, Kernel>;
+using Fbi = CGAL::Triangulation_face_base_with_info_2<FaceInfo, Kernel>;
+using Fb = CGAL::Constrained_triangulation_face_base_2<Kernel, Fbi>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using CDT = CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag>;
+using Face = CDT::Face_handle;
+using VertexHandle = CDT::Vertex_handle;
+
+// A closed cone of directions from `apex`, from the ray towards `right` counter-clockwise to the
+// ray towards `left`; narrower than 180 degrees (it always lies within one triangle's view).
+struct Cone {
+  Point right, left;
+};
+
+}  // namespace
+
+struct FreeSpaceTriangulation::Impl {
+  CDT cdt;
+  std::vector<Point> points;
+  std::vector<VertexWedges> wedges;
+  std::vector<VertexHandle> handles;
+  // Per-query "already reported" marks, reset in O(1) by a generation counter.
+  mutable std::vector<std::uint32_t> seen;
+  mutable std::uint32_t generation = 0;
+
+  struct Step {
+    Face face;
+    int entry;  // index of the edge we entered through
+    Cone cone;
+  };
+
+  void report(VertexHandle v, std::vector<std::size_t>& out) const {
+    const int id = v->info();
+    if (id == kNoVertex || seen[static_cast<std::size_t>(id)] == generation) return;
+    seen[static_cast<std::size_t>(id)] = generation;
+    out.push_back(static_cast<std::size_t>(id));
+  }
+
+  static bool in_cone(const Point& apex, const Cone& c, const Point& q) {
+    return CGAL::orientation(apex, c.right, q) != CGAL::RIGHT_TURN && CGAL::orientation(apex, c.left, q) != CGAL::LEFT_TURN;
+  }
+
+  // The part of `cone` that passes through the edge a-b; false when none passes through the
+  // edge's interior. A cone of positive width must keep a positive width: rays that only touch
+  // the edge at an endpoint would continue past that vertex into whatever lies behind it (an
+  // obstacle, say). Positive width everywhere is what makes the closed cones exact: every ray of
+  // a cone, its boundary rays included, is a limit of rays that cross the same open edges, so it
+  // lies in the closure of the free space. A single ray (the cone of `sees`) passes an edge only
+  // through its interior; one that hits a vertex exactly stops there.
+  static bool narrow(const Point& apex, const Cone& cone, const Point& a, const Point& b, Cone& out) {
+    const CGAL::Orientation turn = CGAL::orientation(apex, a, b);
+    if (turn == CGAL::COLLINEAR) return false;  // seen end-on
+    const Point& r = turn == CGAL::LEFT_TURN ? a : b;
+    const Point& l = turn == CGAL::LEFT_TURN ? b : a;
+    if (CGAL::orientation(apex, cone.right, cone.left) == CGAL::COLLINEAR) {
+      out = cone;
+      return CGAL::orientation(apex, r, cone.right) == CGAL::LEFT_TURN &&
+             CGAL::orientation(apex, cone.right, l) == CGAL::LEFT_TURN;
+    }
+    out.right = CGAL::orientation(apex, cone.right, r) == CGAL::LEFT_TURN ? r : cone.right;
+    out.left = CGAL::orientation(apex, cone.left, l) == CGAL::RIGHT_TURN ? l : cone.left;
+    return CGAL::orientation(apex, out.right, out.left) == CGAL::LEFT_TURN;
+  }
+
+  // Enters the triangle across edge `edge` of `face` with the part of `cone` that crosses it.
+  void cross(const Point& apex, Face face, int edge, const Cone& cone, std::vector<Step>& stack) const {
+    if (cdt.is_constrained({face, edge})) return;
+    const Point& a = face->vertex(CDT::ccw(edge))->point();
+    const Point& b = face->vertex(CDT::cw(edge))->point();
+    Cone narrowed;
+    if (!narrow(apex, cone, a, b, narrowed)) return;
+    Face next = face->neighbor(edge);
+    if (!next->info().free) return;
+    stack.push_back({next, next->index(face), narrowed});
+  }
+
+  // Walks the stacked steps: reports each triangle's far vertex inside the cone and goes on
+  // across its two other edges.
+  void expand(const Point& apex, std::vector<Step>& stack, std::vector<std::size_t>& out) const {
+    while (!stack.empty()) {
+      const Step step = stack.back();
+      stack.pop_back();
+      const VertexHandle far = step.face->vertex(step.entry);
+      if (in_cone(apex, step.cone, far->point())) report(far, out);
+      cross(apex, step.face, CDT::ccw(step.entry), step.cone, stack);
+      cross(apex, step.face, CDT::cw(step.entry), step.cone, stack);
+    }
+  }
+
+  // From a free triangle containing the apex in its closure: its vertices are visible, and the
+  // walk goes on across each edge that does not contain the apex.
+  void expand_from(const Point& apex, Face face, std::vector<std::size_t>& out) const {
+    std::vector<Step> stack;
+    for (int i = 0; i < 3; ++i) {
+      report(face->vertex(i), out);
+      const Point& a = face->vertex(CDT::ccw(i))->point();
+      const Point& b = face->vertex(CDT::cw(i))->point();
+      const CGAL::Orientation turn = CGAL::orientation(apex, a, b);
+      if (turn != CGAL::COLLINEAR) cross(apex, face, i, turn == CGAL::LEFT_TURN ? Cone{a, b} : Cone{b, a}, stack);
+    }
+    expand(apex, stack, out);
+  }
+
+  // The triangles whose closure contains p (one, two on an edge, the fan at a vertex).
+  std::vector<Face> faces_at(const Point& p) const {
+    std::vector<Face> faces;
+    if (cdt.dimension() < 2) return faces;
+    CDT::Locate_type type;
+    int li = 0;
+    const Face located = cdt.locate(p, type, li);
+    switch (type) {
+      case CDT::FACE:
+        faces.push_back(located);
+        break;
+      case CDT::EDGE:
+        faces.push_back(located);
+        faces.push_back(located->neighbor(li));
+        break;
+      case CDT::VERTEX: {
+        auto face = cdt.incident_faces(located->vertex(li)), first = face;
+        do faces.push_back(face); while (++face != first);
+        if (located->vertex(li)->info() != kNoVertex) seen[static_cast<std::size_t>(located->vertex(li)->info())] = generation;
+        break;
+      }
+      default:
+        break;
+    }
+    return faces;
+  }
+
+  static bool in_closed_triangle(Face f, const Point& q) {
+    for (int i = 0; i < 3; ++i)
+      if (CGAL::orientation(f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point(), q) == CGAL::RIGHT_TURN)
+        return false;
+    return true;
+  }
+
+  void begin_query() const {
+    if (++generation == 0) {  // wrapped: clear for real once every 4 billion queries
+      std::fill(seen.begin(), seen.end(), 0);
+      generation = 1;
+    }
+  }
+};
+
+FreeSpaceTriangulation::FreeSpaceTriangulation(const CSpace::Impl& cspace) : impl_(std::make_unique<Impl>()) {
+  Impl& t = *impl_;
+  const auto& arr = cspace.free_set.arrangement();
+  std::unordered_map<const void*, int> index;
+  for (auto v = arr.vertices_begin(); v != arr.vertices_end(); ++v) {
+    if (v->is_isolated()) continue;
+    index.emplace(&*v, static_cast<int>(t.points.size()));
+    t.points.push_back(v->point());
+    t.wedges.emplace_back(v->point(), v->incident_halfedges());
+  }
+  t.seen.assign(t.points.size(), 0);
+
+  VertexHandle hint;
+  for (std::size_t i = 0; i < t.points.size(); ++i) {
+    VertexHandle h = hint == VertexHandle() ? t.cdt.insert(t.points[i]) : t.cdt.insert(t.points[i], hint->face());
+    h->info() = static_cast<int>(i);
+    t.handles.push_back(h);
+    hint = h;
+  }
+  for (auto e = arr.edges_begin(); e != arr.edges_end(); ++e)
+    t.cdt.insert_constraint(t.handles[static_cast<std::size_t>(index.at(&*e->source()))],
+                            t.handles[static_cast<std::size_t>(index.at(&*e->target()))]);
+
+  // Without bounds the free space is unbounded; a frame around everything (and the world's
+  // queries) closes it. Shortest paths never leave the convex hull of the obstacles and the
+  // query points, so the frame changes no answer for points inside it.
+  if (!cspace.world.bounds) {
+    FT xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+    bool first = true;
+    auto extend = [&](const Point& p) {
+      if (first || p.x() < xmin) xmin = p.x();
+      if (first || p.y() < ymin) ymin = p.y();
+      if (first || p.x() > xmax) xmax = p.x();
+      if (first || p.y() > ymax) ymax = p.y();
+      first = false;
+    };
+    for (const Point& p : t.points) extend(p);
+    for (const Query& q : cspace.world.queries) {
+      extend(to_point(q.start));
+      extend(to_point(q.goal));
+    }
+    const FT margin = (xmax - xmin) + (ymax - ymin) + 1;
+    const Point corners[4] = {{xmin - margin, ymin - margin}, {xmax + margin, ymin - margin},
+                              {xmax + margin, ymax + margin}, {xmin - margin, ymax + margin}};
+    VertexHandle frame[4];
+    for (int i = 0; i < 4; ++i) {
+      frame[i] = t.cdt.insert(corners[i]);
+      frame[i]->info() = kNoVertex;
+    }
+    for (int i = 0; i < 4; ++i) t.cdt.insert_constraint(frame[i], frame[(i + 1) % 4]);
+  }
+
+  // Every constraint separates free from blocked, and outside the triangulation is blocked: a
+  // flood fill that flips at constraints marks the free triangles.
+  std::vector<std::pair<Face, bool>> queue{{t.cdt.infinite_face(), false}};
+  t.cdt.infinite_face()->info().visited = true;
+  while (!queue.empty()) {
+    auto [face, free] = queue.back();
+    queue.pop_back();
+    face->info().free = free && !t.cdt.is_infinite(face);
+    for (int i = 0; i < 3; ++i) {
+      Face next = face->neighbor(i);
+      if (next->info().visited) continue;
+      next->info().visited = true;
+      queue.push_back({next, t.cdt.is_constrained({face, i}) ? !free : free});
+    }
+  }
+}
+
+FreeSpaceTriangulation::~FreeSpaceTriangulation() = default;
+
+std::size_t FreeSpaceTriangulation::vertex_count() const { return impl_->points.size(); }
+const Point& FreeSpaceTriangulation::point(std::size_t v) const { return impl_->points[v]; }
+const VertexWedges& FreeSpaceTriangulation::wedges(std::size_t v) const { return impl_->wedges[v]; }
+std::size_t FreeSpaceTriangulation::triangle_count() const { return impl_->cdt.number_of_faces(); }
+
+void FreeSpaceTriangulation::visible_from_corner(std::size_t v, std::size_t wedge, std::vector<std::size_t>& out) const {
+  const Impl& t = *impl_;
+  t.begin_query();
+  t.seen[v] = t.generation;  // not itself
+  const VertexHandle h = t.handles[v];
+  const Point& apex = t.points[v];
+  auto face = t.cdt.incident_faces(h), first = face;
+  do {
+    if (!face->info().free) continue;
+    // A free triangle lies in one free wedge of its corner; any of its edges at the corner tells
+    // which (a constrained one belongs to its free side, which is this triangle's).
+    const Point& along = face->vertex(CDT::ccw(face->index(h)))->point();
+    if (t.wedges[v].wedge(VertexWedges::Direction(along - apex)) != wedge) continue;
+    const int i = face->index(h);
+    const VertexHandle a = face->vertex(CDT::ccw(i)), b = face->vertex(CDT::cw(i));
+    t.report(a, out);
+    t.report(b, out);
+    std::vector<Impl::Step> stack;
+    t.cross(apex, face, i, Cone{a->point(), b->point()}, stack);  // counter-clockwise: a is on the right
+    t.expand(apex, stack, out);
+  } while (++face != first);
+}
+
+bool FreeSpaceTriangulation::visible_from_point(const Point& p, std::vector<std::size_t>& out) const {
+  const Impl& t = *impl_;
+  t.begin_query();
+  const std::vector<Face> faces = t.faces_at(p);
+  bool any_free = false;
+  for (Face f : faces)
+    if (f->info().free) {
+      any_free = true;
+      t.expand_from(p, f, out);
+    }
+  return any_free;
+}
+
+bool FreeSpaceTriangulation::sees(const Point& p, const Point& q) const {
+  const Impl& t = *impl_;
+  t.begin_query();
+  const Cone ray{q, q};
+  std::vector<Impl::Step> stack;
+  for (Face f : t.faces_at(p)) {
+    if (!f->info().free) continue;
+    if (Impl::in_closed_triangle(f, q)) return true;
+    for (int i = 0; i < 3; ++i)
+      if (CGAL::orientation(p, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) != CGAL::COLLINEAR)
+        t.cross(p, f, i, ray, stack);
+  }
+  while (!stack.empty()) {
+    const Impl::Step step = stack.back();
+    stack.pop_back();
+    if (Impl::in_closed_triangle(step.face, q)) return true;
+    t.cross(p, step.face, CDT::ccw(step.entry), step.cone, stack);
+    t.cross(p, step.face, CDT::cw(step.entry), step.cone, stack);
+  }
+  return false;
+}
+
+}  // namespace polyplan::detail

@@ -1,0 +1,125 @@
+// The visibility graph's paths against an independent brute force: every pair of free-space
+// boundary vertices joined when check_path accepts the segment, then Dijkstra.
+#include "geometry/path_check.hpp"
+#include "roadmaps/visibility_graph.hpp"
+#include "world_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <queue>
+#include <random>
+#include <sstream>
+
+using namespace polyplan;
+using polyplan::test::pt;
+using polyplan::test::world_from;
+
+namespace {
+
+double length(const ExactPoint& a, const ExactPoint& b) {
+  return std::hypot(to_double(a.x) - to_double(b.x), to_double(a.y) - to_double(b.y));
+}
+
+double path_length(const std::vector<ExactPoint>& path) {
+  double total = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) total += length(path[i], path[i + 1]);
+  return total;
+}
+
+// O(n^3) exact reference: nodes are all boundary vertices of the free space plus start and goal.
+std::optional<double> brute_force_length(const CSpace& cspace, const ExactPoint& start, const ExactPoint& goal) {
+  std::vector<ExactPoint> nodes{start, goal};
+  for (const FreeComponent& c : cspace.free_components()) {
+    nodes.insert(nodes.end(), c.outer.begin(), c.outer.end());
+    for (const Ring& h : c.holes) nodes.insert(nodes.end(), h.begin(), h.end());
+  }
+  const std::size_t n = nodes.size();
+  std::vector<double> dist(n, INFINITY);
+  std::vector<bool> done(n, false);
+  dist[0] = 0;
+  for (std::size_t round = 0; round < n; ++round) {
+    std::size_t u = n;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!done[i] && (u == n || dist[i] < dist[u])) u = i;
+    if (u == n || dist[u] == INFINITY) break;
+    done[u] = true;
+    if (u == 1) return dist[1];
+    for (std::size_t v = 0; v < n; ++v)
+      if (!done[v] && dist[u] + length(nodes[u], nodes[v]) < dist[v] && check_path(cspace, {nodes[u], nodes[v]}).valid)
+        dist[v] = dist[u] + length(nodes[u], nodes[v]);
+  }
+  return std::nullopt;
+}
+
+std::string random_world(std::mt19937& rng, int obstacles, const std::string& robot) {
+  std::uniform_int_distribution<int> coordinate(5, 195), size(4, 30), angle(0, 359);
+  std::ostringstream w;
+  w << R"({"bounds": [0, 0, 20, 20], "obstacles": [)";
+  for (int i = 0; i < obstacles; ++i) {
+    // A convex polygon: points on a circle at sorted random angles (decimal coordinates).
+    const double cx = coordinate(rng) / 10.0, cy = coordinate(rng) / 10.0, r = size(rng) / 20.0;
+    std::vector<int> angles;
+    for (int k = 0; k < 5; ++k) angles.push_back(angle(rng));
+    std::sort(angles.begin(), angles.end());
+    angles.erase(std::unique(angles.begin(), angles.end()), angles.end());
+    if (i) w << ", ";
+    w << "[";
+    for (std::size_t k = 0; k < angles.size(); ++k) {
+      char buffer[64];
+      std::snprintf(buffer, sizeof buffer, "[%.3f, %.3f]", cx + r * std::cos(angles[k] * M_PI / 180),
+                    cy + r * std::sin(angles[k] * M_PI / 180));
+      w << (k ? ", " : "") << buffer;
+    }
+    w << "]";
+  }
+  w << "]" << robot << "}";
+  return w.str();
+}
+
+}  // namespace
+
+TEST(VisibilityGraph, AroundOneSquare) {
+  const CSpace c(world_from(R"({"obstacles": [[[1, 1], [3, 1], [3, 3], [1, 3]]]})"));
+  VisibilityGraph graph(c);
+  EXPECT_EQ(graph.facts().vertices, 4u);
+  EXPECT_EQ(graph.facts().edges, 4u);  // the sides; the diagonals cross the square
+  const Plan plan = graph.plan(pt("0", "0"), pt("4", "4"));
+  ASSERT_TRUE(plan.found);
+  EXPECT_NEAR(plan.length, 2 * std::hypot(1, 3), 1e-12);
+  EXPECT_EQ(plan.path.size(), 3u);
+}
+
+TEST(VisibilityGraph, MatchesBruteForceOnRandomWorlds) {
+  std::mt19937 rng(7);
+  int compared = 0;
+  for (int trial = 0; trial < 12; ++trial) {
+    const std::string robot = trial % 2 ? "" : R"(, "robot": {"parts": [[[-0.2, -0.2], [0.2, -0.2], [0.2, 0.2], [-0.2, 0.2]]]})";
+    const std::string text = random_world(rng, 4 + trial % 5, robot);
+    SCOPED_TRACE(text);
+    const World world = world_from(text);
+    const CSpace cspace(world);
+    VisibilityGraph graph(cspace);
+    std::uniform_int_distribution<int> coordinate(1, 199);
+    for (int q = 0; q < 5; ++q) {
+      const ExactPoint s{Rational(coordinate(rng), 10), Rational(coordinate(rng), 10)};
+      const ExactPoint g{Rational(coordinate(rng), 10), Rational(coordinate(rng), 10)};
+      if (cspace.locate(s).kind == Location::Kind::blocked || cspace.locate(g).kind == Location::Kind::blocked) continue;
+      SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
+      Plan plan;
+      try {
+        plan = graph.plan(s, g);
+      } catch (const std::exception& e) {
+        FAIL() << e.what() << " from " << to_string(s.x) << "," << to_string(s.y) << " to " << to_string(g.x) << ","
+               << to_string(g.y) << " in " << text;
+      }
+      const auto expected = brute_force_length(cspace, s, g);
+      ASSERT_EQ(plan.found, expected.has_value());
+      if (!expected) continue;
+      EXPECT_NEAR(plan.length, *expected, 1e-9 * std::max(1.0, *expected));
+      EXPECT_NEAR(path_length(plan.path), plan.length, 1e-9 * std::max(1.0, plan.length));
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, 30);
+}
