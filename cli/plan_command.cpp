@@ -29,10 +29,13 @@ void draw(const CSpace& cspace, const VisibilityGraph& graph, const std::vector<
   svg::Drawing drawing(view_box(cspace.world(), cspace));
   draw_cspace(drawing, cspace);
   draw_roadmap(drawing, graph.roadmap(), graph.facts().vertices);
-  for (std::size_t i = 0; i < plans.size(); ++i) {
-    draw_points(drawing, plans[i].expanded_points, "expanded");
-    if (plans[i].found) draw_path(drawing, plans[i].path, plans.size() == 1 ? "path" : "path " + std::to_string(i));
-  }
+  std::vector<ExactPoint> expanded;
+  for (const Plan& p : plans) expanded.insert(expanded.end(), p.expanded_points.begin(), p.expanded_points.end());
+  draw_points(drawing, expanded, "expanded by the search");
+  static const char* const palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e", "#8c564b", "#e377c2"};
+  for (std::size_t i = 0; i < plans.size(); ++i)
+    if (plans[i].found)
+      draw_path(drawing, plans[i].path, plans.size() == 1 ? "path" : "path " + std::to_string(i), palette[i % 7]);
   drawing.write(file);
 }
 

@@ -1,5 +1,7 @@
 #include "geometry/rational.hpp"
 
+#include <mpfr.h>
+
 #include <cctype>
 #include <cstdlib>
 #include <limits>
@@ -90,5 +92,14 @@ std::optional<Rational> parse_rational(std::string_view text, std::string* why) 
 }
 
 std::string to_string(const Rational& value) { return value.get_str(10); }
+
+double to_double(const Rational& value) {
+  mpfr_t rounded;
+  mpfr_init2(rounded, 53);
+  mpfr_set_q(rounded, value.get_mpq_t(), MPFR_RNDN);
+  const double result = mpfr_get_d(rounded, MPFR_RNDN);
+  mpfr_clear(rounded);
+  return result;
+}
 
 }  // namespace polyplan

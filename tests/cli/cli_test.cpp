@@ -153,3 +153,65 @@ TEST(Usage, HelpExitsZeroAndUnknownOptionsExitTwo) {
   EXPECT_EQ(polyplan("cspace " + world("maze.json") + " --frobnicate").exit_code, 2);
   EXPECT_EQ(polyplan("teleport").exit_code, 2);
 }
+
+TEST(Plan, PrintsDesignsJsonWithExactPath) {
+  const CliRun run = polyplan("plan " + world("decimal.json") + " --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto plans = nlohmann::json::parse(run.out);
+  ASSERT_TRUE(plans.is_array());  // start/goal and one query
+  ASSERT_EQ(plans.size(), 2u);
+  const auto& first = plans[0];
+  EXPECT_TRUE(first["found"].get<bool>());
+  EXPECT_DOUBLE_EQ(first["length"].get<double>(), std::sqrt(117.0));
+  EXPECT_EQ(first["path_exact"][0], nlohmann::json::array({"7/10", "23/10"}));
+  EXPECT_EQ(first["path_exact"].back(), nlohmann::json::array({"97/10", "83/10"}));
+  EXPECT_EQ(first["path"][0][0].get<double>(), 0.7);
+  EXPECT_EQ(first["roadmap"]["kind"], "visibility");
+  EXPECT_EQ(first["search"]["algorithm"], "astar");
+}
+
+TEST(Plan, OneQueryIsAnObjectAndNoPathIsAnAnswer) {
+  const CliRun run = polyplan("plan " + world("touching_corners.json") + " --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto plan = nlohmann::json::parse(run.out);
+  ASSERT_TRUE(plan.is_object());
+  EXPECT_FALSE(plan["found"].get<bool>());
+  EXPECT_TRUE(plan["length"].is_null());
+}
+
+TEST(Plan, EverySearchAndTheFullGraph) {
+  for (const char* search : {"astar", "dijkstra", "bfs", "dfs", "greedy", "wastar --weight 2"}) {
+    SCOPED_TRACE(search);
+    const CliRun run = polyplan("plan " + world("maze.json") + " --roadmap visibility-full --search " + search + " --json -");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto plan = nlohmann::json::parse(run.out);
+    EXPECT_TRUE(plan["found"].get<bool>());
+    EXPECT_EQ(plan["roadmap"]["kind"], "visibility-full");
+    EXPECT_EQ(plan["search"]["algorithm"], std::string(search).substr(0, std::string(search).find(' ')));
+  }
+  EXPECT_EQ(polyplan("plan " + world("maze.json") + " --search teleport").exit_code, 2);
+  EXPECT_EQ(polyplan("plan " + world("maze.json") + " --search wastar --weight 0.5").exit_code, 2);
+}
+
+TEST(Plan, DrawsRoadmapAndPath) {
+  const fs::path svg = fs::temp_directory_path() / "polyplan_cli_test_plan.svg";
+  const CliRun run = polyplan("plan " + world("seed004.json") + " --svg '" + svg.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string picture = slurp(svg);
+  EXPECT_NE(picture.find("roadmap edges"), std::string::npos);
+  EXPECT_NE(picture.find("path"), std::string::npos);
+  fs::remove(svg);
+}
+
+TEST(Scen, ArenaMatchesTheReference) {
+  const std::string data = std::string(POLYPLAN_BENCHMARK_DIR);
+  const CliRun run = polyplan("scen '" + data + "/maps/arena.map' '" + data + "/scenarios/arena.map.scen' --reference '" + data +
+                              "/reference/arena.csv' --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto out = nlohmann::json::parse(run.out);
+  EXPECT_EQ(out["summary"]["queries"], 160);
+  EXPECT_EQ(out["summary"]["mismatches"], 0);
+  EXPECT_LT(out["summary"]["max_difference"].get<double>(), 1e-9);
+  EXPECT_EQ(out["queries"].size(), 160u);
+  EXPECT_NE(run.err.find("queries: 160/160"), std::string::npos);  // progress on stderr
+}

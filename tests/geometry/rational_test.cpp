@@ -42,3 +42,10 @@ TEST(ParseRational, RejectsWithAReason) {
   EXPECT_FALSE(parse_rational("1e999999999", &why));
   EXPECT_EQ(why, "exponent out of range");
 }
+
+TEST(ToDouble, RoundsToNearest) {
+  EXPECT_EQ(polyplan::to_double(Rational(21, 5)), 4.2);  // truncation would give 4.199999999999999
+  EXPECT_EQ(polyplan::to_double(Rational(1, 10)), 0.1);
+  EXPECT_EQ(polyplan::to_double(Rational(-7, 10)), -0.7);
+  EXPECT_EQ(polyplan::to_double(*parse_rational("0.30000000000000004")), 0.30000000000000004);
+}

@@ -1,6 +1,7 @@
 // The visibility graph's paths against an independent brute force: every pair of free-space
 // boundary vertices joined when check_path accepts the segment, then Dijkstra.
 #include "geometry/path_check.hpp"
+#include "geometry/world_reader.hpp"
 #include "roadmaps/visibility_graph.hpp"
 #include "world_fixtures.hpp"
 
@@ -122,4 +123,94 @@ TEST(VisibilityGraph, MatchesBruteForceOnRandomWorlds) {
     }
   }
   EXPECT_GT(compared, 30);
+}
+
+namespace {
+
+World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name); }
+
+std::vector<Plan> plan_all(const World& world, VisibilityKind kind = VisibilityKind::reduced) {
+  const CSpace cspace(world);
+  VisibilityGraph graph(cspace, kind);
+  std::vector<Plan> plans;
+  for (const Query& q : world.queries) plans.push_back(graph.plan(q.start, q.goal));
+  return plans;
+}
+
+}  // namespace
+
+TEST(VisibilityGraph, DecimalApexesOnTheSegmentAreGrazedNotHit) {
+  // Both triangle apexes lie exactly on the start-goal segment, on opposite sides; in doubles
+  // each falls on the wrong side of the line. The answer is the straight segment, sqrt(117).
+  const auto plans = plan_all(shipped("decimal.json"));
+  ASSERT_TRUE(plans[0].found);
+  EXPECT_EQ(plans[0].path.size(), 2u);
+  EXPECT_DOUBLE_EQ(plans[0].length, std::sqrt(117.0));
+  // The vault's door is 1e-17 wide: open exactly, shut for anything reading doubles.
+  EXPECT_TRUE(plans[1].found);
+}
+
+TEST(VisibilityGraph, ExactFitCorridorIsClosedAndOneBillionthWiderIsOpen) {
+  EXPECT_FALSE(plan_all(shipped("corridor_exact.json"))[0].found);
+  const Plan wide = plan_all(shipped("corridor_wide.json"))[0];
+  ASSERT_TRUE(wide.found);
+  EXPECT_NEAR(wide.length, 15.0, 1e-12);  // straight along y = 4.5, sliding on the lower block
+}
+
+TEST(VisibilityGraph, PinchPointIsNotAPassage) {
+  EXPECT_FALSE(plan_all(shipped("touching_corners.json"))[0].found);
+}
+
+TEST(VisibilityGraph, EnclosedGoalIsNotFound) {
+  const auto plans = plan_all(shipped("office.json"));
+  ASSERT_EQ(plans.size(), 4u);
+  EXPECT_TRUE(plans[0].found && plans[1].found && plans[2].found);
+  EXPECT_FALSE(plans[3].found);  // starts inside the hollow pillar
+}
+
+TEST(VisibilityGraph, CollinearCornersAlongThePath) {
+  // Three squares whose corners (1,1) (3,3) (5,5) lie on the line y = x, alternating sides: the
+  // shortest path from (0,0) to (6,6) is that line, grazing every corner.
+  const CSpace c(world_from(R"({"obstacles": [[[1, 0], [2, 0], [2, 1], [1, 1]], [[2, 3], [3, 3], [3, 4], [2, 4]],
+                                              [[5, 4], [6, 4], [6, 5], [5, 5]]]})"));
+  VisibilityGraph graph(c);
+  const Plan plan = graph.plan(pt("0", "0"), pt("6", "6"));
+  ASSERT_TRUE(plan.found);
+  EXPECT_NEAR(plan.length, 6 * std::sqrt(2.0), 1e-12);
+  // Blocked line: push the middle square onto the diagonal and the path must bend.
+  const CSpace blocked(world_from(R"({"obstacles": [[[2.5, 2.5], [3.5, 2.5], [3.5, 3.5], [2.5, 3.5]]]})"));
+  VisibilityGraph bent(blocked);
+  const Plan around = bent.plan(pt("0", "0"), pt("6", "6"));
+  ASSERT_TRUE(around.found);
+  EXPECT_NEAR(around.length, 2 * std::hypot(3.5, 2.5), 1e-12);
+}
+
+TEST(VisibilityGraph, TwoPartRobotMatchesBruteForce) {
+  const World world = shipped("seed004.json");
+  const CSpace cspace(world);
+  VisibilityGraph graph(cspace);
+  const Query& q = world.queries.front();
+  const Plan plan = graph.plan(q.start, q.goal);
+  const auto expected = brute_force_length(cspace, q.start, q.goal);
+  ASSERT_TRUE(plan.found && expected);
+  EXPECT_NEAR(plan.length, *expected, 1e-9);
+  // The full graph (every visible pair, as courses draw it) finds the same length with more edges.
+  VisibilityGraph full(cspace, VisibilityKind::full);
+  EXPECT_NEAR(full.plan(q.start, q.goal).length, *expected, 1e-9);
+  EXPECT_GT(full.facts().edges, graph.facts().edges);
+}
+
+TEST(VisibilityGraph, EverySearchFindsAValidPathAndTheOptimalOnesAgree) {
+  const World world = shipped("seed004.json");
+  const CSpace cspace(world);
+  VisibilityGraph graph(cspace);
+  const Query& q = world.queries.front();
+  const double optimal = graph.plan(q.start, q.goal, {Search::astar}).length;
+  EXPECT_DOUBLE_EQ(graph.plan(q.start, q.goal, {Search::dijkstra}).length, optimal);
+  for (Search s : {Search::bfs, Search::dfs, Search::greedy, Search::wastar}) {
+    const Plan p = graph.plan(q.start, q.goal, {s, 2.0});
+    ASSERT_TRUE(p.found) << to_string(s);
+    EXPECT_GE(p.length, optimal - 1e-9) << to_string(s);  // plan() checked the path exactly
+  }
+  EXPECT_LE(graph.plan(q.start, q.goal, {Search::wastar, 2.0}).length, 2 * optimal);
 }
