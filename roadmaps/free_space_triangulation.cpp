@@ -12,6 +12,7 @@ namespace {
 struct FaceInfo {
   bool free = false;
   bool visited = false;  // flood fill
+  int component = -1;    // free triangles joined across unconstrained edges: a free component
 };
 constexpr int kNoVertex = -1;  // triangulation vertices that are not free-space vertices (frame)
 
@@ -227,6 +228,25 @@ FreeSpaceTriangulation::FreeSpaceTriangulation(const CSpace::Impl& cspace) : imp
       queue.push_back({next, t.cdt.is_constrained({face, i}) ? !free : free});
     }
   }
+  // Components of the open free space: free triangles that share an unconstrained edge (sharing
+  // only a vertex, a pinch point, does not connect them).
+  int components = 0;
+  for (auto f = t.cdt.finite_faces_begin(); f != t.cdt.finite_faces_end(); ++f) {
+    if (!f->info().free || f->info().component >= 0) continue;
+    std::vector<Face> stack{f};
+    f->info().component = components;
+    while (!stack.empty()) {
+      Face face = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        Face next = face->neighbor(i);
+        if (t.cdt.is_constrained({face, i}) || !next->info().free || next->info().component >= 0) continue;
+        next->info().component = components;
+        stack.push_back(next);
+      }
+    }
+    ++components;
+  }
 }
 
 FreeSpaceTriangulation::~FreeSpaceTriangulation() = default;
@@ -270,6 +290,143 @@ bool FreeSpaceTriangulation::visible_from_point(const Point& p, std::vector<std:
       t.expand_from(p, f, out);
     }
   return any_free;
+}
+
+std::vector<int> FreeSpaceTriangulation::components_at(const Point& p) const {
+  std::vector<int> components;
+  for (Face f : impl_->faces_at(p))
+    if (f->info().free && std::find(components.begin(), components.end(), f->info().component) == components.end())
+      components.push_back(f->info().component);
+  return components;
+}
+
+// Walks the segment a-b through the triangulation: across unconstrained edges, along edges, and
+// through vertices, where DESIGN.md's pinch rule decides (arrive and leave in one free wedge).
+// Entering a blocked triangle or crossing a constrained edge is entering a C-obstacle.
+std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, const Point& b) const {
+  const Impl& t = *impl_;
+  if (a == b) return t.faces_at(a).empty() || std::none_of(t.faces_at(a).begin(), t.faces_at(a).end(),
+                                                              [](Face f) { return f->info().free; })
+                         ? std::optional<std::string>("the point is blocked")
+                         : std::nullopt;
+  auto ahead = [&](const Point& q) {  // strictly beyond a in the direction of b
+    return CGAL::scalar_product(q - a, b - a) > 0;
+  };
+  auto on_segment_before = [&](const Point& q, const Point& far) {  // b on [q, far]?
+    return CGAL::collinear(q, far, b) && CGAL::collinear_are_ordered_along_line(q, b, far);
+  };
+  Face face;                 // the triangle the segment runs into, or
+  VertexHandle at;           // the vertex the segment passes through
+  VertexHandle came_from;    // the vertex we left the last time, if any
+  bool arrived = false;      // at a vertex: reached it along the segment (not its start)
+
+  CDT::Locate_type type;
+  int li = 0;
+  if (t.cdt.dimension() < 2) return std::string("no free space");
+  const Face start = t.cdt.locate(a, type, li);
+  switch (type) {
+    case CDT::FACE:
+      face = start;
+      break;
+    case CDT::VERTEX:
+      at = start->vertex(li);
+      break;
+    case CDT::EDGE: {
+      const VertexHandle u = start->vertex(CDT::ccw(li)), w = start->vertex(CDT::cw(li));
+      const CGAL::Orientation side = CGAL::orientation(u->point(), w->point(), b);
+      if (side == CGAL::COLLINEAR) {  // along the edge, towards u or w
+        at = ahead(u->point()) ? u : w;
+        if (on_segment_before(a, at->point())) return std::nullopt;
+        if (!start->info().free && !start->neighbor(li)->info().free) return std::string("runs inside a C-obstacle");
+        arrived = true;
+      } else {
+        // start lies left of u->w (counter-clockwise triangle); the neighbour is on the right.
+        face = side == CGAL::LEFT_TURN ? start : start->neighbor(li);
+      }
+      break;
+    }
+    default:
+      return std::string("the start is outside the free space");
+  }
+
+  for (std::size_t steps = 0; steps < 4 * t.cdt.number_of_faces() + 8; ++steps) {
+    if (at != VertexHandle()) {
+      if (at->point() == b) return std::nullopt;
+      const int id = at->info();
+      if (id == kNoVertex) return std::string("leaves the free space at the frame");
+      const VertexWedges& wedges = t.wedges[static_cast<std::size_t>(id)];
+      const auto leaving = wedges.wedge(VertexWedges::Direction(b - a));
+      if (!leaving) return "enters a C-obstacle at " + to_text(at->point());
+      if (arrived && wedges.wedge(VertexWedges::Direction(a - b)) != leaving)
+        return "passes through the pinch point " + to_text(at->point()) + " (zero-width passage)";
+      // Leave into the triangle (or along the edge) of the vertex's fan that holds the direction.
+      VertexHandle next_vertex;
+      Face next_face;
+      auto fan = t.cdt.incident_faces(at), first = fan;
+      do {
+        if (t.cdt.is_infinite(fan)) continue;
+        const int j = fan->index(at);
+        const VertexHandle p1 = fan->vertex(CDT::ccw(j)), p2 = fan->vertex(CDT::cw(j));
+        const CGAL::Orientation o1 = CGAL::orientation(at->point(), p1->point(), b);
+        const CGAL::Orientation o2 = CGAL::orientation(at->point(), p2->point(), b);
+        // An edge of the fan along the direction (either side of this triangle: the triangle
+        // on the other side may be the infinite one), or a triangle the direction enters.
+        if (o1 == CGAL::COLLINEAR && CGAL::scalar_product(p1->point() - at->point(), b - a) > 0) next_vertex = p1;
+        else if (o2 == CGAL::COLLINEAR && CGAL::scalar_product(p2->point() - at->point(), b - a) > 0) next_vertex = p2;
+        else if (o1 == CGAL::LEFT_TURN && o2 == CGAL::RIGHT_TURN) next_face = fan;
+      } while ((next_face == Face() && next_vertex == VertexHandle()) && ++fan != first);
+      came_from = at;
+      at = VertexHandle();
+      if (next_vertex != VertexHandle()) {  // along an edge of the fan; the wedge says it is free
+        if (on_segment_before(came_from->point(), next_vertex->point())) return std::nullopt;
+        at = next_vertex;
+        arrived = true;
+        continue;
+      }
+      if (next_face == Face() || !next_face->info().free) return "enters a C-obstacle at " + to_text(came_from->point());
+      face = next_face;
+      continue;
+    }
+    // In a free triangle: done if b is in it; else leave through a vertex on the line or an edge.
+    if (!face->info().free) return std::string("enters a C-obstacle");
+    if (Impl::in_closed_triangle(face, b)) return std::nullopt;
+    int exit_edge = -1;
+    for (int i = 0; i < 3 && at == VertexHandle(); ++i) {
+      const VertexHandle v = face->vertex(i);
+      if (v != came_from && CGAL::orientation(a, b, v->point()) == CGAL::COLLINEAR && ahead(v->point())) at = v;
+    }
+    if (at != VertexHandle()) {
+      arrived = true;
+      continue;
+    }
+    for (int i = 0; i < 3; ++i)
+      if (CGAL::orientation(a, b, face->vertex(CDT::ccw(i))->point()) == CGAL::RIGHT_TURN &&
+          CGAL::orientation(a, b, face->vertex(CDT::cw(i))->point()) == CGAL::LEFT_TURN)
+        exit_edge = i;
+    if (exit_edge < 0) return std::string("lost its way in the triangulation");  // cannot happen
+    if (t.cdt.is_constrained({face, exit_edge})) return std::string("crosses into a C-obstacle");
+    face = face->neighbor(exit_edge);
+    came_from = VertexHandle();
+  }
+  return std::string("lost its way in the triangulation");
+}
+
+std::optional<std::string> FreeSpaceTriangulation::why_path_blocked(const std::vector<Point>& path) const {
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    if (auto why = why_blocked(path[i], path[i + 1]))
+      return "segment " + std::to_string(i) + " " + to_text(path[i]) + "-" + to_text(path[i + 1]) + ": " + *why;
+  // Turning at a pinch point: back into the wedge the path came from, never across.
+  for (std::size_t i = 1; i + 1 < path.size(); ++i) {
+    CDT::Locate_type type;
+    int li = 0;
+    const Face f = impl_->cdt.locate(path[i], type, li);
+    if (type != CDT::VERTEX || f->vertex(li)->info() == kNoVertex) continue;
+    const VertexWedges& w = impl_->wedges[static_cast<std::size_t>(f->vertex(li)->info())];
+    if (w.is_pinch() && w.wedge(VertexWedges::Direction(path[i - 1] - path[i])) !=
+                            w.wedge(VertexWedges::Direction(path[i + 1] - path[i])))
+      return "turns at the pinch point " + to_text(path[i]) + " into another free wedge";
+  }
+  return std::nullopt;
 }
 
 bool FreeSpaceTriangulation::sees(const Point& p, const Point& q) const {

@@ -11,6 +11,8 @@
 #include "geometry/detail/vertex_wedges.hpp"
 
 #include <memory>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace polyplan::detail {
@@ -34,6 +36,18 @@ class FreeSpaceTriangulation {
   // Whether the segment p-q lies in the closure of the free space without passing a zero-width
   // place: q is reached by a walk from p's triangles across unconstrained edges along the ray.
   bool sees(const Point& p, const Point& q) const;
+
+  // The free components (numbered by the triangulation) whose closure holds p; empty when p is
+  // blocked. Two at a pinch point between components.
+  std::vector<int> components_at(const Point& p) const;
+
+  // nullopt when the segment a-b is a valid motion (DESIGN.md: in the closure of the free space,
+  // through no zero-width place); else why not. Exact, and a different walk from the visibility
+  // cones: it is what checks every path the visibility graph returns.
+  std::optional<std::string> why_blocked(const Point& a, const Point& b) const;
+
+  // The same for a polyline, with the pinch rule at its turning points.
+  std::optional<std::string> why_path_blocked(const std::vector<Point>& path) const;
 
   std::size_t triangle_count() const;
 

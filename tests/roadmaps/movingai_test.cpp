@@ -2,6 +2,7 @@
 #include "geometry/cspace.hpp"
 #include "geometry/movingai_map.hpp"
 #include "geometry/movingai_scenario.hpp"
+#include "geometry/path_check.hpp"
 #include "roadmaps/visibility_graph.hpp"
 
 #include <gtest/gtest.h>
@@ -33,6 +34,10 @@ Outcome run_map(const std::string& name, std::size_t stride) {
     const Plan plan = graph.plan({q.start_x, q.start_y}, {q.goal_x, q.goal_y});
     const double expected = *reference[i];
     ++outcome.queries;
+    if (plan.found) {  // an independent exact check, on the arrangement rather than the triangulation
+      const PathCheck check = check_path(cspace, plan.path);
+      EXPECT_TRUE(check.valid) << name << " query " << i << ": " << check.reason;
+    }
     if (expected < 0) {
       if (plan.found) ++outcome.mismatches;
       continue;

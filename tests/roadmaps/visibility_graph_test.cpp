@@ -119,6 +119,8 @@ TEST(VisibilityGraph, MatchesBruteForceOnRandomWorlds) {
       if (!expected) continue;
       EXPECT_NEAR(plan.length, *expected, 1e-9 * std::max(1.0, *expected));
       EXPECT_NEAR(path_length(plan.path), plan.length, 1e-9 * std::max(1.0, plan.length));
+      // Independent of the triangulation that found and verified it: the arrangement's check.
+      EXPECT_TRUE(check_path(cspace, plan.path).valid) << check_path(cspace, plan.path).reason;
       ++compared;
     }
   }
