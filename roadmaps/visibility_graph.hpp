@@ -5,7 +5,9 @@
 // wedges wider than 180 degrees, the corners a taut path bends around; edges are the segments
 // between corners that lie in the closure of the free space, passing no zero-width place, and
 // (reduced) are tangent to the obstacles at both ends. The full graph keeps every free wedge of
-// every vertex and every visible pair, as courses draw it.
+// every vertex and every visible pair, as courses draw it — except a pair seen only along a line
+// that grazes corners from alternating sides (no open cone of sight lines around it): the graph
+// then has the same straight motion through the grazed corner, two edges of the same length.
 //
 // Queries connect start and goal to the corners they see (without rebuilding), search with any
 // algorithm of search/, and check the path exactly before returning it.
