@@ -44,15 +44,16 @@ class Progress {
 };
 
 int run_scen(const ScenOptions& options) {
+  // Every input is read (and any error reported, alone on stderr) before the long work starts.
   const auto started = Clock::now();
-  std::fprintf(stderr, "reading %s and building its visibility graph...\n", options.map.c_str());
   const GridMap map = read_movingai_map(options.map);
-  const CSpace cspace(world_from_grid(map));
-  VisibilityGraph graph(cspace);
-  const double preprocess = seconds_since(started);
   const auto scenarios = read_scenarios(options.scenarios);
   std::vector<std::optional<double>> reference;
   if (!options.reference.empty()) reference = read_reference_lengths(options.reference);
+  std::fprintf(stderr, "building the visibility graph of %s (%dx%d)...\n", options.map.c_str(), map.width, map.height);
+  const CSpace cspace(world_from_grid(map));
+  VisibilityGraph graph(cspace);
+  const double preprocess = seconds_since(started);
 
   nlohmann::json queries = nlohmann::json::array();
   std::vector<double> micros;

@@ -215,3 +215,11 @@ TEST(Scen, ArenaMatchesTheReference) {
   EXPECT_EQ(out["queries"].size(), 160u);
   EXPECT_NE(run.err.find("queries: 160/160"), std::string::npos);  // progress on stderr
 }
+
+TEST(Scen, BadInputIsOneLineAndExitTwo) {
+  const std::string data = std::string(POLYPLAN_BENCHMARK_DIR);
+  const CliRun run = polyplan("scen '" + data + "/maps/arena.map' no_such.scen");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(lines(run.err), 1u) << run.err;
+  EXPECT_NE(run.err.find("no_such.scen: cannot open file"), std::string::npos) << run.err;
+}
