@@ -55,7 +55,9 @@ int run_plan(const PlanOptions& options) {
   VisibilityGraph graph(cspace, options.roadmap == "visibility" ? VisibilityKind::reduced : VisibilityKind::full);
 
   std::vector<Plan> plans;
-  for (const Query& q : world.queries) plans.push_back(graph.plan(q.start, q.goal, {*algorithm, options.weight}));
+  SearchOptions search{*algorithm, options.weight};
+  search.record_expanded = !options.svg.empty();  // the picture shows them
+  for (const Query& q : world.queries) plans.push_back(graph.plan(q.start, q.goal, search));
 
   if (!options.svg.empty()) draw(cspace, graph, plans, options.svg);
   if (!options.json.empty()) {

@@ -25,7 +25,7 @@ struct Plan {
   std::size_t expanded = 0, generated = 0;
   double search_seconds = 0;       // the graph search
   double query_seconds = 0;        // connecting start and goal, search, exact check: the whole query
-  std::vector<ExactPoint> expanded_points;  // where the search expanded (for pictures)
+  std::vector<ExactPoint> expanded_points;  // where the search expanded, with SearchOptions::record_expanded
 };
 
 }  // namespace polyplan

@@ -155,9 +155,7 @@ Plan VisibilityGraph::plan(const ExactPoint& start, const ExactPoint& goal, cons
   } else {
     g.connect(g.start_slot, start);
     g.connect(g.goal_slot, goal);
-    SearchOptions traced = options;
-    traced.record_expanded = true;  // a few pushes per query: the picture shows them
-    const auto result = shortest_path(g.roadmap, g.start_slot, g.goal_slot, traced, g.workspace);
+    const auto result = shortest_path(g.roadmap, g.start_slot, g.goal_slot, options, g.workspace);
     for (RoadmapVertexId v : result.expanded_order) plan.expanded_points.push_back(g.roadmap[v].exact);
     boost::clear_vertex(g.start_slot, g.roadmap);
     boost::clear_vertex(g.goal_slot, g.roadmap);
