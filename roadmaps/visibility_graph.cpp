@@ -39,7 +39,6 @@ std::vector<ExactPoint> without_straight_corners(const std::vector<ExactPoint>& 
 }  // namespace
 
 struct VisibilityGraph::Impl {
-  const CSpace* cspace;
   VisibilityKind kind;
   FreeSpaceTriangulation triangulation;
   // node_of[v][k]: the roadmap vertex of free wedge k at free-space vertex v, or kNotANode.
@@ -50,7 +49,7 @@ struct VisibilityGraph::Impl {
   SearchWorkspace<RoadmapVertexId> workspace;
   double build_seconds = 0;
 
-  Impl(const CSpace& c, VisibilityKind k) : cspace(&c), kind(k), triangulation(c.impl()) {}
+  Impl(const CSpace& c, VisibilityKind k) : kind(k), triangulation(c.impl()) {}
 
   bool is_node_wedge(const VertexWedges& w, std::size_t k) const {
     return w.is_free(k) && (kind == VisibilityKind::full || w.is_reflex(k));

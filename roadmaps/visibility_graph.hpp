@@ -24,7 +24,7 @@ enum class VisibilityKind { reduced, full };
 
 class VisibilityGraph {
  public:
-  // `cspace` must outlive the graph.
+  // The graph keeps what it needs of `cspace` (its triangulated free space); queries do not use it.
   explicit VisibilityGraph(const CSpace& cspace, VisibilityKind kind = VisibilityKind::reduced);
   ~VisibilityGraph();
   VisibilityGraph(VisibilityGraph&&) noexcept;
