@@ -63,18 +63,12 @@ struct FreeSpaceTriangulation::Impl {
   // the edge at an endpoint would continue past that vertex into whatever lies behind it (an
   // obstacle, say). Positive width everywhere is what makes the closed cones exact: every ray of
   // a cone, its boundary rays included, is a limit of rays that cross the same open edges, so it
-  // lies in the closure of the free space. A single ray (the cone of `sees`) passes an edge only
-  // through its interior; one that hits a vertex exactly stops there.
+  // lies in the closure of the free space.
   static bool narrow(const Point& apex, const Cone& cone, const Point& a, const Point& b, Cone& out) {
     const CGAL::Orientation turn = CGAL::orientation(apex, a, b);
     if (turn == CGAL::COLLINEAR) return false;  // seen end-on
     const Point& r = turn == CGAL::LEFT_TURN ? a : b;
     const Point& l = turn == CGAL::LEFT_TURN ? b : a;
-    if (CGAL::orientation(apex, cone.right, cone.left) == CGAL::COLLINEAR) {
-      out = cone;
-      return CGAL::orientation(apex, r, cone.right) == CGAL::LEFT_TURN &&
-             CGAL::orientation(apex, cone.right, l) == CGAL::LEFT_TURN;
-    }
     out.right = CGAL::orientation(apex, cone.right, r) == CGAL::LEFT_TURN ? r : cone.right;
     out.left = CGAL::orientation(apex, cone.left, l) == CGAL::RIGHT_TURN ? l : cone.left;
     return CGAL::orientation(apex, out.right, out.left) == CGAL::LEFT_TURN;
@@ -119,8 +113,9 @@ struct FreeSpaceTriangulation::Impl {
     expand(apex, stack, out);
   }
 
-  // The triangles whose closure contains p (one, two on an edge, the fan at a vertex).
-  std::vector<Face> faces_at(const Point& p) const {
+  // The triangles whose closure contains p (one, two on an edge, the fan at a vertex, then
+  // stored in *vertex).
+  std::vector<Face> faces_at(const Point& p, VertexHandle* vertex = nullptr) const {
     std::vector<Face> faces;
     if (cdt.dimension() < 2) return faces;
     CDT::Locate_type type;
@@ -137,7 +132,7 @@ struct FreeSpaceTriangulation::Impl {
       case CDT::VERTEX: {
         auto face = cdt.incident_faces(located->vertex(li)), first = face;
         do faces.push_back(face); while (++face != first);
-        if (located->vertex(li)->info() != kNoVertex) seen[static_cast<std::size_t>(located->vertex(li)->info())] = generation;
+        if (vertex) *vertex = located->vertex(li);
         break;
       }
       default:
@@ -282,7 +277,10 @@ void FreeSpaceTriangulation::visible_from_corner(std::size_t v, std::size_t wedg
 bool FreeSpaceTriangulation::visible_from_point(const Point& p, std::vector<std::size_t>& out) const {
   const Impl& t = *impl_;
   t.begin_query();
-  const std::vector<Face> faces = t.faces_at(p);
+  VertexHandle itself;
+  const std::vector<Face> faces = t.faces_at(p, &itself);
+  if (itself != VertexHandle() && itself->info() != kNoVertex)  // a viewpoint does not see itself
+    t.seen[static_cast<std::size_t>(itself->info())] = t.generation;
   bool any_free = false;
   for (Face f : faces)
     if (f->info().free) {
@@ -305,10 +303,11 @@ std::vector<int> FreeSpaceTriangulation::components_at(const Point& p) const {
 // Entering a blocked triangle or crossing a constrained edge is entering a C-obstacle.
 std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, const Point& b) const {
   const Impl& t = *impl_;
-  if (a == b) return t.faces_at(a).empty() || std::none_of(t.faces_at(a).begin(), t.faces_at(a).end(),
-                                                              [](Face f) { return f->info().free; })
-                         ? std::optional<std::string>("the point is blocked")
-                         : std::nullopt;
+  if (a == b) {
+    const std::vector<Face> faces = t.faces_at(a);
+    if (std::none_of(faces.begin(), faces.end(), [](Face f) { return f->info().free; })) return std::string("the point is blocked");
+    return std::nullopt;
+  }
   auto ahead = [&](const Point& q) {  // strictly beyond a in the direction of b
     return CGAL::scalar_product(q - a, b - a) > 0;
   };
@@ -427,28 +426,6 @@ std::optional<std::string> FreeSpaceTriangulation::why_path_blocked(const std::v
       return "turns at the pinch point " + to_text(path[i]) + " into another free wedge";
   }
   return std::nullopt;
-}
-
-bool FreeSpaceTriangulation::sees(const Point& p, const Point& q) const {
-  const Impl& t = *impl_;
-  t.begin_query();
-  const Cone ray{q, q};
-  std::vector<Impl::Step> stack;
-  for (Face f : t.faces_at(p)) {
-    if (!f->info().free) continue;
-    if (Impl::in_closed_triangle(f, q)) return true;
-    for (int i = 0; i < 3; ++i)
-      if (CGAL::orientation(p, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) != CGAL::COLLINEAR)
-        t.cross(p, f, i, ray, stack);
-  }
-  while (!stack.empty()) {
-    const Impl::Step step = stack.back();
-    stack.pop_back();
-    if (Impl::in_closed_triangle(step.face, q)) return true;
-    t.cross(p, step.face, CDT::ccw(step.entry), step.cone, stack);
-    t.cross(p, step.face, CDT::cw(step.entry), step.cone, stack);
-  }
-  return false;
 }
 
 }  // namespace polyplan::detail

@@ -125,8 +125,8 @@ const Roadmap& VisibilityGraph::roadmap() const { return impl_->roadmap; }
 
 RoadmapFacts VisibilityGraph::facts() const {
   const Impl& g = *impl_;
-  return {g.kind == VisibilityKind::reduced ? "visibility" : "visibility-full", g.corners,
-          boost::num_edges(g.roadmap) - boost::out_degree(g.start_slot, g.roadmap) - boost::out_degree(g.goal_slot, g.roadmap),
+  // The query slots' edges are cleared after every query: all edges are the corners'.
+  return {g.kind == VisibilityKind::reduced ? "visibility" : "visibility-full", g.corners, boost::num_edges(g.roadmap),
           g.build_seconds};
 }
 
@@ -147,7 +147,7 @@ Plan VisibilityGraph::plan(const ExactPoint& start, const ExactPoint& goal, cons
     return plan;
   }
 
-  if (g.triangulation.sees(from_point, to_point_)) {
+  if (!g.triangulation.why_blocked(from_point, to_point_)) {  // start sees goal: the segment
     plan.found = true;
     plan.path = {start, goal};
     plan.length = std::hypot(to_double(start.x) - to_double(goal.x), to_double(start.y) - to_double(goal.y));
@@ -166,15 +166,14 @@ Plan VisibilityGraph::plan(const ExactPoint& start, const ExactPoint& goal, cons
       plan.path = without_straight_corners(plan.path);
       plan.found = true;
       plan.length = result.cost;
+      // Every reported path is checked exactly (by a walk through the triangulation, not by the
+      // visibility cones that found it; the straight segment above was that walk already); a
+      // failure here is a bug, never a tolerance call.
+      std::vector<Point> points;
+      for (const ExactPoint& p : plan.path) points.push_back(to_point(p));
+      if (auto why = g.triangulation.why_path_blocked(points))
+        throw std::logic_error("visibility graph produced an invalid path: " + *why);
     }
-  }
-  // Every reported path is checked exactly (by a walk through the triangulation, not by the
-  // visibility cones that found it); a failure here is a bug, never a tolerance call.
-  if (plan.found) {
-    std::vector<Point> points;
-    for (const ExactPoint& p : plan.path) points.push_back(to_point(p));
-    if (auto why = g.triangulation.why_path_blocked(points))
-      throw std::logic_error("visibility graph produced an invalid path: " + *why);
   }
   plan.query_seconds = seconds_since(started);
   return plan;

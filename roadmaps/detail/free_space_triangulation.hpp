@@ -33,10 +33,6 @@ class FreeSpaceTriangulation {
   // Vertices visible from a point of the free space's closure; false when p is blocked.
   bool visible_from_point(const Point& p, std::vector<std::size_t>& out) const;
 
-  // Whether the segment p-q lies in the closure of the free space without passing a zero-width
-  // place: q is reached by a walk from p's triangles across unconstrained edges along the ray.
-  bool sees(const Point& p, const Point& q) const;
-
   // The free components (numbered by the triangulation) whose closure holds p; empty when p is
   // blocked. Two at a pinch point between components.
   std::vector<int> components_at(const Point& p) const;
