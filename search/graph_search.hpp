@@ -33,27 +33,7 @@
 #include <utility>
 #include <vector>
 
-namespace boost {
-// Declared, not included: naming a vecS adjacency_list below must not cost its header.
-struct vecS;
-template <class OutEdgeListS, class VertexListS, class DirectedS, class VertexProperty, class EdgeProperty,
-          class GraphProperty, class EdgeListS>
-class adjacency_list;
-}  // namespace boost
-
 namespace polyplan {
-
-// True for graphs whose vertex descriptors are the integers 0..num_vertices(g)-1, for which a
-// workspace may keep its state in an array of num_vertices(g) records (VertexStorage::automatic).
-// Specialise it for another graph type only if that holds and num_vertices(g) is small enough to
-// allocate; implicit graphs must keep the default (hash storage: memory proportional to touched).
-template <class Graph>
-struct has_dense_vertex_ids : std::false_type {};
-template <class OutEdgeListS, class DirectedS, class VertexProperty, class EdgeProperty, class GraphProperty,
-          class EdgeListS>
-struct has_dense_vertex_ids<
-    boost::adjacency_list<OutEdgeListS, boost::vecS, DirectedS, VertexProperty, EdgeProperty, GraphProperty, EdgeListS>>
-    : std::true_type {};
 
 namespace detail {
 
@@ -379,7 +359,7 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_pa
       const std::size_t n = num_vertices(g);
       if (static_cast<std::size_t>(start) >= n || static_cast<std::size_t>(goal) >= n)
         throw std::out_of_range("shortest_path: start or goal is not a vertex of the graph");
-      if (workspace.storage() == VertexStorage::automatic) {
+      if (workspace.storage() == VertexStorage::automatic && dense_vertex_table_fits(g)) {
         auto& table = detail::WorkspaceAccess::dense(workspace);
         detail::WorkspaceAccess::set_used_dense(workspace, true);
         table.begin_query(n);

@@ -7,10 +7,38 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <unordered_map>
 #include <vector>
 
+namespace boost {
+// Declared, not included: naming a vecS adjacency_list below must not cost its header.
+struct vecS;
+template <class OutEdgeListS, class VertexListS, class DirectedS, class VertexProperty, class EdgeProperty,
+          class GraphProperty, class EdgeListS>
+class adjacency_list;
+}  // namespace boost
+
 namespace polyplan {
+
+// True for graphs whose vertex descriptors are the integers 0..num_vertices(g)-1, for which a
+// workspace may keep its state in an array of num_vertices(g) records (VertexStorage::automatic).
+// Specialise it for another graph type only if that holds; when num_vertices(g) may be too large to
+// allocate (an implicit grid), also overload dense_vertex_table_fits for it, found by ADL.
+template <class Graph>
+struct has_dense_vertex_ids : std::false_type {};
+template <class OutEdgeListS, class DirectedS, class VertexProperty, class EdgeProperty, class GraphProperty,
+          class EdgeListS>
+struct has_dense_vertex_ids<
+    boost::adjacency_list<OutEdgeListS, boost::vecS, DirectedS, VertexProperty, EdgeProperty, GraphProperty, EdgeListS>>
+    : std::true_type {};
+
+// Whether this graph object is small enough for a table of num_vertices(g) records; otherwise
+// the workspace hashes the vertices touched. Stored graphs always fit.
+template <class Graph>
+constexpr bool dense_vertex_table_fits(const Graph&) {
+  return true;
+}
 
 // Where a workspace keeps the per-vertex state.
 //
