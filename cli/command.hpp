@@ -19,6 +19,8 @@ void add_cspace_command(CLI::App& app, Action& run);
 void add_check_command(CLI::App& app, Action& run);
 void add_plan_command(CLI::App& app, Action& run);
 void add_scen_command(CLI::App& app, Action& run);
+void add_grid_command(CLI::App& app, Action& run);
+void add_arm_command(CLI::App& app, Action& run);
 
 // Writes `value` to `target` ("-" is standard output); throws InputError if it cannot.
 void write_json(const nlohmann::json& value, const std::string& target);

@@ -32,6 +32,8 @@ int main(int argc, char** argv) {
   add_check_command(app, run);
   add_plan_command(app, run);
   add_scen_command(app, run);
+  add_grid_command(app, run);
+  add_arm_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

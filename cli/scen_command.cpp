@@ -1,6 +1,7 @@
 // polyplan scen MAP.map SCEN.scen [--reference REF.csv] [--json -]: every query of a MovingAI
 // scenario file, answered from one visibility graph, compared with reference lengths.
 #include "cli/command.hpp"
+#include "cli/progress.hpp"
 
 #include "geometry/cspace.hpp"
 #include "geometry/movingai_map.hpp"
@@ -26,22 +27,6 @@ struct ScenOptions {
 };
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
-
-// Long runs report on stderr about once a second, so a person knows it is working.
-class Progress {
- public:
-  explicit Progress(std::string what) : what_(std::move(what)) {}
-  void update(std::size_t done, std::size_t total) {
-    if (seconds_since(last_) < 1.0 && done != total) return;
-    last_ = Clock::now();
-    std::fprintf(stderr, "\r%s: %zu/%zu", what_.c_str(), done, total);
-    if (done == total) std::fprintf(stderr, "\n");
-  }
-
- private:
-  std::string what_;
-  Clock::time_point last_ = Clock::now();
-};
 
 int run_scen(const ScenOptions& options) {
   // Every input is read (and any error reported, alone on stderr) before the long work starts.

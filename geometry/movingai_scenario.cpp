@@ -21,8 +21,8 @@ std::vector<ScenarioQuery> read_scenarios(const std::string& path) {
     std::istringstream fields(line);
     ScenarioQuery q;
     std::string map_name;
-    int width = 0, height = 0;
-    if (!(fields >> q.bucket >> map_name >> width >> height >> q.start_x >> q.start_y >> q.goal_x >> q.goal_y >> q.octile_text))
+    q.line = line_number;
+    if (!(fields >> q.bucket >> map_name >> q.map_width >> q.map_height >> q.start_x >> q.start_y >> q.goal_x >> q.goal_y >> q.octile_text))
       throw InputError(path + ": line " + std::to_string(line_number) +
                        ": expected 'bucket map width height start_x start_y goal_x goal_y length'");
     try {

@@ -100,6 +100,12 @@ void append_style(std::string& out, const Style& style) {
 
 }  // namespace
 
+std::string format_number(double value) {
+  std::string out;
+  append_px(out, value);
+  return out;
+}
+
 std::string escape_xml(const std::string& text) {
   std::string out;
   out.reserve(text.size());
@@ -167,6 +173,7 @@ void Drawing::append_point(std::string& out, Point2 world) const {
 }
 
 void Drawing::mark_ink(Point2 world, bool important) {
+  if (moving_groups_ > 0) return;
   const Point2 p = to_screen(world);
   if (!(p.x >= 0 && p.y >= 0)) return;  // also NaN
   const double col = p.x / kInkCellPx, row = p.y / kInkCellPx;
@@ -177,6 +184,7 @@ void Drawing::mark_ink(Point2 world, bool important) {
 }
 
 void Drawing::mark_ink(Point2 a, Point2 b, bool important) {
+  if (moving_groups_ > 0) return;
   const Point2 sa = to_screen(a), sb = to_screen(b);
   // Entirely beyond one side of the picture: nothing to mark.
   if ((sa.x < 0 && sb.x < 0) || (sa.y < 0 && sb.y < 0) || (sa.x > width_px_ && sb.x > width_px_) ||
@@ -270,6 +278,34 @@ void Drawing::segments(const std::vector<std::pair<Point2, Point2>>& segs, const
   body_ += "\"/>\n";
 }
 
+void Drawing::boxes(const std::vector<Box2>& boxes, const Style& style) {
+  if (boxes.empty()) return;
+  body_ += "<path fill-rule=\"evenodd\"";
+  append_style(body_, style);
+  body_ += " d=\"";
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const Box2& b = boxes[i];
+    mark_ink({b.xmin, b.ymin}, {b.xmax, b.ymin}, kInkEdge);
+    mark_ink({b.xmax, b.ymin}, {b.xmax, b.ymax}, kInkEdge);
+    mark_ink({b.xmax, b.ymax}, {b.xmin, b.ymax}, kInkEdge);
+    mark_ink({b.xmin, b.ymax}, {b.xmin, b.ymin}, kInkEdge);
+    const Point2 p = to_screen({b.xmin, b.ymin}), q = to_screen({b.xmax, b.ymax});
+    if (i > 0) body_ += (i % 16 == 0) ? '\n' : ' ';
+    body_ += 'M';
+    append_px(body_, p.x);
+    body_ += ' ';
+    append_px(body_, p.y);
+    body_ += 'H';
+    append_px(body_, q.x);
+    body_ += 'V';
+    append_px(body_, q.y);
+    body_ += 'H';
+    append_px(body_, p.x);
+    body_ += 'Z';
+  }
+  body_ += "\"/>\n";
+}
+
 void Drawing::points(const std::vector<Point2>& pts, double radius_px, const Style& style) {
   if (pts.empty() || !(radius_px > 0)) return;
   body_ += "<g";
@@ -307,6 +343,36 @@ void Drawing::text(Point2 at, const std::string& content, double size_px) {
 
 void Drawing::legend(const std::string& label, const Style& style, Swatch swatch) {
   legend_.push_back({label, style, swatch});
+}
+
+void Drawing::begin_group(const std::string& attributes, const std::string& children, GroupContent content) {
+  body_ += "<g";
+  if (!attributes.empty()) {
+    body_ += ' ';
+    body_ += attributes;
+  }
+  body_ += ">\n";
+  body_ += children;
+  if (!children.empty() && children.back() != '\n') body_ += '\n';
+  open_groups_.push_back(content);
+  if (content == GroupContent::moves) ++moving_groups_;
+}
+
+void Drawing::end_group() {
+  if (open_groups_.empty()) throw std::logic_error("svg::Drawing::end_group: no group is open");
+  if (open_groups_.back() == GroupContent::moves) --moving_groups_;
+  open_groups_.pop_back();
+  body_ += "</g>\n";
+}
+
+void Drawing::keep_clear(const std::vector<Point2>& polyline) {
+  if (polyline.size() == 1) mark_ink(polyline[0], kInkImportant);
+  for (std::size_t i = 1; i < polyline.size(); ++i) mark_ink(polyline[i - 1], polyline[i], kInkImportant);
+}
+
+void Drawing::raw(const std::string& fragment) {
+  body_ += fragment;
+  if (!fragment.empty() && fragment.back() != '\n') body_ += '\n';
 }
 
 Drawing::LegendLayout Drawing::legend_layout() const {
@@ -446,6 +512,7 @@ std::string Drawing::str() const {
   append_attribute(out, "height", height);
   out += " fill=\"#fff\"/>\n";
   out += body_;
+  for (std::size_t i = 0; i < open_groups_.size(); ++i) out += "</g>\n";
   append_legend(out, layout);
   out += "</svg>\n";
   return out;

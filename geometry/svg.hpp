@@ -50,6 +50,8 @@ class Drawing {
   void polyline(const std::vector<Point2>&, const Style&);
   // All segments as one <path> (graphs may have 100k edges).
   void segments(const std::vector<std::pair<Point2, Point2>>&, const Style&);
+  // Axis-aligned boxes (grid cells, say) as one <path>, half the text of as many polygons.
+  void boxes(const std::vector<Box2>&, const Style&);
   // Circles of `radius_px` screen pixels, filled with style.fill and outlined with style.stroke.
   void points(const std::vector<Point2>&, double radius_px, const Style&);
   // Text whose baseline starts at `at`, upright, `size_px` screen pixels high, dark grey with a
@@ -60,6 +62,24 @@ class Drawing {
   // least of the drawing; when every corner would hide a point, a label or a path (or the picture
   // is too small for it), it goes in a band added below the picture instead.
   void legend(const std::string& label, const Style&, Swatch swatch = Swatch::automatic);
+
+  // Everything drawn until the matching end_group() goes in one <g> element: `attributes` are
+  // written verbatim into its start tag (class="...", transform="..."), `children` verbatim as its
+  // first children (an <animateTransform>, say) — how moving parts are drawn. When the group
+  // moves what it holds (a transform or an animation), say GroupContent::moves: what is drawn
+  // inside is then left out of where the legend looks for room, as it is not where it was given.
+  // str() closes the groups still open (before the legend, which is never inside one).
+  enum class GroupContent { in_place, moves };
+  void begin_group(const std::string& attributes, const std::string& children = {},
+                   GroupContent content = GroupContent::in_place);
+  // Throws std::logic_error when no group is open.
+  void end_group();
+  // An SVG fragment in the picture's pixel frame (see to_screen), written verbatim: what the
+  // writer has no call for (<defs>, an <animate>d circle). Left out of where the legend looks.
+  void raw(const std::string& fragment);
+  // Draws nothing, but keeps the legend off the polyline as off a drawn path: where a moving
+  // part will pass, say.
+  void keep_clear(const std::vector<Point2>& polyline);
 
   std::string str() const;
   // Throws std::runtime_error naming the file if it cannot be written.
@@ -110,9 +130,15 @@ class Drawing {
   std::vector<LegendEntry> legend_;
   std::size_t ink_columns_ = 0, ink_rows_ = 0;
   std::vector<Ink> ink_;
+  std::vector<GroupContent> open_groups_;
+  std::size_t moving_groups_ = 0;  // open groups that move their content: no ink is marked
 };
 
 // `text` with the XML special characters escaped (and characters XML forbids dropped).
 std::string escape_xml(const std::string& text);
+
+// A number as the writer prints pixel coordinates (8 significant digits, never "-0", "0" for
+// NaN and infinities), for fragments given to Drawing::raw or begin_group.
+std::string format_number(double value);
 
 }  // namespace polyplan::svg

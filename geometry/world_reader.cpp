@@ -1,5 +1,6 @@
 #include "geometry/world_reader.hpp"
 
+#include "geometry/detail/exact_json.hpp"
 #include "geometry/detail/world_checks.hpp"
 #include "geometry/input_error.hpp"
 
@@ -15,41 +16,6 @@ namespace {
 
 using json = nlohmann::json;
 
-// Builds the usual DOM, except that floating-point literals are kept as their source text
-// (a string), so that 0.1 can be read as exactly 1/10. Integers arrive exact already.
-class ExactNumberSax {
- public:
-  explicit ExactNumberSax(json& root) : dom_(root, /*allow_exceptions=*/false) {}
-  bool null() { return dom_.null(); }
-  bool boolean(bool v) { return dom_.boolean(v); }
-  bool number_integer(json::number_integer_t v) { return dom_.number_integer(v); }
-  bool number_unsigned(json::number_unsigned_t v) { return dom_.number_unsigned(v); }
-  bool number_float(json::number_float_t, const json::string_t& text) {
-    json::string_t copy = text;
-    return dom_.string(copy);
-  }
-  bool string(json::string_t& v) { return dom_.string(v); }
-  bool binary(json::binary_t& v) { return dom_.binary(v); }
-  bool start_object(std::size_t n) { return dom_.start_object(n); }
-  bool key(json::string_t& k) { return dom_.key(k); }
-  bool end_object() { return dom_.end_object(); }
-  bool start_array(std::size_t n) { return dom_.start_array(n); }
-  bool end_array() { return dom_.end_array(); }
-  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception& ex) {
-    // nlohmann converts numbers to double while lexing: one beyond double's range fails here,
-    // before its text reaches number_float.
-    if (ex.id == 406)
-      error = "number out of range at byte " + std::to_string(position) + " (exponent too large): " + ex.what();
-    else
-      error = "invalid JSON at byte " + std::to_string(position) + ": " + ex.what();
-    return false;
-  }
-  std::string error;
-
- private:
-  nlohmann::detail::json_sax_dom_parser<json> dom_;
-};
-
 // Reading context: the file name and a path of keys, so every message names the object.
 class Reader {
  public:
@@ -59,13 +25,7 @@ class Reader {
     throw InputError(file_ + ": " + object + ": " + problem);
   }
 
-  json parse(const std::string& text) const {
-    json root;
-    ExactNumberSax sax(root);
-    bool ok = json::sax_parse(text, &sax);
-    if (!ok) throw InputError(file_ + ": " + (sax.error.empty() ? "invalid JSON" : sax.error));
-    return root;
-  }
+  json parse(const std::string& text) const { return detail::parse_exact_json(text, file_); }
 
   Rational number(const json& v, const std::string& object) const {
     std::string text;

@@ -176,6 +176,7 @@ struct FoundGoal {};  // thrown through the BGL algorithm; never leaves shortest
 
 struct SearchCounts {
   std::size_t expanded = 0, generated = 0;
+  std::size_t reopened = 0;  // closed vertices given a shorter distance (weighted A*, inconsistent h)
 };
 
 template <class Vertex>
@@ -191,6 +192,9 @@ class AStarGoalVisitor : public boost::default_astar_visitor {
     if (trace_) trace_->push_back(u);
     if (u == goal_) throw FoundGoal{};
   }
+  // BGL calls it only when the relaxation re-opened a closed vertex.
+  template <class Edge, class Graph>
+  void black_target(const Edge&, const Graph&) { ++counts_->reopened; }
 
  private:
   Vertex goal_;
@@ -325,7 +329,15 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with
       result.path.push_back(p);
     }
     std::reverse(result.path.begin(), result.path.end());
-    result.cost = path_cost(g, result.path, weight);
+    // A best-first search that summed weights holds the goal's g, summed in path order, and it is
+    // the predecessor chain's sum unless a closed vertex's g went down after it was expanded: a
+    // re-opening, or on an undirected graph BGL's relax lowering the edge's source without telling
+    // any visitor (weighted A*, inconsistent h). Otherwise, and for the searches that ignored the
+    // weights (greedy, bfs, dfs), the path's weights are summed now.
+    const bool summed_weights = options.algorithm == Search::astar || options.algorithm == Search::dijkstra ||
+                                options.algorithm == Search::wastar;
+    const bool g_is_the_path_cost = summed_weights && counts.reopened == 0 && boost::is_directed(g);
+    result.cost = g_is_the_path_cost ? get(distance, goal) : path_cost(g, result.path, weight);
   }
   return result;
 }

@@ -95,6 +95,8 @@ GridGraph::GridGraph(std::vector<GridAxis> axes, Connectivity connectivity, Step
       sum += axes_[i].step;
     }
     d.cost = step_cost == StepCost::euclidean ? std::sqrt(squares) : sum;
+    d.delta = 0;
+    for (const AxisOffset& m : d.moves) d.delta += m.offset * strides_[m.axis];
     // Proper non-empty subsets of the moved axes.
     const std::size_t k = axes_moved.size();
     for (std::uint32_t mask = 1; mask + 1 < (1u << k); ++mask) {
@@ -191,13 +193,24 @@ bool GridGraph::checked_move(GridCell from, GridCell to) const {
 }
 
 GridDistanceTo::GridDistanceTo(const GridGraph& graph, GridCell goal, GridMetric metric)
-    : graph_(&graph), goal_(graph.coordinates(goal)), metric_(metric) {
+    : graph_(&graph), metric_(metric) {
   if (metric == GridMetric::octile && graph.dimensions() != 2)
     throw std::invalid_argument("GridDistanceTo: the octile metric needs a 2D grid, this one has " +
                                 std::to_string(graph.dimensions()) + " axes");
+  // With unequal steps max + (sqrt 2 - 1) min overestimates the diagonal: not a heuristic A* may use.
+  if (metric == GridMetric::octile && graph.axis(0).step != graph.axis(1).step)
+    throw std::invalid_argument("GridDistanceTo: the octile metric needs square cells (equal axis steps)");
+  const auto at = graph.coordinates(goal);
+  std::copy(at.begin(), at.end(), goal_.begin());
+  plane_octile_ = metric == GridMetric::octile && graph.axis(0).kind == AxisKind::bounded &&
+                  graph.axis(1).kind == AxisKind::bounded;
+  if (plane_octile_) {
+    width_ = static_cast<GridCell>(graph.axis(0).cells);
+    step_ = {graph.axis(0).step, graph.axis(1).step};
+  }
 }
 
-double GridDistanceTo::operator()(GridCell c) const {
+double GridDistanceTo::general(GridCell c) const {
   std::array<GridCoordinate, GridGraph::max_dimensions> at;
   graph_->coordinates(c, at);
   std::array<double, GridGraph::max_dimensions> d;
@@ -211,7 +224,7 @@ double GridDistanceTo::operator()(GridCell c) const {
   switch (metric_) {
     case GridMetric::octile: {
       const auto [lo, hi] = std::minmax(d[0], d[1]);
-      return hi + (std::sqrt(2.0) - 1.0) * lo;
+      return hi + sqrt2_minus_1 * lo;
     }
     case GridMetric::euclidean: {
       double s = 0;

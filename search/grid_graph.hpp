@@ -22,6 +22,7 @@
 #include <boost/iterator/iterator_facade.hpp>
 
 #include <array>
+#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -127,6 +128,7 @@ class GridGraph {
     std::vector<AxisOffset> moves;      // the axes it changes
     std::vector<std::uint32_t> guards;  // directions of its proper sub-moves: cells that must be free too
     double cost;
+    std::int64_t delta;                 // the change of the linear index when no axis wraps or ends
   };
   using Coordinates = std::array<GridCoordinate, max_dimensions>;
 
@@ -134,6 +136,25 @@ class GridGraph {
   bool lazy_is_free(GridCell) const;
   bool checked_move(GridCell from, GridCell to) const;
 
+  // Coordinates of a cell; in 2D with one division (the generic loop takes two), since A* decodes
+  // every cell it expands.
+  void decode(GridCell c, Coordinates& at) const {
+    if (dimensions_ == 2) {
+      const auto width = static_cast<GridCell>(axes_[0].cells);
+      const GridCell y = c / width;
+      at[0] = static_cast<GridCoordinate>(c - y * width);
+      at[1] = static_cast<GridCoordinate>(y);
+      return;
+    }
+    coordinates(c, std::span<GridCoordinate>(at.data(), dimensions_));
+  }
+  // Whether no move out of `at` leaves or wraps an axis: then every neighbour is at a fixed index
+  // offset (Direction::delta). Most cells of a big grid are interior.
+  bool interior(const Coordinates& at) const {
+    for (std::size_t i = 0; i < dimensions_; ++i)
+      if (at[i] == 0 || at[i] + 1 >= axes_[i].cells) return false;
+    return true;
+  }
   // The neighbour of `from` (at `at`) in direction d, false when it leaves a bounded axis.
   bool neighbour(GridCell from, const Coordinates& at, std::uint32_t d, GridCell& to) const {
     std::int64_t delta = 0;
@@ -149,11 +170,20 @@ class GridGraph {
     to = from + static_cast<GridCell>(delta);
     return true;
   }
-  bool allows(GridCell from, const Coordinates& at, std::uint32_t d, GridCell& to) const {
-    if (!neighbour(from, at, d, to) || !is_free(to)) return false;
-    for (const std::uint32_t g : directions_[d].guards) {
-      GridCell brushed;
-      if (!neighbour(from, at, g, brushed) || !is_free(brushed)) return false;
+  // The same cells are tested in the same order on both paths (a lazy test sees no difference).
+  bool allows(GridCell from, const Coordinates& at, bool inside, std::uint32_t d, GridCell& to) const {
+    const Direction& direction = directions_[d];
+    if (inside) {
+      to = from + static_cast<GridCell>(direction.delta);
+      if (!is_free(to)) return false;
+      for (const std::uint32_t g : direction.guards)
+        if (!is_free(from + static_cast<GridCell>(directions_[g].delta))) return false;
+    } else {
+      if (!neighbour(from, at, d, to) || !is_free(to)) return false;
+      for (const std::uint32_t g : direction.guards) {
+        GridCell brushed;
+        if (!neighbour(from, at, g, brushed) || !is_free(brushed)) return false;
+      }
     }
     return !move_test_ || checked_move(from, to);
   }
@@ -184,7 +214,7 @@ class GridMoveIterator : public boost::iterator_facade<GridMoveIterator, GridMov
 
   void skip_disallowed() {
     const auto end = static_cast<std::uint32_t>(graph_->directions_.size());
-    while (direction_ < end && !graph_->allows(source_, at_, direction_, target_)) ++direction_;
+    while (direction_ < end && !graph_->allows(source_, at_, interior_, direction_, target_)) ++direction_;
   }
   GridMove dereference() const { return {source_, target_, direction_}; }
   void increment() {
@@ -196,6 +226,7 @@ class GridMoveIterator : public boost::iterator_facade<GridMoveIterator, GridMov
   const GridGraph* graph_ = nullptr;
   GridCell source_ = 0, target_ = 0;
   std::uint32_t direction_ = 0;
+  bool interior_ = false;
   GridGraph::Coordinates at_{};
 };
 
@@ -203,7 +234,8 @@ inline std::pair<GridMoveIterator, GridMoveIterator> out_edges(GridCell c, const
   GridMoveIterator first, last;
   first.graph_ = last.graph_ = &g;
   first.source_ = last.source_ = c;
-  g.coordinates(c, first.at_);
+  g.decode(c, first.at_);
+  first.interior_ = g.interior(first.at_);
   last.direction_ = static_cast<std::uint32_t>(g.directions_.size());
   first.skip_disallowed();
   return {first, last};
@@ -231,7 +263,7 @@ struct GridMoveCost {
 };
 
 enum class GridMetric {
-  octile,       // 2D only: max + (sqrt 2 - 1) min of the axis distances; exact on an empty 8-connected grid
+  octile,       // 2D, square cells only: max + (sqrt 2 - 1) min; exact on an empty 8-connected grid
   euclidean,    // sqrt of the sum of squared axis distances
   sum_of_axes,  // the sum of the axis distances (on wrapping angle axes: the total angular distance)
 };
@@ -242,14 +274,28 @@ enum class GridMetric {
 // euclidean with StepCost::euclidean, any of them with StepCost::sum_of_axes.
 class GridDistanceTo {
  public:
-  // Throws std::invalid_argument for octile on a grid that is not 2D.
+  // Throws std::invalid_argument for octile on a grid that is not 2D or whose cells are not square.
   GridDistanceTo(const GridGraph& graph, GridCell goal, GridMetric metric);
-  double operator()(GridCell c) const;
+  double operator()(GridCell c) const {
+    if (!plane_octile_) return general(c);
+    // A* calls this for every cell it reaches: the octile distance on a bounded 2D grid, inline.
+    const GridCell y = c / width_;
+    const double dx = static_cast<double>(std::abs(static_cast<std::int64_t>(c - y * width_) - goal_[0])) * step_[0];
+    const double dy = static_cast<double>(std::abs(static_cast<std::int64_t>(y) - goal_[1])) * step_[1];
+    return dx < dy ? dy + (sqrt2_minus_1 * dx) : dx + (sqrt2_minus_1 * dy);
+  }
 
  private:
+  // std::sqrt(2.0) - 1.0 to the last bit (the diagonal move costs std::sqrt(2.0)), as a constant.
+  static constexpr double sqrt2_minus_1 = 0x1.a827999fcef34p-2;
+  double general(GridCell c) const;
+
   const GridGraph* graph_;
-  std::vector<GridCoordinate> goal_;
+  std::array<std::int64_t, GridGraph::max_dimensions> goal_{};
   GridMetric metric_;
+  bool plane_octile_ = false;  // octile on two bounded axes: the inline case
+  GridCell width_ = 1;
+  std::array<double, 2> step_{};
 };
 
 }  // namespace polyplan

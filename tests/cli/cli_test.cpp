@@ -1,47 +1,21 @@
 // The polyplan program run as a user runs it: exit codes, one-line errors, JSON output.
+#include "cli_runner.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
-#include <sys/wait.h>
 
 namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kSource = POLYPLAN_SOURCE_DIR;
-
-struct CliRun {
-  int exit_code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-CliRun polyplan(const std::string& arguments) {
-  const fs::path dir = fs::temp_directory_path() / ("polyplan_cli_test_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  const std::string command = std::string("'") + POLYPLAN_CLI + "' " + arguments + " >'" + (dir / "out").string() +
-                              "' 2>'" + (dir / "err").string() + "' </dev/null";
-  const int status = std::system(command.c_str());
-  CliRun run{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(dir / "out"), slurp(dir / "err")};
-  fs::remove_all(dir);
-  return run;
-}
+using namespace polyplan::test;
 
 std::string world(const std::string& name) { return "'" + kSource + "/data/worlds/" + name + "'"; }
 std::string path_file(const std::string& name) { return "'" + kSource + "/tests/data/paths/" + name + "'"; }
-
-std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
 
 struct BadFile {
   std::string file, expected;
@@ -66,7 +40,7 @@ TEST(BadInput, CorpusIsLargeEnough) { EXPECT_GE(bad_corpus().size(), 20u); }
 TEST(BadInput, EveryFileExitsTwoWithOneLineNamingTheProblem) {
   for (const BadFile& bad : bad_corpus()) {
     SCOPED_TRACE(bad.file);
-    const CliRun run = polyplan("cspace '" + kSource + "/tests/data/bad/" + bad.file + "'");
+    const CliRun run = run_polyplan("cspace '" + kSource + "/tests/data/bad/" + bad.file + "'");
     EXPECT_EQ(run.exit_code, 2) << run.err;
     EXPECT_EQ(lines(run.err), 1u) << run.err;
     EXPECT_NE(run.err.find(bad.expected), std::string::npos) << "expected \"" << bad.expected << "\" in: " << run.err;
@@ -80,7 +54,7 @@ TEST(Cspace, EveryShippedWorldBuilds) {
     if (entry.path().extension() != ".json") continue;
     SCOPED_TRACE(entry.path().string());
     ++worlds;
-    const CliRun run = polyplan("cspace '" + entry.path().string() + "' --json -");
+    const CliRun run = run_polyplan("cspace '" + entry.path().string() + "' --json -");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto summary = nlohmann::json::parse(run.out);
     EXPECT_GE(summary["free_components"].size(), 1u);
@@ -91,14 +65,14 @@ TEST(Cspace, EveryShippedWorldBuilds) {
 
 TEST(Cspace, ExactFitCorridorSplitsTheFreeSpace) {
   // The exact fit leaves two rooms; one billionth more joins them through the corridor.
-  const auto exact = nlohmann::json::parse(polyplan("cspace " + world("corridor_exact.json") + " --json -").out);
-  const auto wide = nlohmann::json::parse(polyplan("cspace " + world("corridor_wide.json") + " --json -").out);
+  const auto exact = nlohmann::json::parse(run_polyplan("cspace " + world("corridor_exact.json") + " --json -").out);
+  const auto wide = nlohmann::json::parse(run_polyplan("cspace " + world("corridor_wide.json") + " --json -").out);
   EXPECT_EQ(exact["free_components"].size(), 2u);
   EXPECT_EQ(wide["free_components"].size(), 1u);
 }
 
 TEST(Cspace, AreasAreExactRationals) {
-  const auto summary = nlohmann::json::parse(polyplan("cspace " + world("touching_corners.json") + " --json -").out);
+  const auto summary = nlohmann::json::parse(run_polyplan("cspace " + world("touching_corners.json") + " --json -").out);
   ASSERT_EQ(summary["free_components"].size(), 2u);
   for (const auto& c : summary["free_components"]) {
     EXPECT_EQ(c["area"], "4");
@@ -108,7 +82,7 @@ TEST(Cspace, AreasAreExactRationals) {
 
 TEST(Cspace, WritesAnSvgAndATable) {
   const fs::path svg = fs::temp_directory_path() / "polyplan_cli_test_office.svg";
-  const CliRun run = polyplan("cspace " + world("office.json") + " --svg '" + svg.string() + "'");
+  const CliRun run = run_polyplan("cspace " + world("office.json") + " --svg '" + svg.string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("free component"), std::string::npos) << run.out;
   EXPECT_NE(slurp(svg).find("<svg"), std::string::npos);
@@ -128,7 +102,7 @@ TEST(Check, ExitCodesFollowTheVerdict) {
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(std::string(c.world) + " " + c.path);
-    const CliRun run = polyplan("check " + world(c.world) + " " + path_file(c.path) + " --json -");
+    const CliRun run = run_polyplan("check " + world(c.world) + " " + path_file(c.path) + " --json -");
     EXPECT_EQ(run.exit_code, c.exit_code) << run.out << run.err;
     const auto verdict = nlohmann::json::parse(run.out);
     EXPECT_EQ(verdict["valid"].get<bool>(), c.exit_code == 0);
@@ -139,23 +113,23 @@ TEST(Check, ExitCodesFollowTheVerdict) {
 TEST(Check, BadPathFileExitsTwo) {
   const fs::path bad = fs::temp_directory_path() / "polyplan_cli_test_bad_path.json";
   std::ofstream(bad) << R"({"path": [[0, 0], [1, "x"]]})";
-  const CliRun run = polyplan("check " + world("maze.json") + " '" + bad.string() + "'");
+  const CliRun run = run_polyplan("check " + world("maze.json") + " '" + bad.string() + "'");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("path[1][1]: not a number"), std::string::npos) << run.err;
   fs::remove(bad);
 }
 
 TEST(Usage, HelpExitsZeroAndUnknownOptionsExitTwo) {
-  EXPECT_EQ(polyplan("--help").exit_code, 0);
-  EXPECT_EQ(polyplan("cspace --help").exit_code, 0);
-  EXPECT_EQ(polyplan("check --help").exit_code, 0);
-  EXPECT_EQ(polyplan("cspace").exit_code, 2);
-  EXPECT_EQ(polyplan("cspace " + world("maze.json") + " --frobnicate").exit_code, 2);
-  EXPECT_EQ(polyplan("teleport").exit_code, 2);
+  EXPECT_EQ(run_polyplan("--help").exit_code, 0);
+  EXPECT_EQ(run_polyplan("cspace --help").exit_code, 0);
+  EXPECT_EQ(run_polyplan("check --help").exit_code, 0);
+  EXPECT_EQ(run_polyplan("cspace").exit_code, 2);
+  EXPECT_EQ(run_polyplan("cspace " + world("maze.json") + " --frobnicate").exit_code, 2);
+  EXPECT_EQ(run_polyplan("teleport").exit_code, 2);
 }
 
 TEST(Plan, PrintsDesignsJsonWithExactPath) {
-  const CliRun run = polyplan("plan " + world("decimal.json") + " --json -");
+  const CliRun run = run_polyplan("plan " + world("decimal.json") + " --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto plans = nlohmann::json::parse(run.out);
   ASSERT_TRUE(plans.is_array());  // start/goal and one query
@@ -171,7 +145,7 @@ TEST(Plan, PrintsDesignsJsonWithExactPath) {
 }
 
 TEST(Plan, OneQueryIsAnObjectAndNoPathIsAnAnswer) {
-  const CliRun run = polyplan("plan " + world("touching_corners.json") + " --json -");
+  const CliRun run = run_polyplan("plan " + world("touching_corners.json") + " --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto plan = nlohmann::json::parse(run.out);
   ASSERT_TRUE(plan.is_object());
@@ -182,20 +156,20 @@ TEST(Plan, OneQueryIsAnObjectAndNoPathIsAnAnswer) {
 TEST(Plan, EverySearchAndTheFullGraph) {
   for (const char* search : {"astar", "dijkstra", "bfs", "dfs", "greedy", "wastar --weight 2"}) {
     SCOPED_TRACE(search);
-    const CliRun run = polyplan("plan " + world("maze.json") + " --roadmap visibility-full --search " + search + " --json -");
+    const CliRun run = run_polyplan("plan " + world("maze.json") + " --roadmap visibility-full --search " + search + " --json -");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto plan = nlohmann::json::parse(run.out);
     EXPECT_TRUE(plan["found"].get<bool>());
     EXPECT_EQ(plan["roadmap"]["kind"], "visibility-full");
     EXPECT_EQ(plan["search"]["algorithm"], std::string(search).substr(0, std::string(search).find(' ')));
   }
-  EXPECT_EQ(polyplan("plan " + world("maze.json") + " --search teleport").exit_code, 2);
-  EXPECT_EQ(polyplan("plan " + world("maze.json") + " --search wastar --weight 0.5").exit_code, 2);
+  EXPECT_EQ(run_polyplan("plan " + world("maze.json") + " --search teleport").exit_code, 2);
+  EXPECT_EQ(run_polyplan("plan " + world("maze.json") + " --search wastar --weight 0.5").exit_code, 2);
 }
 
 TEST(Plan, DrawsRoadmapAndPath) {
   const fs::path svg = fs::temp_directory_path() / "polyplan_cli_test_plan.svg";
-  const CliRun run = polyplan("plan " + world("seed004.json") + " --svg '" + svg.string() + "'");
+  const CliRun run = run_polyplan("plan " + world("seed004.json") + " --svg '" + svg.string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string picture = slurp(svg);
   EXPECT_NE(picture.find("roadmap edges"), std::string::npos);
@@ -205,7 +179,7 @@ TEST(Plan, DrawsRoadmapAndPath) {
 
 TEST(Scen, ArenaMatchesTheReference) {
   const std::string data = std::string(POLYPLAN_BENCHMARK_DIR);
-  const CliRun run = polyplan("scen '" + data + "/maps/arena.map' '" + data + "/scenarios/arena.map.scen' --reference '" + data +
+  const CliRun run = run_polyplan("scen '" + data + "/maps/arena.map' '" + data + "/scenarios/arena.map.scen' --reference '" + data +
                               "/reference/arena.csv' --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto out = nlohmann::json::parse(run.out);
@@ -218,7 +192,7 @@ TEST(Scen, ArenaMatchesTheReference) {
 
 TEST(Scen, BadInputIsOneLineAndExitTwo) {
   const std::string data = std::string(POLYPLAN_BENCHMARK_DIR);
-  const CliRun run = polyplan("scen '" + data + "/maps/arena.map' no_such.scen");
+  const CliRun run = run_polyplan("scen '" + data + "/maps/arena.map' no_such.scen");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(lines(run.err), 1u) << run.err;
   EXPECT_NE(run.err.find("no_such.scen: cannot open file"), std::string::npos) << run.err;

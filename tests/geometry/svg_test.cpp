@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <limits>
 #include <regex>
 #include <sstream>
 #include <stdexcept>
@@ -269,3 +270,103 @@ TEST(SvgDrawing, WriteProducesTheSameTextAsStr) {
 }
 
 }  // namespace
+
+TEST(SvgDrawing, GroupsHoldWhatIsDrawnInsideThemAfterTheirChildren) {
+  Drawing d({0, 0, 10, 10});
+  Style s;
+  s.fill = "#0a0";
+  d.begin_group("class=\"moving\" transform=\"rotate(30 5 5)\"", "<animate attributeName=\"opacity\"/>",
+                Drawing::GroupContent::moves);
+  d.points({{1, 1}}, 3, s);
+  d.end_group();
+  d.raw("<circle id=\"raw\" cx=\"1\" cy=\"2\" r=\"3\"/>");
+  const std::string svg = d.str();
+  const auto group = svg.find("<g class=\"moving\" transform=\"rotate(30 5 5)\">\n<animate attributeName=\"opacity\"/>\n");
+  ASSERT_NE(group, std::string::npos) << svg;
+  const auto circle = svg.find("<circle", group);
+  const auto close = svg.find("</g>\n</g>\n", group);  // the points' own group, then ours
+  const auto raw = svg.find("<circle id=\"raw\" cx=\"1\" cy=\"2\" r=\"3\"/>\n");
+  ASSERT_NE(close, std::string::npos) << svg;
+  EXPECT_LT(circle, close);
+  EXPECT_GT(raw, close);
+  EXPECT_EQ(count(svg, "<g"), count(svg, "</g>"));
+  EXPECT_THROW(d.end_group(), std::logic_error);
+}
+
+TEST(SvgDrawing, OpenGroupsAreClosedBeforeTheLegend) {
+  Drawing d({0, 0, 10, 10});
+  d.begin_group("class=\"a\"");
+  d.begin_group("class=\"b\"");
+  d.polyline({{1, 1}, {2, 2}}, Style{});
+  d.legend("line", Style{});
+  const std::string svg = d.str();
+  EXPECT_EQ(count(svg, "<g"), count(svg, "</g>")) << svg;
+  // Both closed before the legend's group opens: the legend is never transformed with them.
+  const auto legend = svg.find("<g font-size=");
+  ASSERT_NE(legend, std::string::npos);
+  EXPECT_EQ(svg.rfind("</g>\n</g>\n", legend) + 10, legend) << svg;
+}
+
+TEST(SvgDrawing, MovingGroupsDoNotPushTheLegendAway) {
+  Style dot;
+  dot.fill = "#0a0";
+  auto legend_x = [](const Drawing& d) {
+    const std::string svg = d.str();
+    const auto at = svg.find("<g font-size=");
+    return std::stod(attribute(svg.substr(at), "rect", "x"));
+  };
+  // A point in the top-left corner drawn in place pushes the legend out of that corner ...
+  Drawing still({0, 0, 10, 10});
+  still.begin_group("class=\"still\"");
+  still.points({{0, 10}}, 4, dot);
+  still.end_group();
+  still.legend("dot", dot, polyplan::svg::Swatch::dot);
+  EXPECT_GT(legend_x(still), still.width_px() / 2);
+  // ... but not when it sits in a group that moves it elsewhere.
+  Drawing moving({0, 0, 10, 10});
+  moving.begin_group("transform=\"translate(400 400)\"", {}, Drawing::GroupContent::moves);
+  moving.points({{0, 10}}, 4, dot);
+  moving.end_group();
+  moving.legend("dot", dot, polyplan::svg::Swatch::dot);
+  EXPECT_LT(legend_x(moving), moving.width_px() / 2);
+  // keep_clear marks where it moves to, drawing nothing.
+  Drawing kept({0, 0, 10, 10});
+  kept.begin_group("transform=\"translate(400 400)\"", {}, Drawing::GroupContent::moves);
+  kept.points({{0, 10}}, 4, dot);
+  kept.end_group();
+  kept.keep_clear({{0, 10}, {1, 9}});
+  kept.legend("dot", dot, polyplan::svg::Swatch::dot);
+  EXPECT_GT(legend_x(kept), kept.width_px() / 2);
+  EXPECT_EQ(count(kept.str(), "<path"), 0u);
+}
+
+TEST(SvgDrawing, BoxesAreOnePathOfRectangles) {
+  Drawing d({0, 0, 10, 10});
+  Style s;
+  s.fill = "#ccc";
+  d.boxes({{1, 2, 3, 5}, {6, 6, 7, 9}}, s);
+  const std::string svg = d.str();
+  EXPECT_EQ(count(svg, "<path"), 1u);
+  const std::string path = attribute(svg, "path", "d");
+  EXPECT_EQ(count(path, "M"), 2u);
+  EXPECT_EQ(count(path, "Z"), 2u);
+  // "M x0 y0 H x1 V y1 H x0 Z" in the pixel frame: the first box's corners.
+  std::string first = path.substr(0, path.find('Z'));
+  for (char& c : first)
+    if (c == 'M' || c == 'H' || c == 'V') c = ' ';
+  const auto xy = numbers_in(first);
+  ASSERT_EQ(xy.size(), 5u) << path;
+  const Point2 low = d.to_screen({1, 2}), high = d.to_screen({3, 5});
+  EXPECT_NEAR(xy[0], low.x, 1e-4);
+  EXPECT_NEAR(xy[1], low.y, 1e-4);
+  EXPECT_NEAR(xy[2], high.x, 1e-4);
+  EXPECT_NEAR(xy[3], high.y, 1e-4);
+  EXPECT_NEAR(xy[4], low.x, 1e-4);
+}
+
+TEST(SvgDrawing, FormatNumberPrintsLikeCoordinates) {
+  EXPECT_EQ(polyplan::svg::format_number(0.5), "0.5");
+  EXPECT_EQ(polyplan::svg::format_number(-0.0), "0");
+  EXPECT_EQ(polyplan::svg::format_number(1.0 / 3), "0.33333333");
+  EXPECT_EQ(polyplan::svg::format_number(std::numeric_limits<double>::quiet_NaN()), "0");
+}

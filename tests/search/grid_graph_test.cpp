@@ -155,9 +155,17 @@ TEST(GridGraph, RandomMapsMatchAnIndependentDijkstraForEveryAlgorithm) {
       EXPECT_EQ(again.expanded, astar.expanded);
       EXPECT_LE(wastar.cost, 2 * expected + 1e-9);
       EXPECT_GE(greedy.cost, expected - 1e-9);
-      // Every step of every path is a move of the graph.
-      for (const auto* r : {&astar, &wastar, &greedy, &bfs})
-        for (std::size_t i = 0; i + 1 < r->path.size(); ++i) EXPECT_TRUE(neighbours(g, r->path[i]).count(r->path[i + 1]));
+      // Every step of every path is a move of the graph, and the reported cost is the steps' sum
+      // (for weighted A* too, whose re-opened cells make the goal's g differ from a stale chain).
+      for (const auto* r : {&astar, &dijkstra, &wastar, &greedy, &bfs}) {
+        double sum = 0;
+        for (std::size_t i = 0; i + 1 < r->path.size(); ++i) {
+          EXPECT_TRUE(neighbours(g, r->path[i]).count(r->path[i + 1]));
+          const auto a = g.coordinates(r->path[i]), b = g.coordinates(r->path[i + 1]);
+          sum += a[0] != b[0] && a[1] != b[1] ? sqrt2 : 1.0;
+        }
+        EXPECT_NEAR(r->cost, sum, 1e-9);
+      }
     }
   }
 }
@@ -242,6 +250,8 @@ TEST(GridGraph, RejectsMalformedGrids) {
   const GridGraph cube(std::vector<GridAxis>(3, GridAxis{3}), Connectivity::full, StepCost::euclidean, lazy);
   EXPECT_EQ(cube.direction_count(), 26u);
   EXPECT_THROW(GridDistanceTo(cube, 0, GridMetric::octile), std::invalid_argument);
+  const GridGraph oblong({{3, AxisKind::bounded, 1.0}, {3, AxisKind::bounded, 0.1}}, Connectivity::full, StepCost::euclidean, lazy);
+  EXPECT_THROW(GridDistanceTo(oblong, 0, GridMetric::octile), std::invalid_argument);
 }
 
 }  // namespace

@@ -1,0 +1,84 @@
+// polyplan arm, run as a user runs it: the seed 000 cases on the torus and the interval, the JSON
+// the issue fixes, the pictures, and one-line errors.
+#include "cli_runner.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+namespace {
+
+using namespace polyplan::test;
+namespace fs = std::filesystem;
+
+std::string arm_file(const std::string& name) { return "'" + kSource + "/data/arms/" + name + "'"; }
+
+TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
+  const CliRun torus = run_polyplan("arm " + arm_file("two_link_points.json") + " --method grid --resolution 5 --query hard --json -");
+  ASSERT_EQ(torus.exit_code, 0) << torus.err;
+  const auto j = nlohmann::json::parse(torus.out);
+  for (const char* key : {"found", "path", "length", "cells_evaluated", "expanded", "seconds"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  ASSERT_TRUE(j["found"].get<bool>());
+  // The path starts exactly at the file's start configuration and ends exactly at its goal.
+  EXPECT_EQ(j["path"].front(), nlohmann::json::parse("[3.30, 2.34]"));
+  EXPECT_EQ(j["path"].back(), nlohmann::json::parse("[5.49, 1.07]"));
+  EXPECT_EQ(j["grid"]["torus"], true);
+  EXPECT_EQ(j["grid"]["evaluation"], "lazy");
+
+  const CliRun interval = run_polyplan("arm " + arm_file("two_link_points.json") + " --resolution 5 --no-torus --query hard --json -");
+  ASSERT_EQ(interval.exit_code, 0) << "no path is an answer: " << interval.err;
+  const auto k = nlohmann::json::parse(interval.out);
+  EXPECT_FALSE(k["found"].get<bool>());
+  EXPECT_TRUE(k["length"].is_null());
+  EXPECT_FALSE(k["why_not"].get<std::string>().empty());
+}
+
+TEST(ArmCommand, EveryQueryOfAFileGivesAnArrayAndEagerMatchesLazy) {
+  const CliRun lazy = run_polyplan("arm " + arm_file("two_link_points.json") + " --json -");
+  const CliRun eager = run_polyplan("arm " + arm_file("two_link_points.json") + " --eager --json -");
+  ASSERT_EQ(lazy.exit_code, 0) << lazy.err;
+  ASSERT_EQ(eager.exit_code, 0) << eager.err;
+  const auto a = nlohmann::json::parse(lazy.out), b = nlohmann::json::parse(eager.out);
+  ASSERT_TRUE(a.is_array());
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i]["query"], b[i]["query"]);
+    EXPECT_NEAR(a[i]["length"].get<double>(), b[i]["length"].get<double>(), 1e-12);
+    EXPECT_LT(a[i]["cells_evaluated"].get<int>(), b[i]["cells_evaluated"].get<int>());
+  }
+}
+
+TEST(ArmCommand, WritesTheAnimationAndTheStrobe) {
+  const fs::path dir = fs::temp_directory_path() / ("polyplan_arm_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const CliRun run = run_polyplan("arm " + arm_file("two_link_points.json") + " --query medium --svg '" +
+                              (dir / "medium.svg").string() + "' --strobe '" + (dir / "strobe.svg").string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string animation = slurp(dir / "medium.svg"), strobe = slurp(dir / "strobe.svg");
+  EXPECT_NE(animation.find("repeatCount=\"indefinite\""), std::string::npos);
+  EXPECT_EQ(animation.find("<script"), std::string::npos);
+  EXPECT_NE(strobe.find("<svg"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(ArmCommand, BadInputIsOneLineNamingTheProblem) {
+  const CliRun resolution = run_polyplan("arm " + arm_file("two_link_points.json") + " --resolution 7");
+  EXPECT_EQ(resolution.exit_code, 2);
+  EXPECT_EQ(lines(resolution.err), 1u) << resolution.err;
+  EXPECT_NE(resolution.err.find("must divide 360"), std::string::npos) << resolution.err;
+  const CliRun query = run_polyplan("arm " + arm_file("two_link_points.json") + " --query nonsense");
+  EXPECT_EQ(query.exit_code, 2);
+  EXPECT_NE(query.err.find("no query named nonsense"), std::string::npos) << query.err;
+  const CliRun method = run_polyplan("arm " + arm_file("two_link_points.json") + " --method prm");
+  EXPECT_EQ(method.exit_code, 2);
+  EXPECT_EQ(lines(method.err), 1u) << method.err;
+  const CliRun missing = run_polyplan("arm /nonexistent/arm.json");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_NE(missing.err.find("/nonexistent/arm.json"), std::string::npos) << missing.err;
+}
+
+}  // namespace

@@ -1,0 +1,44 @@
+#pragma once
+// Runs the polyplan program as a user does (a shell, files for stdout and stderr) for the CLI
+// tests: every cli_tests source includes this one runner.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace polyplan::test {
+
+inline const std::string kSource = POLYPLAN_SOURCE_DIR;
+
+struct CliRun {
+  int exit_code;
+  std::string out, err;
+};
+
+inline std::string slurp(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// `arguments` is pasted into a shell command line: quote paths with '...'.
+inline CliRun run_polyplan(const std::string& arguments) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("polyplan_cli_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const std::string command = std::string("'") + POLYPLAN_CLI + "' " + arguments + " >'" + (dir / "out").string() +
+                              "' 2>'" + (dir / "err").string() + "' </dev/null";
+  const int status = std::system(command.c_str());
+  CliRun run{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(dir / "out"), slurp(dir / "err")};
+  fs::remove_all(dir);
+  return run;
+}
+
+inline std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace polyplan::test
