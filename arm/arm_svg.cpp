@@ -53,14 +53,7 @@ constexpr const char* kHatchId = "polyplan-not-evaluated";
 
 using Points = std::vector<svg::Point2>;
 
-svg::Style filled(const std::string& fill, double fill_opacity, const std::string& stroke, double stroke_px) {
-  svg::Style s;
-  s.fill = fill;
-  s.fill_opacity = fill_opacity;
-  s.stroke = stroke;
-  s.stroke_px = stroke_px;
-  return s;
-}
+using svg::filled;
 
 svg::Style stroked(const std::string& stroke, double stroke_px, const std::string& dash = {}) {
   svg::Style s;

@@ -34,14 +34,7 @@ svg::Box2 to_box(const Bounds& b) {
   return {to_double(b.xmin), to_double(b.ymin), to_double(b.xmax), to_double(b.ymax)};
 }
 
-svg::Style filled(const std::string& fill, double fill_opacity, const std::string& stroke, double stroke_px) {
-  svg::Style s;
-  s.fill = fill;
-  s.fill_opacity = fill_opacity;
-  s.stroke = stroke;
-  s.stroke_px = stroke_px;
-  return s;
-}
+using svg::filled;
 
 // Colours: free space in pale tints (one per component, so disconnected regions are told apart),
 // C-obstacles translucent orange over which the solid blue-grey obstacles sit, starts green, goals red.

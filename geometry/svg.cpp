@@ -11,6 +11,15 @@
 
 namespace polyplan::svg {
 
+Style filled(const std::string& fill, double fill_opacity, const std::string& stroke, double stroke_px) {
+  Style s;
+  s.fill = fill;
+  s.fill_opacity = fill_opacity;
+  s.stroke = stroke;
+  s.stroke_px = stroke_px;
+  return s;
+}
+
 namespace {
 
 constexpr const char* kFontFamily = "DejaVu Sans, Helvetica, Arial, sans-serif";

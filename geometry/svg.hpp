@@ -34,6 +34,9 @@ struct Style {
   std::string dash;  // e.g. "4 3", in screen pixels; empty for a solid line
 };
 
+// A filled area with an outline: the style most pictures draw regions with.
+Style filled(const std::string& fill, double fill_opacity, const std::string& stroke, double stroke_px);
+
 // What a legend entry's swatch looks like. `automatic` draws a filled square when the style has a
 // fill and a line sample otherwise.
 enum class Swatch { automatic, area, line, dot };
