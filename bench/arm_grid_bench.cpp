@@ -27,7 +27,7 @@ void plan(benchmark::State& state, bool lazy) {
   ArmGridPlan last;
   for (auto _ : state) {
     last = plan_arm_on_grid(p, q, options);
-    benchmark::DoNotOptimize(last.length);
+    benchmark::DoNotOptimize(last.path.data());
   }
   state.SetLabel(q.name + (last.found ? "" : " (no path)"));
   state.counters["cells_evaluated"] = static_cast<double>(last.cells_evaluated);
