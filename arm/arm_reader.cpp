@@ -8,10 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <iostream>
 #include <set>
-#include <sstream>
 
 namespace polyplan {
 namespace {
@@ -19,13 +17,9 @@ namespace {
 using json = nlohmann::json;
 
 // The file name for messages, and the checks every field shares.
-class ArmFileReader {
+class ArmFileReader : public detail::JsonFileReader {
  public:
-  explicit ArmFileReader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& object, const std::string& problem) const {
-    throw InputError(file_ + ": " + object + ": " + problem);
-  }
+  using JsonFileReader::JsonFileReader;
 
   // Arm numbers are doubles by nature (they feed cos and sin), but they are read from their text
   // like every number of polyplan's files, and rounded once, to the nearest double.
@@ -55,31 +49,10 @@ class ArmFileReader {
     return a;
   }
 
-  void warn_unknown(const json& v, const std::string& object, const std::set<std::string>& known,
-                    std::vector<std::string>& warnings) const {
-    for (const auto& item : v.items())
-      if (!known.count(item.key())) warnings.push_back(file_ + ": " + object + ": unknown field \"" + item.key() + "\" ignored");
-  }
-
   // A number as the file wrote it (floating-point literals arrive as their text).
   static std::string text(const json& v) { return v.is_string() ? v.get<std::string>() : abbreviated(v); }
 
-  static std::string abbreviated(const json& v) {
-    std::string s = v.dump();
-    return s.size() > 40 ? s.substr(0, 37) + "..." : s;
-  }
-
- private:
-  std::string file_;
 };
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 Arm read_arm(const ArmFileReader& r, const json& root) {
   Arm arm;
@@ -138,7 +111,7 @@ void read_queries(const ArmFileReader& r, const json& root, ArmProblem& problem,
     const std::string object = "queries[" + std::to_string(i) + "]";
     const json& q = queries[i];
     if (!q.is_object()) r.fail(object, "expected {\"name\": \"...\", \"start\": [θ1, ...], \"goal\": [θ1, ...]}");
-    r.warn_unknown(q, object, {"name", "start", "goal"}, warnings);
+    r.warn_unknown(q, object, {"name", "start", "goal"}, &warnings);
     ArmQuery query;
     query.name = object;
     if (q.contains("name")) {
@@ -161,12 +134,12 @@ void read_queries(const ArmFileReader& r, const json& root, ArmProblem& problem,
 
 ArmProblem parse_arm_problem(const std::string& text, const std::string& name, std::vector<std::string>* warnings) {
   const ArmFileReader r(name);
-  const json root = detail::parse_exact_json(text, name);
+  const json root = r.parse(text);
   if (!root.is_object()) r.fail("arm", "expected a JSON object at the top level");
 
   std::vector<std::string> found_warnings;
   r.warn_unknown(root, "arm", {"links", "link_width", "self_collision", "obstacles", "points", "start", "goal", "queries"},
-                 found_warnings);
+                 &found_warnings);
 
   ArmProblem problem;
   problem.source = name;
@@ -182,7 +155,7 @@ ArmProblem parse_arm_problem(const std::string& text, const std::string& name, s
 }
 
 ArmProblem read_arm_problem(const std::string& path, std::vector<std::string>* warnings) {
-  return parse_arm_problem(read_file(path), path, warnings);
+  return parse_arm_problem(detail::read_text_file(path), path, warnings);
 }
 
 }  // namespace polyplan

@@ -7,9 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 namespace polyplan {
 namespace {
@@ -17,15 +15,9 @@ namespace {
 using json = nlohmann::json;
 
 // Reading context: the file name and a path of keys, so every message names the object.
-class Reader {
+class Reader : public detail::JsonFileReader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& object, const std::string& problem) const {
-    throw InputError(file_ + ": " + object + ": " + problem);
-  }
-
-  json parse(const std::string& text) const { return detail::parse_exact_json(text, file_); }
+  using JsonFileReader::JsonFileReader;
 
   Rational number(const json& v, const std::string& object) const {
     std::string text;
@@ -68,38 +60,7 @@ class Reader {
     }
     return p;
   }
-
-  const json& required(const json& object_value, const char* key, const std::string& object) const {
-    if (!object_value.contains(key)) fail(object, std::string("missing field \"") + key + "\"");
-    return object_value[key];
-  }
-
-  void warn_unknown(const json& v, const std::string& object, const std::set<std::string>& known,
-                    std::vector<std::string>* warnings) const {
-    if (!warnings) return;
-    for (const auto& item : v.items())
-      if (!known.count(item.key()))
-        warnings->push_back(file_ + ": " + object + ": unknown field \"" + item.key() + "\" ignored");
-  }
-
-  static std::string abbreviated(const json& v) {
-    std::string s = v.dump();
-    return s.size() > 40 ? s.substr(0, 37) + "..." : s;
-  }
-
-  const std::string& file() const { return file_; }
-
- private:
-  std::string file_;
 };
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw InputError(path + ": cannot open file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 }  // namespace
 
@@ -173,12 +134,12 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
 }
 
 World read_world(const std::string& path, std::vector<std::string>* warnings) {
-  return parse_world(read_file(path), path, warnings);
+  return parse_world(detail::read_text_file(path), path, warnings);
 }
 
 std::vector<ExactPoint> read_path(const std::string& path) {
   Reader r(path);
-  json root = r.parse(read_file(path));
+  json root = r.parse(detail::read_text_file(path));
   if (!root.is_object()) r.fail("path file", "expected a JSON object {\"path\": [[x, y], ...]}");
   const json& points = r.required(root, "path", "path file");
   if (!points.is_array() || points.empty()) r.fail("path", "expected a non-empty list of points [[x, y], ...]");

@@ -6,7 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+#include <set>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace polyplan::detail {
 
@@ -54,5 +58,52 @@ inline nlohmann::json parse_exact_json(const std::string& text, const std::strin
     throw InputError(file + ": " + (sax.error.empty() ? "invalid JSON" : sax.error));
   return root;
 }
+
+// A file's whole text; InputError "<path>: cannot open file".
+inline std::string read_text_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open file");
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// What every reader of polyplan's JSON files shares: the file name, so that every message is
+// one line "FILE: OBJECT: problem", and the checks that do not depend on the file's kind.
+class JsonFileReader {
+ public:
+  using json = nlohmann::json;
+  explicit JsonFileReader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& object, const std::string& problem) const {
+    throw InputError(file_ + ": " + object + ": " + problem);
+  }
+
+  json parse(const std::string& text) const { return parse_exact_json(text, file_); }
+
+  const json& required(const json& object_value, const char* key, const std::string& object) const {
+    if (!object_value.contains(key)) fail(object, std::string("missing field \"") + key + "\"");
+    return object_value[key];
+  }
+
+  // Unknown fields are warned about (when warnings are collected) and ignored.
+  void warn_unknown(const json& v, const std::string& object, const std::set<std::string>& known,
+                    std::vector<std::string>* warnings) const {
+    if (!warnings) return;
+    for (const auto& item : v.items())
+      if (!known.count(item.key()))
+        warnings->push_back(file_ + ": " + object + ": unknown field \"" + item.key() + "\" ignored");
+  }
+
+  static std::string abbreviated(const json& v) {
+    std::string s = v.dump();
+    return s.size() > 40 ? s.substr(0, 37) + "..." : s;
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+};
 
 }  // namespace polyplan::detail
