@@ -2,8 +2,8 @@
 // same A* on the same grid, the cells decided when the search reaches them or all up front. Both in
 // one run, for each query of data/arms/two_link_points.json at 5 and 1 degrees; the counters are
 // the cells evaluated (collision checks of grid configurations) and the moves checked.
-#include "arm/arm_grid_planner.hpp"
-#include "arm/arm_reader.hpp"
+#include <polyplan/arm/arm_grid_planner.hpp>
+#include <polyplan/io/arm_reader.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -1,7 +1,7 @@
 // Why CSpace joins all obstacles in one aggregated union: joining them one at a time re-sweeps
 // the growing arrangement at every step (quadratic). Both on the same staggered field of
 // overlapping squares, in the same run.
-#include "geometry/cspace.hpp"
+#include <polyplan/geometry/cspace.hpp>
 
 #include <CGAL/Boolean_set_operations_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>

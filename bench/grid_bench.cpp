@@ -9,9 +9,9 @@
 //                                          load from other processes hits both alike): ratio =
 //                                          bgl rate / flat rate, and each rate
 // Both engines must find the same lengths, or the benchmark stops with an error.
-#include "geometry/movingai_map.hpp"
-#include "geometry/movingai_scenario.hpp"
-#include "search/movingai_grid.hpp"
+#include <polyplan/io/movingai_map.hpp>
+#include <polyplan/io/movingai_scenario.hpp>
+#include <polyplan/roadmaps/movingai_grid.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -2,10 +2,10 @@
 // map). Polyanya's means measured on this kind of machine are in the benchmark data's README
 // (arena 0.9 us, den312d 3.8 us, lak303d 73 us, brc202d 152 us, orz103d 165 us); the counters
 // report ours next to them.
-#include "geometry/cspace.hpp"
-#include "geometry/movingai_map.hpp"
-#include "geometry/movingai_scenario.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/io/movingai_map.hpp>
+#include <polyplan/io/movingai_scenario.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -8,7 +8,7 @@
 //   hashed_fresh   shortest_path(roadmap, s, t, options): a fresh hash workspace per query
 //   dense_fresh    a fresh versioned-array workspace per query (pays O(V) allocation every time)
 //   bgl_peer       boost::astar_search with vector property maps: O(V) initialisation per query
-#include "search/shortest_path.hpp"
+#include <polyplan/search/shortest_path.hpp>
 
 #include <benchmark/benchmark.h>
 #include <boost/graph/astar_search.hpp>

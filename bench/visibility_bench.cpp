@@ -2,9 +2,9 @@
 // construction (every pair of boundary vertices tested with check_path: O(n^2) pairs, each O(n)),
 // on the same worlds of 250 to 2000 obstacle vertices, in the same run. The naive builder is the
 // full graph's definition, so the peer is VisibilityKind::full; the reduced graph is timed too.
-#include "geometry/cspace.hpp"
-#include "geometry/path_check.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <benchmark/benchmark.h>
 

@@ -3,11 +3,11 @@
 // its C-space, every query of the file (or the one --query names).
 #include "cli/command.hpp"
 
-#include "arm/arm_grid_planner.hpp"
-#include "arm/arm_motion.hpp"
-#include "arm/arm_reader.hpp"
-#include "arm/arm_svg.hpp"
-#include "geometry/input_error.hpp"
+#include <polyplan/arm/arm_grid_planner.hpp>
+#include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/io/arm_reader.hpp>
+#include <polyplan/draw/arm_svg.hpp>
+#include <polyplan/geometry/input_error.hpp>
 
 #include <cmath>
 #include <cstdio>

@@ -2,9 +2,9 @@
 // it is, 1 when it is not, 2 on bad input.
 #include "cli/command.hpp"
 
-#include "geometry/cspace.hpp"
-#include "geometry/path_check.hpp"
-#include "geometry/world_reader.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/io/world_reader.hpp>
 
 #include <iostream>
 

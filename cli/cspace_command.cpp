@@ -1,9 +1,9 @@
 // polyplan cspace WORLD.json [--svg OUT.svg] [--json -]: builds the exact C-space and reports it.
 #include "cli/command.hpp"
 
-#include "geometry/cspace.hpp"
-#include "geometry/cspace_svg.hpp"
-#include "geometry/world_reader.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/draw/world_svg.hpp>
+#include <polyplan/io/world_reader.hpp>
 
 #include <chrono>
 #include <cstdio>

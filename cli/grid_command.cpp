@@ -4,10 +4,10 @@
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 
-#include "geometry/input_error.hpp"
-#include "geometry/movingai_map.hpp"
-#include "geometry/movingai_scenario.hpp"
-#include "search/movingai_grid.hpp"
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/io/movingai_map.hpp>
+#include <polyplan/io/movingai_scenario.hpp>
+#include <polyplan/roadmaps/movingai_grid.hpp>
 
 #include <algorithm>
 #include <chrono>

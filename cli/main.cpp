@@ -1,7 +1,7 @@
 // polyplan: the command-line program. Each subcommand lives in its own file.
 #include "cli/command.hpp"
 
-#include "geometry/input_error.hpp"
+#include <polyplan/geometry/input_error.hpp>
 
 #include <fstream>
 #include <iostream>

@@ -4,12 +4,12 @@
 #include "cli/command.hpp"
 #include "cli/plan_output.hpp"
 
-#include "geometry/cspace.hpp"
-#include "geometry/cspace_svg.hpp"
-#include "geometry/input_error.hpp"
-#include "geometry/world_reader.hpp"
-#include "roadmaps/roadmap_svg.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/draw/world_svg.hpp>
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/draw/plan_svg.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <iostream>
 

@@ -1,7 +1,7 @@
 #pragma once
 // How a Plan is printed: DESIGN.md's JSON object, and a readable line for people.
-#include "roadmaps/plan.hpp"
-#include "geometry/world.hpp"
+#include <polyplan/roadmaps/plan.hpp>
+#include <polyplan/geometry/world.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -3,10 +3,10 @@
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 
-#include "geometry/cspace.hpp"
-#include "geometry/movingai_map.hpp"
-#include "geometry/movingai_scenario.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/io/movingai_map.hpp>
+#include <polyplan/io/movingai_scenario.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <algorithm>
 #include <chrono>

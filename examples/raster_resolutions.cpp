@@ -5,14 +5,14 @@
 // the visibility graph. A table on stdout and an SVG per resolution.
 // Usage: raster_resolutions [WORLD.json] [OUT_PREFIX] [N1 N2 N3]
 //   defaults: data/worlds/sphere_world.json, "raster", 10 40 200 → raster_n10.svg, ...
-#include "geometry/cspace.hpp"
-#include "geometry/cspace_svg.hpp"
-#include "geometry/input_error.hpp"
-#include "geometry/rasterize.hpp"
-#include "geometry/world_reader.hpp"
-#include "roadmaps/raster_planner.hpp"
-#include "roadmaps/roadmap_svg.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/draw/world_svg.hpp>
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/roadmaps/raster_planner.hpp>
+#include <polyplan/draw/plan_svg.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <chrono>
 #include <cstdio>

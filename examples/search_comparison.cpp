@@ -1,12 +1,12 @@
 // The table of seed 004's report: on the seed 004 world, every search of a course over one
 // visibility graph — number of path segments, path cost, nodes explored — and all paths in one
 // picture. Usage: search_comparison [WORLD.json] [OUT.svg]
-#include "geometry/cspace.hpp"
-#include "geometry/cspace_svg.hpp"
-#include "geometry/input_error.hpp"
-#include "geometry/world_reader.hpp"
-#include "roadmaps/roadmap_svg.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/draw/world_svg.hpp>
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/draw/plan_svg.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <cstdio>
 #include <iostream>

@@ -1,11 +1,11 @@
 // arm/arm_grid_planner: the arm's C-space grid searched on the torus or the square, lazily or
 // eagerly. Every returned path is re-checked here, configuration by configuration and along every
 // motion at the stated resolution, with the collision checker alone.
-#include "arm/arm_grid_planner.hpp"
+#include <polyplan/arm/arm_grid_planner.hpp>
 
-#include "arm/arm_collision.hpp"
-#include "arm/arm_motion.hpp"
-#include "arm/arm_reader.hpp"
+#include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/io/arm_reader.hpp>
 
 #include <gtest/gtest.h>
 

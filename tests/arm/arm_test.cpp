@@ -1,12 +1,12 @@
 // arm/: angles, forward kinematics, the exact collision convention, checked motions, arm files and
 // the shipped data/arms files. Expected values are worked out by hand in the comments, or
 // re-computed independently (long double geometry with a safety margin, seed 001's formulas).
-#include "arm/angles.hpp"
-#include "arm/arm.hpp"
-#include "arm/arm_collision.hpp"
-#include "arm/arm_motion.hpp"
-#include "arm/arm_reader.hpp"
-#include "geometry/input_error.hpp"
+#include <polyplan/arm/angles.hpp>
+#include <polyplan/arm/arm.hpp>
+#include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/io/arm_reader.hpp>
+#include <polyplan/geometry/input_error.hpp>
 
 #include <gtest/gtest.h>
 

@@ -178,7 +178,7 @@ TEST(Plan, DrawsRoadmapAndPath) {
 }
 
 TEST(Scen, ArenaMatchesTheReference) {
-  const std::string data = std::string(POLYPLAN_BENCHMARK_DIR);
+  const std::string data = std::string(POLYPLAN_SOURCE_DIR "/data/movingai");
   const CliRun run = run_polyplan("scen '" + data + "/maps/arena.map' '" + data + "/scenarios/arena.map.scen' --reference '" + data +
                               "/reference/arena.csv' --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -191,7 +191,7 @@ TEST(Scen, ArenaMatchesTheReference) {
 }
 
 TEST(Scen, BadInputIsOneLineAndExitTwo) {
-  const std::string data = std::string(POLYPLAN_BENCHMARK_DIR);
+  const std::string data = std::string(POLYPLAN_SOURCE_DIR "/data/movingai");
   const CliRun run = run_polyplan("scen '" + data + "/maps/arena.map' no_such.scen");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(lines(run.err), 1u) << run.err;

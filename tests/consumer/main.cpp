@@ -1,9 +1,9 @@
 // Reads a world and prints the number of free components, and plans a two-link arm on its C-space
 // grid: proof that the installed headers and libraries (with their public Eigen and Boost
 // dependencies) are usable on their own.
-#include <arm/arm_grid_planner.hpp>
-#include <geometry/cspace.hpp>
-#include <geometry/world_reader.hpp>
+#include <polyplan/arm/arm_grid_planner.hpp>
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/io/world_reader.hpp>
 
 #include <iostream>
 

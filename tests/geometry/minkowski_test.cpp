@@ -1,5 +1,5 @@
 // C-obstacles against Minkowski sums worked out by hand.
-#include "geometry/cspace.hpp"
+#include <polyplan/geometry/cspace.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>

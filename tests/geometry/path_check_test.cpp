@@ -1,5 +1,5 @@
 // check_path on the cases where floating point gets "free" wrong.
-#include "geometry/path_check.hpp"
+#include <polyplan/geometry/path_check.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // rasterize: hand-counted cells on small worlds (boundary contact, corners, exact decimals, robots
 // with extent), and every cell against an independent exact reference: the area of the C-obstacles
 // clipped to the cell's square (positive iff the open square meets their interior).
-#include "geometry/input_error.hpp"
-#include "geometry/rasterize.hpp"
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/rasterize.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>

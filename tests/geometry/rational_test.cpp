@@ -1,4 +1,4 @@
-#include "geometry/rational.hpp"
+#include <polyplan/geometry/rational.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // Euclidean shortest paths on the MovingAI maps against Polyanya's reference lengths.
-#include "geometry/cspace.hpp"
-#include "geometry/movingai_map.hpp"
-#include "geometry/movingai_scenario.hpp"
-#include "geometry/path_check.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/io/movingai_map.hpp>
+#include <polyplan/io/movingai_scenario.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@ using namespace polyplan;
 
 namespace {
 
-const std::string kBenchmarks = POLYPLAN_BENCHMARK_DIR;
+const std::string kBenchmarks = POLYPLAN_SOURCE_DIR "/data/movingai";
 
 struct Outcome {
   std::size_t queries = 0, mismatches = 0;

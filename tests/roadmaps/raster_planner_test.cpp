@@ -1,11 +1,11 @@
 // plan_on_raster: seed 000's search_start_goal on the rasterised sphere world (routes at three
 // resolutions, lengths against the exact visibility-graph optimum, every path re-checked
 // independently), and on hand-made worlds where the answer is known exactly.
-#include "geometry/path_check.hpp"
-#include "geometry/rasterize.hpp"
-#include "geometry/world_reader.hpp"
-#include "roadmaps/raster_planner.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/roadmaps/raster_planner.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>

@@ -1,8 +1,8 @@
 // The visibility graph's paths against an independent brute force: every pair of free-space
 // boundary vertices joined when check_path accepts the segment, then Dijkstra.
-#include "geometry/path_check.hpp"
-#include "geometry/world_reader.hpp"
-#include "roadmaps/visibility_graph.hpp"
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>

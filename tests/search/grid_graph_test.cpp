@@ -1,8 +1,8 @@
 // search/grid_graph: the implicit grid as a BGL graph, searched with the one shortest_path. Costs
 // are checked against closed forms (octile, wrap-around distances) and against an independent
 // flat-array Dijkstra/BFS written here; lazy cells are evaluated once each and only where touched.
-#include "search/graph_search.hpp"
-#include "search/grid_graph.hpp"
+#include <polyplan/search/graph_search.hpp>
+#include <polyplan/search/grid_graph.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // search/: every algorithm on a hand-made graph with its counts worked out by hand, the classic
 // comparisons (BFS vs Dijkstra, A* vs Dijkstra, greedy's suboptimality), workspace reuse on a big
 // roadmap, an implicit graph, and random graphs against an independent Floyd–Warshall.
-#include "search/graph_search.hpp"
-#include "search/shortest_path.hpp"
+#include <polyplan/search/graph_search.hpp>
+#include <polyplan/search/shortest_path.hpp>
 
 #include <gtest/gtest.h>
 

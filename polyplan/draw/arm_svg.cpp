@@ -1,0 +1,728 @@
+#include <polyplan/draw/arm_svg.hpp>
+
+#include <polyplan/arm/angles.hpp>
+#include <polyplan/arm/arm.hpp>
+#include <polyplan/draw/world_svg.hpp>
+#include <polyplan/draw/svg.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace polyplan {
+namespace {
+
+constexpr double kDegreesPerRadian = 180 / std::numbers::pi;
+
+// Screen sizes in pixels.
+constexpr double kPanelPx = 520;      // the workspace's larger side, and the C-space panel's side
+constexpr double kTitleBandPx = 46;   // above the panels: the title and the panels' names
+constexpr double kTickBandPx = 40;    // below the C-space panel: θ1's tick labels and name
+constexpr double kPanelGapPx = 78;    // between the panels: θ2's tick labels and name
+constexpr double kRightPadPx = 10;
+
+// Timing of the animation.
+constexpr double kSecondsPerRadian = 1;
+constexpr double kFewestSeconds = 2, kMostSeconds = 60;
+constexpr double kRestAtStartSeconds = 0.5, kRestAtGoalSeconds = 1;
+
+// The end effector's path keeps at most this many vertices of the motion (the C-space path all).
+constexpr std::size_t kMostTraceVertices = 2000;
+// Configurations marked as where the moving arm will be, for placing the legend.
+constexpr std::size_t kMostSweepMarks = 200;
+
+// Colours: start blue, goal red (the strobe ramps between them), the moving arm orange; obstacles
+// as in geometry/cspace_svg.cpp, blocked configurations in the obstacles' colour, free ones in
+// the free-space tint.
+constexpr const char* kStartColour = "#1f77b4";
+constexpr const char* kGoalColour = "#d62728";
+constexpr const char* kStartEdge = "#14507d";
+constexpr const char* kGoalEdge = "#8f1a1b";
+constexpr const char* kArmFill = "#f28e2b";
+constexpr const char* kArmEdge = "#8a4a0f";
+constexpr const char* kObstacleFill = "#51606f";
+constexpr const char* kObstacleEdge = "#2b3440";
+constexpr const char* kFreeFill = "#e3f1e5";
+constexpr const char* kHatchId = "polyplan-not-evaluated";
+
+using Points = std::vector<svg::Point2>;
+
+using svg::filled;
+
+svg::Style stroked(const std::string& stroke, double stroke_px, const std::string& dash = {}) {
+  svg::Style s;
+  s.stroke = stroke;
+  s.stroke_px = stroke_px;
+  s.dash = dash;
+  return s;
+}
+
+svg::Point2 point(const Eigen::Vector2d& p) { return {p.x(), p.y()}; }
+
+// Evenly spaced indices into a sequence of `size`, at most `most` of them (at least 2), the first
+// and the last always among them.
+std::vector<std::size_t> spread_indices(std::size_t size, std::size_t most) {
+  most = std::max<std::size_t>(most, 2);
+  std::vector<std::size_t> out;
+  if (size == 0) return out;
+  const std::size_t count = std::min(size, most);
+  if (count == 1) return {0};
+  out.reserve(count);
+  for (std::size_t k = 0; k < count; ++k) {
+    out.push_back(static_cast<std::size_t>(
+        std::llround(static_cast<double>(k) * static_cast<double>(size - 1) / static_cast<double>(count - 1))));
+  }
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Checking the picture
+
+void check_picture(const ArmPlanPicture& picture) {
+  if (!picture.problem) throw std::invalid_argument("arm picture: no problem given");
+  const Arm& arm = picture.problem->arm;
+  for (std::size_t k = 0; k < picture.motion.size(); ++k) {
+    if (picture.motion[k].size() != arm.joints()) {
+      throw std::invalid_argument("arm picture: motion[" + std::to_string(k) + "] has " +
+                                  std::to_string(picture.motion[k].size()) + " joint angles, the arm has " +
+                                  std::to_string(arm.joints()) + " joints");
+    }
+    for (double angle : picture.motion[k]) {
+      if (!std::isfinite(angle)) {
+        throw std::invalid_argument("arm picture: motion[" + std::to_string(k) + "] has a non-finite angle");
+      }
+    }
+  }
+  if (picture.cspace) {
+    if (arm.joints() != 2) {
+      throw std::invalid_argument("arm picture: a C-space image needs an arm of 2 joints, this one has " +
+                                  std::to_string(arm.joints()));
+    }
+    const std::size_t n = picture.cspace->cells_per_axis;
+    if (n == 0 || picture.cspace->state.size() != n * n) {
+      throw std::invalid_argument("arm picture: C-space image of " + std::to_string(n) + " cells per axis has " +
+                                  std::to_string(picture.cspace->state.size()) + " states, not n·n");
+    }
+    for (std::uint8_t s : picture.cspace->state) {
+      if (s > ArmCSpaceImage::blocked) {
+        throw std::invalid_argument("arm picture: C-space image has a cell of state " + std::to_string(s) +
+                                    " (0 not evaluated, 1 free, 2 blocked)");
+      }
+    }
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// Angles along the motion
+
+// The motion with every joint's angle made continuous: each step is the signed short way round
+// (as the planners interpolate), so 6.2 → 0.1 becomes 6.2 → 6.383…. SMIL interpolates keyframe
+// values linearly: wrapped values would swing the arm the long way round at every 2π → 0.
+std::vector<JointAngles> unwrapped(const std::vector<JointAngles>& motion) {
+  std::vector<JointAngles> out;
+  out.reserve(motion.size());
+  for (std::size_t k = 0; k < motion.size(); ++k) {
+    if (k == 0) {
+      out.push_back(motion[0]);
+      continue;
+    }
+    JointAngles next = out.back();
+    for (std::size_t j = 0; j < next.size(); ++j) next[j] += signed_angle_difference(motion[k - 1][j], motion[k][j]);
+    out.push_back(std::move(next));
+  }
+  return out;
+}
+
+// Path length up to each configuration: the sum of every joint's turn.
+std::vector<double> cumulative_turn(const std::vector<JointAngles>& unwrapped_motion) {
+  std::vector<double> out(unwrapped_motion.size(), 0.0);
+  for (std::size_t k = 1; k < unwrapped_motion.size(); ++k) {
+    double step = 0;
+    for (std::size_t j = 0; j < unwrapped_motion[k].size(); ++j) {
+      step += std::abs(unwrapped_motion[k][j] - unwrapped_motion[k - 1][j]);
+    }
+    out[k] = out[k - 1] + step;
+  }
+  return out;
+}
+
+// When each keyframe is shown: the configurations kept (first and last repeated for the rests at
+// both ends) and their times as fractions of the period, in proportion to the path length so
+// that the joints turn at a steady speed.
+struct Timeline {
+  std::vector<std::size_t> frames;  // indices into the motion
+  std::vector<double> key_times;    // 0 first, 1 last, never decreasing
+  double seconds = 0;               // the period, rests included
+};
+
+Timeline timeline(const std::vector<double>& turn, double seconds, std::size_t max_keyframes) {
+  Timeline t;
+  if (turn.empty()) return t;
+  const double length = turn.back();
+  const double moving = seconds > 0 && std::isfinite(seconds)
+                            ? seconds
+                            : std::clamp(kSecondsPerRadian * length, kFewestSeconds, kMostSeconds);
+  t.seconds = kRestAtStartSeconds + moving + kRestAtGoalSeconds;
+  const std::vector<std::size_t> kept = spread_indices(turn.size(), max_keyframes);
+  const double last = static_cast<double>(turn.size() - 1);
+  t.frames.push_back(kept.front());
+  t.key_times.push_back(0);
+  for (std::size_t i : kept) {
+    // A motion that does not move (start = goal) still advances through its keyframes.
+    const double progress = length > 0 ? turn[i] / length : (last > 0 ? static_cast<double>(i) / last : 0);
+    t.frames.push_back(i);
+    t.key_times.push_back((kRestAtStartSeconds + moving * progress) / t.seconds);
+  }
+  t.frames.push_back(kept.back());
+  t.key_times.push_back(1);
+  return t;
+}
+
+std::string seconds_attribute(double seconds) { return "dur=\"" + svg::format_number(seconds) + "s\""; }
+
+std::string key_times_attribute(const std::vector<double>& key_times) {
+  std::string out = "keyTimes=\"";
+  for (std::size_t i = 0; i < key_times.size(); ++i) {
+    if (i > 0) out += ';';
+    out += svg::format_number(key_times[i]);
+  }
+  return out + '"';
+}
+
+// ---------------------------------------------------------------------------------------------
+// Layout: the workspace on the left, the C-space panel (if any) on the right, in one drawing whose
+// units are the workspace's; the panel maps [0, 2π]² onto a square as high as the workspace is
+// large.
+
+struct Layout {
+  svg::Box2 workspace{};
+  bool has_panel = false;
+  double panel_x = 0, panel_y = 0, panel_side = 0;
+  double px = 1;  // drawing units per screen pixel
+  svg::Box2 whole{};
+  double width_px = 800;
+
+  svg::Point2 on_panel(double theta1, double theta2) const {
+    return {panel_x + theta1 / two_pi * panel_side, panel_y + theta2 / two_pi * panel_side};
+  }
+};
+
+svg::Box2 workspace_box(const ArmProblem& problem) {
+  double r = problem.arm.reach();
+  if (!(r > 0) || !std::isfinite(r)) r = 1;
+  svg::Box2 box{-r, -r, r, r};
+  auto extend = [&](double x, double y) {
+    box = {std::min(box.xmin, x), std::min(box.ymin, y), std::max(box.xmax, x), std::max(box.ymax, y)};
+  };
+  for (const PolygonWithHoles& o : problem.obstacles)
+    for (const ExactPoint& p : o.outer) extend(to_double(p.x), to_double(p.y));
+  for (const Eigen::Vector2d& p : problem.points) extend(p.x(), p.y());
+  return box;
+}
+
+Layout layout(const ArmPlanPicture& picture) {
+  Layout l;
+  l.workspace = workspace_box(*picture.problem);
+  const svg::Box2& w = l.workspace;
+  const double larger = std::max(w.xmax - w.xmin, w.ymax - w.ymin);
+  l.px = larger / kPanelPx;
+  l.has_panel = picture.cspace.has_value();
+  l.whole = {w.xmin, w.ymin, w.xmax, w.ymax + kTitleBandPx * l.px};
+  if (l.has_panel) {
+    l.panel_side = larger;
+    l.panel_x = w.xmax + kPanelGapPx * l.px;
+    l.panel_y = w.ymin;
+    l.whole.xmax = l.panel_x + l.panel_side + kRightPadPx * l.px;
+    l.whole.ymin = w.ymin - kTickBandPx * l.px;
+    l.whole.ymax = std::max(w.ymax, l.panel_y + l.panel_side) + kTitleBandPx * l.px;
+  }
+  // svg::Drawing adds a margin of 4% of the larger side on each side: choose the width that keeps
+  // kPanelPx pixels for the workspace's larger side.
+  const double margin = 0.04 * std::max(l.whole.xmax - l.whole.xmin, l.whole.ymax - l.whole.ymin);
+  l.width_px = (l.whole.xmax - l.whole.xmin + 2 * margin) / l.px;
+  return l;
+}
+
+// About how wide a label is, in pixels: UTF-8 code points at 0.6 em each.
+double text_width_px(const std::string& text, double size_px) {
+  std::size_t glyphs = 0;
+  for (unsigned char c : text) glyphs += (c & 0xC0) != 0x80;
+  return 0.6 * size_px * static_cast<double>(glyphs);
+}
+
+// Text centred on `at` (the writer starts text at its anchor).
+void centred_text(svg::Drawing& d, const Layout& l, svg::Point2 at, const std::string& text, double size_px) {
+  d.text({at.x - text_width_px(text, size_px) / 2 * l.px, at.y}, text, size_px);
+}
+
+void draw_titles(svg::Drawing& d, const Layout& l, const ArmPlanPicture& picture) {
+  const std::string& title = picture.title;
+  const double top = l.whole.ymax;
+  if (!title.empty()) d.text({l.whole.xmin, top - 18 * l.px}, title, 15);
+  const double names_y = std::max(l.workspace.ymax, l.panel_y + l.panel_side) + 8 * l.px;
+  d.text({l.workspace.xmin, names_y}, picture.motion.empty() ? "workspace — no path" : "workspace", 12);
+  if (l.has_panel) {
+    d.text({l.panel_x, names_y},
+           picture.torus ? "C-space θ1 × θ2 (a torus: opposite edges meet)" : "C-space θ1 × θ2 (intervals [0, 2π))", 12);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The workspace
+
+void draw_surroundings(svg::Drawing& d, const ArmProblem& problem) {
+  // The obstacles exactly as a world's are drawn (geometry/cspace_svg.hpp).
+  World world;
+  world.obstacles = problem.obstacles;
+  draw_world(d, world);
+
+  if (!problem.points.empty()) {
+    Points dots;
+    for (const Eigen::Vector2d& p : problem.points) dots.push_back(point(p));
+    const svg::Style s = filled(kObstacleFill, 1.0, kObstacleEdge, 0.8);
+    d.points(dots, 3.5, s);
+    d.legend("obstacle points (" + std::to_string(dots.size()) + ")", s, svg::Swatch::dot);
+  }
+
+  const double reach = problem.arm.reach();
+  if (reach > 0 && std::isfinite(reach)) {
+    Points circle;
+    constexpr int kSides = 180;
+    for (int i = 0; i < kSides; ++i) {
+      const double a = two_pi * i / kSides;
+      circle.push_back({reach * std::cos(a), reach * std::sin(a)});
+    }
+    const svg::Style s = stroked("#9a9a9a", 1, "5 4");
+    d.polygon({circle}, s);
+    d.legend("reach", s, svg::Swatch::line);
+  }
+}
+
+void draw_base(svg::Drawing& d) {
+  const svg::Style s = filled("#222", 1.0, "#fff", 1.5);
+  d.points({{0, 0}}, 5.5, s);
+  d.legend("base", s, svg::Swatch::dot);
+}
+
+// How one configuration of the arm is drawn: rectangles (links of some width) or thick lines.
+struct LinkLook {
+  svg::Style body;
+  svg::Style joint;  // the dots on the joints
+};
+
+LinkLook link_look(const Arm& arm, const std::string& colour, const std::string& edge, double opacity) {
+  LinkLook look;
+  look.body = arm.link_width > 0 ? filled(colour, 1.0, edge, 1.2) : stroked(colour, 5);
+  look.body.opacity = opacity;
+  look.joint = filled("#fff", 1.0, edge, 1.5);
+  look.joint.opacity = opacity;
+  return look;
+}
+
+void draw_link(svg::Drawing& d, const Arm& arm, const std::vector<Eigen::Vector2d>& joints, std::size_t link,
+               const LinkLook& look) {
+  Points outline;
+  for (const Eigen::Vector2d& p : link_outline(arm, joints, link)) outline.push_back(point(p));
+  if (outline.size() >= 3) {
+    d.polygon({outline}, look.body);
+  } else {
+    d.polyline(outline, look.body);
+  }
+}
+
+void draw_configuration(svg::Drawing& d, const Arm& arm, const JointAngles& q, const LinkLook& look,
+                        bool with_joints) {
+  const std::vector<Eigen::Vector2d> joints = joint_positions(arm, q);
+  for (std::size_t i = 0; i < arm.joints(); ++i) draw_link(d, arm, joints, i, look);
+  if (with_joints) {
+    Points dots;
+    for (std::size_t i = 1; i < joints.size(); ++i) dots.push_back(point(joints[i]));
+    d.points(dots, 3, look.joint);
+  }
+}
+
+void draw_tip_path(svg::Drawing& d, const Arm& arm, const std::vector<JointAngles>& motion) {
+  if (motion.size() < 2) return;
+  Points tip;
+  for (std::size_t i : spread_indices(motion.size(), kMostTraceVertices)) {
+    tip.push_back(point(joint_positions(arm, motion[i]).back()));
+  }
+  const svg::Style s = stroked("#555", 1.3, "2 3");
+  d.polyline(tip, s);
+  d.legend("end-effector path", s, svg::Swatch::line);
+}
+
+// The arm at the motion's keyframes: one group per link nested in its parent's, each rotating by
+// its joint's relative angle about where its joint is at the zero configuration, so the parents'
+// rotations carry it along. Links are drawn at the zero configuration (all along +x); the static
+// transforms put the arm at the start for viewers without animation.
+void draw_moving_arm(svg::Drawing& d, const Arm& arm, const std::vector<JointAngles>& unwrapped_motion,
+                     const Timeline& t) {
+  const std::vector<Eigen::Vector2d> zero = joint_positions(arm, JointAngles(arm.joints(), 0.0));
+  const LinkLook look = link_look(arm, kArmFill, kArmEdge, 1.0);
+  const std::string timing = seconds_attribute(t.seconds) + " repeatCount=\"indefinite\" " + key_times_attribute(t.key_times);
+  for (std::size_t i = 0; i < arm.joints(); ++i) {
+    const svg::Point2 centre = d.to_screen(point(zero[i]));
+    const std::string about = " " + svg::format_number(centre.x) + " " + svg::format_number(centre.y);
+    // The picture's y axis points down: a counter-clockwise world angle is a negative SVG rotation.
+    auto rotation = [&](std::size_t frame) {
+      return svg::format_number(-unwrapped_motion[frame][i] * kDegreesPerRadian) + about;
+    };
+    std::string values;
+    for (std::size_t k = 0; k < t.frames.size(); ++k) {
+      if (k > 0) values += ';';
+      values += rotation(t.frames[k]);
+    }
+    d.begin_group("class=\"arm-link\" transform=\"rotate(" + rotation(t.frames.front()) + ")\"",
+                  "<animateTransform attributeName=\"transform\" type=\"rotate\" " + timing + " values=\"" + values + "\"/>",
+                  svg::Drawing::GroupContent::moves);
+    draw_link(d, arm, zero, i, look);
+    if (i > 0) d.points({point(zero[i])}, 3, look.joint);
+  }
+  d.points({point(zero.back())}, 3.5, filled(kArmEdge, 1.0, "#fff", 1));  // the end effector
+  for (std::size_t i = 0; i < arm.joints(); ++i) d.end_group();
+
+  // The legend stays off where the arm will pass (what moves marks no room as taken).
+  for (std::size_t k : spread_indices(t.frames.size(), kMostSweepMarks)) {
+    Points line;
+    for (const Eigen::Vector2d& p : joint_positions(arm, unwrapped_motion[t.frames[k]])) line.push_back(point(p));
+    d.keep_clear(line);
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// The C-space panel
+
+// A vertex of the C-space path on the panel, at its moment of the animation.
+struct PanelVertex {
+  double theta1, theta2;  // in [0, 2π]
+  double time;
+};
+using PanelPiece = std::vector<PanelVertex>;
+
+// The two-joint path as pieces on the square [0, 2π]²: where it crosses a seam (θ passes 2π or
+// 0) a piece ends on one edge and the next begins on the opposite one, so no line runs across the
+// picture. `angles` are unwrapped (continuous); `times` go with them.
+std::vector<PanelPiece> panel_pieces(const std::vector<std::array<double, 2>>& angles, const std::vector<double>& times) {
+  std::vector<PanelPiece> pieces;
+  if (angles.empty()) return pieces;
+  // Which copy of the square the path is in, per axis: the position on the panel is angle − 2π·tile.
+  std::array<double, 2> tile{std::floor(angles[0][0] / two_pi), std::floor(angles[0][1] / two_pi)};
+  auto on_square = [&](const std::array<double, 2>& a, double time) {
+    return PanelVertex{a[0] - two_pi * tile[0], a[1] - two_pi * tile[1], time};
+  };
+  pieces.push_back({on_square(angles[0], times[0])});
+  for (std::size_t k = 1; k < angles.size(); ++k) {
+    const std::array<double, 2>& from = angles[k - 1];
+    const std::array<double, 2>& to = angles[k];
+    struct Crossing {
+      double s;  // where along the step, 0..1
+      int axis, direction;
+    };
+    std::vector<Crossing> crossings;
+    for (int axis = 0; axis < 2; ++axis) {
+      const double step = to[axis] - from[axis];
+      if (step > 0) {
+        for (double edge = two_pi * (tile[axis] + 1); to[axis] > edge; edge += two_pi) {
+          crossings.push_back({(edge - from[axis]) / step, axis, +1});
+        }
+      } else if (step < 0) {
+        for (double edge = two_pi * tile[axis]; to[axis] < edge; edge -= two_pi) {
+          crossings.push_back({(edge - from[axis]) / step, axis, -1});
+        }
+      }
+    }
+    std::sort(crossings.begin(), crossings.end(), [](const Crossing& a, const Crossing& b) { return a.s < b.s; });
+    for (const Crossing& c : crossings) {
+      const std::array<double, 2> at{from[0] + c.s * (to[0] - from[0]), from[1] + c.s * (to[1] - from[1])};
+      const double time = times[k - 1] + c.s * (times[k] - times[k - 1]);
+      PanelVertex leaving = on_square(at, time);
+      (c.axis == 0 ? leaving.theta1 : leaving.theta2) = c.direction > 0 ? two_pi : 0;  // exactly on the edge
+      pieces.back().push_back(leaving);
+      tile[c.axis] += c.direction;
+      PanelVertex entering = on_square(at, time);
+      (c.axis == 0 ? entering.theta1 : entering.theta2) = c.direction > 0 ? 0 : two_pi;
+      pieces.push_back({entering});
+    }
+    pieces.back().push_back(on_square(to, times[k]));
+  }
+  return pieces;
+}
+
+std::vector<std::array<double, 2>> two_joints(const std::vector<JointAngles>& unwrapped_motion,
+                                              const std::vector<std::size_t>& frames) {
+  std::vector<std::array<double, 2>> out;
+  out.reserve(frames.size());
+  for (std::size_t i : frames) out.push_back({unwrapped_motion[i][0], unwrapped_motion[i][1]});
+  return out;
+}
+
+// The cells as rectangles: a horizontal run of equal state is one rectangle, and so is the same
+// run repeated in the rows above it; the rectangles of a state are one path (a 360 × 360 image
+// stays small, and cells of one state show no seams between them).
+void draw_cells(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image) {
+  const std::size_t n = image.cells_per_axis;
+  const double cell = two_pi / static_cast<double>(n);
+  // Extended index e = 0..n: cell e mod n, clipped to [0, 2π], so cell 0 shows at both edges.
+  auto extent = [&](std::size_t e) {
+    return std::array<double, 2>{std::max(0.0, (static_cast<double>(e) - 0.5) * cell),
+                                 std::min(two_pi, (static_cast<double>(e) + 0.5) * cell)};
+  };
+  std::array<std::size_t, 3> cells{0, 0, 0};
+  for (std::uint8_t s : image.state) ++cells[s];
+
+  struct Block {
+    std::size_t begin, end;  // extended columns, inclusive
+    std::uint8_t state;
+    std::size_t first_row;   // extended rows first_row .. the row before it was closed
+  };
+  std::array<std::vector<svg::Box2>, 3> rects;  // per state
+  auto close = [&](const Block& b, std::size_t last_row) {
+    const svg::Point2 p = l.on_panel(extent(b.begin)[0], extent(b.first_row)[0]);
+    const svg::Point2 q = l.on_panel(extent(b.end)[1], extent(last_row)[1]);
+    rects[b.state].push_back({p.x, p.y, q.x, q.y});
+  };
+  std::vector<Block> open, next;  // ordered by begin; the runs of a row partition it
+  for (std::size_t row = 0; row <= n; ++row) {
+    const auto state_at = [&](std::size_t e) { return image.state[(e % n) + (row % n) * n]; };
+    next.clear();
+    std::size_t above = 0;  // the first open block that may continue
+    std::size_t begin = 0;
+    for (std::size_t e = 1; e <= n + 1; ++e) {
+      if (e <= n && state_at(e) == state_at(begin)) continue;
+      const Block run{begin, e - 1, state_at(begin), row};
+      while (above < open.size() && open[above].begin < run.begin) close(open[above++], row - 1);
+      if (above < open.size() && open[above].begin == run.begin && open[above].end == run.end &&
+          open[above].state == run.state) {
+        next.push_back(open[above++]);  // the same run as in the row below: the block grows
+      } else {
+        next.push_back(run);
+      }
+      begin = e;
+    }
+    while (above < open.size()) close(open[above++], row - 1);
+    open.swap(next);
+  }
+  for (const Block& b : open) close(b, n);
+
+  if (cells[ArmCSpaceImage::not_evaluated] > 0) {
+    // Lazy search leaves most cells unknown: hatched, so they are not mistaken for free ones.
+    d.raw(std::string("<defs><pattern id=\"") + kHatchId +
+          "\" width=\"6\" height=\"6\" patternUnits=\"userSpaceOnUse\" patternTransform=\"rotate(45)\">"
+          "<rect width=\"6\" height=\"6\" fill=\"#fff\"/><path d=\"M0 0V6\" stroke=\"#c8c8c8\" stroke-width=\"1.5\"/>"
+          "</pattern></defs>");
+  }
+  d.begin_group("class=\"cspace-cells\"");
+  struct Kind {
+    std::uint8_t state;
+    svg::Style style;
+    const char* label;
+  };
+  const Kind kinds[] = {
+      {ArmCSpaceImage::free, filled(kFreeFill, 1.0, "none", 0), "free"},
+      {ArmCSpaceImage::blocked, filled(kObstacleFill, 1.0, "none", 0), "blocked"},
+      {ArmCSpaceImage::not_evaluated, filled(std::string("url(#") + kHatchId + ")", 1.0, "none", 0), "not evaluated"},
+  };
+  for (const Kind& k : kinds) {
+    if (rects[k.state].empty()) continue;
+    d.boxes(rects[k.state], k.style);
+    svg::Style swatch = k.style;
+    swatch.stroke = "#aaa";
+    swatch.stroke_px = 0.75;
+    d.legend(std::string(k.label) + " configurations (" + std::to_string(cells[k.state]) + " cells)", swatch,
+             svg::Swatch::area);
+  }
+  d.end_group();
+}
+
+void draw_panel_frame(svg::Drawing& d, const Layout& l) {
+  const svg::Point2 a = l.on_panel(0, 0), b = l.on_panel(two_pi, two_pi);
+  d.polygon({{{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}}}, stroked("#222", 1));
+  static const char* const kTicks[] = {"0", "π/2", "π", "3π/2", "2π"};
+  const double tick = 5 * l.px, size = 12;
+  std::vector<std::pair<svg::Point2, svg::Point2>> marks;
+  for (int k = 0; k <= 4; ++k) {
+    const double angle = k * two_pi / 4;
+    const svg::Point2 x = l.on_panel(angle, 0), y = l.on_panel(0, angle);
+    marks.push_back({x, {x.x, x.y - tick}});
+    marks.push_back({y, {y.x - tick, y.y}});
+    centred_text(d, l, {x.x, x.y - tick - 14 * l.px}, kTicks[k], size);
+    d.text({y.x - tick - (4 + text_width_px(kTicks[k], size)) * l.px, y.y - 0.35 * size * l.px}, kTicks[k], size);
+  }
+  d.segments(marks, stroked("#222", 1));
+  centred_text(d, l, {(a.x + b.x) / 2, a.y - tick - 32 * l.px}, "θ1 (joint 1)", 13);
+  // θ2's name between its two top tick labels, right-aligned with them.
+  const svg::Point2 name = l.on_panel(0, 7 * two_pi / 8);
+  d.text({name.x - tick - (4 + text_width_px("θ2", 13)) * l.px, name.y - 0.35 * 13 * l.px}, "θ2", 13);
+}
+
+// The path on the panel, split at the seams, with its start and goal; with `timeline`, a ring moves
+// along it in step with the arm (the same period and keyTimes, and a jump where it crosses a seam).
+void draw_panel(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image,
+                const std::vector<JointAngles>& unwrapped_motion, const Timeline* timeline) {
+  draw_cells(d, l, image);
+  draw_panel_frame(d, l);
+  if (unwrapped_motion.empty()) return;
+
+  std::vector<std::size_t> all(unwrapped_motion.size());
+  std::iota(all.begin(), all.end(), std::size_t{0});
+  const std::vector<PanelPiece> pieces =
+      panel_pieces(two_joints(unwrapped_motion, all), std::vector<double>(all.size(), 0.0));
+  const svg::Style path_style = stroked(kArmFill, 2.5);
+  d.begin_group("class=\"cspace-path\"");
+  for (const PanelPiece& piece : pieces) {
+    Points line;
+    for (const PanelVertex& v : piece) line.push_back(l.on_panel(v.theta1, v.theta2));
+    d.polyline(line, path_style);
+  }
+  d.end_group();
+  d.legend("path in C-space", path_style, svg::Swatch::line);
+
+  const PanelVertex& first = pieces.front().front();
+  const PanelVertex& last = pieces.back().back();
+  d.points({l.on_panel(first.theta1, first.theta2)}, 5, filled(kStartColour, 1.0, "#fff", 1.5));
+  d.points({l.on_panel(last.theta1, last.theta2)}, 5, filled(kGoalColour, 1.0, "#fff", 1.5));
+
+  if (!timeline) return;
+  // A ring, so that the start and goal marks show through it when it rests on them.
+  std::string xs, ys, times;
+  for (const PanelPiece& piece : panel_pieces(two_joints(unwrapped_motion, timeline->frames), timeline->key_times)) {
+    for (const PanelVertex& v : piece) {
+      const svg::Point2 s = d.to_screen(l.on_panel(v.theta1, v.theta2));
+      if (!xs.empty()) {
+        xs += ';';
+        ys += ';';
+        times += ';';
+      }
+      xs += svg::format_number(s.x);
+      ys += svg::format_number(s.y);
+      times += svg::format_number(v.time);
+    }
+  }
+  const svg::Point2 at = d.to_screen(l.on_panel(first.theta1, first.theta2));
+  const std::string timing = seconds_attribute(timeline->seconds) + " repeatCount=\"indefinite\" keyTimes=\"" + times + "\"";
+  d.raw("<circle class=\"cspace-dot\" cx=\"" + svg::format_number(at.x) + "\" cy=\"" + svg::format_number(at.y) +
+        "\" r=\"7.5\" fill=\"none\" stroke=\"" + kArmEdge + "\" stroke-width=\"2.5\">\n" +
+        "<animate attributeName=\"cx\" " + timing + " values=\"" + xs + "\"/>\n" +
+        "<animate attributeName=\"cy\" " + timing + " values=\"" + ys + "\"/>\n</circle>");
+  d.legend("the arm's configuration now", stroked(kArmEdge, 2.5), svg::Swatch::dot);
+}
+
+// ---------------------------------------------------------------------------------------------
+
+std::string hex_colour(double t) {
+  // From kStartColour (31, 119, 180) to kGoalColour (214, 39, 40).
+  const auto mix = [t](int a, int b) { return static_cast<int>(std::lround(a + (b - a) * std::clamp(t, 0.0, 1.0))); };
+  char buffer[8];
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", mix(0x1f, 0xd6), mix(0x77, 0x27), mix(0xb4, 0x28));
+  return buffer;
+}
+
+// "1st", "2nd", "3rd", "4th", …, "11th", "12th", "13th", "21st", …
+std::string ordinal(std::size_t k) {
+  const std::size_t tens = k % 100, units = k % 10;
+  const char* suffix = (tens >= 11 && tens <= 13) ? "th" : units == 1 ? "st" : units == 2 ? "nd" : units == 3 ? "rd" : "th";
+  return std::to_string(k) + suffix;
+}
+
+svg::Drawing animation_drawing(const ArmPlanPicture& picture) {
+  check_picture(picture);
+  const ArmProblem& problem = *picture.problem;
+  const Layout l = layout(picture);
+  svg::Drawing d(l.whole, l.width_px);
+  draw_titles(d, l, picture);
+  draw_surroundings(d, problem);
+
+  const std::vector<JointAngles> continuous = unwrapped(picture.motion);
+  if (!picture.motion.empty()) {
+    draw_tip_path(d, problem.arm, picture.motion);
+    const LinkLook start = link_look(problem.arm, kStartColour, kStartEdge, 0.35);
+    const LinkLook goal = link_look(problem.arm, kGoalColour, kGoalEdge, 0.35);
+    draw_configuration(d, problem.arm, picture.motion.front(), start, false);
+    draw_configuration(d, problem.arm, picture.motion.back(), goal, false);
+    d.legend("start (ghost)", start.body);
+    d.legend("goal (ghost)", goal.body);
+  }
+  draw_base(d);
+
+  const Timeline t = timeline(cumulative_turn(continuous), picture.seconds, picture.max_keyframes);
+  if (!picture.motion.empty()) {
+    draw_moving_arm(d, problem.arm, continuous, t);
+    char period[32];
+    std::snprintf(period, sizeof period, "%.1f", t.seconds);
+    d.legend(std::string("arm, moving (") + period + " s loop)", link_look(problem.arm, kArmFill, kArmEdge, 1).body);
+  }
+  if (picture.cspace) draw_panel(d, l, *picture.cspace, continuous, picture.motion.empty() ? nullptr : &t);
+  return d;
+}
+
+svg::Drawing strobe_drawing(const ArmPlanPicture& picture, std::size_t every_kth) {
+  check_picture(picture);
+  if (every_kth == 0) throw std::invalid_argument("arm strobe picture: every_kth must be at least 1");
+  const ArmProblem& problem = *picture.problem;
+  const Arm& arm = problem.arm;
+  const Layout l = layout(picture);
+  svg::Drawing d(l.whole, l.width_px);
+  draw_titles(d, l, picture);
+  draw_surroundings(d, problem);
+
+  const std::vector<JointAngles>& motion = picture.motion;
+  if (!motion.empty()) {
+    draw_tip_path(d, arm, motion);
+    const std::size_t last = motion.size() - 1;
+    std::size_t drawn = 0;
+    // In between, translucent, so that where the arm lingers shows darker.
+    for (std::size_t i = every_kth; i < last; i += every_kth) {
+      const double t = static_cast<double>(i) / static_cast<double>(last);
+      const std::string colour = hex_colour(t);
+      d.begin_group("class=\"strobe-configuration\"");
+      draw_configuration(d, arm, motion[i], link_look(arm, colour, colour, 0.45), false);
+      d.end_group();
+      ++drawn;
+    }
+    const LinkLook start = link_look(arm, kStartColour, kStartEdge, 1);
+    const LinkLook goal = link_look(arm, kGoalColour, kGoalEdge, 1);
+    if (last > 0) {  // a motion of one configuration is its own goal
+      d.begin_group("class=\"strobe-configuration strobe-goal\"");
+      draw_configuration(d, arm, motion[last], goal, true);
+      d.end_group();
+    }
+    d.begin_group("class=\"strobe-configuration strobe-start\"");
+    draw_configuration(d, arm, motion.front(), start, true);
+    d.end_group();
+    d.legend("start", start.body);
+    d.legend("goal", goal.body);
+    if (drawn > 0) {
+      const std::string k = every_kth == 1 ? "every configuration" : "every " + ordinal(every_kth) + " configuration";
+      d.legend(k + " (" + std::to_string(drawn) + " of " + std::to_string(motion.size()) + "), blue → red",
+               link_look(arm, hex_colour(0.5), hex_colour(0.5), 0.45).body);
+    }
+  }
+  draw_base(d);
+  if (picture.cspace) draw_panel(d, l, *picture.cspace, unwrapped(motion), nullptr);
+  return d;
+}
+
+}  // namespace
+
+std::string arm_animation_svg(const ArmPlanPicture& picture) { return animation_drawing(picture).str(); }
+
+std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth) {
+  return strobe_drawing(picture, every_kth).str();
+}
+
+void write_arm_animation_svg(const std::string& path, const ArmPlanPicture& picture) {
+  animation_drawing(picture).write(path);
+}
+
+void write_arm_strobe_svg(const std::string& path, const ArmPlanPicture& picture, std::size_t every_kth) {
+  strobe_drawing(picture, every_kth).write(path);
+}
+
+}  // namespace polyplan

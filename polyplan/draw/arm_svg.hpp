@@ -1,0 +1,65 @@
+#pragma once
+// Pictures of a planar arm's plan (geometry/svg.hpp does the drawing): the arm moving along its
+// path as an SVG animation (SMIL only, no script, so it plays in any browser and a file viewer
+// still shows a sensible picture), a "strobe" with every k-th configuration drawn at once (seed
+// 001's figure), and for two joints the torus C-space θ1 × θ2 beside the workspace with the path
+// on it (seed 000's Figure 2).
+#include <polyplan/geometry/arm_problem.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace polyplan {
+
+// The two-joint C-space evaluated on a grid. Cell k of an axis is the angle k·2π/n, so a cell is
+// drawn centred on its angle and cell 0 straddles the seam (half at 0, half at 2π).
+struct ArmCSpaceImage {
+  static constexpr std::uint8_t not_evaluated = 0, free = 1, blocked = 2;
+  std::size_t cells_per_axis = 0;   // n
+  std::vector<std::uint8_t> state;  // n·n, index i + j·n (i: θ1 cell, j: θ2 cell)
+};
+
+struct ArmPlanPicture {
+  const ArmProblem* problem = nullptr;  // the arm, its obstacles and obstacle points
+  // The configurations along the path, densely, start first and goal last. Between consecutive
+  // ones every joint turns the short way round (as the planners interpolate); an empty motion
+  // draws the world alone, marked "no path".
+  std::vector<JointAngles> motion;
+  // Two joints only: drawn as a second panel, with the path on it.
+  std::optional<ArmCSpaceImage> cspace;
+  std::string title;  // e.g. "two_link_points.json · hard · torus · 5°"
+  // How long the motion takes in the animation; 0: one second per radian of path length (the
+  // sum of the joints' turns), at least 2 s and at most 60 s. The animation also rests 0.5 s at
+  // the start and 1 s at the goal before it repeats.
+  double seconds = 0;
+  // Keyframes the animation keeps at most (the first and last always): a path of thousands of
+  // configurations still gives a small file. At least 2.
+  std::size_t max_keyframes = 600;
+  // How the planner saw the joint angles: a torus (the C-space panel says its opposite edges
+  // meet), or intervals [0, 2π) that a path never crosses 0 in (the planners' --no-torus).
+  bool torus = true;
+};
+
+// The workspace (obstacles, obstacle points, the reach circle, the base, the end effector's path,
+// the start and goal configurations as faint ghosts) with the arm moving from start to goal, for
+// ever; and the C-space panel when the picture has one, with a ring moving along the path in step
+// with the arm. Without animation (rsvg-convert, print) the arm stands at the start.
+// Throws std::invalid_argument when the picture is inconsistent (no problem, a configuration
+// with the wrong number of joints, a C-space image for an arm that has not two joints or whose
+// state is not n·n).
+std::string arm_animation_svg(const ArmPlanPicture& picture);
+
+// The workspace with configurations 0, k, 2k, … of the motion (and the goal) drawn at once, the
+// colour going from blue at the start to red at the goal, start and goal solid and the others
+// translucent; and the C-space panel with the path when the picture has one.
+// Throws std::invalid_argument as arm_animation_svg does, and when every_kth is 0.
+std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth);
+
+// The same, written to `path`; std::runtime_error naming the file when it cannot be written.
+void write_arm_animation_svg(const std::string& path, const ArmPlanPicture& picture);
+void write_arm_strobe_svg(const std::string& path, const ArmPlanPicture& picture, std::size_t every_kth);
+
+}  // namespace polyplan

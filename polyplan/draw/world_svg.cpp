@@ -1,0 +1,251 @@
+#include <polyplan/draw/world_svg.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace polyplan {
+namespace {
+
+using Rings = std::vector<std::vector<svg::Point2>>;
+
+svg::Point2 point(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
+
+std::vector<svg::Point2> ring(const Ring& r) {
+  std::vector<svg::Point2> out;
+  out.reserve(r.size());
+  for (const ExactPoint& p : r) out.push_back(point(p));
+  return out;
+}
+
+Rings rings(const PolygonWithHoles& p) {
+  Rings out;
+  if (!p.outer.empty()) out.push_back(ring(p.outer));
+  for (const Ring& h : p.holes) out.push_back(ring(h));
+  return out;
+}
+
+std::vector<svg::Point2> box_ring(const svg::Box2& b) {
+  return {{b.xmin, b.ymin}, {b.xmax, b.ymin}, {b.xmax, b.ymax}, {b.xmin, b.ymax}};
+}
+
+svg::Box2 to_box(const Bounds& b) {
+  return {to_double(b.xmin), to_double(b.ymin), to_double(b.xmax), to_double(b.ymax)};
+}
+
+using svg::filled;
+
+// Colours: free space in pale tints (one per component, so disconnected regions are told apart),
+// C-obstacles translucent orange over which the solid blue-grey obstacles sit, starts green, goals red.
+struct Tint {
+  const char* fill;
+  const char* edge;
+};
+constexpr Tint kFreeTints[] = {{"#e3f1e5", "#9cc7a4"}, {"#e2ebf7", "#9db4d6"}, {"#f6eedb", "#d1b682"},
+                               {"#efe4f3", "#bf9ccb"}, {"#dff1f0", "#8cc2bd"}, {"#f3efe0", "#c2b88c"}};
+
+const svg::Style& bounds_style() {
+  static const svg::Style s = [] {
+    svg::Style f;
+    f.stroke = "#222";
+    f.stroke_px = 1.2;
+    return f;
+  }();
+  return s;
+}
+const svg::Style& walls_style() {
+  static const svg::Style s = filled("#8c8c8c", 0.35, "none", 0);
+  return s;
+}
+const svg::Style& cobstacle_style() {
+  static const svg::Style s = filled("#f4a259", 0.55, "#c8691c", 1.2);
+  return s;
+}
+const svg::Style& obstacle_style() {
+  static const svg::Style s = filled("#51606f", 1.0, "#2b3440", 1.0);
+  return s;
+}
+const svg::Style& robot_style() {
+  static const svg::Style s = filled("#2ca02c", 0.18, "#1b6e1b", 1.5);
+  return s;
+}
+
+std::vector<Ring> robot_placed_at(const Robot& robot, const ExactPoint& at) {
+  std::vector<Ring> placed;
+  for (const Ring& part : robot.parts) {
+    Ring r;
+    r.reserve(part.size());
+    for (const ExactPoint& v : part) r.push_back({v.x + at.x, v.y + at.y});
+    placed.push_back(std::move(r));
+  }
+  return placed;
+}
+
+void draw_bounds(svg::Drawing& drawing, const World& world) {
+  if (!world.bounds) return;
+  drawing.polygon({box_ring(to_box(*world.bounds))}, bounds_style());
+  drawing.legend("bounds", bounds_style(), svg::Swatch::line);
+}
+
+void draw_obstacles(svg::Drawing& drawing, const World& world) {
+  if (world.obstacles.empty()) return;
+  for (const PolygonWithHoles& o : world.obstacles) drawing.polygon(rings(o), obstacle_style());
+  drawing.legend("obstacles", obstacle_style());
+}
+
+void draw_robot_at_start(svg::Drawing& drawing, const World& world) {
+  if (world.robot.is_point() || world.queries.empty()) return;
+  for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start)) {
+    drawing.polygon({ring(part)}, robot_style());
+  }
+  drawing.legend("robot at start", robot_style());
+}
+
+void draw_queries(svg::Drawing& drawing, const World& world) {
+  if (world.queries.empty()) return;
+  std::vector<svg::Point2> starts, goals;
+  for (const Query& q : world.queries) {
+    starts.push_back(point(q.start));
+    goals.push_back(point(q.goal));
+  }
+  const svg::Style start = filled("#2ca02c", 1.0, "#fff", 1.5);
+  const svg::Style goal = filled("#d62728", 1.0, "#fff", 1.5);
+  drawing.points(starts, 5.0, start);
+  drawing.points(goals, 5.0, goal);
+  // With a few queries, say which start goes with which goal ("g0,1" where goals coincide).
+  if (world.queries.size() > 1 && world.queries.size() <= 12) {
+    const double offset = 7 / drawing.scale();  // 7 px right of the dot
+    auto label = [&](const std::vector<svg::Point2>& at, const char* prefix) {
+      std::vector<bool> done(at.size(), false);
+      for (std::size_t i = 0; i < at.size(); ++i) {
+        if (done[i]) continue;
+        std::string text = prefix + std::to_string(i);
+        for (std::size_t j = i + 1; j < at.size(); ++j) {
+          if (at[j].x == at[i].x && at[j].y == at[i].y) {
+            text += "," + std::to_string(j);
+            done[j] = true;
+          }
+        }
+        drawing.text({at[i].x + offset, at[i].y + offset / 2}, text, 11);
+      }
+    };
+    label(starts, "s");
+    label(goals, "g");
+  }
+  drawing.legend(world.queries.size() == 1 ? "start" : "starts", start, svg::Swatch::dot);
+  drawing.legend(world.queries.size() == 1 ? "goal" : "goals", goal, svg::Swatch::dot);
+}
+
+}  // namespace
+
+svg::Box2 view_box(const World& world, const CSpace& cspace) {
+  if (world.bounds) return to_box(*world.bounds);
+  svg::Box2 box{0, 0, 0, 0};
+  bool empty = true;
+  auto extend = [&](const ExactPoint& p) {
+    const svg::Point2 q = point(p);
+    if (empty) box = {q.x, q.y, q.x, q.y};
+    box = {std::min(box.xmin, q.x), std::min(box.ymin, q.y), std::max(box.xmax, q.x), std::max(box.ymax, q.y)};
+    empty = false;
+  };
+  // Holes lie inside their outer ring, so outer rings suffice.
+  for (const PolygonWithHoles& o : world.obstacles)
+    for (const ExactPoint& p : o.outer) extend(p);
+  for (const PolygonWithHoles& c : cspace.cobstacles())
+    for (const ExactPoint& p : c.outer) extend(p);
+  for (const Query& q : world.queries) {
+    extend(q.start);
+    extend(q.goal);
+  }
+  if (!world.queries.empty()) {
+    for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start))
+      for (const ExactPoint& p : part) extend(p);
+  }
+  if (empty) return {0, 0, 1, 1};
+  return box;  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
+}
+
+void draw_world(svg::Drawing& drawing, const World& world) {
+  draw_bounds(drawing, world);
+  draw_obstacles(drawing, world);
+  draw_robot_at_start(drawing, world);
+  draw_queries(drawing, world);
+}
+
+void draw_cspace(svg::Drawing& drawing, const CSpace& cspace) {
+  const World& world = cspace.world();
+
+  const auto& components = cspace.free_components();
+  // The largest component (the unbounded one first) gets the first tint, the legend's.
+  std::vector<std::size_t> order(components.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto& x = components[a].area;
+    const auto& y = components[b].area;
+    if (!x || !y) return !x && y;
+    return *x > *y;
+  });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const FreeComponent& c = components[order[k]];
+    const Tint& tint = kFreeTints[k % std::size(kFreeTints)];
+    Rings r;
+    // The unbounded component (no bounds) covers the whole picture except its holes.
+    r.push_back(c.outer.empty() ? box_ring(drawing.view()) : ring(c.outer));
+    for (const Ring& h : c.holes) r.push_back(ring(h));
+    drawing.polygon(r, filled(tint.fill, 1.0, c.outer.empty() ? "none" : tint.edge, 0.8));
+  }
+  if (!components.empty()) {
+    const std::size_t n = components.size();
+    drawing.legend("free space (" + std::to_string(n) + (n == 1 ? " component)" : " components)"),
+                   filled(kFreeTints[0].fill, 1.0, kFreeTints[0].edge, 0.8));
+  }
+
+  draw_bounds(drawing, world);
+
+  if (world.bounds && !world.robot.is_point()) {
+    // Where the reference point cannot go because part of the robot would leave the bounds.
+    Rings walls{box_ring(to_box(*world.bounds))};
+    const auto& inner = cspace.reference_box();
+    if (inner && inner->xmin <= inner->xmax && inner->ymin <= inner->ymax) {
+      walls.push_back(box_ring(to_box(*inner)));
+    }
+    drawing.polygon(walls, walls_style());
+    drawing.legend("walls (robot would leave the bounds)", walls_style());
+  }
+
+  if (!cspace.cobstacles().empty()) {
+    for (const PolygonWithHoles& c : cspace.cobstacles()) drawing.polygon(rings(c), cobstacle_style());
+    // For a point robot they coincide with the obstacles drawn on top (only their joins show).
+    drawing.legend(world.robot.is_point() ? "C-obstacles (= obstacles, point robot)" : "C-obstacles",
+                   cobstacle_style());
+  }
+
+  draw_obstacles(drawing, world);
+  draw_robot_at_start(drawing, world);
+  draw_queries(drawing, world);
+}
+
+void draw_path(svg::Drawing& drawing, const std::vector<ExactPoint>& path, const std::string& label,
+               const std::string& colour) {
+  if (path.empty()) return;
+  std::vector<svg::Point2> line;
+  line.reserve(path.size());
+  for (const ExactPoint& p : path) line.push_back(point(p));
+  svg::Style style;
+  style.stroke = colour;
+  style.stroke_px = 2.5;
+  drawing.polyline(line, style);
+  // The turning points, small, so that a path sliding along an edge still shows its vertices.
+  drawing.points(line, 2.5, filled(colour, 1.0, "none", 0));
+  drawing.legend(label, style, svg::Swatch::line);
+}
+
+void write_cspace_svg(const CSpace& cspace, const std::string& file, const std::vector<ExactPoint>* path) {
+  svg::Drawing drawing(view_box(cspace.world(), cspace));
+  draw_cspace(drawing, cspace);
+  if (path) draw_path(drawing, *path, "path");
+  drawing.write(file);
+}
+
+}  // namespace polyplan

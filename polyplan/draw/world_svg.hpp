@@ -1,0 +1,32 @@
+#pragma once
+// Pictures of worlds and their C-spaces (geometry/svg.hpp does the drawing; this file decides
+// what a world looks like). Exact coordinates are rounded to double only here, for the eye.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/draw/svg.hpp>
+
+#include <string>
+#include <vector>
+
+namespace polyplan {
+
+// The world's bounds, or else the box around the obstacles, the C-obstacles, the starts and goals
+// and the robot at the first start ({0, 0, 1, 1} when there is nothing at all).
+svg::Box2 view_box(const World& world, const CSpace& cspace);
+
+// The world as its file describes it: bounds, obstacles (with holes), the robot placed at the
+// first start, and the starts and goals; a legend entry each.
+void draw_world(svg::Drawing& drawing, const World& world);
+
+// In this order, each with a legend entry: the free components (pale fills, one tint per component
+// when there are several, holes shown), the bounds, the walls (when the robot is not a point), the
+// C-obstacles, the obstacles, the robot at the first start, the starts and goals.
+void draw_cspace(svg::Drawing& drawing, const CSpace& cspace);
+
+// The path as a line with its vertices as small dots; nothing for an empty path.
+void draw_path(svg::Drawing& drawing, const std::vector<ExactPoint>& path, const std::string& label,
+               const std::string& colour = "#d62728");
+
+// The C-space picture (and a path on top, if given) written to `file`.
+void write_cspace_svg(const CSpace& cspace, const std::string& file, const std::vector<ExactPoint>* path = nullptr);
+
+}  // namespace polyplan

@@ -1,0 +1,52 @@
+#pragma once
+// What an arm file describes (DESIGN.md "Arm file"): a planar n-link arm with its base at the
+// origin, the obstacles and obstacle points around it, and the queries — the arm's counterpart of
+// World. Plain data; kinematics and collision are in arm/, the reader in io/arm_reader.hpp.
+#include <polyplan/geometry/world.hpp>
+
+#include <Eigen/Core>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace polyplan {
+
+// Radians, relative joint angles (θ1 absolute from +x, θi relative to link i−1).
+using JointAngles = std::vector<double>;
+
+struct Arm {
+  std::vector<double> links;  // lengths > 0; base at the origin
+  // 0: links are segments; w > 0: each link is the w-wide rectangle on its segment (no end caps:
+  // the rectangle ends at the joints).
+  double link_width = 0;
+  // false: links at different heights never collide with each other (seed 001). true: two links
+  // that share no joint collide when they meet; adjacent links never do.
+  bool self_collision = false;
+
+  std::size_t joints() const { return links.size(); }
+  // The sum of the links plus w/2: every point of the arm, in every configuration, lies within
+  // this distance of the base.
+  double reach() const {
+    double sum = 0;
+    for (double l : links) sum += l;
+    return sum + link_width / 2;
+  }
+};
+
+struct ArmQuery {
+  std::string name;  // "start/goal" (the top-level pair), the query's "name", or "queries[2]"
+  JointAngles start, goal;
+};
+
+struct ArmProblem {
+  std::string source;  // the file read, for messages
+  Arm arm;
+  std::vector<PolygonWithHoles> obstacles;  // exact, validated and oriented as in World
+  std::vector<std::string> obstacle_names;  // "obstacles[3]"
+  std::vector<Eigen::Vector2d> points;      // point obstacles
+  // The top-level start/goal first (if present), then `queries` in file order. Names are unique.
+  std::vector<ArmQuery> queries;
+};
+
+}  // namespace polyplan

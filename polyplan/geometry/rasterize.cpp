@@ -1,0 +1,168 @@
+#include <polyplan/geometry/rasterize.hpp>
+
+#include <polyplan/geometry/input_error.hpp>
+
+#include <algorithm>
+#include <string>
+
+namespace polyplan {
+namespace {
+
+// The work happens in grid coordinates, where cell (i, j) is the unit square (i, i+1) × (j, j+1):
+// an exact affine map of the world (rationals), so every incidence is preserved and each cell
+// test is a comparison with integers.
+struct GridPoint {
+  Rational u, v;
+};
+
+class GridFrame {
+ public:
+  GridFrame(const Bounds& b, std::size_t n)
+      : xmin_(b.xmin), ymin_(b.ymin), su_(Rational(mpz_class(n)) / (b.xmax - b.xmin)),
+        sv_(Rational(mpz_class(n)) / (b.ymax - b.ymin)) {}
+  GridPoint to_grid(const ExactPoint& p) const { return {(p.x - xmin_) * su_, (p.y - ymin_) * sv_}; }
+
+ private:
+  Rational xmin_, ymin_, su_, sv_;
+};
+
+long floor_of(const Rational& q) {
+  mpz_class f;
+  mpz_fdiv_q(f.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+  return f.get_si();
+}
+long ceil_of(const Rational& q) {
+  mpz_class c;
+  mpz_cdiv_q(c.get_mpz_t(), q.get_num_mpz_t(), q.get_den_mpz_t());
+  return c.get_si();
+}
+
+// The cells whose open interval (k, k+1) meets the closed interval [lo, hi], clamped to [0, n):
+// k < hi and k + 1 > lo. Empty (first > last) for a degenerate interval on a grid line.
+std::pair<long, long> open_cells_meeting(const Rational& lo, const Rational& hi, long n) {
+  if (hi <= 0 || lo >= n) return {0, -1};
+  // Clamped before converting: an obstacle far beyond the bounds must not overflow `long`.
+  return {lo <= 0 ? 0L : floor_of(lo), hi >= n ? n - 1 : ceil_of(hi) - 1};
+}
+
+// Blocks every cell whose open square an edge of the ring passes through. Such a square holds
+// points on both sides of the edge, so it meets the C-obstacle's interior (every boundary point
+// of a regularized set is a limit of interior points).
+//
+// Column by column: the edge's piece in the closed column [i, i+1] spans [vlo, vhi], and the
+// edge meets the open square (i, i+1) × (j, j+1) exactly when j < vhi and j + 1 > vlo. (A value
+// strictly inside both (vlo, vhi) and (j, j+1) is taken by the piece at a u strictly inside its
+// own u-range, hence strictly inside the column; a horizontal piece needs vlo in (j, j+1), and a
+// vertical edge strictly inside a column gets that column only.) So the enumeration is the exact
+// test itself, and a long diagonal edge costs the cells along it, not its bounding box.
+void block_cells_crossed_by(const std::vector<GridPoint>& ring, long n, std::vector<std::uint8_t>& blocked) {
+  for (std::size_t k = 0; k < ring.size(); ++k) {
+    const GridPoint& a = ring[k];
+    const GridPoint& b = ring[(k + 1) % ring.size()];
+    const Rational du = b.u - a.u, dv = b.v - a.v;
+    const auto [first_column, last_column] = open_cells_meeting(std::min(a.u, b.u), std::max(a.u, b.u), n);
+    for (long i = first_column; i <= last_column; ++i) {
+      Rational vlo = std::min(a.v, b.v), vhi = std::max(a.v, b.v);
+      if (du != 0) {
+        const Rational u0 = std::max(Rational(i), std::min(a.u, b.u));
+        const Rational u1 = std::min(Rational(i + 1), std::max(a.u, b.u));
+        const Rational v0 = a.v + (u0 - a.u) * dv / du, v1 = a.v + (u1 - a.u) * dv / du;
+        vlo = std::min(v0, v1);
+        vhi = std::max(v0, v1);
+      }
+      const auto [first_row, last_row] = open_cells_meeting(vlo, vhi, n);
+      for (long j = first_row; j <= last_row; ++j) blocked[static_cast<std::size_t>(i + j * n)] = 1;
+    }
+  }
+}
+
+void require_rasterizable(const World& world, std::size_t cells_per_axis) {
+  if (!world.bounds) throw InputError(world.source + ": bounds: a raster needs the world's bounds (the file has none)");
+  if (cells_per_axis == 0 || cells_per_axis > max_cells_per_axis)
+    throw InputError(world.source + ": raster: cells per axis must be between 1 and " +
+                     std::to_string(max_cells_per_axis) + ", got " + std::to_string(cells_per_axis));
+}
+
+}  // namespace
+
+ExactPoint Raster::cell_center(std::size_t x, std::size_t y) const {
+  const Rational twice_n(mpz_class(2 * cells_per_axis));
+  return {bounds.xmin + Rational(mpz_class(2 * x + 1)) * (bounds.xmax - bounds.xmin) / twice_n,
+          bounds.ymin + Rational(mpz_class(2 * y + 1)) * (bounds.ymax - bounds.ymin) / twice_n};
+}
+
+std::size_t Raster::blocked_count() const {
+  return static_cast<std::size_t>(std::count(blocked.begin(), blocked.end(), std::uint8_t{1}));
+}
+
+Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
+  const World& world = cspace.world();
+  require_rasterizable(world, cells_per_axis);
+
+  const long n = static_cast<long>(cells_per_axis);
+  Raster raster{*world.bounds, cells_per_axis, std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0)};
+  const GridFrame frame(raster.bounds, cells_per_axis);
+
+  // The bounds are walls: a cell is blocked unless its square lies in the closed box where the
+  // reference point may be (the whole grid for a point robot). A box the robot does not fit in
+  // (xmin >= xmax) holds no open square, so every cell is blocked.
+  const Bounds& box = *cspace.reference_box();
+  const GridPoint box_low = frame.to_grid({box.xmin, box.ymin}), box_high = frame.to_grid({box.xmax, box.ymax});
+  std::vector<std::uint8_t> column_inside(cells_per_axis), row_inside(cells_per_axis);
+  for (long k = 0; k < n; ++k) {
+    column_inside[k] = box_low.u <= k && k + 1 <= box_high.u;
+    row_inside[k] = box_low.v <= k && k + 1 <= box_high.v;
+  }
+  for (long j = 0; j < n; ++j)
+    for (long i = 0; i < n; ++i)
+      if (!column_inside[i] || !row_inside[j]) raster.blocked[i + j * n] = 1;
+
+  // (a) Cells an edge of a C-obstacle passes through.
+  struct GridBox {
+    Rational umin, vmin, umax, vmax;
+  };
+  std::vector<GridBox> outer_boxes;
+  for (const PolygonWithHoles& c : cspace.cobstacles()) {
+    auto to_grid = [&](const Ring& ring) {
+      std::vector<GridPoint> out;
+      out.reserve(ring.size());
+      for (const ExactPoint& p : ring) out.push_back(frame.to_grid(p));
+      return out;
+    };
+    if (!c.outer.empty()) {
+      const std::vector<GridPoint> outer = to_grid(c.outer);
+      GridBox b{outer[0].u, outer[0].v, outer[0].u, outer[0].v};
+      for (const GridPoint& p : outer) {
+        b.umin = std::min(b.umin, p.u), b.vmin = std::min(b.vmin, p.v);
+        b.umax = std::max(b.umax, p.u), b.vmax = std::max(b.vmax, p.v);
+      }
+      outer_boxes.push_back(b);
+      block_cells_crossed_by(outer, n, raster.blocked);
+    }
+    for (const Ring& hole : c.holes) block_cells_crossed_by(to_grid(hole), n, raster.blocked);
+  }
+
+  // (b) Every square not blocked yet meets no C-obstacle edge and lies inside the reference box:
+  // it lies in one face of the free space's arrangement, free or inside a C-obstacle. Its centre
+  // decides, by exact point location; only centres inside some C-obstacle's bounding box can be
+  // inside it.
+  for (long j = 0; j < n; ++j)
+    for (long i = 0; i < n; ++i) {
+      const std::size_t cell = static_cast<std::size_t>(i + j * n);
+      if (raster.blocked[cell]) continue;
+      const Rational cu = Rational(2 * i + 1, 2), cv = Rational(2 * j + 1, 2);
+      const bool maybe_inside = std::any_of(outer_boxes.begin(), outer_boxes.end(), [&](const GridBox& b) {
+        return b.umin < cu && cu < b.umax && b.vmin < cv && cv < b.vmax;
+      });
+      if (maybe_inside && cspace.locate(raster.cell_center(i, j)).kind == Location::Kind::blocked)
+        raster.blocked[cell] = 1;
+    }
+  return raster;
+}
+
+Raster rasterize(const World& world, std::size_t cells_per_axis) {
+  require_rasterizable(world, cells_per_axis);  // before the costly C-space
+  return rasterize(CSpace(world), cells_per_axis);
+}
+
+}  // namespace polyplan

@@ -1,0 +1,43 @@
+#pragma once
+// A polygon world as an occupancy grid (seed 000's discretised sphere world), decided exactly:
+// the world's bounds split into n × n equal cells, a cell blocked when its square meets the
+// interior of a C-obstacle (the obstacles' regularized union for a point robot) or reaches
+// where the robot's reference point cannot be because the bounds are walls.
+//
+// A closed square meets an open set iff the open square does, so a cell that only touches an
+// obstacle along its boundary (a shared edge or corner) stays free. Touching obstacles count as
+// one solid (DESIGN.md), so two free cells may meet at a pinch point between obstacles; the grid
+// graph's diagonal moves need both side cells free, so a grid path never passes there.
+//
+// Cost: each C-obstacle edge visits the cells along it (exact rationals, no floating point);
+// every other cell whose centre lies in some C-obstacle's bounding box is decided by one exact
+// point location. Seed 000's sphere world at 200 × 200 takes about 0.05 s.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/world.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace polyplan {
+
+struct Raster {
+  Bounds bounds;               // the world's bounds, exact
+  std::size_t cells_per_axis;  // n: the bounds box split into n × n equal cells (non-square if the box is)
+  std::vector<std::uint8_t> blocked;  // n·n, 1 = blocked; index x + y·n, x from xmin, y from ymin (y up)
+
+  ExactPoint cell_center(std::size_t x, std::size_t y) const;  // exact rationals
+  bool is_blocked(std::size_t x, std::size_t y) const { return blocked[x + y * cells_per_axis] != 0; }
+  std::size_t blocked_count() const;
+};
+
+// The largest cells_per_axis accepted: n·n bytes must stay a sane allocation (4 GiB here).
+inline constexpr std::size_t max_cells_per_axis = std::size_t{1} << 16;
+
+// Throws InputError naming the world's file when the world has no bounds, or when cells_per_axis
+// is 0 or above max_cells_per_axis. The CSpace overload reuses a C-space built already (its
+// world's bounds and C-obstacles); the World overload builds one.
+Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis);
+Raster rasterize(const World& world, std::size_t cells_per_axis);
+
+}  // namespace polyplan

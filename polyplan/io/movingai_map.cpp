@@ -1,0 +1,139 @@
+#include <polyplan/io/movingai_map.hpp>
+
+#include <polyplan/internal/cgal_types.hpp>
+#include <polyplan/geometry/input_error.hpp>
+
+#include <CGAL/Polygon_set_2.h>
+
+#include <fstream>
+#include <sstream>
+#include <unordered_map>
+
+namespace polyplan {
+namespace {
+
+using namespace detail;
+
+bool blocks(char c) { return c == '@' || c == 'O' || c == 'T' || c == 'W' || c == 'S'; }
+
+struct GridPoint {
+  int x, y;
+  bool operator==(const GridPoint&) const = default;
+};
+
+// The boundary of the blocked cells as directed unit edges with the blocked side on the left,
+// traced into closed cycles. At a point where two blocked cells touch only diagonally, the trace
+// turns left, hugging the cell it walks along, so that every cycle is a simple polygon (the two
+// cells' cycles touch at that point).
+std::vector<std::vector<GridPoint>> trace_cycles(const GridMap& map) {
+  const int w = map.width, h = map.height;
+  auto blocked = [&](int x, int y) { return x >= 0 && y >= 0 && x < w && y < h && map.is_blocked(x, y); };
+  auto key = [&](GridPoint p) { return static_cast<std::size_t>(p.y) * (w + 1) + p.x; };
+  const int dx[4] = {1, 0, -1, 0}, dy[4] = {0, 1, 0, -1};  // east, north, west, south (y up)
+  // Bit d of leaving[p]: a boundary edge leaves lattice point p in direction d (two at a
+  // diagonal touch); the same bit of used[p] once a cycle has taken it.
+  std::vector<std::uint8_t> leaving(static_cast<std::size_t>(w + 1) * (h + 1), 0), used(leaving.size(), 0);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      if (!blocked(x, y)) continue;
+      // The cell's sides counter-clockwise, each where the neighbour across it is free.
+      if (!blocked(x, y - 1)) leaving[key({x, y})] |= 1 << 0;
+      if (!blocked(x + 1, y)) leaving[key({x + 1, y})] |= 1 << 1;
+      if (!blocked(x, y + 1)) leaving[key({x + 1, y + 1})] |= 1 << 2;
+      if (!blocked(x - 1, y)) leaving[key({x, y + 1})] |= 1 << 3;
+    }
+  auto next_direction = [&](GridPoint at, int heading) {
+    for (int turn : {1, 0, 3}) {  // left, straight, right: hug the cell walked along
+      const int d = (heading + turn) % 4;
+      if (leaving[key(at)] & (1 << d)) return d;
+    }
+    return -1;  // cannot happen: every boundary edge is followed by one
+  };
+  std::vector<std::vector<GridPoint>> cycles;
+  for (std::size_t k = 0; k < leaving.size(); ++k)
+    for (int first_dir = 0; first_dir < 4; ++first_dir) {
+      if (!(leaving[k] & (1 << first_dir)) || (used[k] & (1 << first_dir))) continue;
+      const GridPoint first{static_cast<int>(k % (w + 1)), static_cast<int>(k / (w + 1))};
+      std::vector<GridPoint> cycle;
+      GridPoint at = first;
+      int dir = first_dir, heading = -1;
+      do {
+        used[key(at)] |= static_cast<std::uint8_t>(1 << dir);
+        if (dir != heading) cycle.push_back(at);  // a corner: straight runs merge
+        heading = dir;
+        at = {at.x + dx[dir], at.y + dy[dir]};
+        dir = next_direction(at, heading);
+      } while (!(at == first && dir == first_dir));
+      cycles.push_back(std::move(cycle));
+    }
+  return cycles;
+}
+
+}  // namespace
+
+GridMap read_movingai_map(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(path + ": cannot open file");
+  GridMap map;
+  map.source = path;
+  std::string line, word;
+  int line_number = 0;
+  auto fail = [&](const std::string& what) {
+    throw InputError(path + ": line " + std::to_string(line_number) + ": " + what);
+  };
+  bool in_grid = false;
+  while (!in_grid && std::getline(in, line)) {
+    ++line_number;
+    std::istringstream fields(line);
+    fields >> word;
+    if (word == "type") continue;
+    if (word == "height" && (fields >> map.height)) continue;
+    if (word == "width" && (fields >> map.width)) continue;
+    if (word == "map") {
+      in_grid = true;
+      continue;
+    }
+    fail("expected the header lines 'type', 'height H', 'width W', 'map', got \"" + line + "\"");
+  }
+  if (!in_grid) fail("missing the 'map' line");
+  if (map.width <= 0 || map.height <= 0 || map.width > 100000 || map.height > 100000)
+    fail("width and height must be positive (and at most 100000)");
+  map.blocked.assign(static_cast<std::size_t>(map.width) * map.height, false);
+  for (int y = 0; y < map.height; ++y) {
+    if (!std::getline(in, line)) fail("the map has " + std::to_string(y) + " rows, the header says " + std::to_string(map.height));
+    ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (static_cast<int>(line.size()) != map.width)
+      fail("row " + std::to_string(y) + " has " + std::to_string(line.size()) + " cells, the header says " +
+           std::to_string(map.width));
+    for (int x = 0; x < map.width; ++x) map.blocked[static_cast<std::size_t>(y) * map.width + x] = blocks(line[x]);
+  }
+  return map;
+}
+
+World world_from_grid(const GridMap& map) {
+  World world;
+  world.source = map.source;
+  world.bounds = Bounds{0, 0, map.width, map.height};
+  // Outer boundaries run counter-clockwise, holes clockwise, and none cross: the blocked region is
+  // where an odd number of cycles wind, the symmetric difference of their interiors, computed in
+  // one aggregated sweep.
+  std::vector<Polygon> polygons;
+  for (const auto& cycle : trace_cycles(map)) {
+    Polygon polygon;
+    for (const GridPoint& p : cycle) polygon.push_back(Point(p.x, p.y));
+    if (polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
+    polygons.push_back(std::move(polygon));
+  }
+  CGAL::Polygon_set_2<Kernel> blocked;
+  blocked.symmetric_difference(polygons.begin(), polygons.end());
+  std::vector<PolygonH> solids;
+  blocked.polygons_with_holes(std::back_inserter(solids));
+  for (std::size_t i = 0; i < solids.size(); ++i) {
+    world.obstacles.push_back(to_exact(solids[i]));
+    world.obstacle_names.push_back("blocked region " + std::to_string(i));
+  }
+  return world;
+}
+
+}  // namespace polyplan

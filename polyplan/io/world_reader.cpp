@@ -1,0 +1,150 @@
+#include <polyplan/io/world_reader.hpp>
+
+#include <polyplan/io/detail/exact_json.hpp>
+#include <polyplan/geometry/world_validation.hpp>
+#include <polyplan/io/wkt_reader.hpp>
+#include <polyplan/geometry/input_error.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <set>
+
+namespace polyplan {
+namespace {
+
+using json = nlohmann::json;
+
+// Reading context: the file name and a path of keys, so every message names the object.
+class Reader : public detail::JsonFileReader {
+ public:
+  using JsonFileReader::JsonFileReader;
+
+  Rational number(const json& v, const std::string& object) const {
+    std::string text;
+    if (v.is_number_integer()) return v.is_number_unsigned() ? Rational(mpz_class(std::to_string(v.get<std::uint64_t>()))) :
+                                                            Rational(mpz_class(std::to_string(v.get<std::int64_t>())));
+    if (!v.is_string()) fail(object, "not a number: " + v.dump());
+    std::string why;
+    auto value = parse_rational(v.get<std::string>(), &why);
+    if (!value) fail(object, why + ": " + v.dump());
+    return *value;
+  }
+
+  ExactPoint point(const json& v, const std::string& object) const {
+    if (!v.is_array() || v.size() < 2) fail(object, "expected a point [x, y], got " + abbreviated(v));
+    if (v.size() == 3)
+      fail(object, "orientation given ([x, y, theta]) but rotating robots are not supported yet");
+    if (v.size() != 2) fail(object, "expected a point [x, y], got " + abbreviated(v));
+    return {number(v[0], object + "[0]"), number(v[1], object + "[1]")};
+  }
+
+  Ring ring(const json& v, const std::string& object) const {
+    if (!v.is_array()) fail(object, "expected a list of points [[x, y], ...], got " + abbreviated(v));
+    Ring r;
+    r.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) r.push_back(point(v[i], object + "[" + std::to_string(i) + "]"));
+    return r;
+  }
+
+  PolygonWithHoles polygon(const json& v, const std::string& object, std::vector<std::string>* warnings) const {
+    if (v.is_array()) return {ring(v, object), {}};
+    if (!v.is_object()) fail(object, "expected a polygon (a list of points or {\"outer\", \"holes\"}), got " + abbreviated(v));
+    warn_unknown(v, object, {"outer", "holes"}, warnings);
+    PolygonWithHoles p;
+    p.outer = ring(required(v, "outer", object), object + ".outer");
+    if (v.contains("holes")) {
+      const json& holes = v["holes"];
+      if (!holes.is_array()) fail(object + ".holes", "expected a list of rings");
+      for (std::size_t i = 0; i < holes.size(); ++i)
+        p.holes.push_back(ring(holes[i], object + ".holes[" + std::to_string(i) + "]"));
+    }
+    return p;
+  }
+};
+
+}  // namespace
+
+World parse_world(const std::string& text, const std::string& name, std::vector<std::string>* warnings) {
+  Reader r(name);
+  json root = r.parse(text);
+  if (!root.is_object()) r.fail("world", "expected a JSON object at the top level");
+  r.warn_unknown(root, "world", {"bounds", "obstacles", "obstacles_wkt", "robot", "start", "goal", "queries"}, warnings);
+
+  World world;
+  world.source = name;
+
+  if (root.contains("bounds")) {
+    const json& b = root["bounds"];
+    if (!b.is_array() || b.size() != 4) r.fail("bounds", "expected [xmin, ymin, xmax, ymax], got " + Reader::abbreviated(b));
+    world.bounds = Bounds{r.number(b[0], "bounds[0]"), r.number(b[1], "bounds[1]"), r.number(b[2], "bounds[2]"),
+                          r.number(b[3], "bounds[3]")};
+  }
+
+  if (!root.contains("obstacles") && !root.contains("obstacles_wkt"))
+    r.fail("world", "missing field \"obstacles\" (use [] for a world without obstacles)");
+  if (root.contains("obstacles")) {
+    const json& obstacles = root["obstacles"];
+    if (!obstacles.is_array()) r.fail("obstacles", "expected a list of polygons, got " + Reader::abbreviated(obstacles));
+    for (std::size_t i = 0; i < obstacles.size(); ++i) {
+      std::string object = "obstacles[" + std::to_string(i) + "]";
+      world.obstacles.push_back(r.polygon(obstacles[i], object, warnings));
+      world.obstacle_names.push_back(object);
+    }
+  }
+  if (root.contains("obstacles_wkt")) {
+    const json& wkt = root["obstacles_wkt"];
+    if (!wkt.is_string()) r.fail("obstacles_wkt", "expected a file name");
+    std::filesystem::path wkt_path = wkt.get<std::string>();
+    if (wkt_path.is_relative()) wkt_path = std::filesystem::path(name).parent_path() / wkt_path;
+    auto polygons = read_wkt_obstacles(wkt_path.string(), name);
+    for (std::size_t i = 0; i < polygons.size(); ++i) {
+      world.obstacles.push_back(std::move(polygons[i]));
+      world.obstacle_names.push_back(wkt_path.filename().string() + " polygon " + std::to_string(i));
+    }
+  }
+
+  if (root.contains("robot")) {
+    const json& robot = root["robot"];
+    if (!robot.is_object()) r.fail("robot", "expected {\"parts\": [...]}");
+    r.warn_unknown(robot, "robot", {"parts"}, warnings);
+    const json& parts = r.required(robot, "parts", "robot");
+    if (!parts.is_array()) r.fail("robot.parts", "expected a list of polygons");
+    for (std::size_t i = 0; i < parts.size(); ++i)
+      world.robot.parts.push_back(r.ring(parts[i], "robot.parts[" + std::to_string(i) + "]"));
+  }
+
+  if (root.contains("start") != root.contains("goal"))
+    r.fail("world", root.contains("start") ? "missing field \"goal\" (start is given)" : "missing field \"start\" (goal is given)");
+  if (root.contains("start")) world.queries.push_back({r.point(root["start"], "start"), r.point(root["goal"], "goal"), "start/goal"});
+  if (root.contains("queries")) {
+    const json& queries = root["queries"];
+    if (!queries.is_array()) r.fail("queries", "expected a list of {\"start\", \"goal\"}");
+    for (std::size_t i = 0; i < queries.size(); ++i) {
+      std::string object = "queries[" + std::to_string(i) + "]";
+      const json& q = queries[i];
+      if (!q.is_object()) r.fail(object, "expected {\"start\": [x, y], \"goal\": [x, y]}");
+      r.warn_unknown(q, object, {"start", "goal"}, warnings);
+      world.queries.push_back({r.point(r.required(q, "start", object), object + ".start"),
+                               r.point(r.required(q, "goal", object), object + ".goal"), object});
+    }
+  }
+
+  validate_world(world);
+  return world;
+}
+
+World read_world(const std::string& path, std::vector<std::string>* warnings) {
+  return parse_world(detail::read_text_file(path), path, warnings);
+}
+
+std::vector<ExactPoint> read_path(const std::string& path) {
+  Reader r(path);
+  json root = r.parse(detail::read_text_file(path));
+  if (!root.is_object()) r.fail("path file", "expected a JSON object {\"path\": [[x, y], ...]}");
+  const json& points = r.required(root, "path", "path file");
+  if (!points.is_array() || points.empty()) r.fail("path", "expected a non-empty list of points [[x, y], ...]");
+  return r.ring(points, "path");
+}
+
+}  // namespace polyplan

@@ -1,0 +1,22 @@
+#pragma once
+// Reading world and path files (DESIGN.md "World file"). Numbers are read exactly from their
+// text. Every problem throws InputError with one line: file, object, what is wrong.
+#include <polyplan/geometry/world.hpp>
+
+#include <string>
+#include <vector>
+
+namespace polyplan {
+
+// Reads and validates a world file. Unknown fields are reported in `warnings` (if given).
+World read_world(const std::string& path, std::vector<std::string>* warnings = nullptr);
+
+// The same from text already in memory; `name` stands for the file in messages and relative
+// paths (obstacles_wkt) resolve against its folder.
+World parse_world(const std::string& text, const std::string& name,
+                  std::vector<std::string>* warnings = nullptr);
+
+// Reads {"path": [[x, y], ...]}.
+std::vector<ExactPoint> read_path(const std::string& path);
+
+}  // namespace polyplan

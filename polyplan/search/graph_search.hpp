@@ -1,0 +1,402 @@
+#pragma once
+// shortest_path on any Boost Graph IncidenceGraph: the roadmap, an implicit grid decided lazily,
+// a lattice. Every algorithm is a BGL algorithm run without its O(V) initialisation:
+//   astar, wastar, dijkstra, greedy  boost::astar_search_no_init (4-ary mutable heap)
+//   bfs                              boost::breadth_first_visit (FIFO)
+//   dfs                              boost::depth_first_visit (non-recursive, with a terminator)
+// The per-vertex state lives in a SearchWorkspace reused across queries; a visitor counts what a
+// course compares and stops the search at the goal by throwing (the BGL idiom).
+//
+// Requirements on the graph: boost::graph_traits<Graph> describes an IncidenceGraph (out_edges,
+// source, target) whose vertex_descriptor is copyable, equality-comparable and hashable by the
+// workspace's Hash. A VertexListGraph is not needed: nothing iterates over all vertices.
+//
+// Heavy include (the BGL algorithms): include it where a search is instantiated, not in headers
+// that merely name search types (those want search/search_result.hpp and search/search_workspace.hpp).
+#include <polyplan/search/search_result.hpp>
+#include <polyplan/search/search_workspace.hpp>
+
+#include <boost/graph/astar_search.hpp>
+#include <boost/graph/breadth_first_search.hpp>
+#include <boost/graph/depth_first_search.hpp>
+#include <boost/graph/graph_traits.hpp>
+#include <boost/graph/properties.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace polyplan {
+
+namespace detail {
+
+struct WorkspaceAccess {
+  template <class W>
+  static auto& hashed(W& ws) { return ws.hashed_; }
+  template <class W>
+  static auto& dense(W& ws) { return ws.dense_; }
+  template <class W>
+  static auto& fifo(W& ws) { return ws.fifo_; }
+  template <class W>
+  static void set_used_dense(W& ws, bool dense) { ws.used_dense_ = dense; }
+};
+
+// ---- property maps over a workspace table: absent records read as the BGL initial values ----
+
+struct DistanceField {
+  template <class Vertex>
+  using value_type = double;
+  template <class R>
+  static double read(const R& r) { return r.distance; }
+  template <class R>
+  static void write(R& r, double x) { r.distance = x; }
+  template <class Vertex>
+  static double absent(const Vertex&) { return unreached; }
+};
+
+struct RankField {
+  template <class Vertex>
+  using value_type = double;
+  template <class R>
+  static double read(const R& r) { return r.rank; }
+  template <class R>
+  static void write(R& r, double x) { r.rank = x; }
+  template <class Vertex>
+  static double absent(const Vertex&) { return unreached; }
+};
+
+struct PredecessorField {
+  template <class Vertex>
+  using value_type = Vertex;
+  template <class R>
+  static auto read(const R& r) { return r.predecessor; }
+  template <class R, class Vertex>
+  static void write(R& r, const Vertex& x) { r.predecessor = x; }
+  template <class Vertex>
+  static Vertex absent(const Vertex& v) { return v; }
+};
+
+struct ColorField {
+  template <class Vertex>
+  using value_type = boost::default_color_type;
+  template <class R>
+  static boost::default_color_type read(const R& r) { return static_cast<boost::default_color_type>(r.color); }
+  template <class R>
+  static void write(R& r, boost::default_color_type x) { r.color = static_cast<std::uint8_t>(x); }
+  template <class Vertex>
+  static boost::default_color_type absent(const Vertex&) { return boost::white_color; }
+};
+
+template <class Table, class Vertex, class Field>
+class RecordMap {
+ public:
+  using key_type = Vertex;
+  using value_type = typename Field::template value_type<Vertex>;
+  using reference = value_type;
+  using category = boost::read_write_property_map_tag;
+
+  explicit RecordMap(Table& table) : table_(&table) {}
+
+  friend value_type get(const RecordMap& m, const key_type& v) {
+    if (const auto* r = m.table_->find(v)) return Field::read(*r);
+    return Field::absent(v);
+  }
+  friend void put(const RecordMap& m, const key_type& v, const value_type& x) { Field::write(m.table_->touch(v), x); }
+
+ private:
+  Table* table_;
+};
+
+// The vertex index astar_search_no_init gives its heap (a vector_property_map over it): the order in
+// which this query first touched each vertex, so that vector grows with the vertices touched, not
+// with the largest vertex id.
+template <class Table, class Vertex>
+class SlotMap {
+ public:
+  using key_type = Vertex;
+  using value_type = std::size_t;
+  using reference = std::size_t;
+  using category = boost::readable_property_map_tag;
+
+  explicit SlotMap(Table& table) : table_(&table) {}
+  friend std::size_t get(const SlotMap& m, const key_type& v) { return m.table_->touch(v).slot; }
+
+ private:
+  Table* table_;
+};
+
+template <class Edge, class WeightFn>
+class FunctionWeightMap {
+ public:
+  using key_type = Edge;
+  using value_type = double;
+  using reference = double;
+  using category = boost::readable_property_map_tag;
+
+  explicit FunctionWeightMap(const WeightFn& fn) : fn_(fn) {}
+  friend double get(const FunctionWeightMap& m, const key_type& e) { return m.fn_(e); }
+
+ private:
+  WeightFn fn_;
+};
+
+// Greedy best-first is A* on these: g stays 0, so f = h.
+template <class Edge>
+struct ZeroWeightMap {
+  using key_type = Edge;
+  using value_type = double;
+  using reference = double;
+  using category = boost::readable_property_map_tag;
+  friend double get(const ZeroWeightMap&, const key_type&) { return 0.0; }
+};
+
+struct ZeroHeuristic {
+  template <class Vertex>
+  double operator()(const Vertex&) const { return 0.0; }
+};
+
+template <class Heuristic>
+struct ScaledHeuristic {
+  Heuristic h;
+  double weight;
+  template <class Vertex>
+  double operator()(const Vertex& v) const { return weight * h(v); }
+};
+
+// ---- visitors: count, record tree edges, stop at the goal ----
+
+struct FoundGoal {};  // thrown through the BGL algorithm; never leaves shortest_path
+
+struct SearchCounts {
+  std::size_t expanded = 0, generated = 0;
+  std::size_t reopened = 0;  // closed vertices given a shorter distance (weighted A*, inconsistent h)
+};
+
+template <class Vertex>
+class AStarGoalVisitor : public boost::default_astar_visitor {
+ public:
+  AStarGoalVisitor(const Vertex& goal, SearchCounts& counts, std::vector<Vertex>* trace)
+      : goal_(goal), counts_(&counts), trace_(trace) {}
+  template <class Graph>
+  void discover_vertex(const Vertex&, const Graph&) { ++counts_->generated; }
+  template <class Graph>
+  void examine_vertex(const Vertex& u, const Graph&) {
+    ++counts_->expanded;
+    if (trace_) trace_->push_back(u);
+    if (u == goal_) throw FoundGoal{};
+  }
+  // BGL calls it only when the relaxation re-opened a closed vertex.
+  template <class Edge, class Graph>
+  void black_target(const Edge&, const Graph&) { ++counts_->reopened; }
+
+ private:
+  Vertex goal_;
+  SearchCounts* counts_;
+  std::vector<Vertex>* trace_;  // expansion order, when recorded
+};
+
+template <class Vertex, class PredecessorMap>
+class BfsGoalVisitor : public boost::default_bfs_visitor {
+ public:
+  BfsGoalVisitor(const Vertex& goal, SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace)
+      : goal_(goal), counts_(&counts), predecessor_(predecessor), trace_(trace) {}
+  template <class Graph>
+  void discover_vertex(const Vertex&, const Graph&) { ++counts_->generated; }
+  template <class Graph>
+  void examine_vertex(const Vertex& u, const Graph&) {
+    ++counts_->expanded;
+    if (trace_) trace_->push_back(u);
+    if (u == goal_) throw FoundGoal{};
+  }
+  template <class Edge, class Graph>
+  void tree_edge(const Edge& e, const Graph& g) { put(predecessor_, target(e, g), source(e, g)); }
+
+ private:
+  Vertex goal_;
+  SearchCounts* counts_;
+  PredecessorMap predecessor_;
+  std::vector<Vertex>* trace_;
+};
+
+template <class Vertex, class PredecessorMap>
+class DfsCountingVisitor : public boost::default_dfs_visitor {
+ public:
+  DfsCountingVisitor(SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace)
+      : counts_(&counts), predecessor_(predecessor), trace_(trace) {}
+  template <class Graph>
+  void discover_vertex(const Vertex& u, const Graph&) {
+    ++counts_->generated;
+    ++counts_->expanded;
+    if (trace_) trace_->push_back(u);
+  }
+  template <class Edge, class Graph>
+  void tree_edge(const Edge& e, const Graph& g) { put(predecessor_, target(e, g), source(e, g)); }
+
+ private:
+  SearchCounts* counts_;
+  PredecessorMap predecessor_;
+  std::vector<Vertex>* trace_;
+};
+
+// depth_first_visit asks its terminator about every vertex right after discovering it: the goal
+// test of DFS.
+template <class Vertex>
+struct StopAtGoal {
+  Vertex goal;
+  template <class Graph>
+  bool operator()(const Vertex& u, const Graph&) const {
+    if (u == goal) throw FoundGoal{};
+    return false;
+  }
+};
+
+// Sum of the weights along `path`, in path order (the order A* sums g, so for A* and Dijkstra the
+// result equals the goal's distance to the last bit). Between consecutive vertices the lightest
+// out-edge counts: that is the one a relaxation keeps among parallel edges.
+template <class Graph, class Vertex, class WeightFn>
+double path_cost(const Graph& g, const std::vector<Vertex>& path, const WeightFn& weight) {
+  double cost = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    double lightest = unreached;
+    for (auto [e, end] = out_edges(path[i], g); e != end; ++e)
+      if (target(*e, g) == path[i + 1]) lightest = std::min(lightest, static_cast<double>(weight(*e)));
+    cost += lightest;
+  }
+  return cost;
+}
+
+template <class Graph, class Table, class Heuristic, class WeightFn>
+SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with_table(
+    const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
+    typename boost::graph_traits<Graph>::vertex_descriptor goal, const SearchOptions& options,
+    const Heuristic& heuristic, const WeightFn& weight, Table& table,
+    FifoBuffer<typename boost::graph_traits<Graph>::vertex_descriptor>& fifo) {
+  using Vertex = typename boost::graph_traits<Graph>::vertex_descriptor;
+  using Edge = typename boost::graph_traits<Graph>::edge_descriptor;
+  const RecordMap<Table, Vertex, DistanceField> distance(table);
+  const RecordMap<Table, Vertex, RankField> rank(table);
+  const RecordMap<Table, Vertex, PredecessorField> predecessor(table);
+  const RecordMap<Table, Vertex, ColorField> color(table);
+  const SlotMap<Table, Vertex> slots(table);
+  const FunctionWeightMap<Edge, WeightFn> weights(weight);
+
+  SearchCounts counts;
+  SearchResult<Vertex> result;
+  std::vector<Vertex>* trace = options.record_expanded ? &result.expanded_order : nullptr;
+  const auto best_first = [&](auto h, auto edge_weights) {
+    put(distance, start, 0.0);
+    put(rank, start, h(start));
+    boost::astar_search_no_init(g, start, h, AStarGoalVisitor<Vertex>(goal, counts, trace), predecessor, rank, distance,
+                                edge_weights, color, slots, std::less<double>(), std::plus<double>(), unreached, 0.0);
+  };
+
+  try {
+    switch (options.algorithm) {
+      case Search::astar: best_first(heuristic, weights); break;
+      case Search::wastar: best_first(ScaledHeuristic<Heuristic>{heuristic, options.weight}, weights); break;
+      case Search::dijkstra: best_first(ZeroHeuristic{}, weights); break;
+      case Search::greedy: best_first(heuristic, ZeroWeightMap<Edge>{}); break;
+      case Search::bfs:
+        fifo.clear();
+        boost::breadth_first_visit(g, start, fifo, BfsGoalVisitor<Vertex, decltype(predecessor)>(goal, counts, predecessor, trace),
+                                   color);
+        break;
+      case Search::dfs:
+        boost::depth_first_visit(g, start, DfsCountingVisitor<Vertex, decltype(predecessor)>(counts, predecessor, trace), color,
+                                 StopAtGoal<Vertex>{goal});
+        break;
+    }
+  } catch (const FoundGoal&) {
+    result.found = true;
+  }
+  result.expanded = counts.expanded;
+  result.generated = counts.generated;
+  if (result.found) {
+    // Predecessor chains end at the start (its own predecessor); the bound only guards the
+    // impossible cycle, never a real path (each path vertex was touched).
+    result.path.push_back(goal);
+    while (!(result.path.back() == start)) {
+      const Vertex p = get(predecessor, result.path.back());
+      if (p == result.path.back() || result.path.size() > table.touched())
+        throw std::logic_error("polyplan::shortest_path: broken predecessor chain");
+      result.path.push_back(p);
+    }
+    std::reverse(result.path.begin(), result.path.end());
+    // A best-first search that summed weights holds the goal's g, summed in path order, and it is
+    // the predecessor chain's sum unless a closed vertex's g went down after it was expanded: a
+    // re-opening, or on an undirected graph BGL's relax lowering the edge's source without telling
+    // any visitor (weighted A*, inconsistent h). Otherwise, and for the searches that ignored the
+    // weights (greedy, bfs, dfs), the path's weights are summed now.
+    const bool summed_weights = options.algorithm == Search::astar || options.algorithm == Search::dijkstra ||
+                                options.algorithm == Search::wastar;
+    const bool g_is_the_path_cost = summed_weights && counts.reopened == 0 && boost::is_directed(g);
+    result.cost = g_is_the_path_cost ? get(distance, goal) : path_cost(g, result.path, weight);
+  }
+  return result;
+}
+
+inline void check_options(const SearchOptions& options) {
+  if (options.algorithm == Search::wastar && !(std::isfinite(options.weight) && options.weight >= 1.0))
+    throw std::invalid_argument("shortest_path: weighted A* needs a finite weight >= 1");
+  if (to_string(options.algorithm) == "unknown") throw std::invalid_argument("shortest_path: unknown algorithm");
+}
+
+}  // namespace detail
+
+// Searches g from start to goal with options.algorithm.
+//   heuristic: double(const Vertex&), an estimate of the cost to the goal (admissible for A* to be
+//              optimal); ignored by dijkstra, bfs and dfs.
+//   weight:    double(const Edge&) >= 0, the cost of an edge (boost::negative_edge otherwise);
+//              bfs, dfs and greedy ignore it while searching and use it for the reported cost.
+//   workspace: reused across queries; its state from earlier queries never leaks into this one.
+// Throws std::invalid_argument for a weighted-A* weight that is not finite and >= 1, and
+// std::out_of_range for a vertex id outside a graph with dense ids.
+template <class Graph, class Heuristic, class WeightFn, class Hash>
+SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_path(
+    const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
+    typename boost::graph_traits<Graph>::vertex_descriptor goal, const SearchOptions& options, Heuristic heuristic,
+    WeightFn weight, SearchWorkspace<typename boost::graph_traits<Graph>::vertex_descriptor, Hash>& workspace) {
+  detail::check_options(options);
+  const auto began = std::chrono::steady_clock::now();
+  auto& fifo = detail::WorkspaceAccess::fifo(workspace);
+  auto result = [&] {
+    if constexpr (has_dense_vertex_ids<Graph>::value) {
+      const std::size_t n = num_vertices(g);
+      if (static_cast<std::size_t>(start) >= n || static_cast<std::size_t>(goal) >= n)
+        throw std::out_of_range("shortest_path: start or goal is not a vertex of the graph");
+      if (workspace.storage() == VertexStorage::automatic && dense_vertex_table_fits(g)) {
+        auto& table = detail::WorkspaceAccess::dense(workspace);
+        detail::WorkspaceAccess::set_used_dense(workspace, true);
+        table.begin_query(n);
+        return detail::search_with_table(g, start, goal, options, heuristic, weight, table, fifo);
+      }
+    }
+    auto& table = detail::WorkspaceAccess::hashed(workspace);
+    detail::WorkspaceAccess::set_used_dense(workspace, false);
+    table.begin_query();
+    return detail::search_with_table(g, start, goal, options, heuristic, weight, table, fifo);
+  }();
+  result.algorithm = options.algorithm;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  return result;
+}
+
+// One query with a fresh hash-storage workspace: cost proportional to what the search touches.
+// For many queries on one graph, keep a SearchWorkspace and pass it.
+template <class Graph, class Heuristic, class WeightFn>
+SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_path(
+    const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
+    typename boost::graph_traits<Graph>::vertex_descriptor goal, const SearchOptions& options, Heuristic heuristic,
+    WeightFn weight) {
+  SearchWorkspace<typename boost::graph_traits<Graph>::vertex_descriptor> workspace(VertexStorage::hashed);
+  return shortest_path(g, start, goal, options, heuristic, weight, workspace);
+}
+
+}  // namespace polyplan
