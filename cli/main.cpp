@@ -34,6 +34,7 @@ int main(int argc, char** argv) {
   add_scen_command(app, run);
   add_grid_command(app, run);
   add_arm_command(app, run);
+  add_planners_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

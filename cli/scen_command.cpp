@@ -49,7 +49,7 @@ int run_scen(const ScenOptions& options) {
     const ScenarioQuery& q = scenarios[i];
     const ExactPoint start{q.start_x, q.start_y}, goal{q.goal_x, q.goal_y};
     const auto t = Clock::now();
-    const Plan plan = graph.plan(start, goal);
+    const PlanReport<ExactPoint> plan = graph.plan(Query{start, goal, "scenario " + std::to_string(i)});
     const double us = seconds_since(t) * 1e6;
     micros.push_back(us);
     nlohmann::json item{{"index", i}, {"found", plan.found}, {"length", plan.found ? nlohmann::json(plan.length) : nlohmann::json(nullptr)}, {"us", us}};
@@ -77,8 +77,8 @@ int run_scen(const ScenOptions& options) {
                          {"mean_us", mean},
                          {"median_us", median},
                          {"preprocess_seconds", preprocess},
-                         {"roadmap_vertices", graph.facts().vertices},
-                         {"roadmap_edges", graph.facts().edges}};
+                         {"roadmap_vertices", graph.corner_count()},
+                         {"roadmap_edges", boost::num_edges(graph.roadmap())}};
   if (!options.reference.empty()) {
     summary["mismatches"] = mismatches;
     summary["max_difference"] = max_difference;

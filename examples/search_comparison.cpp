@@ -1,11 +1,11 @@
 // The table of seed 004's report: on the seed 004 world, every search of a course over one
 // visibility graph — number of path segments, path cost, nodes explored — and all paths in one
 // picture. Usage: search_comparison [WORLD.json] [OUT.svg]
-#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/draw/world_svg.hpp>
+#include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <cstdio>
@@ -23,31 +23,36 @@ int main(int argc, char** argv) {
     VisibilityGraph graph(cspace, VisibilityKind::full);  // the graph a course draws: every visible pair
     const Query& query = world.queries.front();
 
+    // DFS in the palette's grey, so that its wandering path does not hide the others.
     struct Row {
       const char* name;
       SearchOptions options;
-      const char* colour;
-    } rows[] = {{"DFS", {Search::dfs}, "#7f7f7f"},
-                {"BFS", {Search::bfs}, "#1f77b4"},
-                {"UCS (Dijkstra)", {Search::dijkstra}, "#ff7f0e"},
-                {"A* (admissible)", {Search::astar}, "#2ca02c"},
-                {"Weighted A* (w = 3)", {Search::wastar, 3.0}, "#d62728"},
-                {"Greedy best-first", {Search::greedy}, "#9467bd"}};
+      std::size_t colour;  // in the theme's path palette
+    } rows[] = {{"DFS", {Search::dfs}, 9},
+                {"BFS", {Search::bfs}, 1},
+                {"UCS (Dijkstra)", {Search::dijkstra}, 4},
+                {"A* (admissible)", {Search::astar}, 2},
+                {"Weighted A* (w = 3)", {Search::wastar, 3.0}, 0},
+                {"Greedy best-first", {Search::greedy}, 3}};
 
+    // One recorded query gives the graph to draw; every row then searches the same graph.
+    const PlanReport<ExactPoint> first = graph.plan(query, QueryOptions{true});
     svg::Drawing drawing(view_box(world, cspace));
     draw_cspace(drawing, cspace);
-    draw_roadmap(drawing, graph.roadmap(), graph.facts().vertices);
-    std::printf("%s: visibility graph with %zu vertices and %zu edges\n\n", world_file.c_str(), graph.facts().vertices,
-                graph.facts().edges);
+    draw_graph(drawing, *first.graph);
+    std::printf("%s: visibility graph with %lld vertices and %lld edges\n\n", world_file.c_str(),
+                static_cast<long long>(first.facts.count("roadmap.vertices")),
+                static_cast<long long>(first.facts.count("roadmap.edges")));
     std::printf("%-22s %22s %12s %20s\n", "Algorithm", "# of segments in path", "path cost", "# of nodes explored");
     for (const Row& row : rows) {
-      const Plan plan = graph.plan(query.start, query.goal, row.options);
+      const PlanReport<ExactPoint> plan = graph.plan(query, row.options);
       if (!plan.found) {
         std::printf("%-22s %22s\n", row.name, "no path");
         continue;
       }
-      std::printf("%-22s %22zu %12.2f %20zu\n", row.name, plan.path.size() - 1, plan.length, plan.expanded);
-      draw_path(drawing, plan.path, row.name, row.colour);
+      std::printf("%-22s %22zu %12.2f %20lld\n", row.name, plan.path.size() - 1, plan.length,
+                  static_cast<long long>(plan.facts.count("search.expanded")));
+      draw_path(drawing, plan.path, row.name, theme::path_colour(row.colour));
     }
     drawing.write(picture);
     std::printf("\npicture: %s\n", picture.c_str());

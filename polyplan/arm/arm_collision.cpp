@@ -6,10 +6,12 @@
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/intersections.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace polyplan {
 namespace {
@@ -40,6 +42,47 @@ struct Box {
   bool overlaps(const Box& o) const { return xmin <= o.xmax && o.xmin <= xmax && ymin <= o.ymax && o.ymin <= ymax; }
   bool contains(const Point& p) const { return xmin <= p.x() && p.x() <= xmax && ymin <= p.y() && p.y() <= ymax; }
 };
+
+constexpr double infinity = std::numeric_limits<double>::infinity();
+
+// The distance between two boxes (0 when they overlap), as computed in doubles. Used only to skip
+// what cannot matter, always after subtracting the safety margin (see safety_margin).
+double gap(const Box& a, const Box& b) {
+  const double dx = std::max({0.0, b.xmin - a.xmax, a.xmin - b.xmax});
+  const double dy = std::max({0.0, b.ymin - a.ymax, a.ymin - b.ymax});
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+// The safety margin subtracted from every double-computed distance, for shapes whose coordinates
+// are at most `extent` in absolute value, on an arm of the given reach. The distance formulas
+// below round by a few units of 2^-53 times the coordinates involved; the kinematic coordinates
+// (n links: n cos/sin and sums) differ from the true arm's by about n · 2^-53 · reach; interpolated
+// angles and advancement steps add a few 2^-53 · reach more. 1e-12 is about 10^3 times all of that
+// together for arms of up to a hundred links, and still far below any clearance worth planning with.
+double safety_margin(double reach, double extent) { return 1e-12 * (reach + 1 + extent); }
+
+// A clearance: the computed distance minus the margin, never below 0.
+double clearance_of(double distance, double margin) { return std::max(0.0, distance - margin); }
+
+// Whether something at box distance `box_gap` (its margin already known) can be skipped: it lies
+// apart from the link (a positive lower bound, so it cannot meet it) and cannot bring the
+// clearance below `enough`.
+bool cannot_matter(double box_gap, double margin, double enough) {
+  const double lower_bound = box_gap - margin;
+  return lower_bound > 0 && lower_bound >= enough;
+}
+
+// The distance from p to the segment ab (a == b allowed), in doubles. Clamping the projection
+// keeps the nearest point on the segment, so rounding moves the result by a few ulps of the
+// coordinates only (see safety_margin).
+double point_segment_distance(const Point& p, const Point& a, const Point& b) {
+  const double vx = b.x() - a.x(), vy = b.y() - a.y();
+  const double wx = p.x() - a.x(), wy = p.y() - a.y();
+  const double vv = vx * vx + vy * vy;
+  const double t = vv > 0 ? std::clamp((wx * vx + wy * vy) / vv, 0.0, 1.0) : 0.0;
+  const double dx = wx - t * vx, dy = wy - t * vy;
+  return std::sqrt(dx * dx + dy * dy);
+}
 
 // A closed convex shape given by 1 vertex (a point), 2 (a segment) or 4 (a strictly convex
 // quadrilateral, counter-clockwise): a link, or an edge of an obstacle.
@@ -94,9 +137,27 @@ bool meets(const Convex& a, const Convex& b) {
   return contains(b, a.v[0]) || contains(a, b.v[0]);
 }
 
+// The distance from p to the boundary of s, which is its distance to s when p lies outside s.
+double distance_to_boundary(const Point& p, const Convex& s) {
+  if (s.n == 1) return point_segment_distance(p, s.v[0], s.v[0]);
+  double best = infinity;
+  for (int i = 0; i < edge_count(s); ++i) best = std::min(best, point_segment_distance(p, s.v[i], s.v[(i + 1) % s.n]));
+  return best;
+}
+
+// The distance between two closed convex shapes that do not meet: the nearest pair of points of
+// two disjoint convex polygons (or segments, or points) always has a vertex of one of them.
+double distance_apart(const Convex& a, const Convex& b) {
+  double best = infinity;
+  for (int i = 0; i < a.n; ++i) best = std::min(best, distance_to_boundary(a.v[i], b));
+  for (int i = 0; i < b.n; ++i) best = std::min(best, distance_to_boundary(b.v[i], a));
+  return best;
+}
+
 struct Obstacle {
   std::size_t index = 0;  // in the problem's obstacles
   Box box;
+  double margin = 0;  // safety_margin for its coordinates
   std::vector<Convex> edges;  // of the outer boundary and of the holes
   std::vector<Point> outer;
   std::vector<std::vector<Point>> holes;
@@ -123,7 +184,11 @@ bool link_meets(const Convex& link, const Obstacle& o) {
 struct PointObstacle {
   Point p;
   std::size_t index = 0;  // in the problem's points
+  Box box;                // p alone
+  double margin = 0;      // safety_margin for its coordinates
 };
+
+double largest_coordinate(const Box& b) { return std::max({std::fabs(b.xmin), std::fabs(b.xmax), std::fabs(b.ymin), std::fabs(b.ymax)}); }
 
 std::vector<Point> to_points(const Ring& ring) {
   std::vector<Point> out;
@@ -150,9 +215,12 @@ struct ArmCollisionChecker::Impl {
   std::vector<Obstacle> obstacles;  // only those the arm can reach
   std::vector<PointObstacle> points;
   Box everything;  // of the kept obstacles and points
+  double everything_margin = 0;  // the largest margin of the kept obstacles and points
+  double link_pair_margin = 0;   // safety_margin between two links
   // Scratch for one check, kept to avoid allocating per call.
   mutable std::vector<Eigen::Vector2d> joints;
   mutable std::vector<Convex> links;
+  mutable ArmClearances split;
   mutable std::size_t checks = 0;
 
   Impl(const Arm& a, const std::vector<PolygonWithHoles>& polygons, const std::vector<Eigen::Vector2d>& point_list) : arm(a) {
@@ -163,6 +231,7 @@ struct ArmCollisionChecker::Impl {
       throw std::invalid_argument("ArmCollisionChecker: the link width is negative or not finite");
     const double reach = arm.reach();
     if (!std::isfinite(reach)) throw std::invalid_argument("ArmCollisionChecker: the arm's length is not finite");
+    link_pair_margin = safety_margin(reach, reach);
     // Whatever lies outside the disc of radius reach can never be touched. The box around it is
     // widened far beyond the rounding of the computed coordinates, so dropping is always safe.
     Box reachable;
@@ -183,7 +252,10 @@ struct ArmCollisionChecker::Impl {
         o.holes.push_back(to_points(hole));
         add_edges(o.holes.back(), o.edges);
       }
+      // Holes lie inside the outer boundary, so its box bounds every coordinate.
+      o.margin = safety_margin(reach, largest_coordinate(o.box));
       everything.add(o.box);
+      everything_margin = std::max(everything_margin, o.margin);
       obstacles.push_back(std::move(o));
     }
     for (std::size_t i = 0; i < point_list.size(); ++i) {
@@ -191,8 +263,12 @@ struct ArmCollisionChecker::Impl {
       if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw std::invalid_argument("ArmCollisionChecker: a point is not finite");
       const Point q(p.x(), p.y());
       if (!reachable.contains(q)) continue;
-      points.push_back({q, i});
+      PointObstacle kept{q, i, {}, 0};
+      kept.box.add(q);
+      kept.margin = safety_margin(reach, largest_coordinate(kept.box));
       everything.add(q);
+      everything_margin = std::max(everything_margin, kept.margin);
+      points.push_back(kept);
     }
   }
 
@@ -213,12 +289,18 @@ struct ArmCollisionChecker::Impl {
     out = make_segment(Point(joints[k].x(), joints[k].y()), Point(joints[k + 1].x(), joints[k + 1].y()));
   }
 
-  std::optional<ArmContact> contact(const JointAngles& angles) const {
-    joint_positions_into(arm, angles, joints);  // validates the angles
+  // Puts the arm in configuration q: joints and link shapes. Counts one check.
+  void place(const JointAngles& q) const {
+    joint_positions_into(arm, q, joints);  // validates the angles
     ++checks;
     const std::size_t n = arm.joints();
     links.resize(n);
     for (std::size_t k = 0; k < n; ++k) shape_link(k, links[k]);
+  }
+
+  std::optional<ArmContact> contact(const JointAngles& angles) const {
+    place(angles);
+    const std::size_t n = arm.joints();
     for (std::size_t k = 0; k < n; ++k) {
       const Convex& link = links[k];
       if (link.box.overlaps(everything)) {
@@ -232,6 +314,111 @@ struct ArmCollisionChecker::Impl {
           if (meets(link, links[j])) return ArmContact{k, ArmContact::With::link, j};
     }
     return std::nullopt;
+  }
+
+  // The clearance of the placed links[k] to the obstacle polygons and points: the smallest one
+  // below `enough` or, when none is below it, a value of at least `enough` (+infinity when nothing
+  // was measured). What cannot matter (cannot_matter) is skipped, which never skips anything the
+  // link may meet: meeting is decided exactly for every obstacle whose box overlaps the link's.
+  // The first obstacle or point met, in first_contact's order, goes into `contact` unless it already
+  // holds one; with stop_at_contact the search ends there.
+  double obstacle_clearance(std::size_t k, double enough, bool stop_at_contact, std::optional<ArmContact>& contact) const {
+    const Convex& link = links[k];
+    double best = infinity;
+    if (cannot_matter(gap(link.box, everything), everything_margin, enough)) return best;
+    const auto found = [&](ArmContact c) {
+      if (!contact) contact = c;
+      best = 0;
+      return stop_at_contact;
+    };
+    for (const Obstacle& o : obstacles) {
+      if (cannot_matter(gap(link.box, o.box), o.margin, std::min(best, enough))) continue;
+      if (link_meets(link, o)) {
+        if (found({k, ArmContact::With::polygon, o.index})) return best;
+        continue;
+      }
+      // Apart from the closed region, the link is nearest to its boundary: one of the edges.
+      for (const Convex& e : o.edges) {
+        if (best == 0) break;
+        if (cannot_matter(gap(link.box, e.box), o.margin, std::min(best, enough))) continue;
+        best = std::min(best, clearance_of(distance_apart(link, e), o.margin));
+      }
+    }
+    for (const PointObstacle& p : points) {
+      if (cannot_matter(gap(link.box, p.box), p.margin, std::min(best, enough))) continue;
+      if (contains(link, p.p)) {
+        if (found({k, ArmContact::With::point, p.index})) return best;
+        continue;
+      }
+      best = std::min(best, clearance_of(distance_to_boundary(p.p, link), p.margin));
+    }
+    return best;
+  }
+
+  // The clearance between the placed links[k] and links[m] (self-collision, |k − m| ≥ 2), as
+  // obstacle_clearance measures it: +infinity when it cannot be below `enough`, 0 when they meet
+  // (then `contact` is set unless it already holds one).
+  double pair_clearance(std::size_t k, std::size_t m, double enough, std::optional<ArmContact>& contact) const {
+    const Convex& a = links[k];
+    const Convex& b = links[m];
+    if (cannot_matter(gap(a.box, b.box), link_pair_margin, enough)) return infinity;
+    if (meets(a, b)) {
+      if (!contact) contact = ArmContact{std::min(k, m), ArmContact::With::link, std::max(k, m)};
+      return 0;
+    }
+    return clearance_of(distance_apart(a, b), link_pair_margin);
+  }
+
+  void clearances(const JointAngles& q, ArmClearances& out) const {
+    place(q);
+    const std::size_t n = arm.joints();
+    out.links.assign(n, infinity);
+    if (arm.self_collision) out.pairs.assign(n * n, infinity);
+    else out.pairs.clear();
+    out.contact.reset();
+    // In first_contact's order, so that the first contact recorded is the one it reports.
+    for (std::size_t k = 0; k < n; ++k) {
+      out.links[k] = obstacle_clearance(k, infinity, false, out.contact);
+      if (arm.self_collision)
+        for (std::size_t m = k + 2; m < n; ++m) out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, infinity, out.contact);
+    }
+  }
+
+  ArmSafeStep safe_step(const JointAngles& q, std::span<const double> link_speed, std::span<const double> pair_speed,
+                        double horizon) const {
+    const std::size_t n = arm.joints();
+    if (link_speed.size() != n || pair_speed.size() != (arm.self_collision ? n * n : 0))
+      throw std::invalid_argument("ArmCollisionChecker::safe_step: " + std::to_string(link_speed.size()) + " link speeds and " +
+                                  std::to_string(pair_speed.size()) + " pair speeds for an arm of " + std::to_string(n) +
+                                  " links" + (arm.self_collision ? " with" : " without") + " self-collision");
+    const auto valid = [](double x) { return x >= 0 && std::isfinite(x); };
+    if (!(horizon >= 0) || !std::all_of(link_speed.begin(), link_speed.end(), valid) ||
+        !std::all_of(pair_speed.begin(), pair_speed.end(), valid))
+      throw std::invalid_argument("ArmCollisionChecker::safe_step: speeds must be finite and not negative, the horizon not negative");
+    place(q);
+    // How long a clearance c lasts at speed v: c / v, forever for a positive c that does not move,
+    // and not at all for c = 0 (which may be a contact within the margin).
+    const auto lasts = [](double c, double v) { return c == 0 ? 0.0 : v > 0 ? c / v : infinity; };
+    // The distance covered at speed v in the time `step` (0 · ∞ would be NaN for an endless horizon).
+    const auto covered = [](double v, double step) { return v > 0 ? v * step : 0.0; };
+    ArmSafeStep result;
+    double step = horizon;
+    // In first_contact's order, so that the contact reported is the one it reports. A clearance
+    // above speed · step cannot lower the step: that is what "enough" tells the measurements.
+    for (std::size_t k = 0; k < n; ++k) {
+      const double c = obstacle_clearance(k, covered(link_speed[k], step), true, result.contact);
+      if (result.contact) return result;
+      step = std::min(step, lasts(c, link_speed[k]));
+      if (arm.self_collision)
+        for (std::size_t m = k + 2; m < n; ++m) {
+          const double v = pair_speed[k * n + m];
+          const double cm = pair_clearance(k, m, covered(v, step), result.contact);
+          if (result.contact) return result;
+          step = std::min(step, lasts(cm, v));
+        }
+    }
+    result.step = step;
+    return result;
   }
 };
 
@@ -249,6 +436,24 @@ ArmCollisionChecker& ArmCollisionChecker::operator=(ArmCollisionChecker&&) noexc
 const Arm& ArmCollisionChecker::arm() const { return impl_->arm; }
 bool ArmCollisionChecker::is_free(const JointAngles& angles) const { return !impl_->contact(angles); }
 std::optional<ArmContact> ArmCollisionChecker::first_contact(const JointAngles& angles) const { return impl_->contact(angles); }
+
+void ArmCollisionChecker::clearances(const JointAngles& q, ArmClearances& out) const { impl_->clearances(q, out); }
+
+void ArmCollisionChecker::clearances(const JointAngles& q, std::vector<double>& out) const {
+  ArmClearances& split = impl_->split;
+  impl_->clearances(q, split);
+  out = split.links;
+  const std::size_t n = out.size();
+  if (!split.pairs.empty())
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t m = 0; m < n; ++m) out[k] = std::min(out[k], split.pairs[k * n + m]);
+}
+
+ArmSafeStep ArmCollisionChecker::safe_step(const JointAngles& q, std::span<const double> link_speed,
+                                           std::span<const double> pair_speed, double horizon) const {
+  return impl_->safe_step(q, link_speed, pair_speed, horizon);
+}
+
 std::size_t ArmCollisionChecker::checks() const { return impl_->checks; }
 
 }  // namespace polyplan

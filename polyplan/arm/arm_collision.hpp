@@ -15,6 +15,15 @@
 // rounded to the nearest double (geometry/rational.hpp to_double) once, at construction. A
 // rectangle so thin that its double corners are not strictly convex is checked as its segment.
 //
+// Clearances (for certified motions, arm_motion.hpp) are lower bounds of distances between the
+// same closed shapes: 0 when they meet (decided by the exact test above, never by a tolerance),
+// otherwise the double-computed Euclidean distance minus a safety margin, clamped at 0. The margin,
+// 1e-12 · (reach + 1 + the largest coordinate of the obstacle or point measured to), is about 10^3
+// times what double rounding can move a distance here: the rounding of the distance formulas,
+// of the kinematic coordinates against the true (real-number) arm at the same angles, and of the
+// interpolated angles and step sizes of a motion. So a clearance never exceeds the true distance
+// between the true arm and the obstacles (taken as their nearest doubles).
+//
 // Not thread-safe: a checker keeps scratch buffers and a counter (mutable, for speed: no
 // allocation per check). Use one checker per thread; construction is cheap.
 #include <polyplan/arm/angles.hpp>
@@ -27,6 +36,7 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +50,22 @@ struct ArmContact {
   std::size_t index = 0;  // obstacles[index], points[index], or the other link (0-based)
   // "link 2 meets obstacles[0]", "link 1 meets points[4]", "link 1 meets link 3".
   std::string describe() const;
+};
+
+// Lower bounds of the distances of one configuration, split by what they are to (see
+// ArmCollisionChecker::clearances). +infinity where there is nothing to measure to.
+struct ArmClearances {
+  std::vector<double> links;  // [k]: links[k] to every obstacle polygon and point
+  // [k * n + m] for n links: links[k] to links[m], symmetric, when they may collide (self-collision
+  // on and no shared joint, |k − m| ≥ 2); +infinity for every other pair. Empty without self-collision.
+  std::vector<double> pairs;
+  std::optional<ArmContact> contact;  // the configuration's first contact (as first_contact), if any
+};
+
+// The result of ArmCollisionChecker::safe_step.
+struct ArmSafeStep {
+  double step = 0;                    // 0 when the configuration collides
+  std::optional<ArmContact> contact;  // the first contact (as first_contact) when it collides
 };
 
 class ArmCollisionChecker {
@@ -62,7 +88,29 @@ class ArmCollisionChecker {
   // polygons in order, then the points in order, then (self-collision) the later links.
   std::optional<ArmContact> first_contact(const JointAngles&) const;
 
-  // Configurations checked so far (is_free and first_contact calls), for the planners' counts.
+  // Lower bounds of each link's distance to what it may collide with (0 when it touches or meets
+  // something), for the configuration q; out[k] for links[k] (resized to the link count): the
+  // minimum over the obstacle polygons, the points and, with self-collision, the links it shares
+  // no joint with. +infinity when nothing is within reach. Throws like is_free.
+  void clearances(const JointAngles& q, std::vector<double>& out) const;
+  // The same split into obstacle and link-pair clearances, with the first contact.
+  void clearances(const JointAngles& q, ArmClearances& out) const;
+
+  // Conservative advancement's step (arm_motion.hpp), for the configuration q. When q collides:
+  // step 0 and its first contact. Otherwise a lower bound of how long q stays free, at most
+  // `horizon`, when every point of links[k] moves at most link_speed[k] per unit of time and,
+  // with self-collision, every point of links[m] relative to links[k] (in the frame of links[k])
+  // at most pair_speed[k * n + m] for m ≥ k + 2:
+  //   min(horizon, min_k c_k / link_speed[k], min_{k, m} c_km / pair_speed[k * n + m]),
+  // with c / 0 = +infinity for c > 0 and 0 for c = 0 (a clearance of 0 proves nothing, even for
+  // something that does not move). Only what can lower the minimum is measured: obstacles whose
+  // bounding box is farther away are skipped. Throws std::invalid_argument like is_free, and for
+  // speed lists of the wrong size (pair_speed: n * n entries, or none without self-collision).
+  ArmSafeStep safe_step(const JointAngles& q, std::span<const double> link_speed, std::span<const double> pair_speed,
+                        double horizon) const;
+
+  // Configurations checked so far (is_free, first_contact, clearances and safe_step calls), for the
+  // planners' counts.
   std::size_t checks() const;
 
  private:

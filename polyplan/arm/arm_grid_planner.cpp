@@ -1,15 +1,16 @@
 #include <polyplan/arm/arm_grid_planner.hpp>
 
-#include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/roadmaps/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
 #include <polyplan/search/grid_graph.hpp>
 
 #include <boost/container_hash/hash.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -50,6 +51,18 @@ struct AngleGrid {
   }
 };
 
+// Motions certified for one query, and those refused because no bound proved them free (near
+// contact): a refused motion is treated as blocked, never as free.
+struct MotionTally {
+  std::size_t checked = 0, uncertified = 0;
+  bool certify(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to) {
+    ++checked;
+    const MotionCertificate certificate = certify_motion(checker, from, to);
+    uncertified += certificate.verdict == MotionCertificate::Verdict::uncertified;
+    return certificate.free();
+  }
+};
+
 // Where the start (or goal) joins the grid: the first of the cells around it, nearest first (by the
 // sum of the joints' distances), that is free and reached by a free motion.
 struct Join {
@@ -58,7 +71,7 @@ struct Join {
 };
 
 Join join_to_grid(const GridGraph& g, const AngleGrid& grid, const ArmCollisionChecker& checker, const JointAngles& q,
-                  double check_radians, std::size_t& motions) {
+                  MotionTally& motions) {
   const std::size_t joints = q.size();
   std::vector<std::array<GridCoordinate, 2>> options(joints);
   for (std::size_t i = 0; i < joints; ++i) options[i] = grid.around(q[i]);
@@ -76,8 +89,7 @@ Join join_to_grid(const GridGraph& g, const AngleGrid& grid, const ArmCollisionC
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
   for (const auto& [distance, cell] : candidates) {
     if (!g.is_free(cell)) continue;
-    ++motions;
-    if (motion_is_free(checker, q, grid.configuration(g, cell), check_radians)) return {true, cell};
+    if (motions.certify(checker, q, grid.configuration(g, cell))) return {true, cell};
   }
   return {};
 }
@@ -86,6 +98,22 @@ JointAngles normalized(const JointAngles& q) {
   JointAngles out(q.size());
   std::transform(q.begin(), q.end(), out.begin(), [](double a) { return normalize_angle(a); });
   return out;
+}
+
+std::int64_t cells_per_axis(const ArmGridOptions& options) {
+  const double cells = 360.0 / options.resolution_degrees;
+  const auto n = static_cast<std::int64_t>(std::llround(cells));
+  if (!(options.resolution_degrees > 0) || !std::isfinite(cells) || n < 3 ||
+      std::fabs(cells - static_cast<double>(n)) > 1e-9 * cells)
+    throw std::invalid_argument("the grid resolution " + std::to_string(options.resolution_degrees) +
+                                " degrees must divide 360 into at least 3 cells");
+  return n;
+}
+
+std::string degrees_text(double degrees) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", degrees);
+  return text;
 }
 
 }  // namespace
@@ -99,96 +127,123 @@ double arm_path_length(const std::vector<JointAngles>& path, bool torus) {
   return length;
 }
 
-ArmGridPlan plan_arm_on_grid(const ArmProblem& problem, const ArmQuery& query, const ArmGridOptions& options) {
-  const auto began = std::chrono::steady_clock::now();
-  const std::size_t joints = problem.arm.joints();
-  if (query.start.size() != joints || query.goal.size() != joints)
-    throw std::invalid_argument("query " + query.name + ": " + std::to_string(joints) + " joint angles expected");
-  const double cells_real = 360.0 / options.resolution_degrees;
-  const auto n = static_cast<std::int64_t>(std::llround(cells_real));
-  if (!(options.resolution_degrees > 0) || n < 3 || std::fabs(cells_real - static_cast<double>(n)) > 1e-9 * cells_real)
-    throw std::invalid_argument("the grid resolution " + std::to_string(options.resolution_degrees) +
-                                " degrees must divide 360 into at least 3 cells");
-  const double check_degrees = options.check_degrees > 0 ? options.check_degrees : std::min(1.0, options.resolution_degrees);
-  if (check_degrees > options.resolution_degrees * (1 + 1e-12))
-    throw std::invalid_argument("checking motions every " + std::to_string(check_degrees) +
-                                " degrees would skip configurations between grid cells " +
-                                std::to_string(options.resolution_degrees) + " degrees apart");
-  const double check_radians = check_degrees * degree;
-  const AngleGrid grid{n, two_pi / static_cast<double>(n), options.torus};
+ArmGridPlanner::ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options)
+    : problem_(&problem), options_(options), cells_per_axis_(cells_per_axis(options)), checker_(problem) {
+  const double cells = std::pow(static_cast<double>(cells_per_axis_), static_cast<double>(problem.arm.joints()));
+  if (!options_.lazy && cells > static_cast<double>(std::uint64_t{1} << 24))
+    throw std::invalid_argument("eager evaluation of " + degrees_text(cells) + " cells is too much (at most 2^24); use lazy evaluation");
+}
 
-  ArmGridPlan plan;
-  plan.cells_per_axis = static_cast<std::size_t>(n);
-  plan.check_degrees = check_degrees;
-  const ArmCollisionChecker checker(problem);
-  const auto finish = [&](ArmGridPlan& p) {
-    p.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-    return p;
+PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryOptions& record) {
+  const Stopwatch planning;
+  const std::size_t joints = problem_->arm.joints();
+  const std::int64_t n = cells_per_axis_;
+  const AngleGrid grid{n, two_pi / static_cast<double>(n), options_.torus};
+
+  PlanReport<JointAngles> report;
+  Facts& facts = report.facts;
+  facts.set("grid.resolution_degrees", options_.resolution_degrees);
+  facts.set("grid.cells_per_axis", n);
+  facts.set("grid.torus", options_.torus);
+  facts.set("grid.evaluation", options_.lazy ? "lazy" : "eager");
+  facts.set("search.algorithm", to_string(options_.search.algorithm));
+  std::size_t cells_evaluated = 0, expanded = 0, generated = 0;
+  MotionTally motions;
+  const auto finish = [&]() {
+    facts.set("cells_evaluated", cells_evaluated);
+    facts.set("moves_checked", motions.checked);
+    facts.set("moves_uncertified", motions.uncertified);
+    facts.set("expanded", expanded);
+    facts.set("search.expanded", expanded);
+    facts.set("search.generated", generated);
+    facts.set("seconds", planning.seconds());
+    return report;
   };
+
+  if (query.start.size() != joints || query.goal.size() != joints) {
+    report.why_not = "the query " + query.name + " has " + std::to_string(query.start.size()) + " start and " +
+                     std::to_string(query.goal.size()) + " goal angles for an arm of " + std::to_string(joints) + " joints";
+    return finish();
+  }
   for (const auto* end : {&query.start, &query.goal})
-    if (const auto contact = checker.first_contact(*end)) {
-      plan.why_not = std::string(end == &query.start ? "the start" : "the goal") + " collides: " + contact->describe();
-      return finish(plan);
+    if (const auto contact = checker_.first_contact(*end)) {
+      report.why_not = std::string(end == &query.start ? "the start" : "the goal") + " collides: " + contact->describe();
+      return finish();
     }
 
-  std::vector<GridAxis> axes(joints, GridAxis{n, options.torus ? AxisKind::wrapping : AxisKind::bounded, grid.step});
+  std::vector<GridAxis> axes(joints, GridAxis{n, options_.torus ? AxisKind::wrapping : AxisKind::bounded, grid.step});
   GridGraph g(axes, Connectivity::axis_aligned, StepCost::sum_of_axes, [&](std::span<const GridCoordinate> at) {
     JointAngles q(at.size());
     for (std::size_t i = 0; i < q.size(); ++i) q[i] = grid.angle(at[i]);
-    return checker.is_free(q);
+    return checker_.is_free(q);
   });
-  if (!options.lazy) {
-    if (g.cell_count() > (std::uint64_t{1} << 24))
-      throw std::invalid_argument("eager evaluation of " + std::to_string(g.cell_count()) +
-                                  " cells is too much (at most 2^24); use lazy evaluation");
-    g.evaluate_all();
-  }
-  // A move is checked once whichever side the search sees it from (moves on an axis of >= 3 cells
-  // are identified by their two cells).
+  if (!options_.lazy) g.evaluate_all();
+  // A move is certified once whichever side the search sees it from (moves on an axis of >= 3
+  // cells are identified by their two cells).
   std::unordered_map<std::pair<GridCell, GridCell>, bool, boost::hash<std::pair<GridCell, GridCell>>> moves;
   g.set_move_test([&](GridCell a, GridCell b) {
     const auto key = std::minmax(a, b);
     const auto [it, inserted] = moves.try_emplace({key.first, key.second}, false);
-    if (inserted) it->second = motion_is_free(checker, grid.configuration(g, a), grid.configuration(g, b), check_radians);
+    if (inserted) it->second = motions.certify(checker_, grid.configuration(g, a), grid.configuration(g, b));
     return it->second;
   });
-
-  std::size_t joins_checked = 0;
-  const Join start = join_to_grid(g, grid, checker, query.start, check_radians, joins_checked);
-  const Join goal = join_to_grid(g, grid, checker, query.goal, check_radians, joins_checked);
-  const auto record_counts = [&] {
-    plan.cells_evaluated = g.cells_evaluated();
-    plan.moves_checked = moves.size() + joins_checked;
-    if (options.keep_cspace && joints == 2) {
-      plan.cspace.resize(g.cell_count());
-      for (GridCell c = 0; c < g.cell_count(); ++c) plan.cspace[c] = static_cast<std::uint8_t>(g.state(c));
-    }
+  const auto keep_cells = [&]() {
+    cells_evaluated = g.cells_evaluated();
+    if (!record.record || joints != 2) return;
+    auto cells = std::make_shared<CellGrid>();
+    cells->columns = cells->rows = static_cast<std::size_t>(n);
+    cells->x0 = cells->y0 = -grid.step / 2;  // cell k is centred on the angle k·step
+    cells->cell_width = cells->cell_height = grid.step;
+    cells->states.resize(g.cell_count());
+    for (GridCell c = 0; c < g.cell_count(); ++c) cells->states[c] = static_cast<std::uint8_t>(g.state(c));
+    report.cells = std::move(cells);
   };
+
+  const Join start = join_to_grid(g, grid, checker_, query.start, motions);
+  const Join goal = join_to_grid(g, grid, checker_, query.goal, motions);
   if (!start.found || !goal.found) {
-    plan.why_not = std::string("no grid cell next to the ") + (start.found ? "goal" : "start") +
-                   " is reached from it by a free motion; try a finer resolution";
-    record_counts();
-    return finish(plan);
+    report.why_not = std::string("no grid cell next to the ") + (start.found ? "goal" : "start") +
+                     " is reached from it by a certified free motion; try a finer resolution";
+    keep_cells();
+    return finish();
   }
 
+  SearchOptions searching = options_.search;
+  searching.record_expanded = record.record;
   const auto result =
-      shortest_path(g, start.cell, goal.cell, options.search, GridDistanceTo(g, goal.cell, GridMetric::sum_of_axes), GridMoveCost{&g});
-  plan.expanded = result.expanded;
-  plan.generated = result.generated;
-  record_counts();
+      shortest_path(g, start.cell, goal.cell, searching, GridDistanceTo(g, goal.cell, GridMetric::sum_of_axes), GridMoveCost{&g});
+  expanded = result.expanded;
+  generated = result.generated;
+  for (const GridCell c : result.expanded_order) report.expanded.push_back(grid.configuration(g, c));
+  keep_cells();
   if (!result.found) {
-    plan.why_not = std::string("start and goal are not connected on the ") + (options.torus ? "torus" : "interval") +
-                   " grid at " + std::to_string(options.resolution_degrees) + " degrees";
-    return finish(plan);
+    report.why_not = std::string("start and goal are not connected on the ") + (options_.torus ? "torus" : "interval") +
+                     " grid at " + degrees_text(options_.resolution_degrees) + " degrees";
+    return finish();
   }
-  plan.found = true;
-  plan.path.push_back(normalized(query.start));
-  for (const GridCell c : result.path) plan.path.push_back(grid.configuration(g, c));
-  plan.path.push_back(normalized(query.goal));
+  report.found = true;
+  report.path.push_back(normalized(query.start));
+  for (const GridCell c : result.path) report.path.push_back(grid.configuration(g, c));
+  report.path.push_back(normalized(query.goal));
   // A start or goal exactly on its cell would repeat it.
-  plan.path.erase(std::unique(plan.path.begin(), plan.path.end()), plan.path.end());
-  plan.length = arm_path_length(plan.path, options.torus);
-  return finish(plan);
+  report.path.erase(std::unique(report.path.begin(), report.path.end()), report.path.end());
+  report.length = arm_path_length(report.path, options_.torus);
+  report.certificate = {true, "conservative advancement (every motion certified free by clearance bounds)"};
+  return finish();
+}
+
+PlannerEntry<PlanarArm> arm_grid_planner_entry() {
+  OptionTable<ArmGridOptions> table;
+  table.add("resolution", &ArmGridOptions::resolution_degrees, "grid step in degrees (must divide 360)");
+  table.add("torus", &ArmGridOptions::torus, "joint angles wrap round (false: each joint is the interval [0, 2pi))");
+  table.add("evaluation", &ArmGridOptions::lazy, "lazy: decide cells when the search reaches them; eager: every cell first",
+            std::vector<std::pair<std::string, bool>>{{"lazy", true}, {"eager", false}});
+  add_search_options(table, &ArmGridOptions::search);
+  return make_planner_entry<PlanarArm, ArmGridOptions>(
+      "grid", "seed 000's grid over the joint angles (a torus), searched lazily; every move a certified motion",
+      std::move(table), [](const ArmProblem& problem, const ArmGridOptions& o) {
+        return std::make_unique<ArmGridPlanner>(problem, o);
+      });
 }
 
 }  // namespace polyplan

@@ -3,8 +3,95 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace polyplan {
+
+namespace {
+
+// The speeds of arm_motion.hpp's motion bound for the joint rotations `turn` (Δ): link_speed[k]
+// bounds how fast any point of links[k] moves, pair_speed[k * n + m] (k + 2 ≤ m, self-collision
+// only) how fast any point of links[m] moves relative to links[k].
+void motion_speeds(const Arm& arm, const JointAngles& turn, std::vector<double>& link_speed, std::vector<double>& pair_speed) {
+  const std::size_t n = arm.joints();
+  // R_{j,k} = links[j] + … + links[k] + w/2: no point of links[k] is farther from joint j.
+  const auto radius = [&](std::size_t j, std::size_t k) {
+    double sum = arm.link_width / 2;
+    for (std::size_t i = j; i <= k; ++i) sum += arm.links[i];
+    return sum;
+  };
+  link_speed.assign(n, 0.0);
+  for (std::size_t k = 0; k < n; ++k)
+    for (std::size_t j = 0; j <= k; ++j) link_speed[k] += radius(j, k) * std::fabs(turn[j]);
+  pair_speed.assign(arm.self_collision ? n * n : 0, 0.0);
+  if (arm.self_collision)
+    for (std::size_t k = 0; k < n; ++k)
+      for (std::size_t m = k + 2; m < n; ++m)
+        for (std::size_t j = k + 1; j <= m; ++j) pair_speed[k * n + m] += radius(j, m) * std::fabs(turn[j]);
+}
+
+void require_arm_size(const ArmCollisionChecker& checker, const JointAngles& q, const char* which) {
+  if (q.size() != checker.arm().joints())
+    throw std::invalid_argument(std::string("certify_motion: ") + which + " has " + std::to_string(q.size()) +
+                                " angles for an arm of " + std::to_string(checker.arm().joints()) + " links");
+}
+
+}  // namespace
+
+MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to) {
+  require_arm_size(checker, from, "from");
+  require_arm_size(checker, to, "to");
+  const std::size_t n = from.size();
+  JointAngles turn(n);
+  for (std::size_t j = 0; j < n; ++j) turn[j] = signed_angle_difference(from[j], to[j]);  // throws for non-finite angles
+
+  MotionCertificate certificate;
+  const auto collides = [&](double at, const ArmContact& contact) {
+    certificate.verdict = MotionCertificate::Verdict::collides;
+    certificate.at = at;
+    certificate.contact = contact;
+    return certificate;
+  };
+  // The goal first, bit for bit: the path a planner returns ends at exactly this value, and a
+  // motion into a collision needs no clearance measured.
+  if (const auto contact = checker.first_contact(to)) return collides(1, *contact);
+
+  if (std::all_of(turn.begin(), turn.end(), [](double d) { return d == 0; })) {
+    // Nothing turns: every interpolated configuration is the normalised `from`, bit for bit.
+    if (const auto contact = checker.first_contact(from)) return collides(0, *contact);
+    const JointAngles still = interpolate_angles(from, to, 0.5);
+    if (still != from && still != to)
+      if (const auto contact = checker.first_contact(still)) return collides(0.5, *contact);
+    certificate.verdict = MotionCertificate::Verdict::free;
+    return certificate;
+  }
+
+  std::vector<double> link_speed, pair_speed;
+  motion_speeds(checker.arm(), turn, link_speed, pair_speed);
+  JointAngles q = from;  // t = 0 is `from` itself, bit for bit
+  double t = 0;
+  while (certificate.steps < motion_max_steps) {
+    const double remaining = 1 - t;
+    const ArmSafeStep step = checker.safe_step(q, link_speed, pair_speed, remaining);
+    ++certificate.steps;
+    if (step.contact) return collides(t, *step.contact);
+    // [t, t + step.step) is free; the goal was tested exactly above.
+    if (step.step >= remaining) {
+      certificate.verdict = MotionCertificate::Verdict::free;
+      return certificate;
+    }
+    if (step.step < motion_min_step) break;  // grazing: the steps would not end
+    t += step.step;
+    interpolate_angles_into(from, to, t, q);
+  }
+  certificate.verdict = MotionCertificate::Verdict::uncertified;
+  certificate.at = t;
+  return certificate;
+}
+
+bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to) {
+  return certify_motion(checker, from, to).free();
+}
 
 std::size_t motion_step_count(const JointAngles& from, const JointAngles& to, double resolution) {
   if (!(resolution > 0) || !std::isfinite(resolution))

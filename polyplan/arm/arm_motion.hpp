@@ -1,31 +1,80 @@
 #pragma once
 // Motions between two configurations: every joint turns the short way round at a constant rate
-// (seed 001's interpolation), and the motion is valid when every configuration along it is free,
-// checked at a stated angular resolution.
+// (seed 001's interpolation): θ_j(t) = from_j + t·Δ_j, Δ_j = signed_angle_difference(from_j, to_j),
+// t ∈ [0, 1] (interpolate_angles_into). A joint exactly a half turn from its goal turns
+// counter-clockwise (signed_angle_difference's +π), so such a motion and its reverse sweep
+// different half circles.
 //
-// The samples of the motion from → to are `from` itself, then k−1 interpolated configurations,
-// then `to` itself (bit for bit: the path a planner returns begins and ends at the exact values it
-// was given), k+1 in all, with k = max(1, ceil(max_i angular_distance(from_i, to_i) / resolution)),
-// so consecutive samples differ by at most `resolution` radians in every joint (up to rounding).
-// A joint exactly a half turn from its goal turns counter-clockwise (signed_angle_difference's +π),
-// so such a motion and its reverse sweep different half circles.
+// certify_motion proves a motion free for every t, not only at samples (DESIGN.md: motions are
+// certified, never sampled), by conservative advancement:
+//  - Motion bound. Over [t, t + h] every point of links[k] moves at most h · speed_k,
+//    speed_k = Σ_{j ≤ k} R_{j,k} |Δ_j|, where R_{j,k} = (links[j] + … + links[k]) + w/2 bounds the
+//    distance from joint j to any point of links[k] in every configuration (a point's velocity is
+//    Σ_j θ_j' · (p − J_j) turned by 90°). For self-collision, links[m] moves relative to links[k]
+//    (k < m) only through joints k+1 … m (joints 0 … k turn both rigidly, which keeps their
+//    distance), so at most h · Σ_{k < j ≤ m} R_{j,m} |Δ_j|.
+//  - Clearance. ArmCollisionChecker::safe_step measures lower bounds c of the distances at q(t)
+//    (exact contact test first; distances minus a safety margin, see arm_collision.hpp) and returns
+//    h = the smallest c / speed: every configuration in [t, t + h) is free.
+//  - Advancement. The goal `to` itself (bit for bit) is tested exactly first. Then from t = 0
+//    (`from` itself, bit for bit) the motion advances t += h; it is free once t + h ≥ 1, collides
+//    when q(t) collides (exactly), and is refused ("uncertified", never "free") when h falls below
+//    motion_min_step or after motion_max_steps clearance computations: near contact the steps
+//    become tiny, and a motion that grazes or slides along an obstacle closer than about
+//    speed · motion_min_step, or at a small clearance for long, cannot be proved free this way.
+//
+// Angles are normalised before interpolating (angles.hpp), so a motion runs between the
+// normalised angles; for |angle| far beyond 10^3 radians normalisation itself moves the arm by
+// more than the safety margin, and `from`/`to` should be given normalised.
+//
+// The older sampled check (motion_samples, the overload of motion_is_free with a resolution) tests
+// only `from`, k−1 interpolated configurations and `to` itself, with
+// k = max(1, ceil(max_i angular_distance(from_i, to_i) / resolution)), so consecutive samples differ
+// by at most `resolution` radians in every joint (up to rounding). It is not a certificate.
 #include <polyplan/arm/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 namespace polyplan {
 
-// k above (the number of steps). Throws std::invalid_argument when the sizes differ, an angle is
-// not finite, the resolution is not positive and finite, or k would exceed 10^9.
+// certify_motion's limits: at most this many clearance computations per motion, and no step
+// (as a fraction of the motion) below this. Either limit reached: the motion is uncertified.
+inline constexpr std::size_t motion_max_steps = 10000;
+inline constexpr double motion_min_step = 1e-12;
+
+struct MotionCertificate {
+  enum class Verdict { free, collides, uncertified };
+  Verdict verdict = Verdict::uncertified;
+  std::size_t steps = 0;              // configurations whose clearance was computed
+  double at = 0;                      // collides/uncertified: the fraction t of the motion where it stopped
+  std::optional<ArmContact> contact;  // collides: what the arm meets there
+  bool free() const { return verdict == Verdict::free; }
+};
+
+// The motion from → to by conservative advancement (above). `at` is 1 when the goal collides, 0
+// when `from` does. A zero-length motion (every Δ_j = 0) is free when `from`, `to` and the
+// normalised `from` are. checker.checks() grows by `steps` plus the exact tests of the ends.
+// Throws std::invalid_argument for sizes that differ from the arm or non-finite angles.
+MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to);
+
+// certify_motion(checker, from, to).free(): false for colliding and for uncertified motions.
+bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to);
+
+// k above (the number of steps of the sampled check). Throws std::invalid_argument when the sizes
+// differ, an angle is not finite, the resolution is not positive and finite, or k would exceed 10^9.
 std::size_t motion_step_count(const JointAngles& from, const JointAngles& to, double resolution);
 
-// The k+1 samples above.
+// The k+1 samples above: `from` itself, k−1 interpolated configurations, `to` itself (bit for bit:
+// the path a planner returns begins and ends at the exact values it was given).
 std::vector<JointAngles> motion_samples(const JointAngles& from, const JointAngles& to, double resolution);
 
-// Whether every sample is free, checked in order from `from` to `to`, stopping at the first one
-// that is not (each counts in checker.checks()). No allocation per sample.
+// NOT A CERTIFICATE: whether every sample is free, checked in order from `from` to `to`, stopping
+// at the first one that is not (each counts in checker.checks()). No allocation per sample. The arm
+// may pass through an obstacle between samples (a point that cuts a link's corner, a thin
+// obstacle); kept only until the grid planner uses certify_motion.
 bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to, double resolution);
 
 }  // namespace polyplan

@@ -2,13 +2,15 @@
 
 #include <polyplan/arm/angles.hpp>
 #include <polyplan/arm/arm.hpp>
+#include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/draw/theme.hpp>
 #include <polyplan/draw/world_svg.hpp>
-#include <polyplan/draw/svg.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <numbers>
 #include <numeric>
 #include <stdexcept>
@@ -37,18 +39,8 @@ constexpr std::size_t kMostTraceVertices = 2000;
 // Configurations marked as where the moving arm will be, for placing the legend.
 constexpr std::size_t kMostSweepMarks = 200;
 
-// Colours: start blue, goal red (the strobe ramps between them), the moving arm orange; obstacles
-// as in geometry/cspace_svg.cpp, blocked configurations in the obstacles' colour, free ones in
-// the free-space tint.
-constexpr const char* kStartColour = "#1f77b4";
-constexpr const char* kGoalColour = "#d62728";
-constexpr const char* kStartEdge = "#14507d";
-constexpr const char* kGoalEdge = "#8f1a1b";
-constexpr const char* kArmFill = "#f28e2b";
-constexpr const char* kArmEdge = "#8a4a0f";
-constexpr const char* kObstacleFill = "#51606f";
-constexpr const char* kObstacleEdge = "#2b3440";
-constexpr const char* kFreeFill = "#e3f1e5";
+// Colours (draw/theme.hpp): blocked configurations in the obstacles' colour, free ones in the
+// free-space tint.
 constexpr const char* kHatchId = "polyplan-not-evaluated";
 
 using Points = std::vector<svg::Point2>;
@@ -104,13 +96,13 @@ void check_picture(const ArmPlanPicture& picture) {
       throw std::invalid_argument("arm picture: a C-space image needs an arm of 2 joints, this one has " +
                                   std::to_string(arm.joints()));
     }
-    const std::size_t n = picture.cspace->cells_per_axis;
-    if (n == 0 || picture.cspace->state.size() != n * n) {
+    const std::size_t n = picture.cspace->columns;
+    if (n == 0 || picture.cspace->rows != n || picture.cspace->states.size() != n * n) {
       throw std::invalid_argument("arm picture: C-space image of " + std::to_string(n) + " cells per axis has " +
-                                  std::to_string(picture.cspace->state.size()) + " states, not n·n");
+                                  std::to_string(picture.cspace->rows) + " rows and " + std::to_string(picture.cspace->states.size()) + " states, not n·n");
     }
-    for (std::uint8_t s : picture.cspace->state) {
-      if (s > ArmCSpaceImage::blocked) {
+    for (std::uint8_t s : picture.cspace->states) {
+      if (s > CellGrid::blocked) {
         throw std::invalid_argument("arm picture: C-space image has a cell of state " + std::to_string(s) +
                                     " (0 not evaluated, 1 free, 2 blocked)");
       }
@@ -285,7 +277,7 @@ void draw_surroundings(svg::Drawing& d, const ArmProblem& problem) {
   if (!problem.points.empty()) {
     Points dots;
     for (const Eigen::Vector2d& p : problem.points) dots.push_back(point(p));
-    const svg::Style s = filled(kObstacleFill, 1.0, kObstacleEdge, 0.8);
+    const svg::Style s = filled(theme::obstacle_fill, 1.0, theme::obstacle_edge, 0.8);
     d.points(dots, 3.5, s);
     d.legend("obstacle points (" + std::to_string(dots.size()) + ")", s, svg::Swatch::dot);
   }
@@ -298,14 +290,14 @@ void draw_surroundings(svg::Drawing& d, const ArmProblem& problem) {
       const double a = two_pi * i / kSides;
       circle.push_back({reach * std::cos(a), reach * std::sin(a)});
     }
-    const svg::Style s = stroked("#9a9a9a", 1, "5 4");
+    const svg::Style s = stroked(theme::reach, 1, "5 4");
     d.polygon({circle}, s);
     d.legend("reach", s, svg::Swatch::line);
   }
 }
 
 void draw_base(svg::Drawing& d) {
-  const svg::Style s = filled("#222", 1.0, "#fff", 1.5);
+  const svg::Style s = filled(theme::ink, 1.0, "#fff", 1.5);
   d.points({{0, 0}}, 5.5, s);
   d.legend("base", s, svg::Swatch::dot);
 }
@@ -353,7 +345,7 @@ void draw_tip_path(svg::Drawing& d, const Arm& arm, const std::vector<JointAngle
   for (std::size_t i : spread_indices(motion.size(), kMostTraceVertices)) {
     tip.push_back(point(joint_positions(arm, motion[i]).back()));
   }
-  const svg::Style s = stroked("#555", 1.3, "2 3");
+  const svg::Style s = stroked(theme::trace, 1.3, "2 3");
   d.polyline(tip, s);
   d.legend("end-effector path", s, svg::Swatch::line);
 }
@@ -365,7 +357,7 @@ void draw_tip_path(svg::Drawing& d, const Arm& arm, const std::vector<JointAngle
 void draw_moving_arm(svg::Drawing& d, const Arm& arm, const std::vector<JointAngles>& unwrapped_motion,
                      const Timeline& t) {
   const std::vector<Eigen::Vector2d> zero = joint_positions(arm, JointAngles(arm.joints(), 0.0));
-  const LinkLook look = link_look(arm, kArmFill, kArmEdge, 1.0);
+  const LinkLook look = link_look(arm, theme::arm_fill, theme::arm_edge, 1.0);
   const std::string timing = seconds_attribute(t.seconds) + " repeatCount=\"indefinite\" " + key_times_attribute(t.key_times);
   for (std::size_t i = 0; i < arm.joints(); ++i) {
     const svg::Point2 centre = d.to_screen(point(zero[i]));
@@ -385,7 +377,7 @@ void draw_moving_arm(svg::Drawing& d, const Arm& arm, const std::vector<JointAng
     draw_link(d, arm, zero, i, look);
     if (i > 0) d.points({point(zero[i])}, 3, look.joint);
   }
-  d.points({point(zero.back())}, 3.5, filled(kArmEdge, 1.0, "#fff", 1));  // the end effector
+  d.points({point(zero.back())}, 3.5, filled(theme::arm_edge, 1.0, "#fff", 1));  // the end effector
   for (std::size_t i = 0; i < arm.joints(); ++i) d.end_group();
 
   // The legend stays off where the arm will pass (what moves marks no room as taken).
@@ -466,8 +458,8 @@ std::vector<std::array<double, 2>> two_joints(const std::vector<JointAngles>& un
 // The cells as rectangles: a horizontal run of equal state is one rectangle, and so is the same
 // run repeated in the rows above it; the rectangles of a state are one path (a 360 × 360 image
 // stays small, and cells of one state show no seams between them).
-void draw_cells(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image) {
-  const std::size_t n = image.cells_per_axis;
+void draw_cells(svg::Drawing& d, const Layout& l, const CellGrid& image) {
+  const std::size_t n = image.columns;
   const double cell = two_pi / static_cast<double>(n);
   // Extended index e = 0..n: cell e mod n, clipped to [0, 2π], so cell 0 shows at both edges.
   auto extent = [&](std::size_t e) {
@@ -475,7 +467,7 @@ void draw_cells(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image) {
                                  std::min(two_pi, (static_cast<double>(e) + 0.5) * cell)};
   };
   std::array<std::size_t, 3> cells{0, 0, 0};
-  for (std::uint8_t s : image.state) ++cells[s];
+  for (std::uint8_t s : image.states) ++cells[s];
 
   struct Block {
     std::size_t begin, end;  // extended columns, inclusive
@@ -490,7 +482,7 @@ void draw_cells(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image) {
   };
   std::vector<Block> open, next;  // ordered by begin; the runs of a row partition it
   for (std::size_t row = 0; row <= n; ++row) {
-    const auto state_at = [&](std::size_t e) { return image.state[(e % n) + (row % n) * n]; };
+    const auto state_at = [&](std::size_t e) { return image.states[(e % n) + (row % n) * n]; };
     next.clear();
     std::size_t above = 0;  // the first open block that may continue
     std::size_t begin = 0;
@@ -511,11 +503,12 @@ void draw_cells(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image) {
   }
   for (const Block& b : open) close(b, n);
 
-  if (cells[ArmCSpaceImage::not_evaluated] > 0) {
+  if (cells[CellGrid::not_evaluated] > 0) {
     // Lazy search leaves most cells unknown: hatched, so they are not mistaken for free ones.
     d.raw(std::string("<defs><pattern id=\"") + kHatchId +
           "\" width=\"6\" height=\"6\" patternUnits=\"userSpaceOnUse\" patternTransform=\"rotate(45)\">"
-          "<rect width=\"6\" height=\"6\" fill=\"#fff\"/><path d=\"M0 0V6\" stroke=\"#c8c8c8\" stroke-width=\"1.5\"/>"
+          "<rect width=\"6\" height=\"6\" fill=\"#fff\"/><path d=\"M0 0V6\" stroke=\"" + theme::not_evaluated_hatch +
+          "\" stroke-width=\"1.5\"/>"
           "</pattern></defs>");
   }
   d.begin_group("class=\"cspace-cells\"");
@@ -525,9 +518,9 @@ void draw_cells(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image) {
     const char* label;
   };
   const Kind kinds[] = {
-      {ArmCSpaceImage::free, filled(kFreeFill, 1.0, "none", 0), "free"},
-      {ArmCSpaceImage::blocked, filled(kObstacleFill, 1.0, "none", 0), "blocked"},
-      {ArmCSpaceImage::not_evaluated, filled(std::string("url(#") + kHatchId + ")", 1.0, "none", 0), "not evaluated"},
+      {CellGrid::free, filled(theme::free_tints[0].fill, 1.0, "none", 0), "free"},
+      {CellGrid::blocked, filled(theme::obstacle_fill, 1.0, "none", 0), "blocked"},
+      {CellGrid::not_evaluated, filled(std::string("url(#") + kHatchId + ")", 1.0, "none", 0), "not evaluated"},
   };
   for (const Kind& k : kinds) {
     if (rects[k.state].empty()) continue;
@@ -543,7 +536,7 @@ void draw_cells(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image) {
 
 void draw_panel_frame(svg::Drawing& d, const Layout& l) {
   const svg::Point2 a = l.on_panel(0, 0), b = l.on_panel(two_pi, two_pi);
-  d.polygon({{{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}}}, stroked("#222", 1));
+  d.polygon({{{a.x, a.y}, {b.x, a.y}, {b.x, b.y}, {a.x, b.y}}}, stroked(theme::ink, 1));
   static const char* const kTicks[] = {"0", "π/2", "π", "3π/2", "2π"};
   const double tick = 5 * l.px, size = 12;
   std::vector<std::pair<svg::Point2, svg::Point2>> marks;
@@ -555,7 +548,7 @@ void draw_panel_frame(svg::Drawing& d, const Layout& l) {
     centred_text(d, l, {x.x, x.y - tick - 14 * l.px}, kTicks[k], size);
     d.text({y.x - tick - (4 + text_width_px(kTicks[k], size)) * l.px, y.y - 0.35 * size * l.px}, kTicks[k], size);
   }
-  d.segments(marks, stroked("#222", 1));
+  d.segments(marks, stroked(theme::ink, 1));
   centred_text(d, l, {(a.x + b.x) / 2, a.y - tick - 32 * l.px}, "θ1 (joint 1)", 13);
   // θ2's name between its two top tick labels, right-aligned with them.
   const svg::Point2 name = l.on_panel(0, 7 * two_pi / 8);
@@ -564,7 +557,7 @@ void draw_panel_frame(svg::Drawing& d, const Layout& l) {
 
 // The path on the panel, split at the seams, with its start and goal; with `timeline`, a ring moves
 // along it in step with the arm (the same period and keyTimes, and a jump where it crosses a seam).
-void draw_panel(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image,
+void draw_panel(svg::Drawing& d, const Layout& l, const CellGrid& image,
                 const std::vector<JointAngles>& unwrapped_motion, const Timeline* timeline) {
   draw_cells(d, l, image);
   draw_panel_frame(d, l);
@@ -574,7 +567,7 @@ void draw_panel(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image,
   std::iota(all.begin(), all.end(), std::size_t{0});
   const std::vector<PanelPiece> pieces =
       panel_pieces(two_joints(unwrapped_motion, all), std::vector<double>(all.size(), 0.0));
-  const svg::Style path_style = stroked(kArmFill, 2.5);
+  const svg::Style path_style = stroked(theme::arm_fill, 2.5);
   d.begin_group("class=\"cspace-path\"");
   for (const PanelPiece& piece : pieces) {
     Points line;
@@ -586,8 +579,8 @@ void draw_panel(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image,
 
   const PanelVertex& first = pieces.front().front();
   const PanelVertex& last = pieces.back().back();
-  d.points({l.on_panel(first.theta1, first.theta2)}, 5, filled(kStartColour, 1.0, "#fff", 1.5));
-  d.points({l.on_panel(last.theta1, last.theta2)}, 5, filled(kGoalColour, 1.0, "#fff", 1.5));
+  d.points({l.on_panel(first.theta1, first.theta2)}, 5, filled(theme::arm_start, 1.0, "#fff", 1.5));
+  d.points({l.on_panel(last.theta1, last.theta2)}, 5, filled(theme::arm_goal, 1.0, "#fff", 1.5));
 
   if (!timeline) return;
   // A ring, so that the start and goal marks show through it when it rests on them.
@@ -608,19 +601,23 @@ void draw_panel(svg::Drawing& d, const Layout& l, const ArmCSpaceImage& image,
   const svg::Point2 at = d.to_screen(l.on_panel(first.theta1, first.theta2));
   const std::string timing = seconds_attribute(timeline->seconds) + " repeatCount=\"indefinite\" keyTimes=\"" + times + "\"";
   d.raw("<circle class=\"cspace-dot\" cx=\"" + svg::format_number(at.x) + "\" cy=\"" + svg::format_number(at.y) +
-        "\" r=\"7.5\" fill=\"none\" stroke=\"" + kArmEdge + "\" stroke-width=\"2.5\">\n" +
+        "\" r=\"7.5\" fill=\"none\" stroke=\"" + theme::arm_edge + "\" stroke-width=\"2.5\">\n" +
         "<animate attributeName=\"cx\" " + timing + " values=\"" + xs + "\"/>\n" +
         "<animate attributeName=\"cy\" " + timing + " values=\"" + ys + "\"/>\n</circle>");
-  d.legend("the arm's configuration now", stroked(kArmEdge, 2.5), svg::Swatch::dot);
+  d.legend("the arm's configuration now", stroked(theme::arm_edge, 2.5), svg::Swatch::dot);
 }
 
 // ---------------------------------------------------------------------------------------------
 
+// From theme::arm_start at t = 0 to theme::arm_goal at t = 1, channel by channel ("#rrggbb").
 std::string hex_colour(double t) {
-  // From kStartColour (31, 119, 180) to kGoalColour (214, 39, 40).
-  const auto mix = [t](int a, int b) { return static_cast<int>(std::lround(a + (b - a) * std::clamp(t, 0.0, 1.0))); };
+  const auto channel = [](const char* colour, int i) { return static_cast<int>(std::strtol(std::string(colour + 1 + 2 * i, 2).c_str(), nullptr, 16)); };
+  const auto mix = [&](int i) {
+    const int a = channel(theme::arm_start, i), b = channel(theme::arm_goal, i);
+    return static_cast<int>(std::lround(a + (b - a) * std::clamp(t, 0.0, 1.0)));
+  };
   char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", mix(0x1f, 0xd6), mix(0x77, 0x27), mix(0xb4, 0x28));
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", mix(0), mix(1), mix(2));
   return buffer;
 }
 
@@ -642,8 +639,8 @@ svg::Drawing animation_drawing(const ArmPlanPicture& picture) {
   const std::vector<JointAngles> continuous = unwrapped(picture.motion);
   if (!picture.motion.empty()) {
     draw_tip_path(d, problem.arm, picture.motion);
-    const LinkLook start = link_look(problem.arm, kStartColour, kStartEdge, 0.35);
-    const LinkLook goal = link_look(problem.arm, kGoalColour, kGoalEdge, 0.35);
+    const LinkLook start = link_look(problem.arm, theme::arm_start, theme::arm_start_edge, 0.35);
+    const LinkLook goal = link_look(problem.arm, theme::arm_goal, theme::arm_goal_edge, 0.35);
     draw_configuration(d, problem.arm, picture.motion.front(), start, false);
     draw_configuration(d, problem.arm, picture.motion.back(), goal, false);
     d.legend("start (ghost)", start.body);
@@ -656,7 +653,7 @@ svg::Drawing animation_drawing(const ArmPlanPicture& picture) {
     draw_moving_arm(d, problem.arm, continuous, t);
     char period[32];
     std::snprintf(period, sizeof period, "%.1f", t.seconds);
-    d.legend(std::string("arm, moving (") + period + " s loop)", link_look(problem.arm, kArmFill, kArmEdge, 1).body);
+    d.legend(std::string("arm, moving (") + period + " s loop)", link_look(problem.arm, theme::arm_fill, theme::arm_edge, 1).body);
   }
   if (picture.cspace) draw_panel(d, l, *picture.cspace, continuous, picture.motion.empty() ? nullptr : &t);
   return d;
@@ -686,8 +683,8 @@ svg::Drawing strobe_drawing(const ArmPlanPicture& picture, std::size_t every_kth
       d.end_group();
       ++drawn;
     }
-    const LinkLook start = link_look(arm, kStartColour, kStartEdge, 1);
-    const LinkLook goal = link_look(arm, kGoalColour, kGoalEdge, 1);
+    const LinkLook start = link_look(arm, theme::arm_start, theme::arm_start_edge, 1);
+    const LinkLook goal = link_look(arm, theme::arm_goal, theme::arm_goal_edge, 1);
     if (last > 0) {  // a motion of one configuration is its own goal
       d.begin_group("class=\"strobe-configuration strobe-goal\"");
       draw_configuration(d, arm, motion[last], goal, true);
@@ -715,6 +712,24 @@ std::string arm_animation_svg(const ArmPlanPicture& picture) { return animation_
 
 std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth) {
   return strobe_drawing(picture, every_kth).str();
+}
+
+svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>& report, const ArmPictureOptions& options) {
+  ArmPlanPicture picture;
+  picture.problem = &problem;
+  picture.title = options.title;
+  const double step = options.degrees_per_frame * two_pi / 360;
+  for (std::size_t k = 0; k + 1 < report.path.size(); ++k) {
+    const auto samples = motion_samples(report.path[k], report.path[k + 1], step);
+    picture.motion.insert(picture.motion.end(), samples.begin() + (k == 0 ? 0 : 1), samples.end());
+  }
+  if (report.path.size() == 1) picture.motion = report.path;
+  if (report.cells && problem.arm.joints() == 2) picture.cspace = *report.cells;
+  if (const FactValue* torus = report.facts.find("grid.torus"))
+    if (const bool* flag = std::get_if<bool>(torus)) picture.torus = *flag;
+  if (options.kind == ArmPictureOptions::Kind::animation) return animation_drawing(picture);
+  const std::size_t about_a_dozen = std::max<std::size_t>(1, picture.motion.size() / 12);
+  return strobe_drawing(picture, options.every_kth ? options.every_kth : about_a_dozen);
 }
 
 void write_arm_animation_svg(const std::string& path, const ArmPlanPicture& picture) {

@@ -1,10 +1,13 @@
 #pragma once
-// Pictures of a planar arm's plan (geometry/svg.hpp does the drawing): the arm moving along its
-// path as an SVG animation (SMIL only, no script, so it plays in any browser and a file viewer
-// still shows a sensible picture), a "strobe" with every k-th configuration drawn at once (seed
-// 001's figure), and for two joints the torus C-space θ1 × θ2 beside the workspace with the path
-// on it (seed 000's Figure 2).
+// Pictures of a planar arm's plan (draw/svg.hpp does the drawing, draw/theme.hpp gives the
+// colours): the arm moving along its path as an SVG animation (SMIL only, no script, so it plays
+// in any browser and a file viewer still shows a sensible picture), a "strobe" with every k-th
+// configuration drawn at once (seed 001's figure), and for two joints the torus C-space θ1 × θ2
+// beside the workspace with the path on it (seed 000's Figure 2). draw_plan makes either from any
+// arm planner's report.
+#include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
+#include <polyplan/roadmaps/plan_report.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -14,22 +17,16 @@
 
 namespace polyplan {
 
-// The two-joint C-space evaluated on a grid. Cell k of an axis is the angle k·2π/n, so a cell is
-// drawn centred on its angle and cell 0 straddles the seam (half at 0, half at 2π).
-struct ArmCSpaceImage {
-  static constexpr std::uint8_t not_evaluated = 0, free = 1, blocked = 2;
-  std::size_t cells_per_axis = 0;   // n
-  std::vector<std::uint8_t> state;  // n·n, index i + j·n (i: θ1 cell, j: θ2 cell)
-};
-
 struct ArmPlanPicture {
   const ArmProblem* problem = nullptr;  // the arm, its obstacles and obstacle points
   // The configurations along the path, densely, start first and goal last. Between consecutive
   // ones every joint turns the short way round (as the planners interpolate); an empty motion
   // draws the world alone, marked "no path".
   std::vector<JointAngles> motion;
-  // Two joints only: drawn as a second panel, with the path on it.
-  std::optional<ArmCSpaceImage> cspace;
+  // Two joints only: the C-space grid θ1 × θ2 drawn as a second panel, with the path on it.
+  // Square, cell k of an axis centred on the angle k·2π/n (so cell 0 straddles the seam, half at
+  // 0 and half at 2π); the grid's x0, y0 and cell sizes are not read.
+  std::optional<CellGrid> cspace;
   std::string title;  // e.g. "two_link_points.json · hard · torus · 5°"
   // How long the motion takes in the animation; 0: one second per radian of path length (the
   // sum of the joints' turns), at least 2 s and at most 60 s. The animation also rests 0.5 s at
@@ -57,6 +54,20 @@ std::string arm_animation_svg(const ArmPlanPicture& picture);
 // translucent; and the C-space panel with the path when the picture has one.
 // Throws std::invalid_argument as arm_animation_svg does, and when every_kth is 0.
 std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth);
+
+// Any arm planner's report as a picture: the path's motions drawn densely (every joint at most
+// `degrees_per_frame` between frames, as the planners interpolate: each joint the short way), the
+// report's cells as the C-space panel (two joints), the panel labelled a torus unless the report's
+// fact grid.torus is false. The animation, or the strobe of every k-th frame (k = every_kth, or
+// about a dozen configurations when 0).
+struct ArmPictureOptions {
+  enum class Kind { animation, strobe };
+  Kind kind = Kind::animation;
+  std::string title;
+  std::size_t every_kth = 0;
+  double degrees_per_frame = 1;
+};
+svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>& report, const ArmPictureOptions& options);
 
 // The same, written to `path`; std::runtime_error naming the file when it cannot be written.
 void write_arm_animation_svg(const std::string& path, const ArmPlanPicture& picture);

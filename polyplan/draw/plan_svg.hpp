@@ -1,19 +1,30 @@
 #pragma once
-// Roadmaps and search traces in pictures (on top of geometry/cspace_svg.hpp's world and C-space).
+// Any planner's answers for a polygon world in one picture, drawn from the reports alone
+// (roadmaps/plan_report.hpp): a new planner gets its picture without drawing code of its own.
 #include <polyplan/draw/svg.hpp>
-#include <polyplan/geometry/rational.hpp>
-#include <polyplan/search/roadmap.hpp>
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/roadmaps/plan_report.hpp>
 
 #include <string>
 #include <vector>
 
 namespace polyplan {
 
-// The roadmap's edges among its first `vertex_count` vertices (later ones are query slots), thin
-// and translucent so the path on top stays readable, and its vertices as dots.
-void draw_roadmap(svg::Drawing& drawing, const Roadmap& roadmap, std::size_t vertex_count);
+// The world and its C-space; the cells (when a report carries them: the free space is then shown
+// by the cells); the roadmap or tree (the first report's that carries one); where the searches
+// expanded; every path found, in the theme's palette, labelled `labels[i]` (default "path" for
+// one report, "path i" for several). Reports made with QueryOptions::record carry the graph,
+// the cells and the expanded configurations; others draw their paths only.
+svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactPoint>>& reports,
+                       const std::vector<std::string>& labels = {});
 
-// Points such as the vertices a search expanded, as small dots with a legend entry.
+// The pieces, for pictures of one's own (examples/search_comparison draws six searches' paths
+// over one roadmap):
+// a roadmap or tree, thin and translucent so the paths on top stay readable, vertices as dots;
+void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph);
+// cells as runs of free and blocked boxes, and their centres when there are few enough to see;
+void draw_cells(svg::Drawing& drawing, const CellGrid& cells);
+// points such as the vertices a search expanded, as small dots with a legend entry.
 void draw_points(svg::Drawing& drawing, const std::vector<ExactPoint>& points, const std::string& label);
 
 }  // namespace polyplan

@@ -1,5 +1,7 @@
 #include <polyplan/draw/world_svg.hpp>
 
+#include <polyplan/draw/theme.hpp>
+
 #include <algorithm>
 #include <cstddef>
 #include <string>
@@ -36,38 +38,29 @@ svg::Box2 to_box(const Bounds& b) {
 
 using svg::filled;
 
-// Colours: free space in pale tints (one per component, so disconnected regions are told apart),
-// C-obstacles translucent orange over which the solid blue-grey obstacles sit, starts green, goals red.
-struct Tint {
-  const char* fill;
-  const char* edge;
-};
-constexpr Tint kFreeTints[] = {{"#e3f1e5", "#9cc7a4"}, {"#e2ebf7", "#9db4d6"}, {"#f6eedb", "#d1b682"},
-                               {"#efe4f3", "#bf9ccb"}, {"#dff1f0", "#8cc2bd"}, {"#f3efe0", "#c2b88c"}};
-
 const svg::Style& bounds_style() {
   static const svg::Style s = [] {
     svg::Style f;
-    f.stroke = "#222";
+    f.stroke = theme::bounds;
     f.stroke_px = 1.2;
     return f;
   }();
   return s;
 }
 const svg::Style& walls_style() {
-  static const svg::Style s = filled("#8c8c8c", 0.35, "none", 0);
+  static const svg::Style s = filled(theme::walls_fill, 0.35, "none", 0);
   return s;
 }
 const svg::Style& cobstacle_style() {
-  static const svg::Style s = filled("#f4a259", 0.55, "#c8691c", 1.2);
+  static const svg::Style s = filled(theme::cobstacle_fill, 0.55, theme::cobstacle_edge, 1.2);
   return s;
 }
 const svg::Style& obstacle_style() {
-  static const svg::Style s = filled("#51606f", 1.0, "#2b3440", 1.0);
+  static const svg::Style s = filled(theme::obstacle_fill, 1.0, theme::obstacle_edge, 1.0);
   return s;
 }
 const svg::Style& robot_style() {
-  static const svg::Style s = filled("#2ca02c", 0.18, "#1b6e1b", 1.5);
+  static const svg::Style s = filled(theme::robot_fill, 0.18, theme::robot_edge, 1.5);
   return s;
 }
 
@@ -109,8 +102,8 @@ void draw_queries(svg::Drawing& drawing, const World& world) {
     starts.push_back(point(q.start));
     goals.push_back(point(q.goal));
   }
-  const svg::Style start = filled("#2ca02c", 1.0, "#fff", 1.5);
-  const svg::Style goal = filled("#d62728", 1.0, "#fff", 1.5);
+  const svg::Style start = filled(theme::start, 1.0, "#fff", 1.5);
+  const svg::Style goal = filled(theme::goal, 1.0, "#fff", 1.5);
   drawing.points(starts, 5.0, start);
   drawing.points(goals, 5.0, goal);
   // With a few queries, say which start goes with which goal ("g0,1" where goals coincide).
@@ -135,6 +128,34 @@ void draw_queries(svg::Drawing& drawing, const World& world) {
   }
   drawing.legend(world.queries.size() == 1 ? "start" : "starts", start, svg::Swatch::dot);
   drawing.legend(world.queries.size() == 1 ? "goal" : "goals", goal, svg::Swatch::dot);
+}
+
+// The free components in pale tints; the largest (the unbounded one first) gets the first tint,
+// the legend's.
+void draw_free_space(svg::Drawing& drawing, const CSpace& cspace) {
+  const auto& components = cspace.free_components();
+  std::vector<std::size_t> order(components.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto& x = components[a].area;
+    const auto& y = components[b].area;
+    if (!x || !y) return !x && y;
+    return *x > *y;
+  });
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const FreeComponent& c = components[order[k]];
+    const theme::Tint& tint = theme::free_tints[k % std::size(theme::free_tints)];
+    Rings r;
+    // The unbounded component (no bounds) covers the whole picture except its holes.
+    r.push_back(c.outer.empty() ? box_ring(drawing.view()) : ring(c.outer));
+    for (const Ring& h : c.holes) r.push_back(ring(h));
+    drawing.polygon(r, filled(tint.fill, 1.0, c.outer.empty() ? "none" : tint.edge, 0.8));
+  }
+  if (!components.empty()) {
+    const std::size_t n = components.size();
+    drawing.legend("free space (" + std::to_string(n) + (n == 1 ? " component)" : " components)"),
+                   filled(theme::free_tints[0].fill, 1.0, theme::free_tints[0].edge, 0.8));
+  }
 }
 
 }  // namespace
@@ -173,34 +194,9 @@ void draw_world(svg::Drawing& drawing, const World& world) {
   draw_queries(drawing, world);
 }
 
-void draw_cspace(svg::Drawing& drawing, const CSpace& cspace) {
+void draw_cspace(svg::Drawing& drawing, const CSpace& cspace, FreeSpace free_space) {
   const World& world = cspace.world();
-
-  const auto& components = cspace.free_components();
-  // The largest component (the unbounded one first) gets the first tint, the legend's.
-  std::vector<std::size_t> order(components.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto& x = components[a].area;
-    const auto& y = components[b].area;
-    if (!x || !y) return !x && y;
-    return *x > *y;
-  });
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const FreeComponent& c = components[order[k]];
-    const Tint& tint = kFreeTints[k % std::size(kFreeTints)];
-    Rings r;
-    // The unbounded component (no bounds) covers the whole picture except its holes.
-    r.push_back(c.outer.empty() ? box_ring(drawing.view()) : ring(c.outer));
-    for (const Ring& h : c.holes) r.push_back(ring(h));
-    drawing.polygon(r, filled(tint.fill, 1.0, c.outer.empty() ? "none" : tint.edge, 0.8));
-  }
-  if (!components.empty()) {
-    const std::size_t n = components.size();
-    drawing.legend("free space (" + std::to_string(n) + (n == 1 ? " component)" : " components)"),
-                   filled(kFreeTints[0].fill, 1.0, kFreeTints[0].edge, 0.8));
-  }
-
+  if (free_space == FreeSpace::filled) draw_free_space(drawing, cspace);
   draw_bounds(drawing, world);
 
   if (world.bounds && !world.robot.is_point()) {

@@ -1,8 +1,10 @@
 #pragma once
-// Pictures of worlds and their C-spaces (geometry/svg.hpp does the drawing; this file decides
-// what a world looks like). Exact coordinates are rounded to double only here, for the eye.
+// Pictures of worlds and their C-spaces (draw/svg.hpp does the drawing; this file decides what a
+// world looks like, in draw/theme.hpp's colours). Exact coordinates are rounded to double only
+// here, for the eye.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/draw/svg.hpp>
+#include <polyplan/draw/theme.hpp>
 
 #include <string>
 #include <vector>
@@ -18,13 +20,15 @@ svg::Box2 view_box(const World& world, const CSpace& cspace);
 void draw_world(svg::Drawing& drawing, const World& world);
 
 // In this order, each with a legend entry: the free components (pale fills, one tint per component
-// when there are several, holes shown), the bounds, the walls (when the robot is not a point), the
-// C-obstacles, the obstacles, the robot at the first start, the starts and goals.
-void draw_cspace(svg::Drawing& drawing, const CSpace& cspace);
+// when there are several, holes shown; left out with FreeSpace::unfilled, when something drawn
+// before shows the free space already), the bounds, the walls (when the robot is not a point),
+// the C-obstacles, the obstacles, the robot at the first start, the starts and goals.
+enum class FreeSpace { filled, unfilled };
+void draw_cspace(svg::Drawing& drawing, const CSpace& cspace, FreeSpace free_space = FreeSpace::filled);
 
 // The path as a line with its vertices as small dots; nothing for an empty path.
 void draw_path(svg::Drawing& drawing, const std::vector<ExactPoint>& path, const std::string& label,
-               const std::string& colour = "#d62728");
+               const std::string& colour = theme::path_colour(0));
 
 // The C-space picture (and a path on top, if given) written to `file`.
 void write_cspace_svg(const CSpace& cspace, const std::string& file, const std::vector<ExactPoint>* path = nullptr);

@@ -223,6 +223,12 @@ std::optional<std::string> CSpace::collision_at(const ExactPoint& p) const {
   return std::string("the robot fits there only exactly: the free space has zero width (obstacles touch around it)");
 }
 
+std::optional<std::string> CSpace::query_not_free(const Query& query) const {
+  for (const auto& [what, point] : {std::pair{"start", &query.start}, std::pair{"goal", &query.goal}})
+    if (auto why = collision_at(*point)) return std::string("the ") + what + " " + to_string(*point) + " is not free: " + *why;
+  return std::nullopt;
+}
+
 void CSpace::require_free_queries() const {
   for (const Query& q : impl_->world.queries)
     for (const auto& [what, point] : {std::pair{"start", &q.start}, std::pair{"goal", &q.goal}})

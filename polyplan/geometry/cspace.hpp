@@ -60,6 +60,10 @@ class CSpace {
   // bounds"); nullopt when p is free or in contact.
   std::optional<std::string> collision_at(const ExactPoint& p) const;
 
+  // "the start [1, 2] is not free: it is inside obstacles[0]" for the first of the query's start
+  // and goal that is not free; nullopt when both are (contact is free). Planners' why_not.
+  std::optional<std::string> query_not_free(const Query& query) const;
+
   // Throws InputError (naming the world file, the query and the obstacle hit) when a start or
   // goal of the world's queries is not free.
   void require_free_queries() const;

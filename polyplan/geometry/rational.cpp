@@ -93,6 +93,8 @@ std::optional<Rational> parse_rational(std::string_view text, std::string* why) 
 
 std::string to_string(const Rational& value) { return value.get_str(10); }
 
+std::string to_string(const ExactPoint& point) { return "[" + to_string(point.x) + ", " + to_string(point.y) + "]"; }
+
 double to_double(const Rational& value) {
   mpfr_t rounded;
   mpfr_init2(rounded, 53);

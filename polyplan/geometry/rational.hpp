@@ -25,6 +25,9 @@ std::optional<Rational> parse_rational(std::string_view text, std::string* why =
 // "p/q" in lowest terms, or "n" for an integer: the inverse of parse_rational.
 std::string to_string(const Rational& value);
 
+// "[p/q, r/s]": a point as messages name it.
+std::string to_string(const ExactPoint& point);
+
 // The double nearest to the value (GMP's own get_d truncates: 21/5 would print 4.199999999999999).
 double to_double(const Rational& value);
 

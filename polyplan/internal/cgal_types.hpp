@@ -92,7 +92,7 @@ inline PolygonWithHoles to_exact(const PolygonH& p) {
   return result;
 }
 
-inline std::string to_text(const ExactPoint& p) { return "[" + to_string(p.x) + ", " + to_string(p.y) + "]"; }
+inline std::string to_text(const ExactPoint& p) { return to_string(p); }
 inline std::string to_text(const Point& p) { return to_text(to_exact(p)); }
 
 }  // namespace polyplan::detail

@@ -1,6 +1,8 @@
 #include <polyplan/roadmaps/raster_planner.hpp>
 
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/roadmaps/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
 
 #include <cmath>
@@ -24,14 +26,6 @@ std::vector<std::uint8_t> free_cells_of(const Raster& r) {
   return free;
 }
 
-const Raster& checked_against(const Raster& raster, const CSpace& cspace) {
-  const auto& b = cspace.world().bounds;
-  if (!b || b->xmin != raster.bounds.xmin || b->ymin != raster.bounds.ymin || b->xmax != raster.bounds.xmax ||
-      b->ymax != raster.bounds.ymax || raster.blocked.size() != raster.cells_per_axis * raster.cells_per_axis)
-    throw std::invalid_argument("RasterPlanner: the raster was not made from this C-space's world (bounds differ)");
-  return raster;
-}
-
 // The tightest admissible heuristic: octile is exact on an empty 8-connected grid of square cells
 // but overestimates when cells are not square (a diagonal then costs less than max + 0.414 min),
 // where the Euclidean distance is the safe choice; 4-connected paths cost the sum of the axes.
@@ -40,27 +34,79 @@ GridMetric metric_for(const Raster& r, Connectivity connectivity) {
   return cell_width(r) == cell_height(r) ? GridMetric::octile : GridMetric::euclidean;
 }
 
-std::string text_of(const ExactPoint& p) { return "[" + to_string(p.x) + ", " + to_string(p.y) + "]"; }
-
 // Appends p unless it repeats the last point (a start that is its cell's centre): a zero-length
 // segment says nothing.
 void append(std::vector<ExactPoint>& path, const ExactPoint& p) {
   if (path.empty() || !(path.back() == p)) path.push_back(p);
 }
 
-double euclidean_length(const std::vector<ExactPoint>& path) {
-  double length = 0;
-  for (std::size_t i = 1; i < path.size(); ++i)
-    length += std::hypot(to_double(path[i].x - path[i - 1].x), to_double(path[i].y - path[i - 1].y));
-  return length;
+
+// Moves of the grid graph between free cells, each counted once (the graph is undirected).
+std::size_t move_count(const GridGraph& g) {
+  std::size_t twice = 0;
+  for (GridCell c = 0; c < g.cell_count(); ++c)
+    if (g.is_free(c))
+      for (auto [e, end] = out_edges(c, g); e != end; ++e) ++twice;
+  return twice / 2;
 }
+
+std::string cell_text(std::size_t x, std::size_t y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
 
 }  // namespace
 
-RasterPlanner::RasterPlanner(const Raster& raster, const CSpace& cspace, Connectivity connectivity)
-    : raster_(&checked_against(raster, cspace)),
-      cspace_(&cspace),
-      graph_(axes_of(raster), connectivity, StepCost::euclidean, free_cells_of(raster)) {}
+struct RasterPlanner::Impl {
+  const CSpace* cspace;
+  RasterOptions options;
+  Raster raster;
+  GridGraph graph;
+  std::size_t free_cells = 0, moves = 0;
+  double build_seconds = 0;
+  std::shared_ptr<const CellGrid> picture;  // made for the first query that records
+
+  Impl(const CSpace& c, const RasterOptions& o)
+      : cspace(&c),
+        options(o),
+        raster(rasterize(c, o.resolution)),
+        graph(axes_of(raster), o.connectivity, StepCost::euclidean, free_cells_of(raster)),
+        free_cells(raster.blocked.size() - raster.blocked_count()),
+        moves(move_count(graph)) {}
+
+  std::shared_ptr<const CellGrid> cells() {
+    if (picture) return picture;
+    auto grid = std::make_shared<CellGrid>();
+    grid->columns = grid->rows = raster.cells_per_axis;
+    grid->x0 = to_double(raster.bounds.xmin);
+    grid->y0 = to_double(raster.bounds.ymin);
+    grid->cell_width = to_double(cell_width(raster));
+    grid->cell_height = to_double(cell_height(raster));
+    grid->states.resize(raster.blocked.size());
+    for (std::size_t i = 0; i < raster.blocked.size(); ++i)
+      grid->states[i] = raster.blocked[i] ? CellGrid::blocked : CellGrid::free;
+    picture = std::move(grid);
+    return picture;
+  }
+
+  void record_facts(Facts& facts) const {
+    facts.set("roadmap.kind", "raster");
+    facts.set("roadmap.vertices", free_cells);
+    facts.set("roadmap.edges", moves);
+    facts.set("roadmap.seconds", build_seconds);
+    facts.set("raster.cells_per_axis", raster.cells_per_axis);
+    facts.set("raster.blocked_cells", raster.blocked_count());
+    facts.set("search.algorithm", to_string(options.search.algorithm));
+  }
+};
+
+RasterPlanner::RasterPlanner(const CSpace& cspace, RasterOptions options) {
+  const Stopwatch building;
+  impl_ = std::make_unique<Impl>(cspace, options);
+  impl_->build_seconds = building.seconds();
+}
+
+RasterPlanner::~RasterPlanner() = default;
+
+const Raster& RasterPlanner::raster() const { return impl_->raster; }
+const GridGraph& RasterPlanner::graph() const { return impl_->graph; }
 
 // An exact search in square rings of cells around p's cell (clamped into the grid), rather than a
 // KD-tree in doubles: the distances are compared exactly, so ties — frequent, since starts are
@@ -68,7 +114,7 @@ RasterPlanner::RasterPlanner(const Raster& raster, const CSpace& cspace, Connect
 // rounding, and the grid's arithmetic gives the neighbourhood with no index to build. A cell in
 // ring r has a centre at least (r - 1/2) cell sides from p along one axis, which stops the search.
 std::optional<std::pair<std::size_t, std::size_t>> RasterPlanner::nearest_free_cell(const ExactPoint& p) const {
-  const Raster& r = *raster_;
+  const Raster& r = impl_->raster;
   const long n = static_cast<long>(r.cells_per_axis);
   const Rational w = cell_width(r), h = cell_height(r);
   const Rational u = (p.x - r.bounds.xmin) / w, v = (p.y - r.bounds.ymin) / h;  // grid coordinates
@@ -113,58 +159,91 @@ std::optional<std::pair<std::size_t, std::size_t>> RasterPlanner::nearest_free_c
   return std::pair<std::size_t, std::size_t>(best->first, best->second);
 }
 
-RasterPlan RasterPlanner::plan(const Query& query, const SearchOptions& options) const {
-  RasterPlan plan;
-  for (const auto& [what, point] : {std::pair{"start", &query.start}, std::pair{"goal", &query.goal}})
-    if (auto why = cspace_->collision_at(*point)) {
-      plan.why_not_found = std::string(what) + " " + text_of(*point) + " is not free: " + *why;
-      return plan;
-    }
+PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOptions& options) {
+  Impl& r = *impl_;
+  const Stopwatch querying;
+  PlanReport<ExactPoint> report;
+  r.record_facts(report.facts);
+  if (options.record) report.cells = r.cells();
+  SearchResult<GridCell> search;
+  const auto finish = [&]() {
+    report.facts.set("search.expanded", search.expanded);
+    report.facts.set("search.generated", search.generated);
+    report.facts.set("search.path_edges", search.path_edges());
+    report.facts.set("search.seconds", search.seconds);
+    report.facts.set("query_seconds", querying.seconds());
+    return report;
+  };
+
+  if (auto why = r.cspace->query_not_free(query)) {
+    report.why_not = *why;
+    return finish();
+  }
   const auto start_cell = nearest_free_cell(query.start), goal_cell = nearest_free_cell(query.goal);
   if (!start_cell || !goal_cell) {
-    plan.why_not_found = "every cell of the raster is blocked";
-    return plan;
+    report.why_not = "every cell of the raster is blocked";
+    return finish();
   }
-  std::tie(plan.start_cell_x, plan.start_cell_y) = *start_cell;
-  std::tie(plan.goal_cell_x, plan.goal_cell_y) = *goal_cell;
+  report.facts.set("raster.start_cell", cell_text(start_cell->first, start_cell->second));
+  report.facts.set("raster.goal_cell", cell_text(goal_cell->first, goal_cell->second));
 
-  auto cell_id = [&](std::size_t x, std::size_t y) {
-    return graph_.cell({static_cast<GridCoordinate>(x), static_cast<GridCoordinate>(y)});
+  const GridGraph& g = r.graph;
+  auto cell_id = [&](std::pair<std::size_t, std::size_t> cell) {
+    return g.cell({static_cast<GridCoordinate>(cell.first), static_cast<GridCoordinate>(cell.second)});
   };
-  const GridCell from = cell_id(plan.start_cell_x, plan.start_cell_y), to = cell_id(plan.goal_cell_x, plan.goal_cell_y);
-  plan.search = shortest_path(graph_, from, to, options, GridDistanceTo(graph_, to, metric_for(*raster_, graph_.connectivity())),
-                              GridMoveCost{&graph_});
-  if (!plan.search.found) {
-    plan.why_not_found = "no path on the " + std::to_string(raster_->cells_per_axis) + " x " +
-                         std::to_string(raster_->cells_per_axis) + " grid from cell (" + std::to_string(plan.start_cell_x) +
-                         ", " + std::to_string(plan.start_cell_y) + ") to cell (" + std::to_string(plan.goal_cell_x) +
-                         ", " + std::to_string(plan.goal_cell_y) + ")";
-    return plan;
+  const GridCell from = cell_id(*start_cell), to = cell_id(*goal_cell);
+  SearchOptions searching = r.options.search;
+  searching.record_expanded = options.record;
+  search = shortest_path(g, from, to, searching, GridDistanceTo(g, to, metric_for(r.raster, g.connectivity())), GridMoveCost{&g});
+  for (const GridCell c : search.expanded_order) {
+    const auto at = g.coordinates(c);
+    report.expanded.push_back(r.raster.cell_center(static_cast<std::size_t>(at[0]), static_cast<std::size_t>(at[1])));
   }
-  plan.found = true;
+  if (!search.found) {
+    const std::string n = std::to_string(r.raster.cells_per_axis);
+    report.why_not = "no path on the " + n + " x " + n + " grid from cell " +
+                     cell_text(start_cell->first, start_cell->second) + " to cell " +
+                     cell_text(goal_cell->first, goal_cell->second);
+    return finish();
+  }
+  report.facts.set("raster.grid_cost", search.cost);
 
   // A cell is a corner of the polyline only where the move direction changes.
+  std::vector<ExactPoint> path;
   std::vector<std::vector<GridCoordinate>> cells;
-  for (const GridCell c : plan.search.path) cells.push_back(graph_.coordinates(c));
-  append(plan.path, query.start);
+  for (const GridCell c : search.path) cells.push_back(g.coordinates(c));
+  append(path, query.start);
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const bool straight_through = k > 0 && k + 1 < cells.size() && cells[k][0] - cells[k - 1][0] == cells[k + 1][0] - cells[k][0] &&
                                   cells[k][1] - cells[k - 1][1] == cells[k + 1][1] - cells[k][1];
     if (!straight_through)
-      append(plan.path, raster_->cell_center(static_cast<std::size_t>(cells[k][0]), static_cast<std::size_t>(cells[k][1])));
+      append(path, r.raster.cell_center(static_cast<std::size_t>(cells[k][0]), static_cast<std::size_t>(cells[k][1])));
   }
-  append(plan.path, query.goal);
-  plan.length = euclidean_length(plan.path);
+  append(path, query.goal);
 
-  const PathCheck check = check_path(*cspace_, plan.path);
-  plan.checked_free = check.valid;
-  plan.why_not_free = check.reason;
-  return plan;
+  const PathCheck check = check_path(*r.cspace, path);
+  if (!check.valid) {
+    report.why_not = "the grid path joined to start and goal is not a valid motion: " + check.reason;
+    return finish();
+  }
+  report.found = true;
+  report.path = std::move(path);
+  report.length = euclidean_length(report.path);
+  report.certificate = {true, "exact path check (arrangement zone walk)"};
+  return finish();
 }
 
-RasterPlan plan_on_raster(const Raster& raster, const CSpace& cspace, const Query& query, const SearchOptions& options,
-                          Connectivity connectivity) {
-  return RasterPlanner(raster, cspace, connectivity).plan(query, options);
+PlannerEntry<TranslatingRobot> raster_planner_entry() {
+  OptionTable<RasterOptions> table;
+  table.add("resolution", &RasterOptions::resolution, "cells per side of the bounds (n x n cells)");
+  table.add("connectivity", &RasterOptions::connectivity, "8: moves to all 8 neighbours without cutting corners; 4: axis moves only",
+            std::vector<std::pair<std::string, Connectivity>>{{"8", Connectivity::full}, {"4", Connectivity::axis_aligned}});
+  add_search_options(table, &RasterOptions::search);
+  return make_planner_entry<TranslatingRobot, RasterOptions>(
+      "raster", "seed 000's occupancy grid: the bounds cut into n x n exact cells, searched 8-connected",
+      std::move(table), [](const CSpace& cspace, const RasterOptions& o) {
+        return std::make_unique<RasterPlanner>(cspace, o);
+      });
 }
 
 }  // namespace polyplan

@@ -1,20 +1,20 @@
 #include <polyplan/roadmaps/visibility_graph.hpp>
 
+#include <polyplan/geometry/polyline.hpp>
 #include <polyplan/internal/cspace_impl.hpp>
 #include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
+#include <polyplan/roadmaps/stopwatch.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
-#include <chrono>
+#include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 namespace polyplan {
 namespace {
 
 using namespace detail;
-using Clock = std::chrono::steady_clock;
 using Direction = VertexWedges::Direction;
-
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 constexpr std::size_t kNotANode = static_cast<std::size_t>(-1);
 
@@ -36,10 +36,13 @@ std::vector<ExactPoint> without_straight_corners(const std::vector<ExactPoint>& 
   return kept;
 }
 
+
 }  // namespace
 
 struct VisibilityGraph::Impl {
+  const CSpace* cspace;
   VisibilityKind kind;
+  SearchOptions search;
   FreeSpaceTriangulation triangulation;
   // node_of[v][k]: the roadmap vertex of free wedge k at free-space vertex v, or kNotANode.
   std::vector<std::vector<std::size_t>> node_of;
@@ -48,8 +51,12 @@ struct VisibilityGraph::Impl {
   RoadmapVertexId start_slot = 0, goal_slot = 0;
   SearchWorkspace<RoadmapVertexId> workspace;
   double build_seconds = 0;
+  std::shared_ptr<const PlanGraph<ExactPoint>> picture;  // made for the first query that records
 
-  Impl(const CSpace& c, VisibilityKind k) : kind(k), triangulation(CSpaceAccess::impl(c)) {}
+  Impl(const CSpace& c, VisibilityKind k, SearchOptions s)
+      : cspace(&c), kind(k), search(s), triangulation(CSpaceAccess::impl(c)) {}
+
+  const char* kind_name() const { return kind == VisibilityKind::reduced ? "visibility" : "visibility-full"; }
 
   bool is_node_wedge(const VertexWedges& w, std::size_t k) const {
     return w.is_free(k) && (kind == VisibilityKind::full || w.is_reflex(k));
@@ -109,74 +116,128 @@ struct VisibilityGraph::Impl {
     }
     return true;
   }
+
+  // The corners and the edges between them (the query slots' edges are cleared after each query).
+  std::shared_ptr<const PlanGraph<ExactPoint>> graph_picture() {
+    if (picture) return picture;
+    auto g = std::make_shared<PlanGraph<ExactPoint>>();
+    g->kind = "roadmap";
+    for (std::size_t v = 0; v < corners; ++v) g->vertices.push_back(roadmap[v].exact);
+    for (auto [e, end] = boost::edges(roadmap); e != end; ++e) {
+      const auto u = boost::source(*e, roadmap), v = boost::target(*e, roadmap);
+      if (u < corners && v < corners) g->edges.emplace_back(u, v);
+    }
+    picture = std::move(g);
+    return picture;
+  }
+
+  void record_facts(Facts& facts) const {
+    facts.set("roadmap.kind", kind_name());
+    facts.set("roadmap.vertices", corners);
+    facts.set("roadmap.edges", boost::num_edges(roadmap));
+    facts.set("roadmap.seconds", build_seconds);
+  }
+
+  // Why there is no path: a blocked end (what it hits), or ends in different components.
+  std::string why_not_connected(const Query& query) const {
+    return cspace->query_not_free(query).value_or("start and goal lie in different components of the free space");
+  }
 };
 
-VisibilityGraph::VisibilityGraph(const CSpace& cspace, VisibilityKind kind)
-    : impl_(std::make_unique<Impl>(cspace, kind)) {
-  const auto started = Clock::now();
+VisibilityGraph::VisibilityGraph(const CSpace& cspace, VisibilityKind kind, SearchOptions search)
+    : impl_(std::make_unique<Impl>(cspace, kind, search)) {
+  const Stopwatch building;
   impl_->build();
-  impl_->build_seconds = seconds_since(started);
+  impl_->build_seconds = building.seconds();
 }
 VisibilityGraph::~VisibilityGraph() = default;
 VisibilityGraph::VisibilityGraph(VisibilityGraph&&) noexcept = default;
 VisibilityGraph& VisibilityGraph::operator=(VisibilityGraph&&) noexcept = default;
 
 const Roadmap& VisibilityGraph::roadmap() const { return impl_->roadmap; }
+std::size_t VisibilityGraph::corner_count() const { return impl_->corners; }
 
-RoadmapFacts VisibilityGraph::facts() const {
-  const Impl& g = *impl_;
-  // The query slots' edges are cleared after every query: all edges are the corners'.
-  return {g.kind == VisibilityKind::reduced ? "visibility" : "visibility-full", g.corners, boost::num_edges(g.roadmap),
-          g.build_seconds};
+PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const QueryOptions& options) {
+  return plan(query, impl_->search, options);
 }
 
-Plan VisibilityGraph::plan(const ExactPoint& start, const ExactPoint& goal, const SearchOptions& options) {
+PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const SearchOptions& search, const QueryOptions& options) {
   Impl& g = *impl_;
-  const auto started = Clock::now();
-  Plan plan;
-  plan.roadmap = facts();
-  plan.algorithm = options.algorithm;
+  const Stopwatch querying;
+  PlanReport<ExactPoint> report;
+  g.record_facts(report.facts);
+  report.facts.set("search.algorithm", to_string(search.algorithm));
+  std::size_t expanded = 0, generated = 0;
+  double search_seconds = 0;
+  if (options.record) report.graph = g.graph_picture();
+  const auto finish = [&]() {
+    report.facts.set("search.expanded", expanded);
+    report.facts.set("search.generated", generated);
+    report.facts.set("search.path_edges", report.path.empty() ? 0 : report.path.size() - 1);
+    report.facts.set("search.seconds", search_seconds);
+    report.facts.set("query_seconds", querying.seconds());
+    return report;
+  };
 
-  const Point from_point = to_point(start), to_point_ = to_point(goal);
-  const std::vector<int> from = g.triangulation.components_at(from_point), to = g.triangulation.components_at(to_point_);
+  const Point from = to_point(query.start), to = to_point(query.goal);
+  const std::vector<int> from_components = g.triangulation.components_at(from), to_components = g.triangulation.components_at(to);
   bool shared_component = false;
-  for (int c : from)
-    shared_component |= std::find(to.begin(), to.end(), c) != to.end();
+  for (int c : from_components)
+    shared_component |= std::find(to_components.begin(), to_components.end(), c) != to_components.end();
   if (!shared_component) {  // blocked, or in different components: nothing to search
-    plan.query_seconds = seconds_since(started);
-    return plan;
+    report.why_not = g.why_not_connected(query);
+    return finish();
   }
 
-  if (!g.triangulation.why_blocked(from_point, to_point_)) {  // start sees goal: the segment
-    plan.found = true;
-    plan.path = {start, goal};
-    plan.length = std::hypot(to_double(start.x) - to_double(goal.x), to_double(start.y) - to_double(goal.y));
+  if (!g.triangulation.why_blocked(from, to)) {  // start sees goal: the segment
+    report.path = {query.start, query.goal};
   } else {
-    g.connect(g.start_slot, start);
-    g.connect(g.goal_slot, goal);
-    const auto result = shortest_path(g.roadmap, g.start_slot, g.goal_slot, options, g.workspace);
-    for (RoadmapVertexId v : result.expanded_order) plan.expanded_points.push_back(g.roadmap[v].exact);
+    g.connect(g.start_slot, query.start);
+    g.connect(g.goal_slot, query.goal);
+    SearchOptions searching = search;
+    searching.record_expanded = options.record;
+    const auto result = shortest_path(g.roadmap, g.start_slot, g.goal_slot, searching, g.workspace);
+    for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(g.roadmap[v].exact);
+    if (result.found)
+      for (RoadmapVertexId v : result.path) report.path.push_back(g.roadmap[v].exact);
     boost::clear_vertex(g.start_slot, g.roadmap);
     boost::clear_vertex(g.goal_slot, g.roadmap);
-    plan.expanded = result.expanded;
-    plan.generated = result.generated;
-    plan.search_seconds = result.seconds;
-    if (result.found) {
-      for (RoadmapVertexId v : result.path) plan.path.push_back(g.roadmap[v].exact);
-      plan.path = without_straight_corners(plan.path);
-      plan.found = true;
-      plan.length = result.cost;
-      // Every reported path is checked exactly (by a walk through the triangulation, not by the
-      // visibility cones that found it; the straight segment above was that walk already); a
-      // failure here is a bug, never a tolerance call.
-      std::vector<Point> points;
-      for (const ExactPoint& p : plan.path) points.push_back(to_point(p));
-      if (auto why = g.triangulation.why_path_blocked(points))
-        throw std::logic_error("visibility graph produced an invalid path: " + *why);
+    expanded = result.expanded;
+    generated = result.generated;
+    search_seconds = result.seconds;
+    if (!result.found) {  // cannot happen: one component means one path through its corners
+      report.why_not = "no path in the visibility graph between start and goal";
+      return finish();
     }
+    report.path = without_straight_corners(report.path);
+    // Every reported path is checked exactly (by a walk through the triangulation, not by the
+    // visibility cones that found it; the straight segment above was that walk already); a
+    // failure here is a bug, never a tolerance call.
+    std::vector<Point> points;
+    for (const ExactPoint& p : report.path) points.push_back(to_point(p));
+    if (auto why = g.triangulation.why_path_blocked(points))
+      throw std::logic_error("visibility graph produced an invalid path: " + *why);
   }
-  plan.query_seconds = seconds_since(started);
-  return plan;
+  report.found = true;
+  report.length = euclidean_length(report.path);
+  report.certificate = {true, "exact path check (walk through the triangulated free space)"};
+  return finish();
+}
+
+PlannerEntry<TranslatingRobot> visibility_planner_entry(VisibilityKind kind) {
+  struct Options {
+    SearchOptions search;
+  };
+  OptionTable<Options> table;
+  add_search_options(table, &Options::search);
+  const bool reduced = kind == VisibilityKind::reduced;
+  return make_planner_entry<TranslatingRobot, Options>(
+      reduced ? "visibility" : "visibility-full",
+      reduced ? "exact shortest paths on the reduced visibility graph (bitangents between convex corners)"
+              : "every visible pair of free corners, as a course draws the visibility graph",
+      std::move(table), [kind](const CSpace& cspace, const Options& o) {
+        return std::make_unique<VisibilityGraph>(cspace, kind, o.search);
+      });
 }
 
 }  // namespace polyplan

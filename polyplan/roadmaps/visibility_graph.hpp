@@ -10,9 +10,12 @@
 // then has the same straight motion through the grazed corner, two edges of the same length.
 //
 // Queries connect start and goal to the corners they see (without rebuilding), search with any
-// algorithm of search/, and check the path exactly before returning it.
+// algorithm of search/, and check the path exactly (a walk through the triangulated free space,
+// independent of the visibility cones) before returning it. Registered as `visibility` (reduced)
+// and `visibility-full`.
 #include <polyplan/geometry/cspace.hpp>
-#include <polyplan/roadmaps/plan.hpp>
+#include <polyplan/roadmaps/planner.hpp>
+#include <polyplan/roadmaps/registry.hpp>
 #include <polyplan/search/roadmap.hpp>
 #include <polyplan/search/search_result.hpp>
 
@@ -22,25 +25,35 @@ namespace polyplan {
 
 enum class VisibilityKind { reduced, full };
 
-class VisibilityGraph {
+class VisibilityGraph final : public Planner<TranslatingRobot> {
  public:
-  // The graph keeps what it needs of `cspace` (its triangulated free space); queries do not use it.
-  explicit VisibilityGraph(const CSpace& cspace, VisibilityKind kind = VisibilityKind::reduced);
-  ~VisibilityGraph();
+  // `cspace` must outlive the graph (it names what a blocked start or goal hits). `search` is
+  // what plan(query) searches with.
+  explicit VisibilityGraph(const CSpace& cspace, VisibilityKind kind = VisibilityKind::reduced,
+                           SearchOptions search = {});
+  ~VisibilityGraph() override;
   VisibilityGraph(VisibilityGraph&&) noexcept;
   VisibilityGraph& operator=(VisibilityGraph&&) noexcept;
 
   // The corners and their edges (the two vertices after the corners are reserved for queries).
   const Roadmap& roadmap() const;
-  RoadmapFacts facts() const;
+  std::size_t corner_count() const;
 
-  // Shortest path from start to goal with the chosen search. found == false when they are not
-  // connected (or either is blocked). Not thread-safe: queries reuse the graph's query slots.
-  Plan plan(const ExactPoint& start, const ExactPoint& goal, const SearchOptions& options = {});
+  // Shortest path from start to goal with the constructor's search. Facts: roadmap.kind
+  // ("visibility" or "visibility-full"), roadmap.vertices (corners), roadmap.edges,
+  // roadmap.seconds (building it, once), search.algorithm, search.expanded, search.generated,
+  // search.path_edges, search.seconds, query_seconds. When start sees goal the path is the
+  // segment and nothing is searched (expanded 0). Not thread-safe: queries reuse the query slots.
+  PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
+  // The same with another search on the same graph (a course compares them).
+  PlanReport<ExactPoint> plan(const Query& query, const SearchOptions& search, const QueryOptions& options = {});
 
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The registry's `visibility` and `visibility-full`: options search (astar) and weight (1).
+PlannerEntry<TranslatingRobot> visibility_planner_entry(VisibilityKind kind);
 
 }  // namespace polyplan

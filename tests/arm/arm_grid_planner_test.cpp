@@ -1,6 +1,6 @@
 // arm/arm_grid_planner: the arm's C-space grid searched on the torus or the square, lazily or
-// eagerly. Every returned path is re-checked here, configuration by configuration and along every
-// motion at the stated resolution, with the collision checker alone.
+// eagerly. Every returned path is re-checked here with the collision checker alone, densely along
+// every motion (every 0.01 degrees of the joint that turns most), and its certificate is re-derived.
 #include <polyplan/arm/arm_grid_planner.hpp>
 
 #include <polyplan/arm/arm_collision.hpp>
@@ -25,26 +25,34 @@ const ArmQuery& query_named(const ArmProblem& p, const std::string& name) {
   return *it;
 }
 
+PlanReport<JointAngles> plan_once(const ArmProblem& p, const ArmQuery& q, const ArmGridOptions& options = {}) {
+  return ArmGridPlanner(p, options).plan(q);
+}
+
 // The planner's promise, checked independently: exact ends, every configuration free, every motion
-// between consecutive ones free at the check resolution, length as the sum of joint rotations.
-void expect_valid(const ArmProblem& p, const ArmQuery& q, const ArmGridPlan& plan, bool torus) {
+// between consecutive ones free at dense samples and certified again, length as the sum of joint
+// rotations.
+void expect_valid(const ArmProblem& p, const ArmQuery& q, const PlanReport<JointAngles>& plan, bool torus) {
   ASSERT_TRUE(plan.found) << plan.why_not;
+  ASSERT_TRUE(plan.certificate.certified);
   ASSERT_GE(plan.path.size(), 2u);
   for (std::size_t i = 0; i < q.start.size(); ++i) {
     EXPECT_EQ(plan.path.front()[i], normalize_angle(q.start[i]));
     EXPECT_EQ(plan.path.back()[i], normalize_angle(q.goal[i]));
   }
   const ArmCollisionChecker checker(p);
-  const double step = plan.check_degrees * two_pi / 360;
+  const double dense = 0.01 * two_pi / 360;
+  const double cell = two_pi / static_cast<double>(plan.facts.count("grid.cells_per_axis"));
   double length = 0;
   for (std::size_t k = 0; k + 1 < plan.path.size(); ++k) {
-    for (const auto& c : motion_samples(plan.path[k], plan.path[k + 1], step))
+    for (const auto& c : motion_samples(plan.path[k], plan.path[k + 1], dense))
       ASSERT_TRUE(checker.is_free(c)) << "configuration between path[" << k << "] and path[" << k + 1 << "] collides";
+    EXPECT_TRUE(certify_motion(checker, plan.path[k], plan.path[k + 1]).free()) << "motion " << k;
     for (std::size_t i = 0; i < q.start.size(); ++i) {
       const double d = plan.path[k + 1][i] - plan.path[k][i];
       // On the interval a joint never turns across 0, so consecutive angles differ by at most a step.
       if (!torus) {
-        EXPECT_LT(std::fabs(d), two_pi / static_cast<double>(plan.cells_per_axis) + 1e-12);
+        EXPECT_LT(std::fabs(d), cell + 1e-12);
       }
       length += torus ? angular_distance(plan.path[k][i], plan.path[k + 1][i]) : std::fabs(d);
     }
@@ -52,15 +60,17 @@ void expect_valid(const ArmProblem& p, const ArmQuery& q, const ArmGridPlan& pla
   EXPECT_NEAR(plan.length, length, 1e-9);
 }
 
+std::int64_t cells_evaluated(const PlanReport<JointAngles>& plan) { return plan.facts.count("cells_evaluated"); }
+
 TEST(ArmGridPlanner, TorusKeepsTheEasyCaseShortAndTheIntervalUnwinds) {
   const ArmProblem p = read_arm_problem(arms + "two_link_points.json");
   const ArmQuery& easy = query_named(p, "easy");
   ArmGridOptions torus;
-  const ArmGridPlan on_torus = plan_arm_on_grid(p, easy, torus);
+  const auto on_torus = plan_once(p, easy, torus);
   expect_valid(p, easy, on_torus, true);
   ArmGridOptions interval;
   interval.torus = false;
-  const ArmGridPlan on_interval = plan_arm_on_grid(p, easy, interval);
+  const auto on_interval = plan_once(p, easy, interval);
   expect_valid(p, easy, on_interval, false);
   // θ2 from 0.12 to 6.00: 0.40 rad the short way round, 5.88 rad unwound.
   EXPECT_LT(on_torus.length, 1.0);
@@ -73,11 +83,11 @@ TEST(ArmGridPlanner, TorusKeepsTheEasyCaseShortAndTheIntervalUnwinds) {
 TEST(ArmGridPlanner, HardCaseIsFoundOnlyOnTheTorus) {
   const ArmProblem p = read_arm_problem(arms + "two_link_points.json");
   const ArmQuery& hard = query_named(p, "hard");
-  const ArmGridPlan on_torus = plan_arm_on_grid(p, hard, {});
+  const auto on_torus = plan_once(p, hard);
   expect_valid(p, hard, on_torus, true);
   ArmGridOptions interval;
   interval.torus = false;
-  const ArmGridPlan on_interval = plan_arm_on_grid(p, hard, interval);
+  const auto on_interval = plan_once(p, hard, interval);
   EXPECT_FALSE(on_interval.found);
   EXPECT_NE(on_interval.why_not.find("not connected"), std::string::npos) << on_interval.why_not;
 }
@@ -88,11 +98,11 @@ TEST(ArmGridPlanner, LazyAndEagerFindPathsOfEqualCostAndLazyEvaluatesLess) {
     const ArmQuery& q = query_named(p, name);
     ArmGridOptions lazy, eager;
     eager.lazy = false;
-    const ArmGridPlan a = plan_arm_on_grid(p, q, lazy), b = plan_arm_on_grid(p, q, eager);
+    const auto a = plan_once(p, q, lazy), b = plan_once(p, q, eager);
     ASSERT_TRUE(a.found && b.found) << name;
     EXPECT_NEAR(a.length, b.length, 1e-12) << name;
-    EXPECT_EQ(b.cells_evaluated, 72u * 72u) << name;
-    EXPECT_LT(a.cells_evaluated, b.cells_evaluated) << name;
+    EXPECT_EQ(cells_evaluated(b), 72 * 72) << name;
+    EXPECT_LT(cells_evaluated(a), cells_evaluated(b)) << name;
   }
 }
 
@@ -101,9 +111,9 @@ TEST(ArmGridPlanner, MediumCaseAtOneDegreeIsValidAndNoLongerThanAtFive) {
   const ArmQuery& medium = query_named(p, "medium");
   ArmGridOptions fine;
   fine.resolution_degrees = 1;
-  const ArmGridPlan a = plan_arm_on_grid(p, medium, fine);
+  const auto a = plan_once(p, medium, fine);
   expect_valid(p, medium, a, true);
-  const ArmGridPlan b = plan_arm_on_grid(p, medium, {});
+  const auto b = plan_once(p, medium);
   expect_valid(p, medium, b, true);
   // The 5-degree grid is a sub-grid of the 1-degree one; only the joins to start and goal differ
   // (each at most half a cell per joint).
@@ -116,7 +126,7 @@ TEST(ArmGridPlanner, ForestArmsFromSeed001Plan) {
     ASSERT_FALSE(p.queries.empty());
     ArmGridOptions options;
     options.resolution_degrees = 10;
-    const ArmGridPlan plan = plan_arm_on_grid(p, p.queries.front(), options);
+    const auto plan = plan_once(p, p.queries.front(), options);
     expect_valid(p, p.queries.front(), plan, true);
     EXPECT_GE(plan.length, total_angular_distance(p.queries.front().start, p.queries.front().goal) - 1e-9) << file;
   }
@@ -142,43 +152,60 @@ ArmProblem four_links_and_a_gap() {
 
 TEST(ArmGridPlanner, FourLinksThreadANarrowGap) {
   const ArmProblem p = four_links_and_a_gap();
-  const ArmGridPlan plan = plan_arm_on_grid(p, p.queries.front(), {});
+  const auto plan = plan_once(p, p.queries.front());
   expect_valid(p, p.queries.front(), plan, true);
   // Unfolding joint 3 alone would sweep links 3 and 4 through the wall: the path turns other
   // joints too, so it is longer than the straight motion's π.
   EXPECT_GT(plan.length, M_PI + 0.5);
   const ArmCollisionChecker checker(p);
-  EXPECT_FALSE(motion_is_free(checker, p.queries.front().start, p.queries.front().goal, two_pi / 360));
-  EXPECT_LT(plan.cells_evaluated, 72u * 72u * 72u * 72u / 100) << "lazy: a small part of the 72^4 grid";
+  EXPECT_FALSE(motion_is_free(checker, p.queries.front().start, p.queries.front().goal));
+  EXPECT_LT(cells_evaluated(plan), 72 * 72 * 72 * 72 / 100) << "lazy: a small part of the 72^4 grid";
 }
 
 TEST(ArmGridPlanner, SevenJointsPlanLazily) {
+  // Seven segment links (width 0) curl from straight along +x up to the y axis. The obstacle points
+  // lie beside the region the arm sweeps: a segment link that crosses a point touches it, which
+  // sampling the motion never sees but certification does, so points inside the sweep would force
+  // a long detour through 72^7 cells.
   ArmProblem p;
   p.source = "seven links";
   p.arm.links = std::vector<double>(7, 0.5);
-  p.points = {{2.0, 0.2}, {1.0, 1.5}, {-1.5, 1.0}};
+  p.points = {{2.0, -0.5}, {-1.5, 1.0}, {0.5, -1.5}};
   p.queries = {{"fold", {0, 0, 0, 0, 0, 0, 0}, {M_PI / 2, 0.3, 0.3, 0.3, 0.3, 0.3, 0.3}}};
-  const ArmGridPlan plan = plan_arm_on_grid(p, p.queries.front(), {});
+  const auto plan = plan_once(p, p.queries.front());
   expect_valid(p, p.queries.front(), plan, true);
-  EXPECT_LT(plan.cells_evaluated, 1000000u);  // of 72^7 = 1.0e13
+  EXPECT_LT(cells_evaluated(plan), 1000000);  // of 72^7 = 1.0e13
+}
+
+TEST(ArmGridPlanner, ASegmentLinkNeverSweepsAcrossAnObstaclePoint) {
+  // One unit segment link turning from 0 to π/2 past a point at (0.5, 0.5·tan 20°): any sampled
+  // check misses the instant the segment crosses it; the planner must go round the other way.
+  ArmProblem p;
+  p.source = "one link and a point";
+  p.arm.links = {1};
+  p.points = {{0.5 * std::cos(0.349), 0.5 * std::sin(0.349)}};
+  p.queries = {{"quarter turn", {0}, {M_PI / 2}}};
+  const auto plan = plan_once(p, p.queries.front());
+  expect_valid(p, p.queries.front(), plan, true);
+  EXPECT_GT(plan.length, 1.5 * M_PI - 1e-9) << "the short way sweeps across the point";
 }
 
 TEST(ArmGridPlanner, CollidingStartIsAnAnswerAndBadOptionsAreRefused) {
   ArmProblem p = four_links_and_a_gap();
   ArmQuery into_wall{"into the wall", {0.3, 0, 0, 0}, {0, 0, 0, 0}};  // link 3 crosses x = 2.5 at y = 0.77
-  const ArmGridPlan plan = plan_arm_on_grid(p, into_wall, {});
+  const auto plan = plan_once(p, into_wall);
   EXPECT_FALSE(plan.found);
-  EXPECT_NE(plan.why_not.find("the start collides: link 3 meets obstacles[0]"), std::string::npos) << plan.why_not;
+  EXPECT_TRUE(plan.path.empty());
+  EXPECT_EQ(plan.why_not, "the start collides: link 3 meets obstacles[0]");
+  const auto short_query = plan_once(p, ArmQuery{"short", {0, 0}, {0, 0}});
+  EXPECT_FALSE(short_query.found);
+  EXPECT_EQ(short_query.why_not, "the query short has 2 start and 2 goal angles for an arm of 4 joints");
   ArmGridOptions bad;
   bad.resolution_degrees = 7;  // does not divide 360
-  EXPECT_THROW(plan_arm_on_grid(p, p.queries.front(), bad), std::invalid_argument);
+  EXPECT_THROW(ArmGridPlanner(p, bad), std::invalid_argument);
   bad.resolution_degrees = 5;
-  bad.check_degrees = 6;  // coarser than the grid
-  EXPECT_THROW(plan_arm_on_grid(p, p.queries.front(), bad), std::invalid_argument);
-  bad.check_degrees = 0;
   bad.lazy = false;  // 72^4 = 2.7e7 cells eagerly
-  EXPECT_THROW(plan_arm_on_grid(p, p.queries.front(), bad), std::invalid_argument);
-  EXPECT_THROW(plan_arm_on_grid(p, ArmQuery{"short", {0, 0}, {0, 0}}, {}), std::invalid_argument);
+  EXPECT_THROW(ArmGridPlanner(p, bad), std::invalid_argument);
 }
 
 }  // namespace

@@ -17,7 +17,7 @@
 
 namespace {
 
-using polyplan::ArmCSpaceImage;
+using polyplan::CellGrid;
 using polyplan::ArmPlanPicture;
 using polyplan::ArmProblem;
 using polyplan::JointAngles;
@@ -140,7 +140,7 @@ std::vector<JointAngles> sweep(const JointAngles& a, const JointAngles& b, int s
 }
 
 ArmPlanPicture picture_of(const ArmProblem& problem, std::vector<JointAngles> motion,
-                          std::optional<ArmCSpaceImage> cspace = std::nullopt) {
+                          std::optional<CellGrid> cspace = std::nullopt) {
   ArmPlanPicture picture;
   picture.problem = &problem;
   picture.motion = std::move(motion);
@@ -148,10 +148,10 @@ ArmPlanPicture picture_of(const ArmProblem& problem, std::vector<JointAngles> mo
   return picture;
 }
 
-ArmCSpaceImage uniform_image(std::size_t n, std::uint8_t state) {
-  ArmCSpaceImage image;
-  image.cells_per_axis = n;
-  image.state.assign(n * n, state);
+CellGrid uniform_image(std::size_t n, std::uint8_t state) {
+  CellGrid image;
+  image.columns = image.rows = n;
+  image.states.assign(n * n, state);
   return image;
 }
 
@@ -159,7 +159,7 @@ ArmCSpaceImage uniform_image(std::size_t n, std::uint8_t state) {
 
 TEST(ArmAnimationSvg, IsWellFormedAndRepeatsForEver) {
   const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
-  ArmPlanPicture picture = picture_of(problem, sweep({0.3, 1.0}, {2.5, -1.0}, 40), uniform_image(36, ArmCSpaceImage::free));
+  ArmPlanPicture picture = picture_of(problem, sweep({0.3, 1.0}, {2.5, -1.0}, 40), uniform_image(36, CellGrid::free));
   picture.title = "test";
   const std::string svg = polyplan::arm_animation_svg(picture);
   EXPECT_EQ(nesting_error(svg), "") << svg;
@@ -259,7 +259,7 @@ TEST(ArmAnimationSvg, NestedRotationsPutTheEndEffectorWhereKinematicsSays) {
 TEST(ArmAnimationSvg, CSpacePathIsCutWhereItCrossesASeam) {
   const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
   auto path_pieces = [&](const std::vector<JointAngles>& motion) {
-    const ArmPlanPicture picture = picture_of(problem, motion, uniform_image(72, ArmCSpaceImage::free));
+    const ArmPlanPicture picture = picture_of(problem, motion, uniform_image(72, CellGrid::free));
     const std::string svg = polyplan::arm_animation_svg(picture);
     const auto group = svg.find("<g class=\"cspace-path\">");
     EXPECT_NE(group, std::string::npos);
@@ -292,7 +292,7 @@ TEST(ArmAnimationSvg, CSpacePathIsCutWhereItCrossesASeam) {
 TEST(ArmAnimationSvg, CSpaceDotJumpsAcrossTheSeamInStepWithTheArm) {
   const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
   const auto motion = sweep({1.0, 6.2}, {1.0, 0.1}, 20);
-  const ArmPlanPicture picture = picture_of(problem, motion, uniform_image(72, ArmCSpaceImage::free));
+  const ArmPlanPicture picture = picture_of(problem, motion, uniform_image(72, CellGrid::free));
   const std::string svg = polyplan::arm_animation_svg(picture);
   const auto dot = svg.find("class=\"cspace-dot\"");
   ASSERT_NE(dot, std::string::npos);
@@ -329,10 +329,10 @@ TEST(ArmAnimationSvg, CellsAreMergedIntoRunsOfEqualState) {
   // rows are one rectangle: blocked 10–19 once for all rows; rows 1..35 two free ones; the two
   // halves of row 0 four each.
   const std::size_t n = 36;
-  ArmCSpaceImage image = uniform_image(n, ArmCSpaceImage::free);
+  CellGrid image = uniform_image(n, CellGrid::free);
   for (std::size_t j = 0; j < n; ++j)
-    for (std::size_t i = 10; i < 20; ++i) image.state[i + j * n] = ArmCSpaceImage::blocked;
-  for (std::size_t i = 0; i < 5; ++i) image.state[i] = ArmCSpaceImage::not_evaluated;
+    for (std::size_t i = 10; i < 20; ++i) image.states[i + j * n] = CellGrid::blocked;
+  for (std::size_t i = 0; i < 5; ++i) image.states[i] = CellGrid::not_evaluated;
   const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
   const ArmPlanPicture picture = picture_of(problem, sweep({0, 0}, {1, 1}, 5), image);
   const std::string svg = polyplan::arm_animation_svg(picture);
@@ -366,7 +366,7 @@ TEST(ArmAnimationSvg, CellsAreMergedIntoRunsOfEqualState) {
 
 TEST(ArmAnimationSvg, WithoutAMotionShowsTheWorldAndSaysSo) {
   const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
-  const ArmPlanPicture picture = picture_of(problem, {}, uniform_image(8, ArmCSpaceImage::blocked));
+  const ArmPlanPicture picture = picture_of(problem, {}, uniform_image(8, CellGrid::blocked));
   const std::string svg = polyplan::arm_animation_svg(picture);
   EXPECT_EQ(nesting_error(svg), "");
   EXPECT_EQ(svg.find("<animate"), std::string::npos);
@@ -382,13 +382,13 @@ TEST(ArmAnimationSvg, InconsistentPicturesAreRefused) {
                std::invalid_argument);
   // A C-space picture of an arm that has not two joints, or whose states are not n·n or not states.
   EXPECT_THROW(polyplan::arm_animation_svg(
-                   picture_of(three, {{0, 0, 0}}, uniform_image(4, ArmCSpaceImage::free))),
+                   picture_of(three, {{0, 0, 0}}, uniform_image(4, CellGrid::free))),
                std::invalid_argument);
-  ArmCSpaceImage short_image = uniform_image(4, ArmCSpaceImage::free);
-  short_image.state.pop_back();
+  CellGrid short_image = uniform_image(4, CellGrid::free);
+  short_image.states.pop_back();
   EXPECT_THROW(polyplan::arm_animation_svg(picture_of(two, {{0, 0}}, short_image)), std::invalid_argument);
-  ArmCSpaceImage odd_image = uniform_image(4, ArmCSpaceImage::free);
-  odd_image.state[3] = 7;
+  CellGrid odd_image = uniform_image(4, CellGrid::free);
+  odd_image.states[3] = 7;
   EXPECT_THROW(polyplan::arm_animation_svg(picture_of(two, {{0, 0}}, odd_image)), std::invalid_argument);
   EXPECT_THROW(polyplan::arm_strobe_svg(picture_of(two, {{0, 0}}), 0), std::invalid_argument);
 }

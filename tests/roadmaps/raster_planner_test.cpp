@@ -1,4 +1,4 @@
-// plan_on_raster: seed 000's search_start_goal on the rasterised sphere world (routes at three
+// RasterPlanner: seed 000's search_start_goal on the rasterised sphere world (routes at three
 // resolutions, lengths against the exact visibility-graph optimum, every path re-checked
 // independently), and on hand-made worlds where the answer is known exactly.
 #include <polyplan/geometry/path_check.hpp>
@@ -45,7 +45,7 @@ class SphereWorld : public ::testing::Test {
     world = new World(read_world(kSphereWorld));
     cspace = new CSpace(*world);
     VisibilityGraph graph(*cspace);
-    for (const Query& q : world->queries) optimum.push_back(graph.plan(q.start, q.goal).length);
+    for (const Query& q : world->queries) optimum.push_back(graph.plan(q).length);
   }
   static void TearDownTestSuite() {
     delete cspace;
@@ -59,17 +59,24 @@ World* SphereWorld::world = nullptr;
 CSpace* SphereWorld::cspace = nullptr;
 std::vector<double> SphereWorld::optimum;
 
+using Report = PlanReport<ExactPoint>;
+
+Report plan_once(const CSpace& cspace, std::size_t n, const Query& query, Connectivity connectivity = Connectivity::full) {
+  return RasterPlanner(cspace, RasterOptions{n, connectivity, {}}).plan(query);
+}
+
+std::string cell(std::size_t x, std::size_t y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
+
 }  // namespace
 
 TEST_F(SphereWorld, JustRightResolutionFindsCheckedPathsWithinTwentyPercentOfTheOptimum) {
   ASSERT_EQ(world->queries.size(), 10u);  // 5 starts x 2 goals, as seed 000 runs them
-  const Raster raster = rasterize(*cspace, 40);
-  const RasterPlanner planner(raster, *cspace);
+  RasterPlanner planner(*cspace, RasterOptions{40});
   for (std::size_t i = 0; i < world->queries.size(); ++i) {
     const Query& q = world->queries[i];
     SCOPED_TRACE(q.name);
-    const RasterPlan plan = planner.plan(q);
-    ASSERT_TRUE(plan.found) << plan.why_not_found;
+    const Report plan = planner.plan(q);
+    ASSERT_TRUE(plan.found) << plan.why_not;
     ASSERT_GE(plan.path.size(), 2u);
     EXPECT_EQ(plan.path.front(), q.start);
     EXPECT_EQ(plan.path.back(), q.goal);
@@ -77,21 +84,21 @@ TEST_F(SphereWorld, JustRightResolutionFindsCheckedPathsWithinTwentyPercentOfThe
     // 1.0824 times a straight line, plus the detours of cell centres around the discs.
     EXPECT_GE(plan.length, optimum[i] - 1e-9);
     EXPECT_LE(plan.length, 1.2 * optimum[i]);
+    EXPECT_TRUE(plan.certificate.certified);
     const PathCheck independent = check_path(*cspace, plan.path);
-    EXPECT_EQ(plan.checked_free, independent.valid);
-    EXPECT_EQ(plan.why_not_free, independent.reason);
-    EXPECT_TRUE(plan.checked_free) << plan.why_not_free;
+    EXPECT_TRUE(independent.valid) << independent.reason;
     // The reported length is the polyline's, recomputed here from its points.
     double length = 0;
     for (std::size_t k = 1; k < plan.path.size(); ++k)
       length += std::hypot(to_double(plan.path[k].x) - to_double(plan.path[k - 1].x),
                            to_double(plan.path[k].y) - to_double(plan.path[k - 1].y));
     EXPECT_NEAR(plan.length, length, 1e-9);
-    // The snapped cells are free and are the grid path's ends.
-    EXPECT_FALSE(raster.is_blocked(plan.start_cell_x, plan.start_cell_y));
-    EXPECT_FALSE(raster.is_blocked(plan.goal_cell_x, plan.goal_cell_y));
-    EXPECT_EQ(plan.search.path.front(), plan.start_cell_x + plan.start_cell_y * 40);
-    EXPECT_EQ(plan.search.path.back(), plan.goal_cell_x + plan.goal_cell_y * 40);
+    // The snapped cells are the free cells nearest to start and goal.
+    const auto start_cell = planner.nearest_free_cell(q.start), goal_cell = planner.nearest_free_cell(q.goal);
+    ASSERT_TRUE(start_cell && goal_cell);
+    EXPECT_FALSE(planner.raster().is_blocked(start_cell->first, start_cell->second));
+    EXPECT_EQ(plan.facts.text("raster.start_cell"), cell(start_cell->first, start_cell->second));
+    EXPECT_EQ(plan.facts.text("raster.goal_cell"), cell(goal_cell->first, goal_cell->second));
   }
 }
 
@@ -103,9 +110,8 @@ TEST_F(SphereWorld, CoarseGridClosesTheGapsThatTheJustRightGridKeeps) {
   const Query& bottom_left_to_bottom_right = world->queries[5];  // (-9, -9) -> (8.5, -9)
   for (const std::size_t n : {10, 40, 200}) {
     SCOPED_TRACE("n = " + std::to_string(n));
-    const Raster raster = rasterize(*cspace, n);
-    const RasterPlanner planner(raster, *cspace);
-    const RasterPlan up = planner.plan(below_gap_to_top), along = planner.plan(bottom_left_to_bottom_right);
+    RasterPlanner planner(*cspace, RasterOptions{n});
+    const Report up = planner.plan(below_gap_to_top), along = planner.plan(bottom_left_to_bottom_right);
     ASSERT_TRUE(up.found && along.found);
     const double x_at_gap = *first_crossing_of_y(up.path, 2);
     const double y_under_c = *first_crossing_of_x(along.path, 4);
@@ -125,57 +131,53 @@ TEST_F(SphereWorld, CoarseGridClosesTheGapsThatTheJustRightGridKeeps) {
 }
 
 TEST_F(SphereWorld, CoarsePathsAreCheckedLikeEveryOther) {
-  const Raster raster = rasterize(*cspace, 10);
-  const RasterPlanner planner(raster, *cspace);
+  RasterPlanner planner(*cspace, RasterOptions{10});
   for (const Query& q : world->queries) {
-    const RasterPlan plan = planner.plan(q);
-    ASSERT_TRUE(plan.found) << q.name;
-    EXPECT_EQ(plan.checked_free, check_path(*cspace, plan.path).valid) << q.name;
+    const Report plan = planner.plan(q);
+    if (plan.found) EXPECT_TRUE(check_path(*cspace, plan.path).valid) << q.name;
+    else EXPECT_NE(plan.why_not.find("is not a valid motion"), std::string::npos) << q.name << ": " << plan.why_not;
   }
 }
 
-TEST(RasterPlanner, JoinFromTheStartThroughAnObstacleIsReportedNotHidden) {
+TEST(RasterPlanner, JoinFromTheStartThroughAnObstacleIsRefusedWithTheReason) {
   // Cells 2 x 2; the square (0.5, 1.5)² blocks cell (0, 0). The start (0.2, 0.2) is equally near
   // the centres (3, 1) and (1, 3) (squared distance 8.48): the lower index, cell (1, 0), wins.
   // The join (0.2, 0.2) -> (3, 1) passes through the square (at x = 1.4 it is at y = 0.543).
   const World world = world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [[[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]]]})");
   const CSpace cspace(world);
-  const Raster raster = rasterize(cspace, 2);
-  const RasterPlan plan = plan_on_raster(raster, cspace, Query{pt("0.2", "0.2"), pt("3.5", "3.5"), "q"});
-  ASSERT_TRUE(plan.found);
-  EXPECT_EQ(plan.start_cell_x, 1u);
-  EXPECT_EQ(plan.start_cell_y, 0u);
-  EXPECT_EQ(plan.path, (std::vector<ExactPoint>{pt("0.2", "0.2"), pt("3", "1"), pt("3", "3"), pt("3.5", "3.5")}));
-  EXPECT_FALSE(plan.checked_free);
-  EXPECT_EQ(check_path(cspace, plan.path).reason, plan.why_not_free);
-  EXPECT_NE(plan.why_not_free.find("obstacles[0]"), std::string::npos) << plan.why_not_free;
-  EXPECT_NEAR(plan.length, std::sqrt(2.8 * 2.8 + 0.8 * 0.8) + 2 + std::sqrt(0.5), 1e-12);
+  const Query query{pt("0.2", "0.2"), pt("3.5", "3.5"), "q"};
+  const Report plan = plan_once(cspace, 2, query);
+  EXPECT_FALSE(plan.found);
+  EXPECT_TRUE(plan.path.empty());
+  EXPECT_EQ(plan.facts.text("raster.start_cell"), "(1, 0)");
+  // The refused polyline, checked here independently, is what the reason quotes.
+  const PathCheck check = check_path(cspace, {pt("0.2", "0.2"), pt("3", "1"), pt("3", "3"), pt("3.5", "3.5")});
+  ASSERT_FALSE(check.valid);
+  EXPECT_EQ(plan.why_not, "the grid path joined to start and goal is not a valid motion: " + check.reason);
+  EXPECT_NE(plan.why_not.find("obstacles[0]"), std::string::npos) << plan.why_not;
   // Four times finer, the start's own cell (0, 0) = (0, 0.5)² is free: the join is short and free.
-  const RasterPlan fine = plan_on_raster(rasterize(cspace, 8), cspace, Query{pt("0.2", "0.2"), pt("3.5", "3.5"), "q"});
-  EXPECT_TRUE(fine.checked_free) << fine.why_not_free;
-  EXPECT_EQ(fine.start_cell_x, 0u);
-  EXPECT_EQ(fine.start_cell_y, 0u);
+  const Report fine = plan_once(cspace, 8, query);
+  EXPECT_TRUE(fine.found) << fine.why_not;
+  EXPECT_EQ(fine.facts.text("raster.start_cell"), "(0, 0)");
 }
 
 TEST(RasterPlanner, StraightRunsKeepOnlyTheirEndsAndLengthsAreExactMultiples) {
   const World world = world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": []})");
   const CSpace cspace(world);
-  const Raster raster = rasterize(cspace, 10);
-  const RasterPlanner planner(raster, cspace);
-  const RasterPlan along = planner.plan({pt("0.5", "0.5"), pt("9.5", "0.5"), "q"});
+  RasterPlanner planner(cspace, RasterOptions{10});
+  const Report along = planner.plan({pt("0.5", "0.5"), pt("9.5", "0.5"), "q"});
   EXPECT_EQ(along.path, (std::vector<ExactPoint>{pt("0.5", "0.5"), pt("9.5", "0.5")}));  // start and goal are centres
-  EXPECT_EQ(along.search.path.size(), 10u);
+  EXPECT_EQ(along.facts.count("search.path_edges"), 9);
   EXPECT_DOUBLE_EQ(along.length, 9.0);
-  EXPECT_DOUBLE_EQ(along.search.cost, 9.0);
-  const RasterPlan diagonal = planner.plan({pt("0.5", "0.5"), pt("9.5", "9.5"), "q"});
+  EXPECT_DOUBLE_EQ(along.facts.number("raster.grid_cost"), 9.0);
+  const Report diagonal = planner.plan({pt("0.5", "0.5"), pt("9.5", "9.5"), "q"});
   EXPECT_EQ(diagonal.path, (std::vector<ExactPoint>{pt("0.5", "0.5"), pt("9.5", "9.5")}));
   EXPECT_NEAR(diagonal.length, 9 * std::sqrt(2.0), 1e-12);
   // 4-connected from cell (0, 0) to cell (3, 1): 4 unit moves in some order, each kept corner
   // joined to the next along an axis; the start joins its centre (0.5, 0.5), the goal is a centre.
-  const RasterPlan four = plan_on_raster(raster, cspace, {pt("0.2", "0.7"), pt("3.5", "1.5"), "q"}, {},
-                                         Connectivity::axis_aligned);
-  EXPECT_EQ(four.search.path.size(), 5u);
-  EXPECT_DOUBLE_EQ(four.search.cost, 4.0);
+  const Report four = plan_once(cspace, 10, {pt("0.2", "0.7"), pt("3.5", "1.5"), "q"}, Connectivity::axis_aligned);
+  EXPECT_EQ(four.facts.count("search.path_edges"), 4);
+  EXPECT_DOUBLE_EQ(four.facts.number("raster.grid_cost"), 4.0);
   ASSERT_GE(four.path.size(), 4u);  // start, (0.5, 0.5), at least one corner, goal
   EXPECT_EQ(four.path.front(), pt("0.2", "0.7"));
   EXPECT_EQ(four.path[1], pt("0.5", "0.5"));
@@ -191,27 +193,26 @@ TEST(RasterPlanner, PinchBetweenTouchingObstaclesIsNotAPassage) {
   const World world = world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [
       [[0, 2], [2, 2], [2, 4], [0, 4]], [[2, 0], [4, 0], [4, 2], [2, 2]]]})");
   const CSpace cspace(world);
-  const RasterPlan plan = plan_on_raster(rasterize(cspace, 4), cspace, {pt("1.5", "1.5"), pt("2.5", "2.5"), "q"});
+  const Report plan = plan_once(cspace, 4, {pt("1.5", "1.5"), pt("2.5", "2.5"), "q"});
   EXPECT_FALSE(plan.found);
   EXPECT_TRUE(plan.path.empty());
-  EXPECT_EQ(plan.why_not_found, "no path on the 4 x 4 grid from cell (1, 1) to cell (2, 2)");
+  EXPECT_EQ(plan.why_not, "no path on the 4 x 4 grid from cell (1, 1) to cell (2, 2)");
 }
 
 TEST(RasterPlanner, StartInsideAnObstacleIsNotFoundWithTheReason) {
   const World world = world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [[[1, 1], [2, 1], [2, 2], [1, 2]]]})");
   const CSpace cspace(world);
-  const Raster raster = rasterize(cspace, 8);
-  const RasterPlan inside = plan_on_raster(raster, cspace, {pt("1.5", "1.5"), pt("3", "3"), "q"});
+  RasterPlanner planner(cspace, RasterOptions{8});
+  const Report inside = planner.plan({pt("1.5", "1.5"), pt("3", "3"), "q"});
   EXPECT_FALSE(inside.found);
   EXPECT_TRUE(inside.path.empty());
-  EXPECT_EQ(inside.why_not_found, "start [3/2, 3/2] is not free: it is inside obstacles[0]");
-  const RasterPlan outside = plan_on_raster(raster, cspace, {pt("0", "0"), pt("5", "3"), "q"});
+  EXPECT_EQ(inside.why_not, "the start [3/2, 3/2] is not free: it is inside obstacles[0]");
+  const Report outside = planner.plan({pt("0", "0"), pt("5", "3"), "q"});
   EXPECT_FALSE(outside.found);
-  EXPECT_EQ(outside.why_not_found, "goal [5, 3] is not free: it is outside the bounds");
+  EXPECT_EQ(outside.why_not, "the goal [5, 3] is not free: it is outside the bounds");
   // Contact is free: a start on the obstacle's edge plans (its cell centre is beside it).
-  const RasterPlan touching = plan_on_raster(raster, cspace, {pt("1", "1.5"), pt("3", "3"), "q"});
-  EXPECT_TRUE(touching.found) << touching.why_not_found;
-  EXPECT_TRUE(touching.checked_free) << touching.why_not_free;
+  const Report touching = planner.plan({pt("1", "1.5"), pt("3", "3"), "q"});
+  EXPECT_TRUE(touching.found) << touching.why_not;
 }
 
 TEST(RasterPlanner, NearestFreeCellIsExact) {
@@ -219,8 +220,7 @@ TEST(RasterPlanner, NearestFreeCellIsExact) {
   // between two centres (a double computation would see 0.1 - 0.05 != 0.15 - 0.1); the lower index wins.
   const World world = world_from(R"({"bounds": [0, 0, 0.3, 0.3], "obstacles": []})");
   const CSpace cspace(world);
-  const Raster raster = rasterize(cspace, 3);
-  const RasterPlanner planner(raster, cspace);
+  const RasterPlanner planner(cspace, RasterOptions{3});
   EXPECT_EQ(planner.nearest_free_cell(pt("0.1", "0.1")), (std::pair<std::size_t, std::size_t>{0, 0}));
   EXPECT_EQ(planner.nearest_free_cell(pt("0.1000000000000000001", "0.1")), (std::pair<std::size_t, std::size_t>{1, 0}));
   EXPECT_EQ(planner.nearest_free_cell(pt("0.25", "0.3")), (std::pair<std::size_t, std::size_t>{2, 2}));
@@ -232,20 +232,32 @@ TEST(RasterPlanner, NearestFreeCellSearchesPastBlockedRings) {
   // Everything blocked but the top-right cell: the search walks out to the last ring.
   const World world = world_from(R"({"bounds": [0, 0, 5, 5], "obstacles": [[[0, 0], [5, 0], [5, 4], [4, 4], [4, 5], [0, 5]]]})");
   const CSpace cspace(world);
-  const Raster raster = rasterize(cspace, 5);
-  ASSERT_EQ(raster.blocked_count(), 24u);
-  const RasterPlanner planner(raster, cspace);
+  const RasterPlanner planner(cspace, RasterOptions{5});
+  ASSERT_EQ(planner.raster().blocked_count(), 24u);
   EXPECT_EQ(planner.nearest_free_cell(pt("0", "0")), (std::pair<std::size_t, std::size_t>{4, 4}));
   const World full = world_from(R"({"bounds": [0, 0, 5, 5], "obstacles": [[[0, 0], [5, 0], [5, 5], [0, 5]]]})");
   const CSpace full_cspace(full);
-  const Raster all_blocked = rasterize(full_cspace, 5);
-  EXPECT_EQ(RasterPlanner(all_blocked, full_cspace).nearest_free_cell(pt("1", "1")), std::nullopt);
+  EXPECT_EQ(RasterPlanner(full_cspace, RasterOptions{5}).nearest_free_cell(pt("1", "1")), std::nullopt);
 }
 
-TEST(RasterPlanner, RasterOfAnotherWorldIsRejected) {
-  const World a = world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": []})");
-  const World b = world_from(R"({"bounds": [0, 0, 5, 4], "obstacles": []})");
-  const CSpace ca(a), cb(b);
-  const Raster raster = rasterize(ca, 4);
-  EXPECT_THROW(RasterPlanner(raster, cb), std::invalid_argument);
+TEST(RasterPlanner, AWorldWithoutBoundsOrAZeroResolutionIsRefused) {
+  const CSpace unbounded(world_from(R"({"obstacles": [[[0, 0], [1, 0], [1, 1]]]})"));
+  EXPECT_THROW(RasterPlanner(unbounded, RasterOptions{10}), InputError);
+  const CSpace bounded(world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": []})"));
+  EXPECT_THROW(RasterPlanner(bounded, RasterOptions{0}), InputError);
+}
+
+TEST(RasterPlanner, RecordsTheCellsAndTheExpandedCentresForPictures) {
+  const CSpace cspace(world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [[[1, 1], [2, 1], [2, 2], [1, 2]]]})"));
+  RasterPlanner planner(cspace, RasterOptions{4});
+  const Report plain = planner.plan({pt("0.5", "0.5"), pt("3.5", "3.5"), "q"});
+  EXPECT_FALSE(plain.cells);
+  EXPECT_TRUE(plain.expanded.empty());
+  const Report recorded = planner.plan({pt("0.5", "0.5"), pt("3.5", "3.5"), "q"}, QueryOptions{true});
+  ASSERT_TRUE(recorded.cells);
+  EXPECT_EQ(recorded.cells->columns, 4u);
+  EXPECT_EQ(recorded.cells->state(1, 1), CellGrid::blocked);
+  EXPECT_EQ(recorded.cells->state(0, 0), CellGrid::free);
+  EXPECT_EQ(static_cast<std::int64_t>(recorded.expanded.size()), recorded.facts.count("search.expanded"));
+  EXPECT_EQ(recorded.path, plain.path);
 }

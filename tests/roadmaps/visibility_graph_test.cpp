@@ -1,6 +1,9 @@
-// The visibility graph's paths against an independent brute force: every pair of free-space
-// boundary vertices joined when check_path accepts the segment, then Dijkstra.
+// The visibility graph's paths against an independent brute force (every pair of free-space
+// boundary vertices joined when check_path accepts the segment, then Dijkstra), on the exactness
+// worlds, and on the MovingAI maps against Polyanya's Euclidean lengths (data/movingai).
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/io/movingai_map.hpp>
+#include <polyplan/io/movingai_scenario.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include "world_fixtures.hpp"
@@ -21,6 +24,10 @@ namespace {
 double length(const ExactPoint& a, const ExactPoint& b) {
   return std::hypot(to_double(a.x) - to_double(b.x), to_double(a.y) - to_double(b.y));
 }
+
+using Report = PlanReport<ExactPoint>;
+
+Query between(const ExactPoint& start, const ExactPoint& goal) { return Query{start, goal, "q"}; }
 
 double path_length(const std::vector<ExactPoint>& path) {
   double total = 0;
@@ -83,9 +90,9 @@ std::string random_world(std::mt19937& rng, int obstacles, const std::string& ro
 TEST(VisibilityGraph, AroundOneSquare) {
   const CSpace c(world_from(R"({"obstacles": [[[1, 1], [3, 1], [3, 3], [1, 3]]]})"));
   VisibilityGraph graph(c);
-  EXPECT_EQ(graph.facts().vertices, 4u);
-  EXPECT_EQ(graph.facts().edges, 4u);  // the sides; the diagonals cross the square
-  const Plan plan = graph.plan(pt("0", "0"), pt("4", "4"));
+  const Report plan = graph.plan(between(pt("0", "0"), pt("4", "4")));
+  EXPECT_EQ(plan.facts.count("roadmap.vertices"), 4);
+  EXPECT_EQ(plan.facts.count("roadmap.edges"), 4);  // the sides; the diagonals cross the square
   ASSERT_TRUE(plan.found);
   EXPECT_NEAR(plan.length, 2 * std::hypot(1, 3), 1e-12);
   EXPECT_EQ(plan.path.size(), 3u);
@@ -107,9 +114,9 @@ TEST(VisibilityGraph, MatchesBruteForceOnRandomWorlds) {
       const ExactPoint g{Rational(coordinate(rng), 10), Rational(coordinate(rng), 10)};
       if (cspace.locate(s).kind == Location::Kind::blocked || cspace.locate(g).kind == Location::Kind::blocked) continue;
       SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
-      Plan plan;
+      Report plan;
       try {
-        plan = graph.plan(s, g);
+        plan = graph.plan(between(s, g));
       } catch (const std::exception& e) {
         FAIL() << e.what() << " from " << to_string(s.x) << "," << to_string(s.y) << " to " << to_string(g.x) << ","
                << to_string(g.y) << " in " << text;
@@ -131,11 +138,11 @@ namespace {
 
 World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name); }
 
-std::vector<Plan> plan_all(const World& world, VisibilityKind kind = VisibilityKind::reduced) {
+std::vector<Report> plan_all(const World& world, VisibilityKind kind = VisibilityKind::reduced) {
   const CSpace cspace(world);
   VisibilityGraph graph(cspace, kind);
-  std::vector<Plan> plans;
-  for (const Query& q : world.queries) plans.push_back(graph.plan(q.start, q.goal));
+  std::vector<Report> plans;
+  for (const Query& q : world.queries) plans.push_back(graph.plan(q));
   return plans;
 }
 
@@ -154,7 +161,7 @@ TEST(VisibilityGraph, DecimalApexesOnTheSegmentAreGrazedNotHit) {
 
 TEST(VisibilityGraph, ExactFitCorridorIsClosedAndOneBillionthWiderIsOpen) {
   EXPECT_FALSE(plan_all(shipped("corridor_exact.json"))[0].found);
-  const Plan wide = plan_all(shipped("corridor_wide.json"))[0];
+  const Report wide = plan_all(shipped("corridor_wide.json"))[0];
   ASSERT_TRUE(wide.found);
   EXPECT_NEAR(wide.length, 15.0, 1e-12);  // straight along y = 4.5, sliding on the lower block
 }
@@ -176,13 +183,13 @@ TEST(VisibilityGraph, CollinearCornersAlongThePath) {
   const CSpace c(world_from(R"({"obstacles": [[[1, 0], [2, 0], [2, 1], [1, 1]], [[2, 3], [3, 3], [3, 4], [2, 4]],
                                               [[5, 4], [6, 4], [6, 5], [5, 5]]]})"));
   VisibilityGraph graph(c);
-  const Plan plan = graph.plan(pt("0", "0"), pt("6", "6"));
+  const Report plan = graph.plan(between(pt("0", "0"), pt("6", "6")));
   ASSERT_TRUE(plan.found);
   EXPECT_NEAR(plan.length, 6 * std::sqrt(2.0), 1e-12);
   // Blocked line: push the middle square onto the diagonal and the path must bend.
   const CSpace blocked(world_from(R"({"obstacles": [[[2.5, 2.5], [3.5, 2.5], [3.5, 3.5], [2.5, 3.5]]]})"));
   VisibilityGraph bent(blocked);
-  const Plan around = bent.plan(pt("0", "0"), pt("6", "6"));
+  const Report around = bent.plan(between(pt("0", "0"), pt("6", "6")));
   ASSERT_TRUE(around.found);
   EXPECT_NEAR(around.length, 2 * std::hypot(3.5, 2.5), 1e-12);
 }
@@ -192,14 +199,14 @@ TEST(VisibilityGraph, TwoPartRobotMatchesBruteForce) {
   const CSpace cspace(world);
   VisibilityGraph graph(cspace);
   const Query& q = world.queries.front();
-  const Plan plan = graph.plan(q.start, q.goal);
+  const Report plan = graph.plan(q);
   const auto expected = brute_force_length(cspace, q.start, q.goal);
   ASSERT_TRUE(plan.found && expected);
   EXPECT_NEAR(plan.length, *expected, 1e-9);
   // The full graph (every visible pair, as courses draw it) finds the same length with more edges.
   VisibilityGraph full(cspace, VisibilityKind::full);
-  EXPECT_NEAR(full.plan(q.start, q.goal).length, *expected, 1e-9);
-  EXPECT_GT(full.facts().edges, graph.facts().edges);
+  EXPECT_NEAR(full.plan(q).length, *expected, 1e-9);
+  EXPECT_GT(full.plan(q).facts.count("roadmap.edges"), plan.facts.count("roadmap.edges"));
 }
 
 TEST(VisibilityGraph, EverySearchFindsAValidPathAndTheOptimalOnesAgree) {
@@ -207,12 +214,74 @@ TEST(VisibilityGraph, EverySearchFindsAValidPathAndTheOptimalOnesAgree) {
   const CSpace cspace(world);
   VisibilityGraph graph(cspace);
   const Query& q = world.queries.front();
-  const double optimal = graph.plan(q.start, q.goal, {Search::astar}).length;
-  EXPECT_DOUBLE_EQ(graph.plan(q.start, q.goal, {Search::dijkstra}).length, optimal);
+  const double optimal = graph.plan(q, SearchOptions{Search::astar}).length;
+  EXPECT_DOUBLE_EQ(graph.plan(q, SearchOptions{Search::dijkstra}).length, optimal);
   for (Search s : {Search::bfs, Search::dfs, Search::greedy, Search::wastar}) {
-    const Plan p = graph.plan(q.start, q.goal, {s, 2.0});
+    const Report p = graph.plan(q, SearchOptions{s, 2.0});
     ASSERT_TRUE(p.found) << to_string(s);
     EXPECT_GE(p.length, optimal - 1e-9) << to_string(s);  // plan() checked the path exactly
   }
-  EXPECT_LE(graph.plan(q.start, q.goal, {Search::wastar, 2.0}).length, 2 * optimal);
+  EXPECT_LE(graph.plan(q, SearchOptions{Search::wastar, 2.0}).length, 2 * optimal);
+}
+
+namespace {
+
+const std::string kBenchmarks = POLYPLAN_SOURCE_DIR "/data/movingai";
+
+struct Outcome {
+  std::size_t queries = 0, mismatches = 0;
+  double max_difference = 0;
+};
+
+// Every `stride`-th query of the map's scenario file, compared with the reference to 1e-9 relative.
+Outcome run_map(const std::string& name, std::size_t stride) {
+  const GridMap map = read_movingai_map(kBenchmarks + "/maps/" + name + ".map");
+  const CSpace cspace(world_from_grid(map));
+  VisibilityGraph graph(cspace);
+  const auto scenarios = read_scenarios(kBenchmarks + "/scenarios/" + name + ".map.scen");
+  const auto reference = read_reference_lengths(kBenchmarks + "/reference/" + name + ".csv");
+  Outcome outcome;
+  for (std::size_t i = 0; i < scenarios.size(); i += stride) {
+    if (i >= reference.size() || !reference[i]) continue;
+    const ScenarioQuery& q = scenarios[i];
+    const Report plan = graph.plan(between({q.start_x, q.start_y}, {q.goal_x, q.goal_y}));
+    const double expected = *reference[i];
+    ++outcome.queries;
+    if (plan.found) {  // an independent exact check, on the arrangement rather than the triangulation
+      const PathCheck check = check_path(cspace, plan.path);
+      EXPECT_TRUE(check.valid) << name << " query " << i << ": " << check.reason;
+    }
+    if (expected < 0) {
+      if (plan.found) ++outcome.mismatches;
+      continue;
+    }
+    const double difference = plan.found ? std::abs(plan.length - expected) : INFINITY;
+    outcome.max_difference = std::max(outcome.max_difference, difference);
+    if (difference > 1e-9 * std::max(1.0, expected)) {
+      ++outcome.mismatches;
+      ADD_FAILURE() << name << " query " << i << ": length " << plan.length << " (found " << plan.found
+                    << "), reference " << expected;
+    }
+  }
+  return outcome;
+}
+
+}  // namespace
+
+TEST(VisibilityGraphOnMovingAi, ArenaMatchesTheReferenceEverywhere) {
+  const Outcome o = run_map("arena", 1);
+  EXPECT_GE(o.queries, 150u);
+  EXPECT_EQ(o.mismatches, 0u);
+}
+
+TEST(VisibilityGraphOnMovingAi, Den312dMatchesTheReferenceEverywhere) {
+  const Outcome o = run_map("den312d", 1);
+  EXPECT_GE(o.queries, 300u);
+  EXPECT_EQ(o.mismatches, 0u);
+}
+
+TEST(VisibilityGraphOnMovingAi, Lak303dSampleMatchesTheReference) {
+  const Outcome o = run_map("lak303d", 10);
+  EXPECT_GE(o.queries, 100u);
+  EXPECT_EQ(o.mismatches, 0u);
 }

@@ -1,0 +1,64 @@
+// polyplan planners [--json FILE|-]: every registered planner with its description and options.
+#include "cli/command.hpp"
+
+#include <polyplan/arm/arm_registry.hpp>
+#include <polyplan/roadmaps/registry.hpp>
+
+#include <cstdio>
+#include <iostream>
+
+namespace polyplan::cli {
+namespace {
+
+struct PlannersCommand {
+  std::string json;
+};
+
+template <class Space>
+nlohmann::json space_json(const std::string& command) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& entry : planners<Space>().entries()) {
+    nlohmann::json options = nlohmann::json::array();
+    for (const OptionInfo& o : entry.options)
+      options.push_back({{"name", o.name}, {"description", o.description}, {"kind", o.kind}, {"default", o.default_value}});
+    list.push_back({{"name", entry.name}, {"description", entry.description}, {"options", options}});
+  }
+  return {{"space", std::string(Space::description)}, {"command", command}, {"planners", list}};
+}
+
+void print_space(const nlohmann::json& space) {
+  std::cout << "Planners for " << space["space"].get<std::string>() << " (" << space["command"].get<std::string>() << "):\n";
+  for (const auto& planner : space["planners"]) {
+    std::printf("  %-16s %s\n", planner["name"].get<std::string>().c_str(), planner["description"].get<std::string>().c_str());
+    for (const auto& o : planner["options"]) {
+      const std::string flag = "--" + o["name"].get<std::string>() + " " + o["kind"].get<std::string>();
+      std::printf("      %-44s %s (default %s)\n", flag.c_str(), o["description"].get<std::string>().c_str(),
+                  o["default"].get<std::string>().c_str());
+    }
+  }
+}
+
+int run_planners(const PlannersCommand& command) {
+  const nlohmann::json spaces = nlohmann::json::array({space_json<TranslatingRobot>("polyplan plan WORLD.json --planner NAME"),
+                                                       space_json<PlanarArm>("polyplan arm ARM.json --method NAME")});
+  if (!command.json.empty()) write_json(spaces, command.json);
+  if (command.json != "-") {
+    for (std::size_t i = 0; i < spaces.size(); ++i) {
+      if (i > 0) std::cout << '\n';
+      print_space(spaces[i]);
+    }
+    std::cout << "\nSet an option as --NAME VALUE or --option NAME=VALUE (true-or-false options: --NAME, --no-NAME).\n";
+  }
+  return ok;
+}
+
+}  // namespace
+
+void add_planners_command(CLI::App& app, Action& run) {
+  auto command = std::make_shared<PlannersCommand>();
+  CLI::App* planners = app.add_subcommand("planners", "List every planner with its description and options");
+  planners->add_option("--json", command->json, "Write the list as JSON to this file ('-' for standard output)");
+  planners->callback([command, &run] { run = [command] { return run_planners(*command); }; });
+}
+
+}  // namespace polyplan::cli

@@ -1,0 +1,22 @@
+#pragma once
+// How `plan` and `arm` print reports: roadmaps/plan_json.hpp's object per query (an object for
+// one query, an array for several), and for people one line per query.
+#include <polyplan/roadmaps/plan_report.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+
+namespace polyplan::cli {
+
+// "NAME: length 118.944400, 5 segment(s), astar expanded 9 of 26 generated, roadmap 58 vertices
+// 108 edges", from the shared facts (roadmaps/plan_report.hpp) that the report has; or
+// "NAME: no path (WHY)". `steps` names what lies between path entries ("segment", "motion").
+template <class Configuration>
+std::string report_line(const std::string& query, const PlanReport<Configuration>& report, const std::string& unit,
+                        const std::string& steps);
+
+// One answer per query: the object itself for one, an array for several.
+nlohmann::json one_or_array(nlohmann::json answers);
+
+}  // namespace polyplan::cli

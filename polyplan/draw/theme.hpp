@@ -1,0 +1,60 @@
+#pragma once
+// polyplan's one colour theme: every picture takes its colours from here, by role, so that an
+// obstacle, a start or a path looks the same in a world, a C-space, a plan and an arm animation.
+#include <cstddef>
+
+namespace polyplan::theme {
+
+// What is there: obstacles solid blue-grey; C-obstacles translucent orange (the obstacles sit on
+// top of them); where the robot would leave the bounds grey; the bounds a dark line.
+inline constexpr const char* obstacle_fill = "#51606f";
+inline constexpr const char* obstacle_edge = "#2b3440";
+inline constexpr const char* cobstacle_fill = "#f4a259";
+inline constexpr const char* cobstacle_edge = "#c8691c";
+inline constexpr const char* walls_fill = "#8c8c8c";
+inline constexpr const char* bounds = "#222";
+inline constexpr const char* ink = "#222";  // text, frames, ticks
+
+// The free space in pale tints, one per component so that disconnected regions are told apart;
+// the first is the free space's (and the free cells') colour.
+struct Tint {
+  const char* fill;
+  const char* edge;
+};
+inline constexpr Tint free_tints[] = {{"#e3f1e5", "#9cc7a4"}, {"#e2ebf7", "#9db4d6"}, {"#f6eedb", "#d1b682"},
+                                      {"#efe4f3", "#bf9ccb"}, {"#dff1f0", "#8cc2bd"}, {"#f3efe0", "#c2b88c"}};
+
+// Grid cells of a raster: blocked lavender (the obstacles drawn over them stay visible), grid
+// vertices green.
+inline constexpr const char* blocked_cell_fill = "#b9b2c9";
+inline constexpr const char* blocked_cell_edge = "#8d84a3";
+inline constexpr const char* cell_vertex = "#6aa77a";
+inline constexpr const char* not_evaluated_hatch = "#c8c8c8";
+
+// Queries: starts green, goals red; a robot at its start in translucent green.
+inline constexpr const char* start = "#2ca02c";
+inline constexpr const char* goal = "#d62728";
+inline constexpr const char* robot_fill = "#2ca02c";
+inline constexpr const char* robot_edge = "#1b6e1b";
+
+// Plans: roadmap (or tree) blue and thin, expanded vertices amber, paths in the palette's order.
+inline constexpr const char* roadmap = "#2a7ab0";
+inline constexpr const char* expanded_fill = "#f2b701";
+inline constexpr const char* expanded_edge = "#7a5c00";
+inline constexpr const char* path_palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e",
+                                               "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
+inline constexpr std::size_t path_palette_size = sizeof path_palette / sizeof path_palette[0];
+inline const char* path_colour(std::size_t i) { return path_palette[i % path_palette_size]; }
+
+// Arms: the moving arm orange; its start configuration blue and its goal red (a strobe ramps
+// between them); the reach circle, the end effector's trace and the base in greys.
+inline constexpr const char* arm_fill = "#f28e2b";
+inline constexpr const char* arm_edge = "#8a4a0f";
+inline constexpr const char* arm_start = "#1f77b4";
+inline constexpr const char* arm_start_edge = "#14507d";
+inline constexpr const char* arm_goal = "#d62728";
+inline constexpr const char* arm_goal_edge = "#8f1a1b";
+inline constexpr const char* reach = "#9a9a9a";
+inline constexpr const char* trace = "#555";
+
+}  // namespace polyplan::theme

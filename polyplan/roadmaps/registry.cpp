@@ -1,0 +1,19 @@
+#include <polyplan/roadmaps/registry.hpp>
+
+#include <polyplan/roadmaps/raster_planner.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
+
+namespace polyplan {
+
+// Every planner of polygon worlds, one line each, in the order `polyplan planners` lists them.
+template <>
+const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
+  static const PlannerRegistry<TranslatingRobot> registry{
+      visibility_planner_entry(VisibilityKind::reduced),
+      visibility_planner_entry(VisibilityKind::full),
+      raster_planner_entry(),
+  };
+  return registry;
+}
+
+}  // namespace polyplan

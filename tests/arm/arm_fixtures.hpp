@@ -1,0 +1,45 @@
+#pragma once
+// Small helpers shared by the arm/ tests (and the arm reader's): arms, obstacles and data files
+// described inline.
+#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/arm_problem.hpp>
+#include <polyplan/geometry/rational.hpp>
+#include <polyplan/geometry/world.hpp>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace polyplan::test {
+
+inline constexpr double kPi = two_pi / 2;
+
+// The next double above / below x: "one ulp beside".
+inline double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+inline double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+
+inline Ring ring(const std::vector<std::pair<double, double>>& points) {
+  Ring r;
+  for (auto [x, y] : points) r.push_back({Rational(x), Rational(y)});
+  return r;
+}
+
+// The axis-aligned square of half-side `half` centred at (cx, cy).
+inline PolygonWithHoles square(double half, double cx = 0, double cy = 0) {
+  return {ring({{cx - half, cy - half}, {cx + half, cy - half}, {cx + half, cy + half}, {cx - half, cy + half}}), {}};
+}
+
+inline Arm arm_of(std::vector<double> links, double width = 0, bool self_collision = false) {
+  Arm arm;
+  arm.links = std::move(links);
+  arm.link_width = width;
+  arm.self_collision = self_collision;
+  return arm;
+}
+
+// A shipped arm file: data/arms/<name>.
+inline std::string arm_data_file(const std::string& name) { return std::string(POLYPLAN_SOURCE_DIR) + "/data/arms/" + name; }
+
+}  // namespace polyplan::test
