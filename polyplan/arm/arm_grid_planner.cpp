@@ -100,20 +100,23 @@ JointAngles normalized(const JointAngles& q) {
   return out;
 }
 
-std::int64_t cells_per_axis(const ArmGridOptions& options) {
-  const double cells = 360.0 / options.resolution_degrees;
-  const auto n = static_cast<std::int64_t>(std::llround(cells));
-  if (!(options.resolution_degrees > 0) || !std::isfinite(cells) || n < 3 ||
-      std::fabs(cells - static_cast<double>(n)) > 1e-9 * cells)
-    throw std::invalid_argument("the grid resolution " + std::to_string(options.resolution_degrees) +
-                                " degrees must divide 360 into at least 3 cells");
-  return n;
-}
-
 std::string degrees_text(double degrees) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", degrees);
   return text;
+}
+
+std::int64_t cells_per_axis(const ArmGridOptions& options) {
+  const double cells = 360.0 / options.resolution_degrees;
+  if (!(options.resolution_degrees > 0) || !(cells <= 1 << 30))
+    throw std::invalid_argument("the grid resolution " + degrees_text(options.resolution_degrees) +
+                                " degrees is not a positive angle of at least 360/2^30 degrees");
+  const auto n = static_cast<std::int64_t>(std::llround(cells));
+  if (n < 3 ||
+      std::fabs(cells - static_cast<double>(n)) > 1e-9 * cells)
+    throw std::invalid_argument("the grid resolution " + degrees_text(options.resolution_degrees) +
+                                " degrees must divide 360 into at least 3 cells");
+  return n;
 }
 
 }  // namespace

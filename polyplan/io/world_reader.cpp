@@ -110,6 +110,8 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
     r.warn_unknown(robot, "robot", {"parts"}, warnings);
     const json& parts = r.required(robot, "parts", "robot");
     if (!parts.is_array()) r.fail("robot.parts", "expected a list of polygons");
+    // A robot named without parts is almost certainly a mistake, not a point robot.
+    if (parts.empty()) r.fail("robot.parts", "empty: a robot needs at least one part (leave out \"robot\" for a point robot)");
     for (std::size_t i = 0; i < parts.size(); ++i)
       world.robot.parts.push_back(r.ring(parts[i], "robot.parts[" + std::to_string(i) + "]"));
   }

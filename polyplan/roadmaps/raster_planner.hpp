@@ -28,7 +28,7 @@ namespace polyplan {
 struct RasterOptions {
   std::size_t resolution = 100;                    // cells per side of the bounds (n)
   Connectivity connectivity = Connectivity::full;  // full: 8-connected without corner cutting; axis_aligned: 4
-  SearchOptions search;
+  SearchOptions search{};
 };
 
 class RasterPlanner final : public Planner<TranslatingRobot> {

@@ -39,6 +39,12 @@ inline CliRun run_polyplan(const std::string& arguments) {
   return run;
 }
 
+// Quoted paths of the shipped data, for command lines.
+inline std::string world(const std::string& name) { return "'" + kSource + "/data/worlds/" + name + "'"; }
+inline std::string arm_file(const std::string& name) { return "'" + kSource + "/data/arms/" + name + "'"; }
+inline std::string path_file(const std::string& name) { return "'" + kSource + "/tests/data/paths/" + name + "'"; }
+inline const std::string kMovingAi = kSource + "/data/movingai";
+
 inline std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
 
 }  // namespace polyplan::test

@@ -4,6 +4,7 @@
 
 #include <polyplan/arm/angles.hpp>
 #include <polyplan/arm/arm.hpp>
+#include "draw/svg_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,45 +23,12 @@ using polyplan::ArmPlanPicture;
 using polyplan::ArmProblem;
 using polyplan::JointAngles;
 using polyplan::Rational;
+using polyplan::test::attribute_at;
+using polyplan::test::count;
+using polyplan::test::nesting_error;
+using polyplan::test::numbers_in;
 
 constexpr double kPi = std::numbers::pi;
-
-std::size_t count(const std::string& text, const std::string& needle) {
-  std::size_t n = 0;
-  for (auto pos = text.find(needle); pos != std::string::npos; pos = text.find(needle, pos + 1)) ++n;
-  return n;
-}
-
-// Every start tag closed by its own end tag, in order; self-closing tags, the XML declaration and
-// nothing else. Returns "" when well nested, otherwise what is wrong.
-std::string nesting_error(const std::string& xml) {
-  std::vector<std::string> open;
-  for (std::size_t pos = xml.find('<'); pos != std::string::npos; pos = xml.find('<', pos + 1)) {
-    const std::size_t end = xml.find('>', pos);
-    if (end == std::string::npos) return "unterminated tag at " + std::to_string(pos);
-    const std::string tag = xml.substr(pos + 1, end - pos - 1);
-    if (tag.empty()) return "empty tag";
-    if (tag[0] == '?') continue;
-    if (tag[0] == '/') {
-      const std::string name = tag.substr(1);
-      if (open.empty() || open.back() != name) return "</" + name + "> closes " + (open.empty() ? "nothing" : open.back());
-      open.pop_back();
-      continue;
-    }
-    if (tag.back() == '/') continue;
-    open.push_back(tag.substr(0, tag.find_first_of(" \n")));
-  }
-  return open.empty() ? "" : "<" + open.back() + "> never closed";
-}
-
-// The value of attribute `name` in the tag starting at `pos`.
-std::string attribute_at(const std::string& svg, std::size_t pos, const std::string& name) {
-  const auto end = svg.find('>', pos);
-  const auto at = svg.find(" " + name + "=\"", pos);
-  if (at == std::string::npos || at > end) return {};
-  const auto begin = at + name.size() + 3;
-  return svg.substr(begin, svg.find('"', begin) - begin);
-}
 
 // Every occurrence's start position of `needle`.
 std::vector<std::size_t> positions(const std::string& text, const std::string& needle) {
@@ -77,16 +45,6 @@ std::vector<std::string> split(const std::string& text, char separator) {
   return out;
 }
 
-std::vector<double> numbers(const std::string& text) {
-  std::vector<double> out;
-  std::string cleaned = text;
-  for (char& c : cleaned)
-    if (c == 'M' || c == 'L' || c == 'H' || c == 'V' || c == 'Z' || c == ',' || c == ';' || c == '(' || c == ')') c = ' ';
-  std::istringstream in(cleaned);
-  for (double v; in >> v;) out.push_back(v);
-  return out;
-}
-
 // One rotation keyframe "angle cx cy" of an animateTransform.
 struct Rotation {
   double degrees, cx, cy;
@@ -97,7 +55,7 @@ std::vector<std::vector<Rotation>> link_keyframes(const std::string& svg) {
   for (std::size_t pos : positions(svg, "<animateTransform")) {
     std::vector<Rotation> frames;
     for (const std::string& v : split(attribute_at(svg, pos, "values"), ';')) {
-      const auto n = numbers(v);
+      const auto n = numbers_in(v);
       if (n.size() == 3) frames.push_back({n[0], n[1], n[2]});
     }
     out.push_back(frames);
@@ -183,7 +141,7 @@ TEST(ArmAnimationSvg, KeyframesFollowTheMotionSubsampledWithRestsAtBothEnds) {
     const std::string svg = polyplan::arm_animation_svg(picture);
     for (std::size_t pos : positions(svg, "<animateTransform")) {
       const auto values = split(attribute_at(svg, pos, "values"), ';');
-      const auto times = numbers(attribute_at(svg, pos, "keyTimes"));
+      const auto times = numbers_in(attribute_at(svg, pos, "keyTimes"));
       // The kept configurations, the first and the last once more for the rests.
       EXPECT_EQ(values.size(), std::size_t(expected) + 2) << configurations;
       ASSERT_EQ(times.size(), values.size());
@@ -250,7 +208,7 @@ TEST(ArmAnimationSvg, NestedRotationsPutTheEndEffectorWhereKinematicsSays) {
   // Without animation (rsvg-convert) the groups' own transforms show the start.
   const auto first_group = positions(svg, "class=\"arm-link\"");
   for (std::size_t j = 0; j < 3; ++j) {
-    const auto n = numbers(attribute_at(svg, first_group[j], "transform").substr(6));
+    const auto n = numbers_in(attribute_at(svg, first_group[j], "transform").substr(6));
     ASSERT_EQ(n.size(), 3u);
     EXPECT_NEAR(std::remainder(n[0] + start[j] * 180 / kPi, 360), 0, 1e-5);  // −0.3 may show as 2π − 0.3
   }
@@ -265,7 +223,7 @@ TEST(ArmAnimationSvg, CSpacePathIsCutWhereItCrossesASeam) {
     EXPECT_NE(group, std::string::npos);
     std::vector<std::vector<double>> pieces;
     for (auto pos = svg.find("<path", group); pos < svg.find("</g>", group); pos = svg.find("<path", pos + 1)) {
-      pieces.push_back(numbers(attribute_at(svg, pos, "d")));
+      pieces.push_back(numbers_in(attribute_at(svg, pos, "d")));
     }
     return pieces;
   };
@@ -297,9 +255,9 @@ TEST(ArmAnimationSvg, CSpaceDotJumpsAcrossTheSeamInStepWithTheArm) {
   const auto dot = svg.find("class=\"cspace-dot\"");
   ASSERT_NE(dot, std::string::npos);
   const auto cy_at = svg.find("attributeName=\"cy\"", dot);
-  const auto ys = numbers(attribute_at(svg, cy_at, "values"));
-  const auto times = numbers(attribute_at(svg, cy_at, "keyTimes"));
-  const auto arm_times = numbers(attribute_at(svg, svg.find("<animateTransform"), "keyTimes"));
+  const auto ys = numbers_in(attribute_at(svg, cy_at, "values"));
+  const auto times = numbers_in(attribute_at(svg, cy_at, "keyTimes"));
+  const auto arm_times = numbers_in(attribute_at(svg, svg.find("<animateTransform"), "keyTimes"));
   // The arm's keyframes plus two at the seam: leaving at the top and entering at the bottom at
   // the same moment.
   ASSERT_EQ(ys.size(), motion.size() + 2 + 2);
@@ -346,7 +304,7 @@ TEST(ArmAnimationSvg, CellsAreMergedIntoRunsOfEqualState) {
     rects += count(d, "M");
     double total = 0;
     for (const std::string& ring : split(d, 'Z')) {
-      const auto xy = numbers(ring);  // "M x0 y0 H x1 V y1 H x0 Z"
+      const auto xy = numbers_in(ring);  // "M x0 y0 H x1 V y1 H x0 Z"
       if (xy.size() != 5) continue;
       total += std::abs(xy[2] - xy[0]) * std::abs(xy[3] - xy[1]);
     }

@@ -1,12 +1,12 @@
 // The SVG writer alone: no CGAL, no C-space.
 #include <polyplan/draw/svg.hpp>
+#include "draw/svg_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <limits>
 #include <regex>
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -17,35 +17,9 @@ using polyplan::svg::Box2;
 using polyplan::svg::Drawing;
 using polyplan::svg::Point2;
 using polyplan::svg::Style;
-
-std::vector<double> numbers_in(const std::string& text) {
-  std::vector<double> out;
-  std::istringstream in(text);
-  double v;
-  while (in >> v) out.push_back(v);
-  return out;
-}
-
-// The value of attribute `name` of the first <element ...> (std::regex would overflow the stack
-// on a path with thousands of points).
-std::string attribute(const std::string& svg, const std::string& element, const std::string& name) {
-  for (auto pos = svg.find("<" + element); pos != std::string::npos; pos = svg.find("<" + element, pos + 1)) {
-    const char after = svg[pos + 1 + element.size()];
-    if (after != ' ' && after != '>' && after != '/') continue;
-    const auto end = svg.find('>', pos);
-    const auto at = svg.find(" " + name + "=\"", pos);
-    if (at == std::string::npos || at > end) return {};
-    const auto begin = at + name.size() + 3;
-    return svg.substr(begin, svg.find('"', begin) - begin);
-  }
-  return {};
-}
-
-std::size_t count(const std::string& text, const std::string& needle) {
-  std::size_t n = 0;
-  for (auto pos = text.find(needle); pos != std::string::npos; pos = text.find(needle, pos + 1)) ++n;
-  return n;
-}
+using polyplan::test::attribute;
+using polyplan::test::count;
+using polyplan::test::numbers_in;
 
 TEST(SvgDrawing, PictureShowsTheBoxWithASmallMargin) {
   for (const Box2 box : {Box2{0, 0, 10, 5}, Box2{-3, 2, 1, 3}, Box2{1000, -2000, 1001, -1999.5},

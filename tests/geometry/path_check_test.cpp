@@ -95,3 +95,35 @@ TEST(CheckPath, PointsOutsideBoundsAreInvalid) {
   EXPECT_FALSE(r.valid);
   EXPECT_NE(r.reason.find("outside the bounds"), std::string::npos) << r.reason;
 }
+
+TEST(CheckSegment, AgreesWithCheckPathOfTheTwoPoints) {
+  // The planners' segment test is the two-point path: same verdict, reason and segment.
+  const CSpace pinch(world_from(R"({"bounds": [0, 0, 4, 4],
+                                    "obstacles": [[[0, 2], [2, 2], [2, 4], [0, 4]], [[2, 0], [4, 0], [4, 2], [2, 2]]]})"));
+  const CSpace square(world_from(kUnitSquareAt1));
+  struct Case {
+    const CSpace* cspace;
+    ExactPoint a, b;
+    bool valid;
+  };
+  const std::vector<Case> cases{
+      {&square, pt("1", "3"), pt("3", "1"), true},                      // grazes the corner (2, 2)
+      {&square, pt("0", "1"), pt("3", "1"), true},                      // slides along the bottom edge
+      {&square, pt("0", "0"), pt("0", "0"), true},                      // stays put in the free space
+      {&square, pt("0", "0"), pt("3", "3"), false},                     // through the obstacle
+      {&square, pt("1", "2.9999999999"), pt("2.9999999999", "1"), false},  // cuts the corner
+      {&square, pt("3/2", "3/2"), pt("3", "3"), false},                 // starts inside
+      {&pinch, pt("1", "1"), pt("2", "2"), true},                       // reaches the pinch point
+      {&pinch, pt("1", "1"), pt("3", "3"), false},                      // passes through it
+      {&pinch, pt("1", "1"), pt("5", "1"), false},                      // leaves the bounds
+  };
+  for (const Case& c : cases) {
+    const PathCheck segment = check_segment(*c.cspace, c.a, c.b);
+    const PathCheck path = check_path(*c.cspace, {c.a, c.b});
+    EXPECT_EQ(segment.valid, c.valid) << to_string(c.a) << "-" << to_string(c.b) << ": " << segment.reason;
+    EXPECT_EQ(segment.valid, path.valid) << to_string(c.a) << "-" << to_string(c.b);
+    EXPECT_EQ(segment.reason, path.reason);
+    EXPECT_EQ(segment.segment, path.segment);
+    EXPECT_EQ(segment.valid, segment.reason.empty()) << segment.reason;
+  }
+}

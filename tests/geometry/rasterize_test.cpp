@@ -13,6 +13,7 @@
 #include <utility>
 
 using namespace polyplan;
+using polyplan::test::signed_area;
 using polyplan::test::world_from;
 
 namespace {
@@ -43,16 +44,6 @@ Ring clip(const Ring& ring, const Rational& at, bool vertical, bool keep_above) 
     }
   }
   return out;
-}
-
-Rational signed_area(const Ring& ring) {
-  Rational twice = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const ExactPoint& a = ring[i];
-    const ExactPoint& b = ring[(i + 1) % ring.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return twice / 2;
 }
 
 // Area of the C-obstacles inside the closed square [x0, x1] × [y0, y1]: outer rings count positive

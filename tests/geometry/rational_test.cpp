@@ -49,3 +49,9 @@ TEST(ToDouble, RoundsToNearest) {
   EXPECT_EQ(polyplan::to_double(Rational(-7, 10)), -0.7);
   EXPECT_EQ(polyplan::to_double(*parse_rational("0.30000000000000004")), 0.30000000000000004);
 }
+
+TEST(ToString, PointsAreNamedAsMessagesNameThem) {
+  EXPECT_EQ(polyplan::to_string(polyplan::ExactPoint{Rational(3, 2), Rational(-7)}), "[3/2, -7]");
+  EXPECT_EQ(polyplan::to_string(polyplan::ExactPoint{*parse_rational("0.75"), *parse_rational("-2/6")}), "[3/4, -1/3]");
+  EXPECT_EQ(polyplan::to_string(polyplan::ExactPoint{Rational(0), *parse_rational("1e3")}), "[0, 1000]");
+}

@@ -1,9 +1,12 @@
+// parse_world and read_world (io/world_reader.cpp): every field read exactly from its text.
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/io/world_reader.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
 using namespace polyplan;
+using polyplan::test::input_error_of;
 using polyplan::test::pt;
 using polyplan::test::world_from;
 
@@ -31,39 +34,33 @@ TEST(WorldReader, ReadsEveryFieldExactly) {
   EXPECT_NE(warnings[0].find("unknown field \"colour\""), std::string::npos);
 }
 
-TEST(WorldReader, NormalisesOrientationSilently) {
-  // Clockwise outer boundary and counter-clockwise hole: both get turned around.
-  const World w = world_from(R"({"obstacles": [{"outer": [[0, 0], [0, 6], [6, 6], [6, 0]],
-                                               "holes": [[[2, 2], [4, 2], [4, 4], [2, 4]]]}]})");
-  const Ring& outer = w.obstacles[0].outer;
-  EXPECT_EQ(outer[1], pt("6", "6"));  // reversed: (6,0) (6,6) (0,6) (0,0)
-  const Ring& hole = w.obstacles[0].holes[0];
-  EXPECT_EQ(hole[1], pt("4", "4"));  // reversed: (2,4) (4,4) (4,2) (2,2)
+TEST(WorldReader, ValidatesWhatItReads) {
+  // The geometry is checked by validate_world (tests/geometry/world_validation_test.cpp); the
+  // reader names its file and orients what it returns.
+  EXPECT_EQ(input_error_of([] { world_from(R"({"obstacles": [[[0, 0], [2, 2], [2, 0], [0, 2]]]})"); }),
+            "test.json: obstacles[0]: self-intersecting: edge 0 [0, 0]-[2, 2] crosses edge 2 [2, 0]-[0, 2]");
+  const World w = world_from(R"({"obstacles": [[[0, 0], [0, 1], [1, 1], [1, 0]]]})");
+  EXPECT_EQ(w.obstacles[0].outer, (Ring{pt("1", "0"), pt("1", "1"), pt("0", "1"), pt("0", "0")}));
 }
 
-TEST(WorldReader, DropsRepeatedVertices) {
-  const World w = world_from(R"({"obstacles": [[[0, 0], [1, 0], [1, 0], [1, 1], [0, 0]]]})");
-  EXPECT_EQ(w.obstacles[0].outer.size(), 3u);
+TEST(WorldReader, RobotWithoutPartsIsAnError) {
+  // A point robot leaves out "robot"; an empty list of parts is a mistake, not a point robot.
+  EXPECT_EQ(input_error_of([] { world_from(R"({"obstacles": [], "robot": {"parts": []}})"); }),
+            "test.json: robot.parts: empty: a robot needs at least one part (leave out \"robot\" for a point robot)");
+  EXPECT_TRUE(world_from(R"({"obstacles": []})").robot.is_point());
 }
 
-TEST(WorldReader, NamesTheCrossingEdges) {
-  try {
-    world_from(R"({"obstacles": [[[0, 0], [1, 0]], [[0, 0], [2, 2], [2, 0], [0, 2]]]})");
-    FAIL() << "accepted a two-vertex polygon";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("obstacles[0]: fewer than 3 distinct vertices"), std::string::npos) << e.what();
-  }
-  try {
-    world_from(R"({"obstacles": [[[0, 0], [2, 2], [2, 0], [0, 2]]]})");
-    FAIL() << "accepted a bow-tie";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("test.json: obstacles[0]: self-intersecting: edge 0 [0, 0]-[2, 2] crosses edge 2 [2, 0]-[0, 2]"),
-              std::string::npos)
-        << e.what();
-  }
+TEST(WorldReader, ReadsWktObstaclesBesideTheWorldFile) {
+  // data/worlds/wkt_obstacles.json names "wkt_obstacles.wkt", relative to its own folder.
+  const World w = read_world(polyplan::test::data_file("worlds/wkt_obstacles.json"));
+  ASSERT_EQ(w.obstacles.size(), 3u);
+  EXPECT_EQ(w.obstacle_names, (std::vector<std::string>{"wkt_obstacles.wkt polygon 0", "wkt_obstacles.wkt polygon 1",
+                                                         "wkt_obstacles.wkt polygon 2"}));
+  EXPECT_EQ(w.queries.size(), 2u);
+  EXPECT_EQ(w.queries[1].start, pt("7", "3"));
 }
 
-TEST(WorldReader, SpikeIsNotSimple) {
-  // Edges 1 and 2 fold back over each other along y = 0.
-  EXPECT_THROW(world_from(R"({"obstacles": [[[0, 0], [2, 0], [1, 0], [1, 1]]]})"), InputError);
+TEST(WorldReader, ReadsAPathFile) {
+  EXPECT_EQ(read_path(std::string(POLYPLAN_SOURCE_DIR) + "/tests/data/paths/touching_corners_touch_and_back.json"),
+            (std::vector<ExactPoint>{pt("1", "1"), pt("2", "2"), pt("1", "1.5")}));
 }

@@ -14,8 +14,6 @@ namespace {
 using namespace polyplan::test;
 namespace fs = std::filesystem;
 
-std::string arm_file(const std::string& name) { return "'" + kSource + "/data/arms/" + name + "'"; }
-
 TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
   const CliRun torus = run_polyplan("arm " + arm_file("two_link_points.json") + " --method grid --resolution 5 --query hard --json -");
   ASSERT_EQ(torus.exit_code, 0) << torus.err;
@@ -79,6 +77,40 @@ TEST(ArmCommand, BadInputIsOneLineNamingTheProblem) {
   const CliRun missing = run_polyplan("arm /nonexistent/arm.json");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("/nonexistent/arm.json"), std::string::npos) << missing.err;
+}
+
+}  // namespace
+
+namespace {
+
+TEST(ArmCommand, OptionsAndTheOldFlagsSetTheSamePlanner) {
+  const CliRun flags = run_polyplan("arm " + arm_file("two_link_points.json") + " --method grid --resolution 10 --no-torus --eager --json -");
+  const CliRun options = run_polyplan("arm " + arm_file("two_link_points.json") + " --planner grid --option resolution=10 "
+                                     "--option torus=false --option evaluation=eager --json -");
+  ASSERT_EQ(flags.exit_code, 0) << flags.err;
+  ASSERT_EQ(options.exit_code, 0) << options.err;
+  const auto a = nlohmann::json::parse(flags.out), b = nlohmann::json::parse(options.out);
+  ASSERT_EQ(a.size(), 3u);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i]["grid"]["resolution_degrees"], 10.0);
+    EXPECT_EQ(a[i]["grid"]["torus"], false);
+    EXPECT_EQ(a[i]["grid"]["evaluation"], "eager");
+    EXPECT_EQ(a[i]["cells_evaluated"], 36 * 36);
+    EXPECT_EQ(a[i]["path"], b[i]["path"]);
+  }
+}
+
+TEST(ArmCommand, PathsAreCertifiedAndCheckResolutionNoLongerSamples) {
+  const CliRun run = run_polyplan("arm " + arm_file("two_link_points.json") + " --query easy --check-resolution 0.5 --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.err.find("--check-resolution is ignored"), std::string::npos) << run.err;
+  const auto j = nlohmann::json::parse(run.out);
+  EXPECT_EQ(j["certified"], true);
+  EXPECT_NE(j["certified_by"].get<std::string>().find("conservative advancement"), std::string::npos);
+  EXPECT_TRUE(j.contains("moves_uncertified"));
+  const CliRun both = run_polyplan("arm " + arm_file("two_link_points.json") + " --evaluation eager --eager");
+  EXPECT_EQ(both.exit_code, 2);
+  EXPECT_NE(both.err.find("given twice"), std::string::npos) << both.err;
 }
 
 }  // namespace

@@ -1,32 +1,17 @@
-// C-obstacles against Minkowski sums worked out by hand.
+// CSpace (geometry/cspace.cpp): C-obstacles against Minkowski sums worked out by hand, solids,
+// bounds as walls, point location and the words that say why a query is not free.
 #include <polyplan/geometry/cspace.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 using namespace polyplan;
+using polyplan::test::area;
 using polyplan::test::canonical;
 using polyplan::test::pt;
 using polyplan::test::world_from;
-
-namespace {
-
-Rational area(const Ring& ring) {
-  Rational twice = 0;
-  for (std::size_t i = 0; i < ring.size(); ++i) {
-    const auto &a = ring[i], &b = ring[(i + 1) % ring.size()];
-    twice += a.x * b.y - b.x * a.y;
-  }
-  return twice / 2;
-}
-
-Rational area(const PolygonWithHoles& p) {
-  Rational a = area(p.outer);
-  for (const auto& h : p.holes) a += area(h);  // holes are clockwise
-  return a;
-}
-
-}  // namespace
 
 TEST(Minkowski, SquareRobotAroundSquare) {
   // Robot [0,1]^2 with its reference at the lower-left corner: the obstacle [0,2]^2 grows by the
@@ -129,4 +114,105 @@ TEST(CSpace, ExactFitCorridorClosesAndOneBillionthMoreOpensIt) {
   EXPECT_EQ(wider.locate(pt("5", "4.5")).kind, Location::Kind::contact);  // on the lower wall's C-obstacle
   EXPECT_EQ(wider.locate(pt("5", "4.5000000005")).kind, Location::Kind::free);
   EXPECT_NE(exact.collision_at(pt("5", "4.5"))->find("only exactly"), std::string::npos);
+}
+
+namespace {
+
+// A point robot in [0, 4]^2 with the unit obstacle [1, 2]^2.
+const char* kSquareInABox = R"({"bounds": [0, 0, 4, 4], "obstacles": [[[1, 1], [2, 1], [2, 2], [1, 2]]]})";
+
+Query query(const ExactPoint& start, const ExactPoint& goal) { return {start, goal, "q"}; }
+
+}  // namespace
+
+TEST(QueryNotFree, NamesTheStartAndTheObstacleItIsInside) {
+  const CSpace c(world_from(kSquareInABox));
+  EXPECT_EQ(c.query_not_free(query(pt("3/2", "3/2"), pt("3", "3"))),
+            "the start [3/2, 3/2] is not free: it is inside obstacles[0]");
+}
+
+TEST(QueryNotFree, NamesTheGoalOutsideTheBounds) {
+  const CSpace c(world_from(kSquareInABox));
+  EXPECT_EQ(c.query_not_free(query(pt("1/2", "1/2"), pt("5", "-1/3"))),
+            "the goal [5, -1/3] is not free: it is outside the bounds");
+}
+
+TEST(QueryNotFree, TheStartIsNamedBeforeTheGoal) {
+  const CSpace c(world_from(kSquareInABox));
+  EXPECT_EQ(c.query_not_free(query(pt("7", "0"), pt("1.5", "1.5"))),
+            "the start [7, 0] is not free: it is outside the bounds");
+}
+
+TEST(QueryNotFree, ContactIsFree) {
+  // On an obstacle's edge, at its corner, on the bounds: the closure of the free space.
+  const CSpace c(world_from(kSquareInABox));
+  EXPECT_EQ(c.query_not_free(query(pt("1", "3/2"), pt("2", "2"))), std::nullopt);
+  EXPECT_EQ(c.query_not_free(query(pt("0", "0"), pt("4", "5/2"))), std::nullopt);
+  EXPECT_EQ(c.query_not_free(query(pt("1/2", "1/2"), pt("3", "3"))), std::nullopt);
+}
+
+TEST(QueryNotFree, ARobotWithExtentOverlapsOrLeavesTheBounds) {
+  // A unit square robot (reference at its lower-left corner) keeps its reference in [0, 3]^2 and
+  // out of the open square (0, 2)^2.
+  const CSpace c(world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [[[1, 1], [2, 1], [2, 2], [1, 2]]],
+                                "robot": {"parts": [[[0, 0], [1, 0], [1, 1], [0, 1]]]}})"));
+  EXPECT_EQ(c.query_not_free(query(pt("1/2", "1/2"), pt("3", "3"))),
+            "the start [1/2, 1/2] is not free: the robot overlaps obstacles[0]");
+  EXPECT_EQ(c.query_not_free(query(pt("3", "0"), pt("3.5", "0"))),
+            "the goal [7/2, 0] is not free: the robot leaves the bounds");
+  EXPECT_EQ(c.query_not_free(query(pt("0", "0"), pt("2", "2"))), std::nullopt);  // touching the obstacle's corner
+}
+
+TEST(Locate, FreePointLiesInOneComponent) {
+  const CSpace c(world_from(kSquareInABox));
+  const Location at = c.locate(pt("1/2", "1/2"));
+  EXPECT_EQ(at.kind, Location::Kind::free);
+  ASSERT_EQ(c.free_components().size(), 1u);
+  EXPECT_EQ(at.components, std::vector<std::size_t>{0});
+  EXPECT_EQ(*c.free_components()[0].area, Rational(15));  // 16 minus the obstacle
+}
+
+TEST(Locate, PointOnAnEdgeIsInContactWithTheComponentBesideIt) {
+  const CSpace c(world_from(kSquareInABox));
+  for (const ExactPoint& p : {pt("1", "3/2"), pt("2", "2"), pt("0", "7/3")}) {
+    const Location at = c.locate(p);
+    EXPECT_EQ(at.kind, Location::Kind::contact) << to_string(p);
+    EXPECT_EQ(at.components, std::vector<std::size_t>{0}) << to_string(p);
+  }
+}
+
+TEST(Locate, PinchPointBetweenTwoComponentsTouchesBoth) {
+  // data/worlds/touching_corners.json: the free squares [0,2]^2 and [2,4]^2 meet only at (2, 2).
+  const CSpace c(world_from(R"({"bounds": [0, 0, 4, 4],
+                                "obstacles": [[[0, 2], [2, 2], [2, 4], [0, 4]], [[2, 0], [4, 0], [4, 2], [2, 2]]]})"));
+  ASSERT_EQ(c.free_components().size(), 2u);
+  for (const FreeComponent& component : c.free_components()) EXPECT_EQ(*component.area, Rational(4));
+  const Location low = c.locate(pt("1", "1")), high = c.locate(pt("3", "3"));
+  ASSERT_EQ(low.components.size(), 1u);
+  ASSERT_EQ(high.components.size(), 1u);
+  EXPECT_NE(low.components[0], high.components[0]);
+  const Location pinch = c.locate(pt("2", "2"));
+  EXPECT_EQ(pinch.kind, Location::Kind::contact);
+  std::vector<std::size_t> touched = pinch.components;
+  std::sort(touched.begin(), touched.end());
+  EXPECT_EQ(touched, (std::vector<std::size_t>{0, 1}));
+}
+
+TEST(Locate, PinchPointInsideOneComponentNamesItOnce) {
+  // Two obstacles touching at a corner in an open world: the free space around them is one
+  // component with two wedges at (1, 1).
+  const CSpace c(world_from(R"({"obstacles": [[[0, 0], [1, 0], [1, 1], [0, 1]], [[1, 1], [2, 1], [2, 2], [1, 2]]]})"));
+  ASSERT_EQ(c.free_components().size(), 1u);
+  const Location pinch = c.locate(pt("1", "1"));
+  EXPECT_EQ(pinch.kind, Location::Kind::contact);
+  EXPECT_EQ(pinch.components, std::vector<std::size_t>{0});
+}
+
+TEST(Locate, InsideAnObstacleOrOutsideTheBoundsIsBlocked) {
+  const CSpace c(world_from(kSquareInABox));
+  for (const ExactPoint& p : {pt("3/2", "3/2"), pt("1.000000001", "1.999999999"), pt("-1/1000", "2"), pt("5", "5")}) {
+    const Location at = c.locate(p);
+    EXPECT_EQ(at.kind, Location::Kind::blocked) << to_string(p);
+    EXPECT_TRUE(at.components.empty()) << to_string(p);
+  }
 }

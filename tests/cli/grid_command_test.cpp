@@ -16,7 +16,7 @@ using polyplan::test::CliRun;
 namespace cli = polyplan::test;  // cli::run_polyplan(ARGUMENTS) runs the program
 namespace fs = std::filesystem;
 
-const std::string kData = POLYPLAN_SOURCE_DIR "/data/movingai";
+const std::string& kData = polyplan::test::kMovingAi;
 const std::string kArena = "'" + kData + "/maps/arena.map' '" + kData + "/scenarios/arena.map.scen'";
 
 TEST(Grid, ArenaJsonHasEveryKeyAndNoMismatch) {

@@ -1,0 +1,25 @@
+# Runs one example program as CTest does (cmake -P): it must exit 0, print every regular
+# expression of EXPECT (a ;-list) on standard output, and write every file of FILES as an SVG.
+#   -DPROGRAM=path -DARGS="a;b" -DEXPECT="regex;regex" -DFILES="out.svg;..." -DWORK_DIR=dir
+file(REMOVE_RECURSE ${WORK_DIR})
+file(MAKE_DIRECTORY ${WORK_DIR})
+execute_process(COMMAND ${PROGRAM} ${ARGS} WORKING_DIRECTORY ${WORK_DIR}
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT code EQUAL 0)
+  message(FATAL_ERROR "${PROGRAM} exited ${code}\n${out}\n${err}")
+endif()
+foreach(expected IN LISTS EXPECT)
+  if(NOT out MATCHES "${expected}")
+    message(FATAL_ERROR "${PROGRAM}: expected \"${expected}\" in its output:\n${out}")
+  endif()
+endforeach()
+foreach(picture IN LISTS FILES)
+  if(NOT EXISTS ${WORK_DIR}/${picture})
+    message(FATAL_ERROR "${PROGRAM} did not write ${picture}")
+  endif()
+  file(READ ${WORK_DIR}/${picture} svg LIMIT 400)
+  if(NOT svg MATCHES "<svg")
+    message(FATAL_ERROR "${PROGRAM}: ${picture} is not an SVG")
+  endif()
+endforeach()
+message(STATUS "${out}")

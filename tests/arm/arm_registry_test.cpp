@@ -1,0 +1,115 @@
+// The conformance test of arm planners: every planner of planners<PlanarArm>() on every arm of
+// data/arms and every query, with its default options. A planner added to the registry is tested
+// here without a test of its own. A found path must begin exactly at the start and end exactly at
+// the goal (normalised), be certified, and be free along every motion by two checks independent
+// of the planner's: the collision checker at dense samples (every 0.01 degrees of the joint that
+// turns most) and certify_motion again. The report must print (plan_json) and draw (draw_plan).
+#include <polyplan/arm/angles.hpp>
+#include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_grid_planner.hpp>
+#include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/arm/arm_registry.hpp>
+#include <polyplan/draw/arm_svg.hpp>
+#include <polyplan/io/arm_reader.hpp>
+#include <polyplan/roadmaps/plan_json.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+namespace polyplan {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> shipped_arms() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(std::string(POLYPLAN_SOURCE_DIR) + "/data/arms"))
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::vector<std::string> registered_planners() {
+  std::vector<std::string> names;
+  for (const auto& entry : planners<PlanarArm>().entries()) names.push_back(entry.name);
+  return names;
+}
+
+class EveryArmPlannerOnEveryArm : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(EveryArmPlannerOnEveryArm, KeepsThePlannerPromises) {
+  const auto& [planner_name, arm_name] = GetParam();
+  const ArmProblem problem = read_arm_problem(std::string(POLYPLAN_SOURCE_DIR) + "/data/arms/" + arm_name + ".json");
+  const auto planner = planners<PlanarArm>().find(planner_name)->make(problem, {});
+  const ArmCollisionChecker checker(problem);
+  const double dense = 0.01 * two_pi / 360;
+  ASSERT_FALSE(problem.queries.empty());
+  std::size_t found = 0;
+  for (const ArmQuery& q : problem.queries) {
+    SCOPED_TRACE(q.name);
+    const PlanReport<JointAngles> report = planner->plan(q, QueryOptions{true});
+    if (!report.found) {
+      EXPECT_FALSE(report.why_not.empty());
+      EXPECT_TRUE(report.path.empty());
+      continue;
+    }
+    ++found;
+    EXPECT_TRUE(report.certificate.certified);
+    ASSERT_GE(report.path.size(), 2u);
+    for (std::size_t j = 0; j < q.start.size(); ++j) {
+      EXPECT_EQ(report.path.front()[j], normalize_angle(q.start[j]));
+      EXPECT_EQ(report.path.back()[j], normalize_angle(q.goal[j]));
+    }
+    double length = 0;
+    for (std::size_t k = 0; k + 1 < report.path.size(); ++k) {
+      for (const JointAngles& c : motion_samples(report.path[k], report.path[k + 1], dense))
+        ASSERT_TRUE(checker.is_free(c)) << "between path[" << k << "] and path[" << k + 1 << "]";
+      EXPECT_TRUE(certify_motion(checker, report.path[k], report.path[k + 1]).free()) << "motion " << k;
+      length += total_angular_distance(report.path[k], report.path[k + 1]);
+    }
+    // A torus path's length is the joints' short-way turns; no path is shorter than that sum.
+    EXPECT_GE(report.length, length - 1e-9);
+    EXPECT_GE(report.length, total_angular_distance(q.start, q.goal) - 1e-9);
+
+    const nlohmann::json json = plan_json(report, q.name);
+    EXPECT_EQ(json["query"], q.name);
+    EXPECT_EQ(json["path"].size(), report.path.size());
+    EXPECT_EQ(json["path"][0].size(), problem.arm.joints());
+    const std::string picture = draw_plan(problem, report, {ArmPictureOptions::Kind::animation, q.name}).str();
+    EXPECT_NE(picture.find("<animateTransform"), std::string::npos);
+  }
+  EXPECT_GT(found, 0u) << "every shipped arm has a query its planners answer";
+}
+
+INSTANTIATE_TEST_SUITE_P(ArmRegistry, EveryArmPlannerOnEveryArm,
+                         ::testing::Combine(::testing::ValuesIn(registered_planners()), ::testing::ValuesIn(shipped_arms())),
+                         [](const auto& info) { return std::get<0>(info.param) + "_on_" + std::get<1>(info.param); });
+
+TEST(ArmRegistry, GridIsRegisteredWithItsOptions) {
+  const auto* grid = planners<PlanarArm>().find("grid");
+  ASSERT_NE(grid, nullptr);
+  std::vector<std::string> names;
+  for (const OptionInfo& o : grid->options) names.push_back(o.name);
+  EXPECT_EQ(names, (std::vector<std::string>{"resolution", "torus", "evaluation", "search", "weight"}));
+  EXPECT_EQ(grid->options[1].flag, true);
+  ArmProblem p;
+  p.arm.links = {1, 1};
+  p.queries = {{"q", {0, 0}, {1, 1}}};
+  const auto interval = grid->make(p, {{"torus", "false"}, {"evaluation", "eager"}, {"resolution", "10"}})->plan(p.queries[0]);
+  EXPECT_EQ(interval.facts.flag("grid.torus"), false);
+  EXPECT_EQ(interval.facts.text("grid.evaluation"), "eager");
+  EXPECT_EQ(interval.facts.count("cells_evaluated"), 36 * 36);
+  try {
+    grid->make(p, {{"resolution", "7"}});
+    ADD_FAILURE() << "7 degrees do not divide 360";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "planner grid: the grid resolution 7 degrees must divide 360 into at least 3 cells");
+  }
+}
+
+}  // namespace
+}  // namespace polyplan

@@ -1,0 +1,135 @@
+// polyplan plan, run as a user runs it: DESIGN.md's JSON with exact paths, every search, every
+// registered planner by --planner (and --roadmap), options by --option and --NAME, the picture.
+#include "cli_runner.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+using namespace polyplan::test;
+namespace fs = std::filesystem;
+
+TEST(Plan, PrintsDesignsJsonWithExactPath) {
+  const CliRun run = run_polyplan("plan " + world("decimal.json") + " --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto plans = nlohmann::json::parse(run.out);
+  ASSERT_TRUE(plans.is_array());  // start/goal and one query
+  ASSERT_EQ(plans.size(), 2u);
+  const auto& first = plans[0];
+  EXPECT_TRUE(first["found"].get<bool>());
+  EXPECT_DOUBLE_EQ(first["length"].get<double>(), std::sqrt(117.0));
+  EXPECT_EQ(first["path_exact"][0], nlohmann::json::array({"7/10", "23/10"}));
+  EXPECT_EQ(first["path_exact"].back(), nlohmann::json::array({"97/10", "83/10"}));
+  EXPECT_EQ(first["path"][0][0].get<double>(), 0.7);
+  EXPECT_EQ(first["roadmap"]["kind"], "visibility");
+  EXPECT_EQ(first["search"]["algorithm"], "astar");
+}
+
+TEST(Plan, OneQueryIsAnObjectAndNoPathIsAnAnswer) {
+  const CliRun run = run_polyplan("plan " + world("touching_corners.json") + " --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto plan = nlohmann::json::parse(run.out);
+  ASSERT_TRUE(plan.is_object());
+  EXPECT_FALSE(plan["found"].get<bool>());
+  EXPECT_TRUE(plan["length"].is_null());
+}
+
+TEST(Plan, EverySearchAndTheFullGraph) {
+  for (const char* search : {"astar", "dijkstra", "bfs", "dfs", "greedy", "wastar --weight 2"}) {
+    SCOPED_TRACE(search);
+    const CliRun run = run_polyplan("plan " + world("maze.json") + " --roadmap visibility-full --search " + search + " --json -");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto plan = nlohmann::json::parse(run.out);
+    EXPECT_TRUE(plan["found"].get<bool>());
+    EXPECT_EQ(plan["roadmap"]["kind"], "visibility-full");
+    EXPECT_EQ(plan["search"]["algorithm"], std::string(search).substr(0, std::string(search).find(' ')));
+  }
+  EXPECT_EQ(run_polyplan("plan " + world("maze.json") + " --search teleport").exit_code, 2);
+  EXPECT_EQ(run_polyplan("plan " + world("maze.json") + " --search wastar --weight 0.5").exit_code, 2);
+}
+
+TEST(Plan, DrawsRoadmapAndPath) {
+  const fs::path svg = fs::temp_directory_path() / "polyplan_cli_test_plan.svg";
+  const CliRun run = run_polyplan("plan " + world("seed004.json") + " --svg '" + svg.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const std::string picture = slurp(svg);
+  EXPECT_NE(picture.find("roadmap edges"), std::string::npos);
+  EXPECT_NE(picture.find("path"), std::string::npos);
+  fs::remove(svg);
+}
+
+TEST(Plan, EveryRegisteredPlannerAnswersByNameAndRoadmapIsAnAlias) {
+  const CliRun planners = run_polyplan("planners --json -");
+  ASSERT_EQ(planners.exit_code, 0) << planners.err;
+  const auto spaces = nlohmann::json::parse(planners.out);
+  std::size_t answered = 0;
+  for (const auto& planner : spaces[0]["planners"]) {
+    const std::string name = planner["name"];
+    SCOPED_TRACE(name);
+    for (const char* flag : {"--planner", "--roadmap"}) {
+      const CliRun run = run_polyplan("plan " + world("maze.json") + " " + flag + " " + name + " --json -");
+      ASSERT_EQ(run.exit_code, 0) << run.err;
+      const auto plan = nlohmann::json::parse(run.out);
+      EXPECT_TRUE(plan["found"].get<bool>()) << plan.dump();
+      EXPECT_TRUE(plan["certified"].get<bool>());
+      EXPECT_EQ(plan["path_exact"][0], nlohmann::json::array({"1", "1"}));
+      EXPECT_EQ(plan["path_exact"].back(), nlohmann::json::array({"19", "19"}));
+      EXPECT_EQ(plan["roadmap"]["kind"], name);
+    }
+    ++answered;
+  }
+  EXPECT_GE(answered, 3u);
+}
+
+TEST(Plan, OptionsBySpelledOutAssignmentOrByTheirOwnFlag) {
+  const CliRun flag = run_polyplan("plan " + world("sphere_world.json") + " --planner raster --resolution 40 --search dijkstra --json -");
+  const CliRun option = run_polyplan("plan " + world("sphere_world.json") + " --planner raster --option resolution=40 "
+                                     "--option search=dijkstra --json -");
+  ASSERT_EQ(flag.exit_code, 0) << flag.err;
+  ASSERT_EQ(option.exit_code, 0) << option.err;
+  const auto a = nlohmann::json::parse(flag.out), b = nlohmann::json::parse(option.out);
+  ASSERT_EQ(a.size(), 10u);
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i]["raster"]["cells_per_axis"], 40);
+    EXPECT_EQ(a[i]["search"]["algorithm"], "dijkstra");
+    EXPECT_EQ(a[i]["path_exact"], b[i]["path_exact"]);
+    EXPECT_EQ(a[i]["query"], "queries[" + std::to_string(i) + "]");
+  }
+}
+
+TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
+  struct Case {
+    std::string arguments, message;
+  } cases[] = {
+      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster)"},
+      {"--roadmap teleport", "--planner: unknown planner \"teleport\""},
+      {"--resolution 40", "--resolution: the planner visibility has no option resolution (its options: search weight)"},
+      {"--planner raster --resolution forty", "planner raster: option resolution=forty: expected a whole number"},
+      {"--option resolution", "--option resolution: expected NAME=VALUE"},
+      {"--option search=bfs --search astar", "--search: the option search is given twice"},
+      {"--planner raster --connectivity 6", "planner raster: option connectivity=6: expected one of 8|4"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.arguments);
+    const CliRun run = run_polyplan("plan " + world("maze.json") + " " + c.arguments);
+    EXPECT_EQ(run.exit_code, 2);
+    EXPECT_EQ(lines(run.err), 1u) << run.err;
+    EXPECT_NE(run.err.find(c.message), std::string::npos) << run.err;
+  }
+}
+
+TEST(Plan, TheRasterPictureShowsItsCellsAndTheTextSaysWhatWasSearched) {
+  const fs::path svg = fs::temp_directory_path() / "polyplan_cli_test_raster.svg";
+  const CliRun run = run_polyplan("plan " + world("seed004.json") + " --planner raster --resolution 50 --svg '" + svg.string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("start/goal: length "), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("astar expanded "), std::string::npos) << run.out;
+  const std::string picture = slurp(svg);
+  EXPECT_NE(picture.find("blocked cells"), std::string::npos);
+  EXPECT_NE(picture.find("grid graph vertices"), std::string::npos);
+  EXPECT_NE(picture.find("expanded by the search"), std::string::npos);
+  fs::remove(svg);
+}

@@ -1,0 +1,37 @@
+// polyplan planners, run as a user runs it: every planner of both registries, with its one-line
+// description and its options, as text and as JSON.
+#include "cli_runner.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+using namespace polyplan::test;
+
+TEST(Planners, ListsEveryPlannerOfBothSpacesWithOptionsAndDefaults) {
+  const CliRun run = run_polyplan("planners --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto spaces = nlohmann::json::parse(run.out);
+  ASSERT_EQ(spaces.size(), 2u);
+  EXPECT_EQ(spaces[0]["command"], "polyplan plan WORLD.json --planner NAME");
+  EXPECT_EQ(spaces[1]["command"], "polyplan arm ARM.json --method NAME");
+  std::vector<std::string> names;
+  for (const auto& p : spaces[0]["planners"]) names.push_back(p["name"]);
+  EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster"}));
+  const auto& grid = spaces[1]["planners"][0];
+  EXPECT_EQ(grid["name"], "grid");
+  EXPECT_EQ(grid["options"][0]["name"], "resolution");
+  EXPECT_EQ(grid["options"][0]["default"], "5");
+  for (const auto& space : spaces)
+    for (const auto& p : space["planners"]) {
+      EXPECT_FALSE(p["description"].get<std::string>().empty()) << p["name"];
+      for (const auto& o : p["options"]) EXPECT_FALSE(o["description"].get<std::string>().empty()) << o["name"];
+    }
+}
+
+TEST(Planners, TextNamesEveryPlannerAndHowToSetAnOption) {
+  const CliRun run = run_polyplan("planners");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  for (const char* text : {"visibility-full", "raster", "grid", "--resolution", "--no-", "--option NAME=VALUE"})
+    EXPECT_NE(run.out.find(text), std::string::npos) << text << " in\n" << run.out;
+}

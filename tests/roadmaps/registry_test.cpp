@@ -1,0 +1,182 @@
+// The conformance test of polygon-world planners: every planner of planners<TranslatingRobot>() on
+// every world of data/worlds and every query, with its default options. A planner added to the
+// registry is tested here without a test of its own. Each report must keep planner.hpp's promises:
+// a found path runs exactly from start to goal, passes the independent exact check_path, is
+// certified, and is no shorter than the exact shortest path (the reduced visibility graph's,
+// itself re-checked); a path not found comes with a reason. The report must also print
+// (plan_json) and draw (draw_plan), and recording what a picture needs must not change the answer.
+#include <polyplan/draw/plan_svg.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/roadmaps/plan_json.hpp>
+#include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+namespace polyplan {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> shipped_worlds() {
+  std::vector<std::string> names;
+  for (const auto& entry : fs::directory_iterator(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds"))
+    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::vector<std::string> registered_planners() {
+  std::vector<std::string> names;
+  for (const auto& entry : planners<TranslatingRobot>().entries()) names.push_back(entry.name);
+  return names;
+}
+
+// A world, its C-space, and the exact shortest path lengths of its queries, built once per world.
+struct ShippedWorld {
+  World world;
+  CSpace cspace;
+  std::vector<std::optional<double>> shortest;
+  explicit ShippedWorld(const std::string& name)
+      : world(read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json")), cspace(world) {
+    VisibilityGraph reference(cspace);
+    for (const Query& q : world.queries) {
+      const auto report = reference.plan(q);
+      shortest.push_back(report.found ? std::optional<double>(report.length) : std::nullopt);
+    }
+  }
+};
+
+const ShippedWorld& shipped(const std::string& name) {
+  static std::map<std::string, std::unique_ptr<ShippedWorld>> cache;
+  auto& slot = cache[name];
+  if (!slot) slot = std::make_unique<ShippedWorld>(name);
+  return *slot;
+}
+
+// "roadmap.kind" as the JSON pointer /roadmap/kind.
+nlohmann::json::json_pointer dotted(std::string name) {
+  std::replace(name.begin(), name.end(), '.', '/');
+  return nlohmann::json::json_pointer("/" + name);
+}
+
+class EveryPlannerOnEveryWorld : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
+  const auto& [planner_name, world_name] = GetParam();
+  const ShippedWorld& w = shipped(world_name);
+  const PlannerEntry<TranslatingRobot>* entry = planners<TranslatingRobot>().find(planner_name);
+  ASSERT_NE(entry, nullptr);
+  std::unique_ptr<Planner<TranslatingRobot>> planner;
+  try {
+    planner = entry->make(w.cspace, {});
+  } catch (const InputError& e) {
+    // A planner may need what a world lacks (a raster needs bounds); it must say so, naming the file.
+    EXPECT_FALSE(w.world.bounds.has_value()) << e.what();
+    EXPECT_NE(std::string(e.what()).find(world_name), std::string::npos) << e.what();
+    GTEST_SKIP() << e.what();
+  }
+  ASSERT_FALSE(w.world.queries.empty());
+  std::vector<PlanReport<ExactPoint>> recorded;
+  for (std::size_t i = 0; i < w.world.queries.size(); ++i) {
+    const Query& q = w.world.queries[i];
+    SCOPED_TRACE(q.name);
+    const PlanReport<ExactPoint> report = planner->plan(q);
+    if (report.found) {
+      EXPECT_TRUE(report.why_not.empty()) << report.why_not;
+      EXPECT_TRUE(report.certificate.certified);
+      EXPECT_FALSE(report.certificate.method.empty());
+      ASSERT_GE(report.path.size(), 2u);
+      EXPECT_EQ(report.path.front(), q.start);
+      EXPECT_EQ(report.path.back(), q.goal);
+      const PathCheck check = check_path(w.cspace, report.path);
+      EXPECT_TRUE(check.valid) << check.reason;
+      EXPECT_NEAR(report.length, euclidean_length(report.path), 1e-9 * std::max(1.0, report.length));
+      ASSERT_TRUE(w.shortest[i].has_value()) << "a path where the exact shortest path finds none";
+      EXPECT_GE(report.length, *w.shortest[i] - 1e-9 * std::max(1.0, *w.shortest[i]));
+    } else {
+      EXPECT_FALSE(report.why_not.empty());
+      EXPECT_TRUE(report.path.empty());
+    }
+    // The JSON the programs print: DESIGN.md's keys, every fact.
+    const nlohmann::json json = plan_json(report, q.name);
+    EXPECT_EQ(json["found"], report.found);
+    EXPECT_EQ(json["path"].size(), report.path.size());
+    EXPECT_EQ(json["path_exact"].size(), report.path.size());
+    EXPECT_EQ(json["length"].is_null(), !report.found);
+    for (const auto& [name, value] : report.facts.entries()) EXPECT_TRUE(json.contains(dotted(name))) << name;
+    // What a picture needs is recorded without changing the answer.
+    recorded.push_back(planner->plan(q, QueryOptions{true}));
+    EXPECT_EQ(recorded.back().found, report.found);
+    EXPECT_EQ(recorded.back().path, report.path);
+  }
+  const std::string picture = draw_plan(w.cspace, recorded).str();
+  EXPECT_NE(picture.find("<svg"), std::string::npos);
+  for (std::size_t i = 0; i < recorded.size(); ++i)
+    if (recorded[i].found) EXPECT_NE(picture.find(recorded.size() == 1 ? "path" : "path " + std::to_string(i)), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, EveryPlannerOnEveryWorld,
+                         ::testing::Combine(::testing::ValuesIn(registered_planners()), ::testing::ValuesIn(shipped_worlds())),
+                         [](const auto& info) {
+                           std::string name = std::get<0>(info.param) + "_on_" + std::get<1>(info.param);
+                           std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+                           return name;
+                         });
+
+TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
+  const auto& registry = planners<TranslatingRobot>();
+  for (const char* name : {"visibility", "visibility-full", "raster"}) {
+    const auto* entry = registry.find(name);
+    ASSERT_NE(entry, nullptr) << name;
+    EXPECT_FALSE(entry->description.empty());
+    EXPECT_EQ(entry->description.find('\n'), std::string::npos) << "one line";
+  }
+  EXPECT_EQ(registry.find("teleport"), nullptr);
+  EXPECT_EQ(registry.names(), "visibility, visibility-full, raster");
+  const auto* raster = registry.find("raster");
+  ASSERT_EQ(raster->options.size(), 4u);
+  EXPECT_EQ(raster->options[0].name, "resolution");
+  EXPECT_EQ(raster->options[0].default_value, "100");
+}
+
+TEST(Registry, OptionsAreSetByNameAndBadOnesNameThePlannerAndTheOption) {
+  const ShippedWorld& w = shipped("sphere_world");
+  const auto* raster = planners<TranslatingRobot>().find("raster");
+  const auto coarse = raster->make(w.cspace, {{"resolution", "10"}, {"search", "dijkstra"}})->plan(w.world.queries[1]);
+  EXPECT_EQ(coarse.facts.count("raster.cells_per_axis"), 10);
+  EXPECT_EQ(coarse.facts.text("search.algorithm"), "dijkstra");
+  const auto message = [&](const OptionValues& values) {
+    try {
+      raster->make(w.cspace, values);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message({{"resolution", "ten"}}), "planner raster: option resolution=ten: expected a whole number");
+  EXPECT_EQ(message({{"resolution", "-3"}}), "planner raster: option resolution=-3: expected a whole number >= 0");
+  EXPECT_EQ(message({{"colour", "red"}}),
+            "planner raster: option colour=red: no such option (its options: resolution, connectivity, search, weight)");
+  EXPECT_EQ(message({{"connectivity", "6"}}), "planner raster: option connectivity=6: expected one of 8|4");
+  EXPECT_EQ(message({{"weight", "0.5"}}), "planner raster: option weight=0.5: expected a number of at least 1");
+  EXPECT_NE(message({{"resolution", "0"}}).find("cells per axis must be between 1 and"), std::string::npos);
+}
+
+TEST(Registry, TwoEntriesOfOneNameAreRefused) {
+  EXPECT_THROW((PlannerRegistry<TranslatingRobot>{visibility_planner_entry(VisibilityKind::reduced),
+                                                  visibility_planner_entry(VisibilityKind::reduced)}),
+               std::logic_error);
+}
+
+}  // namespace
+}  // namespace polyplan
