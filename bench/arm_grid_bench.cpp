@@ -24,15 +24,15 @@ void plan(benchmark::State& state, bool lazy) {
   ArmGridOptions options;
   options.lazy = lazy;
   options.resolution_degrees = static_cast<double>(state.range(1));
-  ArmGridPlan last;
+  ArmGridPlanner planner(p, options);
+  PlanReport<JointAngles> last;
   for (auto _ : state) {
-    last = plan_arm_on_grid(p, q, options);
+    last = planner.plan(q);
     benchmark::DoNotOptimize(last.path.data());
   }
   state.SetLabel(q.name + (last.found ? "" : " (no path)"));
-  state.counters["cells_evaluated"] = static_cast<double>(last.cells_evaluated);
-  state.counters["moves_checked"] = static_cast<double>(last.moves_checked);
-  state.counters["expanded"] = static_cast<double>(last.expanded);
+  for (const char* count : {"cells_evaluated", "moves_checked", "expanded"})
+    state.counters[count] = static_cast<double>(last.facts.count(count));
   state.counters["length"] = last.length;
 }
 

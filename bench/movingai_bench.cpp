@@ -21,7 +21,7 @@ void Queries(benchmark::State& state, const std::string& name, double polyanya_u
   std::size_t answered = 0;
   for (auto _ : state)
     for (const ScenarioQuery& q : queries) {
-      benchmark::DoNotOptimize(graph.plan({q.start_x, q.start_y}, {q.goal_x, q.goal_y}).length);
+      benchmark::DoNotOptimize(graph.plan(Query{{q.start_x, q.start_y}, {q.goal_x, q.goal_y}, "q"}).length);
       ++answered;
     }
   state.counters["us_per_query"] =

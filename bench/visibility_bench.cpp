@@ -45,14 +45,14 @@ std::vector<ExactPoint> boundary_vertices(const CSpace& cspace) {
 void TriangularExpansionFull(benchmark::State& state) {
   const CSpace cspace(quadrilaterals(static_cast<int>(state.range(0))));
   std::size_t edges = 0;
-  for (auto _ : state) edges = VisibilityGraph(cspace, VisibilityKind::full).facts().edges;
+  for (auto _ : state) edges = boost::num_edges(VisibilityGraph(cspace, VisibilityKind::full).roadmap());
   state.counters["edges"] = static_cast<double>(edges);
 }
 
 void TriangularExpansionReduced(benchmark::State& state) {
   const CSpace cspace(quadrilaterals(static_cast<int>(state.range(0))));
   std::size_t edges = 0;
-  for (auto _ : state) edges = VisibilityGraph(cspace, VisibilityKind::reduced).facts().edges;
+  for (auto _ : state) edges = boost::num_edges(VisibilityGraph(cspace, VisibilityKind::reduced).roadmap());
   state.counters["edges"] = static_cast<double>(edges);
 }
 

@@ -59,7 +59,8 @@ int run_arm(const ArmCommand& command) {
     answers.push_back(plan_json(report, query->name));
     if (command.json.empty()) std::cout << report_line(query->name, report, " rad", "motion") << '\n';
     if (!pictures) continue;
-    const std::string title = file_name(command.file) + " · " + query->name + " · " + command.planner->entry().name;
+    std::string title = file_name(command.file) + " · " + query->name + " · " + command.planner->entry().name;
+    for (const auto& [name, value] : command.planner->values()) title += " · " + name + " " + value;
     try {
       using Kind = ArmPictureOptions::Kind;
       if (!command.svg.empty())

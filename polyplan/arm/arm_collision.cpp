@@ -54,12 +54,21 @@ double gap(const Box& a, const Box& b) {
 }
 
 // The safety margin subtracted from every double-computed distance, for shapes whose coordinates
-// are at most `extent` in absolute value, on an arm of the given reach. The distance formulas
-// below round by a few units of 2^-53 times the coordinates involved; the kinematic coordinates
-// (n links: n cos/sin and sums) differ from the true arm's by about n · 2^-53 · reach; interpolated
-// angles and advancement steps add a few 2^-53 · reach more. 1e-12 is about 10^3 times all of that
-// together for arms of up to a hundred links, and still far below any clearance worth planning with.
-double safety_margin(double reach, double extent) { return 1e-12 * (reach + 1 + extent); }
+// are at most `extent` in absolute value, on an arm of n links and the given reach:
+// 1e-12 · max(1, (n/10)²) · (reach + 1 + extent). What it absorbs, in units u = 2^-53 ≈ 1.1e-16:
+//  - the distance formulas below: a few u times the coordinates involved;
+//  - the kinematic coordinates against the true arm at the same angles: the heading of link k is
+//    a sum of k angles in [0, 2π) (up to 2πk, rounded k times), so a link turns by up to
+//    n · 2πn · u, which moves it by up to that times the reach (7e-14 · reach for n = 10, growing
+//    as n², hence the factor); cos, sin and the sums of link vectors add a few u · reach;
+//  - the interpolated angles of a motion (each rounded by about 2 · 2π · u, so the headings by up
+//    to n times that: 1.4e-14 · reach for n = 10) and the rounding of its step sizes, a few u · reach.
+// Together about 1e-13 · reach for n = 10: the margin is 10 times that, and still far below any
+// clearance worth planning with.
+double safety_margin(std::size_t links, double reach, double extent) {
+  const double n = static_cast<double>(links);
+  return 1e-12 * std::max(1.0, n * n / 100) * (reach + 1 + extent);
+}
 
 // A clearance: the computed distance minus the margin, never below 0.
 double clearance_of(double distance, double margin) { return std::max(0.0, distance - margin); }
@@ -231,7 +240,7 @@ struct ArmCollisionChecker::Impl {
       throw std::invalid_argument("ArmCollisionChecker: the link width is negative or not finite");
     const double reach = arm.reach();
     if (!std::isfinite(reach)) throw std::invalid_argument("ArmCollisionChecker: the arm's length is not finite");
-    link_pair_margin = safety_margin(reach, reach);
+    link_pair_margin = safety_margin(arm.joints(), reach, reach);
     // Whatever lies outside the disc of radius reach can never be touched. The box around it is
     // widened far beyond the rounding of the computed coordinates, so dropping is always safe.
     Box reachable;
@@ -248,12 +257,13 @@ struct ArmCollisionChecker::Impl {
       for (const Point& p : o.outer) o.box.add(p);
       if (!o.box.overlaps(reachable)) continue;
       add_edges(o.outer, o.edges);
+      Box every_vertex = o.box;  // holes too, should one stray outside the outer boundary
       for (const Ring& hole : polygon.holes) {
         o.holes.push_back(to_points(hole));
         add_edges(o.holes.back(), o.edges);
+        for (const Point& p : o.holes.back()) every_vertex.add(p);
       }
-      // Holes lie inside the outer boundary, so its box bounds every coordinate.
-      o.margin = safety_margin(reach, largest_coordinate(o.box));
+      o.margin = safety_margin(arm.joints(), reach, largest_coordinate(every_vertex));
       everything.add(o.box);
       everything_margin = std::max(everything_margin, o.margin);
       obstacles.push_back(std::move(o));
@@ -265,7 +275,7 @@ struct ArmCollisionChecker::Impl {
       if (!reachable.contains(q)) continue;
       PointObstacle kept{q, i, {}, 0};
       kept.box.add(q);
-      kept.margin = safety_margin(reach, largest_coordinate(kept.box));
+      kept.margin = safety_margin(arm.joints(), reach, largest_coordinate(kept.box));
       everything.add(q);
       everything_margin = std::max(everything_margin, kept.margin);
       points.push_back(kept);

@@ -18,11 +18,12 @@
 // Clearances (for certified motions, arm_motion.hpp) are lower bounds of distances between the
 // same closed shapes: 0 when they meet (decided by the exact test above, never by a tolerance),
 // otherwise the double-computed Euclidean distance minus a safety margin, clamped at 0. The margin,
-// 1e-12 · (reach + 1 + the largest coordinate of the obstacle or point measured to), is about 10^3
-// times what double rounding can move a distance here: the rounding of the distance formulas,
-// of the kinematic coordinates against the true (real-number) arm at the same angles, and of the
-// interpolated angles and step sizes of a motion. So a clearance never exceeds the true distance
-// between the true arm and the obstacles (taken as their nearest doubles).
+// 1e-12 · (reach + 1 + the largest coordinate of the obstacle or point measured to) for arms of up
+// to 10 links (times (n/10)² for n links beyond), is about 10 times what double rounding can
+// move a distance here: the rounding of the distance formulas, of the kinematic coordinates
+// against the true (real-number) arm at the same angles, and of the interpolated angles and step
+// sizes of a motion (the budget is in arm_collision.cpp). So a clearance never exceeds the true
+// distance between the true arm and the obstacles (taken as their nearest doubles).
 //
 // Not thread-safe: a checker keeps scratch buffers and a counter (mutable, for speed: no
 // allocation per check). Use one checker per thread; construction is cheap.

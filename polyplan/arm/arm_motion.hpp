@@ -17,20 +17,24 @@
 //    (exact contact test first; distances minus a safety margin, see arm_collision.hpp) and returns
 //    h = the smallest c / speed: every configuration in [t, t + h) is free.
 //  - Advancement. The goal `to` itself (bit for bit) is tested exactly first. Then from t = 0
-//    (`from` itself, bit for bit) the motion advances t += h; it is free once t + h ≥ 1, collides
-//    when q(t) collides (exactly), and is refused ("uncertified", never "free") when h falls below
-//    motion_min_step or after motion_max_steps clearance computations: near contact the steps
-//    become tiny, and a motion that grazes or slides along an obstacle closer than about
-//    speed · motion_min_step, or at a small clearance for long, cannot be proved free this way.
+//    (`from` itself, bit for bit) the motion advances t += h; it is free once t + h ≥ 1 and
+//    collides when q(t) collides (exactly). Near contact the steps become tiny: when h falls below
+//    motion_min_step or after motion_max_steps clearance computations, advancement stops.
+//  - Probing. Advancement approaches a first contact from below and never lands on it, so after a
+//    stop the configurations at t + 2·motion_min_step, t + 4·motion_min_step, … (doubling, up to
+//    the end) are tested exactly: one that collides proves the motion collides. Otherwise the
+//    motion is refused, "uncertified", never "free": a motion that touches something without
+//    crossing into it (a zero-width link sweeping over a point crosses it in a single instant), or
+//    slides along something at a small clearance for long, cannot be decided this way.
 //
 // Angles are normalised before interpolating (angles.hpp), so a motion runs between the
 // normalised angles; for |angle| far beyond 10^3 radians normalisation itself moves the arm by
 // more than the safety margin, and `from`/`to` should be given normalised.
 //
-// The older sampled check (motion_samples, the overload of motion_is_free with a resolution) tests
-// only `from`, k−1 interpolated configurations and `to` itself, with
+// motion_samples gives `from`, k−1 interpolated configurations and `to` itself, with
 // k = max(1, ceil(max_i angular_distance(from_i, to_i) / resolution)), so consecutive samples differ
-// by at most `resolution` radians in every joint (up to rounding). It is not a certificate.
+// by at most `resolution` radians in every joint (up to rounding): frames for pictures, and what
+// tests sample densely to check a certificate independently. Checking samples is not a certificate.
 #include <polyplan/arm/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
 
@@ -49,32 +53,29 @@ struct MotionCertificate {
   enum class Verdict { free, collides, uncertified };
   Verdict verdict = Verdict::uncertified;
   std::size_t steps = 0;              // configurations whose clearance was computed
-  double at = 0;                      // collides/uncertified: the fraction t of the motion where it stopped
+  // collides/uncertified: the fraction t of the motion where it stopped (collides: a configuration
+  // q(at) that collides, exactly; uncertified: the first configuration not proved free).
+  double at = 0;
   std::optional<ArmContact> contact;  // collides: what the arm meets there
   bool free() const { return verdict == Verdict::free; }
 };
 
 // The motion from → to by conservative advancement (above). `at` is 1 when the goal collides, 0
 // when `from` does. A zero-length motion (every Δ_j = 0) is free when `from`, `to` and the
-// normalised `from` are. checker.checks() grows by `steps` plus the exact tests of the ends.
+// normalised `from` are. checker.checks() grows by `steps` plus the exact tests of the goal, of a
+// zero-length motion and of the probes.
 // Throws std::invalid_argument for sizes that differ from the arm or non-finite angles.
 MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to);
 
 // certify_motion(checker, from, to).free(): false for colliding and for uncertified motions.
 bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to);
 
-// k above (the number of steps of the sampled check). Throws std::invalid_argument when the sizes
+// k above (the number of steps between samples). Throws std::invalid_argument when the sizes
 // differ, an angle is not finite, the resolution is not positive and finite, or k would exceed 10^9.
 std::size_t motion_step_count(const JointAngles& from, const JointAngles& to, double resolution);
 
 // The k+1 samples above: `from` itself, k−1 interpolated configurations, `to` itself (bit for bit:
 // the path a planner returns begins and ends at the exact values it was given).
 std::vector<JointAngles> motion_samples(const JointAngles& from, const JointAngles& to, double resolution);
-
-// NOT A CERTIFICATE: whether every sample is free, checked in order from `from` to `to`, stopping
-// at the first one that is not (each counts in checker.checks()). No allocation per sample. The arm
-// may pass through an obstacle between samples (a point that cuts a link's corner, a thin
-// obstacle); kept only until the grid planner uses certify_motion.
-bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to, double resolution);
 
 }  // namespace polyplan

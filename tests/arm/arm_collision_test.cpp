@@ -161,3 +161,268 @@ TEST(Collision, FirstContactOrderCountsAndBadArguments) {
   EXPECT_FALSE(moved.is_free({0, 0}));
   EXPECT_EQ(moved.checks(), 3u);
 }
+
+// ---------------------------------------------------------------- clearances
+
+namespace {
+
+// Every clearance is a lower bound of the true distance and, away from contact, within 1e-9 of it
+// (the safety margin is about 1e-11 here).
+void expect_lower_bound_of(double clearance, double distance) {
+  EXPECT_LE(clearance, distance);
+  EXPECT_GE(clearance, distance - 1e-9);
+}
+
+}  // namespace
+
+TEST(Clearance, SegmentLinkToAPointByHand) {
+  // Link [2] along +x, width 0: (1, 1.5) is 1.5 above its middle, (−1, 1) is √2 from the base,
+  // (2.5, 0) — beyond the reach box, dropped — does not count.
+  const Arm arm = arm_of({2});
+  std::vector<double> c;
+  ArmCollisionChecker(arm, {}, {Eigen::Vector2d(1, 1.5)}).clearances({0}, c);
+  ASSERT_EQ(c.size(), 1u);
+  expect_lower_bound_of(c[0], 1.5);
+  ArmCollisionChecker(arm, {}, {Eigen::Vector2d(-1, 1), Eigen::Vector2d(1, 1.5)}).clearances({0}, c);
+  expect_lower_bound_of(c[0], std::sqrt(2.0));
+  // Turned up by π/2 the link runs along the y axis: (−1, 1) is 1 away.
+  ArmCollisionChecker(arm, {}, {Eigen::Vector2d(-1, 1)}).clearances({kPi / 2}, c);
+  expect_lower_bound_of(c[0], 1.0);
+  // Nothing within reach: nothing limits the link.
+  ArmCollisionChecker(arm, {}, {Eigen::Vector2d(2.5, 0)}).clearances({0}, c);
+  EXPECT_EQ(c[0], std::numeric_limits<double>::infinity());
+}
+
+TEST(Clearance, RectangleLinkToAPolygonByHand) {
+  // Link [2] 0.5 wide along +x: the rectangle [0, 2] × [−0.25, 0.25].
+  const Arm arm = arm_of({2}, 0.5);
+  std::vector<double> c;
+  // The square [0.5, 1] × [0.75, 1.25] is 0.5 above the long side.
+  ArmCollisionChecker(arm, {square(0.25, 0.75, 1.0)}, {}).clearances({0}, c);
+  expect_lower_bound_of(c[0], 0.5);
+  // The triangle's vertex (2.1, 0.6) is nearest to the corner (2, 0.25): √(0.1² + 0.35²).
+  const PolygonWithHoles triangle = {ring({{2.1, 0.6}, {2.3, 0.6}, {2.1, 0.9}}), {}};
+  ArmCollisionChecker(arm, {triangle}, {}).clearances({0}, c);
+  expect_lower_bound_of(c[0], std::sqrt(0.1325));
+  // Two obstacles: the nearer one counts. A point 0.1 beyond the tip is nearer still.
+  ArmCollisionChecker(arm, {square(0.25, 0.75, 1.0), triangle}, {Eigen::Vector2d(2.1, 0)}).clearances({0}, c);
+  expect_lower_bound_of(c[0], 0.1);
+}
+
+TEST(Clearance, ZeroWhenTouchingAndTheExactTestDecidesContact) {
+  const Arm arm = arm_of({2}, 0.5);
+  // The square [0.5, 1] × [0.25, 0.75] sits on the long side y = 0.25: touching is contact.
+  const ArmCollisionChecker touching(arm, {square(0.25, 0.75, 0.5)}, {});
+  ArmClearances split;
+  touching.clearances({0}, split);
+  EXPECT_EQ(split.links[0], 0.0);
+  ASSERT_TRUE(split.contact);
+  EXPECT_EQ(split.contact->describe(), "link 1 meets obstacles[0]");
+  // One ulp above the side: free, and its clearance still 0 (closer than the safety margin proves
+  // nothing). A zero clearance is a lower bound, not a contact.
+  const double y = up(0.25);
+  const ArmCollisionChecker above(arm, {{ring({{0.5, y}, {1, y}, {1, 0.75}, {0.5, 0.75}}), {}}}, {});
+  above.clearances({0}, split);
+  EXPECT_TRUE(above.is_free({0}));
+  EXPECT_FALSE(split.contact);
+  EXPECT_EQ(split.links[0], 0.0);
+  // A point on the tip edge: 0 and a contact; the point obstacle is reported by its index.
+  const ArmCollisionChecker on_tip(arm, {}, {Eigen::Vector2d(-1, -1), Eigen::Vector2d(2, 0.1)});
+  on_tip.clearances({0}, split);
+  EXPECT_EQ(split.links[0], 0.0);
+  ASSERT_TRUE(split.contact);
+  EXPECT_EQ(split.contact->describe(), "link 1 meets points[1]");
+}
+
+TEST(Clearance, InsideAHoleAndInsideAnObstacle) {
+  // A 10×10 square with a 6×6 hole: link [2] along +x lies in the hole, 1 from its side x = 3.
+  PolygonWithHoles frame = square(5);
+  frame.holes.push_back(ring({{-3, -3}, {-3, 3}, {3, 3}, {3, -3}}));
+  std::vector<double> c;
+  const ArmCollisionChecker in_hole(arm_of({2}), {frame}, {});
+  in_hole.clearances({0}, c);
+  expect_lower_bound_of(c[0], 1.0);
+  in_hole.clearances({kPi / 4}, c);  // the tip (√2, √2) is 3 − √2 from the sides x = 3 and y = 3
+  expect_lower_bound_of(c[0], 3 - std::sqrt(2.0));
+  // A link deep inside an obstacle crosses no edge: it meets the region, clearance 0.
+  ArmClearances split;
+  ArmCollisionChecker(arm_of({1}), {square(10)}, {}).clearances({1.0}, split);
+  EXPECT_EQ(split.links[0], 0.0);
+  EXPECT_TRUE(split.contact);
+}
+
+TEST(Clearance, BetweenLinksWithSelfCollision) {
+  // Link 1 from (0,0) to (2,0), link 2 up to (2,1), link 3 back to (0,1): links 1 and 3 are 1 apart.
+  const JointAngles u_turn{0, kPi / 2, kPi / 2};
+  ArmClearances split;
+  const ArmCollisionChecker self(arm_of({2, 1, 2}, 0, true), {}, {});
+  self.clearances(u_turn, split);
+  ASSERT_EQ(split.pairs.size(), 9u);
+  expect_lower_bound_of(split.pairs[0 * 3 + 2], 1.0);
+  EXPECT_EQ(split.pairs[2 * 3 + 0], split.pairs[0 * 3 + 2]);
+  for (std::size_t adjacent : {0 * 3 + 1, 1 * 3 + 0, 1 * 3 + 2, 2 * 3 + 1, 0 * 3 + 0})
+    EXPECT_EQ(split.pairs[adjacent], std::numeric_limits<double>::infinity()) << adjacent;
+  EXPECT_EQ(split.links, std::vector<double>(3, std::numeric_limits<double>::infinity()));  // no obstacles
+  std::vector<double> c;
+  self.clearances(u_turn, c);
+  expect_lower_bound_of(c[0], 1.0);
+  EXPECT_EQ(c[1], std::numeric_limits<double>::infinity());  // link 2 shares a joint with both
+  expect_lower_bound_of(c[2], 1.0);
+  // 0.3 wide, the rectangles are 0.7 apart; link 3 crossing link 1 makes it 0 and a contact.
+  ArmCollisionChecker(arm_of({2, 1, 2}, 0.3, true), {}, {}).clearances(u_turn, split);
+  expect_lower_bound_of(split.pairs[2], 0.7);
+  self.clearances({0, kPi / 2, 3 * kPi / 4}, split);
+  EXPECT_EQ(split.pairs[2], 0.0);
+  ASSERT_TRUE(split.contact);
+  EXPECT_EQ(split.contact->describe(), "link 1 meets link 3");
+  // Without self-collision the pairs are not measured.
+  ArmCollisionChecker(arm_of({2, 1, 2}), {}, {}).clearances(u_turn, split);
+  EXPECT_TRUE(split.pairs.empty());
+  EXPECT_FALSE(split.contact);
+}
+
+namespace {
+
+long double point_segment_distance(long double px, long double py, long double ax, long double ay, long double bx,
+                                   long double by) {
+  const long double vx = bx - ax, vy = by - ay;
+  const long double t = std::clamp(((px - ax) * vx + (py - ay) * vy) / (vx * vx + vy * vy), 0.0L, 1.0L);
+  return std::hypot(px - ax - t * vx, py - ay - t * vy);
+}
+
+// Whether the checker keeps the obstacle: its box meets the box around the disc the arm reaches
+// (which it widens by 1e-6 relative, see arm_collision.cpp).
+bool within_reach_box(const PolygonWithHoles& polygon, double reach) {
+  const double r = reach * (1 + 1e-6);
+  const double inf = std::numeric_limits<double>::infinity();
+  double xmin = inf, xmax = -inf, ymin = inf, ymax = -inf;
+  for (const ExactPoint& v : polygon.outer) {
+    xmin = std::min(xmin, to_double(v.x));
+    xmax = std::max(xmax, to_double(v.x));
+    ymin = std::min(ymin, to_double(v.y));
+    ymax = std::max(ymax, to_double(v.y));
+  }
+  return xmin <= r && xmax >= -r && ymin <= r && ymax >= -r;
+}
+
+}  // namespace
+
+TEST(Clearance, NeverAboveIndependentDistancesOnTheShippedArms) {
+  // Random configurations of the two-link arm among points (rectangles) and of the three-link arm
+  // in the forest (segments among triangles): the clearance of each link is at most its distance
+  // recomputed in long double from the angles (and within 1e-9 of it); it is 0 exactly when the
+  // link meets something, and then the contact is first_contact's.
+  std::mt19937 rng(12);
+  std::uniform_real_distribution<double> angle(0, two_pi);
+  {
+    const ArmProblem p = read_arm_problem(arm_data_file("two_link_points.json"));
+    const ArmCollisionChecker checker(p);
+    const long double half = p.arm.link_width / 2;
+    ArmClearances split;
+    int colliding = 0;
+    for (int i = 0; i < 5000; ++i) {
+      const JointAngles q{angle(rng), angle(rng)};
+      checker.clearances(q, split);
+      long double heading = 0, x = 0, y = 0;
+      for (std::size_t k = 0; k < 2; ++k) {
+        heading += q[k];
+        const long double dx = std::cos(heading), dy = std::sin(heading), l = p.arm.links[k];
+        long double nearest = std::numeric_limits<long double>::infinity();
+        for (const Eigen::Vector2d& o : p.points) {
+          const long double along = (o.x() - x) * dx + (o.y() - y) * dy;
+          const long double across = std::fabs(-(o.x() - x) * dy + (o.y() - y) * dx);
+          nearest = std::min(nearest, std::hypot(std::max({0.0L, -along, along - l}), std::max(0.0L, across - half)));
+        }
+        if (nearest > 1e-9L) {
+          ASSERT_LE(split.links[k], static_cast<double>(nearest)) << q[0] << " " << q[1] << " link " << k;
+          ASSERT_GE(split.links[k], static_cast<double>(nearest) - 1e-9) << q[0] << " " << q[1] << " link " << k;
+        }
+        x += l * dx;
+        y += l * dy;
+      }
+      const auto contact = checker.first_contact(q);
+      ASSERT_EQ(split.contact.has_value(), contact.has_value());
+      if (contact) {
+        ++colliding;
+        EXPECT_EQ(split.contact->describe(), contact->describe());
+        EXPECT_EQ(split.links[contact->link], 0.0);
+      } else {
+        EXPECT_GT(std::min(split.links[0], split.links[1]), 0.0);  // nothing here is within 1e-9
+      }
+    }
+    EXPECT_GT(colliding, 200);
+    EXPECT_LT(colliding, 4800);
+  }
+  {
+    const ArmProblem p = read_arm_problem(arm_data_file("three_link_forest.json"));
+    const ArmCollisionChecker checker(p);
+    std::vector<double> c;
+    int free_configurations = 0;
+    for (int i = 0; i < 3000; ++i) {
+      const JointAngles q{angle(rng), angle(rng), angle(rng)};
+      checker.clearances(q, c);
+      if (!checker.is_free(q)) {
+        EXPECT_EQ(*std::min_element(c.begin(), c.end()), 0.0);
+        continue;
+      }
+      ++free_configurations;
+      // Free segments are outside every triangle: their distance is the nearest pair of an end
+      // point and a segment (link or triangle edge).
+      long double heading = 0, x = 0, y = 0;
+      for (std::size_t k = 0; k < 3; ++k) {
+        heading += q[k];
+        const long double ex = x + std::cos(heading), ey = y + std::sin(heading);
+        long double nearest = std::numeric_limits<long double>::infinity();
+        for (const PolygonWithHoles& t : p.obstacles)
+          for (std::size_t v = 0; v < 3 && within_reach_box(t, p.arm.reach()); ++v) {
+            const long double ax = to_double(t.outer[v].x), ay = to_double(t.outer[v].y);
+            const long double bx = to_double(t.outer[(v + 1) % 3].x), by = to_double(t.outer[(v + 1) % 3].y);
+            nearest = std::min({nearest, point_segment_distance(ax, ay, x, y, ex, ey), point_segment_distance(bx, by, x, y, ex, ey),
+                                point_segment_distance(x, y, ax, ay, bx, by), point_segment_distance(ex, ey, ax, ay, bx, by)});
+          }
+        ASSERT_LE(c[k], static_cast<double>(nearest)) << k;
+        ASSERT_GE(c[k], static_cast<double>(nearest) - 1e-9) << k;
+        x = ex;
+        y = ey;
+      }
+    }
+    EXPECT_GT(free_configurations, 300);
+  }
+}
+
+TEST(Clearance, SafeStepIsTheSmallestClearanceOverSpeed) {
+  // Link [2] 0.5 wide along +x, the square 0.5 above it and a point 0.1 beyond the tip.
+  const ArmCollisionChecker checker(arm_of({2}, 0.5), {square(0.25, 0.75, 1.0)}, {Eigen::Vector2d(2.1, 0)});
+  const std::vector<double> none;
+  const ArmSafeStep step = checker.safe_step({0}, std::vector<double>{2.0}, none, 1.0);
+  EXPECT_FALSE(step.contact);
+  EXPECT_LE(step.step, 0.05);  // 0.1 at speed 2
+  EXPECT_GE(step.step, 0.05 - 1e-9);
+  EXPECT_EQ(checker.safe_step({0}, std::vector<double>{2.0}, none, 0.01).step, 0.01);  // the horizon
+  // A link that does not move keeps a positive clearance forever; 0 clearance lasts not at all.
+  EXPECT_EQ(checker.safe_step({0}, std::vector<double>{0.0}, none, 1.0).step, 1.0);
+  const ArmCollisionChecker grazed(arm_of({2}), {}, {Eigen::Vector2d(1, up(0.0))});
+  EXPECT_TRUE(grazed.is_free({0}));
+  EXPECT_EQ(grazed.safe_step({0}, std::vector<double>{0.0}, none, 1.0).step, 0.0);
+  // In collision (pointing at the square's centre): step 0 and first_contact's contact.
+  const JointAngles into_square{std::atan2(1.0, 0.75)};
+  const ArmSafeStep hit = checker.safe_step(into_square, std::vector<double>{1.0}, none, 1.0);
+  EXPECT_EQ(hit.step, 0.0);
+  ASSERT_TRUE(hit.contact);
+  EXPECT_EQ(hit.contact->describe(), "link 1 meets obstacles[0]");
+  // Self-collision: the pair's own speed, not the links', limits the step.
+  const ArmCollisionChecker self(arm_of({2, 1, 2}, 0, true), {}, {});
+  std::vector<double> pair_speed(9, 0.0);
+  pair_speed[0 * 3 + 2] = 4;
+  const ArmSafeStep folded = self.safe_step({0, kPi / 2, kPi / 2}, std::vector<double>{1, 1, 1}, pair_speed, 1.0);
+  EXPECT_LE(folded.step, 0.25);  // 1 apart at relative speed 4
+  EXPECT_GE(folded.step, 0.25 - 1e-9);
+  // Bad arguments.
+  EXPECT_THROW(checker.safe_step({0}, std::vector<double>{1.0, 1.0}, none, 1.0), std::invalid_argument);
+  EXPECT_THROW(checker.safe_step({0}, std::vector<double>{-1.0}, none, 1.0), std::invalid_argument);
+  EXPECT_THROW(checker.safe_step({0}, std::vector<double>{1.0}, none, std::nan("")), std::invalid_argument);
+  EXPECT_THROW(self.safe_step({0, 0, 0}, std::vector<double>{1, 1, 1}, none, 1.0), std::invalid_argument);
+  EXPECT_THROW(checker.safe_step({0, 0}, std::vector<double>{1.0}, none, 1.0), std::invalid_argument);
+  std::vector<double> c;
+  EXPECT_THROW(checker.clearances({std::nan("")}, c), std::invalid_argument);
+}

@@ -2,6 +2,8 @@
 // Small helpers shared by the arm/ tests (and the arm reader's): arms, obstacles and data files
 // described inline.
 #include <polyplan/arm/angles.hpp>
+#include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/world.hpp>
@@ -37,6 +39,15 @@ inline Arm arm_of(std::vector<double> links, double width = 0, bool self_collisi
   arm.link_width = width;
   arm.self_collision = self_collision;
   return arm;
+}
+
+// Whether every configuration at samples `resolution` radians apart (arm/arm_motion.hpp's
+// motion_samples) is free: the sampled check certification replaced, kept here to show what it
+// misses and to check certificates independently with dense samples.
+inline bool samples_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to, double resolution) {
+  for (const JointAngles& q : motion_samples(from, to, resolution))
+    if (!checker.is_free(q)) return false;
+  return true;
 }
 
 // A shipped arm file: data/arms/<name>.

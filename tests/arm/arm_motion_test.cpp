@@ -60,16 +60,16 @@ TEST(Motion, APointBetweenTwoFreeConfigurationsBlocksTheMotion) {
   ASSERT_TRUE(checker.is_free(after));
   EXPECT_FALSE(checker.is_free({kPi / 2 + 0.1}));
   EXPECT_TRUE(checker.is_free({kPi / 2 + 0.101}));
-  EXPECT_FALSE(motion_is_free(checker, before, after, 0.01));
-  EXPECT_FALSE(motion_is_free(checker, after, before, 0.01));
-  EXPECT_FALSE(motion_is_free(checker, before, after, 0.2));  // samples at π/2 ± 0.1: both held
+  EXPECT_FALSE(samples_free(checker, before, after, 0.01));
+  EXPECT_FALSE(samples_free(checker, after, before, 0.01));
+  EXPECT_FALSE(samples_free(checker, before, after, 0.2));  // samples at π/2 ± 0.1: both held
   // At resolution 0.7 the motion is one step: only its two free ends are checked, and it is
   // accepted. The resolution is part of the answer, as documented.
   EXPECT_EQ(motion_samples(before, after, 0.7).size(), 2u);
-  EXPECT_TRUE(motion_is_free(checker, before, after, 0.7));
+  EXPECT_TRUE(samples_free(checker, before, after, 0.7));
   // A motion that does not sweep the point: free. Every sample counts as a check.
   const std::size_t before_checks = checker.checks();
-  EXPECT_TRUE(motion_is_free(checker, {0.2}, {0.4}, 0.05));
+  EXPECT_TRUE(samples_free(checker, {0.2}, {0.4}, 0.05));
   EXPECT_EQ(checker.checks() - before_checks, 5u);
 }
 
@@ -80,9 +80,318 @@ TEST(Motion, WrapsAroundTheShortWay) {
   const ArmCollisionChecker checker(arm_of({2}, 0.2), {}, {Eigen::Vector2d(-1, 0)});
   ASSERT_TRUE(checker.is_free({3.0}));
   ASSERT_TRUE(checker.is_free({3.3}));
-  EXPECT_FALSE(motion_is_free(checker, {3.0}, {3.3}, 0.01));
-  EXPECT_TRUE(motion_is_free(checker, {0.1}, {two_pi - 0.1}, 0.01));
-  EXPECT_FALSE(motion_is_free(checker, {two_pi - 0.1}, {kPi}, 0.01));  // ends on the point
+  EXPECT_FALSE(samples_free(checker, {3.0}, {3.3}, 0.01));
+  EXPECT_TRUE(samples_free(checker, {0.1}, {two_pi - 0.1}, 0.01));
+  EXPECT_FALSE(samples_free(checker, {two_pi - 0.1}, {kPi}, 0.01));  // ends on the point
+}
+
+// ---------------------------------------------------------------- certified motions
+
+namespace {
+
+constexpr double kDegree = two_pi / 360;
+
+// An independent re-check: some configuration along the motion, every `step` radians of its
+// widest joint (and the two ends), collides by checker.is_free alone.
+bool dense_sampling_finds_a_collision(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to,
+                                      double step) {
+  double widest = 0;
+  for (std::size_t j = 0; j < from.size(); ++j) widest = std::max(widest, angular_distance(from[j], to[j]));
+  const auto samples = static_cast<int>(std::ceil(widest / step));
+  if (!checker.is_free(from) || !checker.is_free(to)) return true;
+  for (int i = 1; i < samples; ++i)
+    if (!checker.is_free(interpolate_angles(from, to, static_cast<double>(i) / samples))) return true;
+  return false;
+}
+
+}  // namespace
+
+TEST(CertifiedMotion, OneDegreeSamplingMissesAPointThatLinkTwoCutsThrough) {
+  // Links 1 and 1, 0.1 wide; both joints turn −10°, so 1° sampling checks 11 configurations. At
+  // t = 0.55, between two samples, the corner at link 2's tip cuts through the point (0.6174,
+  // −0.7225), 7.6 mm deep; at every sample the point is at least 0.2 mm outside.
+  const ArmCollisionChecker checker(arm_of({1, 1}, 0.1), {}, {Eigen::Vector2d(0.6174, -0.7225)});
+  const JointAngles from{0.3, -two_pi / 3}, to{0.3 - 10 * kDegree, -two_pi / 3 - 10 * kDegree};
+  ASSERT_EQ(motion_step_count(from, to, kDegree), 10u);
+  EXPECT_TRUE(samples_free(checker, from, to, kDegree));  // the sampled check is fooled
+  const auto contact = checker.first_contact(interpolate_angles(from, to, 0.55));
+  ASSERT_TRUE(contact);
+  EXPECT_EQ(contact->describe(), "link 2 meets points[0]");
+
+  const MotionCertificate certificate = certify_motion(checker, from, to);
+  EXPECT_EQ(certificate.verdict, MotionCertificate::Verdict::collides);
+  EXPECT_FALSE(certificate.free());
+  ASSERT_TRUE(certificate.contact);
+  EXPECT_EQ(certificate.contact->describe(), "link 2 meets points[0]");
+  // The point is inside the link for t in about [0.501, 0.581]; `at` names a colliding configuration.
+  EXPECT_GT(certificate.at, 0.5);
+  EXPECT_LT(certificate.at, 0.59);
+  EXPECT_FALSE(checker.is_free(interpolate_angles(from, to, certificate.at)));
+  EXPECT_GT(certificate.steps, 1u);
+  EXPECT_FALSE(motion_is_free(checker, from, to));
+  EXPECT_FALSE(motion_is_free(checker, to, from));
+}
+
+TEST(CertifiedMotion, APointBetweenTwoFreeConfigurationsBlocksTheMotionAtEveryScale) {
+  // The sampled test's case (above): a one-step sampled check at 0.7 rad accepts the motion over
+  // the point; the certificate does not depend on a resolution.
+  const ArmCollisionChecker checker(arm_of({2}, 0.2), {}, {Eigen::Vector2d(0, 1)});
+  const JointAngles before{kPi / 2 - 0.3}, after{kPi / 2 + 0.3};
+  EXPECT_TRUE(samples_free(checker, before, after, 0.7));
+  const MotionCertificate there = certify_motion(checker, before, after);
+  EXPECT_EQ(there.verdict, MotionCertificate::Verdict::collides);
+  // The link holds the point for |θ − π/2| ≤ 0.1002, i.e. t in [0.33, 0.67].
+  EXPECT_GT(there.at, 0.3);
+  EXPECT_LT(there.at, 0.67);
+  EXPECT_EQ(certify_motion(checker, after, before).verdict, MotionCertificate::Verdict::collides);
+  // Away from the point: free, and each clearance computation counts as a check.
+  const std::size_t checks_before = checker.checks();
+  const MotionCertificate away = certify_motion(checker, {0.2}, {0.4});
+  EXPECT_TRUE(away.free());
+  EXPECT_GE(away.steps, 1u);
+  EXPECT_EQ(checker.checks() - checks_before, away.steps + 1);  // + the exact test of the goal
+}
+
+TEST(CertifiedMotion, WrapsAroundTheShortWay) {
+  // A point at (−1, 0) holds a link [2] 0.2 wide for |θ − π| ≤ 0.1002: from 3.0 to 3.3 the short
+  // way passes π; from 0.1 to 2π − 0.1 it passes 0, far from π.
+  const ArmCollisionChecker checker(arm_of({2}, 0.2), {}, {Eigen::Vector2d(-1, 0)});
+  EXPECT_EQ(certify_motion(checker, {3.0}, {3.3}).verdict, MotionCertificate::Verdict::collides);
+  EXPECT_TRUE(certify_motion(checker, {0.1}, {two_pi - 0.1}).free());
+  const MotionCertificate onto = certify_motion(checker, {two_pi - 0.1}, {kPi});  // ends on the point
+  EXPECT_EQ(onto.verdict, MotionCertificate::Verdict::collides);
+  EXPECT_EQ(onto.at, 1.0);
+  EXPECT_EQ(onto.steps, 0u);  // the goal is tested first
+}
+
+TEST(CertifiedMotion, ClearsAPointByAMillimetreAndByAMicrometre) {
+  // Link [2], a segment, turns from 0.1 to 1.0; the point lies on the ray at 0.5, just beyond the
+  // tip's circle: the tip passes it at 1 mm (1 µm). Closer than the rate bound can prove in one
+  // step, but advancement slows near it and speeds up again.
+  for (const double gap : {1e-3, 1e-6}) {
+    const double r = 2 + gap;
+    const ArmCollisionChecker checker(arm_of({2}), {}, {Eigen::Vector2d(r * std::cos(0.5), r * std::sin(0.5))});
+    const MotionCertificate certificate = certify_motion(checker, {0.1}, {1.0});
+    EXPECT_TRUE(certificate.free()) << gap;
+    EXPECT_GT(certificate.steps, 5u) << gap;
+    EXPECT_LT(certificate.steps, 200u) << gap;
+  }
+  // A point 1 mm inside the tip's circle and a link 1 cm wide: it collides.
+  const double r = 2 - 1e-3;
+  const ArmCollisionChecker inside(arm_of({2}, 0.01), {}, {Eigen::Vector2d(r * std::cos(0.5), r * std::sin(0.5))});
+  const MotionCertificate hit = certify_motion(inside, {0.1}, {1.0});
+  EXPECT_EQ(hit.verdict, MotionCertificate::Verdict::collides);
+  EXPECT_NEAR(hit.at, 0.4 / 0.9, 0.01);
+}
+
+TEST(CertifiedMotion, AZeroWidthLinkSweepingOverAPointIsNeverFree) {
+  // A segment crosses a point in a single instant: no sample lands on it and no clearance proves
+  // the motion free. Advancement stalls just before the point: refused, not accepted.
+  const double crossing = 0.5123456789;
+  const ArmCollisionChecker checker(arm_of({2}), {}, {Eigen::Vector2d(std::cos(crossing), std::sin(crossing))});
+  EXPECT_TRUE(samples_free(checker, {0.1}, {0.9}, kDegree / 100));  // sampling does not see it
+  const MotionCertificate certificate = certify_motion(checker, {0.1}, {0.9});
+  EXPECT_FALSE(certificate.free());
+  EXPECT_NEAR(certificate.at, (crossing - 0.1) / 0.8, 1e-6);  // where it stopped: at the point
+}
+
+TEST(CertifiedMotion, StartOrGoalInCollision) {
+  const ArmCollisionChecker checker(arm_of({2}, 0.2), {}, {Eigen::Vector2d(0, 1)});
+  const MotionCertificate from_inside = certify_motion(checker, {kPi / 2}, {kPi / 2 + 0.5});
+  EXPECT_EQ(from_inside.verdict, MotionCertificate::Verdict::collides);
+  EXPECT_EQ(from_inside.at, 0.0);
+  EXPECT_EQ(from_inside.steps, 1u);
+  ASSERT_TRUE(from_inside.contact);
+  EXPECT_EQ(from_inside.contact->describe(), "link 1 meets points[0]");
+  const MotionCertificate into = certify_motion(checker, {kPi / 2 + 0.5}, {kPi / 2});
+  EXPECT_EQ(into.verdict, MotionCertificate::Verdict::collides);
+  EXPECT_EQ(into.at, 1.0);
+  EXPECT_EQ(into.steps, 0u);
+  // Zero-length motions: free exactly when the configuration is, whatever turn it is written in.
+  EXPECT_TRUE(certify_motion(checker, {7.0}, {7.0 - two_pi}).free());
+  EXPECT_EQ(certify_motion(checker, {7.0}, {7.0 - two_pi}).steps, 0u);
+  EXPECT_EQ(certify_motion(checker, {kPi / 2}, {kPi / 2 + two_pi}).verdict, MotionCertificate::Verdict::collides);
+  // Sizes and angles are checked.
+  EXPECT_THROW(certify_motion(checker, {0.0, 0.0}, {0.0, 0.0}), std::invalid_argument);
+  EXPECT_THROW(certify_motion(checker, {0.0}, {0.0, 0.0}), std::invalid_argument);
+  EXPECT_THROW(certify_motion(checker, {std::nan("")}, {0.0}), std::invalid_argument);
+  EXPECT_THROW(motion_is_free(checker, {0.0}, {std::numeric_limits<double>::infinity()}), std::invalid_argument);
+}
+
+TEST(CertifiedMotion, SlidingAtATinyClearanceIsRefusedAtTheStepCap) {
+  // The point is 1 µm behind the base of link [1]; as the link turns from −1 to 1 (pointing away),
+  // it stays 1 µm from the point. Free, but each step proves only about 1 µm / 2 of the motion:
+  // the step cap ends it, and the motion is refused.
+  const ArmCollisionChecker behind(arm_of({1}), {}, {Eigen::Vector2d(-1e-6, 0)});
+  EXPECT_FALSE(dense_sampling_finds_a_collision(behind, {-1.0}, {1.0}, 0.001));
+  const MotionCertificate slide = certify_motion(behind, {-1.0}, {1.0});
+  EXPECT_EQ(slide.verdict, MotionCertificate::Verdict::uncertified);
+  EXPECT_EQ(slide.steps, motion_max_steps);
+  EXPECT_GT(slide.at, 0.0);
+  EXPECT_LT(slide.at, 0.01);
+  EXPECT_FALSE(motion_is_free(behind, {-1.0}, {1.0}));
+  // 1e-13 behind the base is closer than the safety margin: the clearance is 0 and proves nothing.
+  const ArmCollisionChecker touching(arm_of({1}), {}, {Eigen::Vector2d(-1e-13, 0)});
+  ASSERT_TRUE(touching.is_free({-1.0}));
+  const MotionCertificate stuck = certify_motion(touching, {-1.0}, {1.0});
+  EXPECT_EQ(stuck.verdict, MotionCertificate::Verdict::uncertified);
+  EXPECT_EQ(stuck.steps, 1u);
+  EXPECT_EQ(stuck.at, 0.0);
+}
+
+TEST(CertifiedMotion, SelfCollision) {
+  // Links 2, 1, 2 folded into a U (link 3 above link 1, 1 apart). Link 3 swinging down from
+  // heading π + 0.3 to π + 1.6 crosses link 1 (at heading 5π/4 it passes (1, 0)); both ends are
+  // free (at π + 1.6 it passes x = 2.03, beyond link 1's tip).
+  const ArmCollisionChecker self(arm_of({2, 1, 2}, 0, true), {}, {});
+  const JointAngles swing_from{0, kPi / 2, kPi / 2 + 0.3}, swing_to{0, kPi / 2, kPi / 2 + 1.6};
+  ASSERT_TRUE(self.is_free(swing_from));
+  ASSERT_TRUE(self.is_free(swing_to));
+  const MotionCertificate swing = certify_motion(self, swing_from, swing_to);
+  EXPECT_EQ(swing.verdict, MotionCertificate::Verdict::collides);
+  ASSERT_TRUE(swing.contact);
+  EXPECT_EQ(swing.contact->describe(), "link 1 meets link 3");
+  EXPECT_FALSE(self.is_free(interpolate_angles(swing_from, swing_to, swing.at)));
+  // Without self-collision the links pass each other; nothing else is there: one step.
+  const MotionCertificate apart = certify_motion(ArmCollisionChecker(arm_of({2, 1, 2}), {}, {}), swing_from, swing_to);
+  EXPECT_TRUE(apart.free());
+  EXPECT_EQ(apart.steps, 1u);
+  // Link 3 wagging ±0.2 around the U stays at least 1 − 2 sin 0.2 = 0.6 above link 1: free.
+  EXPECT_TRUE(certify_motion(self, {0, kPi / 2, kPi / 2 - 0.2}, {0, kPi / 2, kPi / 2 + 0.2}).free());
+  // Turning the whole U by joint 1 alone moves links 1 and 3 rigidly together: their distance
+  // cannot change (the pair's relative speed is 0), so one clearance computation proves it.
+  const MotionCertificate rigid = certify_motion(self, {0, kPi / 2, kPi / 2}, {2, kPi / 2, kPi / 2});
+  EXPECT_TRUE(rigid.free());
+  EXPECT_EQ(rigid.steps, 1u);
+  // 0.1 wide links: the swing collides; swung on to π + 1.7 link 3 clears link 1's tip corner
+  // (2, 0.05) by 0.129 − 0.05 at its goal, and the motion is still blocked in between.
+  const ArmCollisionChecker wide(arm_of({2, 1, 2}, 0.1, true), {}, {});
+  const JointAngles wide_from = swing_from, wide_to{0, kPi / 2, kPi / 2 + 1.7};
+  ASSERT_TRUE(wide.is_free(wide_from));
+  ASSERT_TRUE(wide.is_free(wide_to));
+  EXPECT_EQ(certify_motion(wide, wide_from, wide_to).verdict, MotionCertificate::Verdict::collides);
+}
+
+namespace {
+
+// Counts of certify_motion's verdicts over many motions, each checked against dense sampling.
+struct Verdicts {
+  int free = 0, collides = 0, uncertified = 0;
+};
+
+// certify_motion must never call a motion free that dense independent sampling (every 0.001 rad)
+// sees collide; a "collides" must name a configuration that collides.
+void check_against_dense_sampling(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to,
+                                  Verdicts& verdicts) {
+  const MotionCertificate certificate = certify_motion(checker, from, to);
+  const bool dense_collides = dense_sampling_finds_a_collision(checker, from, to, 0.001);
+  switch (certificate.verdict) {
+    case MotionCertificate::Verdict::free:
+      ++verdicts.free;
+      ASSERT_FALSE(dense_collides) << "certified a colliding motion";
+      break;
+    case MotionCertificate::Verdict::collides: {
+      ++verdicts.collides;
+      const JointAngles& at = certificate.at == 0 ? from : certificate.at == 1 ? to : interpolate_angles(from, to, certificate.at);
+      ASSERT_FALSE(checker.is_free(at)) << "a collision at t = " << certificate.at << " that is not one";
+      break;
+    }
+    case MotionCertificate::Verdict::uncertified:
+      ++verdicts.uncertified;
+      break;
+  }
+}
+
+JointAngles random_configuration(std::mt19937& rng, std::size_t joints) {
+  std::uniform_real_distribution<double> angle(0, two_pi);
+  JointAngles q(joints);
+  for (double& a : q) a = angle(rng);
+  return q;
+}
+
+// A motion from a random configuration: every joint turns by up to `spread` either way.
+JointAngles random_neighbour(std::mt19937& rng, const JointAngles& from, double spread) {
+  std::uniform_real_distribution<double> turn(-spread, spread);
+  JointAngles to = from;
+  for (double& a : to) a = normalize_angle(a + turn(rng));
+  return to;
+}
+
+}  // namespace
+
+TEST(CertifiedMotion, NeverFreeWhereDenseSamplingCollidesOnTheShippedArms) {
+  std::mt19937 rng(2024);
+  for (const char* file : {"two_link_points.json", "three_link_forest.json", "four_link_forest.json"}) {
+    const ArmProblem p = read_arm_problem(arm_data_file(file));
+    const ArmCollisionChecker checker(p);
+    Verdicts verdicts;
+    for (int i = 0; i < 400; ++i) {
+      // Short moves like the grid planner's, and longer joins.
+      const JointAngles from = random_configuration(rng, p.arm.joints());
+      const JointAngles to = random_neighbour(rng, from, i % 3 == 0 ? 1.0 : 0.15);
+      check_against_dense_sampling(checker, from, to, verdicts);
+      if (HasFatalFailure()) return;
+    }
+    SCOPED_TRACE(file);
+    RecordProperty(std::string(file) + " free/collides/uncertified",
+                   std::to_string(verdicts.free) + "/" + std::to_string(verdicts.collides) + "/" + std::to_string(verdicts.uncertified));
+    EXPECT_GT(verdicts.free, 20);  // both answers occur: the test can fail
+    EXPECT_GT(verdicts.collides, 20);
+    EXPECT_LT(verdicts.uncertified, 10);
+  }
+}
+
+TEST(CertifiedMotion, NeverFreeWhereDenseSamplingCollidesAmongRandomPoints) {
+  // Random arms of 2 to 4 links (segments or rectangles, with or without self-collision) among
+  // 30 random points, random motions of up to 0.5 rad per joint. Zero-width links cross points in
+  // single instants, so there many motions are refused (uncertified), never accepted.
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> unit(0, 1);
+  Verdicts verdicts;
+  for (int world = 0; world < 60; ++world) {
+    const std::size_t joints = 2 + world % 3;
+    std::vector<double> links(joints);
+    for (double& l : links) l = 0.5 + unit(rng);
+    const double width = world % 2 == 0 ? 0.0 : 0.05 + 0.2 * unit(rng);
+    const Arm arm = arm_of(links, width, world % 4 == 1);
+    std::vector<Eigen::Vector2d> points(30);
+    for (Eigen::Vector2d& point : points) {
+      const double r = arm.reach() * std::sqrt(unit(rng)), phi = two_pi * unit(rng);
+      point = {r * std::cos(phi), r * std::sin(phi)};
+    }
+    const ArmCollisionChecker checker(arm, {}, points);
+    for (int i = 0; i < 20; ++i) {
+      const JointAngles from = random_configuration(rng, joints);
+      check_against_dense_sampling(checker, from, random_neighbour(rng, from, 0.5), verdicts);
+      if (HasFatalFailure()) return;
+    }
+  }
+  RecordProperty("free/collides/uncertified",
+                 std::to_string(verdicts.free) + "/" + std::to_string(verdicts.collides) + "/" + std::to_string(verdicts.uncertified));
+  EXPECT_GT(verdicts.free, 60);
+  EXPECT_GT(verdicts.collides, 200);
+}
+
+TEST(CertifiedMotion, NeverFreeWhereDenseSamplingCollidesWithSelfCollision) {
+  // Random folding arms of 3 to 5 links, thin rectangles (0.01 to 0.05 wide) that may collide only
+  // with each other, random motions of up to 1.5 rad per joint: the links sweep across each other.
+  std::mt19937 rng(31);
+  std::uniform_real_distribution<double> unit(0, 1);
+  Verdicts verdicts;
+  for (int arm_number = 0; arm_number < 40; ++arm_number) {
+    std::vector<double> links(3 + arm_number % 3);
+    for (double& l : links) l = 0.5 + unit(rng);
+    const ArmCollisionChecker checker(arm_of(links, 0.01 + 0.04 * unit(rng), true), {}, {});
+    for (int i = 0; i < 25; ++i) {
+      const JointAngles from = random_configuration(rng, links.size());
+      check_against_dense_sampling(checker, from, random_neighbour(rng, from, 1.5), verdicts);
+      if (HasFatalFailure()) return;
+    }
+  }
+  RecordProperty("free/collides/uncertified",
+                 std::to_string(verdicts.free) + "/" + std::to_string(verdicts.collides) + "/" + std::to_string(verdicts.uncertified));
+  EXPECT_GT(verdicts.free, 100);
+  EXPECT_GT(verdicts.collides, 100);
 }
 
 // ---------------------------------------------------------------- shipped arms
@@ -104,13 +413,15 @@ TEST(ArmData, TwoLinkPointsQueriesAreFreeAndTheStraightMotionsAreAsDesigned) {
   }
   // easy on the torus: θ1 fixed, θ2 from 0.12 back through 0 to 6.00 (0.40 rad) is free...
   EXPECT_NEAR(total_angular_distance(p.queries[0].start, p.queries[0].goal), 0.4031853071795866, 1e-12);
-  EXPECT_TRUE(motion_is_free(checker, p.queries[0].start, p.queries[0].goal, two_pi / 3600));
+  EXPECT_TRUE(samples_free(checker, p.queries[0].start, p.queries[0].goal, two_pi / 3600));
+  EXPECT_TRUE(motion_is_free(checker, p.queries[0].start, p.queries[0].goal));  // and certified
   // ...while the long way up at θ1 = 0.76 is blocked (by the group of points above the arm).
   bool long_way_blocked = false;
   for (int k = 0; k <= 1000 && !long_way_blocked; ++k) long_way_blocked = !checker.is_free({0.76, 0.12 + 5.88 * k / 1000});
   EXPECT_TRUE(long_way_blocked);
   // hard: the straight short-way motion crosses the wall that separates it on the bounded square.
-  EXPECT_FALSE(motion_is_free(checker, p.queries[2].start, p.queries[2].goal, two_pi / 3600));
+  EXPECT_FALSE(samples_free(checker, p.queries[2].start, p.queries[2].goal, two_pi / 3600));
+  EXPECT_EQ(certify_motion(checker, p.queries[2].start, p.queries[2].goal).verdict, MotionCertificate::Verdict::collides);
 }
 
 TEST(ArmData, ForestsAreSeed001sArmsAndTheirStartAndGoalAreFree) {
@@ -140,7 +451,8 @@ TEST(ArmData, ForestsAreSeed001sArmsAndTheirStartAndGoalAreFree) {
     const ArmCollisionChecker checker(p);
     EXPECT_TRUE(checker.is_free(f.start)) << f.file;
     EXPECT_TRUE(checker.is_free(f.goal)) << f.file;
-    EXPECT_FALSE(motion_is_free(checker, f.start, f.goal, two_pi / 360)) << f.file << ": the straight motion should need planning";
+    EXPECT_FALSE(samples_free(checker, f.start, f.goal, two_pi / 360)) << f.file << ": the straight motion should need planning";
+    EXPECT_EQ(certify_motion(checker, f.start, f.goal).verdict, MotionCertificate::Verdict::collides) << f.file;
   }
 }
 

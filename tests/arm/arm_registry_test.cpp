@@ -12,32 +12,16 @@
 #include <polyplan/draw/arm_svg.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/roadmaps/plan_json.hpp>
+#include "registry_fixtures.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 
 namespace polyplan {
 namespace {
-
-namespace fs = std::filesystem;
-
-std::vector<std::string> shipped_arms() {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(std::string(POLYPLAN_SOURCE_DIR) + "/data/arms"))
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-std::vector<std::string> registered_planners() {
-  std::vector<std::string> names;
-  for (const auto& entry : planners<PlanarArm>().entries()) names.push_back(entry.name);
-  return names;
-}
 
 class EveryArmPlannerOnEveryArm : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
 
@@ -86,8 +70,9 @@ TEST_P(EveryArmPlannerOnEveryArm, KeepsThePlannerPromises) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ArmRegistry, EveryArmPlannerOnEveryArm,
-                         ::testing::Combine(::testing::ValuesIn(registered_planners()), ::testing::ValuesIn(shipped_arms())),
-                         [](const auto& info) { return std::get<0>(info.param) + "_on_" + std::get<1>(info.param); });
+                         ::testing::Combine(::testing::ValuesIn(test::registered_planners<PlanarArm>()),
+                                            ::testing::ValuesIn(test::shipped("arms"))),
+                         [](const auto& info) { return test::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
 
 TEST(ArmRegistry, GridIsRegisteredWithItsOptions) {
   const auto* grid = planners<PlanarArm>().find("grid");

@@ -160,7 +160,13 @@ TEST(QueryNotFree, ARobotWithExtentOverlapsOrLeavesTheBounds) {
             "the start [1/2, 1/2] is not free: the robot overlaps obstacles[0]");
   EXPECT_EQ(c.query_not_free(query(pt("3", "0"), pt("3.5", "0"))),
             "the goal [7/2, 0] is not free: the robot leaves the bounds");
-  EXPECT_EQ(c.query_not_free(query(pt("0", "0"), pt("2", "2"))), std::nullopt);  // touching the obstacle's corner
+  EXPECT_EQ(c.query_not_free(query(pt("3", "0"), pt("2", "2"))), std::nullopt);  // touching the obstacle's corner
+  // At (0, 0) the robot touches the obstacle's corner too, but it sits in the zero-width gap
+  // between the bounds and the obstacle's C-obstacle [0, 2]^2: not in the closure of the open
+  // free space.
+  EXPECT_EQ(c.query_not_free(query(pt("0", "0"), pt("3", "3"))),
+            "the start [0, 0] is not free: the robot fits there only exactly: the free space has zero width (obstacles "
+            "touch around it)");
 }
 
 TEST(Locate, FreePointLiesInOneComponent) {

@@ -12,34 +12,18 @@
 #include <polyplan/roadmaps/plan_json.hpp>
 #include <polyplan/roadmaps/registry.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include "registry_fixtures.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <filesystem>
 #include <map>
 #include <memory>
 
 namespace polyplan {
 namespace {
-
-namespace fs = std::filesystem;
-
-std::vector<std::string> shipped_worlds() {
-  std::vector<std::string> names;
-  for (const auto& entry : fs::directory_iterator(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds"))
-    if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
-  std::sort(names.begin(), names.end());
-  return names;
-}
-
-std::vector<std::string> registered_planners() {
-  std::vector<std::string> names;
-  for (const auto& entry : planners<TranslatingRobot>().entries()) names.push_back(entry.name);
-  return names;
-}
 
 // A world, its C-space, and the exact shortest path lengths of its queries, built once per world.
 struct ShippedWorld {
@@ -126,12 +110,9 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryPlannerOnEveryWorld,
-                         ::testing::Combine(::testing::ValuesIn(registered_planners()), ::testing::ValuesIn(shipped_worlds())),
-                         [](const auto& info) {
-                           std::string name = std::get<0>(info.param) + "_on_" + std::get<1>(info.param);
-                           std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
-                           return name;
-                         });
+                         ::testing::Combine(::testing::ValuesIn(test::registered_planners<TranslatingRobot>()),
+                                            ::testing::ValuesIn(test::shipped("worlds"))),
+                         [](const auto& info) { return test::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
 
 TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
   const auto& registry = planners<TranslatingRobot>();
