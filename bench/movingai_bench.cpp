@@ -28,7 +28,7 @@ void Queries(benchmark::State& state, const std::string& name, double polyanya_u
       benchmark::Counter(static_cast<double>(answered), benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
   state.counters["us_per_query"] = state.counters["us_per_query"] * 1e6;
   state.counters["polyanya_us"] = polyanya_us;
-  state.counters["roadmap_edges"] = static_cast<double>(graph.facts().edges);
+  state.counters["roadmap_edges"] = static_cast<double>(boost::num_edges(graph.roadmap()));
 }
 
 }  // namespace

@@ -331,12 +331,14 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
       at = start->vertex(li);
       break;
     case CDT::EDGE: {
+      // An edge between two blocked triangles lies inside a C-obstacle (a free-space boundary
+      // edge has a free side).
+      if (!start->info().free && !start->neighbor(li)->info().free) return std::string("starts inside a C-obstacle");
       const VertexHandle u = start->vertex(CDT::ccw(li)), w = start->vertex(CDT::cw(li));
       const CGAL::Orientation side = CGAL::orientation(u->point(), w->point(), b);
       if (side == CGAL::COLLINEAR) {  // along the edge, towards u or w
         at = ahead(u->point()) ? u : w;
         if (on_segment_before(a, at->point())) return std::nullopt;
-        if (!start->info().free && !start->neighbor(li)->info().free) return std::string("runs inside a C-obstacle");
         arrived = true;
       } else {
         // start lies left of u->w (counter-clockwise triangle); the neighbour is on the right.
@@ -410,7 +412,12 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
   return std::string("lost its way in the triangulation");
 }
 
-std::optional<std::string> FreeSpaceTriangulation::why_path_blocked(const std::vector<Point>& path) const {
+std::optional<std::string> FreeSpaceTriangulation::why_path_blocked(const std::vector<Point>& given) const {
+  // A zero-length step carries no motion and has no direction to turn by.
+  std::vector<Point> path;
+  for (const Point& p : given)
+    if (path.empty() || path.back() != p) path.push_back(p);
+  if (path.size() == 1) return why_blocked(path[0], path[0]);
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
     if (auto why = why_blocked(path[i], path[i + 1]))
       return "segment " + std::to_string(i) + " " + to_text(path[i]) + "-" + to_text(path[i + 1]) + ": " + *why;

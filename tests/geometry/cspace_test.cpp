@@ -6,6 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <future>
+#include <memory>
+#include <thread>
 
 using namespace polyplan;
 using polyplan::test::area;
@@ -221,4 +225,24 @@ TEST(Locate, InsideAnObstacleOrOutsideTheBoundsIsBlocked) {
     EXPECT_EQ(at.kind, Location::Kind::blocked) << to_string(p);
     EXPECT_TRUE(at.components.empty()) << to_string(p);
   }
+}
+
+// Library bug (through CGAL 5.5.1), left failing: CSpace::locate never returns for (2, 3/2), a
+// free point below the vertex (2, 2) where the square and the triangle touch. CGAL's
+// Arr_landmarks_point_location walks from the landmark (2, 2) and finds no face to cross into:
+// with CGAL's assertions on it stops at "new_face != face" (Arr_landmarks_pl_impl.h:578, CGAL
+// issue #6594, open), in a release build it loops for ever; CGAL's naive point location
+// answers "face". Every check_path, query_not_free and rasterize goes through locate, and a few
+// per cent of the random worlds of tests/roadmaps/free_space_triangulation_test.cpp have such a
+// lattice point (its seeds avoid them). Enable once
+// CSpace uses a point location that terminates (or CGAL is fixed); the watchdog makes it fail in
+// seconds instead of hanging the run.
+TEST(Locate, DISABLED_NextToWhereObstaclesTouchReturns) {
+  const auto c = std::make_shared<const CSpace>(
+      world_from(R"({"obstacles": [[[2, 2], [3, 2], [3, 3], [2, 3]], [[0, 2], [1, 1], [2, 2]]]})"));
+  std::promise<Location::Kind> kind;
+  std::future<Location::Kind> answer = kind.get_future();
+  std::thread([c, kind = std::move(kind)]() mutable { kind.set_value(c->locate(pt("2", "3/2")).kind); }).detach();
+  ASSERT_EQ(answer.wait_for(std::chrono::seconds(10)), std::future_status::ready) << "CSpace::locate did not return in 10 s";
+  EXPECT_EQ(answer.get(), Location::Kind::free);
 }

@@ -15,7 +15,6 @@
 #include <map>
 #include <random>
 #include <set>
-#include <sstream>
 
 using namespace polyplan;
 using polyplan::detail::CSpaceAccess;
@@ -76,6 +75,11 @@ Ring rectangle(const Rational& x0, const Rational& y0, const Rational& x1, const
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
+// The seeds of the tests below give worlds on which CSpace::locate returns: CGAL 5.5.1's landmark
+// point location loops for ever on some points next to where obstacles touch (in a few per cent
+// of these worlds, for some lattice point; see Locate.DISABLED_NextToWhereObstaclesTouchReturns
+// in cspace_test.cpp).
+//
 // Kind 0: cells of a 5 × 5 grid of 2 × 2 cells blocked at random (shared edges, diagonal
 // touches: pinch points). Kind 1: random rectangles and triangles, overlapping or touching.
 // Kind 2: kind 1 with a square robot of side 1.
@@ -110,7 +114,7 @@ World random_world(std::mt19937& rng, int kind) {
 }
 
 // The lattice points in the closure of the free space: where walks start. (Starts inside
-// C-obstacles are the hand-made tests' and DISABLED_StartInsideAnObstacleOnATriangulationEdge's.)
+// C-obstacles are the hand-made tests' and StartInsideAnObstacleOnATriangulationEdge's.)
 // Empty when the random obstacles fill the box.
 std::vector<ExactPoint> free_lattice_points(const CSpace& cspace) {
   std::vector<ExactPoint> out;
@@ -181,17 +185,15 @@ TEST(FreeSpaceTriangulation, SegmentThroughAnObstacleIsBlocked) {
   EXPECT_EQ(t.why_blocked(pt("0", "3/2"), pt("3", "3/2")), "crosses into a C-obstacle");
   // Diagonally through two of its corners: it enters at the vertex (1, 1).
   EXPECT_EQ(t.why_blocked(pt("0", "0"), pt("3", "3")), "enters a C-obstacle at [1, 1]");
-  EXPECT_EQ(t.why_blocked(pt("3/2", "3/2"), pt("3", "3")), "enters a C-obstacle");  // starts inside
+  EXPECT_EQ(t.why_blocked(pt("3/2", "3/2"), pt("3", "3")), "starts inside a C-obstacle");  // on the inside diagonal
   EXPECT_EQ(t.why_blocked(pt("3/2", "3/2"), pt("3/2", "3/2")), "the point is blocked");
 }
 
-// Library bug, left failing: why_blocked reports a segment valid when it starts inside a
-// C-obstacle on an unconstrained edge of the triangulation (a diagonal of the obstacle's inside)
-// and runs along that edge to or short of its end: the EDGE case returns "valid" once b lies on
-// the edge, before it looks whether the triangles on either side are free. One of the square's
-// diagonals is such an edge. (The visibility graph's paths start at free points, so its checks
-// are not affected; check_path refuses all four.) Enable once the EDGE case checks freedom first.
-TEST(FreeSpaceTriangulation, DISABLED_StartInsideAnObstacleOnATriangulationEdge) {
+// A segment that starts inside a C-obstacle on an unconstrained edge of the triangulation (a
+// diagonal of the obstacle's inside) and runs along that edge is blocked: the start's triangles on
+// both sides are blocked. (Once accepted, because the walk returned "valid" on reaching b along the
+// edge before it looked at the triangles.)
+TEST(FreeSpaceTriangulation, StartInsideAnObstacleOnATriangulationEdge) {
   const Triangulated t(kSquareInABox);
   for (const ExactPoint& corner : {pt("1", "1"), pt("2", "1"), pt("2", "2"), pt("1", "2")}) {
     EXPECT_FALSE(check_path(t.cspace, {pt("3/2", "3/2"), corner}).valid);
@@ -230,6 +232,15 @@ TEST(FreeSpaceTriangulation, PinchPointIsAZeroWidthPassage) {
   // Each half alone is a motion: to the pinch point, and from it.
   EXPECT_EQ(t.why_blocked(pt("1", "1"), pt("2", "2")), std::nullopt);
   EXPECT_EQ(t.why_blocked(pt("2", "2"), pt("3", "3")), std::nullopt);
+}
+
+// A path that reaches the pinch point (2, 2) and stays there (a zero-length step, which check_path
+// drops too) turns nowhere. (Once refused: the leaving direction was the null vector.)
+TEST(FreeSpaceTriangulation, StayingAtAPinchPointIsNoTurn) {
+  const Triangulated t(kTouchingCorners);
+  ASSERT_TRUE(check_path(t.cspace, {pt("1", "1"), pt("2", "2"), pt("2", "2")}).valid);
+  EXPECT_EQ(t.why_path_blocked({pt("1", "1"), pt("2", "2"), pt("2", "2")}), std::nullopt);
+  EXPECT_EQ(t.why_path_blocked({pt("1", "1"), pt("1", "1"), pt("2", "2")}), std::nullopt);
 }
 
 TEST(FreeSpaceTriangulation, PathReasonNamesTheSegment) {
@@ -274,7 +285,7 @@ TEST(FreeSpaceTriangulation, AgreesWithCheckPathOnRandomSegments) {
 
 TEST(FreeSpaceTriangulation, AgreesWithCheckPathOnRandomPolylinesTurningAtVertices) {
   // Turning points at the free space's vertices put the pinch rule to work.
-  std::mt19937 rng(7);
+  std::mt19937 rng(5);
   std::size_t valid = 0, total = 0;
   for (int round = 0; round < 12; ++round) {
     const World world = random_world(rng, round % 3);
@@ -286,6 +297,8 @@ TEST(FreeSpaceTriangulation, AgreesWithCheckPathOnRandomPolylinesTurningAtVertic
       // From a corner (or a lattice point) to a corner and on, so that many pieces are valid.
       const std::vector<ExactPoint> path{i % 2 ? corners[corner(rng)] : starts[start(rng)], corners[corner(rng)],
                                          i % 3 ? corners[corner(rng)] : lattice_point(rng)};
+      // Zero-length steps: StayingAtAPinchPointIsNoTurn.
+      if (path[0] == path[1] || path[1] == path[2]) continue;
       const PathCheck reference = check_path(t.cspace, path);
       const auto why = t.why_path_blocked(path);
       EXPECT_EQ(why.has_value(), !reference.valid)
@@ -306,7 +319,7 @@ TEST(FreeSpaceTriangulation, VisibleFromPointAgreesWithBruteForceUpToStraightCha
   // so that the graph still reaches it at the same length.
   std::mt19937 rng(99);
   std::size_t compared = 0, missed = 0;
-  for (int round = 0; round < 6; ++round) {
+  for (int round = 0; round < 9; ++round) {
     const World world = random_world(rng, round % 3);
     const Triangulated t(world);
     std::vector<ExactPoint> viewpoints = arrangement_vertices(t.cspace);
@@ -349,10 +362,10 @@ TEST(FreeSpaceTriangulation, DISABLED_VisibleAlongALineTouchingObstaclesOnBothSi
                            "obstacles": [[[2, 6], [4, 6], [4, 8], [2, 8]], [[6, 4], [8, 4], [8, 6], [6, 6]]]})");
   ASSERT_EQ(t.why_blocked(pt("1", "6"), pt("8", "6")), std::nullopt);
   ASSERT_TRUE(check_path(t.cspace, {pt("1", "6"), pt("8", "6")}).valid);
-  std::vector<std::string> seen;
-  for (const std::size_t v : visible(t, pt("1", "6"))) seen.push_back(vertex_text(t, v));
-  EXPECT_NE(std::find(seen.begin(), seen.end(), "[6, 6]"), seen.end());
-  EXPECT_NE(std::find(seen.begin(), seen.end(), "[8, 6]"), seen.end());
+  std::string seen;
+  for (const std::size_t v : visible(t, pt("1", "6"))) seen += vertex_text(t, v) + " ";
+  EXPECT_NE(seen.find("[6, 6]"), std::string::npos) << seen;
+  EXPECT_NE(seen.find("[8, 6]"), std::string::npos) << seen;
 }
 
 TEST(FreeSpaceTriangulation, VisibleFromPointOnHandMadeWorlds) {
@@ -361,7 +374,7 @@ TEST(FreeSpaceTriangulation, VisibleFromPointOnHandMadeWorlds) {
   // line is the square's diagonal.
   const Triangulated t(kSquareInABox);
   std::vector<std::string> names;
-  for (const std::size_t v : visible(t, pt("0", "0"))) names.push_back(to_string(polyplan::detail::to_exact(t.triangulation.point(v))));
+  for (const std::size_t v : visible(t, pt("0", "0"))) names.push_back(vertex_text(t, v));
   std::sort(names.begin(), names.end());
   EXPECT_EQ(names, (std::vector<std::string>{"[0, 4]", "[1, 1]", "[1, 2]", "[2, 1]", "[4, 0]"}));
   // From the pinch point both free squares are seen, each vertex once.
@@ -399,10 +412,11 @@ TEST(FreeSpaceTriangulation, ComponentsAgreeWithCSpaceLocate) {
         const std::vector<int> components = t.triangulation.components_at(to_point(p));
         ASSERT_EQ(components.size(), located.components.size()) << "world " << round << " at " << to_string(p);
         if (components.size() != 1) continue;
-        const auto [it, fresh] = to_cspace.emplace(components[0], located.components[0]);
-        EXPECT_EQ(it->second, located.components[0]) << "world " << round << " at " << to_string(p);
-        const auto [back, new_back] = to_triangulation.emplace(located.components[0], components[0]);
-        EXPECT_EQ(back->second, components[0]) << "world " << round << " at " << to_string(p);
+        // The first point of a component sets its pair; every other point must agree.
+        EXPECT_EQ(to_cspace.emplace(components[0], located.components[0]).first->second, located.components[0])
+            << "world " << round << " at " << to_string(p);
+        EXPECT_EQ(to_triangulation.emplace(located.components[0], components[0]).first->second, components[0])
+            << "world " << round << " at " << to_string(p);
       }
   }
 }
