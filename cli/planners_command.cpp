@@ -20,7 +20,8 @@ nlohmann::json space_json(const std::string& command) {
   for (const auto& entry : planners<Space>().entries()) {
     nlohmann::json options = nlohmann::json::array();
     for (const OptionInfo& o : entry.options)
-      options.push_back({{"name", o.name}, {"description", o.description}, {"kind", o.kind}, {"default", o.default_value}});
+      options.push_back({{"name", o.name}, {"description", o.description}, {"kind", o.kind}, {"default", o.default_value},
+                         {"flag", o.flag}});
     list.push_back({{"name", entry.name}, {"description", entry.description}, {"options", options}});
   }
   return {{"space", std::string(Space::description)}, {"command", command}, {"planners", list}};
@@ -31,9 +32,10 @@ void print_space(const nlohmann::json& space) {
   for (const auto& planner : space["planners"]) {
     std::printf("  %-16s %s\n", planner["name"].get<std::string>().c_str(), planner["description"].get<std::string>().c_str());
     for (const auto& o : planner["options"]) {
-      const std::string flag = "--" + o["name"].get<std::string>() + " " + o["kind"].get<std::string>();
-      std::printf("      %-44s %s (default %s)\n", flag.c_str(), o["description"].get<std::string>().c_str(),
-                  o["default"].get<std::string>().c_str());
+      const std::string name = o["name"], kind = o["kind"];
+      const std::string flag = o["flag"].get<bool>() ? "--" + name + ", --no-" + name : "--" + name + " " + kind;
+      std::printf("      %s   (default %s)\n          %s\n", flag.c_str(), o["default"].get<std::string>().c_str(),
+                  o["description"].get<std::string>().c_str());
     }
   }
 }
