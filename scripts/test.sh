@@ -9,7 +9,7 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release
 cmake --build build -j"$jobs"
 ctest --test-dir build --output-on-failure -j"$jobs"
 if [ "${SANITIZE:-1}" = 1 ]; then
-  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=RelWithDebInfo -DPOLYPLAN_SANITIZE=ON -DPOLYPLAN_BUILD_EXAMPLES=OFF
+  cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_SANITIZE=ON -DPOLYPLAN_BUILD_EXAMPLES=OFF
   cmake --build build-sanitize -j"$jobs"
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
 fi
