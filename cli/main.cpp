@@ -9,12 +9,16 @@
 namespace polyplan::cli {
 
 void write_json(const nlohmann::json& value, const std::string& target) {
+  // Checked after flushing: a full disk (or /dev/full) fails only when the buffer is written.
   if (target == "-") {
-    std::cout << value.dump(2) << '\n';
+    std::cout << value.dump(2) << '\n' << std::flush;
+    if (!std::cout) throw InputError("standard output: cannot write the JSON output");
     return;
   }
   std::ofstream out(target);
-  if (!out || !(out << value.dump(2) << '\n')) throw InputError(target + ": cannot write the JSON output");
+  if (out) out << value.dump(2) << '\n';
+  if (out) out.close();
+  if (!out) throw InputError(target + ": cannot write the JSON output");
 }
 
 void print_warnings(const std::vector<std::string>& warnings) {
@@ -38,8 +42,16 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? ok : bad_input;
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    // One line, like every other bad input, naming what was not understood.
+    std::string message = e.what();
+    if (argc > 1 && argv[1][0] != '-' && app.get_subcommands([&](const CLI::App* c) { return c->get_name() == argv[1]; }).empty()) {
+      message = "unknown command \"" + std::string(argv[1]) + "\" (commands:";
+      for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) message += " " + c->get_name();
+      message += ")";
+    }
+    std::cerr << "error: " << message << " (see polyplan --help)\n";
+    return bad_input;
   }
   try {
     return run();

@@ -33,8 +33,9 @@ int run_scen(const ScenOptions& options) {
   const auto started = Clock::now();
   const GridMap map = read_movingai_map(options.map);
   const auto scenarios = read_scenarios(options.scenarios);
+  check_scenarios_match(scenarios, map.width, map.height, map.source, options.scenarios);
   std::vector<std::optional<double>> reference;
-  if (!options.reference.empty()) reference = read_reference_lengths(options.reference);
+  if (!options.reference.empty()) reference = read_reference_lengths(options.reference, scenarios.size());
   std::fprintf(stderr, "building the visibility graph of %s (%dx%d)...\n", options.map.c_str(), map.width, map.height);
   const CSpace cspace(world_from_grid(map));
   VisibilityGraph graph(cspace);

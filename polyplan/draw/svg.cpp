@@ -1,5 +1,7 @@
 #include <polyplan/draw/svg.hpp>
 
+#include <polyplan/geometry/input_error.hpp>
+
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
@@ -530,12 +532,11 @@ std::string Drawing::str() const {
 void Drawing::write(const std::string& path) const {
   const std::string content = str();
   std::ofstream file(path, std::ios::binary | std::ios::trunc);
-  if (!file) {
-    throw std::runtime_error("cannot write SVG file '" + path + "': " + std::strerror(errno));
-  }
+  // The path is the user's: a directory or an unwritable place is bad input, not a bug.
+  if (!file) throw InputError(path + ": cannot write the SVG file: " + std::strerror(errno));
   file.write(content.data(), static_cast<std::streamsize>(content.size()));
   file.close();
-  if (!file) throw std::runtime_error("cannot write SVG file '" + path + "': write failed");
+  if (!file) throw InputError(path + ": cannot write the SVG file: the write failed (disk full?)");
 }
 
 }  // namespace polyplan::svg

@@ -1,5 +1,7 @@
 #include <polyplan/geometry/rational.hpp>
 
+#include <polyplan/geometry/input_limits.hpp>
+
 #include <mpfr.h>
 
 #include <cctype>
@@ -20,7 +22,7 @@ bool all_digits(std::string_view s) {
   return true;
 }
 
-std::optional<Rational> fail(std::string* why, const char* reason) {
+std::optional<Rational> fail(std::string* why, const std::string& reason) {
   if (why) *why = reason;
   return std::nullopt;
 }
@@ -68,12 +70,7 @@ std::optional<Rational> parse_decimal(std::string_view s, std::string* why) {
   return negative ? Rational(-value) : value;
 }
 
-}  // namespace
-
-std::optional<Rational> parse_rational(std::string_view text, std::string* why) {
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
-  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
-  if (text.empty()) return fail(why, "not a number");
+std::optional<Rational> parse_text(std::string_view text, std::string* why) {
   if (auto slash = text.find('/'); slash != std::string_view::npos) {
     std::string_view num = text.substr(0, slash), den = text.substr(slash + 1);
     if (den.find('/') != std::string_view::npos) return fail(why, "not a number");
@@ -89,6 +86,34 @@ std::optional<Rational> parse_rational(std::string_view text, std::string* why) 
     return value;
   }
   return parse_decimal(text, why);
+}
+
+// 10^exponent, exactly.
+Rational power_of_ten(int exponent) {
+  mpz_class power;
+  mpz_ui_pow_ui(power.get_mpz_t(), 10, static_cast<unsigned long>(exponent < 0 ? -exponent : exponent));
+  return exponent < 0 ? Rational(mpz_class(1), power) : Rational(power);
+}
+
+}  // namespace
+
+std::optional<Rational> parse_rational(std::string_view text, std::string* why) {
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.front()))) text.remove_prefix(1);
+  while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.remove_suffix(1);
+  if (text.empty()) return fail(why, "not a number");
+  if (text.size() > limits::number_characters)
+    return fail(why, "longer than the supported " + std::to_string(limits::number_characters) + " characters");
+  auto value = parse_text(text, why);
+  if (value) {
+    static const Rational largest = power_of_ten(limits::number_decimal_exponent);
+    static const Rational smallest = power_of_ten(-limits::number_decimal_exponent);
+    const Rational magnitude = abs(*value);
+    const std::string range = "the supported range (0 or a magnitude from 1e-" + std::to_string(limits::number_decimal_exponent) +
+                              " to 1e" + std::to_string(limits::number_decimal_exponent) + ")";
+    if (magnitude > largest) return fail(why, "overflows " + range);
+    if (sgn(magnitude) != 0 && magnitude < smallest) return fail(why, "underflows " + range);
+  }
+  return value;
 }
 
 std::string to_string(const Rational& value) { return value.get_str(10); }

@@ -19,7 +19,9 @@ struct ExactPoint {
 
 // Parses a number written as text exactly: integers ("-12"), decimals ("0.1" is 1/10),
 // exponents ("1e-3", "2.5E+2"), and rationals ("3/4", "-1/3"). On failure returns nullopt
-// and, if `why` is given, stores a short reason ("zero denominator", "not a number").
+// and, if `why` is given, stores a short reason ("zero denominator", "not a number"). Numbers
+// longer than limits::number_characters, or outside [1e-100, 1e100] in magnitude (other than 0)
+// are refused: see geometry/input_limits.hpp.
 std::optional<Rational> parse_rational(std::string_view text, std::string* why = nullptr);
 
 // "p/q" in lowest terms, or "n" for an integer: the inverse of parse_rational.

@@ -5,7 +5,7 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/internal/cgal_types.hpp>
 
-#include <CGAL/Arr_landmarks_point_location.h>
+#include <CGAL/Arr_trapezoid_ric_point_location.h>
 #include <CGAL/Polygon_set_2.h>
 
 #include <unordered_map>
@@ -15,7 +15,11 @@ namespace polyplan {
 struct CSpace::Impl {
   using PolygonSet = CGAL::Polygon_set_2<detail::Kernel>;
   using Arrangement = PolygonSet::Arrangement_2;
-  using PointLocation = CGAL::Arr_landmarks_point_location<Arrangement>;
+  // Randomized incremental trapezoidal map: exact and terminating on every arrangement. CGAL's
+  // landmark location (used before) walks from a nearest landmark found with double
+  // approximations and looped for ever next to a vertex where two obstacles touch (CGAL issue
+  // #6594) and on coordinates near 1e160 or 1e-200.
+  using PointLocation = CGAL::Arr_trapezoid_ric_point_location<Arrangement>;
   using Face = Arrangement::Face_const_handle;
   using Vertex = Arrangement::Vertex_const_handle;
   using Halfedge = Arrangement::Halfedge_const_handle;

@@ -30,7 +30,6 @@ class ArmFileReader : public detail::JsonFileReader {
     const auto exact = parse_rational(text, &why);
     if (!exact) fail(object, why + ": " + abbreviated(v));
     const double value = to_double(*exact);
-    if (!std::isfinite(value)) fail(object, "not a finite double: " + text);
     return value;
   }
 
@@ -50,7 +49,7 @@ class ArmFileReader : public detail::JsonFileReader {
   }
 
   // A number as the file wrote it (floating-point literals arrive as their text).
-  static std::string text(const json& v) { return v.is_string() ? v.get<std::string>() : abbreviated(v); }
+  static std::string text(const json& v) { return detail::abbreviated_text(v.is_string() ? v.get<std::string>() : v.dump()); }
 
 };
 

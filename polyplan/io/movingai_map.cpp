@@ -2,10 +2,15 @@
 
 #include <polyplan/internal/cgal_types.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/input_limits.hpp>
+#include <polyplan/io/detail/text_file.hpp>
 
 #include <CGAL/Polygon_set_2.h>
 
-#include <fstream>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
+#include <optional>
 #include <sstream>
 #include <unordered_map>
 
@@ -14,7 +19,23 @@ namespace {
 
 using namespace detail;
 
-bool blocks(char c) { return c == '@' || c == 'O' || c == 'T' || c == 'W' || c == 'S'; }
+// Whether a terrain character of the benchmark blocks the cell; nullopt for a character that is
+// not one (a free cell by mistake would be a silent wrong answer).
+std::optional<bool> terrain_blocks(char c) {
+  switch (c) {
+    case '.': case 'G': return false;
+    case '@': case 'O': case 'T': case 'W': case 'S': return true;
+    default: return std::nullopt;
+  }
+}
+
+std::string printable(char c) {
+  const auto u = static_cast<unsigned char>(c);
+  if (std::isprint(u)) return std::string("'") + c + "'";
+  char hex[8];
+  std::snprintf(hex, sizeof hex, "0x%02X", u);
+  return hex;
+}
 
 struct GridPoint {
   int x, y;
@@ -72,8 +93,7 @@ std::vector<std::vector<GridPoint>> trace_cycles(const GridMap& map) {
 }  // namespace
 
 GridMap read_movingai_map(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot open file");
+  std::istringstream in(detail::read_text_file(path));
   GridMap map;
   map.source = path;
   std::string line, word;
@@ -82,22 +102,29 @@ GridMap read_movingai_map(const std::string& path) {
     throw InputError(path + ": line " + std::to_string(line_number) + ": " + what);
   };
   bool in_grid = false;
+  std::int64_t width = 0, height = 0;
   while (!in_grid && std::getline(in, line)) {
     ++line_number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
     std::istringstream fields(line);
     fields >> word;
+    std::string rest;
     if (word == "type") continue;
-    if (word == "height" && (fields >> map.height)) continue;
-    if (word == "width" && (fields >> map.width)) continue;
-    if (word == "map") {
+    if (word == "height" && (fields >> height) && !(fields >> rest)) continue;
+    if (word == "width" && (fields >> width) && !(fields >> rest)) continue;
+    if (word == "map" && !(fields >> rest)) {
       in_grid = true;
       continue;
     }
-    fail("expected the header lines 'type', 'height H', 'width W', 'map', got \"" + line + "\"");
+    fail("expected the header lines 'type', 'height H', 'width W', 'map', got \"" + detail::abbreviated_text(line) + "\"");
   }
   if (!in_grid) fail("missing the 'map' line");
-  if (map.width <= 0 || map.height <= 0 || map.width > 100000 || map.height > 100000)
-    fail("width and height must be positive (and at most 100000)");
+  // Checked before the cells are allocated: the header alone must not cost gigabytes.
+  if (width <= 0 || height <= 0 || static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) > limits::map_cells)
+    fail("width and height must be positive, with at most " + std::to_string(limits::map_cells) + " cells, got " +
+         std::to_string(width) + "x" + std::to_string(height));
+  map.width = static_cast<int>(width);
+  map.height = static_cast<int>(height);
   map.blocked.assign(static_cast<std::size_t>(map.width) * map.height, false);
   for (int y = 0; y < map.height; ++y) {
     if (!std::getline(in, line)) fail("the map has " + std::to_string(y) + " rows, the header says " + std::to_string(map.height));
@@ -106,7 +133,18 @@ GridMap read_movingai_map(const std::string& path) {
     if (static_cast<int>(line.size()) != map.width)
       fail("row " + std::to_string(y) + " has " + std::to_string(line.size()) + " cells, the header says " +
            std::to_string(map.width));
-    for (int x = 0; x < map.width; ++x) map.blocked[static_cast<std::size_t>(y) * map.width + x] = blocks(line[x]);
+    for (int x = 0; x < map.width; ++x) {
+      const auto terrain = terrain_blocks(line[x]);
+      if (!terrain)
+        fail("row " + std::to_string(y) + ", column " + std::to_string(x) + ": unknown terrain " + printable(line[x]) +
+             " (free: . G; blocked: @ O T S W)");
+      map.blocked[static_cast<std::size_t>(y) * map.width + x] = *terrain;
+    }
+  }
+  while (std::getline(in, line)) {
+    ++line_number;
+    if (line.find_first_not_of(" \t\r") != std::string::npos)
+      fail("more rows than the header's " + std::to_string(map.height));
   }
   return map;
 }

@@ -18,7 +18,9 @@ struct GridMap {
   bool is_blocked(int x, int y) const { return blocked[static_cast<std::size_t>(y) * width + x]; }
 };
 
-// Reads a .map file; throws InputError naming the file and line on anything malformed.
+// Reads a .map file; throws InputError naming the file and line on anything malformed: a header
+// beyond limits::map_cells (checked before allocating), rows of the wrong length or number, a
+// character that is no terrain of the benchmark.
 GridMap read_movingai_map(const std::string& path);
 
 // The blocked cells as a polygon world (point robot, bounds [0, 0, width, height], no queries).

@@ -1,84 +1,154 @@
 #include <polyplan/io/wkt_reader.hpp>
 
 #include <polyplan/geometry/input_error.hpp>
-
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/IO/WKT.h>
-#include <CGAL/Polygon_with_holes_2.h>
+#include <polyplan/io/detail/text_file.hpp>
 
 #include <cctype>
-#include <fstream>
-#include <sstream>
+#include <string_view>
 
 namespace polyplan {
 namespace {
 
-using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+// A recursive-descent reader of the two WKT types a world uses, written here rather than taken
+// from CGAL/Boost.Geometry: those crashed on empty rings (POLYGON(()), POLYGON EMPTY), accepted
+// NaN and Inf, compared keywords case-sensitively and looped for ever on unknown types.
+//
+//   file     := { geometry }
+//   geometry := "POLYGON" polygon | "MULTIPOLYGON" "(" polygon { "," polygon } ")"
+//   polygon  := "(" ring { "," ring } ")"
+//   ring     := "(" x y { "," x y } ")"
+//
+// Keywords in any case; no EMPTY, no Z or M coordinates. Numbers are read exactly, refused
+// outside the supported range, and then, as DESIGN.md says, rounded to the nearest double.
+class WktParser {
+ public:
+  WktParser(std::string_view text, std::string prefix) : text_(text), prefix_(std::move(prefix)) {}
 
-template <typename Polygon2>
-Ring ring_from(const Polygon2& polygon) {
-  Ring ring;
-  for (const auto& p : polygon.vertices()) ring.push_back({Rational(p.x()), Rational(p.y())});
-  return ring;
-}
+  std::vector<PolygonWithHoles> file() {
+    std::vector<PolygonWithHoles> obstacles;
+    while (skip_space(), pos_ < text_.size()) {
+      geometry_line_ = line_;
+      type_ = word();
+      if (type_ == "POLYGON") {
+        obstacles.push_back(polygon());
+      } else if (type_ == "MULTIPOLYGON") {
+        if (peek_word() == "EMPTY") malformed("EMPTY holds no polygon");
+        expect('(');
+        do obstacles.push_back(polygon());
+        while (comma_or(')'));
+      } else {
+        throw InputError(prefix_ + "line " + std::to_string(geometry_line_) +
+                         ": cannot read WKT: expected POLYGON or MULTIPOLYGON, got \"" + detail::abbreviated_text(type_) + "\"");
+      }
+    }
+    if (obstacles.empty()) throw InputError(prefix_ + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
+    return obstacles;
+  }
 
-bool has_text(const std::string& s) {
-  for (char c : s)
-    if (!std::isspace(static_cast<unsigned char>(c))) return true;
-  return false;
-}
+ private:
+  PolygonWithHoles polygon() {
+    if (peek_word() == "EMPTY") malformed("EMPTY holds no polygon");
+    PolygonWithHoles polygon;
+    expect('(');
+    polygon.outer = ring();
+    while (comma_or(')')) polygon.holes.push_back(ring());
+    return polygon;
+  }
+
+  Ring ring() {
+    expect('(');
+    if (skip_space(), pos_ < text_.size() && text_[pos_] == ')') malformed("empty ring");
+    Ring r;
+    do {
+      const Rational x = number(), y = number();
+      if (skip_space(), pos_ < text_.size() && number_char(text_[pos_])) malformed("a point has more than two coordinates");
+      r.push_back({x, y});
+    } while (comma_or(')'));
+    // WKT closes a ring by repeating its first point; polyplan's rings are implicitly closed.
+    if (r.size() > 1 && r.front() == r.back()) r.pop_back();
+    return r;
+  }
+
+  Rational number() {
+    skip_space();
+    const std::size_t start = pos_;
+    while (pos_ < text_.size() && number_char(text_[pos_])) ++pos_;
+    if (pos_ == start) malformed("expected a number, got " + describe_next(start));
+    const std::string_view token = text_.substr(start, pos_ - start);
+    std::string why;
+    const auto exact = parse_rational(token, &why);
+    if (!exact) malformed("number \"" + detail::abbreviated_text(std::string(token)) + "\": " + why);
+    return Rational(to_double(*exact));
+  }
+
+  // Reads ',' (true) or the closing `close` (false).
+  bool comma_or(char close) {
+    skip_space();
+    if (pos_ < text_.size() && text_[pos_] == ',') return ++pos_, true;
+    expect(close);
+    return false;
+  }
+
+  void expect(char c) {
+    skip_space();
+    if (pos_ >= text_.size() || text_[pos_] != c) malformed(std::string("expected '") + c + "', got " + describe_next(pos_));
+    ++pos_;
+  }
+
+  std::string word() {
+    skip_space();
+    std::string w;
+    while (pos_ < text_.size() && std::isalpha(static_cast<unsigned char>(text_[pos_])))
+      w.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(text_[pos_++]))));
+    if (w.empty()) {  // not a keyword at all: name what is there, up to the next separator
+      while (pos_ < text_.size() && !std::isspace(static_cast<unsigned char>(text_[pos_])) && text_[pos_] != '(')
+        w.push_back(text_[pos_++]);
+    }
+    return w;
+  }
+
+  std::string peek_word() {
+    const std::size_t pos = pos_, line = line_;
+    std::string w = word();
+    pos_ = pos, line_ = line;
+    return w;
+  }
+
+  void skip_space() {
+    while (pos_ < text_.size() && std::isspace(static_cast<unsigned char>(text_[pos_]))) {
+      if (text_[pos_] == '\n') ++line_;
+      ++pos_;
+    }
+  }
+
+  static bool number_char(char c) {
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E' || c == '/';
+  }
+
+  std::string describe_next(std::size_t at) const {
+    if (at >= text_.size()) return "the end of the file";
+    std::size_t end = at;
+    auto separator = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == '(' || c == ')'; };
+    while (end < text_.size() && end - at < 20 && !separator(text_[end])) ++end;
+    return "\"" + std::string(text_.substr(at, std::max<std::size_t>(end - at, 1))) + "\"";
+  }
+
+  [[noreturn]] void malformed(const std::string& why) const {
+    throw InputError(prefix_ + "line " + std::to_string(geometry_line_) + ": cannot read WKT: malformed " + type_ + ": " + why);
+  }
+
+  std::string_view text_;
+  std::string prefix_;
+  std::size_t pos_ = 0, line_ = 1, geometry_line_ = 1;
+  std::string type_;
+};
 
 }  // namespace
 
 std::vector<PolygonWithHoles> read_wkt_obstacles(const std::string& wkt_path, const std::string& from_file) {
   const std::string prefix = from_file + ": obstacles_wkt \"" + wkt_path + "\": ";
-  std::ifstream in(wkt_path);
-  if (!in) throw InputError(prefix + "cannot open file");
-  std::ostringstream content;
-  content << in.rdbuf();
-  const std::string text = content.str();
-
-  std::istringstream lines(text);
-  std::string line;
-  std::size_t line_number = 0;
-  std::vector<PolygonWithHoles> obstacles;
-  auto add = [&](const CGAL::Polygon_with_holes_2<Epick>& polygon) {
-    PolygonWithHoles obstacle{ring_from(polygon.outer_boundary()), {}};
-    for (auto h = polygon.holes_begin(); h != polygon.holes_end(); ++h) obstacle.holes.push_back(ring_from(*h));
-    obstacles.push_back(std::move(obstacle));
-  };
-  while (std::getline(lines, line)) {
-    ++line_number;
-    if (!has_text(line)) continue;
-    const std::string where = prefix + "line " + std::to_string(line_number) + ": ";
-    // CGAL's read_WKT() loops forever on a line it does not know, so the type is dispatched here
-    // and only the two polygon readers are called, each on its own line.
-    std::string type;
-    for (char c : line) {
-      if (c == '(' || std::isspace(static_cast<unsigned char>(c))) {
-        if (!type.empty()) break;
-        continue;
-      }
-      type.push_back(static_cast<char>(std::toupper(static_cast<unsigned char>(c))));
-    }
-    std::istringstream one(line);
-    bool ok = false;
-    if (type == "POLYGON") {
-      CGAL::Polygon_with_holes_2<Epick> polygon;
-      ok = CGAL::IO::read_polygon_WKT(one, polygon) && !polygon.outer_boundary().is_empty();
-      if (ok) add(polygon);
-    } else if (type == "MULTIPOLYGON") {
-      std::vector<CGAL::Polygon_with_holes_2<Epick>> polygons;
-      ok = CGAL::IO::read_multi_polygon_WKT(one, polygons) && !polygons.empty();
-      if (ok)
-        for (const auto& polygon : polygons) add(polygon);
-    } else {
-      throw InputError(where + "cannot read WKT: expected POLYGON or MULTIPOLYGON, got \"" + type + "\"");
-    }
-    if (!ok) throw InputError(where + "cannot read WKT: malformed " + type);
-  }
-  if (obstacles.empty()) throw InputError(prefix + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
-  return obstacles;
+  const std::string text = detail::read_text_file(wkt_path, prefix.substr(0, prefix.size() - 2));
+  return WktParser(text, prefix).file();
 }
 
 }  // namespace polyplan

@@ -24,10 +24,10 @@ class Reader : public detail::JsonFileReader {
     std::string text;
     if (v.is_number_integer()) return v.is_number_unsigned() ? Rational(mpz_class(std::to_string(v.get<std::uint64_t>()))) :
                                                             Rational(mpz_class(std::to_string(v.get<std::int64_t>())));
-    if (!v.is_string()) fail(object, "not a number: " + v.dump());
+    if (!v.is_string()) fail(object, "not a number: " + abbreviated(v));
     std::string why;
     auto value = parse_rational(v.get<std::string>(), &why);
-    if (!value) fail(object, why + ": " + v.dump());
+    if (!value) fail(object, why + ": " + abbreviated(v));
     return *value;
   }
 

@@ -12,8 +12,6 @@
 namespace polyplan {
 namespace {
 
-bool inside(const GridMap& map, int x, int y) { return x >= 0 && y >= 0 && x < map.width && y < map.height; }
-
 std::string cell_text(int x, int y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
 
 }  // namespace
@@ -26,18 +24,11 @@ GridGraph movingai_grid(const GridMap& map) {
 }
 
 void check_scenarios_fit(const GridMap& map, const std::vector<ScenarioQuery>& queries, const std::string& scenario_file) {
+  check_scenarios_match(queries, map.width, map.height, map.source, scenario_file);
   for (const ScenarioQuery& q : queries) {
     const std::string where = scenario_file + ": line " + std::to_string(q.line) + ": ";
-    if (q.map_width != map.width || q.map_height != map.height)
-      throw InputError(where + "the query is for a " + std::to_string(q.map_width) + "x" + std::to_string(q.map_height) +
-                       " map, " + map.source + " is " + std::to_string(map.width) + "x" + std::to_string(map.height));
-    for (const auto& [name, x, y] : {std::tuple{"start", q.start_x, q.start_y}, std::tuple{"goal", q.goal_x, q.goal_y}}) {
-      if (!inside(map, x, y))
-        throw InputError(where + name + " " + cell_text(x, y) + " is outside the " + std::to_string(map.width) + "x" +
-                         std::to_string(map.height) + " map");
+    for (const auto& [name, x, y] : {std::tuple{"start", q.start_x, q.start_y}, std::tuple{"goal", q.goal_x, q.goal_y}})
       if (map.is_blocked(x, y)) throw InputError(where + name + " " + cell_text(x, y) + " is a blocked cell of " + map.source);
-    }
-    if (!std::isfinite(q.octile_length)) throw InputError(where + "the length is not a finite number: " + q.octile_text);
   }
 }
 

@@ -6,6 +6,9 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 using namespace polyplan::test;
 namespace fs = std::filesystem;
@@ -29,4 +32,40 @@ TEST(Scen, BadInputIsOneLineAndExitTwo) {
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(lines(run.err), 1u) << run.err;
   EXPECT_NE(run.err.find("no_such.scen: cannot open file"), std::string::npos) << run.err;
+}
+
+// scen answered queries outside the map, with negative coordinates or for another map size,
+// where grid refused them; and a reference index of -1 or 3·10^8 crashed it or took gigabytes.
+TEST(Scen, QueriesAndReferencesThatDoNotFitTheMapAreRefused) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("polyplan_scen_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  auto write = [&](const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return "'" + (dir / name).string() + "'";
+  };
+  const std::string map = write("m.map", "type octile\nheight 3\nwidth 4\nmap\n....\n.@@.\n....\n");
+  const std::string good = write("good.scen", "version 1\n0\tm.map\t4\t3\t0\t0\t3\t2\t3.82843\n");
+  struct Case {
+    std::string arguments, expected;
+  };
+  const std::vector<Case> cases = {
+      {map + " " + write("outside.scen", "version 1\n0\tm.map\t4\t3\t0\t0\t7\t2\t7\n"), "line 2: goal (7, 2) is outside the 4x3 map"},
+      {map + " " + write("negative.scen", "version 1\n0\tm.map\t4\t3\t-1\t0\t3\t2\t4\n"), "line 2: start (-1, 0) is outside the 4x3 map"},
+      {map + " " + write("other.scen", "version 1\n0\tm.map\t5\t3\t0\t0\t3\t2\t4\n"), "line 2: the query is for a 5x3 map"},
+      {map + " " + good + " --reference " + write("minus.csv", "index,length\n-1,5\n"), "line 2: expected 'index,length'"},
+      {map + " " + good + " --reference " + write("far.csv", "index,length\n300000000,5\n"),
+       "line 2: index 300000000 is beyond the scenario file's 1 queries"},
+      {write("terrain.map", "type octile\nheight 1\nwidth 2\nmap\n.?\n") + " " + good, "row 0, column 1: unknown terrain '?'"},
+      {write("huge.map", "type octile\nheight 100000\nwidth 100000\nmap\n") + " " + good, "at most 67108864 cells"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.arguments);
+    const CliRun run = run_polyplan("scen " + c.arguments);
+    EXPECT_EQ(run.exit_code, 2) << run.err;
+    EXPECT_EQ(lines(run.err), 1u) << run.err;
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << "expected \"" << c.expected << "\" in: " << run.err;
+  }
+  EXPECT_EQ(run_polyplan("scen " + map + " " + good).exit_code, 0);
+  fs::remove_all(dir);
 }

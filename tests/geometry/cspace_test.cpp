@@ -227,17 +227,12 @@ TEST(Locate, InsideAnObstacleOrOutsideTheBoundsIsBlocked) {
   }
 }
 
-// Library bug (through CGAL 5.5.1), left failing: CSpace::locate never returns for (2, 3/2), a
-// free point below the vertex (2, 2) where the square and the triangle touch. CGAL's
-// Arr_landmarks_point_location walks from the landmark (2, 2) and finds no face to cross into:
-// with CGAL's assertions on it stops at "new_face != face" (Arr_landmarks_pl_impl.h:578, CGAL
-// issue #6594, open), in a release build it loops for ever; CGAL's naive point location
-// answers "face". Every check_path, query_not_free and rasterize goes through locate, and a few
-// per cent of the random worlds of tests/roadmaps/free_space_triangulation_test.cpp have such a
-// lattice point (its seeds avoid them). Enable once
-// CSpace uses a point location that terminates (or CGAL is fixed); the watchdog makes it fail in
-// seconds instead of hanging the run.
-TEST(Locate, DISABLED_NextToWhereObstaclesTouchReturns) {
+// CSpace::locate never returned for (2, 3/2), a free point below the vertex (2, 2) where the
+// square and the triangle touch: CGAL's Arr_landmarks_point_location walked from the landmark
+// (2, 2) and found no face to cross into (CGAL issue #6594; with CGAL's assertions on it stops
+// at "new_face != face"). CSpace now locates with the trapezoidal map (RIC), which terminates
+// on every arrangement. The watchdog makes a regression fail in seconds instead of hanging.
+TEST(Locate, NextToWhereObstaclesTouchReturns) {
   const auto c = std::make_shared<const CSpace>(
       world_from(R"({"obstacles": [[[2, 2], [3, 2], [3, 3], [2, 3]], [[0, 2], [1, 1], [2, 2]]]})"));
   std::promise<Location::Kind> kind;
@@ -245,4 +240,64 @@ TEST(Locate, DISABLED_NextToWhereObstaclesTouchReturns) {
   std::thread([c, kind = std::move(kind)]() mutable { kind.set_value(c->locate(pt("2", "3/2")).kind); }).detach();
   ASSERT_EQ(answer.wait_for(std::chrono::seconds(10)), std::future_status::ready) << "CSpace::locate did not return in 10 s";
   EXPECT_EQ(answer.get(), Location::Kind::free);
+}
+
+namespace {
+
+// Every point of the half-integer lattice of `bounds`, located with a watchdog of 20 s in all.
+std::vector<Location::Kind> locate_lattice(const std::shared_ptr<const CSpace>& c, int lo, int hi) {
+  std::promise<std::vector<Location::Kind>> kinds;
+  std::future<std::vector<Location::Kind>> answer = kinds.get_future();
+  std::thread([c, lo, hi, kinds = std::move(kinds)]() mutable {
+    std::vector<Location::Kind> out;
+    for (int x = 2 * lo; x <= 2 * hi; ++x)
+      for (int y = 2 * lo; y <= 2 * hi; ++y) out.push_back(c->locate({Rational(x, 2), Rational(y, 2)}).kind);
+    kinds.set_value(out);
+  }).detach();
+  if (answer.wait_for(std::chrono::seconds(20)) != std::future_status::ready) {
+    ADD_FAILURE() << "CSpace::locate did not return in 20 s";
+    std::abort();  // the thread cannot be stopped; end the run rather than hang it
+  }
+  return answer.get();
+}
+
+}  // namespace
+
+// The worlds of the hardening issue that never finished (plan, cspace and check hung in the
+// landmark walk): a triangle whose apex touches a box's top edge, and a hole touching its outer
+// boundary at a vertex. Every lattice point is located, and a few are checked by hand.
+TEST(Locate, WorldsThatHungInTheLandmarkWalkAnswer) {
+  const auto apex = std::make_shared<const CSpace>(world_from(
+      R"({"bounds": [-1, -1, 7, 7], "obstacles": [[[0, 0], [6, 0], [6, 2], [0, 2]], [[3, 2], [4, 4], [2, 4]]], "start": [3, -0.5], "goal": [6.5, 6.5]})"));
+  EXPECT_EQ(locate_lattice(apex, -1, 7).size(), 17u * 17u);
+  EXPECT_EQ(apex->locate(pt("3", "-0.5")).kind, Location::Kind::free);
+  EXPECT_EQ(apex->locate(pt("3", "2")).kind, Location::Kind::contact);
+  EXPECT_EQ(apex->locate(pt("3", "3")).kind, Location::Kind::blocked);
+  EXPECT_EQ(apex->locate(pt("2", "2.5")).kind, Location::Kind::free);
+  EXPECT_EQ(apex->free_components().size(), 1u);
+
+  const auto hole = std::make_shared<const CSpace>(world_from(
+      R"({"bounds": [0, 0, 10, 10], "obstacles": [{"outer": [[1, 1], [9, 1], [9, 9], [1, 9]], "holes": [[[1, 1], [3, 5], [5, 3]]]}]})"));
+  EXPECT_EQ(locate_lattice(hole, 0, 10).size(), 21u * 21u);
+  EXPECT_EQ(hole->locate(pt("3", "3")).kind, Location::Kind::free);
+  EXPECT_EQ(hole->locate(pt("1", "1")).kind, Location::Kind::contact);
+  EXPECT_EQ(hole->locate(pt("6", "6")).kind, Location::Kind::blocked);
+  // The hole touches the outside at one point only: two free components meeting at a pinch.
+  EXPECT_EQ(hole->free_components().size(), 2u);
+  EXPECT_EQ(hole->locate(pt("1", "1")).components.size(), 2u);
+}
+
+// Two holes sharing an edge: the obstacle has zero width between them, so the two are one free
+// region (the validation refuses a hole sharing an edge with its outer boundary instead, where
+// CGAL kept the hole filled).
+TEST(Locate, HolesSharingAnEdgeAreOneFreeRegion) {
+  const auto c = std::make_shared<const CSpace>(world_from(
+      R"({"bounds": [0, 0, 10, 10], "obstacles": [{"outer": [[1, 1], [9, 1], [9, 9], [1, 9]], "holes": [[[2, 2], [5, 2], [5, 5], [2, 5]], [[5, 2], [8, 2], [8, 5], [5, 5]]]}]})"));
+  EXPECT_EQ(locate_lattice(c, 0, 10).size(), 21u * 21u);
+  ASSERT_EQ(c->free_components().size(), 2u);
+  const Location left = c->locate(pt("3", "3")), right = c->locate(pt("6", "3")), seam = c->locate(pt("5", "3"));
+  EXPECT_EQ(left.kind, Location::Kind::free);
+  EXPECT_EQ(seam.kind, Location::Kind::free);
+  EXPECT_EQ(left.components, right.components);
+  EXPECT_EQ(c->locate(pt("5", "6")).kind, Location::Kind::blocked);
 }

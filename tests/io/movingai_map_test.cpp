@@ -140,9 +140,9 @@ TEST(MovingAIMap, RowsCountUpFromTheFilesFirstRow) {
 }
 
 TEST(MovingAIMap, EveryBlockingCharacterBlocks) {
-  // '@', 'O', 'T', 'W' and 'S' block; '.', 'G' and anything else do not.
-  const GridMap map = read_movingai_map(write_temp_file("characters.map", map_text(8, 1, "@OTWS.Gx\n")));
-  for (int x = 0; x < 8; ++x) EXPECT_EQ(map.is_blocked(x, 0), x < 5) << "column " << x;
+  // '@', 'O', 'T', 'W' and 'S' block; '.' and 'G' do not (anything else is an error, below).
+  const GridMap map = read_movingai_map(write_temp_file("characters.map", map_text(7, 1, "@OTWS.G\n")));
+  for (int x = 0; x < 7; ++x) EXPECT_EQ(map.is_blocked(x, 0), x < 5) << "column " << x;
   const World world = world_from_grid(map);
   ASSERT_EQ(world.obstacles.size(), 1u);  // one run of five cells, one solid
   EXPECT_EQ(canonical(world.obstacles[0].outer), (Ring{pt("0", "0"), pt("5", "0"), pt("5", "1"), pt("0", "1")}));
@@ -190,12 +190,24 @@ TEST(MovingAIMap, MalformedHeaders) {
   EXPECT_EQ(problem_with("unknown_line.map", "type octile\nheight 1\ndepth 3\nwidth 1\nmap\n.\n"),
             "line 3: expected the header lines 'type', 'height H', 'width W', 'map', got \"depth 3\"");
   EXPECT_EQ(problem_with("no_map_line.map", "type octile\nheight 1\nwidth 1\n"), "line 3: missing the 'map' line");
-  EXPECT_EQ(problem_with("zero_height.map", "type octile\nheight 0\nwidth 3\nmap\n"),
-            "line 4: width and height must be positive (and at most 100000)");
-  EXPECT_EQ(problem_with("no_width.map", "type octile\nheight 2\nmap\n..\n..\n"),
-            "line 3: width and height must be positive (and at most 100000)");
-  EXPECT_EQ(problem_with("huge.map", "type octile\nheight 100001\nwidth 2\nmap\n"),
-            "line 4: width and height must be positive (and at most 100000)");
+  const std::string size = "width and height must be positive, with at most 67108864 cells, got ";
+  EXPECT_EQ(problem_with("zero_height.map", "type octile\nheight 0\nwidth 3\nmap\n"), "line 4: " + size + "3x0");
+  EXPECT_EQ(problem_with("no_width.map", "type octile\nheight 2\nmap\n..\n..\n"), "line 3: " + size + "0x2");
+  EXPECT_EQ(problem_with("partial_number.map", "type octile\nheight 1x\nwidth 1\nmap\n.\n"),
+            "line 2: expected the header lines 'type', 'height H', 'width W', 'map', got \"height 1x\"");
+}
+
+// A 60-byte map whose header said 100000 x 100000 allocated 1.2 GB before it found no rows.
+TEST(MovingAIMap, AHugeHeaderIsRefusedBeforeAllocating) {
+  const std::string size = "width and height must be positive, with at most 67108864 cells, got ";
+  EXPECT_EQ(problem_with("huge.map", "type octile\nheight 100000\nwidth 100000\nmap\n"), "line 4: " + size + "100000x100000");
+  EXPECT_EQ(problem_with("overflow.map", "type octile\nheight 4294967297\nwidth 4294967297\nmap\n"),
+            "line 4: " + size + "4294967297x4294967297");
+}
+
+TEST(MovingAIMap, UnknownTerrainIsAnError) {
+  EXPECT_EQ(problem_with("unknown.map", map_text(3, 2, "...\n.x.\n")), "line 6: row 1, column 1: unknown terrain 'x' (free: . G; blocked: @ O T S W)");
+  EXPECT_EQ(problem_with("tab.map", map_text(3, 1, "..\t\n")), "line 5: row 0, column 2: unknown terrain 0x09 (free: . G; blocked: @ O T S W)");
 }
 
 TEST(MovingAIMap, MalformedRows) {
@@ -203,4 +215,5 @@ TEST(MovingAIMap, MalformedRows) {
   EXPECT_EQ(problem_with("long_row.map", map_text(3, 2, "....\n...\n")), "line 5: row 0 has 4 cells, the header says 3");
   EXPECT_EQ(problem_with("missing_row.map", map_text(2, 3, "..\n..\n")), "line 6: the map has 2 rows, the header says 3");
   EXPECT_EQ(problem_with("no_rows.map", map_text(2, 1, "")), "line 4: the map has 0 rows, the header says 1");
+  EXPECT_EQ(problem_with("extra_row.map", map_text(2, 1, "..\n..\n")), "line 6: more rows than the header's 1");
 }

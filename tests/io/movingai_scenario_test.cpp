@@ -38,8 +38,9 @@ std::string scenario_problem(const std::string& name, const std::string& text) {
   return problem_with(name, text, read_scenarios);
 }
 
-std::string reference_problem(const std::string& name, const std::string& text) {
-  return problem_with(name, text, read_reference_lengths);
+// The reference file `text` for a scenario file of `queries` queries.
+std::string reference_problem(const std::string& name, const std::string& text, std::size_t queries = 4) {
+  return problem_with(name, text, [&](const std::string& path) { return read_reference_lengths(path, queries); });
 }
 
 }  // namespace
@@ -84,7 +85,7 @@ TEST(MovingAIScenario, ReadsTheArenaScenarios) {
 }
 
 TEST(MovingAIScenario, ReadsTheArenaReferenceLengths) {
-  const auto lengths = read_reference_lengths(data_file("movingai/reference/arena.csv"));
+  const auto lengths = read_reference_lengths(data_file("movingai/reference/arena.csv"), 160);
   ASSERT_EQ(lengths.size(), 160u);
   EXPECT_EQ(lengths[0], 1.0);
   EXPECT_EQ(lengths[1], 2.0);
@@ -124,35 +125,52 @@ TEST(MovingAIScenario, MalformedLines) {
   EXPECT_EQ(scenario_problem("eight_fields.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.24264\n0\tm.map\t4\t4\t0\t0\t3\t3\n"), fields);
   EXPECT_EQ(scenario_problem("word_for_number.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.24264\n0\tm.map\t4\tfour\t0\t0\t3\t3\t4.2\n"), fields);
   EXPECT_EQ(scenario_problem("length_word.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\tlong\n"), "line 2: length is not a number: long");
+  EXPECT_EQ(scenario_problem("length_partial.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.2x\n"), "line 2: length is not a number: 4.2x");
+  EXPECT_EQ(scenario_problem("length_nan.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\tnan\n"), "line 2: length is not a number: nan");
+  EXPECT_EQ(scenario_problem("ten_fields.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.2\t7\n"),
+            "line 2: expected 'bucket map width height start_x start_y goal_x goal_y length'");
+}
+
+TEST(MovingAIScenario, QueriesMustFitTheMap) {
+  const auto queries = read_scenarios(write_temp_file("fit.scen", "version 1\n0\tm.map\t4\t3\t0\t0\t3\t2\t4.2\n"
+                                                                   "0\tm.map\t4\t3\t0\t0\t4\t2\t4.2\n"));
+  EXPECT_EQ(input_error_of([&] { check_scenarios_match(queries, 4, 3, "m.map", "fit.scen"); }),
+            "fit.scen: line 3: goal (4, 2) is outside the 4x3 map");
+  EXPECT_EQ(input_error_of([&] { check_scenarios_match({queries[0]}, 5, 3, "m.map", "fit.scen"); }),
+            "fit.scen: line 2: the query is for a 4x3 map, m.map is 5x3");
+  const auto negative = read_scenarios(write_temp_file("negative.scen", "version 1\n0\tm.map\t4\t3\t-1\t0\t3\t2\t4.2\n"));
+  EXPECT_EQ(input_error_of([&] { check_scenarios_match(negative, 4, 3, "m.map", "negative.scen"); }),
+            "negative.scen: line 2: start (-1, 0) is outside the 4x3 map");
 }
 
 TEST(MovingAIReference, GapsAreMissingAndMinusOneIsNoPath) {
-  const auto lengths = read_reference_lengths(write_temp_file("gaps.csv", "index,length\n0,1.5\n3,-1\n"));
-  ASSERT_EQ(lengths.size(), 4u);
+  const auto lengths = read_reference_lengths(write_temp_file("gaps.csv", "index,length\n0,1.5\n\n3,-1\n"), 5);
+  ASSERT_EQ(lengths.size(), 5u);
   EXPECT_EQ(lengths[0], 1.5);
   EXPECT_FALSE(lengths[1]);
   EXPECT_FALSE(lengths[2]);
   EXPECT_EQ(lengths[3], -1.0);
-}
-
-TEST(MovingAIReference, LinesWithoutACommaAreSkipped) {
-  const auto lengths = read_reference_lengths(write_temp_file("no_comma.csv", "index,length\n\nnot a length\n1,2\n"));
-  ASSERT_EQ(lengths.size(), 2u);
-  EXPECT_FALSE(lengths[0]);
-  EXPECT_EQ(lengths[1], 2.0);
+  EXPECT_FALSE(lengths[4]);
 }
 
 TEST(MovingAIReference, MalformedLinesAndFiles) {
   const std::string path = data_file("movingai/reference/does_not_exist.csv");
-  EXPECT_EQ(input_error_of([&] { read_reference_lengths(path); }), path + ": cannot open file");
-  EXPECT_EQ(reference_problem("length_word.csv", "index,length\n0,1\n1,far\n"), "line 3: expected 'index,length'");
-  EXPECT_EQ(reference_problem("index_word.csv", "index,length\nfirst,1\n"), "line 2: expected 'index,length'");
+  EXPECT_EQ(input_error_of([&] { read_reference_lengths(path, 1); }), path + ": cannot open file");
+  EXPECT_EQ(reference_problem("length_word.csv", "index,length\n0,1\n1,far\n"), "line 3: expected 'index,length', got \"1,far\"");
+  EXPECT_EQ(reference_problem("index_word.csv", "index,length\nfirst,1\n"), "line 2: expected 'index,length', got \"first,1\"");
+  EXPECT_EQ(reference_problem("no_comma.csv", "index,length\nnot a length\n"), "line 2: expected 'index,length', got \"not a length\"");
+  EXPECT_EQ(reference_problem("partial.csv", "index,length\n0,1x\n"), "line 2: expected 'index,length', got \"0,1x\"");
+  EXPECT_EQ(reference_problem("no_header.csv", "0,1\n"), "line 1: expected the header 'index,length' (a reference-lengths file)");
 }
 
-// Library bug, left failing: std::stoul reads "-1" as the largest unsigned long, so
-// `lengths.resize(index + 1)` wraps to resize(0) and `lengths[index]` writes far out of bounds
-// (undefined behaviour; a crash in practice). Enable once read_reference_lengths rejects
-// negative indices.
-TEST(MovingAIReference, DISABLED_NegativeIndexIsAnError) {
-  EXPECT_EQ(reference_problem("negative_index.csv", "index,length\n-1,5\n"), "line 2: expected 'index,length'");
+// "-1" was read by std::stoul as the largest unsigned long: resize(index + 1) wrapped to 0 and
+// the length was written far out of bounds (a crash). 3·10^8 allocated 4.7 GB for a 30-byte file.
+TEST(MovingAIReference, AnIndexOutsideTheScenarioFileIsAnError) {
+  EXPECT_EQ(reference_problem("negative_index.csv", "index,length\n-1,5\n"), "line 2: expected 'index,length', got \"-1,5\"");
+  EXPECT_EQ(reference_problem("largest_index.csv", "index,length\n18446744073709551615,5\n"),
+            "line 2: index 18446744073709551615 is beyond the scenario file's 4 queries");
+  EXPECT_EQ(reference_problem("too_large_index.csv", "index,length\n18446744073709551616,5\n"),
+            "line 2: expected 'index,length', got \"18446744073709551616,5\"");
+  EXPECT_EQ(reference_problem("far_index.csv", "index,length\n300000000,5\n"), "line 2: index 300000000 is beyond the scenario file's 4 queries");
+  EXPECT_EQ(reference_problem("next_index.csv", "index,length\n4,5\n"), "line 2: index 4 is beyond the scenario file's 4 queries");
 }

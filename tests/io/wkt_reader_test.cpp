@@ -1,5 +1,5 @@
 // read_wkt_obstacles (io/wkt_reader.cpp): the shipped WKT file ring by ring, coordinates as the
-// exact values of the doubles CGAL's reader parses, and every way a file can be wrong with its
+// exact values of the nearest doubles (DESIGN.md), and every way a file can be wrong with its
 // exact message (naming the world file, the WKT file and the line).
 #include <polyplan/io/wkt_reader.hpp>
 #include "world_fixtures.hpp"
@@ -68,28 +68,48 @@ TEST(WktReader, UnknownTypeIsNamed) {
 }
 
 TEST(WktReader, MalformedPolygon) {
-  EXPECT_EQ(problem_with("truncated.wkt", "POLYGON((4 4,6 4,6 6,4\n"), prefix("truncated.wkt") + "line 1: cannot read WKT: malformed POLYGON");
-  EXPECT_EQ(problem_with("letters.wkt", "POLYGON((0 0,a 0,1 1,0 0))\n"), prefix("letters.wkt") + "line 1: cannot read WKT: malformed POLYGON");
-  EXPECT_EQ(problem_with("multi.wkt", "MULTIPOLYGON(((0 0,1 0,1 1,0 0))\n"), prefix("multi.wkt") + "line 1: cannot read WKT: malformed MULTIPOLYGON");
+  const std::string malformed = "line 1: cannot read WKT: malformed ";
+  EXPECT_EQ(problem_with("truncated.wkt", "POLYGON((4 4,6 4,6 6,4\n"),
+            prefix("truncated.wkt") + malformed + "POLYGON: expected a number, got the end of the file");
+  EXPECT_EQ(problem_with("letters.wkt", "POLYGON((0 0,a 0,1 1,0 0))\n"),
+            prefix("letters.wkt") + malformed + "POLYGON: expected a number, got \"a\"");
+  EXPECT_EQ(problem_with("multi.wkt", "MULTIPOLYGON(((0 0,1 0,1 1,0 0))\n"),
+            prefix("multi.wkt") + malformed + "MULTIPOLYGON: expected ')', got the end of the file");
+  EXPECT_EQ(problem_with("z.wkt", "POLYGON((0 0 1,1 0 1,1 1 1,0 0 1))\n"),
+            prefix("z.wkt") + malformed + "POLYGON: a point has more than two coordinates");
 }
 
 TEST(WktReader, EmptyMultipolygonIsMalformed) {
-  EXPECT_EQ(problem_with("empty_multi.wkt", "MULTIPOLYGON EMPTY\n"), prefix("empty_multi.wkt") + "line 1: cannot read WKT: malformed MULTIPOLYGON");
+  EXPECT_EQ(problem_with("empty_multi.wkt", "MULTIPOLYGON EMPTY\n"),
+            prefix("empty_multi.wkt") + "line 1: cannot read WKT: malformed MULTIPOLYGON: EMPTY holds no polygon");
 }
 
-// Library bug, left failing: each of these crashes the process (SIGSEGV) instead of throwing.
-// Boost.Geometry reads an empty ring without complaint, and CGAL's read_polygon_WKT /
-// read_multi_polygon_WKT then call internal::pop_back_if_equal_to_front on it, which
-// dereferences begin() and --end() of the empty vertex vector. read_wkt_obstacles hands every
-// POLYGON line to CGAL; it checks for an empty outer boundary only afterwards. Enable once
-// io/wkt_reader.cpp refuses empty rings before CGAL sees them.
-TEST(WktReader, DISABLED_EmptyRingsAreMalformedNotACrash) {
-  EXPECT_EQ(problem_with("empty.wkt", "POLYGON EMPTY\n"), prefix("empty.wkt") + "line 1: cannot read WKT: malformed POLYGON");
-  EXPECT_EQ(problem_with("empty_ring.wkt", "POLYGON(())\n"), prefix("empty_ring.wkt") + "line 1: cannot read WKT: malformed POLYGON");
-  EXPECT_EQ(problem_with("empty_hole.wkt", "POLYGON((0 0,4 0,4 4,0 0),())\n"),
-            prefix("empty_hole.wkt") + "line 1: cannot read WKT: malformed POLYGON");
+// These crashed the process (SIGSEGV) when CGAL's WKT reader read them: it popped the closing
+// point of an empty ring.
+TEST(WktReader, EmptyRingsAreMalformedNotACrash) {
+  const std::string malformed = "line 1: cannot read WKT: malformed ";
+  EXPECT_EQ(problem_with("empty.wkt", "POLYGON EMPTY\n"), prefix("empty.wkt") + malformed + "POLYGON: EMPTY holds no polygon");
+  EXPECT_EQ(problem_with("empty_ring.wkt", "POLYGON(())\n"), prefix("empty_ring.wkt") + malformed + "POLYGON: empty ring");
+  EXPECT_EQ(problem_with("empty_hole.wkt", "POLYGON((0 0,4 0,4 4,0 0),())\n"), prefix("empty_hole.wkt") + malformed + "POLYGON: empty ring");
   EXPECT_EQ(problem_with("empty_multi_ring.wkt", "MULTIPOLYGON((()))\n"),
-            prefix("empty_multi_ring.wkt") + "line 1: cannot read WKT: malformed MULTIPOLYGON");
+            prefix("empty_multi_ring.wkt") + malformed + "MULTIPOLYGON: empty ring");
+}
+
+TEST(WktReader, NotANumberAndInfinityAreRefused) {
+  const std::string malformed = "line 1: cannot read WKT: malformed POLYGON: ";
+  EXPECT_EQ(problem_with("nan.wkt", "POLYGON((0 0,NaN 0,1 1,0 0))\n"), prefix("nan.wkt") + malformed + "expected a number, got \"NaN\"");
+  EXPECT_EQ(problem_with("inf.wkt", "POLYGON((0 0,1 0,1 Inf,0 0))\n"), prefix("inf.wkt") + malformed + "expected a number, got \"Inf\"");
+  EXPECT_EQ(problem_with("minus_inf.wkt", "POLYGON((0 0,1 0,1 -inf,0 0))\n"),
+            prefix("minus_inf.wkt") + malformed + "number \"-\": not a number");
+  EXPECT_NE(problem_with("huge.wkt", "POLYGON((0 0,1e160 0,1 1,0 0))\n").find("malformed POLYGON: number \"1e160\": overflows the supported range"),
+            std::string::npos);
+}
+
+TEST(WktReader, AGeometryMaySpanLines) {
+  const std::string path = write_temp_file("lines.wkt", "POLYGON(\n (0 0, 1 0,\n  1 1, 0 0)\n)\n");
+  ASSERT_EQ(read_wkt_obstacles(path, "w.json").size(), 1u);
+  EXPECT_EQ(problem_with("late.wkt", "POLYGON((0 0,1 0,1 1,0 0))\n\nPOLYGON(\n(0 0,\nx 1))\n"),
+            prefix("late.wkt") + "line 3: cannot read WKT: malformed POLYGON: expected a number, got \"x\"");
 }
 
 TEST(WktReader, MissingFile) {
@@ -102,11 +122,7 @@ TEST(WktReader, FileOfBlankLinesHoldsNoPolygon) {
   EXPECT_EQ(problem_with("nothing.wkt", ""), prefix("nothing.wkt") + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
 }
 
-// Library bug (minor), left failing: WKT keywords are case-insensitive and read_wkt_obstacles
-// upper-cases the type to dispatch on it, but CGAL's readers compare "POLYGON" case-sensitively,
-// so a lower-case line is reported as "malformed POLYGON". Enable once the line is upper-cased
-// (or the keyword replaced) before CGAL reads it.
-TEST(WktReader, DISABLED_KeywordsAreCaseInsensitive) {
+TEST(WktReader, KeywordsAreCaseInsensitive) {
   const std::string path = write_temp_file("lower_case.wkt", "polygon((0 0,1 0,1 1,0 0))\nMultiPolygon(((5 5,6 5,6 6,5 5)))\n");
   EXPECT_EQ(read_wkt_obstacles(path, "w.json").size(), 2u);
 }

@@ -64,3 +64,60 @@ TEST(WorldReader, ReadsAPathFile) {
   EXPECT_EQ(read_path(std::string(POLYPLAN_SOURCE_DIR) + "/tests/data/paths/touching_corners_touch_and_back.json"),
             (std::vector<ExactPoint>{pt("1", "1"), pt("2", "2"), pt("1", "1.5")}));
 }
+
+namespace {
+
+std::string repeated(const std::string& s, int times) {
+  std::string out;
+  for (int i = 0; i < times; ++i) out += s;
+  return out;
+}
+
+}  // namespace
+
+// The limits of geometry/input_limits.hpp, each with a message naming the object.
+TEST(WorldReader, NumbersOutsideTheSupportedRangeNameTheirObject) {
+  const std::string range = "the supported range (0 or a magnitude from 1e-100 to 1e100)";
+  EXPECT_EQ(input_error_of([] { world_from(R"({"obstacles": [], "start": [0, 1e400], "goal": [1, 1]})"); }),
+            "test.json: start[1]: number at byte 36 overflows " + range);
+  EXPECT_EQ(input_error_of([] { world_from(R"({"obstacles": [], "start": [5e307, 0], "goal": [1, 1]})"); }),
+            "test.json: start[0]: overflows " + range + ": \"5e307\"");
+  EXPECT_EQ(input_error_of([] { world_from(R"({"obstacles": [], "start": [1e-200, 0], "goal": [1, 1]})"); }),
+            "test.json: start[0]: underflows " + range + ": \"1e-200\"");
+  const std::string digits(100000, '9');
+  EXPECT_EQ(input_error_of([&] { world_from(R"({"obstacles": [], "start": [)" + digits + R"(, 0], "goal": [1, 1]})"); }),
+            "test.json: start[0]: number at byte 100028 overflows " + range);
+  EXPECT_EQ(input_error_of([&] { world_from(R"({"obstacles": [], "start": ["1.)" + digits + R"(", 0], "goal": [1, 1]})"); }),
+            "test.json: start[0]: longer than the supported 100 characters: \"1.9999999999999999999999999999999999...");
+  EXPECT_EQ(world_from(R"({"obstacles": [], "start": [1e100, 1e-100], "goal": [1, 1]})").queries[0].start.y,
+            Rational(mpz_class(1), mpz_class("1" + std::string(100, '0'))));
+}
+
+TEST(WorldReader, DeepNestingIsRefusedBeforeAnythingRecurses) {
+  // 55,000 levels crashed the program (the error message printed the value recursively).
+  const std::string deep = std::string(55000, '[') + std::string(55000, ']');
+  const std::string message = input_error_of([&] { world_from(deep); });
+  EXPECT_EQ(message.rfind("test.json: [0][0][0]", 0), 0u) << message.substr(0, 200);
+  EXPECT_NE(message.find("]: nested deeper than the supported 32 levels"), std::string::npos) << message.substr(0, 200);
+  EXPECT_EQ(input_error_of([&] { world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0, )" + std::string(40, '[') + "]]]}}"); }),
+            "test.json: robot.parts[0][0][2]" + repeated("[0]", 27) + ": nested deeper than the supported 32 levels");
+}
+
+TEST(WorldReader, DuplicateKeysAreRefused) {
+  EXPECT_EQ(input_error_of([] { world_from(R"({"obstacles": [], "obstacles": [[[0, 0], [1, 0], [0, 1]]]})"); }),
+            "test.json: top level: duplicate key \"obstacles\"");
+  EXPECT_EQ(input_error_of([] { world_from(R"({"obstacles": [{"outer": [[0, 0], [1, 0], [0, 1]], "outer": []}]})"); }),
+            "test.json: obstacles[0]: duplicate key \"outer\"");
+}
+
+TEST(WorldReader, AHugeUnknownKeyIsWarnedAboutShortly) {
+  std::vector<std::string> warnings;
+  parse_world(R"({"obstacles": [], ")" + std::string(20 << 20, 'k') + R"(": 1})", "test.json", &warnings);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "test.json: world: unknown field \"kkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkkk...\" ignored");
+}
+
+TEST(WorldReader, FilesThatAreNotInputsEndAtOnce) {
+  EXPECT_EQ(input_error_of([] { read_world("/dev/zero"); }), "/dev/zero: larger than the supported 64 MiB");
+  EXPECT_EQ(input_error_of([] { read_world(POLYPLAN_SOURCE_DIR); }), std::string(POLYPLAN_SOURCE_DIR) + ": is a directory, not a file");
+}

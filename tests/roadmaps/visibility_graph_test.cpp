@@ -239,7 +239,7 @@ Outcome run_map(const std::string& name, std::size_t stride) {
   const CSpace cspace(world_from_grid(map));
   VisibilityGraph graph(cspace);
   const auto scenarios = read_scenarios(kBenchmarks + "/scenarios/" + name + ".map.scen");
-  const auto reference = read_reference_lengths(kBenchmarks + "/reference/" + name + ".csv");
+  const auto reference = read_reference_lengths(kBenchmarks + "/reference/" + name + ".csv", scenarios.size());
   Outcome outcome;
   for (std::size_t i = 0; i < scenarios.size(); i += stride) {
     if (i >= reference.size() || !reference[i]) continue;
