@@ -9,6 +9,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev         # files and command line
   libnanoflann-dev                        # nearest neighbours
   libgtest-dev libbenchmark-dev           # tests and benchmarks
+  clang libclang-rt-14-dev                # libFuzzer, for the readers' fuzz targets
   librsvg2-bin                            # rsvg-convert: look at the SVGs as PNGs
 )
 missing=()

@@ -8,6 +8,7 @@
 #include <boost/container_hash/hash.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -132,6 +133,9 @@ double arm_path_length(const std::vector<JointAngles>& path, bool torus) {
 
 ArmGridPlanner::ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options)
     : problem_(&problem), options_(options), cells_per_axis_(cells_per_axis(options)), checker_(problem) {
+  if (problem.arm.joints() > GridGraph::max_dimensions)
+    throw std::invalid_argument("an arm of " + std::to_string(problem.arm.joints()) + " joints needs a grid of as many axes; it has at most " +
+                                std::to_string(GridGraph::max_dimensions));
   const double cells = std::pow(static_cast<double>(cells_per_axis_), static_cast<double>(problem.arm.joints()));
   if (!options_.lazy && cells > static_cast<double>(std::uint64_t{1} << 24))
     throw std::invalid_argument("eager evaluation of " + degrees_text(cells) + " cells is too much (at most 2^24); use lazy evaluation");
@@ -175,12 +179,14 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
     }
 
   std::vector<GridAxis> axes(joints, GridAxis{n, options_.torus ? AxisKind::wrapping : AxisKind::bounded, grid.step});
+  struct BudgetReached {};  // thrown from the cell test, out of the search, when the budget is spent
+  std::size_t cells_tested = 0;
   GridGraph g(axes, Connectivity::axis_aligned, StepCost::sum_of_axes, [&](std::span<const GridCoordinate> at) {
+    if (++cells_tested > options_.max_cells) throw BudgetReached{};
     JointAngles q(at.size());
     for (std::size_t i = 0; i < q.size(); ++i) q[i] = grid.angle(at[i]);
     return checker_.is_free(q);
   });
-  if (!options_.lazy) g.evaluate_all();
   // A move is certified once whichever side the search sees it from (moves on an axis of >= 3
   // cells are identified by their two cells).
   std::unordered_map<std::pair<GridCell, GridCell>, bool, boost::hash<std::pair<GridCell, GridCell>>> moves;
@@ -202,19 +208,38 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
     report.cells = std::move(cells);
   };
 
-  const Join start = join_to_grid(g, grid, checker_, query.start, motions);
-  const Join goal = join_to_grid(g, grid, checker_, query.goal, motions);
-  if (!start.found || !goal.found) {
-    report.why_not = std::string("no grid cell next to the ") + (start.found ? "goal" : "start") +
+  const auto over_budget = [&]() {
+    report.why_not = "stopped after evaluating " + std::to_string(options_.max_cells) +
+                     " cells, the budget of one query (option max_cells: raise it with --max_cells N, at about 330 bytes a cell)";
+    keep_cells();
+    return finish();
+  };
+  try {
+    if (!options_.lazy) g.evaluate_all();
+  } catch (const BudgetReached&) {
+    return over_budget();
+  }
+  std::optional<Join> start, goal;
+  SearchResult<GridCell> result;
+  try {
+    start = join_to_grid(g, grid, checker_, query.start, motions);
+    goal = join_to_grid(g, grid, checker_, query.goal, motions);
+    if (start->found && goal->found) {
+      SearchOptions searching = options_.search;
+      searching.record_expanded = record.record;
+      result = shortest_path(g, start->cell, goal->cell, searching, GridDistanceTo(g, goal->cell, GridMetric::sum_of_axes),
+                             GridMoveCost{&g});
+    }
+  } catch (const BudgetReached&) {
+    return over_budget();
+  }
+  if (!start->found || !goal->found) {
+    report.why_not = std::string("no grid cell next to the ") + (start->found ? "goal" : "start") +
                      " is reached from it by a certified free motion; try a finer resolution";
     keep_cells();
     return finish();
   }
 
-  SearchOptions searching = options_.search;
-  searching.record_expanded = record.record;
-  const auto result =
-      shortest_path(g, start.cell, goal.cell, searching, GridDistanceTo(g, goal.cell, GridMetric::sum_of_axes), GridMoveCost{&g});
   expanded = result.expanded;
   generated = result.generated;
   for (const GridCell c : result.expanded_order) report.expanded.push_back(grid.configuration(g, c));
@@ -242,6 +267,7 @@ PlannerEntry<PlanarArm> arm_grid_planner_entry() {
   table.add("evaluation", &ArmGridOptions::lazy, "lazy: decide cells when the search reaches them; eager: every cell first",
             std::vector<std::pair<std::string, bool>>{{"lazy", true}, {"eager", false}});
   add_search_options(table, &ArmGridOptions::search);
+  table.add("max_cells", &ArmGridOptions::max_cells, "cells one query may evaluate before it stops, not found (the memory budget)");
   return make_planner_entry<PlanarArm, ArmGridOptions>(
       "grid", "seed 000's grid over the joint angles (a torus), searched lazily; every move a certified motion",
       std::move(table), [](const ArmProblem& problem, const ArmGridOptions& o) {

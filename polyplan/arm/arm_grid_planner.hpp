@@ -26,6 +26,10 @@ struct ArmGridOptions {
   bool torus = true;              // false: each joint is the interval [0, 2π) and may not cross 0
   bool lazy = true;               // false: evaluate every cell before searching (at most 2^24 cells)
   SearchOptions search{Search::astar};
+  // The budget of cells one query may evaluate. Each costs 200-330 bytes while the search runs
+  // (touched cells, checked moves, search records): 4 million stay within about 1.3 GB. A query
+  // that reaches it ends not found, and says so, instead of being killed by the system.
+  std::size_t max_cells = 4'000'000;
 };
 
 class ArmGridPlanner final : public Planner<PlanarArm> {

@@ -12,6 +12,7 @@
 // Cost: each C-obstacle edge visits the cells along it (exact rationals, no floating point);
 // every other cell whose centre lies in some C-obstacle's bounding box is decided by one exact
 // point location. Seed 000's sphere world at 200 × 200 takes about 0.05 s.
+#include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/world.hpp>
 
@@ -31,8 +32,8 @@ struct Raster {
   std::size_t blocked_count() const;
 };
 
-// The largest cells_per_axis accepted: n·n bytes must stay a sane allocation (4 GiB here).
-inline constexpr std::size_t max_cells_per_axis = std::size_t{1} << 16;
+// The largest cells_per_axis accepted (limits::raster_cells_per_axis).
+inline constexpr std::size_t max_cells_per_axis = limits::raster_cells_per_axis;
 
 // Throws InputError naming the world's file when the world has no bounds, or when cells_per_axis
 // is 0 or above max_cells_per_axis. The CSpace overload reuses a C-space built already (its

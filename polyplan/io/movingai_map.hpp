@@ -23,6 +23,9 @@ struct GridMap {
 // character that is no terrain of the benchmark.
 GridMap read_movingai_map(const std::string& path);
 
+// The same from text already in memory; `name` stands for the file in messages.
+GridMap parse_movingai_map(const std::string& text, const std::string& name);
+
 // The blocked cells as a polygon world (point robot, bounds [0, 0, width, height], no queries).
 World world_from_grid(const GridMap& map);
 

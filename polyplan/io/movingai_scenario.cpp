@@ -23,8 +23,10 @@ std::optional<double> whole_double(const std::string& text) {
 
 }  // namespace
 
-std::vector<ScenarioQuery> read_scenarios(const std::string& path) {
-  std::istringstream in(detail::read_text_file(path));
+std::vector<ScenarioQuery> read_scenarios(const std::string& path) { return parse_scenarios(detail::read_text_file(path), path); }
+
+std::vector<ScenarioQuery> parse_scenarios(const std::string& text, const std::string& path) {
+  std::istringstream in(text);
   std::string line;
   int line_number = 1;
   if (!std::getline(in, line) || line.rfind("version", 0) != 0)
@@ -66,7 +68,11 @@ void check_scenarios_match(const std::vector<ScenarioQuery>& queries, int map_wi
 }
 
 std::vector<std::optional<double>> read_reference_lengths(const std::string& path, std::size_t queries) {
-  std::istringstream in(detail::read_text_file(path));
+  return parse_reference_lengths(detail::read_text_file(path), path, queries);
+}
+
+std::vector<std::optional<double>> parse_reference_lengths(const std::string& text, const std::string& path, std::size_t queries) {
+  std::istringstream in(text);
   std::string line;
   if (!std::getline(in, line) || line.rfind("index,length", 0) != 0)
     throw InputError(path + ": line 1: expected the header 'index,length' (a reference-lengths file)");

@@ -21,6 +21,9 @@ struct ScenarioQuery {
 // over, a length that is not wholly a finite number, more than limits::scenario_queries).
 std::vector<ScenarioQuery> read_scenarios(const std::string& path);
 
+// The same from text already in memory; `name` stands for the file in messages.
+std::vector<ScenarioQuery> parse_scenarios(const std::string& text, const std::string& name);
+
 // Throws InputError naming the scenario file and line of the first query written for another
 // map size, or whose start or goal cell lies outside the map.
 void check_scenarios_match(const std::vector<ScenarioQuery>& queries, int map_width, int map_height, const std::string& map_file,
@@ -30,5 +33,8 @@ void check_scenarios_match(const std::vector<ScenarioQuery>& queries, int map_wi
 // its query i, nullopt where the file has none; -1 means "no path". An index at or beyond
 // `queries`, a line that is not 'index,length' or a missing header is an InputError.
 std::vector<std::optional<double>> read_reference_lengths(const std::string& path, std::size_t queries);
+
+// The same from text already in memory; `name` stands for the file in messages.
+std::vector<std::optional<double>> parse_reference_lengths(const std::string& text, const std::string& name, std::size_t queries);
 
 }  // namespace polyplan

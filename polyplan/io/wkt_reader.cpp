@@ -145,10 +145,13 @@ class WktParser {
 
 }  // namespace
 
+std::vector<PolygonWithHoles> parse_wkt_obstacles(const std::string& text, const std::string& prefix) {
+  return WktParser(text, prefix).file();
+}
+
 std::vector<PolygonWithHoles> read_wkt_obstacles(const std::string& wkt_path, const std::string& from_file) {
   const std::string prefix = from_file + ": obstacles_wkt \"" + wkt_path + "\": ";
-  const std::string text = detail::read_text_file(wkt_path, prefix.substr(0, prefix.size() - 2));
-  return WktParser(text, prefix).file();
+  return parse_wkt_obstacles(detail::read_text_file(wkt_path, prefix.substr(0, prefix.size() - 2)), prefix);
 }
 
 }  // namespace polyplan

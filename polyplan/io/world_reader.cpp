@@ -140,9 +140,11 @@ World read_world(const std::string& path, std::vector<std::string>* warnings) {
   return parse_world(detail::read_text_file(path), path, warnings);
 }
 
-std::vector<ExactPoint> read_path(const std::string& path) {
-  Reader r(path);
-  json root = r.parse(detail::read_text_file(path));
+std::vector<ExactPoint> read_path(const std::string& path) { return parse_path(detail::read_text_file(path), path); }
+
+std::vector<ExactPoint> parse_path(const std::string& text, const std::string& name) {
+  Reader r(name);
+  json root = r.parse(text);
   if (!root.is_object()) r.fail("path file", "expected a JSON object {\"path\": [[x, y], ...]}");
   const json& points = r.required(root, "path", "path file");
   if (!points.is_array() || points.empty()) r.fail("path", "expected a non-empty list of points [[x, y], ...]");

@@ -19,4 +19,7 @@ World parse_world(const std::string& text, const std::string& name,
 // Reads {"path": [[x, y], ...]}.
 std::vector<ExactPoint> read_path(const std::string& path);
 
+// The same from text already in memory; `name` stands for the file in messages.
+std::vector<ExactPoint> parse_path(const std::string& text, const std::string& name);
+
 }  // namespace polyplan

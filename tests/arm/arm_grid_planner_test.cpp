@@ -92,6 +92,25 @@ TEST(ArmGridPlanner, HardCaseIsFoundOnlyOnTheTorus) {
   EXPECT_NE(on_interval.why_not.find("not connected"), std::string::npos) << on_interval.why_not;
 }
 
+// A query that would evaluate more cells than its budget ends, not found, naming the option; the
+// same query within the budget is found (the hard query at 5 degrees evaluates hundreds of cells).
+TEST(ArmGridPlanner, AQueryStopsAtItsCellBudget) {
+  const ArmProblem p = read_arm_problem(arms + "two_link_points.json");
+  const ArmQuery& hard = query_named(p, "hard");
+  ArmGridOptions small;
+  small.max_cells = 50;
+  const auto stopped = plan_once(p, hard, small);
+  EXPECT_FALSE(stopped.found);
+  EXPECT_EQ(stopped.why_not.rfind("stopped after evaluating 50 cells, the budget of one query (option max_cells", 0), 0u)
+      << stopped.why_not;
+  EXPECT_LE(cells_evaluated(stopped), 50);
+  small.lazy = false;  // eager evaluation meets the budget before searching
+  EXPECT_FALSE(plan_once(p, hard, small).found);
+  const auto within = plan_once(p, hard);
+  EXPECT_TRUE(within.found);
+  EXPECT_GT(cells_evaluated(within), 50);
+}
+
 TEST(ArmGridPlanner, LazyAndEagerFindPathsOfEqualCostAndLazyEvaluatesLess) {
   const ArmProblem p = read_arm_problem(arms + "two_link_points.json");
   for (const char* name : {"easy", "medium", "hard"}) {

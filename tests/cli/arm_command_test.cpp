@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 namespace {
 
@@ -77,6 +78,15 @@ TEST(ArmCommand, BadInputIsOneLineNamingTheProblem) {
   const CliRun missing = run_polyplan("arm /nonexistent/arm.json");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("/nonexistent/arm.json"), std::string::npos) << missing.err;
+  // Thirteen joints exited 3 ("internal error") from the grid's axis limit.
+  const std::filesystem::path thirteen = std::filesystem::temp_directory_path() / "polyplan_arm13.json";
+  std::ofstream(thirteen) << R"({"links": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1], "start": [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0],
+                                 "goal": [1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]})";
+  const CliRun joints = run_polyplan("arm '" + thirteen.string() + "'");
+  EXPECT_EQ(joints.exit_code, 2) << joints.err;
+  EXPECT_EQ(lines(joints.err), 1u) << joints.err;
+  EXPECT_NE(joints.err.find("an arm of 13 joints needs a grid of as many axes; it has at most 12"), std::string::npos) << joints.err;
+  std::filesystem::remove(thirteen);
 }
 
 }  // namespace

@@ -232,7 +232,7 @@ TEST(Rasterize, RejectsWorldsWithoutBoundsAndZeroCells) {
     rasterize(world_from(kUnitSquare), 0);
     FAIL() << "no InputError";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "test.json: raster: cells per axis must be between 1 and 65536, got 0");
+    EXPECT_EQ(std::string(e.what()), "test.json: raster: cells per axis must be between 1 and 2048, got 0");
   }
   EXPECT_THROW(rasterize(CSpace(world_from(kUnitSquare)), max_cells_per_axis + 1), InputError);
   EXPECT_EQ(rasterize(world_from(kUnitSquare), 1).blocked_count(), 1u);

@@ -126,6 +126,16 @@ TEST(MovingAIMap, ArenaSolidsAreExactlyTheBlockedCells) {
   expect_solids_are_the_blocked_cells(read_movingai_map(data_file("movingai/maps/arena.map")));
 }
 
+// Found by fuzzing (it crashed CGAL's symmetric difference): the enclosed free cell (1, 1)
+// touches the free cell (0, 2) at a pinch point, so the traced boundary of the one blocked
+// region passes that point twice. It is now cut there into simple loops.
+TEST(MovingAIMap, ABoundaryThroughAPinchPointTwiceIsCutIntoSimpleLoops) {
+  const GridMap map = read_movingai_map(write_temp_file("pinch_twice.map", map_text(4, 5, "@@@@\n@.@@\n.@@.\n@@..\n@@@@\n")));
+  expect_solids_are_the_blocked_cells(map);
+  // The fuzzer's own input, a mutated den312d.
+  expect_solids_are_the_blocked_cells(read_movingai_map(std::string(POLYPLAN_SOURCE_DIR) + "/tests/data/fuzz/map-crash-pinch-point-twice.map"));
+}
+
 TEST(MovingAIMap, RowsCountUpFromTheFilesFirstRow) {
   // Cell (x, y) is [x, x+1] × [y, y+1] with y the row in the file: the first row is y = 0.
   const GridMap map = read_movingai_map(write_temp_file("rows.map", map_text(3, 2, "@..\n..T\n")));

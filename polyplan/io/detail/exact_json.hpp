@@ -84,7 +84,7 @@ class ExactNumberSax {
       error = where() + ": nested deeper than the supported " + std::to_string(limits::json_depth) + " levels";
       return false;
     }
-    frames_.push_back({array});
+    frames_.push_back(Frame{array, 0, {}, {}});
     return true;
   }
   bool close(bool ok) {
