@@ -75,10 +75,8 @@ Ring rectangle(const Rational& x0, const Rational& y0, const Rational& x1, const
   return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
 }
 
-// The seeds of the tests below give worlds on which CSpace::locate returns: CGAL 5.5.1's landmark
-// point location loops for ever on some points next to where obstacles touch (in a few per cent
-// of these worlds, for some lattice point; see Locate.DISABLED_NextToWhereObstaclesTouchReturns
-// in cspace_test.cpp).
+// Random worlds with touching and overlapping obstacles (CSpace used to hang on a few per cent of
+// them, in CGAL's landmark point location; see Locate.NextToWhereObstaclesTouchReturns).
 //
 // Kind 0: cells of a 5 × 5 grid of 2 × 2 cells blocked at random (shared edges, diagonal
 // touches: pinch points). Kind 1: random rectangles and triangles, overlapping or touching.
