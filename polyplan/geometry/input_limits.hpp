@@ -4,6 +4,7 @@
 // that names the file, the object and the limit.
 #include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace polyplan::limits {
 
@@ -25,6 +26,12 @@ inline constexpr std::size_t number_characters = 100;
 // overflow above about 1e154 and underflow below 1e-154 (CGAL's sweep crashed on coordinates
 // around 1e160, lengths printed 0 at 1e-200): the range keeps their squares normal doubles.
 inline constexpr int number_decimal_exponent = 100;
+
+// How messages name that range.
+inline std::string supported_number_range() {
+  const std::string e = std::to_string(number_decimal_exponent);
+  return "the supported range (0 or a magnitude from 1e-" + e + " to 1e" + e + ")";
+}
 
 // Cells of a MovingAI map (width × height): the largest benchmark map is 1024 × 1024.
 inline constexpr std::uint64_t map_cells = std::uint64_t{1} << 26;  // 8192 × 8192

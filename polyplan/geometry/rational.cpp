@@ -108,8 +108,7 @@ std::optional<Rational> parse_rational(std::string_view text, std::string* why) 
     static const Rational largest = power_of_ten(limits::number_decimal_exponent);
     static const Rational smallest = power_of_ten(-limits::number_decimal_exponent);
     const Rational magnitude = abs(*value);
-    const std::string range = "the supported range (0 or a magnitude from 1e-" + std::to_string(limits::number_decimal_exponent) +
-                              " to 1e" + std::to_string(limits::number_decimal_exponent) + ")";
+    const std::string range = limits::supported_number_range();
     if (magnitude > largest) return fail(why, "overflows " + range);
     if (sgn(magnitude) != 0 && magnitude < smallest) return fail(why, "underflows " + range);
   }

@@ -32,6 +32,17 @@ std::string edge_text(const Polygon& polygon, std::size_t i) {
   return "edge " + std::to_string(i) + " " + to_text(e.source()) + "-" + to_text(e.target());
 }
 
+// A bounding box with an index (an edge's or a hole's), for CGAL's box intersection.
+using IndexedBox = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+
+// The boxes of a polygon's edges, edge i carrying the index first + i.
+std::vector<IndexedBox> edge_boxes(const Polygon& polygon, std::size_t first = 0) {
+  std::vector<IndexedBox> boxes;
+  boxes.reserve(polygon.size());
+  for (std::size_t i = 0; i < polygon.size(); ++i) boxes.emplace_back(polygon.edge(static_cast<int>(i)).bbox(), first + i);
+  return boxes;
+}
+
 // Whether edges i and j of a polygon meet other than adjacent edges do (in their shared vertex).
 bool edges_conflict(const Polygon& polygon, std::size_t i, std::size_t j, std::string* how) {
   const std::size_t n = polygon.size();
@@ -58,14 +69,11 @@ bool edges_conflict(const Polygon& polygon, std::size_t i, std::size_t j, std::s
 // candidates are the pairs of edges whose bounding boxes meet (CGAL's box intersection, in
 // O(n log² n + pairs)), not all n² pairs: a 20,000-vertex polygon took 27 s that way.
 std::string crossing_edges(const Polygon& polygon) {
-  using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
-  std::vector<Box> boxes;
-  boxes.reserve(polygon.size());
-  for (std::size_t i = 0; i < polygon.size(); ++i) boxes.emplace_back(polygon.edge(static_cast<int>(i)).bbox(), i);
+  std::vector<IndexedBox> boxes = edge_boxes(polygon);
   struct Found {};  // leaves the box search at the first conflict
   std::string how;
   try {
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const IndexedBox& a, const IndexedBox& b) {
       if (edges_conflict(polygon, a.handle(), b.handle(), &how)) throw Found{};
     });
   } catch (const Found&) {
@@ -79,12 +87,9 @@ std::string crossing_edges(const Polygon& polygon) {
 // a point inside such a hole was located as blocked). A hole may touch its outer boundary at
 // points. Candidates are the pairs of edges whose bounding boxes meet.
 bool shares_a_segment(const Polygon& outer, const Polygon& hole) {
-  using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
-  std::vector<Box> outer_boxes, hole_boxes;
-  for (std::size_t i = 0; i < outer.size(); ++i) outer_boxes.emplace_back(outer.edge(static_cast<int>(i)).bbox(), i);
-  for (std::size_t i = 0; i < hole.size(); ++i) hole_boxes.emplace_back(hole.edge(static_cast<int>(i)).bbox(), outer.size() + i);
+  std::vector<IndexedBox> outer_boxes = edge_boxes(outer), hole_boxes = edge_boxes(hole, outer.size());
   bool shared = false;
-  CGAL::box_intersection_d(outer_boxes.begin(), outer_boxes.end(), hole_boxes.begin(), hole_boxes.end(), [&](const Box& a, const Box& b) {
+  CGAL::box_intersection_d(outer_boxes.begin(), outer_boxes.end(), hole_boxes.begin(), hole_boxes.end(), [&](const IndexedBox& a, const IndexedBox& b) {
     if (shared) return;
     const Segment e = outer.edge(static_cast<int>(a.handle())), f = hole.edge(static_cast<int>(b.handle() - outer.size()));
     if (!CGAL::collinear(e.source(), e.target(), f.source()) || !CGAL::collinear(e.source(), e.target(), f.target())) return;
@@ -104,13 +109,12 @@ bool shares_a_segment(const Polygon& outer, const Polygon& hole) {
 // inconsistently on it. Holes may touch each other (at points or along edges). Candidates are
 // the pairs with meeting bounding boxes; do_intersect on two polygons is regularized (interiors).
 std::optional<std::pair<std::size_t, std::size_t>> overlapping_holes(const std::vector<Polygon>& holes) {
-  using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
-  std::vector<Box> boxes;
+  std::vector<IndexedBox> boxes;
   for (std::size_t h = 0; h < holes.size(); ++h) boxes.emplace_back(holes[h].bbox(), h);
   std::optional<std::pair<std::size_t, std::size_t>> found;
   struct Found {};
   try {
-    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const Box& a, const Box& b) {
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const IndexedBox& a, const IndexedBox& b) {
       if (CGAL::do_intersect(holes[a.handle()], holes[b.handle()])) {
         found = std::minmax(a.handle(), b.handle());
         throw Found{};

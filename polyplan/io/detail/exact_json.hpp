@@ -52,8 +52,7 @@ class ExactNumberSax {
     // nlohmann converts numbers to double while lexing: one beyond double's range fails here,
     // before its text reaches number_float.
     if (ex.id == 406)
-      error = where() + ": number" + at + " overflows the supported range (0 or a magnitude from 1e-" +
-              std::to_string(limits::number_decimal_exponent) + " to 1e" + std::to_string(limits::number_decimal_exponent) + ")";
+      error = where() + ": number" + at + " overflows " + limits::supported_number_range();
     else
       error = "invalid JSON" + at + (frames_.empty() ? "" : " (in " + where() + ")") + ": " + abbreviated_text(ex.what(), 160);
     return false;
