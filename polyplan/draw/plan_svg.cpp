@@ -73,6 +73,29 @@ void draw_cells(svg::Drawing& drawing, const CellGrid& cells) {
   drawing.legend("grid graph vertices (free cell centres)", vertex_style, svg::Swatch::dot);
 }
 
+void draw_decomposition(svg::Drawing& drawing, const PlanDecomposition<ExactPoint>& decomposition) {
+  // Neighbouring cells alternate between two pale tints so that each cell reads as one shape.
+  for (std::size_t tint = 0; tint < 2; ++tint) {
+    std::vector<std::vector<svg::Point2>> rings;
+    for (std::size_t i = tint; i < decomposition.cells.size(); i += 2) {
+      std::vector<svg::Point2> ring;
+      for (const ExactPoint& p : decomposition.cells[i]) ring.push_back(point(p));
+      rings.push_back(std::move(ring));
+    }
+    const svg::Style style = svg::filled(theme::free_tints[tint].fill, 1.0, theme::free_tints[tint].edge, 0.5);
+    for (const auto& ring : rings) drawing.polygon({ring}, style);
+    if (tint == 0) drawing.legend(decomposition.kind + " (" + std::to_string(decomposition.cells.size()) + ")", style);
+  }
+  std::vector<std::pair<svg::Point2, svg::Point2>> walls;
+  for (const auto& [a, b] : decomposition.walls) walls.push_back({point(a), point(b)});
+  svg::Style wall_style;
+  wall_style.stroke = theme::wall_line;
+  wall_style.stroke_px = 0.9;
+  wall_style.dash = "4 3";
+  drawing.segments(walls, wall_style);
+  drawing.legend("walls between cells (" + std::to_string(walls.size()) + ")", wall_style, svg::Swatch::line);
+}
+
 void draw_points(svg::Drawing& drawing, const std::vector<ExactPoint>& points, const std::string& label) {
   if (points.empty()) return;
   std::vector<svg::Point2> dots;
@@ -88,12 +111,15 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   svg::Drawing drawing(view_box(cspace.world(), cspace));
   const PlanReport<ExactPoint>* with_cells = nullptr;
   const PlanReport<ExactPoint>* with_graph = nullptr;
+  const PlanReport<ExactPoint>* with_decomposition = nullptr;
   for (const auto& r : reports) {
     if (!with_cells && r.cells) with_cells = &r;
     if (!with_graph && r.graph) with_graph = &r;
+    if (!with_decomposition && r.decomposition) with_decomposition = &r;
   }
   if (with_cells) draw_cells(drawing, *with_cells->cells);
-  draw_cspace(drawing, cspace, with_cells ? FreeSpace::unfilled : FreeSpace::filled);
+  if (with_decomposition) draw_decomposition(drawing, *with_decomposition->decomposition);
+  draw_cspace(drawing, cspace, with_cells || with_decomposition ? FreeSpace::unfilled : FreeSpace::filled);
   if (with_graph) draw_graph(drawing, *with_graph->graph);
 
   std::vector<ExactPoint> expanded;

@@ -10,8 +10,8 @@
 
 namespace polyplan {
 
-// The world and its C-space; the cells (when a report carries them: the free space is then shown
-// by the cells); the roadmap or tree (the first report's that carries one); where the searches
+// The world and its C-space; the cells or the decomposition (when a report carries them: the free
+// space is then shown by them); the roadmap or tree (the first report's that carries one); where the searches
 // expanded; every path found, in the theme's palette, labelled `labels[i]` (default "path" for
 // one report, "path i" for several). Reports made with QueryOptions::record carry the graph,
 // the cells and the expanded configurations; others draw their paths only.
@@ -24,6 +24,8 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
 void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph);
 // cells as runs of free and blocked boxes, and their centres when there are few enough to see;
 void draw_cells(svg::Drawing& drawing, const CellGrid& cells);
+// convex cells in two alternating pale tints, the walls between them dashed;
+void draw_decomposition(svg::Drawing& drawing, const PlanDecomposition<ExactPoint>& decomposition);
 // points such as the vertices a search expanded, as small dots with a legend entry.
 void draw_points(svg::Drawing& drawing, const std::vector<ExactPoint>& points, const std::string& label);
 

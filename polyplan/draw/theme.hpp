@@ -30,6 +30,8 @@ inline constexpr const char* blocked_cell_fill = "#b9b2c9";
 inline constexpr const char* blocked_cell_edge = "#8d84a3";
 inline constexpr const char* cell_vertex = "#6aa77a";
 inline constexpr const char* not_evaluated_hatch = "#c8c8c8";
+// The walls of a decomposition (dashed), between its pale cells.
+inline constexpr const char* wall_line = "#5b7f95";
 
 // Queries: starts green, goals red; a robot at its start in translucent green.
 inline constexpr const char* start = "#2ca02c";

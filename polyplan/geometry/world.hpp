@@ -42,4 +42,11 @@ struct World {
   std::vector<Query> queries;
 };
 
+// The starts and goals of the world's queries, then `more`: the points a frame around an
+// unbounded free space must hold.
+inline std::vector<ExactPoint> query_points(const World& world, std::vector<ExactPoint> more = {}) {
+  for (const Query& q : world.queries) more.insert(more.end(), {q.start, q.goal});
+  return more;
+}
+
 }  // namespace polyplan

@@ -1,5 +1,7 @@
 #include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
 
+#include <polyplan/internal/free_space_frame.hpp>
+
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -34,6 +36,7 @@ struct Cone {
 
 struct FreeSpaceTriangulation::Impl {
   CDT cdt;
+  std::optional<Bounds> frame;  // only for an unbounded free space
   std::vector<Point> points;
   std::vector<VertexWedges> wedges;
   std::vector<VertexHandle> handles;
@@ -156,7 +159,8 @@ struct FreeSpaceTriangulation::Impl {
   }
 };
 
-FreeSpaceTriangulation::FreeSpaceTriangulation(const CSpace::Impl& cspace) : impl_(std::make_unique<Impl>()) {
+FreeSpaceTriangulation::FreeSpaceTriangulation(const CSpace::Impl& cspace, const std::vector<ExactPoint>& inside)
+    : impl_(std::make_unique<Impl>()) {
   Impl& t = *impl_;
   const auto& arr = cspace.free_set.arrangement();
   std::unordered_map<const void*, int> index;
@@ -179,27 +183,12 @@ FreeSpaceTriangulation::FreeSpaceTriangulation(const CSpace::Impl& cspace) : imp
     t.cdt.insert_constraint(t.handles[static_cast<std::size_t>(index.at(&*e->source()))],
                             t.handles[static_cast<std::size_t>(index.at(&*e->target()))]);
 
-  // Without bounds the free space is unbounded; a frame around everything (and the world's
-  // queries) closes it. Shortest paths never leave the convex hull of the obstacles and the
-  // query points, so the frame changes no answer for points inside it.
-  if (!cspace.world.bounds) {
-    FT xmin = 0, ymin = 0, xmax = 0, ymax = 0;
-    bool first = true;
-    auto extend = [&](const Point& p) {
-      if (first || p.x() < xmin) xmin = p.x();
-      if (first || p.y() < ymin) ymin = p.y();
-      if (first || p.x() > xmax) xmax = p.x();
-      if (first || p.y() > ymax) ymax = p.y();
-      first = false;
-    };
-    for (const Point& p : t.points) extend(p);
-    for (const Query& q : cspace.world.queries) {
-      extend(to_point(q.start));
-      extend(to_point(q.goal));
-    }
-    const FT margin = (xmax - xmin) + (ymax - ymin) + 1;
-    const Point corners[4] = {{xmin - margin, ymin - margin}, {xmax + margin, ymin - margin},
-                              {xmax + margin, ymax + margin}, {xmin - margin, ymax + margin}};
+  // Without bounds the free space is unbounded: a frame closes it (internal/free_space_frame.hpp).
+  if (arr.unbounded_face()->contained()) {
+    t.frame = free_space_frame(cspace, inside);
+    const Bounds& b = *t.frame;
+    const Point corners[4] = {to_point({b.xmin, b.ymin}), to_point({b.xmax, b.ymin}), to_point({b.xmax, b.ymax}),
+                              to_point({b.xmin, b.ymax})};
     VertexHandle frame[4];
     for (int i = 0; i < 4; ++i) {
       frame[i] = t.cdt.insert(corners[i]);
@@ -245,6 +234,10 @@ FreeSpaceTriangulation::FreeSpaceTriangulation(const CSpace::Impl& cspace) : imp
 }
 
 FreeSpaceTriangulation::~FreeSpaceTriangulation() = default;
+
+bool FreeSpaceTriangulation::in_frame(const ExactPoint& p) const {
+  return !impl_->frame || strictly_inside(*impl_->frame, p);
+}
 
 std::size_t FreeSpaceTriangulation::vertex_count() const { return impl_->points.size(); }
 const Point& FreeSpaceTriangulation::point(std::size_t v) const { return impl_->points[v]; }

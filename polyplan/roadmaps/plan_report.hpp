@@ -81,6 +81,15 @@ struct CellGrid {
   State state(std::size_t column, std::size_t row) const { return static_cast<State>(states[column + row * columns]); }
 };
 
+// A decomposition of the free space into convex cells as a picture shows it: each cell's corners
+// in order, and the walls through which the planner passes from one cell into the next.
+template <class Configuration>
+struct PlanDecomposition {
+  std::string kind;  // the legend's word: "trapezoids"
+  std::vector<std::vector<Configuration>> cells;
+  std::vector<std::pair<Configuration, Configuration>> walls;
+};
+
 template <class Configuration>
 struct PlanReport {
   bool found = false;
@@ -96,10 +105,11 @@ struct PlanReport {
   Facts facts;
 
   // What a picture shows beyond the path, kept when the query asks for it (QueryOptions::record).
-  // The graph and the cells are the planner's, shared by the reports of its queries.
+  // The graph, the cells and the decomposition are the planner's, shared by the reports of its queries.
   std::shared_ptr<const PlanGraph<Configuration>> graph;
   std::vector<Configuration> expanded;  // where the search expanded, in order
   std::shared_ptr<const CellGrid> cells;
+  std::shared_ptr<const PlanDecomposition<Configuration>> decomposition;
 };
 
 }  // namespace polyplan

@@ -1,6 +1,7 @@
 #include <polyplan/roadmaps/registry.hpp>
 
 #include <polyplan/roadmaps/raster_planner.hpp>
+#include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 
 namespace polyplan {
@@ -12,6 +13,7 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       visibility_planner_entry(VisibilityKind::reduced),
       visibility_planner_entry(VisibilityKind::full),
       raster_planner_entry(),
+      trapezoid_planner_entry(),
   };
   return registry;
 }

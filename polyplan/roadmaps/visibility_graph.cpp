@@ -18,23 +18,6 @@ using Direction = VertexWedges::Direction;
 
 constexpr std::size_t kNotANode = static_cast<std::size_t>(-1);
 
-// A path that runs straight through a corner (grazing it) lists that corner; the same motion
-// without it reads better and is what DESIGN.md calls the path ("if start sees goal, the path is
-// the segment"). Exact: the middle point is dropped only if collinear and between its neighbours.
-std::vector<ExactPoint> without_straight_corners(const std::vector<ExactPoint>& path) {
-  std::vector<ExactPoint> kept;
-  for (const ExactPoint& p : path) {
-    while (kept.size() >= 2) {
-      const ExactPoint &a = kept[kept.size() - 2], &b = kept.back();
-      const bool collinear = (b.x - a.x) * (p.y - a.y) == (p.x - a.x) * (b.y - a.y);
-      const bool between = (b.x - a.x) * (p.x - b.x) + (b.y - a.y) * (p.y - b.y) > 0;
-      if (!(collinear && between)) break;
-      kept.pop_back();
-    }
-    kept.push_back(p);
-  }
-  return kept;
-}
 
 
 }  // namespace
@@ -53,8 +36,9 @@ struct VisibilityGraph::Impl {
   double build_seconds = 0;
   std::shared_ptr<const PlanGraph<ExactPoint>> picture;  // made for the first query that records
 
-  Impl(const CSpace& c, VisibilityKind k, SearchOptions s)
-      : cspace(&c), kind(k), search(s), triangulation(CSpaceAccess::impl(c)) {}
+  // Without bounds the triangulation's frame holds `inside` (internal/free_space_frame.hpp).
+  Impl(const CSpace& c, VisibilityKind k, SearchOptions s, const std::vector<ExactPoint>& inside)
+      : cspace(&c), kind(k), search(s), triangulation(CSpaceAccess::impl(c), inside) {}
 
   const char* kind_name() const { return kind == VisibilityKind::reduced ? "visibility" : "visibility-full"; }
 
@@ -144,9 +128,14 @@ struct VisibilityGraph::Impl {
   }
 };
 
-VisibilityGraph::VisibilityGraph(const CSpace& cspace, VisibilityKind kind, SearchOptions search)
-    : impl_(std::make_unique<Impl>(cspace, kind, search)) {
+VisibilityGraph::VisibilityGraph(const CSpace& cspace, VisibilityKind kind, SearchOptions search) {
+  build(cspace, kind, search, query_points(cspace.world()));
+}
+
+void VisibilityGraph::build(const CSpace& cspace, VisibilityKind kind, SearchOptions search,
+                            const std::vector<ExactPoint>& inside) {
   const Stopwatch building;
+  impl_ = std::make_unique<Impl>(cspace, kind, search, inside);
   impl_->build();
   impl_->build_seconds = building.seconds();
 }
@@ -162,6 +151,9 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const QueryOpti
 }
 
 PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const SearchOptions& search, const QueryOptions& options) {
+  if (!impl_->triangulation.in_frame(query.start) || !impl_->triangulation.in_frame(query.goal))
+    // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
+    build(*impl_->cspace, impl_->kind, impl_->search, query_points(impl_->cspace->world(), {query.start, query.goal}));
   Impl& g = *impl_;
   const Stopwatch querying;
   PlanReport<ExactPoint> report;

@@ -9,7 +9,8 @@
 // that grazes corners from alternating sides (no open cone of sight lines around it): the graph
 // then has the same straight motion through the grazed corner, two edges of the same length.
 //
-// Queries connect start and goal to the corners they see (without rebuilding), search with any
+// Queries connect start and goal to the corners they see (without rebuilding; in a world without
+// bounds a query beyond the frame of the triangulation rebuilds it around the query), search with any
 // algorithm of search/, and check the path exactly (a walk through the triangulated free space,
 // independent of the visibility cones) before returning it. Registered as `visibility` (reduced)
 // and `visibility-full`.
@@ -49,6 +50,8 @@ class VisibilityGraph final : public Planner<TranslatingRobot> {
   PlanReport<ExactPoint> plan(const Query& query, const SearchOptions& search, const QueryOptions& options = {});
 
  private:
+  void build(const CSpace& cspace, VisibilityKind kind, SearchOptions search, const std::vector<ExactPoint>& inside);
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };

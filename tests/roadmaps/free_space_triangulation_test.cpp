@@ -29,7 +29,8 @@ using Point = polyplan::detail::Point;
 
 // A C-space and its triangulation, built once.
 struct Triangulated {
-  explicit Triangulated(const World& world) : cspace(world), triangulation(CSpaceAccess::impl(cspace)) {}
+  explicit Triangulated(const World& world)
+      : cspace(world), triangulation(CSpaceAccess::impl(cspace), query_points(world)) {}
   explicit Triangulated(const std::string& json) : Triangulated(world_from(json)) {}
   CSpace cspace;
   FreeSpaceTriangulation triangulation;

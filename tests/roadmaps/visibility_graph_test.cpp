@@ -285,3 +285,16 @@ TEST(VisibilityGraphOnMovingAi, Lak303dSampleMatchesTheReference) {
   EXPECT_GE(o.queries, 100u);
   EXPECT_EQ(o.mismatches, 0u);
 }
+
+TEST(VisibilityGraph, WithoutBoundsAQueryBeyondTheFrameIsFramedAnew) {
+  // The world's own query sets the first frame; a query a thousand units away is answered too
+  // (it once was "different components": the triangulation's frame did not hold it).
+  const CSpace c(world_from(R"({"obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]], "start": [1, 5], "goal": [9, 5]})"));
+  VisibilityGraph graph(c);
+  const Report far = graph.plan(between(pt("-1000", "5"), pt("2000", "5")));
+  ASSERT_TRUE(far.found) << far.why_not;
+  EXPECT_NEAR(far.length, length(pt("-1000", "5"), pt("4", "4")) + 2 + length(pt("6", "4"), pt("2000", "5")), 1e-9);
+  const Report near = graph.plan(between(pt("1", "5"), pt("9", "5")));
+  ASSERT_TRUE(near.found);
+  EXPECT_NEAR(near.length, 2 * std::sqrt(10.0) + 2, 1e-12);
+}

@@ -19,8 +19,12 @@ namespace polyplan::detail {
 
 class FreeSpaceTriangulation {
  public:
-  explicit FreeSpaceTriangulation(const CSpace::Impl& cspace);
+  // Without bounds, a frame closes the free space around its vertices and `inside`.
+  explicit FreeSpaceTriangulation(const CSpace::Impl& cspace, const std::vector<ExactPoint>& inside = {});
   ~FreeSpaceTriangulation();
+
+  // Whether p is strictly inside the frame; always true in a world with bounds.
+  bool in_frame(const ExactPoint& p) const;
 
   // The free-space arrangement's vertices, numbered 0..n-1.
   std::size_t vertex_count() const;

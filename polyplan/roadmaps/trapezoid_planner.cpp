@@ -1,0 +1,201 @@
+#include <polyplan/roadmaps/trapezoid_planner.hpp>
+
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/roadmaps/channel_funnel.hpp>
+#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/search/shortest_path.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace polyplan {
+namespace {
+
+ExactPoint midpoint(const ExactPoint& a, const ExactPoint& b) { return {(a.x + b.x) / 2, (a.y + b.y) / 2}; }
+
+bool share_a_cell(const std::vector<std::size_t>& a, const std::vector<std::size_t>& b) {
+  return std::any_of(a.begin(), a.end(), [&](std::size_t c) { return std::find(b.begin(), b.end(), c) != b.end(); });
+}
+
+}  // namespace
+
+struct TrapezoidPlanner::Impl {
+  const CSpace* cspace;
+  TrapezoidOptions options;
+  TrapezoidalDecomposition decomposition;
+  Roadmap roadmap;
+  RoadmapVertexId start_slot = 0, goal_slot = 0;
+  SearchWorkspace<RoadmapVertexId> workspace;
+  double build_seconds = 0;
+  std::shared_ptr<const PlanGraph<ExactPoint>> graph_picture;  // made for the first query that records
+  std::shared_ptr<const PlanDecomposition<ExactPoint>> cells_picture;
+
+  Impl(const CSpace& c, const TrapezoidOptions& o, const std::vector<ExactPoint>& inside)
+      : cspace(&c), options(o), decomposition(c, inside) {
+    for (const ExactPoint& p : decomposition.centroids()) add_vertex(roadmap, p);
+    for (std::size_t w = 0; w < decomposition.walls().size(); ++w) {
+      const TrapezoidWall& wall = decomposition.walls()[w];
+      const RoadmapVertexId middle = add_vertex(roadmap, midpoint(wall.lower, wall.upper));
+      add_edge(roadmap, wall.left, middle);
+      add_edge(roadmap, middle, wall.right);
+    }
+    start_slot = add_vertex(roadmap, {0, 0});
+    goal_slot = add_vertex(roadmap, {0, 0});
+  }
+
+  std::size_t cell_count() const { return decomposition.cells().size(); }
+  bool is_wall_node(RoadmapVertexId v) const { return v >= cell_count() && v < start_slot; }
+  const TrapezoidWall& wall_of(RoadmapVertexId v) const { return decomposition.walls()[v - cell_count()]; }
+
+  // The search's path start, centroid, wall midpoint, centroid, ..., goal, as the walls it
+  // crosses, each seen from the side the path comes from.
+  std::vector<Portal> portals_along(const std::vector<RoadmapVertexId>& nodes) const {
+    std::vector<Portal> portals;
+    for (std::size_t i = 1; i + 1 < nodes.size(); ++i) {
+      if (!is_wall_node(nodes[i])) continue;
+      const TrapezoidWall& wall = wall_of(nodes[i]);
+      const bool rightwards = nodes[i - 1] == wall.left;  // from the wall's left cell to its right one
+      portals.push_back(rightwards ? Portal{wall.upper, wall.lower} : Portal{wall.lower, wall.upper});
+    }
+    return portals;
+  }
+
+  std::shared_ptr<const PlanGraph<ExactPoint>> graph() {
+    if (graph_picture) return graph_picture;
+    auto g = std::make_shared<PlanGraph<ExactPoint>>();
+    g->kind = "roadmap";
+    for (RoadmapVertexId v = 0; v < start_slot; ++v) g->vertices.push_back(roadmap[v].exact);
+    for (auto [e, end] = boost::edges(roadmap); e != end; ++e) {
+      const auto u = boost::source(*e, roadmap), v = boost::target(*e, roadmap);
+      if (u < start_slot && v < start_slot) g->edges.emplace_back(u, v);
+    }
+    graph_picture = std::move(g);
+    return graph_picture;
+  }
+
+  std::shared_ptr<const PlanDecomposition<ExactPoint>> cells() {
+    if (cells_picture) return cells_picture;
+    auto d = std::make_shared<PlanDecomposition<ExactPoint>>();
+    d->kind = "trapezoids";
+    d->cells = decomposition.cells();
+    for (const TrapezoidWall& w : decomposition.walls()) d->walls.emplace_back(w.lower, w.upper);
+    cells_picture = std::move(d);
+    return cells_picture;
+  }
+
+  void record_facts(Facts& facts) const {
+    facts.set("roadmap.kind", "trapezoid");
+    facts.set("roadmap.vertices", start_slot);
+    facts.set("roadmap.edges", 2 * decomposition.walls().size());
+    facts.set("roadmap.seconds", build_seconds);
+    facts.set("trapezoid.cells", cell_count());
+    facts.set("trapezoid.walls", decomposition.walls().size());
+    const SweepCounts& sweep = decomposition.sweep();
+    facts.set("sweep.insertions", sweep.insertions);
+    facts.set("sweep.deletions", sweep.deletions);
+    facts.set("sweep.events", sweep.events());
+    facts.set("sweep.most_crossed", sweep.most_crossed);
+    facts.set("search.algorithm", to_string(options.search.algorithm));
+  }
+};
+
+TrapezoidPlanner::TrapezoidPlanner(const CSpace& cspace, TrapezoidOptions options) {
+  const Stopwatch building;
+  impl_ = std::make_unique<Impl>(cspace, options, query_points(cspace.world()));
+  impl_->build_seconds = building.seconds();
+}
+
+TrapezoidPlanner::~TrapezoidPlanner() = default;
+
+const TrapezoidalDecomposition& TrapezoidPlanner::decomposition() const { return impl_->decomposition; }
+const Roadmap& TrapezoidPlanner::roadmap() const { return impl_->roadmap; }
+
+PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOptions& options) {
+  if (!impl_->decomposition.in_frame(query.start) || !impl_->decomposition.in_frame(query.goal)) {
+    // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
+    const Stopwatch building;
+    impl_ = std::make_unique<Impl>(*impl_->cspace, impl_->options,
+                                   query_points(impl_->cspace->world(), {query.start, query.goal}));
+    impl_->build_seconds = building.seconds();
+  }
+  Impl& g = *impl_;
+  const Stopwatch querying;
+  PlanReport<ExactPoint> report;
+  g.record_facts(report.facts);
+  std::size_t expanded = 0, generated = 0;
+  double search_seconds = 0;
+  if (options.record) {
+    report.graph = g.graph();
+    report.decomposition = g.cells();
+  }
+  const auto finish = [&]() {
+    report.facts.set("search.expanded", expanded);
+    report.facts.set("search.generated", generated);
+    report.facts.set("search.seconds", search_seconds);
+    report.facts.set("query_seconds", querying.seconds());
+    return report;
+  };
+
+  const std::vector<std::size_t> from = g.decomposition.cells_at(query.start), to = g.decomposition.cells_at(query.goal);
+  if (from.empty() || to.empty()) {
+    report.why_not = g.cspace->query_not_free(query).value_or("the start or goal is in no trapezoid");
+    return finish();
+  }
+
+  std::vector<ExactPoint> zigzag, funnel;
+  std::size_t channel_cells = 1;
+  if (share_a_cell(from, to)) {  // one convex cell holds both: the segment
+    zigzag = funnel = {query.start, query.goal};
+  } else {
+    for (std::size_t c : from) add_edge(g.roadmap, g.start_slot, c);
+    for (std::size_t c : to) add_edge(g.roadmap, c, g.goal_slot);
+    SearchOptions searching = g.options.search;
+    searching.record_expanded = options.record;
+    const auto result = shortest_path(g.roadmap, g.start_slot, g.goal_slot, searching, g.workspace);
+    boost::clear_vertex(g.start_slot, g.roadmap);
+    boost::clear_vertex(g.goal_slot, g.roadmap);
+    for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(g.roadmap[v].exact);
+    expanded = result.expanded;
+    generated = result.generated;
+    search_seconds = result.seconds;
+    if (!result.found) {  // the cells of a free component are joined by walls: another component
+      report.why_not = "start and goal lie in different components of the free space";
+      return finish();
+    }
+    zigzag.push_back(query.start);
+    for (std::size_t i = 1; i + 1 < result.path.size(); ++i) zigzag.push_back(g.roadmap[result.path[i]].exact);
+    zigzag.push_back(query.goal);
+    funnel = funnel_path(query.start, g.portals_along(result.path), query.goal);
+    channel_cells = (result.path.size() - 1) / 2;
+  }
+  report.path = without_straight_corners(g.options.path == ChannelPath::funnel ? funnel : zigzag);
+  if (report.path.size() == 1) report.path.push_back(query.goal);  // start == goal: still a segment
+  // Every reported path is checked exactly; a failure is a bug of the decomposition or the
+  // funnel, never a tolerance call.
+  const PathCheck check = check_path(*g.cspace, report.path);
+  if (!check.valid) throw std::logic_error("trapezoid planner produced an invalid path: " + check.reason);
+  report.found = true;
+  report.length = euclidean_length(report.path);
+  report.certificate = {true, "exact path check (geometry/path_check)"};
+  report.facts.set("search.path_edges", report.path.size() - 1);
+  report.facts.set("trapezoid.channel_cells", channel_cells);
+  report.facts.set("trapezoid.zigzag_length", euclidean_length(zigzag));
+  report.facts.set("trapezoid.funnel_length", euclidean_length(funnel));
+  return finish();
+}
+
+PlannerEntry<TranslatingRobot> trapezoid_planner_entry() {
+  OptionTable<TrapezoidOptions> table;
+  table.add("path", &TrapezoidOptions::path,
+            "funnel: the shortest path within the channel of trapezoids found; zigzag: through centroids and wall midpoints",
+            std::vector<std::pair<std::string, ChannelPath>>{{"funnel", ChannelPath::funnel}, {"zigzag", ChannelPath::zigzag}});
+  add_search_options(table, &TrapezoidOptions::search);
+  return make_planner_entry<TranslatingRobot, TrapezoidOptions>(
+      "trapezoid", "vertical (trapezoidal) decomposition of the free space: centroids and wall midpoints as a roadmap",
+      std::move(table), [](const CSpace& cspace, const TrapezoidOptions& o) {
+        return std::make_unique<TrapezoidPlanner>(cspace, o);
+      });
+}
+
+}  // namespace polyplan

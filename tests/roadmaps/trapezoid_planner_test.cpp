@@ -1,0 +1,172 @@
+// The trapezoid roadmap's paths: hand-computed lengths of both post-processings, the channel's
+// shortest path against the exact visibility-graph optimum on random worlds, and the answers
+// around pinch points, blocked ends and worlds without bounds.
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/roadmaps/trapezoid_planner.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
+#include "world_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <sstream>
+
+using namespace polyplan;
+using polyplan::test::pt;
+using polyplan::test::world_from;
+
+namespace {
+
+Query between(const ExactPoint& start, const ExactPoint& goal) { return Query{start, goal, "q"}; }
+
+const char* kSquareInABox = R"({"bounds": [0, 0, 10, 10], "obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]]})";
+
+TEST(TrapezoidPlanner, FunnelPathAroundASquareIsTheShortest) {
+  const CSpace c(world_from(kSquareInABox));
+  TrapezoidPlanner planner(c);
+  const auto report = planner.plan(between(pt("1", "5"), pt("9", "5")));
+  ASSERT_TRUE(report.found) << report.why_not;
+  // Around a corner pair of the square: 2 sqrt(10) + 2, as the visibility graph finds.
+  EXPECT_NEAR(report.length, 2 * std::sqrt(10.0) + 2, 1e-12);
+  ASSERT_EQ(report.path.size(), 4u);
+  EXPECT_EQ(report.path[1].x, 4);
+  EXPECT_EQ(report.path[2].x, 6);
+  EXPECT_EQ(report.path[1].y, report.path[2].y);  // both below or both above
+  EXPECT_EQ(report.facts.count("trapezoid.cells"), 4);
+  EXPECT_EQ(report.facts.count("trapezoid.walls"), 4);
+  EXPECT_EQ(report.facts.count("roadmap.vertices"), 8);
+  EXPECT_EQ(report.facts.count("roadmap.edges"), 8);
+  EXPECT_EQ(report.facts.count("trapezoid.channel_cells"), 3);
+  EXPECT_EQ(report.facts.count("sweep.events"), 8);
+  EXPECT_EQ(report.facts.count("sweep.most_crossed"), 4);
+  // The zig-zag: 1 + sqrt(13) + 1 + 1 + sqrt(13) + 1 through (2, 5), a wall midpoint, (5, 2 or 8), ...
+  EXPECT_NEAR(report.facts.number("trapezoid.zigzag_length"), 4 + 2 * std::sqrt(13.0), 1e-12);
+  EXPECT_NEAR(report.facts.number("trapezoid.funnel_length"), report.length, 1e-12);
+  EXPECT_TRUE(report.certificate.certified);
+}
+
+TEST(TrapezoidPlanner, ZigzagPathRunsThroughCentroidsAndWallMidpoints) {
+  const CSpace c(world_from(kSquareInABox));
+  TrapezoidPlanner planner(c, {ChannelPath::zigzag});
+  const auto report = planner.plan(between(pt("1", "5"), pt("9", "5")));
+  ASSERT_TRUE(report.found);
+  EXPECT_NEAR(report.length, 4 + 2 * std::sqrt(13.0), 1e-12);
+  // Below or above the square; the centroid (5, 2) or (5, 8) lies on the straight run between the
+  // two wall midpoints, so the path does not list it.
+  const std::string y = report.path[2].y < 5 ? "2" : "8";
+  EXPECT_EQ(report.path, (std::vector<ExactPoint>{pt("1", "5"), pt("2", "5"), pt("4", y), pt("6", y), pt("8", "5"), pt("9", "5")}));
+  EXPECT_TRUE(check_path(c, report.path).valid);
+}
+
+TEST(TrapezoidPlanner, StartAndGoalInOneTrapezoidAreJoinedDirectly) {
+  const CSpace c(world_from(kSquareInABox));
+  TrapezoidPlanner planner(c, {ChannelPath::zigzag});
+  const auto report = planner.plan(between(pt("0.5", "1"), pt("3.5", "9")));
+  ASSERT_TRUE(report.found);
+  EXPECT_EQ(report.path, (std::vector<ExactPoint>{pt("0.5", "1"), pt("3.5", "9")}));
+  EXPECT_EQ(report.facts.count("search.expanded"), 0);
+}
+
+// Two obstacles touching at (5, 5) close a band across the box.
+const char* kPinchedBand = R"({"bounds": [0, 0, 10, 10], "obstacles": [
+    [[0, 4], [4, 4], [5, 5], [4, 6], [0, 6]], [[10, 4], [10, 6], [6, 6], [5, 5], [6, 4]]]})";
+
+TEST(TrapezoidPlanner, APinchPointIsNoPassage) {
+  const CSpace c(world_from(kPinchedBand));
+  TrapezoidPlanner planner(c);
+  const auto report = planner.plan(between(pt("5", "1"), pt("5", "9")));
+  EXPECT_FALSE(report.found);
+  EXPECT_EQ(report.why_not, "start and goal lie in different components of the free space");
+  EXPECT_TRUE(report.path.empty());
+}
+
+TEST(TrapezoidPlanner, FromAPinchPointIntoEitherWedge) {
+  const CSpace c(world_from(kPinchedBand));
+  TrapezoidPlanner planner(c);
+  for (const char* goal_y : {"9", "1"}) {
+    const auto report = planner.plan(between(pt("5", "5"), pt("2", goal_y)));
+    ASSERT_TRUE(report.found) << report.why_not;
+    EXPECT_TRUE(check_path(c, report.path).valid);
+  }
+}
+
+TEST(TrapezoidPlanner, ABlockedStartIsAnAnswerNamingTheObstacle) {
+  const CSpace c(world_from(kSquareInABox));
+  TrapezoidPlanner planner(c);
+  const auto report = planner.plan(between(pt("5", "5"), pt("9", "5")));
+  EXPECT_FALSE(report.found);
+  EXPECT_NE(report.why_not.find("obstacles[0]"), std::string::npos) << report.why_not;
+}
+
+TEST(TrapezoidPlanner, WithoutBoundsAQueryBeyondTheFrameIsFramedAnew) {
+  const CSpace c(world_from(R"({"obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]], "start": [1, 5], "goal": [9, 5]})"));
+  TrapezoidPlanner planner(c);
+  VisibilityGraph optimum(c);
+  const auto near = planner.plan(between(pt("1", "5"), pt("9", "5")));
+  ASSERT_TRUE(near.found) << near.why_not;
+  EXPECT_NEAR(near.length, 2 * std::sqrt(10.0) + 2, 1e-12);
+  const Query far = between(pt("-1000", "5.5"), pt("2000", "4.5"));
+  const auto report = planner.plan(far);
+  ASSERT_TRUE(report.found) << report.why_not;
+  EXPECT_TRUE(check_path(c, report.path).valid);
+  const auto best = optimum.plan(far);
+  ASSERT_TRUE(best.found) << best.why_not;
+  // The channel the search found passes the square on one side; the optimum may take the other.
+  EXPECT_GE(report.length, best.length - 1e-9);
+  EXPECT_LT(report.length, best.length + 0.01);
+}
+
+// A world of random triangles with decimal corners (one to three decimals) in a 10 x 10 box.
+std::string random_world(std::mt19937& rng) {
+  std::uniform_int_distribution<int> coordinate(0, 1000);
+  std::ostringstream json;
+  json << R"({"bounds": [0, 0, 10, 10], "obstacles": [)";
+  for (int t = 0; t < 8; ++t) {
+    const int cx = coordinate(rng), cy = coordinate(rng);
+    json << (t ? ", " : "") << "[";
+    for (int k = 0; k < 3; ++k) {
+      std::uniform_int_distribution<int> offset(-150, 150);
+      const int x = std::clamp(cx + offset(rng), 0, 1000), y = std::clamp(cy + offset(rng), 0, 1000);
+      json << (k ? ", " : "") << "[" << x / 100.0 << ", " << y / 100.0 << "]";
+    }
+    json << "]";
+  }
+  json << "]}";
+  return json.str();
+}
+
+TEST(TrapezoidPlanner, OnRandomWorldsTheChannelPathIsValidAndBetweenTheOptimumAndTheZigzag) {
+  std::mt19937 rng(20261201);
+  std::uniform_int_distribution<int> coordinate(0, 1000);
+  int answered = 0, found = 0;
+  for (int w = 0; w < 40; ++w) {
+    std::optional<World> world;
+    try {
+      world = world_from(random_world(rng));
+    } catch (const InputError&) {
+      continue;  // a degenerate triangle
+    }
+    const CSpace c(*world);
+    TrapezoidPlanner planner(c);
+    VisibilityGraph optimum(c);
+    for (int q = 0; q < 6; ++q) {
+      const Query query = between({Rational(coordinate(rng)) / 100, Rational(coordinate(rng)) / 100},
+                                  {Rational(coordinate(rng)) / 100, Rational(coordinate(rng)) / 100});
+      if (c.query_not_free(query)) continue;
+      ++answered;
+      const auto report = planner.plan(query);
+      const auto best = optimum.plan(query);
+      ASSERT_EQ(report.found, best.found) << report.why_not;
+      if (!report.found) continue;
+      ++found;
+      EXPECT_TRUE(check_path(c, report.path).valid);
+      EXPECT_GE(report.length, best.length - 1e-9);
+      EXPECT_LE(report.length, report.facts.number("trapezoid.zigzag_length") + 1e-9);
+    }
+  }
+  EXPECT_GT(answered, 100);
+  EXPECT_GT(found, 80);
+}
+
+}  // namespace
