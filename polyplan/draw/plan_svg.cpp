@@ -3,27 +3,71 @@
 #include <polyplan/draw/theme.hpp>
 #include <polyplan/draw/world_svg.hpp>
 
+#include <algorithm>
+#include <string>
+
 namespace polyplan {
 namespace {
 
 svg::Point2 point(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
 
-// Maximal horizontal runs of cells in the given state, as boxes: far fewer than columns · rows squares.
-std::vector<svg::Box2> cell_runs(const CellGrid& cells, CellGrid::State state) {
+// Maximal horizontal runs of cells that `in_run(column, row)` accepts, as boxes: far fewer than
+// columns · rows squares.
+template <class InRun>
+std::vector<svg::Box2> cell_runs(const CellGrid& cells, InRun in_run) {
   std::vector<svg::Box2> runs;
   for (std::size_t row = 0; row < cells.rows; ++row)
     for (std::size_t column = 0; column < cells.columns;) {
-      if (cells.state(column, row) != state) {
+      if (!in_run(column, row)) {
         ++column;
         continue;
       }
       const std::size_t first = column;
-      while (column < cells.columns && cells.state(column, row) == state) ++column;
+      while (column < cells.columns && in_run(column, row)) ++column;
       const double y = cells.y0 + static_cast<double>(row) * cells.cell_height;
       runs.push_back({cells.x0 + static_cast<double>(first) * cells.cell_width, y,
                       cells.x0 + static_cast<double>(column) * cells.cell_width, y + cells.cell_height});
     }
   return runs;
+}
+
+std::vector<svg::Box2> cell_runs(const CellGrid& cells, CellGrid::State state) {
+  return cell_runs(cells, [&](std::size_t column, std::size_t row) { return cells.state(column, row) == state; });
+}
+
+// The free and ridge cells coloured by their value in theme::heat's steps, the range spread over
+// the values of those cells; one run of boxes per step.
+void draw_heat(svg::Drawing& drawing, const CellGrid& cells) {
+  const auto valued = [&](std::size_t i) { return cells.states[i] == CellGrid::free || cells.states[i] == CellGrid::ridge; };
+  float low = 0, high = 0;
+  bool any = false;
+  for (std::size_t i = 0; i < cells.values.size(); ++i)
+    if (valued(i)) {
+      low = any ? std::min(low, cells.values[i]) : cells.values[i];
+      high = any ? std::max(high, cells.values[i]) : cells.values[i];
+      any = true;
+    }
+  if (!any) return;
+  const auto step_of = [&](std::size_t i) {
+    if (high <= low) return std::size_t{0};
+    const auto step = static_cast<std::size_t>((cells.values[i] - low) / (high - low) * static_cast<float>(theme::heat_steps));
+    return std::min(step, theme::heat_steps - 1);
+  };
+  for (std::size_t step = 0; step < theme::heat_steps; ++step) {
+    const auto runs = cell_runs(cells, [&](std::size_t column, std::size_t row) {
+      const std::size_t i = column + row * cells.columns;
+      return valued(i) && step_of(i) == step;
+    });
+    drawing.boxes(runs, svg::filled(theme::heat[step], 1.0, "none", 0));
+  }
+  const auto number = [](float v) {
+    std::string text = std::to_string(v);
+    text.erase(text.find_last_not_of('0') + 1);
+    if (text.back() == '.') text.pop_back();
+    return text;
+  };
+  drawing.legend(cells.value_name + ": " + number(low), svg::filled(theme::heat[0], 1.0, "none", 0));
+  drawing.legend(cells.value_name + ": " + number(high), svg::filled(theme::heat[theme::heat_steps - 1], 1.0, "none", 0));
 }
 
 // Cell centres are drawn only where a reader can still tell them apart.
@@ -53,12 +97,23 @@ void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph) {
 }
 
 void draw_cells(svg::Drawing& drawing, const CellGrid& cells) {
-  const svg::Style free_style = svg::filled(theme::free_tints[0].fill, 1.0, "none", 0);
-  drawing.boxes(cell_runs(cells, CellGrid::free), free_style);
-  drawing.legend("free cells", free_style);
+  if (cells.values.size() != cells.states.size()) {  // no values (or not one per cell): plain free cells
+    const svg::Style free_style = svg::filled(theme::free_tints[0].fill, 1.0, "none", 0);
+    drawing.boxes(cell_runs(cells, CellGrid::free), free_style);
+    drawing.legend("free cells", free_style);
+  } else {
+    draw_heat(drawing, cells);
+  }
   const svg::Style blocked_style = svg::filled(theme::blocked_cell_fill, 1.0, theme::blocked_cell_edge, 0.4);
   drawing.boxes(cell_runs(cells, CellGrid::blocked), blocked_style);
   drawing.legend("blocked cells", blocked_style);
+  const auto ridge = cell_runs(cells, CellGrid::ridge);
+  if (!ridge.empty()) {
+    const svg::Style ridge_style = svg::filled(theme::ridge_cell, 1.0, "none", 0);
+    drawing.boxes(ridge, ridge_style);
+    drawing.legend("ridge cells (" + std::to_string(std::count(cells.states.begin(), cells.states.end(), CellGrid::ridge)) + ")",
+                   ridge_style);
+  }
 
   if (cells.columns > kMostCellsPerSideWithCentres || cells.rows > kMostCellsPerSideWithCentres) return;
   std::vector<svg::Point2> centres;

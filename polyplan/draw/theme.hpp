@@ -33,6 +33,13 @@ inline constexpr const char* not_evaluated_hatch = "#c8c8c8";
 // The walls of a decomposition (dashed), between its pale cells.
 inline constexpr const char* wall_line = "#5b7f95";
 
+// A value per cell (a distance field) as a heat map, low to high in viridis's steps (dark purple
+// next to the obstacles, yellow far from them), and the ridge cells (a GVD) near-black over it.
+inline constexpr const char* heat[] = {"#440154", "#46327e", "#365c8d", "#277f8e",
+                                       "#1fa187", "#4ac16d", "#a0da39", "#fde725"};
+inline constexpr std::size_t heat_steps = sizeof heat / sizeof heat[0];
+inline constexpr const char* ridge_cell = "#111111";
+
 // Queries: starts green, goals red; a robot at its start in translucent green.
 inline constexpr const char* start = "#2ca02c";
 inline constexpr const char* goal = "#d62728";

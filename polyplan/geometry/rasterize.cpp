@@ -91,6 +91,9 @@ ExactPoint Raster::cell_center(std::size_t x, std::size_t y) const {
           bounds.ymin + Rational(mpz_class(2 * y + 1)) * (bounds.ymax - bounds.ymin) / twice_n};
 }
 
+Rational Raster::cell_width() const { return (bounds.xmax - bounds.xmin) / Rational(mpz_class(cells_per_axis)); }
+Rational Raster::cell_height() const { return (bounds.ymax - bounds.ymin) / Rational(mpz_class(cells_per_axis)); }
+
 std::size_t Raster::blocked_count() const {
   return static_cast<std::size_t>(std::count(blocked.begin(), blocked.end(), std::uint8_t{1}));
 }
@@ -100,7 +103,8 @@ Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
   require_rasterizable(world, cells_per_axis);
 
   const long n = static_cast<long>(cells_per_axis);
-  Raster raster{*world.bounds, cells_per_axis, std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0)};
+  Raster raster{*world.bounds, cells_per_axis, std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0),
+                std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0)};
   const GridFrame frame(raster.bounds, cells_per_axis);
 
   // The bounds are walls: a cell is blocked unless its square lies in the closed box where the
@@ -115,7 +119,7 @@ Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
   }
   for (long j = 0; j < n; ++j)
     for (long i = 0; i < n; ++i)
-      if (!column_inside[i] || !row_inside[j]) raster.blocked[i + j * n] = 1;
+      if (!column_inside[i] || !row_inside[j]) raster.blocked[i + j * n] = raster.walls[i + j * n] = 1;
 
   // (a) Cells an edge of a C-obstacle passes through.
   struct GridBox {
@@ -163,6 +167,54 @@ Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
 Raster rasterize(const World& world, std::size_t cells_per_axis) {
   require_rasterizable(world, cells_per_axis);  // before the costly C-space
   return rasterize(CSpace(world), cells_per_axis);
+}
+
+// An exact search in square rings of cells around p's cell (clamped into the grid), rather than a
+// KD-tree in doubles: the distances are compared exactly, so ties — frequent, since starts are
+// often round numbers halfway between centres — are broken by the documented rule and not by
+// rounding, and the grid's arithmetic gives the neighbourhood with no index to build. A cell in
+// ring r has a centre at least (r - 1/2) cell sides from p along one axis, which stops the search.
+std::optional<std::pair<std::size_t, std::size_t>> nearest_free_cell(const Raster& r, const ExactPoint& p) {
+  const long n = static_cast<long>(r.cells_per_axis);
+  const Rational w = r.cell_width(), h = r.cell_height();
+  const Rational u = (p.x - r.bounds.xmin) / w, v = (p.y - r.bounds.ymin) / h;  // grid coordinates
+  auto cell_of = [n](const Rational& t) -> long {
+    if (t < 0) return 0;
+    if (t >= n) return n - 1;
+    return floor_of(t);
+  };
+  const long i0 = cell_of(u), j0 = cell_of(v);
+  const Rational shorter_side_squared = std::min(w, h) * std::min(w, h);
+  const Rational half(1, 2);
+
+  std::optional<std::pair<long, long>> best;
+  Rational best_distance2;
+  auto consider = [&](long i, long j) {
+    if (i < 0 || j < 0 || i >= n || j >= n || r.is_blocked(i, j)) return;
+    const Rational du = (i + half - u) * w, dv = (j + half - v) * h;
+    const Rational d2 = du * du + dv * dv;
+    const bool lower_index = best && (j < best->second || (j == best->second && i < best->first));
+    if (!best || d2 < best_distance2 || (d2 == best_distance2 && lower_index)) {
+      best = {i, j};
+      best_distance2 = d2;
+    }
+  };
+  for (long ring = 0; ring < n; ++ring) {
+    if (best && ring >= 1) {
+      const Rational reach = ring - half;
+      if (reach * reach * shorter_side_squared > best_distance2) break;
+    }
+    for (long j = j0 - ring; j <= j0 + ring; ++j) {
+      if (j == j0 - ring || j == j0 + ring) {
+        for (long i = i0 - ring; i <= i0 + ring; ++i) consider(i, j);
+      } else {
+        consider(i0 - ring, j);
+        consider(i0 + ring, j);
+      }
+    }
+  }
+  if (!best) return std::nullopt;
+  return std::pair<std::size_t, std::size_t>(best->first, best->second);
 }
 
 }  // namespace polyplan

@@ -18,6 +18,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace polyplan {
@@ -26,8 +28,14 @@ struct Raster {
   Bounds bounds;               // the world's bounds, exact
   std::size_t cells_per_axis;  // n: the bounds box split into n × n equal cells (non-square if the box is)
   std::vector<std::uint8_t> blocked;  // n·n, 1 = blocked; index x + y·n, x from xmin, y from ymin (y up)
+  // n·n, 1 = blocked because the robot would leave the bounds there (the square leaves the box
+  // the reference point must stay in): the walls, as opposed to the C-obstacles. All 0 for a
+  // point robot, whose box is the bounds.
+  std::vector<std::uint8_t> walls;
 
   ExactPoint cell_center(std::size_t x, std::size_t y) const;  // exact rationals
+  Rational cell_width() const;                                 // (xmax - xmin) / n, exact
+  Rational cell_height() const;                                // (ymax - ymin) / n, exact
   bool is_blocked(std::size_t x, std::size_t y) const { return blocked[x + y * cells_per_axis] != 0; }
   std::size_t blocked_count() const;
 };
@@ -40,5 +48,10 @@ inline constexpr std::size_t max_cells_per_axis = limits::raster_cells_per_axis;
 // world's bounds and C-obstacles); the World overload builds one.
 Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis);
 Raster rasterize(const World& world, std::size_t cells_per_axis);
+
+// The free cell (x, y) whose centre is nearest to p (exact Euclidean distance; among equally near
+// cells the one of lowest index x + y·n); nullopt when every cell is blocked. Where the grid
+// planners snap a start or a goal that need not be a cell centre.
+std::optional<std::pair<std::size_t, std::size_t>> nearest_free_cell(const Raster& raster, const ExactPoint& p);
 
 }  // namespace polyplan

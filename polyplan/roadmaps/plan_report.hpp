@@ -71,13 +71,20 @@ struct PlanGraph {
 };
 
 // Cells over two coordinates of the configuration (x and y, or θ1 and θ2) and what the planner
-// knows of them: a raster's occupancy, the part of an arm's C-space grid a lazy search evaluated.
+// knows of them: a raster's occupancy, the part of an arm's C-space grid a lazy search evaluated,
+// a distance field over the free cells and its ridge (the grid GVD).
 struct CellGrid {
-  enum State : std::uint8_t { not_evaluated = 0, free = 1, blocked = 2 };
+  // ridge: a free cell on a line the planner travels along (the GVD of gvd-grid).
+  enum State : std::uint8_t { not_evaluated = 0, free = 1, blocked = 2, ridge = 3 };
   std::size_t columns = 0, rows = 0;
   double x0 = 0, y0 = 0;  // the lower-left corner of cell (0, 0)
   double cell_width = 1, cell_height = 1;
   std::vector<std::uint8_t> states;  // columns · rows States, index column + row · columns
+  // Optional: a value per cell (as many as states, same index), drawn as a heat map over the free
+  // and ridge cells, e.g. the distance to the nearest obstacle; empty when the planner has none. `value_name`
+  // says what it is, for the legend.
+  std::vector<float> values;
+  std::string value_name;
   State state(std::size_t column, std::size_t row) const { return static_cast<State>(states[column + row * columns]); }
 };
 

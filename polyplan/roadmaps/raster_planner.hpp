@@ -47,8 +47,7 @@ class RasterPlanner final : public Planner<TranslatingRobot> {
   // (found = false) with the reason.
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
 
-  // The free cell whose centre is nearest to p (exact Euclidean distance; among equally near
-  // cells the one of lowest index x + y·n); nullopt when every cell is blocked.
+  // Where a start or goal snaps: polyplan::nearest_free_cell (geometry/rasterize.hpp) on the raster.
   std::optional<std::pair<std::size_t, std::size_t>> nearest_free_cell(const ExactPoint& p) const;
 
   const Raster& raster() const;

@@ -1,5 +1,6 @@
 #include <polyplan/roadmaps/registry.hpp>
 
+#include <polyplan/roadmaps/gvd_grid_planner.hpp>
 #include <polyplan/roadmaps/raster_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
@@ -14,6 +15,7 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       visibility_planner_entry(VisibilityKind::full),
       raster_planner_entry(),
       trapezoid_planner_entry(),
+      gvd_grid_planner_entry(),
   };
   return registry;
 }
