@@ -45,6 +45,8 @@ struct TrapezoidPlanner::Impl {
   }
 
   std::size_t cell_count() const { return decomposition.cells().size(); }
+  // A query slot at p: its edges' lengths and the search's heuristic read the position.
+  void place(RoadmapVertexId slot, const ExactPoint& p) { roadmap[slot] = RoadmapVertex{p, to_double(p.x), to_double(p.y)}; }
   bool is_wall_node(RoadmapVertexId v) const { return v >= cell_count() && v < start_slot; }
   const TrapezoidWall& wall_of(RoadmapVertexId v) const { return decomposition.walls()[v - cell_count()]; }
 
@@ -148,6 +150,8 @@ PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOpt
   if (share_a_cell(from, to)) {  // one convex cell holds both: the segment
     zigzag = funnel = {query.start, query.goal};
   } else {
+    g.place(g.start_slot, query.start);
+    g.place(g.goal_slot, query.goal);
     for (std::size_t c : from) add_edge(g.roadmap, g.start_slot, c);
     for (std::size_t c : to) add_edge(g.roadmap, c, g.goal_slot);
     SearchOptions searching = g.options.search;

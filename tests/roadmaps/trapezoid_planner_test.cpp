@@ -149,6 +149,7 @@ TEST(TrapezoidPlanner, OnRandomWorldsTheChannelPathIsValidAndBetweenTheOptimumAn
     }
     const CSpace c(*world);
     TrapezoidPlanner planner(c);
+    TrapezoidPlanner uniform_cost(c, {ChannelPath::funnel, {Search::dijkstra}});
     VisibilityGraph optimum(c);
     for (int q = 0; q < 6; ++q) {
       const Query query = between({Rational(coordinate(rng)) / 100, Rational(coordinate(rng)) / 100},
@@ -163,10 +164,77 @@ TEST(TrapezoidPlanner, OnRandomWorldsTheChannelPathIsValidAndBetweenTheOptimumAn
       EXPECT_TRUE(check_path(c, report.path).valid);
       EXPECT_GE(report.length, best.length - 1e-9);
       EXPECT_LE(report.length, report.facts.number("trapezoid.zigzag_length") + 1e-9);
+      // A* finds the shortest zig-zag on the roadmap, as Dijkstra does (an admissible heuristic
+      // and true edge lengths from the query's own start and goal).
+      EXPECT_NEAR(report.facts.number("trapezoid.zigzag_length"),
+                  uniform_cost.plan(query).facts.number("trapezoid.zigzag_length"), 1e-9);
     }
   }
   EXPECT_GT(answered, 100);
   EXPECT_GT(found, 80);
+}
+
+// The shortest zig-zag on the roadmap by a plain O(V^2) Dijkstra over the planner's own roadmap,
+// start and goal joined to the centroids of the cells around them.
+double shortest_zigzag(const TrapezoidPlanner& planner, const ExactPoint& start, const ExactPoint& goal) {
+  const Roadmap& g = planner.roadmap();
+  const std::size_t corners = boost::num_vertices(g) - 2, source = corners, target = corners + 1;
+  std::vector<std::vector<std::pair<std::size_t, double>>> next(corners + 2);
+  auto distance = [](const ExactPoint& a, const ExactPoint& b) {
+    return std::hypot(to_double(a.x) - to_double(b.x), to_double(a.y) - to_double(b.y));
+  };
+  for (auto [e, end] = boost::edges(g); e != end; ++e) {
+    const std::size_t u = boost::source(*e, g), v = boost::target(*e, g);
+    if (u >= corners || v >= corners) continue;
+    next[u].push_back({v, distance(g[u].exact, g[v].exact)});
+    next[v].push_back({u, distance(g[u].exact, g[v].exact)});
+  }
+  for (std::size_t c : planner.decomposition().cells_at(start)) next[source].push_back({c, distance(start, g[c].exact)});
+  for (std::size_t c : planner.decomposition().cells_at(goal)) next[c].push_back({target, distance(g[c].exact, goal)});
+  std::vector<double> best(corners + 2, INFINITY);
+  std::vector<bool> done(corners + 2, false);
+  best[source] = 0;
+  for (;;) {
+    std::size_t u = corners + 2;
+    for (std::size_t v = 0; v < corners + 2; ++v)
+      if (!done[v] && best[v] < INFINITY && (u == corners + 2 || best[v] < best[u])) u = v;
+    if (u == corners + 2) return INFINITY;
+    if (u == target) return best[u];
+    done[u] = true;
+    for (const auto& [v, w] : next[u]) best[v] = std::min(best[v], best[u] + w);
+  }
+}
+
+TEST(TrapezoidPlanner, TheZigzagIsTheShortestPathOnTheRoadmapFromStartsOnWallsAndCorners) {
+  // Starts and goals on walls and at wall ends touch two or more cells: the search must weigh
+  // the joins to each from the query's own points (they once were measured from the origin).
+  std::mt19937 rng(7);
+  int compared = 0;
+  for (int w = 0; w < 20; ++w) {
+    std::optional<World> world;
+    try {
+      world = world_from(random_world(rng));
+    } catch (const InputError&) {
+      continue;
+    }
+    const CSpace c(*world);
+    TrapezoidPlanner planner(c, {ChannelPath::zigzag});
+    const auto& walls = planner.decomposition().walls();
+    if (walls.size() < 2) continue;
+    std::uniform_int_distribution<std::size_t> pick(0, walls.size() - 1);
+    for (int q = 0; q < 10; ++q) {
+      const TrapezoidWall &a = walls[pick(rng)], &b = walls[pick(rng)];
+      const ExactPoint start{a.lower.x, (a.lower.y + 3 * a.upper.y) / 4}, goal = q % 2 ? b.lower : b.upper;
+      if (c.query_not_free(between(start, goal))) continue;
+      const auto report = planner.plan(between(start, goal));
+      const double expected = shortest_zigzag(planner, start, goal);
+      ASSERT_EQ(report.found, expected < INFINITY) << report.why_not;
+      if (!report.found || report.facts.count("search.expanded") == 0) continue;
+      ++compared;
+      EXPECT_NEAR(report.facts.number("trapezoid.zigzag_length"), expected, 1e-9);
+    }
+  }
+  EXPECT_GT(compared, 60);
 }
 
 }  // namespace
