@@ -1,11 +1,12 @@
 // The classical roadmaps side by side on the shipped worlds: the visibility graph (shortest
 // paths, grazing the obstacles), the trapezoidal decomposition with the course's zig-zag and with
 // the channel's shortest path, the Voronoi maximum-clearance roadmap and the brushfire GVD on a
-// grid. For each world's first query: path length, ratio to the optimum, clearance (where the
-// planner reports it), build and query time, roadmap nodes and edges; and one picture per world
-// and roadmap. A roadmap that is not registered (yet) is listed as such.
+// grid. For each world's first query: path length, ratio to the optimum, clearance (the path's
+// smallest distance to the C-obstacles and walls, geometry/clearance.hpp), build and query time,
+// roadmap nodes and edges; and one picture per world and roadmap. A roadmap that is not registered (yet) is listed as such.
 // Usage: roadmap_comparison [WORLD.json ...] [--out DIR]   (default: every world of data/worlds)
 #include <polyplan/draw/plan_svg.hpp>
+#include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
@@ -85,8 +86,8 @@ void compare_on(const std::string& world_file, const fs::path& out) {
       std::printf("%-17s %-5s %s\n", contender.label.c_str(), "no", report.why_not.c_str());
       continue;
     }
-    std::printf("%-17s %-5s %9.3f %7.4f %9s %9s %9s %8lld %8lld\n", contender.label.c_str(), "yes", report.length,
-                optimum ? report.length / *optimum : 0.0, number_or_dash(report.facts, "clearance", "%.3f").c_str(),
+    std::printf("%-17s %-5s %9.3f %7.4f %9.3f %9s %9s %8lld %8lld\n", contender.label.c_str(), "yes", report.length,
+                optimum ? report.length / *optimum : 0.0, path_clearance(cspace, report.path),
                 number_or_dash(report.facts, "roadmap.seconds", "%.4f").c_str(),
                 number_or_dash(report.facts, "query_seconds", "%.4f").c_str(),
                 static_cast<long long>(report.facts.count("roadmap.vertices")),
