@@ -6,6 +6,7 @@
 #include <CGAL/Arr_default_overlay_traits.h>
 #include <CGAL/Arr_overlay_2.h>
 #include <CGAL/Arr_vertical_decomposition_2.h>
+#include <CGAL/Arr_walk_along_line_point_location.h>
 
 #include <boost/function_output_iterator.hpp>
 
@@ -23,7 +24,10 @@ using detail::to_exact;
 using detail::to_point;
 using PolygonSet = CSpace::Impl::PolygonSet;
 using Arrangement = CSpace::Impl::Arrangement;
-using PointLocation = CSpace::Impl::PointLocation;
+// A walk down a vertical line from above, with no structure to build: it crosses only the cells
+// stacked over the point (a few dozen on the MovingAI maps), while a trapezoidal-map search
+// structure would cost as much to build as the decomposition itself.
+using PointLocation = CGAL::Arr_walk_along_line_point_location<Arrangement>;
 
 detail::Polygon box_polygon(const Bounds& b) {
   detail::Polygon box;
@@ -137,26 +141,32 @@ struct TrapezoidalDecomposition::Impl {
     using Vertex = Arrangement::Vertex_const_handle;
     using Halfedge = Arrangement::Halfedge_const_handle;
     std::vector<Arrangement::X_monotone_curve_2> segments;
-    auto add_if_free = [&](const Point& lower, const Point& upper) {
-      // The open wall lies in one face (the first feature it meets is its end), so its midpoint
-      // tells whether that face is free.
-      const Point middle = CGAL::midpoint(lower, upper);
-      if (cspace.locate(to_exact(middle)).kind == Location::Kind::free)
-        segments.emplace_back(detail::Segment(lower, upper));
+    // A wall lies in one face: the first feature it meets is its end.
+    auto add_if = [&](bool free, const Point& lower, const Point& upper) {
+      if (free) segments.emplace_back(detail::Segment(lower, upper));
     };
+    // Between two vertices the face is found by locating the wall's midpoint.
+    auto free_between = [&](const Point& lower, const Point& upper) {
+      return cspace.locate(to_exact(CGAL::midpoint(lower, upper))).kind == Location::Kind::free;
+    };
+    // decompose hands out the halfedge of an edge that runs from right to left: its face (on its
+    // left) is the one below the edge, its twin's the one above.
     auto each_vertex = [&](const auto& entry) {
       const Vertex v = entry.first;
       if (is_straight(v)) return;
+      const Point& p = v->point();
       const auto& [below, above] = entry.second;
       if (above) {
-        if (const Vertex* w = boost::get<Vertex>(&*above)) add_if_free(v->point(), (*w)->point());
-        else if (const Halfedge* h = boost::get<Halfedge>(&*above)) add_if_free(v->point(), on_edge_at_x(*h, v->point()));
+        if (const Vertex* w = boost::get<Vertex>(&*above)) add_if(free_between(p, (*w)->point()), p, (*w)->point());
+        else if (const Halfedge* h = boost::get<Halfedge>(&*above)) add_if((*h)->face()->contained(), p, on_edge_at_x(*h, p));
       }
       if (below) {
         // A wall down to a vertex is the lower vertex's wall up, unless that one is straight
         // (and makes no walls of its own).
-        if (const Vertex* w = boost::get<Vertex>(&*below); w && is_straight(*w)) add_if_free((*w)->point(), v->point());
-        else if (const Halfedge* h = boost::get<Halfedge>(&*below)) add_if_free(on_edge_at_x(*h, v->point()), v->point());
+        if (const Vertex* w = boost::get<Vertex>(&*below); w && is_straight(*w))
+          add_if(free_between((*w)->point(), p), (*w)->point(), p);
+        else if (const Halfedge* h = boost::get<Halfedge>(&*below))
+          add_if((*h)->twin()->face()->contained(), on_edge_at_x(*h, p), p);
       }
     };
     CGAL::decompose(boundary, boost::make_function_output_iterator(each_vertex));
