@@ -12,9 +12,10 @@
 
 namespace polyplan::detail {
 
-// The bounding box of the free space's vertices and `inside`, grown on every side by its width
-// plus its height plus 1: shortest paths and the widest passages around the obstacles stay well
-// inside it.
+// The bounding box of the free space's vertices and `inside`, grown on every side by twice its
+// width plus height, plus 1: shortest paths stay inside the box, and the ring between box and frame
+// is wider than any point inside the box can be far from an obstacle, so the frame lowers no
+// maximum clearance between such points.
 inline Bounds free_space_frame(const CSpace::Impl& cspace, const std::vector<ExactPoint>& inside) {
   std::vector<ExactPoint> points = inside;
   const auto& arrangement = cspace.free_set.arrangement();
@@ -27,7 +28,7 @@ inline Bounds free_space_frame(const CSpace::Impl& cspace, const std::vector<Exa
     box.xmax = std::max(box.xmax, p.x);
     box.ymax = std::max(box.ymax, p.y);
   }
-  const Rational margin = (box.xmax - box.xmin) + (box.ymax - box.ymin) + 1;
+  const Rational margin = 2 * ((box.xmax - box.xmin) + (box.ymax - box.ymin)) + 1;
   return {box.xmin - margin, box.ymin - margin, box.xmax + margin, box.ymax + margin};
 }
 

@@ -4,6 +4,7 @@
 #include <polyplan/roadmaps/raster_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/roadmaps/voronoi_planner.hpp>
 
 namespace polyplan {
 
@@ -15,6 +16,7 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       visibility_planner_entry(VisibilityKind::full),
       raster_planner_entry(),
       trapezoid_planner_entry(),
+      voronoi_planner_entry(),
       gvd_grid_planner_entry(),
   };
   return registry;

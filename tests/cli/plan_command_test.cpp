@@ -104,7 +104,7 @@ TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
   struct Case {
     std::string arguments, message;
   } cases[] = {
-      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, gvd-grid)"},
+      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid)"},
       {"--roadmap teleport", "--planner: unknown planner \"teleport\""},
       {"--resolution 40", "--resolution: the planner visibility has no option resolution (its options: search weight)"},
       {"--planner raster --resolution forty", "planner raster: option resolution=forty: expected a whole number"},

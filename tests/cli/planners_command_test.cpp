@@ -17,7 +17,7 @@ TEST(Planners, ListsEveryPlannerOfBothSpacesWithOptionsAndDefaults) {
   EXPECT_EQ(spaces[1]["command"], "polyplan arm ARM.json --method NAME");
   std::vector<std::string> names;
   for (const auto& p : spaces[0]["planners"]) names.push_back(p["name"]);
-  EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster", "trapezoid", "gvd-grid"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid"}));
   const auto& grid = spaces[1]["planners"][0];
   EXPECT_EQ(grid["name"], "grid");
   EXPECT_EQ(grid["options"][0]["name"], "resolution");

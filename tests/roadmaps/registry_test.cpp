@@ -116,14 +116,14 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryPlannerOnEveryWorld,
 
 TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
   const auto& registry = planners<TranslatingRobot>();
-  for (const char* name : {"visibility", "visibility-full", "raster", "trapezoid", "gvd-grid"}) {
+  for (const char* name : {"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid"}) {
     const auto* entry = registry.find(name);
     ASSERT_NE(entry, nullptr) << name;
     EXPECT_FALSE(entry->description.empty());
     EXPECT_EQ(entry->description.find('\n'), std::string::npos) << "one line";
   }
   EXPECT_EQ(registry.find("teleport"), nullptr);
-  EXPECT_EQ(registry.names(), "visibility, visibility-full, raster, trapezoid, gvd-grid");
+  EXPECT_EQ(registry.names(), "visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid");
   const auto* raster = registry.find("raster");
   ASSERT_EQ(raster->options.size(), 4u);
   EXPECT_EQ(raster->options[0].name, "resolution");

@@ -1,0 +1,292 @@
+#include <polyplan/roadmaps/voronoi_diagram.hpp>
+
+#include <polyplan/internal/free_space_frame.hpp>
+
+#include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
+#include <CGAL/Segment_Delaunay_graph_hierarchy_2.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cmath>
+#include <unordered_map>
+
+namespace polyplan {
+namespace {
+
+// Constructions in double, predicates exact on those doubles (CGAL's filtered traits); the
+// traits that allow crossing sites, so that boundary edges which rounding makes cross are split
+// rather than refused.
+using CK = CGAL::Simple_cartesian<double>;
+using Gt = CGAL::Segment_Delaunay_graph_filtered_traits_2<CK, CGAL::Field_with_sqrt_tag>;
+using SDG = CGAL::Segment_Delaunay_graph_hierarchy_2<Gt>;
+using SitePoint = CK::Point_2;
+
+Vec2 operator+(Vec2 a, Vec2 b) { return {a.x + b.x, a.y + b.y}; }
+Vec2 operator-(Vec2 a, Vec2 b) { return {a.x - b.x, a.y - b.y}; }
+Vec2 operator*(double k, Vec2 a) { return {k * a.x, k * a.y}; }
+double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
+double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+bool same(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
+
+ExactPoint exact(Vec2 p) { return {Rational(p.x), Rational(p.y)}; }
+
+double distance_to_site(Vec2 p, const BoundarySite& s) { return distance_to_segment(p, s.a, s.b); }
+
+// An edge's curve. Straight: the segment between its vertices, parameter the fraction. Parabolic:
+// apex + u t + u^2 / (4 f) n, with t along the directrix, n towards the focus and f half the
+// focus's distance to the directrix; parameter u.
+struct Curve {
+  bool parabolic = false;
+  Vec2 a, b;          // straight
+  Vec2 apex, t, n;    // parabolic
+  double f = 0;
+  double t_from = 0, t_to = 1;
+  std::size_t site = 0;  // the site a straight piece's clearance is measured from
+
+  Vec2 point(double u) const {
+    if (!parabolic) return a + u * (b - a);
+    return apex + u * t + (u * u / (4 * f)) * n;
+  }
+  double parameter_of(Vec2 p) const {
+    if (!parabolic) {
+      const Vec2 d = b - a;
+      const double l2 = dot(d, d);
+      return l2 > 0 ? dot(p - a, d) / l2 : 0;
+    }
+    return dot(p - apex, t);
+  }
+};
+
+// The arc length of u -> u^2 / (4 f) from 0 to u.
+double parabola_length(double u, double f) {
+  const double k = 1 / (2 * f);
+  return u * std::sqrt(1 + k * k * u * u) / 2 + std::asinh(k * u) / (2 * k);
+}
+
+}  // namespace
+
+struct VoronoiDiagram::Impl {
+  const CSpace* cspace;
+  std::optional<Bounds> frame;
+  SDG sdg;
+  std::unordered_map<const void*, std::size_t> site_of;  // keyed by &*sdg vertex
+  std::vector<BoundarySite> sites;
+  std::vector<DiagramVertex> vertices;
+  std::vector<DiagramEdge> edges;
+  std::vector<Curve> curves;
+  std::vector<std::vector<std::size_t>> edges_of_site;  // the kept edges that bound each site's region
+
+  Impl(const CSpace& c, const std::vector<ExactPoint>& inside) : cspace(&c) {
+    const CSpace::Impl& space = detail::CSpaceAccess::impl(c);
+    CSpace::Impl::PolygonSet free_set = space.free_set;
+    if (free_set.arrangement().unbounded_face()->contained()) {
+      frame = detail::free_space_frame(space, inside);
+      detail::Polygon box;
+      const Bounds& b = *frame;
+      for (const ExactPoint& p : {ExactPoint{b.xmin, b.ymin}, ExactPoint{b.xmax, b.ymin}, ExactPoint{b.xmax, b.ymax},
+                                  ExactPoint{b.xmin, b.ymax}})
+        box.push_back(detail::to_point(p));
+      free_set.intersection(box);
+    }
+    const auto& arrangement = free_set.arrangement();
+    for (auto e = arrangement.edges_begin(); e != arrangement.edges_end(); ++e) {
+      const Vec2 a = approximate(detail::to_exact(e->source()->point())), b = approximate(detail::to_exact(e->target()->point()));
+      if (!same(a, b)) sdg.insert(SitePoint(a.x, a.y), SitePoint(b.x, b.y));
+    }
+    for (auto v = sdg.finite_vertices_begin(); v != sdg.finite_vertices_end(); ++v) {
+      const auto& site = v->site();
+      BoundarySite s;
+      if (site.is_point()) {
+        s.a = s.b = {site.point().x(), site.point().y()};
+      } else {
+        const auto segment = site.segment();
+        s.a = {segment.source().x(), segment.source().y()};
+        s.b = {segment.target().x(), segment.target().y()};
+      }
+      site_of.emplace(&*v, sites.size());
+      sites.push_back(s);
+    }
+    edges_of_site.resize(sites.size());
+    collect_edges();
+  }
+
+  std::size_t vertex_of(SDG::Face_handle f, std::unordered_map<const void*, std::size_t>& made) {
+    auto [it, inserted] = made.emplace(&*f, vertices.size());
+    if (inserted) {
+      const SitePoint p = sdg.geom_traits().construct_svd_vertex_2_object()(f->vertex(0)->site(), f->vertex(1)->site(),
+                                                                          f->vertex(2)->site());
+      const Vec2 at{p.x(), p.y()};
+      vertices.push_back({at, distance_to_site(at, sites[site_of.at(&*f->vertex(0))])});
+    }
+    return it->second;
+  }
+
+  void collect_edges() {
+    std::unordered_map<const void*, std::size_t> vertex_of_face;
+    for (auto e = sdg.finite_edges_begin(); e != sdg.finite_edges_end(); ++e) {
+      const SDG::Face_handle f = e->first, g = f->neighbor(e->second);
+      if (sdg.is_infinite(f) || sdg.is_infinite(g)) continue;  // a ray: outside the bounds or frame
+      const std::size_t sa = site_of.at(&*f->vertex(sdg.ccw(e->second))), sb = site_of.at(&*f->vertex(sdg.cw(e->second)));
+      const BoundarySite &a = sites[sa], &b = sites[sb];
+      const BoundarySite* point = a.is_point() ? &a : b.is_point() ? &b : nullptr;
+      const BoundarySite* segment = !a.is_point() ? &a : !b.is_point() ? &b : nullptr;
+      // The perpendicular between an edge and its own corner runs into the boundary there.
+      if (point && segment && (same(point->a, segment->a) || same(point->a, segment->b))) continue;
+
+      const std::size_t from = vertex_of(f, vertex_of_face), to = vertex_of(g, vertex_of_face);
+      Curve curve;
+      curve.site = sa;
+      curve.a = vertices[from].at;
+      curve.b = vertices[to].at;
+      if (point && segment) {
+        const Vec2 direction = segment->b - segment->a;
+        curve.t = (1 / norm(direction)) * direction;
+        Vec2 normal{-curve.t.y, curve.t.x};
+        double d = dot(point->a - segment->a, normal);
+        if (d < 0) {
+          normal = -1 * normal;
+          d = -d;
+        }
+        if (d > 0) {  // a focus on the directrix leaves a straight bisector
+          curve.parabolic = true;
+          curve.n = normal;
+          curve.f = d / 2;
+          curve.apex = point->a - curve.f * normal;
+        }
+      }
+      curve.t_from = curve.parabolic ? curve.parameter_of(curve.a) : 0;
+      curve.t_to = curve.parabolic ? curve.parameter_of(curve.b) : 1;
+      const Vec2 middle = curve.point((curve.t_from + curve.t_to) / 2);
+      if (!std::isfinite(middle.x) || !std::isfinite(middle.y)) continue;
+      // Diagram edges never cross the boundary: one point tells the free ones.
+      if (cspace->locate(exact(middle)).kind != Location::Kind::free) continue;
+
+      const std::size_t id = edges.size();
+      curves.push_back(curve);
+      DiagramEdge edge{from, to, sa, sb, 0, 0};
+      edges.push_back(edge);
+      edges.back().clearance = clearance_between(id, curve.t_from, curve.t_to);
+      edges.back().length = length_between(id, curve.t_from, curve.t_to);
+      edges_of_site[sa].push_back(id);
+      edges_of_site[sb].push_back(id);
+    }
+  }
+
+  double clearance_between(std::size_t e, double t1, double t2) const {
+    const Curve& c = curves[e];
+    if (!c.parabolic) return distance_between_segments(c.point(t1), c.point(t2), sites[c.site].a, sites[c.site].b);
+    const double lo = std::min(t1, t2), hi = std::max(t1, t2);
+    const double nearest = lo <= 0 && 0 <= hi ? 0 : std::min(std::abs(lo), std::abs(hi));
+    return c.f + nearest * nearest / (4 * c.f);
+  }
+
+  double length_between(std::size_t e, double t1, double t2) const {
+    const Curve& c = curves[e];
+    if (!c.parabolic) return norm(c.point(t2) - c.point(t1));
+    return std::abs(parabola_length(t2, c.f) - parabola_length(t1, c.f));
+  }
+
+  std::size_t site_at(Vec2 p) const {
+    return site_of.at(&*sdg.nearest_neighbor(SitePoint(p.x, p.y)));
+  }
+
+  // The direction in which p leaves the boundary piece it is nearest to (for a point on the
+  // boundary: into the free space, found by an exact test a little way off).
+  std::optional<Vec2> away_direction(Vec2 p, std::size_t s) const {
+    const BoundarySite& site = sites[s];
+    const Vec2 d = site.is_point() ? p - site.a : p - nearest_on(site, p);
+    if (norm(d) > 0) return (1 / norm(d)) * d;
+    const double step = 1e-9 * (1 + std::max(std::abs(p.x), std::abs(p.y)));
+    std::vector<Vec2> candidates;
+    if (!site.is_point()) {
+      const Vec2 t = (1 / norm(site.b - site.a)) * (site.b - site.a);
+      candidates = {{-t.y, t.x}, {t.y, -t.x}};
+    } else {
+      for (int k = 0; k < 16; ++k) candidates.push_back({std::cos(k * M_PI / 8), std::sin(k * M_PI / 8)});
+    }
+    for (const Vec2& c : candidates)
+      if (cspace->locate(exact(p + step * c)).kind == Location::Kind::free) return c;
+    return std::nullopt;
+  }
+
+  static Vec2 nearest_on(const BoundarySite& s, Vec2 p) {
+    const Vec2 d = s.b - s.a;
+    const double l2 = dot(d, d);
+    const double t = l2 > 0 ? std::clamp(dot(p - s.a, d) / l2, 0.0, 1.0) : 0;
+    return s.a + t * d;
+  }
+};
+
+VoronoiDiagram::VoronoiDiagram(const CSpace& cspace, const std::vector<ExactPoint>& inside)
+    : impl_(std::make_unique<Impl>(cspace, inside)) {}
+VoronoiDiagram::~VoronoiDiagram() = default;
+VoronoiDiagram::VoronoiDiagram(VoronoiDiagram&&) noexcept = default;
+VoronoiDiagram& VoronoiDiagram::operator=(VoronoiDiagram&&) noexcept = default;
+
+const std::vector<BoundarySite>& VoronoiDiagram::sites() const { return impl_->sites; }
+const std::vector<DiagramVertex>& VoronoiDiagram::vertices() const { return impl_->vertices; }
+const std::vector<DiagramEdge>& VoronoiDiagram::edges() const { return impl_->edges; }
+bool VoronoiDiagram::in_frame(const ExactPoint& p) const { return !impl_->frame || detail::strictly_inside(*impl_->frame, p); }
+bool VoronoiDiagram::is_parabolic(std::size_t edge) const { return impl_->curves[edge].parabolic; }
+double VoronoiDiagram::parameter_from(std::size_t edge) const { return impl_->curves[edge].t_from; }
+double VoronoiDiagram::parameter_to(std::size_t edge) const { return impl_->curves[edge].t_to; }
+Vec2 VoronoiDiagram::point(std::size_t edge, double parameter) const { return impl_->curves[edge].point(parameter); }
+double VoronoiDiagram::clearance_between(std::size_t edge, double t1, double t2) const {
+  return impl_->clearance_between(edge, t1, t2);
+}
+double VoronoiDiagram::length_between(std::size_t edge, double t1, double t2) const {
+  return impl_->length_between(edge, t1, t2);
+}
+
+double VoronoiDiagram::sagitta(std::size_t edge, double t1, double t2) const {
+  const Curve& c = impl_->curves[edge];
+  return c.parabolic ? (t2 - t1) * (t2 - t1) / (16 * c.f) : 0;
+}
+
+Vec2 VoronoiDiagram::bezier_control(std::size_t edge, double t1, double t2) const {
+  const Curve& c = impl_->curves[edge];
+  if (!c.parabolic) return 0.5 * (c.point(t1) + c.point(t2));
+  return c.apex + ((t1 + t2) / 2) * c.t + (t1 * t2 / (4 * c.f)) * c.n;
+}
+
+// Along the ray from p away from its nearest boundary point, the nearest site stays the same
+// until the ray crosses the diagram: bisected on CGAL's exact nearest-site predicate, to the last
+// double, then matched to the nearest edge of the site's region.
+std::optional<CurvePoint> VoronoiDiagram::retract(const ExactPoint& exact_p) const {
+  const Impl& d = *impl_;
+  if (d.sites.empty() || d.cspace->locate(exact_p).kind == Location::Kind::blocked) return std::nullopt;
+  const Vec2 p = approximate(exact_p);
+  const std::size_t own = d.site_at(p);
+  const auto direction = d.away_direction(p, own);
+  if (!direction) return std::nullopt;
+  auto along = [&](double t) { return p + t * *direction; };
+  double inside = 0, outside = 1e-9 * (1 + norm(p));
+  while (d.site_at(along(outside)) == own) {
+    inside = outside;
+    outside *= 2;
+    if (!std::isfinite(outside) || outside > 1e300) return std::nullopt;
+  }
+  for (int i = 0; i < 200 && inside < outside; ++i) {
+    const double middle = inside + (outside - inside) / 2;
+    if (middle <= inside || middle >= outside) break;
+    (d.site_at(along(middle)) == own ? inside : outside) = middle;
+  }
+  // The edge of the own site's region nearest to where the ray left it (at a Voronoi vertex several
+  // edges meet: any of them).
+  const Vec2 hit = along(inside);
+  std::optional<CurvePoint> best;
+  double best_distance = INFINITY;
+  for (std::size_t e : d.edges_of_site[own]) {
+    const Curve& c = d.curves[e];
+    const double lo = std::min(c.t_from, c.t_to), hi = std::max(c.t_from, c.t_to);
+    const double u = std::clamp(c.parameter_of(hit), lo, hi);
+    const double miss = norm(c.point(u) - hit);
+    if (miss < best_distance) {
+      best_distance = miss;
+      best = CurvePoint{e, u};
+    }
+  }
+  return best;
+}
+
+}  // namespace polyplan

@@ -1,0 +1,293 @@
+#include <polyplan/roadmaps/voronoi_planner.hpp>
+
+#include <polyplan/geometry/clearance.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/search/shortest_path.hpp>
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+namespace polyplan {
+namespace {
+
+constexpr double kClearanceTolerance = 1e-7;  // how far a sampled arc may come below r*
+
+ExactPoint exact(Vec2 p) { return {Rational(p.x), Rational(p.y)}; }
+
+// A piece of the graph searched for one query: a diagram edge between two parameters, or the
+// straight move from a query point to where it meets the diagram.
+struct Piece {
+  std::size_t u = 0, v = 0;  // graph vertices
+  std::optional<std::size_t> edge;  // the diagram edge it runs along; none for a straight move
+  double t_u = 0, t_v = 0;
+  double clearance = 0, length = 0;
+  bool joins_a_query = false;
+};
+
+}  // namespace
+
+struct VoronoiPlanner::Impl {
+  const CSpace* cspace;
+  VoronoiOptions options;
+  VoronoiDiagram diagram;
+  double build_seconds = 0;
+  std::size_t parabolic_edges = 0;
+  std::shared_ptr<const PlanGraph<ExactPoint>> picture;
+  std::unique_ptr<VisibilityGraph> exact_shortest;  // built when a passage is too narrow for doubles
+
+  VisibilityGraph& exact_planner() {
+    if (!exact_shortest) exact_shortest = std::make_unique<VisibilityGraph>(*cspace);
+    return *exact_shortest;
+  }
+
+  bool share_a_component(const Query& query) const {
+    const auto a = cspace->locate(query.start).components, b = cspace->locate(query.goal).components;
+    return std::any_of(a.begin(), a.end(), [&](std::size_t c) { return std::find(b.begin(), b.end(), c) != b.end(); });
+  }
+
+  Impl(const CSpace& c, const VoronoiOptions& o, const std::vector<ExactPoint>& inside)
+      : cspace(&c), options(o), diagram(c, inside) {
+    for (std::size_t e = 0; e < diagram.edges().size(); ++e) parabolic_edges += diagram.is_parabolic(e);
+  }
+
+  void record_facts(Facts& facts) const {
+    facts.set("roadmap.kind", "voronoi");
+    facts.set("roadmap.vertices", diagram.vertices().size());
+    facts.set("roadmap.edges", diagram.edges().size());
+    facts.set("roadmap.seconds", build_seconds);
+    facts.set("voronoi.sites", diagram.sites().size());
+    facts.set("voronoi.parabolic_edges", parabolic_edges);
+    facts.set("search.algorithm", to_string(options.search.algorithm));
+  }
+
+  // The diagram, arcs as several straight pieces (a picture's graph is straight-edged).
+  std::shared_ptr<const PlanGraph<ExactPoint>> graph() {
+    if (picture) return picture;
+    auto g = std::make_shared<PlanGraph<ExactPoint>>();
+    g->kind = "Voronoi diagram";
+    for (const DiagramVertex& v : diagram.vertices()) g->vertices.push_back(exact(v.at));
+    for (std::size_t e = 0; e < diagram.edges().size(); ++e) {
+      const DiagramEdge& edge = diagram.edges()[e];
+      std::size_t previous = edge.from;
+      if (diagram.is_parabolic(e)) {
+        const double t1 = diagram.parameter_from(e), t2 = diagram.parameter_to(e);
+        for (int k = 1; k < 8; ++k) {
+          g->vertices.push_back(exact(diagram.point(e, t1 + (t2 - t1) * k / 8)));
+          g->edges.emplace_back(previous, g->vertices.size() - 1);
+          previous = g->vertices.size() - 1;
+        }
+      }
+      g->edges.emplace_back(previous, edge.to);
+    }
+    picture = std::move(g);
+    return picture;
+  }
+
+  // The pieces of the search graph: the diagram's edges, and for each query point the straight
+  // move onto the diagram and the two parts of the edge it lands on (and the part between the two
+  // landing points when both land on one edge).
+  std::vector<Piece> pieces_for(const ExactPoint& start, CurvePoint from, const ExactPoint& goal, CurvePoint to) const {
+    const std::size_t n = diagram.vertices().size(), s = n, g = n + 1, rs = n + 2, rg = n + 3;
+    std::vector<Piece> pieces;
+    for (std::size_t e = 0; e < diagram.edges().size(); ++e) {
+      const DiagramEdge& edge = diagram.edges()[e];
+      pieces.push_back({edge.from, edge.to, e, diagram.parameter_from(e), diagram.parameter_to(e), edge.clearance,
+                        edge.length, false});
+    }
+    auto land = [&](std::size_t query, std::size_t landing, const ExactPoint& p, CurvePoint on) {
+      const Vec2 at = approximate(p), there = diagram.point(on.edge, on.parameter);
+      pieces.push_back({query, landing, std::nullopt, 0, 0, clearance_at(*cspace, p), std::hypot(at.x - there.x, at.y - there.y), true});
+      const DiagramEdge& edge = diagram.edges()[on.edge];
+      for (const auto& [end, t] : {std::pair{edge.from, diagram.parameter_from(on.edge)}, std::pair{edge.to, diagram.parameter_to(on.edge)}})
+        pieces.push_back({landing, end, on.edge, on.parameter, t, diagram.clearance_between(on.edge, on.parameter, t),
+                          diagram.length_between(on.edge, on.parameter, t), true});
+    };
+    land(s, rs, start, from);
+    land(g, rg, goal, to);
+    if (from.edge == to.edge)
+      pieces.push_back({rs, rg, from.edge, from.parameter, to.parameter,
+                        diagram.clearance_between(from.edge, from.parameter, to.parameter),
+                        diagram.length_between(from.edge, from.parameter, to.parameter), true});
+    return pieces;
+  }
+
+  // Chords along a piece from its t_u end to its t_v end (the t_u end not included), fine enough
+  // to stay within the tolerance of the bottleneck.
+  void sample(const Piece& piece, double t1, double t2, double bottleneck, std::vector<Vec2>& out, int depth = 0) const {
+    const std::size_t e = *piece.edge;
+    if (diagram.is_parabolic(e) && depth < 60) {
+      const double arc = diagram.clearance_between(e, t1, t2);
+      const double floor = std::max(bottleneck - kClearanceTolerance, std::min(bottleneck, arc) / 2);
+      if (arc - diagram.sagitta(e, t1, t2) < floor) {
+        const double middle = (t1 + t2) / 2;
+        sample(piece, t1, middle, bottleneck, out, depth + 1);
+        sample(piece, middle, t2, bottleneck, out, depth + 1);
+        return;
+      }
+    }
+    out.push_back(diagram.point(e, t2));
+  }
+};
+
+VoronoiPlanner::VoronoiPlanner(const CSpace& cspace, VoronoiOptions options) {
+  const Stopwatch building;
+  impl_ = std::make_unique<Impl>(cspace, options, query_points(cspace.world()));
+  impl_->build_seconds = building.seconds();
+}
+
+VoronoiPlanner::~VoronoiPlanner() = default;
+
+const VoronoiDiagram& VoronoiPlanner::diagram() const { return impl_->diagram; }
+
+PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptions& options) {
+  if (!impl_->diagram.in_frame(query.start) || !impl_->diagram.in_frame(query.goal)) {
+    const Stopwatch building;
+    impl_ = std::make_unique<Impl>(*impl_->cspace, impl_->options,
+                                   query_points(impl_->cspace->world(), {query.start, query.goal}));
+    impl_->build_seconds = building.seconds();
+  }
+  Impl& g = *impl_;
+  const Stopwatch querying;
+  PlanReport<ExactPoint> report;
+  g.record_facts(report.facts);
+  std::size_t expanded = 0, generated = 0;
+  double search_seconds = 0;
+  if (options.record) report.graph = g.graph();
+  const auto finish = [&]() {
+    report.facts.set("search.expanded", expanded);
+    report.facts.set("search.generated", generated);
+    report.facts.set("search.seconds", search_seconds);
+    report.facts.set("query_seconds", querying.seconds());
+    return report;
+  };
+  // A path is returned only after the exact check; its clearance is measured on it.
+  const auto finish_found = [&]() {
+    const PathCheck check = check_path(*g.cspace, report.path);
+    if (!check.valid) {
+      report.why_not = "the maximum-clearance path failed the exact check (the diagram's doubles rounded across the boundary): " +
+                       check.reason;
+      report.path.clear();
+      return finish();
+    }
+    report.found = true;
+    report.length = euclidean_length(report.path);
+    report.certificate = {true, "exact path check (geometry/path_check)"};
+    const PathBottleneck narrowest = path_bottleneck(*g.cspace, report.path);
+    report.facts.set("clearance", narrowest.clearance);
+    report.facts.set("bottleneck.x", narrowest.at.x);
+    report.facts.set("bottleneck.y", narrowest.at.y);
+    report.facts.set("search.path_edges", report.path.size() - 1);
+    return finish();
+  };
+
+  if (auto blocked = g.cspace->query_not_free(query)) {
+    report.why_not = *blocked;
+    return finish();
+  }
+  const auto from = g.diagram.retract(query.start), to = g.diagram.retract(query.goal);
+  if (!from || !to) {
+    report.why_not = std::string("the ") + (from ? "goal" : "start") + " meets no edge of the Voronoi diagram";
+    return finish();
+  }
+
+  // The bottleneck: join pieces in order of falling clearance until start and goal meet. Pieces of
+  // the diagram with no clearance (through a pinch point, into a corner) never join anything.
+  const std::vector<Piece> pieces = g.pieces_for(query.start, *from, query.goal, *to);
+  const std::size_t n = g.diagram.vertices().size(), s = n, t = n + 1, count = n + 4;
+  std::vector<std::size_t> order(pieces.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pieces[a].clearance > pieces[b].clearance; });
+  std::vector<std::size_t> rank(count), parent(count);
+  boost::disjoint_sets<std::size_t*, std::size_t*> components(rank.data(), parent.data());
+  for (std::size_t v = 0; v < count; ++v) components.make_set(v);
+  std::optional<double> bottleneck;
+  for (std::size_t i : order) {
+    const Piece& piece = pieces[i];
+    if (piece.clearance <= 0 && !piece.joins_a_query) break;
+    components.union_set(piece.u, piece.v);
+    if (components.find_set(s) == components.find_set(t)) {
+      bottleneck = piece.clearance;
+      break;
+    }
+  }
+  if (!bottleneck) {
+    if (!g.share_a_component(query)) {
+      report.why_not = "start and goal lie in different components of the free space";
+      return finish();
+    }
+    // The exact free space joins them through a passage narrower than the diagram's doubles
+    // resolve (decimal.json's gap of 1e-17): the best clearance is below that resolution, and the
+    // exact shortest path through the passage is as clear as any.
+    report.path = g.exact_planner().plan(query).path;
+    report.facts.set("voronoi.narrows", true);
+    return finish_found();
+  }
+
+  // The shortest path over the pieces at least as clear as the bottleneck.
+  Roadmap roadmap;
+  for (const DiagramVertex& v : g.diagram.vertices()) add_vertex(roadmap, exact(v.at));
+  add_vertex(roadmap, query.start);
+  add_vertex(roadmap, query.goal);
+  add_vertex(roadmap, exact(g.diagram.point(from->edge, from->parameter)));
+  add_vertex(roadmap, exact(g.diagram.point(to->edge, to->parameter)));
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> piece_between;
+  for (std::size_t i = 0; i < pieces.size(); ++i) {
+    const Piece& piece = pieces[i];
+    if (piece.clearance < *bottleneck || (piece.clearance <= 0 && !piece.joins_a_query)) continue;
+    boost::add_edge(piece.u, piece.v, RoadmapEdge{piece.length}, roadmap);
+    for (const auto key : {std::pair{piece.u, piece.v}, std::pair{piece.v, piece.u}}) {
+      auto [it, inserted] = piece_between.emplace(key, i);
+      if (!inserted && pieces[it->second].length > piece.length) it->second = i;
+    }
+  }
+  SearchOptions searching = g.options.search;
+  searching.record_expanded = options.record;
+  const auto result = shortest_path(roadmap, s, t, searching);
+  for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(roadmap[v].exact);
+  expanded = result.expanded;
+  generated = result.generated;
+  search_seconds = result.seconds;
+  if (!result.found) {  // cannot happen: the bottleneck joined them
+    report.why_not = "no path on the Voronoi diagram at the bottleneck clearance";
+    return finish();
+  }
+
+  std::vector<Vec2> points;
+  for (std::size_t i = 0; i + 1 < result.path.size(); ++i) {
+    const std::size_t u = result.path[i], v = result.path[i + 1];
+    const Piece& piece = pieces[piece_between.at({u, v})];
+    if (!piece.edge) {
+      points.push_back(approximate(roadmap[v].exact));
+      continue;
+    }
+    const bool forward = piece.u == u;
+    g.sample(piece, forward ? piece.t_u : piece.t_v, forward ? piece.t_v : piece.t_u, *bottleneck, points);
+  }
+  report.path.push_back(query.start);
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) report.path.push_back(exact(points[i]));
+  report.path.push_back(query.goal);
+  report.path = without_straight_corners(report.path);
+  if (report.path.size() == 1) report.path.push_back(query.goal);
+
+  report.facts.set("voronoi.bottleneck", *bottleneck);
+  return finish_found();
+}
+
+PlannerEntry<TranslatingRobot> voronoi_planner_entry() {
+  OptionTable<VoronoiOptions> table;
+  add_search_options(table, &VoronoiOptions::search);
+  return make_planner_entry<TranslatingRobot, VoronoiOptions>(
+      "voronoi", "maximum clearance on the generalized Voronoi diagram of the free space (CGAL segment Delaunay graph)",
+      std::move(table), [](const CSpace& cspace, const VoronoiOptions& o) {
+        return std::make_unique<VoronoiPlanner>(cspace, o);
+      });
+}
+
+}  // namespace polyplan
