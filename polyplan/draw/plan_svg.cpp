@@ -4,6 +4,8 @@
 #include <polyplan/draw/world_svg.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <string>
 
 namespace polyplan {
@@ -77,14 +79,22 @@ constexpr std::size_t kMostCellsPerSideWithCentres = 60;
 
 void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph) {
   std::vector<std::pair<svg::Point2, svg::Point2>> edges;
+  std::vector<std::array<svg::Point2, 3>> arcs;
   edges.reserve(graph.edges.size());
-  for (const auto& [u, v] : graph.edges) edges.push_back({point(graph.vertices[u]), point(graph.vertices[v])});
+  for (std::size_t i = 0; i < graph.edges.size(); ++i) {
+    const auto& [u, v] = graph.edges[i];
+    if (i < graph.bends.size() && graph.bends[i])
+      arcs.push_back({point(graph.vertices[u]), point(*graph.bends[i]), point(graph.vertices[v])});
+    else
+      edges.push_back({point(graph.vertices[u]), point(graph.vertices[v])});
+  }
   svg::Style edge_style;
   edge_style.stroke = theme::roadmap;
   edge_style.stroke_px = 0.7;
   edge_style.opacity = 0.45;
   drawing.segments(edges, edge_style);
-  drawing.legend(graph.kind + " edges (" + std::to_string(edges.size()) + ")", edge_style, svg::Swatch::line);
+  drawing.curves(arcs, edge_style);
+  drawing.legend(graph.kind + " edges (" + std::to_string(graph.edges.size()) + ")", edge_style, svg::Swatch::line);
 
   std::vector<svg::Point2> vertices;
   vertices.reserve(graph.vertices.size());
@@ -151,6 +161,18 @@ void draw_decomposition(svg::Drawing& drawing, const PlanDecomposition<ExactPoin
   drawing.legend("walls between cells (" + std::to_string(walls.size()) + ")", wall_style, svg::Swatch::line);
 }
 
+void draw_clearance_disc(svg::Drawing& drawing, svg::Point2 centre, double radius) {
+  std::vector<svg::Point2> ring;
+  for (int k = 0; k < 72; ++k)
+    ring.push_back({centre.x + radius * std::cos(k * M_PI / 36), centre.y + radius * std::sin(k * M_PI / 36)});
+  const svg::Style style = svg::filled(theme::clearance_fill, 0.35, theme::clearance_edge, 1.2);
+  drawing.polygon({ring}, style);
+  drawing.points({centre}, 2.5, svg::filled(theme::clearance_edge, 1.0, "none", 0));
+  char label[64];
+  std::snprintf(label, sizeof label, "clearance %.4g at the bottleneck", radius);
+  drawing.legend(label, style);
+}
+
 void draw_points(svg::Drawing& drawing, const std::vector<ExactPoint>& points, const std::string& label) {
   if (points.empty()) return;
   std::vector<svg::Point2> dots;
@@ -180,6 +202,11 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   std::vector<ExactPoint> expanded;
   for (const auto& r : reports) expanded.insert(expanded.end(), r.expanded.begin(), r.expanded.end());
   draw_points(drawing, expanded, "expanded by the search");
+
+  for (const auto& r : reports)
+    if (r.found && r.facts.contains("clearance") && r.facts.contains("bottleneck.x") && r.facts.contains("bottleneck.y") &&
+        r.facts.number("clearance") > 0)
+      draw_clearance_disc(drawing, {r.facts.number("bottleneck.x"), r.facts.number("bottleneck.y")}, r.facts.number("clearance"));
 
   for (std::size_t i = 0; i < reports.size(); ++i) {
     if (!reports[i].found) continue;

@@ -12,7 +12,8 @@ namespace polyplan {
 
 // The world and its C-space; the cells or the decomposition (when a report carries them: the free
 // space is then shown by them); the roadmap or tree (the first report's that carries one); where the searches
-// expanded; every path found, in the theme's palette, labelled `labels[i]` (default "path" for
+// expanded; the clearance disc of a report with the facts clearance, bottleneck.x and
+// bottleneck.y; every path found, in the theme's palette, labelled `labels[i]` (default "path" for
 // one report, "path i" for several). Reports made with QueryOptions::record carry the graph,
 // the cells and the expanded configurations; others draw their paths only.
 svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactPoint>>& reports,
@@ -26,6 +27,8 @@ void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph);
 void draw_cells(svg::Drawing& drawing, const CellGrid& cells);
 // convex cells in two alternating pale tints, the walls between them dashed;
 void draw_decomposition(svg::Drawing& drawing, const PlanDecomposition<ExactPoint>& decomposition);
+// the disc of a path's clearance around the place where the path comes nearest the boundary;
+void draw_clearance_disc(svg::Drawing& drawing, svg::Point2 centre, double radius);
 // points such as the vertices a search expanded, as small dots with a legend entry.
 void draw_points(svg::Drawing& drawing, const std::vector<ExactPoint>& points, const std::string& label);
 

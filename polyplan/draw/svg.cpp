@@ -289,6 +289,26 @@ void Drawing::segments(const std::vector<std::pair<Point2, Point2>>& segs, const
   body_ += "\"/>\n";
 }
 
+void Drawing::curves(const std::vector<std::array<Point2, 3>>& arcs, const Style& style) {
+  if (arcs.empty()) return;
+  body_ += "<path";
+  append_style(body_, style);
+  body_ += " d=\"";
+  std::size_t count = 0;
+  for (const auto& [from, control, to] : arcs) {
+    mark_ink(from, control, kInkEdge);  // the control polygon holds the curve
+    mark_ink(control, to, kInkEdge);
+    if (count++) body_ += (count % 64 == 0) ? '\n' : ' ';
+    body_ += 'M';
+    append_point(body_, from);
+    body_ += 'Q';
+    append_point(body_, control);
+    body_ += ' ';
+    append_point(body_, to);
+  }
+  body_ += "\"/>\n";
+}
+
 void Drawing::boxes(const std::vector<Box2>& boxes, const Style& style) {
   if (boxes.empty()) return;
   body_ += "<path fill-rule=\"evenodd\"";

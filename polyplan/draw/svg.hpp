@@ -10,6 +10,7 @@
 // point mapped by to_screen(). That frame keeps every renderer honest: librsvg (rsvg-convert)
 // silently draws nothing for a viewBox narrower than about 0.002 units, and tools that ignore
 // vector-effect="non-scaling-stroke" would draw a 1.5 px stroke 1.5 world units wide.
+#include <array>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -53,6 +54,8 @@ class Drawing {
   void polyline(const std::vector<Point2>&, const Style&);
   // All segments as one <path> (graphs may have 100k edges).
   void segments(const std::vector<std::pair<Point2, Point2>>&, const Style&);
+  // Quadratic Bézier curves {from, control, to} as one <path>: a parabolic arc is exactly one.
+  void curves(const std::vector<std::array<Point2, 3>>&, const Style&);
   // Axis-aligned boxes (grid cells, say) as one <path>, half the text of as many polygons.
   void boxes(const std::vector<Box2>&, const Style&);
   // Circles of `radius_px` screen pixels, filled with style.fill and outlined with style.stroke.

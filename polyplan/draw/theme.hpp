@@ -30,6 +30,9 @@ inline constexpr const char* blocked_cell_fill = "#b9b2c9";
 inline constexpr const char* blocked_cell_edge = "#8d84a3";
 inline constexpr const char* cell_vertex = "#6aa77a";
 inline constexpr const char* not_evaluated_hatch = "#c8c8c8";
+// A path's clearance disc at its bottleneck: translucent violet.
+inline constexpr const char* clearance_fill = "#b39ddb";
+inline constexpr const char* clearance_edge = "#5e35b1";
 // The walls of a decomposition (dashed), between its pale cells.
 inline constexpr const char* wall_line = "#5b7f95";
 

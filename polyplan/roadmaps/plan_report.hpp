@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -68,6 +69,9 @@ struct PlanGraph {
   std::string kind;  // the legend's word: "roadmap" or "tree"
   std::vector<Configuration> vertices;
   std::vector<std::pair<std::size_t, std::size_t>> edges;
+  // Optional, one per edge: the control point of the quadratic Bézier curve the edge follows (a
+  // Voronoi diagram's parabolic arc); none for a straight edge, and empty when every edge is.
+  std::vector<std::optional<Configuration>> bends;
 };
 
 // Cells over two coordinates of the configuration (x and y, or θ1 and θ2) and what the planner

@@ -1,5 +1,6 @@
 #include <polyplan/roadmaps/voronoi_diagram.hpp>
 
+#include <polyplan/geometry/path_check.hpp>
 #include <polyplan/internal/free_space_frame.hpp>
 
 #include <CGAL/Segment_Delaunay_graph_filtered_traits_2.h>
@@ -110,14 +111,19 @@ struct VoronoiDiagram::Impl {
     collect_edges();
   }
 
-  std::size_t vertex_of(SDG::Face_handle f, std::unordered_map<const void*, std::size_t>& made) {
-    auto [it, inserted] = made.emplace(&*f, vertices.size());
-    if (inserted) {
-      const SitePoint p = sdg.geom_traits().construct_svd_vertex_2_object()(f->vertex(0)->site(), f->vertex(1)->site(),
-                                                                          f->vertex(2)->site());
-      const Vec2 at{p.x(), p.y()};
-      vertices.push_back({at, distance_to_site(at, sites[site_of.at(&*f->vertex(0))])});
-    }
+  // The Voronoi vertex of a face of the Delaunay graph: the centre of the circle its three sites
+  // touch, and that circle's radius.
+  DiagramVertex circle_of(SDG::Face_handle f) const {
+    const SitePoint p = sdg.geom_traits().construct_svd_vertex_2_object()(f->vertex(0)->site(), f->vertex(1)->site(),
+                                                                        f->vertex(2)->site());
+    const Vec2 at{p.x(), p.y()};
+    return {at, distance_to_site(at, sites[site_of.at(&*f->vertex(0))])};
+  }
+
+  // The diagram's vertex of a face, numbered when an edge first keeps it.
+  std::size_t vertex_of(SDG::Face_handle f, std::unordered_map<const void*, std::size_t>& numbered) {
+    auto [it, inserted] = numbered.emplace(&*f, vertices.size());
+    if (inserted) vertices.push_back(circle_of(f));
     return it->second;
   }
 
@@ -133,11 +139,10 @@ struct VoronoiDiagram::Impl {
       // The perpendicular between an edge and its own corner runs into the boundary there.
       if (point && segment && (same(point->a, segment->a) || same(point->a, segment->b))) continue;
 
-      const std::size_t from = vertex_of(f, vertex_of_face), to = vertex_of(g, vertex_of_face);
       Curve curve;
       curve.site = sa;
-      curve.a = vertices[from].at;
-      curve.b = vertices[to].at;
+      curve.a = circle_of(f).at;
+      curve.b = circle_of(g).at;
       if (point && segment) {
         const Vec2 direction = segment->b - segment->a;
         curve.t = (1 / norm(direction)) * direction;
@@ -161,7 +166,7 @@ struct VoronoiDiagram::Impl {
       // Diagram edges never cross the boundary: one point tells the free ones.
       if (cspace->locate(exact(middle)).kind != Location::Kind::free) continue;
 
-      const std::size_t id = edges.size();
+      const std::size_t id = edges.size(), from = vertex_of(f, vertex_of_face), to = vertex_of(g, vertex_of_face);
       curves.push_back(curve);
       DiagramEdge edge{from, to, sa, sb, 0, 0};
       edges.push_back(edge);
@@ -190,22 +195,19 @@ struct VoronoiDiagram::Impl {
     return site_of.at(&*sdg.nearest_neighbor(SitePoint(p.x, p.y)));
   }
 
-  // The direction in which p leaves the boundary piece it is nearest to (for a point on the
-  // boundary: into the free space, found by an exact test a little way off).
-  std::optional<Vec2> away_direction(Vec2 p, std::size_t s) const {
-    const BoundarySite& site = sites[s];
-    const Vec2 d = site.is_point() ? p - site.a : p - nearest_on(site, p);
-    if (norm(d) > 0) return (1 / norm(d)) * d;
-    const double step = 1e-9 * (1 + std::max(std::abs(p.x), std::abs(p.y)));
-    std::vector<Vec2> candidates;
-    if (!site.is_point()) {
-      const Vec2 t = (1 / norm(site.b - site.a)) * (site.b - site.a);
-      candidates = {{-t.y, t.x}, {t.y, -t.x}};
-    } else {
-      for (int k = 0; k < 16; ++k) candidates.push_back({std::cos(k * M_PI / 8), std::sin(k * M_PI / 8)});
+  // A point near p in the free space, off the boundary, joined to p by a segment in the free space
+  // (the exact segment test): the first of sixteen directions, from a thousandth of p's size
+  // down, that gives one.
+  std::optional<Vec2> step_off_boundary(const ExactPoint& p) const {
+    const Vec2 at = approximate(p);
+    for (int k = 0; k < 16; ++k) {
+      const Vec2 direction{std::cos(k * M_PI / 8), std::sin(k * M_PI / 8)};
+      double step = 1e-3 * (1 + std::max(std::abs(at.x), std::abs(at.y)));
+      for (int halving = 0; halving < 40; ++halving, step /= 2) {
+        const Vec2 q = at + step * direction;
+        if (cspace->locate(exact(q)).kind == Location::Kind::free && check_segment(*cspace, p, exact(q)).valid) return q;
+      }
     }
-    for (const Vec2& c : candidates)
-      if (cspace->locate(exact(p + step * c)).kind == Location::Kind::free) return c;
     return std::nullopt;
   }
 
@@ -252,14 +254,21 @@ Vec2 VoronoiDiagram::bezier_control(std::size_t edge, double t1, double t2) cons
 // Along the ray from p away from its nearest boundary point, the nearest site stays the same
 // until the ray crosses the diagram: bisected on CGAL's exact nearest-site predicate, to the last
 // double, then matched to the nearest edge of the site's region.
-std::optional<CurvePoint> VoronoiDiagram::retract(const ExactPoint& exact_p) const {
+std::optional<VoronoiDiagram::Retraction> VoronoiDiagram::retract(const ExactPoint& exact_p) const {
   const Impl& d = *impl_;
   if (d.sites.empty() || d.cspace->locate(exact_p).kind == Location::Kind::blocked) return std::nullopt;
-  const Vec2 p = approximate(exact_p);
+  Vec2 p = approximate(exact_p);
+  std::optional<Vec2> off_boundary;
+  if (distance_to_site(p, d.sites[d.site_at(p)]) == 0) {  // on the boundary: no direction away from it yet
+    off_boundary = d.step_off_boundary(exact_p);
+    if (!off_boundary) return std::nullopt;
+    p = *off_boundary;
+  }
   const std::size_t own = d.site_at(p);
-  const auto direction = d.away_direction(p, own);
-  if (!direction) return std::nullopt;
-  auto along = [&](double t) { return p + t * *direction; };
+  const Vec2 away = p - Impl::nearest_on(d.sites[own], p);
+  if (!(norm(away) > 0)) return std::nullopt;
+  const Vec2 direction = (1 / norm(away)) * away;
+  auto along = [&](double t) { return p + t * direction; };
   double inside = 0, outside = 1e-9 * (1 + norm(p));
   while (d.site_at(along(outside)) == own) {
     inside = outside;
@@ -286,7 +295,8 @@ std::optional<CurvePoint> VoronoiDiagram::retract(const ExactPoint& exact_p) con
       best = CurvePoint{e, u};
     }
   }
-  return best;
+  if (!best) return std::nullopt;
+  return Retraction{*best, off_boundary};
 }
 
 }  // namespace polyplan

@@ -83,9 +83,14 @@ class VoronoiDiagram {
   Vec2 bezier_control(std::size_t edge, double t1, double t2) const;
 
   // Where a point of the free space meets the diagram when it moves straight away from its
-  // nearest boundary point (its clearance grows all the way): that point on an edge; nullopt when
-  // no edge of the diagram is met (the point is blocked, or no kept edge bounds its region).
-  std::optional<CurvePoint> retract(const ExactPoint& p) const;
+  // nearest boundary point (its clearance grows all the way): that point on an edge. A point on
+  // the boundary first steps off it into the free space, along a segment checked exactly
+  // (`off_boundary`). nullopt when the point is blocked or no edge is met.
+  struct Retraction {
+    CurvePoint on;
+    std::optional<Vec2> off_boundary;
+  };
+  std::optional<Retraction> retract(const ExactPoint& p) const;
 
  private:
   struct Impl;

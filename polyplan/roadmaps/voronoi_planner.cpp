@@ -26,6 +26,7 @@ ExactPoint exact(Vec2 p) { return {Rational(p.x), Rational(p.y)}; }
 struct Piece {
   std::size_t u = 0, v = 0;  // graph vertices
   std::optional<std::size_t> edge;  // the diagram edge it runs along; none for a straight move
+  std::optional<Vec2> via;          // a straight move's corner: where it stepped off the boundary
   double t_u = 0, t_v = 0;
   double clearance = 0, length = 0;
   bool joins_a_query = false;
@@ -67,24 +68,17 @@ struct VoronoiPlanner::Impl {
     facts.set("search.algorithm", to_string(options.search.algorithm));
   }
 
-  // The diagram, arcs as several straight pieces (a picture's graph is straight-edged).
+  // The diagram, its parabolic arcs as the quadratic Bézier curves they are.
   std::shared_ptr<const PlanGraph<ExactPoint>> graph() {
     if (picture) return picture;
     auto g = std::make_shared<PlanGraph<ExactPoint>>();
     g->kind = "Voronoi diagram";
     for (const DiagramVertex& v : diagram.vertices()) g->vertices.push_back(exact(v.at));
     for (std::size_t e = 0; e < diagram.edges().size(); ++e) {
-      const DiagramEdge& edge = diagram.edges()[e];
-      std::size_t previous = edge.from;
-      if (diagram.is_parabolic(e)) {
-        const double t1 = diagram.parameter_from(e), t2 = diagram.parameter_to(e);
-        for (int k = 1; k < 8; ++k) {
-          g->vertices.push_back(exact(diagram.point(e, t1 + (t2 - t1) * k / 8)));
-          g->edges.emplace_back(previous, g->vertices.size() - 1);
-          previous = g->vertices.size() - 1;
-        }
-      }
-      g->edges.emplace_back(previous, edge.to);
+      g->edges.emplace_back(diagram.edges()[e].from, diagram.edges()[e].to);
+      g->bends.push_back(diagram.is_parabolic(e) ? std::optional<ExactPoint>(exact(diagram.bezier_control(
+                                                       e, diagram.parameter_from(e), diagram.parameter_to(e))))
+                                                 : std::nullopt);
     }
     picture = std::move(g);
     return picture;
@@ -93,26 +87,30 @@ struct VoronoiPlanner::Impl {
   // The pieces of the search graph: the diagram's edges, and for each query point the straight
   // move onto the diagram and the two parts of the edge it lands on (and the part between the two
   // landing points when both land on one edge).
-  std::vector<Piece> pieces_for(const ExactPoint& start, CurvePoint from, const ExactPoint& goal, CurvePoint to) const {
+  std::vector<Piece> pieces_for(const ExactPoint& start, const VoronoiDiagram::Retraction& from_start,
+                                const ExactPoint& goal, const VoronoiDiagram::Retraction& from_goal) const {
+    const CurvePoint from = from_start.on, to = from_goal.on;
     const std::size_t n = diagram.vertices().size(), s = n, g = n + 1, rs = n + 2, rg = n + 3;
     std::vector<Piece> pieces;
     for (std::size_t e = 0; e < diagram.edges().size(); ++e) {
       const DiagramEdge& edge = diagram.edges()[e];
-      pieces.push_back({edge.from, edge.to, e, diagram.parameter_from(e), diagram.parameter_to(e), edge.clearance,
-                        edge.length, false});
+      pieces.push_back({edge.from, edge.to, e, std::nullopt, diagram.parameter_from(e), diagram.parameter_to(e),
+                        edge.clearance, edge.length, false});
     }
-    auto land = [&](std::size_t query, std::size_t landing, const ExactPoint& p, CurvePoint on) {
-      const Vec2 at = approximate(p), there = diagram.point(on.edge, on.parameter);
-      pieces.push_back({query, landing, std::nullopt, 0, 0, clearance_at(*cspace, p), std::hypot(at.x - there.x, at.y - there.y), true});
+    auto land = [&](std::size_t query, std::size_t landing, const ExactPoint& p, const VoronoiDiagram::Retraction& r) {
+      const CurvePoint on = r.on;
+      const Vec2 at = approximate(p), there = diagram.point(on.edge, on.parameter), corner = r.off_boundary.value_or(at);
+      pieces.push_back({query, landing, std::nullopt, r.off_boundary, 0, 0, clearance_at(*cspace, p),
+                        std::hypot(at.x - corner.x, at.y - corner.y) + std::hypot(corner.x - there.x, corner.y - there.y), true});
       const DiagramEdge& edge = diagram.edges()[on.edge];
       for (const auto& [end, t] : {std::pair{edge.from, diagram.parameter_from(on.edge)}, std::pair{edge.to, diagram.parameter_to(on.edge)}})
-        pieces.push_back({landing, end, on.edge, on.parameter, t, diagram.clearance_between(on.edge, on.parameter, t),
+        pieces.push_back({landing, end, on.edge, std::nullopt, on.parameter, t, diagram.clearance_between(on.edge, on.parameter, t),
                           diagram.length_between(on.edge, on.parameter, t), true});
     };
-    land(s, rs, start, from);
-    land(g, rg, goal, to);
+    land(s, rs, start, from_start);
+    land(g, rg, goal, from_goal);
     if (from.edge == to.edge)
-      pieces.push_back({rs, rg, from.edge, from.parameter, to.parameter,
+      pieces.push_back({rs, rg, from.edge, std::nullopt, from.parameter, to.parameter,
                         diagram.clearance_between(from.edge, from.parameter, to.parameter),
                         diagram.length_between(from.edge, from.parameter, to.parameter), true});
     return pieces;
@@ -235,8 +233,8 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
   for (const DiagramVertex& v : g.diagram.vertices()) add_vertex(roadmap, exact(v.at));
   add_vertex(roadmap, query.start);
   add_vertex(roadmap, query.goal);
-  add_vertex(roadmap, exact(g.diagram.point(from->edge, from->parameter)));
-  add_vertex(roadmap, exact(g.diagram.point(to->edge, to->parameter)));
+  add_vertex(roadmap, exact(g.diagram.point(from->on.edge, from->on.parameter)));
+  add_vertex(roadmap, exact(g.diagram.point(to->on.edge, to->on.parameter)));
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> piece_between;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const Piece& piece = pieces[i];
@@ -263,7 +261,8 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
   for (std::size_t i = 0; i + 1 < result.path.size(); ++i) {
     const std::size_t u = result.path[i], v = result.path[i + 1];
     const Piece& piece = pieces[piece_between.at({u, v})];
-    if (!piece.edge) {
+    if (!piece.edge) {  // a query point's move onto the diagram, or back from it
+      if (piece.via) points.push_back(*piece.via);
       points.push_back(approximate(roadmap[v].exact));
       continue;
     }
