@@ -107,20 +107,27 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
       if (r.field.gvd[climbed->back()]) continue;
       report.why_not = std::string("the climb from the ") + what + "'s cell " + cell_text(r.raster, climbed->front()) +
                        " up the distance field stops at cell " + cell_text(r.raster, climbed->back()) +
-                       ", a local maximum off the GVD (a pocket of one obstacle, or no second obstacle around)";
+                       ", a local maximum off the GVD (the brushfire's GVD failed to reach it: a bug to report)";
       return;
     }
     report.facts.set("gvd.start_cell", cell_text(r.raster, up.back()));
     report.facts.set("gvd.goal_cell", cell_text(r.raster, down.back()));
 
-    const GridGraph& g = r.gvd_graph;
+    const auto search_between = [&](const GridGraph& g, const SearchOptions& searching) {
+      return shortest_path(g, up.back(), down.back(), searching,
+                           GridDistanceTo(g, down.back(), raster_metric(r.raster, g.connectivity())), GridMoveCost{&g});
+    };
     SearchOptions searching = r.options.search;
     searching.record_expanded = options.record;
-    search = shortest_path(g, up.back(), down.back(), searching,
-                           GridDistanceTo(g, down.back(), raster_metric(r.raster, g.connectivity())), GridMoveCost{&g});
+    search = search_between(r.gvd_graph, searching);
     if (!search.found) {
+      // Expected only between two free components of the grid; a second search over all free
+      // cells tells that from a GVD that failed to join one component (brushfire.hpp).
+      const bool apart = !search_between(r.free_graph, SearchOptions{Search::bfs}).found;
       report.why_not = "the GVD does not connect cell " + cell_text(r.raster, up.back()) + ", where the start's climb reaches it, to cell " +
-                       cell_text(r.raster, down.back()) + ", where the goal's does";
+                       cell_text(r.raster, down.back()) + ", where the goal's does" +
+                       (apart ? ": they lie in different free components of the grid"
+                              : ", though free cells do (the brushfire's GVD failed to join them: a bug to report)");
       return;
     }
 

@@ -2,19 +2,23 @@
 // The brushfire GVD planner on an occupancy grid (the course's GVD exercise): the world
 // rasterised as `raster` does it (geometry/rasterize.hpp, n × n exact cells), the brushfire of
 // that grid (search/brushfire.hpp) giving every free cell its distance to the nearest obstacle
-// and the generalized Voronoi diagram where the fronts of two obstacles meet (the cells where the
-// robot would leave the bounds are part of the outside, the bounds' one obstacle, so a wall
-// touching the bounds keeps its own id). A query snaps start and goal to their nearest free cells (as `raster` does), climbs from each up the distance field
-// to the GVD, searches along GVD cells between the two places where the climbs arrive, and joins
-// start → the centres where that cell path turns → goal. Registered as `gvd-grid`.
+// and the generalized Voronoi diagram where two wavefronts meet — of two obstacles, or of one
+// obstacle from two places along it (the two jambs of a door, the two sides of a pocket, the
+// bounds from two sides; thinned to what joins pieces and ends climbs), told apart by the
+// obstacle cells the fronts came from. The cells where the robot would leave the bounds are
+// part of the outside, the bounds' one obstacle, so a wall touching the bounds keeps its own
+// id. A query snaps start and goal to their nearest free cells (as `raster` does), climbs from each up the distance field to the GVD, searches along
+// GVD cells between the two places where the climbs arrive, and joins start → the centres where
+// that cell path turns → goal. Registered as `gvd-grid`.
 //
 // The climb is a steepest ascent over the moves of the 8-connected grid without corner cutting:
 // from a cell off the GVD it steps onto a GVD neighbour when there is one (the one of largest
 // distance, then lowest index), otherwise to the neighbour of largest distance, strictly larger
-// than its own (then lowest index). A cell off the GVD with no larger neighbour — a pocket of one
-// obstacle, or a free component with one obstacle only — stops it: the query is answered
-// found = false with the reason, as is a goal whose climb ends on a piece of the GVD that the
-// start's does not reach (a passage between two parts of one obstacle is not on the GVD).
+// than its own (then lowest index). Within a free component of the grid the GVD is one piece and
+// every climb reaches it (brushfire.hpp; tested on random grids, not proven), so start and goal
+// whose cells share a free component are joined; cells in two components are answered found =
+// false with the reason ("the GVD does not connect ..."), as would be a climb ending off the GVD
+// (the guard of the unproven property).
 //
 // The path keeps away from obstacles rather than being short. Like `raster`'s, its joins to the
 // exact start and goal are not protected by the cells, so the whole polyline is checked exactly

@@ -105,8 +105,11 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
   }
   const std::string picture = draw_plan(w.cspace, recorded).str();
   EXPECT_NE(picture.find("<svg"), std::string::npos);
-  for (std::size_t i = 0; i < recorded.size(); ++i)
-    if (recorded[i].found) EXPECT_NE(picture.find(recorded.size() == 1 ? "path" : "path " + std::to_string(i)), std::string::npos);
+  for (std::size_t i = 0; i < recorded.size(); ++i) {
+    if (recorded[i].found) {  // braces: EXPECT_NE is an if-else of its own (-Wdangling-else)
+      EXPECT_NE(picture.find(recorded.size() == 1 ? "path" : "path " + std::to_string(i)), std::string::npos);
+    }
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryPlannerOnEveryWorld,

@@ -1,10 +1,10 @@
-// search/brushfire: distances, obstacle ids and the GVD of small grids written out by hand, the
-// outside of the grid as one obstacle, and the GVD's connectivity by the moves the gvd-grid
-// planner searches it with: one piece per free component where every passage lies between two
-// obstacles (hand-made grids), thinning that never cuts what the meeting cells join (random
-// grids), and the stated limit (a door between two parts of one obstacle).
+// search/brushfire: distances, obstacle ids, origins and the GVD of small grids written out by
+// hand, the outside of the grid as one obstacle, and the GVD's connectivity by the moves the
+// gvd-grid planner climbs and searches with, checked by flood fills of its own: one piece per free
+// component that every climb reaches — through a door or a pocket of one obstacle and between
+// posts where only the outside's fronts meet (hand-made grids), on random grids of rectangles and
+// of noise — and taking one side of each front never cuts what the meeting cells join.
 #include <polyplan/search/brushfire.hpp>
-#include <polyplan/search/grid_graph.hpp>
 
 #include <gtest/gtest.h>
 
@@ -26,70 +26,98 @@ std::vector<std::uint8_t> blocked_of(const std::vector<std::string>& rows) {
   return blocked;
 }
 
-std::vector<GridAxis> plane(std::size_t columns, std::size_t rows) {
-  return {{static_cast<std::int64_t>(columns), AxisKind::bounded, 1.0}, {static_cast<std::int64_t>(rows), AxisKind::bounded, 1.0}};
-}
-
-// The cells reached from `from` by the grid graph's moves (BFS).
-std::vector<std::uint8_t> reached_from(const GridGraph& g, GridCell from) {
-  std::vector<std::uint8_t> reached(g.cell_count(), 0);
-  std::deque<GridCell> queue{from};
-  reached[from] = 1;
-  while (!queue.empty()) {
-    const GridCell c = queue.front();
-    queue.pop_front();
-    for (auto [e, end] = out_edges(c, g); e != end; ++e)
-      if (const GridCell next = (*e).target; !reached[next]) {
-        reached[next] = 1;
-        queue.push_back(next);
-      }
+// The moves GvdGridPlanner climbs and searches with, written out here so that the checks do not
+// lean on the planner or on GridGraph: 8-connected between free cells, a diagonal move only when
+// both cells beside it are free (no corner cutting).
+class Moves {
+ public:
+  Moves(std::size_t columns, std::size_t rows, const std::vector<std::uint8_t>& blocked)
+      : columns_(static_cast<long>(columns)), rows_(static_cast<long>(rows)), blocked_(&blocked) {}
+  // Calls f(n) for every cell n one move from free cell c.
+  template <class F>
+  void from(std::size_t c, F&& f) const {
+    const long x = static_cast<long>(c) % columns_, y = static_cast<long>(c) / columns_;
+    for (long dy = -1; dy <= 1; ++dy)
+      for (long dx = -1; dx <= 1; ++dx)
+        if ((dx != 0 || dy != 0) && free(x + dx, y + dy) && free(x + dx, y) && free(x, y + dy))
+          f(static_cast<std::size_t>(x + dx + (y + dy) * columns_));
   }
-  return reached;
+  std::size_t cells() const { return blocked_->size(); }
+  // The cells reached from `start` by moves between cells of `on` (flood fill).
+  std::vector<std::uint8_t> reached_within(const std::vector<std::uint8_t>& on, std::size_t start) const {
+    std::vector<std::uint8_t> reached(cells(), 0);
+    std::deque<std::size_t> queue{start};
+    reached[start] = 1;
+    while (!queue.empty()) {
+      const std::size_t c = queue.front();
+      queue.pop_front();
+      from(c, [&](std::size_t n) {
+        if (on[n] && !reached[n]) {
+          reached[n] = 1;
+          queue.push_back(n);
+        }
+      });
+    }
+    return reached;
+  }
+
+ private:
+  bool free(long x, long y) const { return x >= 0 && y >= 0 && x < columns_ && y < rows_ && !(*blocked_)[x + y * columns_]; }
+  long columns_, rows_;
+  const std::vector<std::uint8_t>* blocked_;
+};
+
+std::string cell_text(const Brushfire& b, std::size_t c) {
+  return "(" + std::to_string(c % b.columns) + ", " + std::to_string(c / b.columns) + ")";
 }
 
-// The free cells as the grid graph's bitmap.
-std::vector<std::uint8_t> free_of(const std::vector<std::uint8_t>& blocked) {
-  std::vector<std::uint8_t> free(blocked.size());
-  for (std::size_t i = 0; i < free.size(); ++i) free[i] = blocked[i] ? 0 : 1;
-  return free;
-}
-
-// The moves GvdGridPlanner searches the GVD with: 8-connected between free cells without cutting
-// a corner, both ends in `on`.
-GridGraph moves_within(std::size_t columns, std::size_t rows, const std::vector<std::uint8_t>& blocked,
-                       const std::vector<std::uint8_t>& on) {
-  GridGraph g(plane(columns, rows), Connectivity::full, StepCost::euclidean, free_of(blocked));
-  g.set_move_test([&on](GridCell a, GridCell c) { return on[a] && on[c]; });
-  return g;
-}
-
-// Whether any two GVD cells that `reference` joins, the GVD's own moves join too; `what` names the
-// reference in the failure.
-::testing::AssertionResult gvd_joins_what(const GridGraph& reference, const char* what, const Brushfire& b,
+// Whether any two GVD cells that moves between cells of `reference` join, moves between GVD cells
+// join too; `what` names the reference in the failure.
+::testing::AssertionResult gvd_joins_what(const std::vector<std::uint8_t>& reference, const char* what, const Brushfire& b,
                                           const std::vector<std::uint8_t>& blocked) {
-  const GridGraph along_gvd = moves_within(b.columns, b.rows, blocked, b.gvd);
+  const Moves moves(b.columns, b.rows, blocked);
   std::vector<std::uint8_t> seen(blocked.size(), 0);
   for (std::size_t c = 0; c < blocked.size(); ++c) {
     if (!b.gvd[c] || seen[c]) continue;
-    const auto joined = reached_from(reference, c), on_gvd = reached_from(along_gvd, c);
+    const auto joined = moves.reached_within(reference, c), on_gvd = moves.reached_within(b.gvd, c);
     for (std::size_t other = 0; other < blocked.size(); ++other) {
       if (!b.gvd[other] || !joined[other]) continue;
       seen[other] = 1;
       if (!on_gvd[other])
-        return ::testing::AssertionFailure() << "GVD cells (" << c % b.columns << ", " << c / b.columns << ") and ("
-                                             << other % b.columns << ", " << other / b.columns << ") share " << what
+        return ::testing::AssertionFailure() << "GVD cells " << cell_text(b, c) << " and " << cell_text(b, other) << " share " << what
                                              << " but not a GVD piece";
     }
   }
   return ::testing::AssertionSuccess();
 }
 
-// For every component of free cells (8-connected, no corner cutting), whether its GVD cells are
-// one piece under the same moves restricted to GVD cells (GvdGridPlanner's search graph).
-::testing::AssertionResult gvd_connected_in_each_component(std::size_t columns, std::size_t rows,
-                                                            const std::vector<std::uint8_t>& blocked) {
-  const GridGraph free_graph(plane(columns, rows), Connectivity::full, StepCost::euclidean, free_of(blocked));
-  return gvd_joins_what(free_graph, "a free component", brushfire(columns, rows, blocked), blocked);
+// The GVD as the gvd-grid planner needs it, in every component of free cells: its GVD cells are
+// one piece under the moves (the search's graph), and the climb reaches them from every cell — a
+// cell off the GVD has a GVD neighbour or a neighbour of larger distance, one move away, so every
+// steepest ascent ends on the GVD of the cell's own component whatever its tie-breaking.
+::testing::AssertionResult gvd_connected_and_climbed_to(std::size_t columns, std::size_t rows, const std::vector<std::uint8_t>& blocked) {
+  const Brushfire b = brushfire(columns, rows, blocked);
+  const Moves moves(columns, rows, blocked);
+  for (std::size_t c = 0; c < blocked.size(); ++c) {
+    if (blocked[c] || b.gvd[c]) continue;
+    bool up = false;
+    moves.from(c, [&](std::size_t n) { up = up || b.gvd[n] || b.distance[n] > b.distance[c]; });
+    if (!up) return ::testing::AssertionFailure() << "the climb stops at " << cell_text(b, c) << ", off the GVD";
+  }
+  std::vector<std::uint8_t> free(blocked.size()), done(blocked.size(), 0);
+  for (std::size_t c = 0; c < free.size(); ++c) free[c] = blocked[c] ? 0 : 1;
+  for (std::size_t c = 0; c < blocked.size(); ++c) {
+    if (!b.gvd[c] || done[c]) continue;
+    const auto component = moves.reached_within(free, c), piece = moves.reached_within(b.gvd, c);
+    for (std::size_t other = 0; other < blocked.size(); ++other) {
+      if (!component[other] || !b.gvd[other]) continue;
+      done[other] = 1;
+      if (!piece[other])
+        return ::testing::AssertionFailure() << "GVD cells " << cell_text(b, c) << " and " << cell_text(b, other)
+                                             << " share a free component but not a GVD piece";
+    }
+  }
+  return ::testing::AssertionSuccess();
 }
 
 // Whether thinning keeps connectivity: any two GVD cells that the thick meeting set joins — every
@@ -110,7 +138,7 @@ GridGraph moves_within(std::size_t columns, std::size_t rows, const std::vector<
           if (id != b.obstacle[c]) thick[c] = 1;
         }
     }
-  return gvd_joins_what(moves_within(columns, rows, blocked, thick), "a piece of the two-sided meeting set", b, blocked);
+  return gvd_joins_what(thick, "a piece of the two-sided meeting set", b, blocked);
 }
 
 TEST(Brushfire, HandLabelledGridWithOneObstacle) {
@@ -139,7 +167,9 @@ TEST(Brushfire, HandLabelledGridWithOneObstacle) {
       0, 0, 0, 0, 0, 0, 0,  //
   };
   // Of two neighbouring cells of different ids, the lower id's: a ring of outside-labelled cells
-  // round the obstacle's region (column 6 sees only id 0).
+  // round the obstacle's region. Column 6 sees only id 0: the outside's fronts from two sides
+  // meet in the corner cells (6, 0) and (6, 4) — origins (6, -1) and (7, 1) are not 8-adjacent —
+  // but those meetings of one obstacle join nothing and end no climb, so they are thinned away.
   const std::vector<std::uint8_t> gvd = {
       1, 1, 1, 1, 1, 1, 0,  //
       1, 0, 0, 0, 0, 1, 0,  //
@@ -153,13 +183,18 @@ TEST(Brushfire, HandLabelledGridWithOneObstacle) {
   EXPECT_EQ(b.obstacle_count, 2u);
   EXPECT_EQ(b.max_distance, 2u);
   EXPECT_EQ(b.gvd_cells, 18u);
-  EXPECT_TRUE(gvd_connected_in_each_component(7, 5, blocked_of(rows)));
+  EXPECT_EQ(b.origin[b.index(4, 2)].column, 3);  // beside the block: the block's cell (3, 2)
+  EXPECT_EQ(b.origin[b.index(4, 2)].row, 2);
+  EXPECT_EQ(b.origin[b.index(6, 2)].column, 7);  // the border's: the cell beyond it
+  EXPECT_EQ(b.origin[b.index(6, 2)].row, 2);
+  EXPECT_TRUE(gvd_connected_and_climbed_to(7, 5, blocked_of(rows)));
   EXPECT_TRUE(thin_gvd_joins_what_the_thick_one_joins(7, 5, blocked_of(rows)));
 }
 
 TEST(Brushfire, TheOutsideIsOneObstacleOneCellFromTheBorder) {
   // No blocked cell: every cell's nearest obstacle is the outside (id 0), at its chessboard
-  // distance from the border plus one; one obstacle meets no other, so there is no GVD.
+  // distance from the border plus one. Its fronts from the four sides meet from the corners to
+  // the middle; thinned, the GVD keeps a cell of the plateau of distance 2 for the climbs to end.
   const Brushfire empty = brushfire(5, 4, std::vector<std::uint8_t>(20, 0));
   const std::vector<std::uint32_t> distance = {
       1, 1, 1, 1, 1,  //
@@ -170,7 +205,9 @@ TEST(Brushfire, TheOutsideIsOneObstacleOneCellFromTheBorder) {
   EXPECT_EQ(empty.distance, distance);
   EXPECT_EQ(empty.obstacle, std::vector<std::uint32_t>(20, 0));
   EXPECT_EQ(empty.obstacle_count, 1u);
-  EXPECT_EQ(empty.gvd_cells, 0u);
+  EXPECT_EQ(empty.gvd_cells, 1u);
+  EXPECT_TRUE(empty.gvd[empty.index(2, 1)]);
+  EXPECT_TRUE(gvd_connected_and_climbed_to(5, 4, std::vector<std::uint8_t>(20, 0)));
   // All four sides are the same obstacle: a grid cut by a wall from border to border has two
   // free components, each between the outside and the wall, each with its GVD in one piece.
   const std::vector<std::string> rows = {
@@ -187,7 +224,7 @@ TEST(Brushfire, TheOutsideIsOneObstacleOneCellFromTheBorder) {
   EXPECT_EQ(cut.distance[2 * 8 + 1], 2u);  // two from the wall, two from the left side
   EXPECT_EQ(cut.obstacle[2 * 8 + 1], 0u);  // a tie: the outside's
   EXPECT_GT(cut.gvd_cells, 0u);
-  EXPECT_TRUE(gvd_connected_in_each_component(8, 5, blocked_of(rows)));
+  EXPECT_TRUE(gvd_connected_and_climbed_to(8, 5, blocked_of(rows)));
 }
 
 TEST(Brushfire, WallCellsMarkedOutsideAreTheOutside) {
@@ -209,8 +246,12 @@ TEST(Brushfire, WallCellsMarkedOutsideAreTheOutside) {
   EXPECT_EQ(b.obstacle[3 + 7], 1u);  // the wall
   EXPECT_EQ(b.distance[1 + 7], 1u);
   EXPECT_TRUE(b.gvd[2 + 7]);  // touches the wall and the ring
-  // Unmarked, the ring and the wall are one obstacle: no two ids meet.
-  EXPECT_EQ(brushfire(7, 6, blocked_of(rows)).gvd_cells, 0u);
+  // Unmarked, the ring and the wall are one obstacle, whose fronts from the two sides of the wall
+  // meet below its end and in the corners: a GVD all the same, connected.
+  const Brushfire one = brushfire(7, 6, blocked_of(rows));
+  EXPECT_EQ(one.obstacle_count, 2u);
+  EXPECT_TRUE(one.gvd[one.index(3, 3)]);
+  EXPECT_TRUE(gvd_connected_and_climbed_to(7, 6, blocked_of(rows)));
   EXPECT_THROW(brushfire(7, 6, blocked_of(rows), std::vector<std::uint8_t>(41, 0)), std::invalid_argument);
 }
 
@@ -227,7 +268,7 @@ TEST(Brushfire, PassageOneCellWideBetweenTwoObstaclesIsOnTheGvd) {
   const Brushfire b = brushfire(10, 5, blocked_of(rows));
   EXPECT_EQ(b.obstacle_count, 3u);
   for (std::size_t row = 1; row <= 3; ++row) EXPECT_TRUE(b.gvd[b.index(3, row)]) << row;
-  EXPECT_TRUE(gvd_connected_in_each_component(10, 5, blocked_of(rows)));
+  EXPECT_TRUE(gvd_connected_and_climbed_to(10, 5, blocked_of(rows)));
 }
 
 TEST(Brushfire, AxisParallelFrontIsOneCellWide) {
@@ -241,7 +282,7 @@ TEST(Brushfire, AxisParallelFrontIsOneCellWide) {
   for (std::size_t column = 6; column < 24; ++column)
     for (std::size_t row = 2; row <= 6; ++row) EXPECT_EQ(b.gvd[b.index(column, row)] != 0, row == 4) << column << ", " << row;
   EXPECT_EQ(b.distance[b.index(15, 4)], 3u);
-  EXPECT_TRUE(gvd_connected_in_each_component(30, 9, blocked_of(rows)));
+  EXPECT_TRUE(gvd_connected_and_climbed_to(30, 9, blocked_of(rows)));
 }
 
 // Random grids of separate rectangles (each one convex obstacle), some against the border.
@@ -275,6 +316,26 @@ TEST(Brushfire, ThinningKeepsEveryConnectionOfTheMeetingCellsOnRandomRectangles)
   }
 }
 
+// Random noise: every cell blocked with probability `density` — pockets, doors, single free
+// cells and diagonal squeezes of every kind.
+std::vector<std::uint8_t> random_noise(std::mt19937& random, std::size_t columns, std::size_t rows, double density) {
+  std::bernoulli_distribution blocked_cell(density);
+  std::vector<std::uint8_t> blocked(columns * rows);
+  for (auto& b : blocked) b = blocked_cell(random) ? 1 : 0;
+  return blocked;
+}
+
+TEST(Brushfire, GvdIsConnectedAndClimbedToInEachFreeComponentOfRandomGrids) {
+  std::mt19937 random(4711);
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t columns = 8 + random() % 40, rows = 6 + random() % 30;
+    const auto rectangles = random_rectangles(random, columns, rows);
+    EXPECT_TRUE(gvd_connected_and_climbed_to(columns, rows, rectangles)) << "rectangles, trial " << trial;
+    const auto noise = random_noise(random, columns, rows, 0.05 + 0.1 * (trial % 6));
+    EXPECT_TRUE(gvd_connected_and_climbed_to(columns, rows, noise)) << "noise, trial " << trial;
+  }
+}
+
 TEST(Brushfire, GvdIsConnectedInEachFreeComponentOfRoomsWithPosts) {
   // Walls from border to border cut the grid into rooms with a door each, posts inside: every
   // passage is between two obstacles (a wall and a post, or two walls), so each free component's
@@ -288,14 +349,14 @@ TEST(Brushfire, GvdIsConnectedInEachFreeComponentOfRoomsWithPosts) {
       "....@....@@...@......",
       "....@.........@...@..",
   };
-  EXPECT_TRUE(gvd_connected_in_each_component(21, 7, blocked_of(rows)));
+  EXPECT_TRUE(gvd_connected_and_climbed_to(21, 7, blocked_of(rows)));
   EXPECT_TRUE(thin_gvd_joins_what_the_thick_one_joins(21, 7, blocked_of(rows)));
 }
 
-TEST(Brushfire, DoorInAWallIsNoMeetingOfTwoObstacles) {
-  // A room whose wall (one obstacle) has a door, a post inside: the door is between two parts
-  // of the same obstacle, so the GVD round the post and the GVD outside are separate pieces —
-  // the limitation brushfire.hpp states.
+TEST(Brushfire, DoorInAWallIsOnTheGvdThatJoinsTheRoomToTheOutside) {
+  // A room whose wall (one obstacle) has a door, a post inside: the door is between two parts of
+  // the same obstacle — origins (6, 1) and (8, 1), not 8-adjacent — so the door cell is on the
+  // GVD and joins the GVD round the post to the GVD outside.
   const std::vector<std::string> rows = {
       "...............",
       ".@@@@@@.@@@@@@.",
@@ -307,7 +368,58 @@ TEST(Brushfire, DoorInAWallIsNoMeetingOfTwoObstacles) {
       ".@@@@@@@@@@@@@.",
       "...............",
   };
-  EXPECT_FALSE(gvd_connected_in_each_component(15, 9, blocked_of(rows)));
+  const Brushfire b = brushfire(15, 9, blocked_of(rows));
+  EXPECT_EQ(b.obstacle[b.index(7, 1)], b.obstacle[b.index(1, 1)]);
+  EXPECT_TRUE(b.gvd[b.index(7, 1)]);
+  EXPECT_TRUE(gvd_connected_and_climbed_to(15, 9, blocked_of(rows)));
+}
+
+TEST(Brushfire, PocketOfOneObstacleIsOnTheGvdFromItsMouthToItsEnd) {
+  // A deep U open at the bottom, 6 cells wide inside: the fronts from its two arms meet down the
+  // middle (columns 5 and 6, 3 from each arm), the outside's from above and below meet round it
+  // — one piece of GVD, into the pocket and round the U.
+  const std::vector<std::string> rows = {
+      "............",
+      "..@@@@@@@@..",
+      "..@......@..",
+      "..@......@..",
+      "..@......@..",
+      "..@......@..",
+      "..@......@..",
+      "..@......@..",
+      "..@......@..",
+      "..@......@..",
+      "..@......@..",
+      "............",
+      "............",
+  };
+  const Brushfire b = brushfire(12, 13, blocked_of(rows));
+  EXPECT_EQ(b.obstacle_count, 2u);
+  for (std::size_t row = 5; row <= 9; ++row) {
+    EXPECT_EQ(b.obstacle[b.index(5, row)], 1u) << row;  // inside: the U's fronts only
+    EXPECT_EQ(b.distance[b.index(5, row)], 3u) << row;
+    EXPECT_NE(b.gvd[b.index(5, row)], b.gvd[b.index(6, row)]) << row;  // one of the middle pair
+  }
+  EXPECT_TRUE(gvd_connected_and_climbed_to(12, 13, blocked_of(rows)));
+}
+
+TEST(Brushfire, TheOutsidesFrontsMeetBetweenTwoPostsFarApart) {
+  // Two posts in a low room: between them only the outside's fronts, from above and from below,
+  // meet — the GVD along the middle row joins the loops round the posts.
+  const std::vector<std::string> rows = {
+      "....................",
+      "...@..........@.....",
+      "....................",
+      "....................",
+      "...@..........@.....",
+      "....................",
+  };
+  const Brushfire b = brushfire(20, 6, blocked_of(rows));
+  for (std::size_t column = 6; column <= 11; ++column) {
+    EXPECT_EQ(b.obstacle[b.index(column, 2)], 0u) << column;
+    EXPECT_TRUE(b.gvd[b.index(column, 2)]) << column;
+  }
+  EXPECT_TRUE(gvd_connected_and_climbed_to(20, 6, blocked_of(rows)));
 }
 
 TEST(Brushfire, RefusesFlagsOfTheWrongSize) {
