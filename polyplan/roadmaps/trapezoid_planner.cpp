@@ -103,9 +103,7 @@ struct TrapezoidPlanner::Impl {
 };
 
 TrapezoidPlanner::TrapezoidPlanner(const CSpace& cspace, TrapezoidOptions options) {
-  const Stopwatch building;
-  impl_ = std::make_unique<Impl>(cspace, options, query_points(cspace.world()));
-  impl_->build_seconds = building.seconds();
+  impl_ = build_timed<Impl>(cspace, options, query_points(cspace.world()));
 }
 
 TrapezoidPlanner::~TrapezoidPlanner() = default;
@@ -116,10 +114,7 @@ const Roadmap& TrapezoidPlanner::roadmap() const { return impl_->roadmap; }
 PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOptions& options) {
   if (!impl_->decomposition.in_frame(query.start) || !impl_->decomposition.in_frame(query.goal)) {
     // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
-    const Stopwatch building;
-    impl_ = std::make_unique<Impl>(*impl_->cspace, impl_->options,
-                                   query_points(impl_->cspace->world(), {query.start, query.goal}));
-    impl_->build_seconds = building.seconds();
+    impl_ = build_timed<Impl>(*impl_->cspace, impl_->options, query_points(impl_->cspace->world(), {query.start, query.goal}));
   }
   Impl& g = *impl_;
   const Stopwatch querying;

@@ -135,9 +135,7 @@ struct VoronoiPlanner::Impl {
 };
 
 VoronoiPlanner::VoronoiPlanner(const CSpace& cspace, VoronoiOptions options) {
-  const Stopwatch building;
-  impl_ = std::make_unique<Impl>(cspace, options, query_points(cspace.world()));
-  impl_->build_seconds = building.seconds();
+  impl_ = build_timed<Impl>(cspace, options, query_points(cspace.world()));
 }
 
 VoronoiPlanner::~VoronoiPlanner() = default;
@@ -146,10 +144,8 @@ const VoronoiDiagram& VoronoiPlanner::diagram() const { return impl_->diagram; }
 
 PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptions& options) {
   if (!impl_->diagram.in_frame(query.start) || !impl_->diagram.in_frame(query.goal)) {
-    const Stopwatch building;
-    impl_ = std::make_unique<Impl>(*impl_->cspace, impl_->options,
-                                   query_points(impl_->cspace->world(), {query.start, query.goal}));
-    impl_->build_seconds = building.seconds();
+    // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
+    impl_ = build_timed<Impl>(*impl_->cspace, impl_->options, query_points(impl_->cspace->world(), {query.start, query.goal}));
   }
   Impl& g = *impl_;
   const Stopwatch querying;

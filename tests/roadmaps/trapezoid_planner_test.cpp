@@ -2,10 +2,9 @@
 // shortest path against the exact visibility-graph optimum on random worlds, and the answers
 // around pinch points, blocked ends and worlds without bounds.
 #include <polyplan/geometry/path_check.hpp>
-#include <polyplan/io/movingai_map.hpp>
-#include <polyplan/io/movingai_scenario.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include "movingai_fixtures.hpp"
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -239,32 +238,8 @@ TEST(TrapezoidPlanner, TheZigzagIsTheShortestPathOnTheRoadmapFromStartsOnWallsAn
   EXPECT_GT(compared, 60);
 }
 
-// The MovingAI maps traced into polygon worlds: the decomposition builds, and every scenario
-// query (a sample on lak303d) is answered with a valid path exactly when the reference length says
-// there is one, no shorter than that optimum.
-void answers_the_scenarios(const std::string& name, std::size_t stride, std::size_t at_least) {
-  const std::string dir = test::data_file("movingai");
-  const CSpace c(world_from_grid(read_movingai_map(dir + "/maps/" + name + ".map")));
-  TrapezoidPlanner planner(c);
-  const auto scenarios = read_scenarios(dir + "/scenarios/" + name + ".map.scen");
-  const auto reference = read_reference_lengths(dir + "/reference/" + name + ".csv", scenarios.size());
-  std::size_t answered = 0;
-  for (std::size_t i = 0; i < scenarios.size(); i += stride) {
-    if (i >= reference.size() || !reference[i]) continue;
-    const ScenarioQuery& q = scenarios[i];
-    const auto report = planner.plan(between({q.start_x, q.start_y}, {q.goal_x, q.goal_y}));
-    ++answered;
-    ASSERT_EQ(report.found, *reference[i] >= 0) << name << " query " << i << ": " << report.why_not;
-    if (!report.found) continue;
-    const PathCheck check = check_path(c, report.path);
-    EXPECT_TRUE(check.valid) << name << " query " << i << ": " << check.reason;
-    EXPECT_GE(report.length, *reference[i] - 1e-9 * std::max(1.0, *reference[i])) << name << " query " << i;
-  }
-  EXPECT_GE(answered, at_least);
-}
-
-TEST(TrapezoidPlannerOnMovingAi, ArenaAnswersEveryScenario) { answers_the_scenarios("arena", 1, 150); }
-TEST(TrapezoidPlannerOnMovingAi, Den312dAnswersEveryScenario) { answers_the_scenarios("den312d", 1, 300); }
-TEST(TrapezoidPlannerOnMovingAi, Lak303dAnswersASample) { answers_the_scenarios("lak303d", 10, 100); }
+TEST(TrapezoidPlannerOnMovingAi, ArenaAnswersEveryScenario) { test::expect_answers_to_the_scenarios<TrapezoidPlanner>("arena", 1, 150); }
+TEST(TrapezoidPlannerOnMovingAi, Den312dAnswersEveryScenario) { test::expect_answers_to_the_scenarios<TrapezoidPlanner>("den312d", 1, 300); }
+TEST(TrapezoidPlannerOnMovingAi, Lak303dAnswersASample) { test::expect_answers_to_the_scenarios<TrapezoidPlanner>("lak303d", 10, 100); }
 
 }  // namespace

@@ -4,9 +4,8 @@
 // what is left — on hand-made worlds, the shipped worlds and random ones.
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/internal/cgal_types.hpp>
-#include <polyplan/io/movingai_map.hpp>
-#include <polyplan/io/movingai_scenario.hpp>
 #include <polyplan/roadmaps/voronoi_planner.hpp>
+#include "movingai_fixtures.hpp"
 #include "world_fixtures.hpp"
 
 #include <CGAL/General_polygon_set_2.h>
@@ -216,32 +215,8 @@ TEST(VoronoiPlanner, OnRandomWorldsTheClearanceIsTheBestPossible) {
   EXPECT_GT(compared, 20);
 }
 
-// The MovingAI maps traced into polygon worlds: the diagram builds, and every scenario query (a
-// sample on lak303d) is answered with a valid path exactly when the reference says there is one,
-// and no shorter than that optimum.
-void answers_the_scenarios(const std::string& name, std::size_t stride, std::size_t at_least) {
-  const std::string dir = test::data_file("movingai");
-  const CSpace c(world_from_grid(read_movingai_map(dir + "/maps/" + name + ".map")));
-  VoronoiPlanner planner(c);
-  const auto scenarios = read_scenarios(dir + "/scenarios/" + name + ".map.scen");
-  const auto reference = read_reference_lengths(dir + "/reference/" + name + ".csv", scenarios.size());
-  std::size_t answered = 0;
-  for (std::size_t i = 0; i < scenarios.size(); i += stride) {
-    if (i >= reference.size() || !reference[i]) continue;
-    const ScenarioQuery& q = scenarios[i];
-    const auto report = planner.plan(between({q.start_x, q.start_y}, {q.goal_x, q.goal_y}));
-    ++answered;
-    ASSERT_EQ(report.found, *reference[i] >= 0) << name << " query " << i << ": " << report.why_not;
-    if (!report.found) continue;
-    const PathCheck check = check_path(c, report.path);
-    EXPECT_TRUE(check.valid) << name << " query " << i << ": " << check.reason;
-    EXPECT_GE(report.length, *reference[i] - 1e-9 * std::max(1.0, *reference[i])) << name << " query " << i;
-  }
-  EXPECT_GE(answered, at_least);
-}
-
-TEST(VoronoiPlannerOnMovingAi, ArenaAnswersEveryScenario) { answers_the_scenarios("arena", 1, 150); }
-TEST(VoronoiPlannerOnMovingAi, Den312dAnswersEveryScenario) { answers_the_scenarios("den312d", 1, 300); }
-TEST(VoronoiPlannerOnMovingAi, Lak303dAnswersASample) { answers_the_scenarios("lak303d", 10, 100); }
+TEST(VoronoiPlannerOnMovingAi, ArenaAnswersEveryScenario) { test::expect_answers_to_the_scenarios<VoronoiPlanner>("arena", 1, 150); }
+TEST(VoronoiPlannerOnMovingAi, Den312dAnswersEveryScenario) { test::expect_answers_to_the_scenarios<VoronoiPlanner>("den312d", 1, 300); }
+TEST(VoronoiPlannerOnMovingAi, Lak303dAnswersASample) { test::expect_answers_to_the_scenarios<VoronoiPlanner>("lak303d", 10, 100); }
 
 }  // namespace
