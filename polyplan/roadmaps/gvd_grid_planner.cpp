@@ -63,11 +63,7 @@ struct GvdGridPlanner::Impl {
   }
 };
 
-GvdGridPlanner::GvdGridPlanner(const CSpace& cspace, GvdGridOptions options) {
-  const Stopwatch building;
-  impl_ = std::make_unique<Impl>(cspace, options);
-  impl_->build_seconds = building.seconds();
-}
+GvdGridPlanner::GvdGridPlanner(const CSpace& cspace, GvdGridOptions options) : impl_(build_timed<Impl>(cspace, options)) {}
 
 GvdGridPlanner::~GvdGridPlanner() = default;
 

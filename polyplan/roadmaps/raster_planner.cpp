@@ -42,11 +42,7 @@ struct RasterPlanner::Impl {
   }
 };
 
-RasterPlanner::RasterPlanner(const CSpace& cspace, RasterOptions options) {
-  const Stopwatch building;
-  impl_ = std::make_unique<Impl>(cspace, options);
-  impl_->build_seconds = building.seconds();
-}
+RasterPlanner::RasterPlanner(const CSpace& cspace, RasterOptions options) : impl_(build_timed<Impl>(cspace, options)) {}
 
 RasterPlanner::~RasterPlanner() = default;
 

@@ -3,7 +3,7 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/roadmaps/channel_funnel.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/roadmaps/query_tally.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
 #include <algorithm>
@@ -117,20 +117,15 @@ PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOpt
     impl_ = build_timed<Impl>(*impl_->cspace, impl_->options, query_points(impl_->cspace->world(), {query.start, query.goal}));
   }
   Impl& g = *impl_;
-  const Stopwatch querying;
+  QueryTally tally;
   PlanReport<ExactPoint> report;
   g.record_facts(report.facts);
-  std::size_t expanded = 0, generated = 0;
-  double search_seconds = 0;
   if (options.record) {
     report.graph = g.graph();
     report.decomposition = g.cells();
   }
   const auto finish = [&]() {
-    report.facts.set("search.expanded", expanded);
-    report.facts.set("search.generated", generated);
-    report.facts.set("search.seconds", search_seconds);
-    report.facts.set("query_seconds", querying.seconds());
+    tally.write(report.facts);
     return report;
   };
 
@@ -155,9 +150,7 @@ PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOpt
     boost::clear_vertex(g.start_slot, g.roadmap);
     boost::clear_vertex(g.goal_slot, g.roadmap);
     for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(g.roadmap[v].exact);
-    expanded = result.expanded;
-    generated = result.generated;
-    search_seconds = result.seconds;
+    tally.count(result);
     if (!result.found) {  // the cells of a free component are joined by walls: another component
       report.why_not = "start and goal lie in different components of the free space";
       return finish();

@@ -3,6 +3,7 @@
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/internal/cspace_impl.hpp>
 #include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
+#include <polyplan/roadmaps/query_tally.hpp>
 #include <polyplan/roadmaps/stopwatch.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
@@ -155,19 +156,14 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const SearchOpt
     // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
     build(*impl_->cspace, impl_->kind, impl_->search, query_points(impl_->cspace->world(), {query.start, query.goal}));
   Impl& g = *impl_;
-  const Stopwatch querying;
+  QueryTally tally;
   PlanReport<ExactPoint> report;
   g.record_facts(report.facts);
   report.facts.set("search.algorithm", to_string(search.algorithm));
-  std::size_t expanded = 0, generated = 0;
-  double search_seconds = 0;
   if (options.record) report.graph = g.graph_picture();
   const auto finish = [&]() {
-    report.facts.set("search.expanded", expanded);
-    report.facts.set("search.generated", generated);
     report.facts.set("search.path_edges", report.path.empty() ? 0 : report.path.size() - 1);
-    report.facts.set("search.seconds", search_seconds);
-    report.facts.set("query_seconds", querying.seconds());
+    tally.write(report.facts);
     return report;
   };
 
@@ -194,9 +190,7 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const SearchOpt
       for (RoadmapVertexId v : result.path) report.path.push_back(g.roadmap[v].exact);
     boost::clear_vertex(g.start_slot, g.roadmap);
     boost::clear_vertex(g.goal_slot, g.roadmap);
-    expanded = result.expanded;
-    generated = result.generated;
-    search_seconds = result.seconds;
+    tally.count(result);
     if (!result.found) {  // cannot happen: one component means one path through its corners
       report.why_not = "no path in the visibility graph between start and goal";
       return finish();

@@ -3,7 +3,7 @@
 #include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/roadmaps/query_tally.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
@@ -148,17 +148,12 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
     impl_ = build_timed<Impl>(*impl_->cspace, impl_->options, query_points(impl_->cspace->world(), {query.start, query.goal}));
   }
   Impl& g = *impl_;
-  const Stopwatch querying;
+  QueryTally tally;
   PlanReport<ExactPoint> report;
   g.record_facts(report.facts);
-  std::size_t expanded = 0, generated = 0;
-  double search_seconds = 0;
   if (options.record) report.graph = g.graph();
   const auto finish = [&]() {
-    report.facts.set("search.expanded", expanded);
-    report.facts.set("search.generated", generated);
-    report.facts.set("search.seconds", search_seconds);
-    report.facts.set("query_seconds", querying.seconds());
+    tally.write(report.facts);
     return report;
   };
   // A path is returned only after the exact check; its clearance is measured on it.
@@ -245,9 +240,7 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
   searching.record_expanded = options.record;
   const auto result = shortest_path(roadmap, s, t, searching);
   for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(roadmap[v].exact);
-  expanded = result.expanded;
-  generated = result.generated;
-  search_seconds = result.seconds;
+  tally.count(result);
   if (!result.found) {  // cannot happen: the bottleneck joined them
     report.why_not = "no path on the Voronoi diagram at the bottleneck clearance";
     return finish();
