@@ -148,7 +148,9 @@ const Roadmap& VisibilityGraph::roadmap() const { return impl_->roadmap; }
 std::size_t VisibilityGraph::corner_count() const { return impl_->corners; }
 
 PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const QueryOptions& options) {
-  return plan(query, impl_->search, options);
+  // A copy: a query beyond the frame rebuilds impl_, and with it impl_->search.
+  const SearchOptions search = impl_->search;
+  return plan(query, search, options);
 }
 
 PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const SearchOptions& search, const QueryOptions& options) {
