@@ -1,5 +1,6 @@
 #include <polyplan/roadmaps/gvd_grid_planner.hpp>
 
+#include <polyplan/geometry/clearance.hpp>
 #include <polyplan/roadmaps/raster_grid.hpp>
 #include <polyplan/roadmaps/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
@@ -136,7 +137,14 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
 
     return_if_valid(*r.cspace, polyline_through_turns(r.raster, query.start, cells, query.goal),
                     "the GVD path joined to start and goal", report);
-    if (report.found) report.facts.set("clearance", r.clearance_of(nearest));
+    if (report.found) {
+      report.facts.set("gvd.clearance_bound", r.clearance_of(nearest));
+      // The shared word means the same for every planner: measured on the returned path.
+      const PathBottleneck narrowest = path_bottleneck(*r.cspace, report.path);
+      report.facts.set("clearance", narrowest.clearance);
+      report.facts.set("bottleneck.x", narrowest.at.x);
+      report.facts.set("bottleneck.y", narrowest.at.y);
+    }
   });
 }
 

@@ -55,10 +55,11 @@ class GvdGridPlanner final : public Planner<TranslatingRobot> {
   // them), roadmap.seconds (rasterising, brushfire and graph), raster.cells_per_axis, gvd.cells,
   // gvd.max_distance (the largest brushfire distance, in cells), raster.start_cell and
   // raster.goal_cell (the snapped cells), gvd.start_cell and gvd.goal_cell (where their climbs
-  // reach the GVD), search.* (along the GVD), query_seconds, and for a path found `clearance`:
-  // (d - 1/2) × the shorter cell side, d the smallest brushfire distance of the path's cells — a
-  // lower bound, in world units, on how far the path's cell centres stay from the C-obstacles and
-  // the walls (the joins to the exact start and goal are not covered). With QueryOptions::record,
+  // reach the GVD), search.* (along the GVD), query_seconds, and for a path found `clearance` and
+  // `bottleneck` {x, y} (the path's smallest distance to the C-obstacles and walls and where,
+  // measured on it: geometry/clearance.hpp) and gvd.clearance_bound: (d - 1/2) × the shorter cell
+  // side, d the smallest brushfire distance of the path's cells — what the grid alone promises for
+  // the path's cell centres (not for the joins to the exact start and goal). With QueryOptions::record,
   // `cells` holds the raster, the GVD as ridge cells and the distance field as values.
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
 

@@ -59,7 +59,8 @@ TEST(GvdGridPlanner, AlongTheMiddleOfACorridorWithItsExactClearance) {
   ASSERT_TRUE(along.found) << along.why_not;
   EXPECT_EQ(along.path, (std::vector<ExactPoint>{pt("5.5", "10.5"), pt("14.5", "10.5")}));  // straight: no turn kept
   EXPECT_DOUBLE_EQ(along.length, 9.0);
-  EXPECT_DOUBLE_EQ(along.facts.number("clearance"), 2.5);
+  EXPECT_DOUBLE_EQ(along.facts.number("gvd.clearance_bound"), 2.5);
+  EXPECT_DOUBLE_EQ(along.facts.number("clearance"), 2.5);  // measured: 2.5 from both walls
   EXPECT_EQ(along.facts.text("roadmap.kind"), "gvd-grid");
   EXPECT_EQ(along.facts.count("raster.cells_per_axis"), 20);
   EXPECT_EQ(along.facts.count("gvd.max_distance"), 3);
@@ -109,7 +110,7 @@ TEST(GvdGridPlanner, ClimbsToTheGvdFollowsItAndDescends) {
   }
   EXPECT_GE(stage, 1) << "no corner on the GVD";
   // The path's cells are at least 1 from the walls (rows 8 and 12): clearance (1 - 1/2) x 1.
-  EXPECT_DOUBLE_EQ(plan.facts.number("clearance"), 0.5);
+  EXPECT_DOUBLE_EQ(plan.facts.number("gvd.clearance_bound"), 0.5);
 }
 
 TEST(GvdGridPlanner, StartInAnObstacleIsAnAnswerWithItsReason) {
@@ -201,7 +202,7 @@ TEST(GvdGridPlanner, EveryOfficeQueryWithinOneFreeComponentIsFound) {
     ++found;
     const PathCheck check = check_path(cspace, plan.path);
     EXPECT_TRUE(check.valid) << q.name << ": " << check.reason;
-    EXPECT_GT(plan.facts.number("clearance"), 0) << q.name;
+    EXPECT_GT(plan.facts.number("gvd.clearance_bound"), 0) << q.name;
   }
   EXPECT_GT(together, 40);
   EXPECT_EQ(found, together);
