@@ -15,6 +15,8 @@ struct Vec2 {
   double x = 0, y = 0;
 };
 inline Vec2 approximate(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
+// A double is a rational: the point itself, exactly.
+inline ExactPoint exactly(Vec2 p) { return {Rational(p.x), Rational(p.y)}; }
 
 // The distance from p to the segment a-b (a point when a == b).
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b);

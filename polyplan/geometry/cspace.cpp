@@ -14,15 +14,6 @@ namespace {
 using namespace detail;
 using Impl = CSpace::Impl;
 
-Polygon box_polygon(const Bounds& b) {
-  Polygon box;
-  box.push_back(Point(to_ft(b.xmin), to_ft(b.ymin)));
-  box.push_back(Point(to_ft(b.xmax), to_ft(b.ymin)));
-  box.push_back(Point(to_ft(b.xmax), to_ft(b.ymax)));
-  box.push_back(Point(to_ft(b.xmin), to_ft(b.ymax)));
-  return box;
-}
-
 // The robot's extent in its frame: the box the reference point keeps so the robot stays inside
 // the bounds is the bounds shrunk by it.
 Bounds reference_box_of(const Bounds& bounds, const Robot& robot) {

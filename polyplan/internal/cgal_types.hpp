@@ -46,6 +46,16 @@ inline Polygon to_polygon(const Ring& ring) {
   return polygon;
 }
 
+// The box [xmin, xmax] x [ymin, ymax], counterclockwise.
+inline Polygon box_polygon(const Bounds& b) {
+  Polygon box;
+  box.push_back(to_point({b.xmin, b.ymin}));
+  box.push_back(to_point({b.xmax, b.ymin}));
+  box.push_back(to_point({b.xmax, b.ymax}));
+  box.push_back(to_point({b.xmin, b.ymax}));
+  return box;
+}
+
 inline PolygonH to_polygon(const PolygonWithHoles& p) {
   PolygonH result(to_polygon(p.outer));
   for (const auto& hole : p.holes) result.add_hole(to_polygon(hole));

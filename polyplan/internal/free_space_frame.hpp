@@ -8,6 +8,7 @@
 #include <polyplan/internal/cspace_impl.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 namespace polyplan::detail {
@@ -30,6 +31,21 @@ inline Bounds free_space_frame(const CSpace::Impl& cspace, const std::vector<Exa
   }
   const Rational margin = 2 * ((box.xmax - box.xmin) + (box.ymax - box.ymin)) + 1;
   return {box.xmin - margin, box.ymin - margin, box.xmax + margin, box.ymax + margin};
+}
+
+// The free space as the planners that cut it into cells take it: as it is with bounds, cut by its
+// frame without (the frame is returned, to tell the points inside it).
+struct FramedFreeSpace {
+  CSpace::Impl::PolygonSet free_set;
+  std::optional<Bounds> frame;
+};
+inline FramedFreeSpace framed_free_space(const CSpace::Impl& cspace, const std::vector<ExactPoint>& inside) {
+  FramedFreeSpace framed{cspace.free_set, std::nullopt};
+  if (framed.free_set.arrangement().unbounded_face()->contained()) {
+    framed.frame = free_space_frame(cspace, inside);
+    framed.free_set.intersection(box_polygon(*framed.frame));
+  }
+  return framed;
 }
 
 inline bool strictly_inside(const Bounds& box, const ExactPoint& p) {

@@ -29,15 +29,6 @@ using Arrangement = CSpace::Impl::Arrangement;
 // structure would cost as much to build as the decomposition itself.
 using PointLocation = CGAL::Arr_walk_along_line_point_location<Arrangement>;
 
-detail::Polygon box_polygon(const Bounds& b) {
-  detail::Polygon box;
-  box.push_back(to_point({b.xmin, b.ymin}));
-  box.push_back(to_point({b.xmax, b.ymin}));
-  box.push_back(to_point({b.xmax, b.ymax}));
-  box.push_back(to_point({b.xmin, b.ymax}));
-  return box;
-}
-
 // The point of the non-vertical edge `h` above or below p, exactly: its line at p's x.
 Point on_edge_at_x(Arrangement::Halfedge_const_handle h, const Point& p) {
   const Point &a = h->source()->point(), &b = h->target()->point();
@@ -108,13 +99,9 @@ struct TrapezoidalDecomposition::Impl {
   }
 
   Impl(const CSpace& cspace, const std::vector<ExactPoint>& inside) {
-    const CSpace::Impl& space = detail::CSpaceAccess::impl(cspace);
-    PolygonSet free_set = space.free_set;
-    if (free_set.arrangement().unbounded_face()->contained()) {
-      frame = detail::free_space_frame(space, inside);
-      free_set.intersection(box_polygon(*frame));
-    }
-    const Arrangement& boundary = free_set.arrangement();
+    detail::FramedFreeSpace framed = detail::framed_free_space(detail::CSpaceAccess::impl(cspace), inside);
+    frame = framed.frame;
+    const Arrangement& boundary = framed.free_set.arrangement();
     sweep = sweep_counts(boundary);
 
     Arrangement wall_arrangement;

@@ -148,12 +148,11 @@ const Roadmap& VisibilityGraph::roadmap() const { return impl_->roadmap; }
 std::size_t VisibilityGraph::corner_count() const { return impl_->corners; }
 
 PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const QueryOptions& options) {
-  // A copy: a query beyond the frame rebuilds impl_, and with it impl_->search.
-  const SearchOptions search = impl_->search;
-  return plan(query, search, options);
+  return plan(query, impl_->search, options);
 }
 
-PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const SearchOptions& search, const QueryOptions& options) {
+// `search` by value: a query beyond the frame rebuilds impl_, impl_->search with it.
+PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, SearchOptions search, const QueryOptions& options) {
   if (!impl_->triangulation.in_frame(query.start) || !impl_->triangulation.in_frame(query.goal))
     // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
     build(*impl_->cspace, impl_->kind, impl_->search, query_points(impl_->cspace->world(), {query.start, query.goal}));

@@ -47,7 +47,7 @@ class VisibilityGraph final : public Planner<TranslatingRobot> {
   // segment and nothing is searched (expanded 0). Not thread-safe: queries reuse the query slots.
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
   // The same with another search on the same graph (a course compares them).
-  PlanReport<ExactPoint> plan(const Query& query, const SearchOptions& search, const QueryOptions& options = {});
+  PlanReport<ExactPoint> plan(const Query& query, SearchOptions search, const QueryOptions& options = {});
 
  private:
   void build(const CSpace& cspace, VisibilityKind kind, SearchOptions search, const std::vector<ExactPoint>& inside);

@@ -29,8 +29,6 @@ double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 double norm(Vec2 a) { return std::hypot(a.x, a.y); }
 bool same(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
 
-ExactPoint exact(Vec2 p) { return {Rational(p.x), Rational(p.y)}; }
-
 double distance_to_site(Vec2 p, const BoundarySite& s) { return distance_to_segment(p, s.a, s.b); }
 
 // An edge's curve. Straight: the segment between its vertices, parameter the fraction. Parabolic:
@@ -78,18 +76,9 @@ struct VoronoiDiagram::Impl {
   std::vector<std::vector<std::size_t>> edges_of_site;  // the kept edges that bound each site's region
 
   Impl(const CSpace& c, const std::vector<ExactPoint>& inside) : cspace(&c) {
-    const CSpace::Impl& space = detail::CSpaceAccess::impl(c);
-    CSpace::Impl::PolygonSet free_set = space.free_set;
-    if (free_set.arrangement().unbounded_face()->contained()) {
-      frame = detail::free_space_frame(space, inside);
-      detail::Polygon box;
-      const Bounds& b = *frame;
-      for (const ExactPoint& p : {ExactPoint{b.xmin, b.ymin}, ExactPoint{b.xmax, b.ymin}, ExactPoint{b.xmax, b.ymax},
-                                  ExactPoint{b.xmin, b.ymax}})
-        box.push_back(detail::to_point(p));
-      free_set.intersection(box);
-    }
-    const auto& arrangement = free_set.arrangement();
+    const detail::FramedFreeSpace framed = detail::framed_free_space(detail::CSpaceAccess::impl(c), inside);
+    frame = framed.frame;
+    const auto& arrangement = framed.free_set.arrangement();
     for (auto e = arrangement.edges_begin(); e != arrangement.edges_end(); ++e) {
       const Vec2 a = approximate(detail::to_exact(e->source()->point())), b = approximate(detail::to_exact(e->target()->point()));
       if (!same(a, b)) sdg.insert(SitePoint(a.x, a.y), SitePoint(b.x, b.y));
@@ -164,7 +153,7 @@ struct VoronoiDiagram::Impl {
       const Vec2 middle = curve.point((curve.t_from + curve.t_to) / 2);
       if (!std::isfinite(middle.x) || !std::isfinite(middle.y)) continue;
       // Diagram edges never cross the boundary: one point tells the free ones.
-      if (cspace->locate(exact(middle)).kind != Location::Kind::free) continue;
+      if (cspace->locate(exactly(middle)).kind != Location::Kind::free) continue;
 
       const std::size_t id = edges.size(), from = vertex_of(f, vertex_of_face), to = vertex_of(g, vertex_of_face);
       curves.push_back(curve);
@@ -205,7 +194,7 @@ struct VoronoiDiagram::Impl {
       double step = 1e-3 * (1 + std::max(std::abs(at.x), std::abs(at.y)));
       for (int halving = 0; halving < 40; ++halving, step /= 2) {
         const Vec2 q = at + step * direction;
-        if (cspace->locate(exact(q)).kind == Location::Kind::free && check_segment(*cspace, p, exact(q)).valid) return q;
+        if (cspace->locate(exactly(q)).kind == Location::Kind::free && check_segment(*cspace, p, exactly(q)).valid) return q;
       }
     }
     return std::nullopt;
@@ -258,8 +247,9 @@ std::optional<VoronoiDiagram::Retraction> VoronoiDiagram::retract(const ExactPoi
   const Impl& d = *impl_;
   if (d.sites.empty() || d.cspace->locate(exact_p).kind == Location::Kind::blocked) return std::nullopt;
   Vec2 p = approximate(exact_p);
+  const double clearance = distance_to_site(p, d.sites[d.site_at(p)]);
   std::optional<Vec2> off_boundary;
-  if (distance_to_site(p, d.sites[d.site_at(p)]) == 0) {  // on the boundary: no direction away from it yet
+  if (clearance == 0) {  // on the boundary: no direction away from it yet
     off_boundary = d.step_off_boundary(exact_p);
     if (!off_boundary) return std::nullopt;
     p = *off_boundary;
@@ -296,7 +286,7 @@ std::optional<VoronoiDiagram::Retraction> VoronoiDiagram::retract(const ExactPoi
     }
   }
   if (!best) return std::nullopt;
-  return Retraction{*best, off_boundary};
+  return Retraction{*best, off_boundary, clearance};
 }
 
 }  // namespace polyplan

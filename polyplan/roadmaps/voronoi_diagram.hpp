@@ -89,6 +89,7 @@ class VoronoiDiagram {
   struct Retraction {
     CurvePoint on;
     std::optional<Vec2> off_boundary;
+    double clearance = 0;  // the point's own: its distance to the nearest boundary piece
   };
   std::optional<Retraction> retract(const ExactPoint& p) const;
 

@@ -19,8 +19,6 @@ namespace {
 
 constexpr double kClearanceTolerance = 1e-7;  // how far a sampled arc may come below r*
 
-ExactPoint exact(Vec2 p) { return {Rational(p.x), Rational(p.y)}; }
-
 // A piece of the graph searched for one query: a diagram edge between two parameters, or the
 // straight move from a query point to where it meets the diagram.
 struct Piece {
@@ -73,10 +71,10 @@ struct VoronoiPlanner::Impl {
     if (picture) return picture;
     auto g = std::make_shared<PlanGraph<ExactPoint>>();
     g->kind = "Voronoi diagram";
-    for (const DiagramVertex& v : diagram.vertices()) g->vertices.push_back(exact(v.at));
+    for (const DiagramVertex& v : diagram.vertices()) g->vertices.push_back(exactly(v.at));
     for (std::size_t e = 0; e < diagram.edges().size(); ++e) {
       g->edges.emplace_back(diagram.edges()[e].from, diagram.edges()[e].to);
-      g->bends.push_back(diagram.is_parabolic(e) ? std::optional<ExactPoint>(exact(diagram.bezier_control(
+      g->bends.push_back(diagram.is_parabolic(e) ? std::optional<ExactPoint>(exactly(diagram.bezier_control(
                                                        e, diagram.parameter_from(e), diagram.parameter_to(e))))
                                                  : std::nullopt);
     }
@@ -100,7 +98,7 @@ struct VoronoiPlanner::Impl {
     auto land = [&](std::size_t query, std::size_t landing, const ExactPoint& p, const VoronoiDiagram::Retraction& r) {
       const CurvePoint on = r.on;
       const Vec2 at = approximate(p), there = diagram.point(on.edge, on.parameter), corner = r.off_boundary.value_or(at);
-      pieces.push_back({query, landing, std::nullopt, r.off_boundary, 0, 0, clearance_at(*cspace, p),
+      pieces.push_back({query, landing, std::nullopt, r.off_boundary, 0, 0, r.clearance,
                         std::hypot(at.x - corner.x, at.y - corner.y) + std::hypot(corner.x - there.x, corner.y - there.y), true});
       const DiagramEdge& edge = diagram.edges()[on.edge];
       for (const auto& [end, t] : {std::pair{edge.from, diagram.parameter_from(on.edge)}, std::pair{edge.to, diagram.parameter_to(on.edge)}})
@@ -221,11 +219,11 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
 
   // The shortest path over the pieces at least as clear as the bottleneck.
   Roadmap roadmap;
-  for (const DiagramVertex& v : g.diagram.vertices()) add_vertex(roadmap, exact(v.at));
+  for (const DiagramVertex& v : g.diagram.vertices()) add_vertex(roadmap, exactly(v.at));
   add_vertex(roadmap, query.start);
   add_vertex(roadmap, query.goal);
-  add_vertex(roadmap, exact(g.diagram.point(from->on.edge, from->on.parameter)));
-  add_vertex(roadmap, exact(g.diagram.point(to->on.edge, to->on.parameter)));
+  add_vertex(roadmap, exactly(g.diagram.point(from->on.edge, from->on.parameter)));
+  add_vertex(roadmap, exactly(g.diagram.point(to->on.edge, to->on.parameter)));
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> piece_between;
   for (std::size_t i = 0; i < pieces.size(); ++i) {
     const Piece& piece = pieces[i];
@@ -259,7 +257,7 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
     g.sample(piece, forward ? piece.t_u : piece.t_v, forward ? piece.t_v : piece.t_u, *bottleneck, points);
   }
   report.path.push_back(query.start);
-  for (std::size_t i = 0; i + 1 < points.size(); ++i) report.path.push_back(exact(points[i]));
+  for (std::size_t i = 0; i + 1 < points.size(); ++i) report.path.push_back(exactly(points[i]));
   report.path.push_back(query.goal);
   report.path = without_straight_corners(report.path);
   if (report.path.size() == 1) report.path.push_back(query.goal);
