@@ -2,6 +2,7 @@
 // The world a file describes: obstacles, bounds, robot, queries — all in exact numbers.
 #include <polyplan/geometry/rational.hpp>
 
+#include <cmath>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,7 +24,14 @@ struct Bounds {
 struct Query {
   ExactPoint start, goal;
   std::string name;  // "start/goal" or "queries[2]", for messages
+  // A rotating robot's orientation at the start and at the goal, in degrees counter-clockwise
+  // (the file's [x, y, theta]); none for [x, y]: the robot as its parts are written, 0 degrees.
+  // Translating planners plan for the robot at 0 degrees (cli: a theta other than 0 needs
+  // --planner rotation).
+  std::optional<double> start_theta = std::nullopt, goal_theta = std::nullopt;
 };
+
+
 
 // A translating robot: its parts in the robot frame; the reference point is the origin.
 // No parts means a point robot.
@@ -47,6 +55,15 @@ struct World {
 inline std::vector<ExactPoint> query_points(const World& world, std::vector<ExactPoint> more = {}) {
   for (const Query& q : world.queries) more.insert(more.end(), {q.start, q.goal});
   return more;
+}
+
+// Whether a query gives an orientation other than 0 degrees (modulo 360): only the rotation
+// planner answers such a world.
+inline bool turns_the_robot(const World& world) {
+  const auto turned = [](const std::optional<double>& theta) { return theta && std::fmod(*theta, 360.0) != 0; };
+  for (const Query& q : world.queries)
+    if (turned(q.start_theta) || turned(q.goal_theta)) return true;
+  return false;
 }
 
 }  // namespace polyplan

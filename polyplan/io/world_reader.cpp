@@ -33,10 +33,29 @@ class Reader : public detail::JsonFileReader {
 
   ExactPoint point(const json& v, const std::string& object) const {
     if (!v.is_array() || v.size() < 2) fail(object, "expected a point [x, y], got " + abbreviated(v));
-    if (v.size() == 3)
-      fail(object, "orientation given ([x, y, theta]) but rotating robots are not supported yet");
     if (v.size() != 2) fail(object, "expected a point [x, y], got " + abbreviated(v));
     return {number(v[0], object + "[0]"), number(v[1], object + "[1]")};
+  }
+
+  // A start or goal: [x, y], or [x, y, theta] with theta in degrees (a rotating robot).
+  void pose(const json& v, const std::string& object, ExactPoint& position, std::optional<double>& theta) const {
+    if (!v.is_array() || v.size() < 2 || v.size() > 3)
+      fail(object, "expected a position [x, y] or a pose [x, y, theta] (theta in degrees), got " + abbreviated(v));
+    position = {number(v[0], object + "[0]"), number(v[1], object + "[1]")};
+    if (v.size() == 3) {
+      const Rational degrees = number(v[2], object + "[2] (theta, degrees)");
+      if (abs(degrees) > 1e6) fail(object + "[2]", "theta " + to_string(degrees) + " degrees: expected an angle within ±1e6 degrees");
+      theta = to_double(degrees);
+    }
+  }
+
+  Query query(const json& start, const json& goal, const std::string& start_object, const std::string& goal_object,
+              std::string name) const {
+    Query q;
+    pose(start, start_object, q.start, q.start_theta);
+    pose(goal, goal_object, q.goal, q.goal_theta);
+    q.name = std::move(name);
+    return q;
   }
 
   Ring ring(const json& v, const std::string& object) const {
@@ -118,7 +137,7 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
 
   if (root.contains("start") != root.contains("goal"))
     r.fail("world", root.contains("start") ? "missing field \"goal\" (start is given)" : "missing field \"start\" (goal is given)");
-  if (root.contains("start")) world.queries.push_back({r.point(root["start"], "start"), r.point(root["goal"], "goal"), "start/goal"});
+  if (root.contains("start")) world.queries.push_back(r.query(root["start"], root["goal"], "start", "goal", "start/goal"));
   if (root.contains("queries")) {
     const json& queries = root["queries"];
     if (!queries.is_array()) r.fail("queries", "expected a list of {\"start\", \"goal\"}");
@@ -127,8 +146,8 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
       const json& q = queries[i];
       if (!q.is_object()) r.fail(object, "expected {\"start\": [x, y], \"goal\": [x, y]}");
       r.warn_unknown(q, object, {"start", "goal"}, warnings);
-      world.queries.push_back({r.point(r.required(q, "start", object), object + ".start"),
-                               r.point(r.required(q, "goal", object), object + ".goal"), object});
+      world.queries.push_back(r.query(r.required(q, "start", object), r.required(q, "goal", object), object + ".start",
+                                      object + ".goal", object));
     }
   }
 

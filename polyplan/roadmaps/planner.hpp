@@ -9,6 +9,7 @@
 // built from, and what a query is. Planners of one space share everything above them.
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/rotation.hpp>
 #include <polyplan/geometry/world.hpp>
 #include <polyplan/roadmaps/plan_report.hpp>
 
@@ -23,6 +24,18 @@ struct TranslatingRobot {
   using Problem = CSpace;
   using Query = polyplan::Query;
   static constexpr std::string_view description = "a polygon robot translating in a polygon world";
+};
+
+// A polygon robot that translates and turns about its reference point among polygon obstacles:
+// configurations are poses (exact position, exact rotation). A path's consecutive poses differ
+// either in position only (a straight translation) or in rotation only (a turn on the spot, the
+// short way, by turn_degrees). The problem is the world itself: the planner builds the exact
+// C-space of each orientation it uses. `polyplan plan --planner rotation` answers these.
+struct RotatingRobot {
+  using Configuration = Pose;
+  using Problem = World;
+  using Query = polyplan::Query;
+  static constexpr std::string_view description = "a polygon robot translating and turning in a polygon world";
 };
 
 // A planar n-link arm among obstacle polygons and points: configurations are relative joint

@@ -22,4 +22,11 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
   return registry;
 }
 
+// Every planner of rotating polygon robots.
+template <>
+const PlannerRegistry<RotatingRobot>& planners<RotatingRobot>() {
+  static const PlannerRegistry<RotatingRobot> registry{};
+  return registry;
+}
+
 }  // namespace polyplan

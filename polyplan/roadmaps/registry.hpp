@@ -83,11 +83,13 @@ class PlannerRegistry {
 };
 
 // The planners of a configuration space. Specialised (declared next to its space's list):
-// planners<TranslatingRobot>() below, planners<PlanarArm>() in arm/arm_registry.hpp.
+// planners<TranslatingRobot>() and planners<RotatingRobot>() below, planners<PlanarArm>() in arm/arm_registry.hpp.
 template <class Space>
 const PlannerRegistry<Space>& planners();
 
 template <>
 const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>();
+template <>
+const PlannerRegistry<RotatingRobot>& planners<RotatingRobot>();
 
 }  // namespace polyplan

@@ -1,0 +1,52 @@
+#pragma once
+// Exact rotations of the plane and the poses of a rotating robot.
+//
+// A rotation is a pair of rationals (sin, cos) with sin² + cos² = 1 exactly: every rotated point
+// of a rational point is rational, and distances to the centre are kept exactly, so a rotated
+// robot is an exact polygon and its C-space is exact. Most angles have no such pair; CGAL's
+// rational_rotation_approximation (Canny, Donald and Ressler) finds one within a stated
+// tolerance of the requested angle, from a Pythagorean triple.
+#include <polyplan/geometry/rational.hpp>
+#include <polyplan/geometry/world.hpp>
+
+#include <string>
+
+namespace polyplan {
+
+// How far an exact rotation may be from the angle asked for, in radians.
+inline constexpr double rotation_tolerance_radians = 1e-10;
+
+struct Rotation {
+  Rational sin{0}, cos{1};
+  friend bool operator==(const Rotation& a, const Rotation& b) { return a.sin == b.sin && a.cos == b.cos; }
+};
+
+// The exact rotation nearest (within rotation_tolerance_radians) to `degrees`, counter-clockwise.
+// Multiples of 90 degrees are exact. Throws std::invalid_argument for an angle that is not finite.
+Rotation exact_rotation(double degrees);
+
+// The angle of an exact rotation in degrees, in (-180, 180] (atan2 of the doubles: what it is,
+// to double precision).
+double degrees_of(const Rotation& rotation);
+
+// The counter-clockwise angle from `from` to `to` in (-180, 180] degrees (the short way).
+double turn_degrees(const Rotation& from, const Rotation& to);
+
+ExactPoint rotate(const ExactPoint& p, const Rotation& rotation);
+
+// The robot turned about its reference point (the origin of its frame).
+Robot rotated(const Robot& robot, const Rotation& rotation);
+
+// A rotating robot's configuration: its reference point's exact position and its exact rotation.
+// `degrees` is the rotation's angle as the planner names it (a layer's nominal angle, or the
+// query's theta); the exact rotation is within rotation_tolerance_radians of it.
+struct Pose {
+  ExactPoint position;
+  Rotation rotation;
+  double degrees = 0;
+};
+
+// "[3/2, 7, 60°]": a pose as messages name it.
+std::string to_string(const Pose& pose);
+
+}  // namespace polyplan
