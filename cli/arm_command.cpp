@@ -50,7 +50,7 @@ int run_arm(const ArmCommand& command) {
   for (const auto& q : problem.queries)
     if (command.query.empty() || q.name == command.query) queries.push_back(&q);
   if (queries.empty()) throw InputError(command.file + ": no query named " + command.query);
-  const auto planner = command.planner->make(problem);
+  const auto planner = command.planner->make<PlanarArm>(problem);
 
   const bool pictures = !command.svg.empty() || !command.strobe.empty();
   nlohmann::json answers = nlohmann::json::array();
@@ -59,7 +59,7 @@ int run_arm(const ArmCommand& command) {
     answers.push_back(plan_json(report, query->name));
     if (command.json.empty()) std::cout << report_line(query->name, report, " rad", "motion") << '\n';
     if (!pictures) continue;
-    std::string title = file_name(command.file) + " · " + query->name + " · " + command.planner->entry().name;
+    std::string title = file_name(command.file) + " · " + query->name + " · " + command.planner->name();
     for (const auto& [name, value] : command.planner->values()) title += " · " + name + " " + value;
     try {
       using Kind = ArmPictureOptions::Kind;

@@ -1,17 +1,20 @@
 // polyplan plan WORLD.json [--planner NAME] [--option NAME=VALUE]... [--NAME VALUE]...
 //                         [--json FILE|-] [--svg OUT.svg]
-// The world's queries answered by one planner of the registry, built once.
+// The world's queries answered by one planner, built once: a translating robot's planner
+// (planners<TranslatingRobot>) or a rotating robot's (planners<RotatingRobot>).
 #include "cli/command.hpp"
 #include "cli/planner_choice.hpp"
 #include "cli/report_output.hpp"
 
 #include <polyplan/draw/plan_svg.hpp>
+#include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/roadmaps/plan_json.hpp>
 #include <polyplan/roadmaps/registry.hpp>
 
 #include <iostream>
+#include <type_traits>
 
 namespace polyplan::cli {
 namespace {
@@ -20,8 +23,30 @@ struct PlanCommand {
   std::string world;
   std::string json;
   std::string svg;
-  std::unique_ptr<PlannerChoice<TranslatingRobot>> planner;
+  std::unique_ptr<PlannerChoice<TranslatingRobot, RotatingRobot>> planner;
 };
+
+// The queries answered, printed and drawn; `problem` is what the space's planners are built from.
+template <class Space>
+int answer(const PlanCommand& command, const World& world, const typename Space::Problem& problem) {
+  const auto planner = command.planner->make<Space>(problem);
+  std::vector<PlanReport<typename Space::Configuration>> reports;
+  const QueryOptions query_options{!command.svg.empty()};  // the picture shows the roadmap and the search
+  for (const Query& q : world.queries) reports.push_back(planner->plan(q, query_options));
+
+  if (!command.svg.empty()) draw_plan(problem, reports).write(command.svg);
+  if (!command.json.empty()) {
+    nlohmann::json answers = nlohmann::json::array();
+    for (std::size_t i = 0; i < reports.size(); ++i) answers.push_back(plan_json(reports[i], world.queries[i].name));
+    write_json(one_or_array(std::move(answers)), command.json);
+  }
+  if (command.json != "-") {
+    const std::string steps = std::is_same_v<Space, RotatingRobot> ? "motion" : "segment";
+    for (std::size_t i = 0; i < reports.size(); ++i) std::cout << report_line(world.queries[i].name, reports[i], "", steps) << '\n';
+    if (!command.svg.empty()) std::cout << "picture: " << command.svg << '\n';
+  }
+  return ok;
+}
 
 int run_plan(const PlanCommand& command) {
   command.planner->values();  // a bad planner or option is reported before any work
@@ -29,25 +54,15 @@ int run_plan(const PlanCommand& command) {
   const World world = read_world(command.world, &warnings);
   print_warnings(warnings);
   if (world.queries.empty()) throw InputError(command.world + ": world: no start/goal and no queries to plan");
+  // A rotating robot's planner builds the C-space of each orientation itself, and says which
+  // start or goal is not free at which angle.
+  if (command.planner->chose<RotatingRobot>()) return answer<RotatingRobot>(command, world, world);
+  if (turns_the_robot(world))
+    throw InputError(command.world + ": a start or goal has an orientation other than 0 degrees ([x, y, theta]); the planner " +
+                     command.planner->name() + " only translates the robot as its file draws it: use --planner rotation");
   const CSpace cspace(world);
   cspace.require_free_queries();
-  const auto planner = command.planner->make(cspace);
-
-  std::vector<PlanReport<ExactPoint>> reports;
-  const QueryOptions query_options{!command.svg.empty()};  // the picture shows the roadmap and the search
-  for (const Query& q : world.queries) reports.push_back(planner->plan(q, query_options));
-
-  if (!command.svg.empty()) draw_plan(cspace, reports).write(command.svg);
-  if (!command.json.empty()) {
-    nlohmann::json answers = nlohmann::json::array();
-    for (std::size_t i = 0; i < reports.size(); ++i) answers.push_back(plan_json(reports[i], world.queries[i].name));
-    write_json(one_or_array(std::move(answers)), command.json);
-  }
-  if (command.json != "-") {
-    for (std::size_t i = 0; i < reports.size(); ++i) std::cout << report_line(world.queries[i].name, reports[i], "", "segment") << '\n';
-    if (!command.svg.empty()) std::cout << "picture: " << command.svg << '\n';
-  }
-  return ok;
+  return answer<TranslatingRobot>(command, world, cspace);
 }
 
 }  // namespace
@@ -58,7 +73,7 @@ void add_plan_command(CLI::App& app, Action& run) {
   plan->add_option("world", command->world, "World file (JSON)")->required();
   plan->add_option("--json", command->json, "Write the plan(s) as JSON to this file ('-' for standard output)");
   plan->add_option("--svg", command->svg, "Draw world, C-obstacles, the planner's roadmap or cells, and the path(s)");
-  command->planner = std::make_unique<PlannerChoice<TranslatingRobot>>(
+  command->planner = std::make_unique<PlannerChoice<TranslatingRobot, RotatingRobot>>(
       *plan, "--planner", std::vector<std::string>{"--roadmap"}, "visibility",
       std::set<std::string>{"--planner", "--roadmap", "--option", "--json", "--svg", "--help"});
   plan->callback([command, &run] { run = [command] { return run_plan(*command); }; });

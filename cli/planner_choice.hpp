@@ -1,9 +1,10 @@
 #pragma once
-// How a command picks a planner of a configuration space and sets its options, for every planner
-// of the space's registry alike: `--planner NAME` (and the aliases older scripts use),
-// `--option NAME=VALUE` (repeatable), and `--NAME VALUE` for every option name some planner of
-// the space has (`--NAME` / `--no-NAME` for true-or-false options). The flags come from the
-// registry, so a new planner's options reach the command line without code here.
+// How a command picks a planner of one or more configuration spaces (`polyplan plan` answers
+// translating and rotating robots) and sets its options, for every planner of the spaces'
+// registries alike: `--planner NAME` (and the aliases older scripts use), `--option NAME=VALUE`
+// (repeatable), and `--NAME VALUE` for every option name some planner has (`--NAME` /
+// `--no-NAME` for true-or-false options). The flags come from the registries, so a new planner's
+// options reach the command line without code here.
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/roadmaps/registry.hpp>
 
@@ -18,7 +19,7 @@
 
 namespace polyplan::cli {
 
-template <class Space>
+template <class... Spaces>
 class PlannerChoice {
  public:
   // `flag` is the primary flag ("--planner", "--method"); `aliases` name it too ("--roadmap").
@@ -26,22 +27,27 @@ class PlannerChoice {
   PlannerChoice(CLI::App& command, const std::string& flag, const std::vector<std::string>& aliases,
                 std::string default_planner, const std::set<std::string>& reserved)
       : flag_(flag), name_(std::move(default_planner)) {
-    const PlannerRegistry<Space>& registry = planners<Space>();
     std::string flags = flag;
     for (const auto& a : aliases) flags += "," + a;
-    command.add_option(flags, name_, "planner: " + registry.names() + " (polyplan planners lists them)")->capture_default_str();
+    command.add_option(flags, name_, "planner: " + names() + " (polyplan planners lists them)")->capture_default_str();
     command.add_option("--option", assignments_, "set a planner option: NAME=VALUE (repeatable)")->allow_extra_args(false);
 
     // One typed flag per option name, whichever planners have it.
     std::map<std::string, std::pair<OptionInfo, std::vector<std::string>>> options;  // name → info, planners
-    for (const auto& entry : registry.entries())
-      for (const OptionInfo& option : entry.options) {
-        auto& [info, owners] = options[option.name];
-        if (owners.empty()) info = option;
-        else if (info.flag != option.flag)
-          throw std::logic_error("the option " + option.name + " is a flag for some planners and takes a value for others");
-        owners.push_back(entry.name);
+    std::set<std::string> planner_names;
+    const auto collect = [&](const auto& registry) {
+      for (const auto& entry : registry.entries()) {
+        if (!planner_names.insert(entry.name).second) throw std::logic_error("two spaces register a planner " + entry.name);
+        for (const OptionInfo& option : entry.options) {
+          auto& [info, owners] = options[option.name];
+          if (owners.empty()) info = option;
+          else if (info.flag != option.flag)
+            throw std::logic_error("the option " + option.name + " is a flag for some planners and takes a value for others");
+          owners.push_back(entry.name);
+        }
       }
+    };
+    (collect(planners<Spaces>()), ...);
     for (const auto& [name, described] : options) {
       const auto& [info, owners] = described;
       if (reserved.count("--" + name)) throw std::logic_error("the planner option " + name + " shadows a command flag");
@@ -64,24 +70,28 @@ class PlannerChoice {
     return flag;
   }
 
-  // The chosen planner's entry; InputError for a name nobody registered.
-  const PlannerEntry<Space>& entry() const {
-    const PlannerEntry<Space>* found = planners<Space>().find(name_);
-    if (!found)
-      throw InputError(flag_ + ": unknown planner \"" + name_ + "\" (" + planners<Space>().names() + ")");
-    return *found;
+  // Whether the chosen planner plans in `Space`.
+  template <class Space>
+  bool chose() const {
+    return planners<Space>().find(name_) != nullptr;
+  }
+
+  // The chosen planner's name and options; InputError for a name nobody registered.
+  const std::string& name() const {
+    chosen_options();
+    return name_;
   }
 
   // Every option given, checked against the chosen planner: InputError naming the flag for one
   // it does not have, or for one given twice.
   OptionValues values() const {
-    const PlannerEntry<Space>& chosen = entry();
+    const std::vector<OptionInfo>& options = chosen_options();
     OptionValues values;
     std::set<std::string> given;
     const auto add = [&](const std::string& name, const std::string& value, const std::string& as) {
       bool known = false;
-      for (const OptionInfo& o : chosen.options) known |= o.name == name;
-      if (!known) throw InputError(as + ": the planner " + chosen.name + " has no option " + name + " (" + option_names(chosen) + ")");
+      for (const OptionInfo& o : options) known |= o.name == name;
+      if (!known) throw InputError(as + ": the planner " + name_ + " has no option " + name + " (" + option_names(options) + ")");
       if (!given.insert(name).second) throw InputError(as + ": the option " + name + " is given twice");
       values.emplace_back(name, value);
     };
@@ -98,14 +108,36 @@ class PlannerChoice {
     return values;
   }
 
-  // The planner built for `problem` with the options given.
-  std::unique_ptr<Planner<Space>> make(const typename Space::Problem& problem) const { return entry().make(problem, values()); }
+  // The planner built for `problem` with the options given; the chosen planner must plan in
+  // `Space` (chose<Space>()).
+  template <class Space>
+  std::unique_ptr<Planner<Space>> make(const typename Space::Problem& problem) const {
+    const PlannerEntry<Space>* entry = planners<Space>().find(name());
+    if (!entry) throw std::logic_error("the planner " + name_ + " does not plan in this space");
+    return entry->make(problem, values());
+  }
 
  private:
-  static std::string option_names(const PlannerEntry<Space>& entry) {
-    if (entry.options.empty()) return "it takes none";
+  static std::string names() {
+    std::string all;
+    ((all += (all.empty() ? "" : ", ") + planners<Spaces>().names()), ...);
+    return all;
+  }
+
+  const std::vector<OptionInfo>& chosen_options() const {
+    const std::vector<OptionInfo>* options = nullptr;
+    const auto look = [&](const auto& registry) {
+      if (const auto* entry = registry.find(name_)) options = &entry->options;
+    };
+    (look(planners<Spaces>()), ...);
+    if (!options) throw InputError(flag_ + ": unknown planner \"" + name_ + "\" (" + names() + ")");
+    return *options;
+  }
+
+  static std::string option_names(const std::vector<OptionInfo>& options) {
+    if (options.empty()) return "it takes none";
     std::string names = "its options:";
-    for (const OptionInfo& o : entry.options) names += " " + o.name;
+    for (const OptionInfo& o : options) names += " " + o.name;
     return names;
   }
 

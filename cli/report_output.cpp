@@ -2,6 +2,7 @@
 
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/rational.hpp>
+#include <polyplan/geometry/rotation.hpp>
 
 #include <cstdio>
 
@@ -27,6 +28,7 @@ std::string report_line(const std::string& query, const PlanReport<Configuration
 
 template std::string report_line(const std::string&, const PlanReport<ExactPoint>&, const std::string&, const std::string&);
 template std::string report_line(const std::string&, const PlanReport<JointAngles>&, const std::string&, const std::string&);
+template std::string report_line(const std::string&, const PlanReport<Pose>&, const std::string&, const std::string&);
 
 nlohmann::json one_or_array(nlohmann::json answers) { return answers.size() == 1 ? answers[0] : answers; }
 

@@ -609,18 +609,6 @@ void draw_panel(svg::Drawing& d, const Layout& l, const CellGrid& image,
 
 // ---------------------------------------------------------------------------------------------
 
-// From theme::arm_start at t = 0 to theme::arm_goal at t = 1, channel by channel ("#rrggbb").
-std::string hex_colour(double t) {
-  const auto channel = [](const char* colour, int i) { return static_cast<int>(std::strtol(std::string(colour + 1 + 2 * i, 2).c_str(), nullptr, 16)); };
-  const auto mix = [&](int i) {
-    const int a = channel(theme::arm_start, i), b = channel(theme::arm_goal, i);
-    return static_cast<int>(std::lround(a + (b - a) * std::clamp(t, 0.0, 1.0)));
-  };
-  char buffer[8];
-  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", mix(0), mix(1), mix(2));
-  return buffer;
-}
-
 // "1st", "2nd", "3rd", "4th", …, "11th", "12th", "13th", "21st", …
 std::string ordinal(std::size_t k) {
   const std::size_t tens = k % 100, units = k % 10;
@@ -677,7 +665,7 @@ svg::Drawing strobe_drawing(const ArmPlanPicture& picture, std::size_t every_kth
     // In between, translucent, so that where the arm lingers shows darker.
     for (std::size_t i = every_kth; i < last; i += every_kth) {
       const double t = static_cast<double>(i) / static_cast<double>(last);
-      const std::string colour = hex_colour(t);
+      const std::string colour = theme::start_to_goal(t);
       d.begin_group("class=\"strobe-configuration\"");
       draw_configuration(d, arm, motion[i], link_look(arm, colour, colour, 0.45), false);
       d.end_group();
@@ -698,7 +686,7 @@ svg::Drawing strobe_drawing(const ArmPlanPicture& picture, std::size_t every_kth
     if (drawn > 0) {
       const std::string k = every_kth == 1 ? "every configuration" : "every " + ordinal(every_kth) + " configuration";
       d.legend(k + " (" + std::to_string(drawn) + " of " + std::to_string(motion.size()) + "), blue → red",
-               link_look(arm, hex_colour(0.5), hex_colour(0.5), 0.45).body);
+               link_look(arm, theme::start_to_goal(0.5), theme::start_to_goal(0.5), 0.45).body);
     }
   }
   draw_base(d);

@@ -1,7 +1,12 @@
 #pragma once
 // polyplan's one colour theme: every picture takes its colours from here, by role, so that an
 // obstacle, a start or a path looks the same in a world, a C-space, a plan and an arm animation.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 
 namespace polyplan::theme {
 
@@ -68,5 +73,18 @@ inline constexpr const char* arm_goal = "#d62728";
 inline constexpr const char* arm_goal_edge = "#8f1a1b";
 inline constexpr const char* reach = "#9a9a9a";
 inline constexpr const char* trace = "#555";
+
+// From arm_start at t = 0 to arm_goal at t = 1, channel by channel ("#rrggbb"): the colour of a
+// strobe's configurations along a motion.
+inline std::string start_to_goal(double t) {
+  const auto channel = [](const char* colour, int i) { return static_cast<int>(std::strtol(std::string(colour + 1 + 2 * i, 2).c_str(), nullptr, 16)); };
+  const auto mix = [&](int i) {
+    const int a = channel(arm_start, i), b = channel(arm_goal, i);
+    return static_cast<int>(std::lround(a + (b - a) * std::clamp(t, 0.0, 1.0)));
+  };
+  char buffer[8];
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", mix(0), mix(1), mix(2));
+  return buffer;
+}
 
 }  // namespace polyplan::theme

@@ -187,9 +187,13 @@ svg::Box2 view_box(const World& world, const CSpace& cspace) {
   return box;  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
 }
 
-void draw_world(svg::Drawing& drawing, const World& world) {
+void draw_surroundings(svg::Drawing& drawing, const World& world) {
   draw_bounds(drawing, world);
   draw_obstacles(drawing, world);
+}
+
+void draw_world(svg::Drawing& drawing, const World& world) {
+  draw_surroundings(drawing, world);
   draw_robot_at_start(drawing, world);
   draw_queries(drawing, world);
 }

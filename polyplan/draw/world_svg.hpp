@@ -15,6 +15,9 @@ namespace polyplan {
 // and the robot at the first start ({0, 0, 1, 1} when there is nothing at all).
 svg::Box2 view_box(const World& world, const CSpace& cspace);
 
+// The bounds and the obstacles (with holes), a legend entry each: the world without its robot.
+void draw_surroundings(svg::Drawing& drawing, const World& world);
+
 // The world as its file describes it: bounds, obstacles (with holes), the robot placed at the
 // first start, and the starts and goals; a legend entry each.
 void draw_world(svg::Drawing& drawing, const World& world);

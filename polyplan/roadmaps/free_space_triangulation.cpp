@@ -197,6 +197,9 @@ FreeSpaceTriangulation::FreeSpaceTriangulation(const CSpace::Impl& cspace, const
     for (int i = 0; i < 4; ++i) t.cdt.insert_constraint(frame[i], frame[(i + 1) % 4]);
   }
 
+  // No free space at all (the robot fits nowhere): no triangles, nothing is visible or free.
+  if (t.cdt.dimension() < 2) return;
+
   // Every constraint separates free from blocked, and outside the triangulation is blocked: a
   // flood fill that flips at constraints marks the free triangles.
   std::vector<std::pair<Face, bool>> queue{{t.cdt.infinite_face(), false}};

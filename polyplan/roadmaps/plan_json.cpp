@@ -42,6 +42,16 @@ void add_path(json& out, const std::vector<JointAngles>& path) {
   out["path"] = std::move(angles);
 }
 
+void add_path(json& out, const std::vector<Pose>& path) {
+  json doubles = json::array(), exact = json::array();
+  for (const Pose& p : path) {
+    doubles.push_back({to_double(p.position.x), to_double(p.position.y), p.degrees});
+    exact.push_back({to_string(p.position.x), to_string(p.position.y), to_string(p.rotation.sin), to_string(p.rotation.cos)});
+  }
+  out["path"] = std::move(doubles);
+  out["path_exact"] = std::move(exact);
+}
+
 template <class Configuration>
 json report_json(const PlanReport<Configuration>& report, const std::string& query) {
   json out = json::object();
@@ -60,5 +70,6 @@ json report_json(const PlanReport<Configuration>& report, const std::string& que
 
 json plan_json(const PlanReport<ExactPoint>& report, const std::string& query) { return report_json(report, query); }
 json plan_json(const PlanReport<JointAngles>& report, const std::string& query) { return report_json(report, query); }
+json plan_json(const PlanReport<Pose>& report, const std::string& query) { return report_json(report, query); }
 
 }  // namespace polyplan

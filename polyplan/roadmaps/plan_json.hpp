@@ -3,7 +3,7 @@
 // command-line program prints"), written from any planner's report:
 //
 //   {"query": "start/goal", "found": true, "length": 12.3456,
-//    "path": [[x, y], ...], "path_exact": [["3/2", "7/10"], ...],      (points; arms: [[θ1, ...], ...])
+//    "path": [[x, y], ...], "path_exact": [["3/2", "7/10"], ...],      (points; arms: [[θ1, ...], ...]; poses below)
 //    "certified": true, "certified_by": "exact path check (triangulation walk)",
 //    "roadmap": {"kind": "visibility", "vertices": 120, ...}, "search": {...}, ...}
 //
@@ -11,6 +11,7 @@
 // key; a dotted name nests ("roadmap.vertices" is roadmap → vertices).
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/rational.hpp>
+#include <polyplan/geometry/rotation.hpp>
 #include <polyplan/roadmaps/plan_report.hpp>
 
 #include <nlohmann/json_fwd.hpp>
@@ -22,5 +23,8 @@ namespace polyplan {
 // `query` is the query's name ("start/goal", "queries[2]", "easy"); left out when empty.
 nlohmann::json plan_json(const PlanReport<ExactPoint>& report, const std::string& query = {});
 nlohmann::json plan_json(const PlanReport<JointAngles>& report, const std::string& query = {});
+// Poses: "path": [[x, y, theta], ...] (theta: the nominal angle, degrees), "path_exact":
+// [["x", "y", "sin", "cos"], ...] (the exact rotation).
+nlohmann::json plan_json(const PlanReport<Pose>& report, const std::string& query = {});
 
 }  // namespace polyplan

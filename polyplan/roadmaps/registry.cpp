@@ -2,6 +2,7 @@
 
 #include <polyplan/roadmaps/gvd_grid_planner.hpp>
 #include <polyplan/roadmaps/raster_planner.hpp>
+#include <polyplan/roadmaps/rotation_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/roadmaps/voronoi_planner.hpp>
@@ -25,7 +26,9 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
 // Every planner of rotating polygon robots.
 template <>
 const PlannerRegistry<RotatingRobot>& planners<RotatingRobot>() {
-  static const PlannerRegistry<RotatingRobot> registry{};
+  static const PlannerRegistry<RotatingRobot> registry{
+      rotation_planner_entry(),
+  };
   return registry;
 }
 

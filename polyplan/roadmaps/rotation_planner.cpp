@@ -1,0 +1,460 @@
+#include <polyplan/roadmaps/rotation_planner.hpp>
+
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/turn_enclosure.hpp>
+#include <polyplan/internal/cspace_impl.hpp>
+#include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
+#include <polyplan/roadmaps/query_tally.hpp>
+#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/search/graph_search.hpp>
+
+#include <boost/graph/adjacency_list.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <stdexcept>
+
+namespace polyplan {
+namespace {
+
+using detail::FreeSpaceTriangulation;
+using detail::to_point;
+
+constexpr double pi = 3.14159265358979323846;
+constexpr std::size_t kOffLayer = static_cast<std::size_t>(-1);  // a query pose between layers
+constexpr std::size_t kNoNode = static_cast<std::size_t>(-1);
+
+struct PoseNode {
+  std::size_t layer = kOffLayer;
+  ExactPoint position;
+  double x = 0, y = 0;
+};
+struct Motion {
+  double cost = 0;
+};
+using PoseGraph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, PoseNode, Motion>;
+using NodeId = boost::graph_traits<PoseGraph>::vertex_descriptor;
+using PointKey = std::pair<Rational, Rational>;
+
+// One layer's share of the roadmap.
+struct LayerRoadmap {
+  std::unique_ptr<FreeSpaceTriangulation> triangulation;
+  std::map<PointKey, NodeId> node_at;   // every vertex of the layer, by position
+  std::vector<NodeId> corner_of;        // triangulation vertex → its node when a convex corner
+  std::vector<std::vector<NodeId>> turn_points;  // per turn layer beside it: its corners here
+};
+
+double robot_radius(const Robot& robot) {
+  double radius = 0;
+  for (const Ring& part : robot.parts)
+    for (const ExactPoint& p : part) radius = std::max(radius, std::hypot(to_double(p.x), to_double(p.y)));
+  return radius;
+}
+
+std::string degrees_text(double degrees) { return detail::show_number(degrees) + "°"; }
+
+// A query's start or goal: its pose and the layers it enters or leaves by, with the turn onto
+// each (certified by `turns`, the exact C-spaces of its turn enclosures).
+struct QueryEnd {
+  Pose pose;
+  std::size_t on_layer = kOffLayer;
+  std::vector<std::size_t> entry_layers;      // off a layer: the nearest layers it can turn onto
+  std::vector<double> entry_turns;            // degrees, pose → layer
+  std::vector<std::unique_ptr<CSpace>> turns;  // the turn enclosures' C-spaces, by entry
+  std::vector<World> turn_worlds;
+};
+
+}  // namespace
+
+struct RotationPlanner::Impl {
+  RotationOptions options;
+  double weight;
+  RotationLayers layers;
+  std::vector<LayerRoadmap> roadmaps;
+  PoseGraph graph;
+  std::size_t turn_edges = 0;
+  // Query slots, reused: start, its two entry layers, goal, its two entry layers.
+  NodeId slots[6] = {};
+  SearchWorkspace<NodeId> workspace;
+  double build_seconds = 0;
+  double max_error_radians = 0;
+
+  Impl(const World& world, const RotationOptions& o)
+      : options(o),
+        weight(o.weight < 0 ? robot_radius(world.robot) : o.weight),
+        layers(world, OrientationSet(o.orientations)) {
+    for (const RotationLayer& layer : layers.layers()) {
+      const double error = std::abs(layers.orientations().distance(degrees_of(layer.rotation), layer.degrees)) * pi / 180;
+      max_error_radians = std::max(max_error_radians, error);
+    }
+    roadmaps.resize(layers.layers().size());
+    for (std::size_t k = 0; k < roadmaps.size(); ++k) add_corners(k);
+    for (std::size_t t = 0; t < layers.turns().size(); ++t) add_turn(t);
+    for (std::size_t k = 0; k < roadmaps.size(); ++k) join_turn_points(k);
+    for (NodeId& slot : slots) slot = boost::add_vertex(graph);
+  }
+
+  const World& world() const { return layers.world(); }
+  const RotationLayer& layer(std::size_t k) const { return layers.layers()[k]; }
+
+  double turn_cost(double degrees) const { return weight * std::abs(degrees) * pi / 180; }
+
+  NodeId node(std::size_t k, const ExactPoint& p) {
+    auto [at, added] = roadmaps[k].node_at.emplace(PointKey{p.x, p.y}, 0);
+    if (added) {
+      at->second = boost::add_vertex(graph);
+      graph[at->second] = PoseNode{k, p, to_double(p.x), to_double(p.y)};
+    }
+    return at->second;
+  }
+
+  void add_translation(NodeId u, NodeId v) {
+    boost::add_edge(u, v, Motion{std::hypot(graph[u].x - graph[v].x, graph[u].y - graph[v].y)}, graph);
+  }
+
+  // The layer's convex corners (a free wedge wider than 180°, not at a pinch point) and the
+  // translations between those that see each other.
+  void add_corners(std::size_t k) {
+    LayerRoadmap& r = roadmaps[k];
+    r.triangulation = std::make_unique<FreeSpaceTriangulation>(detail::CSpaceAccess::impl(*layer(k).cspace),
+                                                               query_points(world()));
+    const FreeSpaceTriangulation& t = *r.triangulation;
+    r.corner_of.assign(t.vertex_count(), kNoNode);
+    std::vector<std::size_t> wedge_of(t.vertex_count(), 0);
+    for (std::size_t v = 0; v < t.vertex_count(); ++v) {
+      const auto& w = t.wedges(v);
+      if (w.free_wedges() != 1) continue;
+      for (std::size_t i = 0; i < w.size(); ++i)
+        if (w.is_free(i) && w.is_reflex(i)) {
+          r.corner_of[v] = node(k, detail::to_exact(t.point(v)));
+          wedge_of[v] = i;
+        }
+    }
+    std::vector<std::size_t> seen;
+    for (std::size_t v = 0; v < t.vertex_count(); ++v) {
+      if (r.corner_of[v] == kNoNode) continue;
+      seen.clear();
+      t.visible_from_corner(v, wedge_of[v], seen);
+      for (std::size_t u : seen)
+        if (u > v && r.corner_of[u] != kNoNode) add_translation(r.corner_of[v], r.corner_of[u]);
+    }
+  }
+
+  // A turn layer's corners, in both layers it joins, and the turns between them.
+  void add_turn(std::size_t t) {
+    const TurnLayer& turn = layers.turns()[t];
+    std::vector<NodeId> from_nodes, to_nodes;
+    for (const ExactPoint& p : turn.corners) {
+      const NodeId a = node(turn.from, p), b = node(turn.to, p);
+      from_nodes.push_back(a);
+      to_nodes.push_back(b);
+      boost::add_edge(a, b, Motion{turn_cost(turn.turn_degrees)}, graph);
+      ++turn_edges;
+    }
+    roadmaps[turn.from].turn_points.push_back(std::move(from_nodes));
+    roadmaps[turn.to].turn_points.push_back(std::move(to_nodes));
+  }
+
+  // Translations in layer k from `p` to the corners it sees, and to each of `others` it sees
+  // (exact segment walks).
+  void join(std::size_t k, NodeId p, const std::vector<NodeId>& others) {
+    LayerRoadmap& r = roadmaps[k];
+    const detail::Point at = to_point(graph[p].position);
+    std::vector<std::size_t> seen;
+    r.triangulation->visible_from_point(at, seen);
+    for (std::size_t v : seen)
+      if (r.corner_of[v] != kNoNode && r.corner_of[v] != p) add_translation(p, r.corner_of[v]);
+    for (NodeId q : others)
+      if (q != p && !r.triangulation->why_blocked(at, to_point(graph[q].position))) add_translation(p, q);
+  }
+
+  // The turn points of a layer: to the corners they see, and to the turn points of the turn
+  // layer on its other side (a path arrives by one turn and leaves by the next).
+  void join_turn_points(std::size_t k) {
+    LayerRoadmap& r = roadmaps[k];
+    std::set<NodeId> corners;
+    for (NodeId c : r.corner_of)
+      if (c != kNoNode) corners.insert(c);
+    for (std::size_t side = 0; side < r.turn_points.size(); ++side)
+      for (NodeId p : r.turn_points[side]) {
+        if (corners.count(p)) continue;  // joined as a corner already
+        std::vector<NodeId> across;
+        for (std::size_t other = side + 1; other < r.turn_points.size(); ++other)
+          across.insert(across.end(), r.turn_points[other].begin(), r.turn_points[other].end());
+        join(k, p, across);
+      }
+  }
+
+  // Every vertex of layer k that is not a corner: what a query slot tries to reach directly.
+  std::vector<NodeId> turn_points_of(std::size_t k) const {
+    std::vector<NodeId> all;
+    for (const auto& side : roadmaps[k].turn_points) all.insert(all.end(), side.begin(), side.end());
+    return all;
+  }
+
+  // The query's start or goal resolved: on a layer, or off it with certified turns onto the
+  // nearest layers; a reason when it is not free or cannot reach any layer.
+  std::optional<std::string> resolve(const ExactPoint& position, const std::optional<double>& theta, const char* what,
+                                     QueryEnd& end) const {
+    const OrientationSet& set = layers.orientations();
+    const double asked = theta.value_or(0);
+    const auto angle = set.normalized(asked);
+    const std::string pose_text = to_string(Pose{position, {}, asked});
+    if (!angle)
+      return std::string("the ") + what + " " + pose_text + " is outside the orientations [" + degrees_text(set.degrees(0)) +
+             ", " + degrees_text(set.degrees(set.size() - 1)) + "]";
+    if (!roadmaps[0].triangulation->in_frame(position))
+      return std::string("the ") + what + " " + pose_text +
+             " is beyond the frame the planner triangulated around this world without bounds (give the world bounds)";
+    if (const auto k = set.layer_at(*angle)) {
+      end.on_layer = *k;
+      end.pose = Pose{position, layer(*k).rotation, *angle};
+      if (auto why = layer(*k).cspace->collision_at(position))
+        return std::string("the ") + what + " " + pose_text + " is not free: " + *why;
+      return std::nullopt;
+    }
+    end.pose = Pose{position, exact_rotation(*angle), *angle};
+    const World own = world_with_robot(world(), rotated(world().robot, end.pose.rotation));
+    if (auto why = CSpace(own).collision_at(position)) return std::string("the ") + what + " " + pose_text + " is not free: " + *why;
+    std::string refused;
+    for (std::size_t k : set.nearest(*angle)) {
+      end.turn_worlds.push_back(world_with_robot(world(), turn_enclosure(world().robot, end.pose.rotation, layer(k).rotation)));
+      auto turn = std::make_unique<CSpace>(end.turn_worlds.back());
+      if (auto why = turn->collision_at(position)) {
+        refused += (refused.empty() ? "" : "; ") + std::string("to ") + degrees_text(layer(k).degrees) + " it sweeps " + *why;
+        end.turn_worlds.pop_back();
+        continue;
+      }
+      end.entry_layers.push_back(k);
+      end.entry_turns.push_back(polyplan::turn_degrees(end.pose.rotation, layer(k).rotation));
+      end.turns.push_back(std::move(turn));
+    }
+    if (end.entry_layers.empty())
+      return std::string("the ") + what + " " + pose_text + " cannot turn onto the nearest layer: " + refused;
+    return std::nullopt;
+  }
+
+  void place(NodeId slot, std::size_t k, const ExactPoint& p) {
+    boost::clear_vertex(slot, graph);
+    graph[slot] = PoseNode{k, p, to_double(p.x), to_double(p.y)};
+  }
+
+  // Puts a query end into its slots (base: 0 for the start, 3 for the goal) and returns the node
+  // the search starts or ends at.
+  NodeId enter(const QueryEnd& end, std::size_t base) {
+    const NodeId pose_slot = slots[base];
+    place(pose_slot, end.on_layer, end.pose.position);
+    for (std::size_t i = 0; i < end.entry_layers.size(); ++i) {
+      const NodeId on_layer = slots[base + 1 + i];
+      place(on_layer, end.entry_layers[i], end.pose.position);
+      boost::add_edge(pose_slot, on_layer, Motion{turn_cost(end.entry_turns[i])}, graph);
+    }
+    return pose_slot;
+  }
+
+  void clear_slots() {
+    for (NodeId slot : slots) {
+      boost::clear_vertex(slot, graph);
+      graph[slot] = PoseNode{};
+    }
+  }
+
+  // Joins the slots that lie on a layer to what they see there (and to each other).
+  void join_slots() {
+    for (NodeId slot : slots) {
+      const std::size_t k = graph[slot].layer;
+      if (k == kOffLayer) continue;
+      std::vector<NodeId> others = turn_points_of(k);
+      for (NodeId other : slots)
+        if (other > slot && graph[other].layer == k) others.push_back(other);
+      join(k, slot, others);
+    }
+  }
+
+  std::size_t fixed_vertices() const { return boost::num_vertices(graph) - std::size(slots); }
+};
+
+RotationPlanner::RotationPlanner(const World& world, RotationOptions options)
+    : impl_(build_timed<Impl>(world, options)) {}
+RotationPlanner::~RotationPlanner() = default;
+RotationPlanner::RotationPlanner(RotationPlanner&&) noexcept = default;
+RotationPlanner& RotationPlanner::operator=(RotationPlanner&&) noexcept = default;
+
+const RotationLayers& RotationPlanner::layers() const { return impl_->layers; }
+double RotationPlanner::rotation_weight() const { return impl_->weight; }
+
+// Nothing to record for a picture beyond the path: the strobe of poses is drawn from it.
+PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) {
+  Impl& g = *impl_;
+  QueryTally tally;
+  PlanReport<Pose> report;
+  Facts& facts = report.facts;
+  facts.set("roadmap.kind", "rotation-layers");
+  facts.set("roadmap.vertices", g.fixed_vertices());
+  facts.set("roadmap.edges", boost::num_edges(g.graph));
+  facts.set("roadmap.seconds", g.build_seconds);
+  facts.set("layers.count", g.layers.layers().size());
+  facts.set("layers.step", g.layers.orientations().step());
+  facts.set("layers.max_error_radians", g.max_error_radians);
+  facts.set("turn_layers.built", g.layers.turns().size());
+  facts.set("rotation_weight", g.weight);
+  facts.set("search.algorithm", to_string(g.options.search.algorithm));
+  const auto finish = [&]() {
+    tally.write(facts);
+    return report;
+  };
+
+  QueryEnd start, goal;
+  if (auto why = g.resolve(query.start, query.start_theta, "start", start)) {
+    report.why_not = *why;
+    return finish();
+  }
+  if (auto why = g.resolve(query.goal, query.goal_theta, "goal", goal)) {
+    report.why_not = *why;
+    return finish();
+  }
+
+  const NodeId from = g.enter(start, 0), to = g.enter(goal, 3);
+  g.join_slots();
+  const OrientationSet& set = g.layers.orientations();
+  const double goal_angle = goal.pose.degrees;
+  // The pose angle of a node: its layer's, or a query end's own. The rotation part is shrunk by
+  // a millionth: the costs use the exact rotations' angles, within 1e-10 rad of the nominal ones.
+  const auto angle_of = [&](NodeId n) {
+    if (g.graph[n].layer != kOffLayer) return g.layer(g.graph[n].layer).degrees;
+    return n == from ? start.pose.degrees : goal.pose.degrees;
+  };
+  const auto heuristic = [&](NodeId n) {
+    const PoseNode& v = g.graph[n];
+    return std::hypot(v.x - g.graph[to].x, v.y - g.graph[to].y) +
+           (1 - 1e-6) * g.turn_cost(set.distance(angle_of(n), goal_angle));
+  };
+  const auto cost = [&](const auto& e) { return g.graph[e].cost; };
+  SearchOptions searching = g.options.search;
+  searching.record_expanded = false;
+  const auto result = shortest_path(g.graph, from, to, searching, heuristic, cost, g.workspace);
+  tally.count(result);
+
+  // Poses along the path; the motions certified again, exactly, before anything is returned.
+  std::vector<std::size_t> layers_on_path;
+  double turned = 0, translated = 0;
+  std::size_t turns_used = 0;
+  const auto pose_of = [&](NodeId n) {
+    const PoseNode& v = g.graph[n];
+    if (v.layer == kOffLayer) return n == from ? start.pose : goal.pose;
+    return Pose{v.position, g.layer(v.layer).rotation, g.layer(v.layer).degrees};
+  };
+  // The C-space that certifies the turn between two consecutive nodes of the path.
+  const auto turn_cspace = [&](NodeId a, NodeId b) -> const CSpace& {
+    const auto joins = [&](NodeId u, NodeId v) { return (a == u && b == v) || (a == v && b == u); };
+    for (std::size_t i = 0; i < start.turns.size(); ++i)
+      if (joins(g.slots[0], g.slots[1 + i])) return *start.turns[i];
+    for (std::size_t i = 0; i < goal.turns.size(); ++i)
+      if (joins(g.slots[3], g.slots[4 + i])) return *goal.turns[i];
+    const std::size_t la = g.graph[a].layer, lb = g.graph[b].layer;
+    for (const TurnLayer& t : g.layers.turns())
+      if ((t.from == la && t.to == lb) || (t.from == lb && t.to == la)) return *t.cspace;
+    throw std::logic_error("rotation planner: a turn between layers that are not neighbours");
+  };
+  if (result.found) {
+    for (std::size_t i = 0; i < result.path.size(); ++i) {
+      const NodeId n = result.path[i];
+      const Pose pose = pose_of(n);
+      if (i > 0) {
+        const Pose& last = report.path.back();
+        const NodeId previous = result.path[i - 1];
+        if (last.rotation == pose.rotation) {  // a translation, checked in its layer
+          if (last.position == pose.position) continue;
+          const std::size_t k = g.graph[n].layer != kOffLayer ? g.graph[n].layer : g.graph[previous].layer;
+          const PathCheck check = check_segment(*g.layer(k).cspace, last.position, pose.position);
+          if (!check.valid) throw std::logic_error("rotation planner: a translation in layer " + std::to_string(k) + " fails the exact check: " + check.reason);
+          translated += std::hypot(to_double(last.position.x) - to_double(pose.position.x),
+                                   to_double(last.position.y) - to_double(pose.position.y));
+        } else {  // a turn on the spot, certified by its turn layer
+          if (!(last.position == pose.position)) throw std::logic_error("rotation planner: a motion that turns and translates");
+          if (turn_cspace(previous, n).locate(pose.position).kind == Location::Kind::blocked)
+            throw std::logic_error("rotation planner: a turn at " + to_string(pose.position) + " is not free in its turn layer");
+          turned += std::abs(turn_degrees(last.rotation, pose.rotation));
+          ++turns_used;
+        }
+      }
+      report.path.push_back(pose);
+      if (g.graph[n].layer != kOffLayer &&
+          std::find(layers_on_path.begin(), layers_on_path.end(), g.graph[n].layer) == layers_on_path.end())
+        layers_on_path.push_back(g.graph[n].layer);
+    }
+    if (report.path.size() == 1 || !(report.path.back().position == goal.pose.position) ||
+        !(report.path.back().rotation == goal.pose.rotation))
+      report.path.push_back(goal.pose);  // start == goal: the path is that pose, begun and ended
+    report.found = true;
+    report.length = translated + g.turn_cost(turned);
+    report.certificate = {true, "exact path check in each layer; turns by their turn layers' exact C-spaces (swept-area enclosure)"};
+  } else {
+    report.why_not = "no certified motion joins start and goal over " + std::to_string(set.size()) + " orientations " +
+                     degrees_text(set.step()) + " apart (a turn is allowed only where its whole sweep is free)";
+  }
+  g.clear_slots();
+  facts.set("rotation", turned);
+  facts.set("translation_length", translated);
+  facts.set("layers.used", layers_on_path.size());
+  facts.set("turn_layers.used", turns_used);
+  return finish();
+}
+
+PlannerEntry<RotatingRobot> rotation_planner_entry() {
+  OptionTable<RotationOptions> table;
+  table.add("rotation-step", "degrees between neighbouring orientations (layers)", std::string("number > 0"),
+            [](const RotationOptions& o) { return detail::show_number(o.orientations.step); },
+            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+              const auto step = detail::parse_real_number(text);
+              if (!step || *step <= 0) return "expected a number of degrees > 0";
+              o.orientations.step = *step;
+              return std::nullopt;
+            });
+  table.add("rotation-count", "number of orientations (0: one every rotation-step)", std::string("whole number >= 0"),
+            [](const RotationOptions& o) { return std::to_string(o.orientations.count); },
+            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+              const auto count = detail::parse_whole_number(text);
+              if (!count || *count < 0) return "expected a whole number >= 0";
+              o.orientations.count = static_cast<std::size_t>(*count);
+              return std::nullopt;
+            });
+  table.add("rotation-from", "first orientation, degrees", std::string("number"),
+            [](const RotationOptions& o) { return detail::show_number(o.orientations.from); },
+            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+              const auto degrees = detail::parse_real_number(text);
+              if (!degrees) return "expected a number of degrees";
+              o.orientations.from = *degrees;
+              return std::nullopt;
+            });
+  table.add("rotation-to", "last orientation, degrees (default and from + 360: the whole circle)", std::string("number"),
+            [](const RotationOptions& o) {
+              return o.orientations.to ? detail::show_number(*o.orientations.to) : std::string("from+360");
+            },
+            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+              const auto degrees = detail::parse_real_number(text);
+              if (!degrees) return "expected a number of degrees";
+              o.orientations.to = *degrees;
+              return std::nullopt;
+            });
+  table.add("rotation-weight", "cost of turning per radian (default: the robot's radius)", std::string("number >= 0 or radius"),
+            [](const RotationOptions& o) { return o.weight < 0 ? std::string("radius") : detail::show_number(o.weight); },
+            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+              if (text == "radius") {
+                o.weight = -1;
+                return std::nullopt;
+              }
+              const auto weight = detail::parse_real_number(text);
+              if (!weight || *weight < 0) return "expected a number >= 0 or radius";
+              o.weight = *weight;
+              return std::nullopt;
+            });
+  add_search_options(table, &RotationOptions::search);
+  return make_planner_entry<RotatingRobot, RotationOptions>(
+      "rotation", "translations and certified turns over exact rotation layers (discretized rotation)", std::move(table),
+      [](const World& world, const RotationOptions& o) { return std::make_unique<RotationPlanner>(world, o); });
+}
+
+}  // namespace polyplan
