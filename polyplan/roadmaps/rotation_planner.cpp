@@ -43,6 +43,7 @@ struct LayerRoadmap {
   std::unique_ptr<FreeSpaceTriangulation> triangulation;
   std::map<PointKey, NodeId> node_at;   // every vertex of the layer, by position
   std::vector<NodeId> corner_of;        // triangulation vertex → its node when a convex corner
+  std::set<PointKey> pinches;           // where the free space has zero width: no vertex goes there
   std::vector<std::vector<NodeId>> turn_points;  // per turn layer beside it: its corners here
 };
 
@@ -125,6 +126,10 @@ struct RotationPlanner::Impl {
     std::vector<std::size_t> wedge_of(t.vertex_count(), 0);
     for (std::size_t v = 0; v < t.vertex_count(); ++v) {
       const auto& w = t.wedges(v);
+      if (w.is_pinch()) {
+        const ExactPoint p = detail::to_exact(t.point(v));
+        r.pinches.emplace(p.x, p.y);
+      }
       if (w.free_wedges() != 1) continue;
       for (std::size_t i = 0; i < w.size(); ++i)
         if (w.is_free(i) && w.is_reflex(i)) {
@@ -142,11 +147,14 @@ struct RotationPlanner::Impl {
     }
   }
 
-  // A turn layer's corners, in both layers it joins, and the turns between them.
+  // A turn layer's corners, in both layers it joins, and the turns between them. Not at a pinch
+  // point of either layer: a vertex there would join the free wedges that meet at it, which no
+  // motion may pass between (a turn on the spot is fine; leaving into the other wedge is not).
   void add_turn(std::size_t t) {
     const TurnLayer& turn = layers.turns()[t];
     std::vector<NodeId> from_nodes, to_nodes;
     for (const ExactPoint& p : turn.corners) {
+      if (roadmaps[turn.from].pinches.count({p.x, p.y}) || roadmaps[turn.to].pinches.count({p.x, p.y})) continue;
       const NodeId a = node(turn.from, p), b = node(turn.to, p);
       from_nodes.push_back(a);
       to_nodes.push_back(b);
@@ -359,20 +367,35 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
     throw std::logic_error("rotation planner: a turn between layers that are not neighbours");
   };
   if (result.found) {
+    // A run of translations in one layer is checked as one polyline: check_path also holds the
+    // pinch rule at its bends.
+    std::vector<ExactPoint> run;
+    std::size_t run_layer = kOffLayer;
+    const auto check_run = [&]() {
+      if (run.size() >= 2) {
+        const PathCheck check = check_path(*g.layer(run_layer).cspace, run);
+        if (!check.valid)
+          throw std::logic_error("rotation planner: translations in layer " + std::to_string(run_layer) +
+                                 " fail the exact check: " + check.reason);
+      }
+      run.clear();
+    };
     for (std::size_t i = 0; i < result.path.size(); ++i) {
       const NodeId n = result.path[i];
       const Pose pose = pose_of(n);
       if (i > 0) {
         const Pose& last = report.path.back();
         const NodeId previous = result.path[i - 1];
-        if (last.rotation == pose.rotation) {  // a translation, checked in its layer
+        if (last.rotation == pose.rotation) {  // a translation in one layer
           if (last.position == pose.position) continue;
           const std::size_t k = g.graph[n].layer != kOffLayer ? g.graph[n].layer : g.graph[previous].layer;
-          const PathCheck check = check_segment(*g.layer(k).cspace, last.position, pose.position);
-          if (!check.valid) throw std::logic_error("rotation planner: a translation in layer " + std::to_string(k) + " fails the exact check: " + check.reason);
+          if (run.empty()) run.push_back(last.position);
+          run_layer = k;
+          run.push_back(pose.position);
           translated += std::hypot(to_double(last.position.x) - to_double(pose.position.x),
                                    to_double(last.position.y) - to_double(pose.position.y));
         } else {  // a turn on the spot, certified by its turn layer
+          check_run();
           if (!(last.position == pose.position)) throw std::logic_error("rotation planner: a motion that turns and translates");
           if (turn_cspace(previous, n).locate(pose.position).kind == Location::Kind::blocked)
             throw std::logic_error("rotation planner: a turn at " + to_string(pose.position) + " is not free in its turn layer");
@@ -385,6 +408,7 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
           std::find(layers_on_path.begin(), layers_on_path.end(), g.graph[n].layer) == layers_on_path.end())
         layers_on_path.push_back(g.graph[n].layer);
     }
+    check_run();
     if (report.path.size() == 1 || !(report.path.back().position == goal.pose.position) ||
         !(report.path.back().rotation == goal.pose.rotation))
       report.path.push_back(goal.pose);  // start == goal: the path is that pose, begun and ended

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 
 using namespace polyplan::test;
 namespace fs = std::filesystem;
@@ -104,7 +105,7 @@ TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
   struct Case {
     std::string arguments, message;
   } cases[] = {
-      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid)"},
+      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, rotation)"},
       {"--roadmap teleport", "--planner: unknown planner \"teleport\""},
       {"--resolution 40", "--resolution: the planner visibility has no option resolution (its options: search weight)"},
       {"--planner raster --resolution forty", "planner raster: option resolution=forty: expected a whole number"},
@@ -119,6 +120,42 @@ TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
     EXPECT_EQ(lines(run.err), 1u) << run.err;
     EXPECT_NE(run.err.find(c.message), std::string::npos) << run.err;
   }
+}
+
+TEST(Plan, RotationPrintsPosesWithExactRotationsAndDrawsTheStrobe) {
+  const fs::path svg = fs::temp_directory_path() / "polyplan_plan_rotation.svg";
+  const CliRun run = run_polyplan("plan " + world("rotation_piano.json") + " --planner rotation --rotation-step 10 --json - --svg " +
+                                  svg.string());
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto plan = nlohmann::json::parse(run.out);
+  EXPECT_TRUE(plan["found"].get<bool>());
+  EXPECT_TRUE(plan["certified"].get<bool>());
+  EXPECT_EQ(plan["path"][0], nlohmann::json::array({8.0, 10.0, 0.0}));
+  EXPECT_EQ(plan["path"].back(), nlohmann::json::array({30.0, 32.0, 90.0}));
+  EXPECT_EQ(plan["path_exact"].back(), nlohmann::json::array({"30", "32", "1", "0"}));  // 90° exactly: sin 1, cos 0
+  EXPECT_NEAR(plan["rotation"].get<double>(), 90, 1e-6);
+  EXPECT_EQ(plan["layers"]["count"], 36);
+  EXPECT_GT(plan["turn_layers"]["used"].get<int>(), 0);
+  EXPECT_LE(plan["layers"]["max_error_radians"].get<double>(), 1e-10);
+  const std::string picture = slurp(svg);
+  for (const char* text : {"turns on the spot", "orientation along the path", "robot at goal"})
+    EXPECT_NE(picture.find(text), std::string::npos) << text;
+  fs::remove(svg);
+}
+
+TEST(Plan, ATurningWorldNeedsTheRotationPlannerAndBadAnglesAreNamed) {
+  const CliRun translating = run_polyplan("plan " + world("rotation_piano.json") + " --planner visibility");
+  EXPECT_EQ(translating.exit_code, 2);
+  EXPECT_NE(translating.err.find("use --planner rotation"), std::string::npos) << translating.err;
+  const CliRun step = run_polyplan("plan " + world("rotation_piano.json") + " --planner rotation --rotation-step 7");
+  EXPECT_EQ(step.exit_code, 2);
+  EXPECT_NE(step.err.find("rotation-step 7° does not divide the range [0°, 360°]"), std::string::npos) << step.err;
+  const fs::path bad = fs::temp_directory_path() / "polyplan_bad_theta.json";
+  std::ofstream(bad) << R"({"obstacles": [], "start": [0, 0, "sixty"], "goal": [1, 1, 0]})";
+  const CliRun angle = run_polyplan("plan " + bad.string() + " --planner rotation");
+  EXPECT_EQ(angle.exit_code, 2);
+  EXPECT_NE(angle.err.find("start[2] (theta, degrees)"), std::string::npos) << angle.err;
+  fs::remove(bad);
 }
 
 TEST(Plan, TheRasterPictureShowsItsCellsAndTheTextSaysWhatWasSearched) {

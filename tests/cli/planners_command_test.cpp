@@ -1,4 +1,4 @@
-// polyplan planners, run as a user runs it: every planner of both registries, with its one-line
+// polyplan planners, run as a user runs it: every planner of every registry, with its one-line
 // description and its options, as text and as JSON.
 #include "cli_runner.hpp"
 
@@ -8,17 +8,21 @@
 
 using namespace polyplan::test;
 
-TEST(Planners, ListsEveryPlannerOfBothSpacesWithOptionsAndDefaults) {
+TEST(Planners, ListsEveryPlannerOfEverySpaceWithOptionsAndDefaults) {
   const CliRun run = run_polyplan("planners --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto spaces = nlohmann::json::parse(run.out);
-  ASSERT_EQ(spaces.size(), 2u);
+  ASSERT_EQ(spaces.size(), 3u);
   EXPECT_EQ(spaces[0]["command"], "polyplan plan WORLD.json --planner NAME");
-  EXPECT_EQ(spaces[1]["command"], "polyplan arm ARM.json --method NAME");
+  EXPECT_EQ(spaces[1]["command"], "polyplan plan WORLD.json --planner NAME");
+  EXPECT_EQ(spaces[1]["planners"][0]["name"], "rotation");
+  EXPECT_EQ(spaces[1]["planners"][0]["options"][0]["name"], "rotation-step");
+  EXPECT_EQ(spaces[1]["planners"][0]["options"][0]["default"], "5");
+  EXPECT_EQ(spaces[2]["command"], "polyplan arm ARM.json --method NAME");
   std::vector<std::string> names;
   for (const auto& p : spaces[0]["planners"]) names.push_back(p["name"]);
   EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid"}));
-  const auto& grid = spaces[1]["planners"][0];
+  const auto& grid = spaces[2]["planners"][0];
   EXPECT_EQ(grid["name"], "grid");
   EXPECT_EQ(grid["options"][0]["name"], "resolution");
   EXPECT_EQ(grid["options"][0]["default"], "5");

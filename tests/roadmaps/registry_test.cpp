@@ -6,12 +6,14 @@
 // itself re-checked); a path not found comes with a reason. The report must also print
 // (plan_json) and draw (draw_plan), and recording what a picture needs must not change the answer.
 #include <polyplan/draw/plan_svg.hpp>
+#include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/roadmaps/plan_json.hpp>
 #include <polyplan/roadmaps/registry.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include "pose_motion_check.hpp"
 #include "registry_fixtures.hpp"
 
 #include <nlohmann/json.hpp>
@@ -60,6 +62,7 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
   const ShippedWorld& w = shipped(world_name);
   const PlannerEntry<TranslatingRobot>* entry = planners<TranslatingRobot>().find(planner_name);
   ASSERT_NE(entry, nullptr);
+  if (turns_the_robot(w.world)) GTEST_SKIP() << "the robot must turn: a question for planners<RotatingRobot>()";
   std::unique_ptr<Planner<TranslatingRobot>> planner;
   try {
     planner = entry->make(w.cspace, {});
@@ -117,6 +120,56 @@ INSTANTIATE_TEST_SUITE_P(Registry, EveryPlannerOnEveryWorld,
                                             ::testing::ValuesIn(test::shipped("worlds"))),
                          [](const auto& info) { return test::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
 
+// The conformance test of rotating-robot planners: every planner of planners<RotatingRobot>() on
+// every shipped world and query (30° apart, to keep it quick: the rotation worlds' own tests try
+// finer steps). A found path runs from the start pose to the goal pose, changes position or
+// rotation in each motion, never both, passes the dense sampling re-check, and is no shorter than
+// the exact shortest translation of the robot as drawn where start and goal are at 0°; the report
+// prints and draws.
+class EveryRotatingPlannerOnEveryWorld : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(EveryRotatingPlannerOnEveryWorld, KeepsThePlannerPromises) {
+  const auto& [planner_name, world_name] = GetParam();
+  const World world = read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + world_name + ".json");
+  const PlannerEntry<RotatingRobot>* entry = planners<RotatingRobot>().find(planner_name);
+  ASSERT_NE(entry, nullptr);
+  const auto planner = entry->make(world, {{"rotation-step", "30"}});
+  std::vector<PlanReport<Pose>> reports;
+  for (const Query& q : world.queries) {
+    SCOPED_TRACE(q.name);
+    const PlanReport<Pose> report = planner->plan(q);
+    if (report.found) {
+      EXPECT_TRUE(report.certificate.certified);
+      ASSERT_GE(report.path.size(), 1u);
+      EXPECT_EQ(report.path.front().position, q.start);
+      EXPECT_EQ(report.path.back().position, q.goal);
+      if (auto why = test::check_motions_are_single(report.path)) ADD_FAILURE() << *why;
+      if (auto why = test::sampled_overlap(world, report.path, 0.05)) ADD_FAILURE() << *why;
+      if (!q.start_theta.value_or(0) && !q.goal_theta.value_or(0) && report.facts.number("rotation") == 0) {
+        const CSpace cspace(world);
+        const auto translating = VisibilityGraph(cspace).plan(q);
+        ASSERT_TRUE(translating.found);
+        EXPECT_GE(report.length, translating.length - 1e-9 * std::max(1.0, translating.length));
+      }
+    } else {
+      EXPECT_FALSE(report.why_not.empty());
+      EXPECT_TRUE(report.path.empty());
+    }
+    const nlohmann::json json = plan_json(report, q.name);
+    EXPECT_EQ(json["path"].size(), report.path.size());
+    for (const auto& entry : json["path"]) EXPECT_EQ(entry.size(), 3u);  // [x, y, theta]
+    for (const auto& entry : json["path_exact"]) EXPECT_EQ(entry.size(), 4u);  // x, y, sin, cos
+    for (const auto& [name, value] : report.facts.entries()) EXPECT_TRUE(json.contains(dotted(name))) << name;
+    reports.push_back(report);
+  }
+  EXPECT_NE(draw_plan(world, reports).str().find("<svg"), std::string::npos);
+}
+
+INSTANTIATE_TEST_SUITE_P(Registry, EveryRotatingPlannerOnEveryWorld,
+                         ::testing::Combine(::testing::ValuesIn(test::registered_planners<RotatingRobot>()),
+                                            ::testing::ValuesIn(test::shipped("worlds"))),
+                         [](const auto& info) { return test::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
+
 TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
   const auto& registry = planners<TranslatingRobot>();
   for (const char* name : {"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid"}) {
@@ -127,6 +180,7 @@ TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
   }
   EXPECT_EQ(registry.find("teleport"), nullptr);
   EXPECT_EQ(registry.names(), "visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid");
+  EXPECT_EQ(planners<RotatingRobot>().names(), "rotation");
   const auto* raster = registry.find("raster");
   ASSERT_EQ(raster->options.size(), 4u);
   EXPECT_EQ(raster->options[0].name, "resolution");
