@@ -2,51 +2,19 @@
 // registered planner of polygon worlds among visibility, trapezoid, voronoi and gvd-grid, built
 // on random worlds of 1,000 to 10,000 obstacle vertices (the growth shows whether a build is
 // O(n log n)) and on three MovingAI maps traced into polygon worlds. Memory is the peak of the
-// bytes the build allocates on the heap (this program counts every operator new), not the
-// process's resident size, which the allocator's caching blurs.
+// bytes the build allocates on the heap (operator new and GMP, counted), not the
+// process's resident size, which the allocator's caching blurs (bench/heap_counter.hpp).
 //
 //   build/bench/roadmap_bench --benchmark_counters_tabular=true
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/roadmaps/registry.hpp>
 #include "bench_worlds.hpp"
+#include "heap_counter.hpp"
 
 #include <benchmark/benchmark.h>
 
-#include <malloc.h>
-
-#include <atomic>
-#include <cstdlib>
-#include <new>
 #include <string>
-
-namespace {
-
-std::atomic<long long> heap_bytes{0}, heap_peak{0};
-
-void* counted_allocation(std::size_t size) {
-  void* p = std::malloc(size == 0 ? 1 : size);
-  if (!p) throw std::bad_alloc();
-  const long long now = heap_bytes += static_cast<long long>(malloc_usable_size(p));
-  for (long long peak = heap_peak; now > peak && !heap_peak.compare_exchange_weak(peak, now);) {
-  }
-  return p;
-}
-
-void counted_release(void* p) {
-  if (!p) return;
-  heap_bytes -= static_cast<long long>(malloc_usable_size(p));
-  std::free(p);
-}
-
-}  // namespace
-
-void* operator new(std::size_t size) { return counted_allocation(size); }
-void* operator new[](std::size_t size) { return counted_allocation(size); }
-void operator delete(void* p) noexcept { counted_release(p); }
-void operator delete[](void* p) noexcept { counted_release(p); }
-void operator delete(void* p, std::size_t) noexcept { counted_release(p); }
-void operator delete[](void* p, std::size_t) noexcept { counted_release(p); }
 
 namespace {
 
@@ -60,10 +28,8 @@ void Build(benchmark::State& state, const std::string& name, const CSpace* cspac
   const PlannerEntry<TranslatingRobot>* entry = planners<TranslatingRobot>().find(name);
   long long peak_bytes = 0;
   for (auto _ : state) {
-    const long long before = heap_bytes;
-    heap_peak = before;
-    auto planner = entry->make(*cspace, {});
-    peak_bytes = heap_peak - before;
+    std::unique_ptr<Planner<TranslatingRobot>> planner;
+    peak_bytes = bench::peak_heap_bytes([&] { planner = entry->make(*cspace, {}); });
     benchmark::DoNotOptimize(planner.get());
   }
   const auto& world = cspace->world();
@@ -99,6 +65,7 @@ const CSpace* keep(World world) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  bench::count_gmp_allocations();
   benchmark::Initialize(&argc, argv);
   for (int vertices : {1000, 2000, 4000, 10000}) {
     const World world = bench::quadrilaterals(vertices);

@@ -29,6 +29,7 @@ constexpr std::size_t kNoNode = static_cast<std::size_t>(-1);
 struct PoseNode {
   std::size_t layer = kOffLayer;
   ExactPoint position;
+  detail::Point point;  // the position in CGAL's kernel, made once: visibility tests take it by the thousand
   double x = 0, y = 0;
 };
 struct Motion {
@@ -106,7 +107,7 @@ struct RotationPlanner::Impl {
     auto [at, added] = roadmaps[k].node_at.emplace(PointKey{p.x, p.y}, 0);
     if (added) {
       at->second = boost::add_vertex(graph);
-      graph[at->second] = PoseNode{k, p, to_double(p.x), to_double(p.y)};
+      graph[at->second] = PoseNode{k, p, to_point(p), to_double(p.x), to_double(p.y)};
     }
     return at->second;
   }
@@ -169,13 +170,13 @@ struct RotationPlanner::Impl {
   // (exact segment walks).
   void join(std::size_t k, NodeId p, const std::vector<NodeId>& others) {
     LayerRoadmap& r = roadmaps[k];
-    const detail::Point at = to_point(graph[p].position);
+    const detail::Point& at = graph[p].point;
     std::vector<std::size_t> seen;
     r.triangulation->visible_from_point(at, seen);
     for (std::size_t v : seen)
       if (r.corner_of[v] != kNoNode && r.corner_of[v] != p) add_translation(p, r.corner_of[v]);
     for (NodeId q : others)
-      if (q != p && !r.triangulation->why_blocked(at, to_point(graph[q].position))) add_translation(p, q);
+      if (q != p && !r.triangulation->why_blocked(at, graph[q].point)) add_translation(p, q);
   }
 
   // The turn points of a layer: to the corners they see, and to the turn points of the turn
@@ -246,7 +247,7 @@ struct RotationPlanner::Impl {
 
   void place(NodeId slot, std::size_t k, const ExactPoint& p) {
     boost::clear_vertex(slot, graph);
-    graph[slot] = PoseNode{k, p, to_double(p.x), to_double(p.y)};
+    graph[slot] = PoseNode{k, p, to_point(p), to_double(p.x), to_double(p.y)};
   }
 
   // Puts a query end into its slots (base: 0 for the start, 3 for the goal) and returns the node
