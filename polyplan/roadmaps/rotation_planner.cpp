@@ -232,7 +232,8 @@ struct RotationPlanner::Impl {
       end.turn_worlds.push_back(world_with_robot(world(), turn_enclosure(world().robot, end.pose.rotation, layer(k).rotation)));
       auto turn = std::make_unique<CSpace>(end.turn_worlds.back());
       if (auto why = turn->collision_at(position)) {
-        refused += (refused.empty() ? "" : "; ") + std::string("to ") + degrees_text(layer(k).degrees) + " it sweeps " + *why;
+        refused += (refused.empty() ? "" : "; ") + std::string("turning to ") + degrees_text(layer(k).degrees) +
+                   ", what it sweeps is blocked: " + *why;
         end.turn_worlds.pop_back();
         continue;
       }
@@ -417,8 +418,11 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
     report.length = translated + g.turn_cost(turned);
     report.certificate = {true, "exact path check in each layer; turns by their turn layers' exact C-spaces (swept-area enclosure)"};
   } else {
-    report.why_not = "no certified motion joins start and goal over " + std::to_string(set.size()) + " orientations " +
-                     degrees_text(set.step()) + " apart (a turn is allowed only where its whole sweep is free)";
+    report.why_not = set.size() == 1 ? "no motion joins start and goal at the one orientation " + degrees_text(set.degrees(0)) +
+                                           " (no turns)"
+                                     : "no certified motion joins start and goal over " + std::to_string(set.size()) +
+                                           " orientations " + degrees_text(set.step()) +
+                                           " apart (a turn is allowed only where its whole sweep is free)";
   }
   g.clear_slots();
   facts.set("rotation", turned);
