@@ -12,6 +12,7 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/roadmaps/plan_json.hpp>
 #include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/roadmaps/rotation_layers.hpp>
 
 #include <iostream>
 #include <type_traits>
@@ -54,9 +55,11 @@ int run_plan(const PlanCommand& command) {
   const World world = read_world(command.world, &warnings);
   print_warnings(warnings);
   if (world.queries.empty()) throw InputError(command.world + ": world: no start/goal and no queries to plan");
-  // A rotating robot's planner builds the C-space of each orientation itself, and says which
-  // start or goal is not free at which angle.
-  if (command.planner->chose<RotatingRobot>()) return answer<RotatingRobot>(command, world, world);
+  // A rotating robot's planner builds the C-space of each orientation itself.
+  if (command.planner->chose<RotatingRobot>()) {
+    require_free_poses(world);
+    return answer<RotatingRobot>(command, world, world);
+  }
   if (turns_the_robot(world))
     throw InputError(command.world + ": a start or goal has an orientation other than 0 degrees ([x, y, theta]); the planner " +
                      command.planner->name() + " only translates the robot as its file draws it: use --planner rotation");

@@ -65,7 +65,8 @@ class CSpace {
   std::optional<std::string> query_not_free(const Query& query) const;
 
   // Throws InputError (naming the world file, the query and the obstacle hit) when a start or
-  // goal of the world's queries is not free.
+  // goal of the world's queries is not free. Poses turned away from 0 degrees ([x, y, theta]) are
+  // not configurations of this C-space and are left to the rotation planner.
   void require_free_queries() const;
 
   struct Impl;  // the CGAL side: incomplete here, defined in internal/cspace_impl.hpp

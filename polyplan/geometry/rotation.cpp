@@ -1,8 +1,5 @@
 #include <polyplan/geometry/rotation.hpp>
 
-#include <CGAL/Gmpz.h>
-#include <CGAL/rational_rotation.h>
-
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -12,28 +9,55 @@ namespace {
 
 constexpr double pi = 3.14159265358979323846;
 
-Rational to_rational(const CGAL::Gmpz& n) { return Rational(mpz_class(n.mpz())); }
+// The rotation by `radians`, |radians| <= π/4, from the Pythagorean triple of t = p/q ≈ tan(θ/2):
+// sin = 2pq / (p² + q²), cos = (q² − p²) / (p² + q²), so sin² + cos² = 1 exactly. This is the
+// construction of CGAL's rational_rotation_approximation, but p/q runs through the continued
+// fraction convergents of tan(θ/2) (best approximations, about log(1/tolerance) of them) where
+// CGAL walks the Stern–Brocot tree one mediant at a time: 1/2, 1/3, 1/4, ... towards a small
+// angle, which took 8 s for 359.99999° and longer below.
+Rotation small_rotation(double radians) {
+  mpz_class p = 0, q = 1;  // no turn, when the angle is within the tolerance of none
+  if (std::abs(radians) > rotation_tolerance_radians / 2) {
+    // Convergents h/k of the continued fraction [a0; a1, ...] of t: h = a h' + h'', k = a k' + k''.
+    mpz_class h1 = 1, k1 = 0, h2 = 0, k2 = 1;  // the two before: 1/0 and 0/1
+    double rest = std::abs(std::tan(radians / 2));
+    for (int term = 0; term < 64; ++term) {
+      const double whole = std::floor(rest);
+      const mpz_class a(whole);
+      p = a * h1 + h2;
+      q = a * k1 + k2;
+      h2 = h1;
+      k2 = k1;
+      h1 = p;
+      k1 = q;
+      const bool close_enough = std::abs(2 * std::atan2(p.get_d(), q.get_d()) - std::abs(radians)) <= rotation_tolerance_radians / 2;
+      if (close_enough || rest == whole) break;
+      rest = 1 / (rest - whole);
+    }
+  }
+  const mpz_class square = p * p + q * q;
+  Rotation r{Rational(2 * p * q, square), Rational(q * q - p * p, square)};
+  r.sin.canonicalize();
+  r.cos.canonicalize();
+  if (radians < 0) r.sin = -r.sin;
+  return r;
+}
+
+// r turned by `quarters` quarter turns counter-clockwise, exactly.
+Rotation quarter_turns(Rotation r, long quarters) {
+  for (long k = 0; k < ((quarters % 4) + 4) % 4; ++k) r = {r.cos, -r.sin};
+  return r;
+}
 
 }  // namespace
 
 Rotation exact_rotation(double degrees) {
   if (!std::isfinite(degrees)) throw std::invalid_argument("an angle must be a finite number of degrees");
-  double turned = std::fmod(degrees, 360.0);
-  if (turned < 0) turned += 360.0;
-  // Quarter turns have the exact pairs (0, ±1), (±1, 0).
-  if (turned == 0) return {Rational(0), Rational(1)};
-  if (turned == 90) return {Rational(1), Rational(0)};
-  if (turned == 180) return {Rational(0), Rational(-1)};
-  if (turned == 270) return {Rational(-1), Rational(0)};
-  // CGAL bounds the error of sin (of the angle folded to [0°, 45°]); there the angle's error is at
-  // most √2 times that, so half the tolerance on sin keeps the angle within the tolerance.
-  CGAL::Gmpz sin, cos, den;
-  const CGAL::Gmpz eps_num(1), eps_den(static_cast<long>(2 / rotation_tolerance_radians));
-  CGAL::rational_rotation_approximation(turned * pi / 180, sin, cos, den, eps_num, eps_den);
-  Rotation r{to_rational(sin) / to_rational(den), to_rational(cos) / to_rational(den)};
-  r.sin.canonicalize();
-  r.cos.canonicalize();
-  if (r.sin * r.sin + r.cos * r.cos != 1) throw std::logic_error("rational_rotation_approximation: sin² + cos² is not 1");
+  // degrees = 90 k + rest with |rest| <= 45: quarter turns are exact, the rest is approximated.
+  const double quarters = std::round(degrees / 90);
+  const double rest = degrees - quarters * 90;  // exact: fmod-like, no rounding for |degrees| <= 1e6
+  const Rotation r = quarter_turns(small_rotation(rest * pi / 180), static_cast<long>(std::fmod(quarters, 4.0)));
+  if (r.sin * r.sin + r.cos * r.cos != 1) throw std::logic_error("exact_rotation: sin² + cos² is not 1");
   return r;
 }
 

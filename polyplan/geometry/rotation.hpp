@@ -3,9 +3,10 @@
 //
 // A rotation is a pair of rationals (sin, cos) with sin² + cos² = 1 exactly: every rotated point
 // of a rational point is rational, and distances to the centre are kept exactly, so a rotated
-// robot is an exact polygon and its C-space is exact. Most angles have no such pair; CGAL's
-// rational_rotation_approximation (Canny, Donald and Ressler) finds one within a stated
-// tolerance of the requested angle, from a Pythagorean triple.
+// robot is an exact polygon and its C-space is exact. Most angles have no such pair; the one used
+// is within a stated tolerance of the requested angle, from the Pythagorean triple of a rational
+// approximation of tan(θ/2) (Canny, Donald and Ressler's construction, as in CGAL's
+// rational_rotation_approximation, with continued fractions: rotation.cpp says why).
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/world.hpp>
 
@@ -21,8 +22,8 @@ struct Rotation {
   friend bool operator==(const Rotation& a, const Rotation& b) { return a.sin == b.sin && a.cos == b.cos; }
 };
 
-// The exact rotation nearest (within rotation_tolerance_radians) to `degrees`, counter-clockwise.
-// Multiples of 90 degrees are exact. Throws std::invalid_argument for an angle that is not finite.
+// An exact rotation within rotation_tolerance_radians of `degrees`, counter-clockwise, with small
+// numbers (denominators about 1/tolerance). Multiples of 90 degrees are exact. Throws std::invalid_argument for an angle that is not finite.
 Rotation exact_rotation(double degrees);
 
 // The angle of an exact rotation in degrees, in (-180, 180] (atan2 of the doubles: what it is,

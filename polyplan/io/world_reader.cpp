@@ -40,7 +40,7 @@ class Reader : public detail::JsonFileReader {
   // A start or goal: [x, y], or [x, y, theta] with theta in degrees (a rotating robot).
   void pose(const json& v, const std::string& object, ExactPoint& position, std::optional<double>& theta) const {
     if (!v.is_array() || v.size() < 2 || v.size() > 3)
-      fail(object, "expected a position [x, y] or a pose [x, y, theta] (theta in degrees), got " + abbreviated(v));
+      fail(object, "expected a point [x, y] or a pose [x, y, theta] (theta in degrees), got " + abbreviated(v));
     position = {number(v[0], object + "[0]"), number(v[1], object + "[1]")};
     if (v.size() == 3) {
       const Rational degrees = number(v[2], object + "[2] (theta, degrees)");

@@ -23,7 +23,8 @@ namespace polyplan {
 // `query` is the query's name ("start/goal", "queries[2]", "easy"); left out when empty.
 nlohmann::json plan_json(const PlanReport<ExactPoint>& report, const std::string& query = {});
 nlohmann::json plan_json(const PlanReport<JointAngles>& report, const std::string& query = {});
-// Poses: "path": [[x, y, theta], ...] (theta: the nominal angle, degrees), "path_exact":
+// Poses: "path": [[x, y, theta], ...] (theta: the nominal angle in degrees, unwrapped along the
+// path: consecutive entries differ by the turn between them), "path_exact":
 // [["x", "y", "sin", "cos"], ...] (the exact rotation).
 nlohmann::json plan_json(const PlanReport<Pose>& report, const std::string& query = {});
 

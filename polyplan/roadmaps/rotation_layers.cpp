@@ -1,11 +1,15 @@
 #include <polyplan/roadmaps/rotation_layers.hpp>
 
+#include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/turn_enclosure.hpp>
 #include <polyplan/roadmaps/planner_options.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
 #include <set>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
@@ -110,6 +114,19 @@ World world_with_robot(const World& world, Robot robot) {
   World turned = world;
   turned.robot = std::move(robot);
   return turned;
+}
+
+void require_free_poses(const World& world) {
+  std::map<double, std::unique_ptr<CSpace>> at_angle;
+  for (const Query& q : world.queries)
+    for (const auto& [what, point, theta] : {std::tuple{"start", &q.start, q.start_theta.value_or(0)},
+                                              std::tuple{"goal", &q.goal, q.goal_theta.value_or(0)}}) {
+      auto& cspace = at_angle[theta];
+      if (!cspace) cspace = std::make_unique<CSpace>(world_with_robot(world, rotated(world.robot, exact_rotation(theta))));
+      if (auto why = cspace->collision_at(*point))
+        throw InputError(world.source + ": " + (q.name == "start/goal" ? std::string(what) : q.name + "." + what) + " " +
+                         to_string(Pose{*point, {}, theta}) + ": not free: " + *why);
+    }
 }
 
 RotationLayers::RotationLayers(const World& world, const OrientationSet& orientations)

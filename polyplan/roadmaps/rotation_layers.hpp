@@ -94,7 +94,12 @@ class RotationLayers {
   std::vector<TurnLayer> turns_;
 };
 
-// The world with the robot at `rotation` (or, with `to`, with the robot's turn enclosure).
+// The world with `robot` in place of its own (turned, or a turn enclosure).
 World world_with_robot(const World& world, Robot robot);
+
+// Throws InputError (naming the world file, the query, the pose with its angle and what the robot
+// hits there) when a start or goal pose of the world's queries is not free: `polyplan plan`'s
+// check before a rotating robot is planned, as CSpace::require_free_queries is for a translating one.
+void require_free_poses(const World& world);
 
 }  // namespace polyplan

@@ -77,8 +77,9 @@ struct RotationPlanner::Impl {
   std::vector<LayerRoadmap> roadmaps;
   PoseGraph graph;
   std::size_t turn_edges = 0;
-  // Query slots, reused: start, its two entry layers, goal, its two entry layers.
-  NodeId slots[6] = {};
+  // Vertices of the query being answered (start and goal in each layer), reused.
+  std::vector<NodeId> query_pool;
+  std::size_t query_vertices_used = 0;
   SearchWorkspace<NodeId> workspace;
   double build_seconds = 0;
   double max_error_radians = 0;
@@ -95,7 +96,6 @@ struct RotationPlanner::Impl {
     for (std::size_t k = 0; k < roadmaps.size(); ++k) add_corners(k);
     for (std::size_t t = 0; t < layers.turns().size(); ++t) add_turn(t);
     for (std::size_t k = 0; k < roadmaps.size(); ++k) join_turn_points(k);
-    for (NodeId& slot : slots) slot = boost::add_vertex(graph);
   }
 
   const World& world() const { return layers.world(); }
@@ -196,7 +196,7 @@ struct RotationPlanner::Impl {
       }
   }
 
-  // Every vertex of layer k that is not a corner: what a query slot tries to reach directly.
+  // Every vertex of layer k that is not a corner: what a query vertex tries to reach directly.
   std::vector<NodeId> turn_points_of(std::size_t k) const {
     std::vector<NodeId> all;
     for (const auto& side : roadmaps[k].turn_points) all.insert(all.end(), side.begin(), side.end());
@@ -246,44 +246,56 @@ struct RotationPlanner::Impl {
     return std::nullopt;
   }
 
-  void place(NodeId slot, std::size_t k, const ExactPoint& p) {
-    boost::clear_vertex(slot, graph);
-    graph[slot] = PoseNode{k, p, to_point(p), to_double(p.x), to_double(p.y)};
+  // A vertex for this query only, from a pool that grows to the largest query and is reused.
+  NodeId query_vertex(std::size_t k, const ExactPoint& p) {
+    if (query_vertices_used == query_pool.size()) query_pool.push_back(boost::add_vertex(graph));
+    const NodeId n = query_pool[query_vertices_used++];
+    graph[n] = PoseNode{k, p, to_point(p), to_double(p.x), to_double(p.y)};
+    return n;
   }
 
-  // Puts a query end into its slots (base: 0 for the start, 3 for the goal) and returns the node
-  // the search starts or ends at.
-  NodeId enter(const QueryEnd& end, std::size_t base) {
-    const NodeId pose_slot = slots[base];
-    place(pose_slot, end.on_layer, end.pose.position);
-    for (std::size_t i = 0; i < end.entry_layers.size(); ++i) {
-      const NodeId on_layer = slots[base + 1 + i];
-      place(on_layer, end.entry_layers[i], end.pose.position);
-      boost::add_edge(pose_slot, on_layer, Motion{turn_cost(end.entry_turns[i])}, graph);
+  void release_query_vertices() {
+    for (std::size_t i = 0; i < query_vertices_used; ++i) {
+      boost::clear_vertex(query_pool[i], graph);
+      graph[query_pool[i]] = PoseNode{};
     }
-    return pose_slot;
+    query_vertices_used = 0;
   }
 
-  void clear_slots() {
-    for (NodeId slot : slots) {
-      boost::clear_vertex(slot, graph);
-      graph[slot] = PoseNode{};
-    }
+  // A query's start or goal in the roadmap: a vertex at its position in every layer where the
+  // robot is free there (not at a pinch point, which a path must not pass through), turns on the
+  // spot between neighbouring layers where the turn layer is free there, and, for a pose between
+  // layers, its own vertex with its certified turns onto the nearest layers. Returns the vertex of
+  // the pose itself; `at_layer` gets the vertex in each layer (or kNoNode).
+  NodeId enter(const QueryEnd& end, std::vector<NodeId>& at_layer) {
+    const ExactPoint& p = end.pose.position;
+    at_layer.assign(roadmaps.size(), kNoNode);
+    for (std::size_t k = 0; k < roadmaps.size(); ++k)
+      if (k == end.on_layer ||
+          (layer(k).cspace->locate(p).kind != Location::Kind::blocked && !roadmaps[k].pinches.count({p.x, p.y})))
+        at_layer[k] = query_vertex(k, p);
+    for (const TurnLayer& t : layers.turns())
+      if (at_layer[t.from] != kNoNode && at_layer[t.to] != kNoNode && t.cspace->locate(p).kind != Location::Kind::blocked)
+        boost::add_edge(at_layer[t.from], at_layer[t.to], Motion{turn_cost(t.turn_degrees)}, graph);
+    if (end.on_layer != kOffLayer) return at_layer[end.on_layer];
+    const NodeId pose = query_vertex(kOffLayer, p);
+    for (std::size_t i = 0; i < end.entry_layers.size(); ++i)
+      boost::add_edge(pose, at_layer[end.entry_layers[i]], Motion{turn_cost(end.entry_turns[i])}, graph);
+    return pose;
   }
 
-  // Joins the slots that lie on a layer to what they see there (and to each other).
-  void join_slots() {
-    for (NodeId slot : slots) {
-      const std::size_t k = graph[slot].layer;
-      if (k == kOffLayer) continue;
+  // Joins the query's vertices in each layer to what they see there (and the start's to the goal's).
+  void join_query(const std::vector<NodeId>& start_at, const std::vector<NodeId>& goal_at) {
+    for (std::size_t k = 0; k < roadmaps.size(); ++k) {
       std::vector<NodeId> others = turn_points_of(k);
-      for (NodeId other : slots)
-        if (other > slot && graph[other].layer == k) others.push_back(other);
-      join(k, slot, others);
+      if (goal_at[k] != kNoNode) others.push_back(goal_at[k]);
+      if (start_at[k] != kNoNode) join(k, start_at[k], others);
+      others.resize(others.size() - (goal_at[k] != kNoNode));
+      if (goal_at[k] != kNoNode) join(k, goal_at[k], others);
     }
   }
 
-  std::size_t fixed_vertices() const { return boost::num_vertices(graph) - std::size(slots); }
+  std::size_t fixed_vertices() const { return boost::num_vertices(graph) - query_pool.size(); }
 };
 
 RotationPlanner::RotationPlanner(const World& world, RotationOptions options)
@@ -326,8 +338,9 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
     return finish();
   }
 
-  const NodeId from = g.enter(start, 0), to = g.enter(goal, 3);
-  g.join_slots();
+  std::vector<NodeId> start_at, goal_at;
+  const NodeId from = g.enter(start, start_at), to = g.enter(goal, goal_at);
+  g.join_query(start_at, goal_at);
   const OrientationSet& set = g.layers.orientations();
   const double goal_angle = goal.pose.degrees;
   // The pose angle of a node: its layer's, or a query end's own. The rotation part is shrunk by
@@ -358,12 +371,11 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
   };
   // The C-space that certifies the turn between two consecutive nodes of the path.
   const auto turn_cspace = [&](NodeId a, NodeId b) -> const CSpace& {
-    const auto joins = [&](NodeId u, NodeId v) { return (a == u && b == v) || (a == v && b == u); };
-    for (std::size_t i = 0; i < start.turns.size(); ++i)
-      if (joins(g.slots[0], g.slots[1 + i])) return *start.turns[i];
-    for (std::size_t i = 0; i < goal.turns.size(); ++i)
-      if (joins(g.slots[3], g.slots[4 + i])) return *goal.turns[i];
     const std::size_t la = g.graph[a].layer, lb = g.graph[b].layer;
+    for (const auto& [end, pose] : {std::pair{&start, from}, std::pair{&goal, to}})
+      if (a == pose || b == pose)
+        for (std::size_t i = 0; i < end->entry_layers.size(); ++i)
+          if (end->entry_layers[i] == (a == pose ? lb : la)) return *end->turns[i];
     for (const TurnLayer& t : g.layers.turns())
       if ((t.from == la && t.to == lb) || (t.from == lb && t.to == la)) return *t.cspace;
     throw std::logic_error("rotation planner: a turn between layers that are not neighbours");
@@ -414,6 +426,16 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
     if (report.path.size() == 1 || !(report.path.back().position == goal.pose.position) ||
         !(report.path.back().rotation == goal.pose.rotation))
       report.path.push_back(goal.pose);  // start == goal: the path is that pose, begun and ended
+    // Angles unwrapped along the path, from the start's theta as the query gives it: consecutive
+    // poses differ by the turn between them, the short way (a turn from the layer at 355° to the
+    // one at 0° reads 355 → 360), so whoever interpolates between them follows the motion.
+    double nominal = report.path.front().degrees;
+    report.path.front().degrees = query.start_theta.value_or(0);
+    for (std::size_t i = 1; i < report.path.size(); ++i) {
+      const double next = report.path[i].degrees;
+      report.path[i].degrees = report.path[i - 1].degrees + std::remainder(next - nominal, 360.0);
+      nominal = next;
+    }
     report.found = true;
     report.length = translated + g.turn_cost(turned);
     report.certificate = {true, "exact path check in each layer; turns by their turn layers' exact C-spaces (swept-area enclosure)"};
@@ -424,7 +446,7 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
                                            " orientations " + degrees_text(set.step()) +
                                            " apart (a turn is allowed only where its whole sweep is free)";
   }
-  g.clear_slots();
+  g.release_query_vertices();
   facts.set("rotation", turned);
   facts.set("translation_length", translated);
   facts.set("layers.used", layers_on_path.size());

@@ -155,6 +155,12 @@ TEST(Plan, ATurningWorldNeedsTheRotationPlannerAndBadAnglesAreNamed) {
   const CliRun angle = run_polyplan("plan " + bad.string() + " --planner rotation");
   EXPECT_EQ(angle.exit_code, 2);
   EXPECT_NE(angle.err.find("start[2] (theta, degrees)"), std::string::npos) << angle.err;
+  std::ofstream(bad) << R"({"bounds": [0, 0, 10, 10], "obstacles": [[[4, 0], [6, 0], [6, 4], [4, 4]]],
+                           "robot": {"parts": [[[-3, -0.5], [3, -0.5], [3, 0.5], [-3, 0.5]]]},
+                           "start": [5, 7, 0], "goal": [5, 6.5, 90]})";
+  const CliRun upright = run_polyplan("plan " + bad.string() + " --planner rotation");
+  EXPECT_EQ(upright.exit_code, 2);
+  EXPECT_NE(upright.err.find("goal [5, 13/2, 90°]: not free: the robot overlaps obstacles[0]"), std::string::npos) << upright.err;
   fs::remove(bad);
 }
 

@@ -38,6 +38,17 @@ TEST(ExactRotation, SmallAnglesAreNotRoundedToZero) {
   EXPECT_LE(apart(degrees_of(r), 0.001), rotation_tolerance_radians);
 }
 
+TEST(ExactRotation, AnglesNearAQuarterTurnHaveSmallNumbers) {
+  // Continued fractions reach the tolerance in a few dozen terms: small denominators, at once
+  // (CGAL's one-mediant-at-a-time walk took seconds for 359.99999°).
+  for (double degrees : {1e-9, 1e-6, 1e-3, 359.99999, 89.9999999, -0.0000123, 45.0, 1e6 + 0.3}) {
+    const Rotation r = exact_rotation(degrees);
+    EXPECT_EQ(r.sin * r.sin + r.cos * r.cos, 1) << degrees;
+    EXPECT_LE(apart(degrees_of(r), degrees), rotation_tolerance_radians) << degrees;
+    EXPECT_LE(mpz_sizeinbase(r.cos.get_den_mpz_t(), 10), 25u) << degrees;
+  }
+}
+
 TEST(ExactRotation, RefusesAnAngleThatIsNotANumber) {
   EXPECT_THROW(exact_rotation(std::nan("")), std::invalid_argument);
   EXPECT_THROW(exact_rotation(INFINITY), std::invalid_argument);

@@ -41,6 +41,11 @@ void expect_certified(const World& world, const Query& query, const PlanReport<P
   EXPECT_LE(std::abs(std::remainder(degrees_of(report.path.front().rotation) - query.start_theta.value_or(0), 360)), 1e-8);
   EXPECT_LE(std::abs(std::remainder(degrees_of(report.path.back().rotation) - query.goal_theta.value_or(0), 360)), 1e-8);
   if (auto why = test::check_motions_are_single(report.path)) ADD_FAILURE() << *why;
+  // The printed angles follow the motion: consecutive ones differ by the turn, the short way.
+  EXPECT_EQ(report.path.front().degrees, query.start_theta.value_or(0));
+  for (std::size_t i = 1; i < report.path.size(); ++i)
+    EXPECT_NEAR(report.path[i].degrees - report.path[i - 1].degrees,
+                turn_degrees(report.path[i - 1].rotation, report.path[i].rotation), 1e-6) << "motion " << i;
 
   std::map<std::pair<Rational, Rational>, std::unique_ptr<CSpace>> cspaces;  // by (sin, cos)
   std::vector<World> worlds;
@@ -171,6 +176,19 @@ TEST(RotationPlanner, StartsBetweenLayersWithACertifiedTurnOntoTheNearest) {
   expect_certified(world, world.queries.front(), report);
   EXPECT_EQ(report.path.front().degrees, 2.5);
   EXPECT_EQ(report.path.back().degrees, 88.0);
+}
+
+TEST(RotationPlanner, TurnsTheShortWayAcrossZeroAndSaysSoInItsAngles) {
+  World world;
+  world.bounds = Bounds{Rational(0), Rational(0), Rational(20), Rational(20)};
+  world.robot.parts.push_back({{Rational(-3), Rational(-1, 2)}, {Rational(3), Rational(-1, 2)}, {Rational(3), Rational(1, 2)},
+                               {Rational(-3), Rational(1, 2)}});
+  world.queries.push_back({{Rational(10), Rational(10)}, {Rational(10), Rational(10)}, "start/goal", 350.0, 10.0});
+  const auto report = RotationPlanner(world, every(5)).plan(world.queries.front());
+  expect_certified(world, world.queries.front(), report);
+  EXPECT_NEAR(report.facts.number("rotation"), 20, 1e-6);  // 350 → 360 → 370, not back through 180
+  EXPECT_EQ(report.path.front().degrees, 350);
+  EXPECT_EQ(report.path.back().degrees, 370);
 }
 
 TEST(RotationPlanner, SaysWhichObstacleAStartHitsAtWhichAngle) {
