@@ -28,22 +28,24 @@ double robot_radius(const Robot& robot) {
 }
 
 // The path's poses, and poses between them every `spacing` units of translation or `degrees` of
-// turn; angles unwrapped (a turn from 350° to 10° goes on to 370°).
+// turn; angles as the poses name them (unwrapped along the path: 350° to 10° goes on to 370°).
 std::vector<Sample> samples(const std::vector<Pose>& path, double radius, double spacing, double degrees) {
   std::vector<Sample> out;
   if (path.empty()) return out;
-  Sample at{to_double(path[0].position.x), to_double(path[0].position.y), degrees_of(path[0].rotation) * pi / 180, 0};
+  Sample at{to_double(path[0].position.x), to_double(path[0].position.y), path[0].degrees * pi / 180, 0};
   out.push_back(at);
   for (std::size_t i = 1; i < path.size(); ++i) {
     const double x = to_double(path[i].position.x), y = to_double(path[i].position.y);
-    const double turn = turn_degrees(path[i - 1].rotation, path[i].rotation) * pi / 180;
+    const double turn = (path[i].degrees - path[i - 1].degrees) * pi / 180;
     const double length = std::hypot(x - at.x, y - at.y);
     const double move = turn != 0 ? std::abs(turn) / (degrees * pi / 180) : length / spacing;
     const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil(move)));
     const Sample from = at;
     for (std::size_t k = 1; k <= steps; ++k) {
       const double f = static_cast<double>(k) / static_cast<double>(steps);
-      at = {from.x + (x - from.x) * f, from.y + (y - from.y) * f, from.angle + turn * f,
+      // The angle from the poses' own, not summed turn by turn: a path back to 0° ends at 0° exactly.
+      const double angle = (path[i - 1].degrees + (path[i].degrees - path[i - 1].degrees) * f) * pi / 180;
+      at = {from.x + (x - from.x) * f, from.y + (y - from.y) * f, angle,
             from.progress + (length + radius * std::abs(turn)) * f};
       out.push_back(at);
     }
@@ -103,7 +105,7 @@ svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<Pose>>& 
   const double width = box.xmax - box.xmin, height = box.ymax - box.ymin;
   // The orientation panel sits right of the world, in world units, half the world's height.
   const svg::Box2 panel{box.xmax + 0.1 * width, box.ymin + 0.25 * height, box.xmax + 0.55 * width, box.ymin + 0.75 * height};
-  svg::Drawing d({box.xmin, box.ymin, panel.xmax, box.ymax}, 1100);
+  svg::Drawing d({box.xmin, box.ymin, panel.xmax + 0.1 * width, box.ymax}, 1100);  // room for the angle labels
   draw_surroundings(d, world);
 
   // Strobe spacing: about the robot's radius (or a fortieth of the world), coarser when a path
