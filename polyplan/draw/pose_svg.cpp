@@ -20,13 +20,6 @@ struct Sample {
   double x, y, angle, progress;
 };
 
-double robot_radius(const Robot& robot) {
-  double radius = 0;
-  for (const Ring& part : robot.parts)
-    for (const ExactPoint& p : part) radius = std::max(radius, std::hypot(to_double(p.x), to_double(p.y)));
-  return radius;
-}
-
 // The path's poses, and poses between them every `spacing` units of translation or `degrees` of
 // turn; angles as the poses name them (unwrapped along the path: 350° to 10° goes on to 370°).
 std::vector<Sample> samples(const std::vector<Pose>& path, double radius, double spacing, double degrees) {

@@ -1,7 +1,8 @@
 #include <polyplan/geometry/rotation.hpp>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
+#include <charconv>
 #include <stdexcept>
 
 namespace polyplan {
@@ -87,11 +88,22 @@ Robot rotated(const Robot& robot, const Rotation& rotation) {
   return out;
 }
 
+double robot_radius(const Robot& robot) {
+  double radius = 0;
+  for (const Ring& part : robot.parts)
+    for (const ExactPoint& p : part) radius = std::max(radius, std::hypot(to_double(p.x), to_double(p.y)));
+  return radius;
+}
+
+std::string angle_text(double degrees) {
+  char text[32];
+  const auto [end, error] = std::to_chars(text, text + sizeof text, degrees);  // shortest round trip
+  return (error == std::errc() ? std::string(text, end) : std::to_string(degrees)) + "°";
+}
+
 std::string to_string(const Pose& pose) {
-  char angle[32];
-  std::snprintf(angle, sizeof angle, "%g°", pose.degrees);
   const std::string at = to_string(pose.position);
-  return at.substr(0, at.size() - 1) + ", " + angle + "]";
+  return at.substr(0, at.size() - 1) + ", " + angle_text(pose.degrees) + "]";
 }
 
 }  // namespace polyplan

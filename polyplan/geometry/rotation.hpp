@@ -38,6 +38,10 @@ ExactPoint rotate(const ExactPoint& p, const Rotation& rotation);
 // The robot turned about its reference point (the origin of its frame).
 Robot rotated(const Robot& robot, const Rotation& rotation);
 
+// The largest distance of a robot vertex from its reference point (0 for a point robot): how far
+// a turn of one radian moves any point of the robot, at most. In doubles.
+double robot_radius(const Robot& robot);
+
 // A rotating robot's configuration: its reference point's exact position and its exact rotation.
 // `degrees` is the rotation's angle as the planner names it (a layer's nominal angle, or the
 // query's theta); the exact rotation is within rotation_tolerance_radians of it.
@@ -46,6 +50,9 @@ struct Pose {
   Rotation rotation;
   double degrees = 0;
 };
+
+// "5°", "-22.5°": an angle as messages name it (the shortest text that reads back the same).
+std::string angle_text(double degrees);
 
 // "[3/2, 7, 60°]": a pose as messages name it.
 std::string to_string(const Pose& pose);

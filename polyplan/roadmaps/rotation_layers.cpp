@@ -14,15 +14,10 @@
 #include <string>
 
 namespace polyplan {
-namespace {
-
-std::string degrees_text(double degrees) { return detail::show_number(degrees) + "°"; }
-
-}  // namespace
 
 OrientationSet::OrientationSet(const OrientationOptions& o) {
   const double to = o.to.value_or(o.from + 360);
-  const std::string range = "[" + degrees_text(o.from) + ", " + degrees_text(to) + "]";
+  const std::string range = "[" + angle_text(o.from) + ", " + angle_text(to) + "]";
   if (!std::isfinite(o.from) || !std::isfinite(to) || to < o.from)
     throw std::invalid_argument("rotation-from/rotation-to: the range " + range + " is reversed or not finite");
   const double width = to - o.from;
@@ -43,20 +38,20 @@ OrientationSet::OrientationSet(const OrientationOptions& o) {
       throw std::invalid_argument("rotation-step " + detail::show_number(o.step) + ": expected a number of degrees > 0");
     const double steps = width / o.step;
     if (steps > static_cast<double>(max_rotation_layers))
-      throw std::invalid_argument("rotation-step " + degrees_text(o.step) + ": more than " +
+      throw std::invalid_argument("rotation-step " + angle_text(o.step) + ": more than " +
                                   std::to_string(max_rotation_layers) + " layers over " + range);
     intervals = static_cast<std::size_t>(std::llround(steps));
     // The step must divide the range: reading "0.1" gives a double, so "divides" is decided to
     // within rounding of the user's numbers (this picks the layers; it decides no collision).
     if (std::abs(static_cast<double>(intervals) * o.step - width) > 1e-9 * std::max(1.0, width))
-      throw std::invalid_argument("rotation-step " + degrees_text(o.step) + " does not divide the range " + range +
+      throw std::invalid_argument("rotation-step " + angle_text(o.step) + " does not divide the range " + range +
                                   " (" + detail::show_number(steps) + " steps)");
     step_ = o.step;
     if (whole_circle_ && intervals == 0) intervals = 1;
   }
   const std::size_t n = whole_circle_ ? intervals : intervals + 1;
   if (n > 1 && step_ >= 180)
-    throw std::invalid_argument("rotation-step " + degrees_text(step_) +
+    throw std::invalid_argument("rotation-step " + angle_text(step_) +
                                 ": neighbouring layers must be less than 180° apart (a turn is enclosed the short way)");
   for (std::size_t k = 0; k < n; ++k)
     degrees_.push_back(k + 1 == n && !whole_circle_ && n > 1 ? to : o.from + static_cast<double>(k) * step_);

@@ -48,15 +48,6 @@ struct LayerRoadmap {
   std::vector<std::vector<NodeId>> turn_points;  // per turn layer beside it: its corners here
 };
 
-double robot_radius(const Robot& robot) {
-  double radius = 0;
-  for (const Ring& part : robot.parts)
-    for (const ExactPoint& p : part) radius = std::max(radius, std::hypot(to_double(p.x), to_double(p.y)));
-  return radius;
-}
-
-std::string degrees_text(double degrees) { return detail::show_number(degrees) + "°"; }
-
 // A query's start or goal: its pose and the layers it enters or leaves by, with the turn onto
 // each (certified by `turns`, the exact C-spaces of its turn enclosures).
 struct QueryEnd {
@@ -212,8 +203,8 @@ struct RotationPlanner::Impl {
     const auto angle = set.normalized(asked);
     const std::string pose_text = to_string(Pose{position, {}, asked});
     if (!angle)
-      return std::string("the ") + what + " " + pose_text + " is outside the orientations [" + degrees_text(set.degrees(0)) +
-             ", " + degrees_text(set.degrees(set.size() - 1)) + "]";
+      return std::string("the ") + what + " " + pose_text + " is outside the orientations [" + angle_text(set.degrees(0)) +
+             ", " + angle_text(set.degrees(set.size() - 1)) + "]";
     if (!roadmaps[0].triangulation->in_frame(position))
       return std::string("the ") + what + " " + pose_text +
              " is beyond the frame the planner triangulated around this world without bounds (give the world bounds)";
@@ -232,7 +223,7 @@ struct RotationPlanner::Impl {
       end.turn_worlds.push_back(world_with_robot(world(), turn_enclosure(world().robot, end.pose.rotation, layer(k).rotation)));
       auto turn = std::make_unique<CSpace>(end.turn_worlds.back());
       if (auto why = turn->collision_at(position)) {
-        refused += (refused.empty() ? "" : "; ") + std::string("turning to ") + degrees_text(layer(k).degrees) +
+        refused += (refused.empty() ? "" : "; ") + std::string("turning to ") + angle_text(layer(k).degrees) +
                    ", what it sweeps is blocked: " + *why;
         end.turn_worlds.pop_back();
         continue;
@@ -440,10 +431,10 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
     report.length = translated + g.turn_cost(turned);
     report.certificate = {true, "exact path check in each layer; turns by their turn layers' exact C-spaces (swept-area enclosure)"};
   } else {
-    report.why_not = set.size() == 1 ? "no motion joins start and goal at the one orientation " + degrees_text(set.degrees(0)) +
+    report.why_not = set.size() == 1 ? "no motion joins start and goal at the one orientation " + angle_text(set.degrees(0)) +
                                            " (no turns)"
                                      : "no certified motion joins start and goal over " + std::to_string(set.size()) +
-                                           " orientations " + degrees_text(set.step()) +
+                                           " orientations " + angle_text(set.step()) +
                                            " apart (a turn is allowed only where its whole sweep is free)";
   }
   g.release_query_vertices();
