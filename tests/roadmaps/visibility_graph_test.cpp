@@ -166,6 +166,19 @@ TEST(VisibilityGraph, ExactFitCorridorIsClosedAndOneBillionthWiderIsOpen) {
   EXPECT_NEAR(wide.length, 15.0, 1e-12);  // straight along y = 4.5, sliding on the lower block
 }
 
+TEST(VisibilityGraph, ARobotThatFitsNowhereHasNoPathNotACrash) {
+  // A 6×6 robot in a 4×4 box: no free space, so an empty triangulation (its flood fill once
+  // walked off the empty triangulation's infinite face).
+  const World world = test::world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [],
+      "robot": {"parts": [[[-3, -3], [3, -3], [3, 3], [-3, 3]]]}, "start": [2, 2], "goal": [2, 2]})");
+  const CSpace cspace(world);
+  EXPECT_TRUE(cspace.free_components().empty());
+  VisibilityGraph graph(cspace);
+  const Report report = graph.plan(world.queries.front());
+  EXPECT_FALSE(report.found);
+  EXPECT_NE(report.why_not.find("not free"), std::string::npos) << report.why_not;
+}
+
 TEST(VisibilityGraph, PinchPointIsNotAPassage) {
   EXPECT_FALSE(plan_all(shipped("touching_corners.json"))[0].found);
 }
