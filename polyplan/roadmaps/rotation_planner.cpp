@@ -56,7 +56,6 @@ struct QueryEnd {
   std::vector<std::size_t> entry_layers;      // off a layer: the nearest layers it can turn onto
   std::vector<double> entry_turns;            // degrees, pose → layer
   std::vector<std::unique_ptr<CSpace>> turns;  // the turn enclosures' C-spaces, by entry
-  std::vector<World> turn_worlds;
 };
 
 }  // namespace
@@ -67,7 +66,6 @@ struct RotationPlanner::Impl {
   RotationLayers layers;
   std::vector<LayerRoadmap> roadmaps;
   PoseGraph graph;
-  std::size_t turn_edges = 0;
   // Vertices of the query being answered (start and goal in each layer), reused.
   std::vector<NodeId> query_pool;
   std::size_t query_vertices_used = 0;
@@ -80,7 +78,7 @@ struct RotationPlanner::Impl {
         weight(o.weight < 0 ? robot_radius(world.robot) : o.weight),
         layers(world, OrientationSet(o.orientations)) {
     for (const RotationLayer& layer : layers.layers()) {
-      const double error = std::abs(layers.orientations().distance(degrees_of(layer.rotation), layer.degrees)) * pi / 180;
+      const double error = std::abs(std::remainder(degrees_of(layer.rotation) - layer.degrees, 360.0)) * pi / 180;
       max_error_radians = std::max(max_error_radians, error);
     }
     roadmaps.resize(layers.layers().size());
@@ -151,7 +149,6 @@ struct RotationPlanner::Impl {
       from_nodes.push_back(a);
       to_nodes.push_back(b);
       boost::add_edge(a, b, Motion{turn_cost(turn.turn_degrees)}, graph);
-      ++turn_edges;
     }
     roadmaps[turn.from].turn_points.push_back(std::move(from_nodes));
     roadmaps[turn.to].turn_points.push_back(std::move(to_nodes));
@@ -220,12 +217,11 @@ struct RotationPlanner::Impl {
     if (auto why = CSpace(own).collision_at(position)) return std::string("the ") + what + " " + pose_text + " is not free: " + *why;
     std::string refused;
     for (std::size_t k : set.nearest(*angle)) {
-      end.turn_worlds.push_back(world_with_robot(world(), turn_enclosure(world().robot, end.pose.rotation, layer(k).rotation)));
-      auto turn = std::make_unique<CSpace>(end.turn_worlds.back());
+      auto turn = std::make_unique<CSpace>(  // a C-space keeps its own copy of the world
+          world_with_robot(world(), turn_enclosure(world().robot, end.pose.rotation, layer(k).rotation)));
       if (auto why = turn->collision_at(position)) {
         refused += (refused.empty() ? "" : "; ") + std::string("turning to ") + angle_text(layer(k).degrees) +
                    ", what it sweeps is blocked: " + *why;
-        end.turn_worlds.pop_back();
         continue;
       }
       end.entry_layers.push_back(k);

@@ -112,6 +112,14 @@ TEST(RotationPlanner, ThePianoTurnsInTheCorner) {
   const auto report = RotationPlanner(world, every(5)).plan(q);
   expect_certified(world, q, report);
   EXPECT_NEAR(report.facts.number("rotation"), 90, 1e-6);  // no more turning than the corner needs
+
+  // Over a range past 180° (where atan2 reads 270° as -90°) the layers are still within tolerance.
+  RotationOptions range = every(10);
+  range.orientations.to = 270.0;
+  const auto ranged = RotationPlanner(world, range).plan(q);
+  EXPECT_TRUE(ranged.found);
+  EXPECT_EQ(ranged.facts.count("layers.count"), 28);
+  EXPECT_LE(ranged.facts.number("layers.max_error_radians"), rotation_tolerance_radians);
 }
 
 TEST(RotationPlanner, NeverTurnsInAnExactFitCorridor) {
