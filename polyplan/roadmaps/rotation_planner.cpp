@@ -437,6 +437,13 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
   facts.set("rotation", turned);
   facts.set("translation_length", translated);
   facts.set("layers.used", layers_on_path.size());
+  // The actual angle of each layer the path uses (its exact rotation's), beside the nominal one.
+  std::string actual;
+  std::sort(layers_on_path.begin(), layers_on_path.end());
+  for (std::size_t k : layers_on_path)
+    actual += (actual.empty() ? "" : ", ") + angle_text(g.layer(k).degrees) + " is " +
+              angle_text(g.layer(k).degrees + std::remainder(degrees_of(g.layer(k).rotation) - g.layer(k).degrees, 360.0));
+  facts.set("layers.actual", actual);
   facts.set("turn_layers.used", turns_used);
   return finish();
 }

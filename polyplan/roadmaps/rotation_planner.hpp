@@ -41,8 +41,10 @@ class RotationPlanner final : public Planner<RotatingRobot> {
   double rotation_weight() const;  // the weight in use (the robot's radius by default)
 
   // Facts: rotation (degrees turned in all), translation_length, rotation_weight, layers.count,
-  // layers.step, layers.used (distinct layers on the path), layers.max_error_radians (the largest
-  // distance of a layer's exact rotation from its nominal angle), turn_layers.built,
+  // layers.step, layers.used (distinct layers on the path), layers.actual (each of those layers'
+  // nominal angle and its exact rotation's actual one: "60° is 60.0000000017°, ..."),
+  // layers.max_error_radians (the largest distance of a layer's exact rotation from its nominal
+  // angle), turn_layers.built,
   // turn_layers.used, roadmap.kind ("rotation-layers"), roadmap.vertices, roadmap.edges,
   // roadmap.seconds, search.*, query_seconds. The path's poses carry each layer's exact rotation
   // and its nominal angle, unwrapped along the path: the first is the start's theta as the query

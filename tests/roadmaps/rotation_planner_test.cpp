@@ -98,6 +98,7 @@ TEST(RotationPlanner, Seed004NeedsATurnAndGetsACertifiedOne) {
   EXPECT_GT(report.facts.number("rotation"), 20);
   EXPECT_GT(report.facts.count("turn_layers.used"), 0);
   EXPECT_LE(report.facts.number("layers.max_error_radians"), rotation_tolerance_radians);
+  EXPECT_EQ(report.facts.text("layers.actual").find("0° is 0°"), 0u) << report.facts.text("layers.actual");
 }
 
 TEST(RotationPlanner, ThePianoTurnsInTheCorner) {
