@@ -10,7 +10,6 @@
 namespace polyplan {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
 // At most this many robots in one strobe: enough to see the motion, few enough to see through.
 constexpr std::size_t kMostRobotsPerPath = 90;
 

@@ -8,7 +8,6 @@
 
 #include <boost/variant/get.hpp>
 
-#include <cmath>
 #include <tuple>
 
 namespace polyplan {
@@ -225,7 +224,6 @@ std::optional<std::string> CSpace::query_not_free(const Query& query) const {
 
 void CSpace::require_free_queries() const {
   // A pose turned away from 0° is not a configuration of this C-space (the robot as drawn).
-  const auto turned = [](const std::optional<double>& theta) { return theta && std::fmod(*theta, 360.0) != 0; };
   for (const Query& q : impl_->world.queries)
     for (const auto& [what, point, theta] : {std::tuple{"start", &q.start, &q.start_theta}, std::tuple{"goal", &q.goal, &q.goal_theta}})
       if (auto why = turned(*theta) ? std::nullopt : collision_at(*point))

@@ -8,8 +8,6 @@
 namespace polyplan {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-
 // The rotation by `radians`, |radians| <= π/4, from the Pythagorean triple of t = p/q ≈ tan(θ/2):
 // sin = 2pq / (p² + q²), cos = (q² − p²) / (p² + q²), so sin² + cos² = 1 exactly. This is the
 // construction of CGAL's rational_rotation_approximation, but p/q runs through the continued

@@ -14,6 +14,8 @@
 
 namespace polyplan {
 
+inline constexpr double pi = 3.14159265358979323846;
+
 // How far an exact rotation may be from the angle asked for, in radians.
 inline constexpr double rotation_tolerance_radians = 1e-10;
 

@@ -57,10 +57,11 @@ inline std::vector<ExactPoint> query_points(const World& world, std::vector<Exac
   return more;
 }
 
-// Whether a query gives an orientation other than 0 degrees (modulo 360): only the rotation
-// planner answers such a world.
+// Whether an orientation is other than 0 degrees (modulo 360), and whether a query of the world
+// gives one: only the rotation planner answers such a world.
+inline bool turned(const std::optional<double>& theta) { return theta && std::fmod(*theta, 360.0) != 0; }
+
 inline bool turns_the_robot(const World& world) {
-  const auto turned = [](const std::optional<double>& theta) { return theta && std::fmod(*theta, 360.0) != 0; };
   for (const Query& q : world.queries)
     if (turned(q.start_theta) || turned(q.goal_theta)) return true;
   return false;

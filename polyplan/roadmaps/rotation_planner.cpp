@@ -22,7 +22,6 @@ namespace {
 using detail::FreeSpaceTriangulation;
 using detail::to_point;
 
-constexpr double pi = 3.14159265358979323846;
 constexpr std::size_t kOffLayer = static_cast<std::size_t>(-1);  // a query pose between layers
 constexpr std::size_t kNoNode = static_cast<std::size_t>(-1);
 
@@ -174,14 +173,13 @@ struct RotationPlanner::Impl {
     std::set<NodeId> corners;
     for (NodeId c : r.corner_of)
       if (c != kNoNode) corners.insert(c);
-    for (std::size_t side = 0; side < r.turn_points.size(); ++side)
-      for (NodeId p : r.turn_points[side]) {
-        if (corners.count(p)) continue;  // joined as a corner already
-        std::vector<NodeId> across;
-        for (std::size_t other = side + 1; other < r.turn_points.size(); ++other)
-          across.insert(across.end(), r.turn_points[other].begin(), r.turn_points[other].end());
-        join(k, p, across);
-      }
+    for (std::size_t side = 0; side < r.turn_points.size(); ++side) {
+      std::vector<NodeId> across;  // the turn points of the sides after this one (each pair once)
+      for (std::size_t other = side + 1; other < r.turn_points.size(); ++other)
+        across.insert(across.end(), r.turn_points[other].begin(), r.turn_points[other].end());
+      for (NodeId p : r.turn_points[side])
+        if (!corners.count(p)) join(k, p, across);  // a corner is joined as a corner already
+    }
   }
 
   // Every vertex of layer k that is not a corner: what a query vertex tries to reach directly.

@@ -9,8 +9,6 @@
 namespace polyplan {
 namespace {
 
-constexpr double pi = 3.14159265358979323846;
-
 // The angle between two angles in radians, the short way.
 double apart(double a_degrees, double b_degrees) {
   const double d = std::remainder(a_degrees - b_degrees, 360.0);
