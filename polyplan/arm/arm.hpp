@@ -3,7 +3,7 @@
 // absolute angle of link 1 (from +x, counter-clockwise), θi the angle of link i relative to
 // link i−1. In prose links are numbered from 1 (link 1 touches the base); in code, indices into
 // `links`, joint_positions and link_outline start at 0, so link k runs from joints[k] to joints[k+1].
-#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 
 #include <Eigen/Core>

@@ -466,4 +466,15 @@ ArmSafeStep ArmCollisionChecker::safe_step(const JointAngles& q, std::span<const
 
 std::size_t ArmCollisionChecker::checks() const { return impl_->checks; }
 
+std::optional<std::string> query_not_free(const ArmCollisionChecker& checker, const ArmQuery& query) {
+  const std::size_t joints = checker.arm().joints();
+  if (query.start.size() != joints || query.goal.size() != joints)
+    return "the query " + query.name + " has " + std::to_string(query.start.size()) + " start and " +
+           std::to_string(query.goal.size()) + " goal angles for an arm of " + std::to_string(joints) + " joints";
+  for (const auto* end : {&query.start, &query.goal})
+    if (const auto contact = checker.first_contact(*end))
+      return std::string(end == &query.start ? "the start" : "the goal") + " collides: " + contact->describe();
+  return std::nullopt;
+}
+
 }  // namespace polyplan

@@ -27,7 +27,7 @@
 //
 // Not thread-safe: a checker keeps scratch buffers and a counter (mutable, for speed: no
 // allocation per check). Use one checker per thread; construction is cheap.
-#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/world.hpp>
@@ -118,5 +118,10 @@ class ArmCollisionChecker {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// Why the query cannot be planned for the checker's arm: angles of the wrong count ("the query
+// easy has 2 start and 3 goal angles for an arm of 3 joints") or a start or goal that collides
+// ("the start collides: link 2 meets obstacles[0]"); nullopt when both are free. Planners' why_not.
+std::optional<std::string> query_not_free(const ArmCollisionChecker&, const ArmQuery&);
 
 }  // namespace polyplan

@@ -167,16 +167,10 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
     return report;
   };
 
-  if (query.start.size() != joints || query.goal.size() != joints) {
-    report.why_not = "the query " + query.name + " has " + std::to_string(query.start.size()) + " start and " +
-                     std::to_string(query.goal.size()) + " goal angles for an arm of " + std::to_string(joints) + " joints";
+  if (auto why = query_not_free(checker_, query)) {
+    report.why_not = *why;
     return finish();
   }
-  for (const auto* end : {&query.start, &query.goal})
-    if (const auto contact = checker_.first_contact(*end)) {
-      report.why_not = std::string(end == &query.start ? "the start" : "the goal") + " collides: " + contact->describe();
-      return finish();
-    }
 
   std::vector<GridAxis> axes(joints, GridAxis{n, options_.torus ? AxisKind::wrapping : AxisKind::bounded, grid.step});
   struct BudgetReached {};  // thrown from the cell test, out of the search, when the budget is spent

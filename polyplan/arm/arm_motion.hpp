@@ -27,7 +27,7 @@
 //    crossing into it (a zero-width link sweeping over a point crosses it in a single instant), or
 //    slides along something at a small clearance for long, cannot be decided this way.
 //
-// Angles are normalised before interpolating (angles.hpp), so a motion runs between the
+// Angles are normalised before interpolating (geometry/angles.hpp), so a motion runs between the
 // normalised angles; for |angle| far beyond 10^3 radians normalisation itself moves the arm by
 // more than the safety margin, and `from`/`to` should be given normalised.
 //
@@ -35,7 +35,7 @@
 // k = max(1, ceil(max_i angular_distance(from_i, to_i) / resolution)), so consecutive samples differ
 // by at most `resolution` radians in every joint (up to rounding): frames for pictures, and what
 // tests sample densely to check a certificate independently. Checking samples is not a certificate.
-#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
 
 #include <cstddef>

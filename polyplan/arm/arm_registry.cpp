@@ -1,6 +1,12 @@
 #include <polyplan/arm/arm_registry.hpp>
 
 #include <polyplan/arm/arm_grid_planner.hpp>
+#include <polyplan/arm/arm_sampling_space.hpp>
+#include <polyplan/roadmaps/lazy_prm_planner.hpp>
+#include <polyplan/roadmaps/prm_planner.hpp>
+#include <polyplan/roadmaps/rrt_connect_planner.hpp>
+#include <polyplan/roadmaps/rrt_planner.hpp>
+#include <polyplan/roadmaps/rrt_star_planner.hpp>
 
 namespace polyplan {
 
@@ -9,6 +15,11 @@ template <>
 const PlannerRegistry<PlanarArm>& planners<PlanarArm>() {
   static const PlannerRegistry<PlanarArm> registry{
       arm_grid_planner_entry(),
+      prm_planner_entry<PlanarArm>(arm_sampling_space),
+      lazy_prm_planner_entry<PlanarArm>(arm_sampling_space),
+      rrt_planner_entry<PlanarArm>(arm_sampling_space),
+      rrt_star_planner_entry<PlanarArm>(arm_sampling_space),
+      rrt_connect_planner_entry<PlanarArm>(arm_sampling_space),
   };
   return registry;
 }

@@ -1,7 +1,8 @@
 #include <polyplan/draw/arm_svg.hpp>
 
-#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm.hpp>
+#include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/draw/theme.hpp>
 #include <polyplan/draw/world_svg.hpp>
@@ -38,6 +39,18 @@ constexpr double kRestAtStartSeconds = 0.5, kRestAtGoalSeconds = 1;
 constexpr std::size_t kMostTraceVertices = 2000;
 // Configurations marked as where the moving arm will be, for placing the legend.
 constexpr std::size_t kMostSweepMarks = 200;
+// The planner's graph, evenly spread over its lists: at most this many edges traced in the
+// workspace and drawn on the C-space panel, and vertices drawn as dots on each; the workspace's
+// traces take a point every kGraphTraceStep of an edge's largest joint turn, a coarser step when
+// they would take more than kMostGraphTracePoints points together.
+constexpr std::size_t kMostWorkspaceGraphEdges = 3000;
+constexpr std::size_t kMostPanelGraphEdges = 20000;
+constexpr std::size_t kMostGraphVertices = 3000;
+constexpr std::size_t kMostGraphTracePoints = 40000;
+constexpr double kGraphTraceStep = 5 / kDegreesPerRadian;
+// A two-joint report with a graph but no cells of its own (the sampling planners) gets a C-space
+// panel of this many cells per axis, each checked at its centre.
+constexpr std::size_t kCheckedCSpaceCells = 180;
 
 // Colours (draw/theme.hpp): blocked configurations in the obstacles' colour, free ones in the
 // free-space tint.
@@ -91,6 +104,29 @@ void check_picture(const ArmPlanPicture& picture) {
       }
     }
   }
+  if (picture.graph) {
+    const PlanGraph<JointAngles>& graph = *picture.graph;
+    for (std::size_t k = 0; k < graph.vertices.size(); ++k) {
+      if (graph.vertices[k].size() != arm.joints()) {
+        throw std::invalid_argument("arm picture: graph vertex " + std::to_string(k) + " has " +
+                                    std::to_string(graph.vertices[k].size()) + " joint angles, the arm has " +
+                                    std::to_string(arm.joints()) + " joints");
+      }
+      for (double angle : graph.vertices[k]) {
+        if (!std::isfinite(angle)) {
+          throw std::invalid_argument("arm picture: graph vertex " + std::to_string(k) + " has a non-finite angle");
+        }
+      }
+    }
+    for (std::size_t k = 0; k < graph.edges.size(); ++k) {
+      const auto& [u, v] = graph.edges[k];
+      if (u >= graph.vertices.size() || v >= graph.vertices.size()) {
+        throw std::invalid_argument("arm picture: graph edge " + std::to_string(k) + " joins vertices " +
+                                    std::to_string(u) + " and " + std::to_string(v) + " of " +
+                                    std::to_string(graph.vertices.size()));
+      }
+    }
+  }
   if (picture.cspace) {
     if (arm.joints() != 2) {
       throw std::invalid_argument("arm picture: a C-space image needs an arm of 2 joints, this one has " +
@@ -108,6 +144,10 @@ void check_picture(const ArmPlanPicture& picture) {
       }
     }
   }
+}
+
+bool shows_graph(const ArmPlanPicture& picture) {
+  return picture.graph && !(picture.graph->vertices.empty() && picture.graph->edges.empty());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -339,15 +379,112 @@ void draw_configuration(svg::Drawing& d, const Arm& arm, const JointAngles& q, c
   }
 }
 
-void draw_tip_path(svg::Drawing& d, const Arm& arm, const std::vector<JointAngles>& motion) {
+// The end effector's path, dashed; `over_graph`: on a white halo, so that it stands out of the
+// graph's traces beneath it.
+void draw_tip_path(svg::Drawing& d, const Arm& arm, const std::vector<JointAngles>& motion, bool over_graph) {
   if (motion.size() < 2) return;
   Points tip;
   for (std::size_t i : spread_indices(motion.size(), kMostTraceVertices)) {
     tip.push_back(point(joint_positions(arm, motion[i]).back()));
   }
+  if (over_graph) {
+    svg::Style halo = stroked("#fff", 4);
+    halo.opacity = 0.85;
+    d.polyline(tip, halo);
+  }
   const svg::Style s = stroked(theme::trace, 1.3, "2 3");
   d.polyline(tip, s);
   d.legend("end-effector path", s, svg::Swatch::line);
+}
+
+// The planner's graph looks as a polygon world's does (draw/plan_svg.cpp's draw_graph): thin faint
+// edges and dots in the roadmap's colour, the dots smaller and fainter here (a tree of thousands).
+svg::Style graph_edge_style() {
+  svg::Style s = stroked(theme::roadmap, 0.7);
+  s.opacity = 0.45;
+  return s;
+}
+
+svg::Style graph_vertex_style() {
+  svg::Style s = filled(theme::roadmap, 1.0, "none", 0);
+  s.opacity = 0.7;
+  return s;
+}
+
+// "12", or "3000 of 12000" when fewer are drawn than there are.
+std::string drawn_of(std::size_t drawn, std::size_t all) {
+  return drawn == all ? std::to_string(all) : std::to_string(drawn) + " of " + std::to_string(all);
+}
+
+// The graph in the workspace: each edge as the end effector's trace while every joint turns the
+// short way along it, each vertex as a dot where it puts the end effector.
+void draw_workspace_graph(svg::Drawing& d, const Arm& arm, const PlanGraph<JointAngles>& graph) {
+  const std::vector<std::size_t> edges = spread_indices(graph.edges.size(), kMostWorkspaceGraphEdges);
+  const std::vector<std::size_t> vertices = spread_indices(graph.vertices.size(), kMostGraphVertices);
+  if (edges.empty() && vertices.empty()) return;
+  std::vector<Eigen::Vector2d> joints;
+  auto tip = [&](const JointAngles& q) {
+    joint_positions_into(arm, q, joints);
+    return point(joints.back());
+  };
+
+  // The largest joint turn of each edge, and the step along it that keeps the points in bounds.
+  std::vector<double> turns;
+  turns.reserve(edges.size());
+  for (std::size_t e : edges) {
+    const JointAngles& a = graph.vertices[graph.edges[e].first];
+    const JointAngles& b = graph.vertices[graph.edges[e].second];
+    double turn = 0;
+    for (std::size_t j = 0; j < a.size(); ++j) turn = std::max(turn, angular_distance(a[j], b[j]));
+    turns.push_back(turn);
+  }
+  const auto steps = [](double turn, double step) {
+    return std::max<std::size_t>(1, static_cast<std::size_t>(std::ceil(turn / step)));
+  };
+  double step = kGraphTraceStep, total_turn = 0;
+  std::size_t points = 0;
+  for (double turn : turns) {
+    points += 1 + steps(turn, step);
+    total_turn += turn;
+  }
+  // An edge takes 1 + max(1, ⌈turn / step⌉) ≤ 2 + turn / step points: this step keeps them all
+  // within kMostGraphTracePoints (and is coarser than kGraphTraceStep, as they would not be).
+  static_assert(kMostGraphTracePoints > 2 * kMostWorkspaceGraphEdges);
+  if (points > kMostGraphTracePoints) {
+    step = total_turn / static_cast<double>(kMostGraphTracePoints - 2 * edges.size());
+  }
+
+  std::vector<std::pair<svg::Point2, svg::Point2>> traces;  // chained: one move-to per edge
+  JointAngles q;
+  for (std::size_t i = 0; i < edges.size(); ++i) {
+    const JointAngles& a = graph.vertices[graph.edges[edges[i]].first];
+    const JointAngles& b = graph.vertices[graph.edges[edges[i]].second];
+    const std::size_t n = steps(turns[i], step);
+    svg::Point2 from = tip(a);
+    for (std::size_t k = 1; k <= n; ++k) {
+      interpolate_angles_into(a, b, static_cast<double>(k) / static_cast<double>(n), q);
+      const svg::Point2 to = tip(q);
+      traces.push_back({from, to});
+      from = to;
+    }
+  }
+  Points dots;
+  dots.reserve(vertices.size());
+  for (std::size_t v : vertices) dots.push_back(tip(graph.vertices[v]));
+
+  const svg::Style edge_style = graph_edge_style(), vertex_style = graph_vertex_style();
+  d.begin_group("class=\"workspace-graph\"");
+  d.segments(traces, edge_style);
+  d.points(dots, 1.1, vertex_style);
+  d.end_group();
+  if (!edges.empty()) {
+    d.legend(graph.kind + " edges (" + drawn_of(edges.size(), graph.edges.size()) + "): end-effector traces", edge_style,
+             svg::Swatch::line);
+  }
+  if (!vertices.empty()) {
+    d.legend(graph.kind + " vertices (" + drawn_of(vertices.size(), graph.vertices.size()) + ")", vertex_style,
+             svg::Swatch::dot);
+  }
 }
 
 // The arm at the motion's keyframes: one group per link nested in its parent's, each rotating by
@@ -455,6 +592,42 @@ std::vector<std::array<double, 2>> two_joints(const std::vector<JointAngles>& un
   return out;
 }
 
+// The graph on the panel: each edge the short way round between its ends, a straight line on the
+// torus cut where it crosses a seam (as the path is), each vertex a dot; under the path.
+void draw_panel_graph(svg::Drawing& d, const Layout& l, const PlanGraph<JointAngles>& graph) {
+  const std::vector<std::size_t> edges = spread_indices(graph.edges.size(), kMostPanelGraphEdges);
+  const std::vector<std::size_t> vertices = spread_indices(graph.vertices.size(), kMostGraphVertices);
+  if (edges.empty() && vertices.empty()) return;
+  std::vector<std::pair<svg::Point2, svg::Point2>> lines;
+  lines.reserve(edges.size());
+  const std::vector<double> no_times(2, 0.0);
+  for (std::size_t e : edges) {
+    const std::vector<JointAngles> ends =
+        unwrapped({graph.vertices[graph.edges[e].first], graph.vertices[graph.edges[e].second]});
+    for (const PanelPiece& piece : panel_pieces(two_joints(ends, {0, 1}), no_times)) {
+      for (std::size_t k = 1; k < piece.size(); ++k) {
+        lines.push_back(
+            {l.on_panel(piece[k - 1].theta1, piece[k - 1].theta2), l.on_panel(piece[k].theta1, piece[k].theta2)});
+      }
+    }
+  }
+  Points dots;
+  dots.reserve(vertices.size());
+  for (std::size_t v : vertices) {
+    const JointAngles& q = graph.vertices[v];
+    dots.push_back(l.on_panel(normalize_angle(q[0]), normalize_angle(q[1])));
+  }
+  const svg::Style edge_style = graph_edge_style();
+  d.begin_group("class=\"cspace-graph\"");
+  d.segments(lines, edge_style);
+  d.points(dots, 1.4, graph_vertex_style());
+  d.end_group();
+  if (!edges.empty()) {
+    d.legend(graph.kind + " edges (" + drawn_of(edges.size(), graph.edges.size()) + ") in C-space", edge_style,
+             svg::Swatch::line);
+  }
+}
+
 // The cells as rectangles: a horizontal run of equal state is one rectangle, and so is the same
 // run repeated in the rows above it; the rectangles of a state are one path (a 360 × 360 image
 // stays small, and cells of one state show no seams between them).
@@ -555,11 +728,13 @@ void draw_panel_frame(svg::Drawing& d, const Layout& l) {
   d.text({name.x - tick - (4 + text_width_px("θ2", 13)) * l.px, name.y - 0.35 * 13 * l.px}, "θ2", 13);
 }
 
-// The path on the panel, split at the seams, with its start and goal; with `timeline`, a ring moves
-// along it in step with the arm (the same period and keyTimes, and a jump where it crosses a seam).
-void draw_panel(svg::Drawing& d, const Layout& l, const CellGrid& image,
+// The path on the panel, split at the seams, with its start and goal, over the graph if any (on a
+// white halo then); with `timeline`, a ring moves along it in step with the arm (the same period
+// and keyTimes, and a jump where it crosses a seam).
+void draw_panel(svg::Drawing& d, const Layout& l, const CellGrid& image, const PlanGraph<JointAngles>* graph,
                 const std::vector<JointAngles>& unwrapped_motion, const Timeline* timeline) {
   draw_cells(d, l, image);
+  if (graph) draw_panel_graph(d, l, *graph);
   draw_panel_frame(d, l);
   if (unwrapped_motion.empty()) return;
 
@@ -567,13 +742,19 @@ void draw_panel(svg::Drawing& d, const Layout& l, const CellGrid& image,
   std::iota(all.begin(), all.end(), std::size_t{0});
   const std::vector<PanelPiece> pieces =
       panel_pieces(two_joints(unwrapped_motion, all), std::vector<double>(all.size(), 0.0));
+  std::vector<Points> lines;
+  for (const PanelPiece& piece : pieces) {
+    Points& line = lines.emplace_back();
+    for (const PanelVertex& v : piece) line.push_back(l.on_panel(v.theta1, v.theta2));
+  }
+  if (graph) {  // a white halo lifts the path off the graph
+    svg::Style halo = stroked("#fff", 5.5);
+    halo.opacity = 0.85;
+    for (const Points& line : lines) d.polyline(line, halo);
+  }
   const svg::Style path_style = stroked(theme::arm_fill, 2.5);
   d.begin_group("class=\"cspace-path\"");
-  for (const PanelPiece& piece : pieces) {
-    Points line;
-    for (const PanelVertex& v : piece) line.push_back(l.on_panel(v.theta1, v.theta2));
-    d.polyline(line, path_style);
-  }
+  for (const Points& line : lines) d.polyline(line, path_style);
   d.end_group();
   d.legend("path in C-space", path_style, svg::Swatch::line);
 
@@ -623,10 +804,11 @@ svg::Drawing animation_drawing(const ArmPlanPicture& picture) {
   svg::Drawing d(l.whole, l.width_px);
   draw_titles(d, l, picture);
   draw_surroundings(d, problem);
+  if (shows_graph(picture)) draw_workspace_graph(d, problem.arm, *picture.graph);
 
   const std::vector<JointAngles> continuous = unwrapped(picture.motion);
   if (!picture.motion.empty()) {
-    draw_tip_path(d, problem.arm, picture.motion);
+    draw_tip_path(d, problem.arm, picture.motion, shows_graph(picture));
     const LinkLook start = link_look(problem.arm, theme::arm_start, theme::arm_start_edge, 0.35);
     const LinkLook goal = link_look(problem.arm, theme::arm_goal, theme::arm_goal_edge, 0.35);
     draw_configuration(d, problem.arm, picture.motion.front(), start, false);
@@ -643,7 +825,10 @@ svg::Drawing animation_drawing(const ArmPlanPicture& picture) {
     std::snprintf(period, sizeof period, "%.1f", t.seconds);
     d.legend(std::string("arm, moving (") + period + " s loop)", link_look(problem.arm, theme::arm_fill, theme::arm_edge, 1).body);
   }
-  if (picture.cspace) draw_panel(d, l, *picture.cspace, continuous, picture.motion.empty() ? nullptr : &t);
+  if (picture.cspace) {
+    draw_panel(d, l, *picture.cspace, shows_graph(picture) ? picture.graph.get() : nullptr, continuous,
+               picture.motion.empty() ? nullptr : &t);
+  }
   return d;
 }
 
@@ -656,10 +841,11 @@ svg::Drawing strobe_drawing(const ArmPlanPicture& picture, std::size_t every_kth
   svg::Drawing d(l.whole, l.width_px);
   draw_titles(d, l, picture);
   draw_surroundings(d, problem);
+  if (shows_graph(picture)) draw_workspace_graph(d, arm, *picture.graph);
 
   const std::vector<JointAngles>& motion = picture.motion;
   if (!motion.empty()) {
-    draw_tip_path(d, arm, motion);
+    draw_tip_path(d, arm, motion, shows_graph(picture));
     const std::size_t last = motion.size() - 1;
     std::size_t drawn = 0;
     // In between, translucent, so that where the arm lingers shows darker.
@@ -690,8 +876,30 @@ svg::Drawing strobe_drawing(const ArmPlanPicture& picture, std::size_t every_kth
     }
   }
   draw_base(d);
-  if (picture.cspace) draw_panel(d, l, *picture.cspace, unwrapped(motion), nullptr);
+  if (picture.cspace) {
+    draw_panel(d, l, *picture.cspace, shows_graph(picture) ? picture.graph.get() : nullptr, unwrapped(motion), nullptr);
+  }
   return d;
+}
+
+// The C-space of a two-joint arm as the panel shows it: cell (i, j) centred on the angles
+// (i·2π/n, j·2π/n), free or blocked as the collision checker says there.
+CellGrid checked_cspace(const ArmProblem& problem, std::size_t n) {
+  const ArmCollisionChecker checker(problem);
+  CellGrid image;
+  image.columns = image.rows = n;
+  const double step = two_pi / static_cast<double>(n);
+  image.x0 = image.y0 = -step / 2;
+  image.cell_width = image.cell_height = step;
+  image.states.resize(n * n);
+  JointAngles q(2);
+  for (std::size_t row = 0; row < n; ++row) {
+    for (std::size_t column = 0; column < n; ++column) {
+      q = {static_cast<double>(column) * step, static_cast<double>(row) * step};
+      image.states[column + row * n] = checker.is_free(q) ? CellGrid::free : CellGrid::blocked;
+    }
+  }
+  return image;
 }
 
 }  // namespace
@@ -713,6 +921,11 @@ svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>&
   }
   if (report.path.size() == 1) picture.motion = report.path;
   if (report.cells && problem.arm.joints() == 2) picture.cspace = *report.cells;
+  picture.graph = report.graph;
+  // The graph of a planner without a grid still shows on the C-space, among the C-obstacles.
+  if (shows_graph(picture) && !report.cells && problem.arm.joints() == 2) {
+    picture.cspace = checked_cspace(problem, kCheckedCSpaceCells);
+  }
   if (const FactValue* torus = report.facts.find("grid.torus"))
     if (const bool* flag = std::get_if<bool>(torus)) picture.torus = *flag;
   if (options.kind == ArmPictureOptions::Kind::animation) return animation_drawing(picture);

@@ -3,14 +3,15 @@
 // colours): the arm moving along its path as an SVG animation (SMIL only, no script, so it plays
 // in any browser and a file viewer still shows a sensible picture), a "strobe" with every k-th
 // configuration drawn at once (seed 001's figure), and for two joints the torus C-space θ1 × θ2
-// beside the workspace with the path on it (seed 000's Figure 2). draw_plan makes either from any
-// arm planner's report.
+// beside the workspace with the path on it (seed 000's Figure 2); either with the planner's roadmap
+// or tree drawn faint under the path. draw_plan makes either from any arm planner's report.
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/roadmaps/plan_report.hpp>
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,15 +39,25 @@ struct ArmPlanPicture {
   // How the planner saw the joint angles: a torus (the C-space panel says its opposite edges
   // meet), or intervals [0, 2π) that a path never crosses 0 in (the planners' --no-torus).
   bool torus = true;
+  // Optional: the planner's roadmap or tree (a report's graph, kept with QueryOptions::record),
+  // drawn faint and thin under the path in theme::roadmap, as polygon worlds draw theirs. On the
+  // C-space panel each edge is the short way between its ends (a straight line on the torus, cut
+  // where it crosses a seam) and each vertex a dot. In the workspace each edge is the end
+  // effector's trace while the joints turn along it (a point every 5° of the largest turn, fewer
+  // when the traces together would pass 40000 points) and each vertex a dot at the end effector.
+  // At most 3000 edges are traced in the workspace and 20000 drawn on the panel, and 3000
+  // vertices drawn on each, evenly spread over the graph's lists; the legend says "tree edges (N)",
+  // or "(3000 of N)" when not all are drawn. Vertices may be any finite angles.
+  std::shared_ptr<const PlanGraph<JointAngles>> graph;
 };
 
 // The workspace (obstacles, obstacle points, the reach circle, the base, the end effector's path,
 // the start and goal configurations as faint ghosts) with the arm moving from start to goal, for
 // ever; and the C-space panel when the picture has one, with a ring moving along the path in step
 // with the arm. Without animation (rsvg-convert, print) the arm stands at the start.
-// Throws std::invalid_argument when the picture is inconsistent (no problem, a configuration
-// with the wrong number of joints, a C-space image for an arm that has not two joints or whose
-// state is not n·n).
+// Throws std::invalid_argument when the picture is inconsistent (no problem, a configuration or
+// graph vertex with the wrong number of joints or a non-finite angle, a graph edge naming no
+// vertex, a C-space image for an arm that has not two joints or whose state is not n·n).
 std::string arm_animation_svg(const ArmPlanPicture& picture);
 
 // The workspace with configurations 0, k, 2k, … of the motion (and the goal) drawn at once, the
@@ -58,7 +69,9 @@ std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth)
 // Any arm planner's report as a picture: the path's motions drawn densely (every joint at most
 // `degrees_per_frame` between frames, as the planners interpolate: each joint the short way), the
 // report's cells as the C-space panel (two joints), the panel labelled a torus unless the report's
-// fact grid.torus is false. The animation, or the strobe of every k-th frame (k = every_kth, or
+// fact grid.torus is false, and the report's graph (when the query recorded one) under the path;
+// a two-joint report with a graph but no cells (a sampling planner's) gets a panel of 2° cells
+// checked at their centres. The animation, or the strobe of every k-th frame (k = every_kth, or
 // about a dozen configurations when 0).
 struct ArmPictureOptions {
   enum class Kind { animation, strobe };

@@ -1,8 +1,14 @@
 #include <polyplan/roadmaps/registry.hpp>
 
 #include <polyplan/roadmaps/gvd_grid_planner.hpp>
+#include <polyplan/roadmaps/lazy_prm_planner.hpp>
+#include <polyplan/roadmaps/polygon_sampling_space.hpp>
+#include <polyplan/roadmaps/prm_planner.hpp>
 #include <polyplan/roadmaps/raster_planner.hpp>
 #include <polyplan/roadmaps/rotation_planner.hpp>
+#include <polyplan/roadmaps/rrt_connect_planner.hpp>
+#include <polyplan/roadmaps/rrt_planner.hpp>
+#include <polyplan/roadmaps/rrt_star_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/roadmaps/voronoi_planner.hpp>
@@ -19,6 +25,11 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       trapezoid_planner_entry(),
       voronoi_planner_entry(),
       gvd_grid_planner_entry(),
+      prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      lazy_prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      rrt_star_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      rrt_connect_planner_entry<TranslatingRobot>(polygon_sampling_space),
   };
   return registry;
 }

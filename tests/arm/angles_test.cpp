@@ -1,6 +1,6 @@
-// arm/angles.hpp: normalisation, the short way between two angles, interpolation. Expected values
+// geometry/angles.hpp: normalisation, the short way between two angles, interpolation. Expected values
 // are worked out by hand in the comments or re-computed with seed 001's own formula.
-#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include "arm/arm_fixtures.hpp"
 
 #include <gtest/gtest.h>

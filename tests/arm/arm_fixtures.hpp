@@ -1,7 +1,7 @@
 #pragma once
 // Small helpers shared by the arm/ tests (and the arm reader's): arms, obstacles and data files
 // described inline.
-#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/geometry/arm_problem.hpp>

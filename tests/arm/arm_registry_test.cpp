@@ -4,7 +4,7 @@
 // the goal (normalised), be certified, and be free along every motion by two checks independent
 // of the planner's: the collision checker at dense samples (every 0.01 degrees of the joint that
 // turns most) and certify_motion again. The report must print (plan_json) and draw (draw_plan).
-#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_grid_planner.hpp>
 #include <polyplan/arm/arm_motion.hpp>
@@ -28,7 +28,12 @@ class EveryArmPlannerOnEveryArm : public ::testing::TestWithParam<std::tuple<std
 TEST_P(EveryArmPlannerOnEveryArm, KeepsThePlannerPromises) {
   const auto& [planner_name, arm_name] = GetParam();
   const ArmProblem problem = read_arm_problem(std::string(POLYPLAN_SOURCE_DIR) + "/data/arms/" + arm_name + ".json");
-  const auto planner = planners<PlanarArm>().find(planner_name)->make(problem, {});
+  // Defaults, but sampling planners stop after 3 s: an answer either way, and a quick one.
+  const PlannerEntry<PlanarArm>* entry = planners<PlanarArm>().find(planner_name);
+  OptionValues options;
+  for (const OptionInfo& o : entry->options)
+    if (o.name == "time") options.emplace_back("time", "3");
+  const auto planner = entry->make(problem, options);
   const ArmCollisionChecker checker(problem);
   const double dense = 0.01 * two_pi / 360;
   ASSERT_FALSE(problem.queries.empty());

@@ -72,7 +72,7 @@ TEST(ArmCommand, BadInputIsOneLineNamingTheProblem) {
   const CliRun query = run_polyplan("arm " + arm_file("two_link_points.json") + " --query nonsense");
   EXPECT_EQ(query.exit_code, 2);
   EXPECT_NE(query.err.find("no query named nonsense"), std::string::npos) << query.err;
-  const CliRun method = run_polyplan("arm " + arm_file("two_link_points.json") + " --method prm");
+  const CliRun method = run_polyplan("arm " + arm_file("two_link_points.json") + " --method teleport");
   EXPECT_EQ(method.exit_code, 2);
   EXPECT_EQ(lines(method.err), 1u) << method.err;
   const CliRun missing = run_polyplan("arm /nonexistent/arm.json");

@@ -21,7 +21,11 @@ TEST(Planners, ListsEveryPlannerOfEverySpaceWithOptionsAndDefaults) {
   EXPECT_EQ(spaces[2]["command"], "polyplan arm ARM.json --method NAME");
   std::vector<std::string> names;
   for (const auto& p : spaces[0]["planners"]) names.push_back(p["name"]);
-  EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid", "prm",
+                                             "lazyprm", "rrt", "rrtstar", "rrtconnect"}));
+  std::vector<std::string> arm_names;
+  for (const auto& p : spaces[2]["planners"]) arm_names.push_back(p["name"]);
+  EXPECT_EQ(arm_names, (std::vector<std::string>{"grid", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));
   const auto& grid = spaces[2]["planners"][0];
   EXPECT_EQ(grid["name"], "grid");
   EXPECT_EQ(grid["options"][0]["name"], "resolution");

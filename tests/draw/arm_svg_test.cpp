@@ -2,13 +2,15 @@
 // the SVG text itself (tags, keyframes, where the transforms put the arm, how the path is cut).
 #include <polyplan/draw/arm_svg.hpp>
 
-#include <polyplan/arm/angles.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm.hpp>
 #include "draw/svg_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -22,9 +24,11 @@ using polyplan::CellGrid;
 using polyplan::ArmPlanPicture;
 using polyplan::ArmProblem;
 using polyplan::JointAngles;
+using polyplan::PlanGraph;
 using polyplan::Rational;
 using polyplan::test::attribute_at;
 using polyplan::test::count;
+using polyplan::test::legend_labels;
 using polyplan::test::nesting_error;
 using polyplan::test::numbers_in;
 
@@ -402,6 +406,184 @@ TEST(ArmStrobeSvg, ColoursRampFromBlueAtTheStartToRedAtTheGoal) {
   // 0x1f + 183·t, rounded: 76.75, 122.5, 168.25.
   EXPECT_EQ(reds, (std::vector<int>{77, 123, 168}));
   EXPECT_NE(svg.find("every 5th configuration (3 of 21)"), std::string::npos) << svg;
+}
+
+// ---------------------------------------------------------------------------------------------
+// A planner's graph (report.graph) under the path
+
+std::shared_ptr<const PlanGraph<JointAngles>> graph_of(std::vector<JointAngles> vertices,
+                                                       std::vector<std::pair<std::size_t, std::size_t>> edges) {
+  auto graph = std::make_shared<PlanGraph<JointAngles>>();
+  graph->kind = "tree";
+  graph->vertices = std::move(vertices);
+  graph->edges = std::move(edges);
+  return graph;
+}
+
+// The sub-paths ("M x y L x y ...") of the first <path> of the group whose start tag has `class_name`.
+std::vector<std::vector<double>> subpaths_in_group(const std::string& svg, const std::string& class_name) {
+  std::vector<std::vector<double>> out;
+  const auto group = svg.find("<g class=\"" + class_name + "\">");
+  if (group == std::string::npos) return out;
+  const auto path = svg.find("<path", group);
+  if (path > svg.find("</g>", group)) return out;
+  for (const std::string& piece : split(attribute_at(svg, path, "d"), 'M'))
+    if (!piece.empty()) out.push_back(numbers_in(piece));
+  return out;
+}
+
+bool has_label(const std::string& svg, const std::string& label) {
+  const auto labels = legend_labels(svg);
+  return std::find(labels.begin(), labels.end(), label) != labels.end();
+}
+
+TEST(ArmGraphSvg, TwoJointGraphIsDrawnOnThePanelCutAtTheSeamAndInTheWorkspace) {
+  const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
+  // θ2 from 5.9 up through 2π to 0.3 (vertex 1 given as 0.3 − 2π: any finite angle), and two
+  // edges to (2, 3) that stay inside the square. In this order no edge begins where the one
+  // before ended, so each piece is one move-to.
+  ArmPlanPicture picture = picture_of(problem, sweep({1.0, 5.9}, {2.0, 3.0}, 20), uniform_image(72, CellGrid::free));
+  picture.graph = graph_of({{1.0, 5.9}, {1.0, 0.3 - 2 * kPi}, {2.0, 3.0}}, {{0, 1}, {0, 2}, {1, 2}});
+  for (int strobe = 0; strobe < 2; ++strobe) {
+    const std::string svg = strobe ? polyplan::arm_strobe_svg(picture, 5) : polyplan::arm_animation_svg(picture);
+    EXPECT_EQ(nesting_error(svg), "");
+    EXPECT_TRUE(has_label(svg, "tree edges (3) in C-space")) << strobe;
+    EXPECT_TRUE(has_label(svg, "tree edges (3): end-effector traces")) << strobe;
+    EXPECT_TRUE(has_label(svg, "tree vertices (3)")) << strobe;
+
+    // The seam-crossing edge is two pieces, the others one each; no piece runs across the panel.
+    const auto pieces = subpaths_in_group(svg, "cspace-graph");
+    ASSERT_EQ(pieces.size(), 4u) << strobe;
+    for (const auto& piece : pieces) {
+      ASSERT_EQ(piece.size(), 4u);  // a straight line: two points
+      EXPECT_LT(std::abs(piece[3] - piece[1]), 260);  // half the 520 px panel
+    }
+    // The first edge: from θ2 = 5.9 up to the top edge, then from the bottom edge up to θ2 = 0.3, at θ1 = 1.
+    const double top = pieces[0][3], bottom = pieces[1][1];
+    EXPECT_NEAR(bottom - top, 520, 1e-3);
+    EXPECT_NEAR(pieces[0][0], pieces[1][0], 1e-6);
+    EXPECT_NEAR((pieces[0][1] - top) / 520, (2 * kPi - 5.9) / (2 * kPi), 1e-6);
+    EXPECT_NEAR((bottom - pieces[1][3]) / 520, 0.3 / (2 * kPi), 1e-6);
+    // Vertex 1's dot where 0.3 is, on the second piece's end.
+    const auto group = svg.find("<g class=\"cspace-graph\">");
+    const auto dot = positions(svg.substr(group, svg.find("</g>\n</g>", group) - group), "<circle");
+    ASSERT_EQ(dot.size(), 3u);
+    EXPECT_NEAR(std::stod(attribute_at(svg, group + dot[1], "cy")), pieces[1][3], 1e-4);
+
+    // Under the path, on the panel and in the workspace.
+    EXPECT_LT(group, svg.find("<g class=\"cspace-path\">"));
+    const auto workspace = svg.find("<g class=\"workspace-graph\">");
+    ASSERT_NE(workspace, std::string::npos);
+    EXPECT_LT(workspace, svg.find("stroke-dasharray=\"2 3\""));  // the end-effector path
+    EXPECT_EQ(subpaths_in_group(svg, "workspace-graph").size(), 3u);
+  }
+}
+
+TEST(ArmGraphSvg, WithoutAGraphThePictureHasNoneOfIt) {
+  const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
+  ArmPlanPicture picture = picture_of(problem, sweep({1.0, 5.9}, {2.0, 3.0}, 20), uniform_image(72, CellGrid::free));
+  const std::string animation = polyplan::arm_animation_svg(picture);
+  const std::string strobe = polyplan::arm_strobe_svg(picture, 5);
+  for (const std::string& svg : {animation, strobe}) {
+    EXPECT_EQ(svg.find("-graph\""), std::string::npos);
+    EXPECT_EQ(svg.find("tree "), std::string::npos);
+    EXPECT_EQ(svg.find("#2a7ab0"), std::string::npos);  // theme::roadmap
+  }
+  // A graph with nothing in it draws nothing.
+  picture.graph = graph_of({}, {});
+  EXPECT_EQ(polyplan::arm_animation_svg(picture), animation);
+  EXPECT_EQ(polyplan::arm_strobe_svg(picture, 5), strobe);
+}
+
+TEST(ArmGraphSvg, ThreeJointWorkspaceShowsEachEdgesEndEffectorTrace) {
+  const ArmProblem problem = problem_with_links({2.0, 1.5, 1.0}, 0.15);
+  ArmPlanPicture picture = picture_of(problem, sweep({0.5, -0.3, 2.0}, {2.8, 1.2, -1.0}, 20));
+  // Edge (0, 1) turns joint 1 alone by 1.5 rad: the tip runs along the reach circle, a point every
+  // 5° (⌈85.9° / 5°⌉ = 18 steps). Edge (2, 0) turns joints 2 and 3 by 1 rad: ⌈57.3° / 5°⌉ = 12 steps.
+  picture.graph = graph_of({{0, 0, 0}, {1.5, 0, 0}, {0, 1, -1}}, {{0, 1}, {2, 0}});
+  for (int strobe = 0; strobe < 2; ++strobe) {
+    const std::string svg = strobe ? polyplan::arm_strobe_svg(picture, 5) : polyplan::arm_animation_svg(picture);
+    EXPECT_EQ(nesting_error(svg), "");
+    EXPECT_TRUE(has_label(svg, "tree edges (2): end-effector traces"));
+    EXPECT_TRUE(has_label(svg, "tree vertices (3)"));
+    EXPECT_EQ(svg.find("cspace-graph"), std::string::npos);  // no panel for three joints
+    const auto traces = subpaths_in_group(svg, "workspace-graph");
+    ASSERT_EQ(traces.size(), 2u);
+    EXPECT_EQ(traces[0].size(), 2u * 19);
+    EXPECT_EQ(traces[1].size(), 2u * 13);
+    // The base is the circle of radius 5.5; the first trace keeps the reach (4.5) from it.
+    const auto base = svg.rfind("<circle", svg.find("r=\"5.5\""));
+    const double bx = std::stod(attribute_at(svg, base, "cx")), by = std::stod(attribute_at(svg, base, "cy"));
+    const double reach = traces[0][0] - bx;  // the zero configuration: straight along +x
+    EXPECT_GT(reach, 100);
+    for (std::size_t i = 0; i < traces[0].size(); i += 2)
+      EXPECT_NEAR(std::hypot(traces[0][i] - bx, traces[0][i + 1] - by), reach, 1e-3);
+    EXPECT_NEAR(traces[0][traces[0].size() - 2], bx + reach * std::cos(1.5), 1e-3);  // y up: screen y down
+    EXPECT_NEAR(traces[0].back(), by - reach * std::sin(1.5), 1e-3);
+    EXPECT_EQ(polyplan::test::dots_in_group(svg, "class=\"workspace-graph\""), 3u);
+  }
+}
+
+TEST(ArmGraphSvg, ManyEdgesAreCappedAndTheLegendSaysHowMany) {
+  const ArmProblem problem = problem_with_links({2.0, 1.5, 1.0}, 0.15);
+  ArmPlanPicture picture = picture_of(problem, sweep({0.5, -0.3, 2.0}, {2.8, 1.2, -1.0}, 20));
+  // 4000 vertices, 5000 half-turn edges: at 5° that would be 37 points each.
+  std::vector<JointAngles> vertices;
+  for (int i = 0; i < 4000; ++i) vertices.push_back({0.001 * i, kPi * (i % 2), 0.5});
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  for (std::size_t i = 0; i < 5000; ++i) edges.push_back({i % 4000, (i + 1) % 4000});
+  picture.graph = graph_of(std::move(vertices), std::move(edges));
+  const std::string svg = polyplan::arm_animation_svg(picture);
+  EXPECT_TRUE(has_label(svg, "tree edges (3000 of 5000): end-effector traces"));
+  EXPECT_TRUE(has_label(svg, "tree vertices (3000 of 4000)"));
+  const auto traces = subpaths_in_group(svg, "workspace-graph");
+  std::size_t points = 0;
+  for (const auto& trace : traces) points += trace.size() / 2;
+  EXPECT_LE(traces.size(), 3000u);  // consecutive edges may chain
+  EXPECT_GT(points, 3000u * 10);
+  EXPECT_LE(points, 40000u);
+  EXPECT_EQ(polyplan::test::dots_in_group(svg, "class=\"workspace-graph\""), 3000u);
+  EXPECT_LT(svg.size(), 2'000'000u);
+}
+
+TEST(ArmGraphSvg, InconsistentGraphsAreRefused) {
+  const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
+  ArmPlanPicture picture = picture_of(problem, sweep({0, 0}, {1, 1}, 5));
+  picture.graph = graph_of({{0, 0}, {1, 1}}, {{0, 2}});  // no vertex 2
+  EXPECT_THROW(polyplan::arm_animation_svg(picture), std::invalid_argument);
+  picture.graph = graph_of({{0, 0}, {1, 1, 1}}, {{0, 1}});  // three angles
+  EXPECT_THROW(polyplan::arm_strobe_svg(picture, 2), std::invalid_argument);
+  picture.graph = graph_of({{0, 0}, {1, std::nan("")}}, {{0, 1}});
+  EXPECT_THROW(polyplan::arm_animation_svg(picture), std::invalid_argument);
+}
+
+TEST(ArmGraphSvg, DrawPlanDrawsTheReportsGraphOnACheckedCSpace) {
+  // A sampling planner's report: a path and a tree, no cells. Two joints get a C-space panel
+  // checked cell by cell (the obstacle points block some configurations); three joints none.
+  const ArmProblem two = problem_with_links({2.0, 1.5}, 0.2);
+  polyplan::PlanReport<JointAngles> report;
+  report.found = true;
+  report.path = {{0.3, 1.0}, {1.0, 0.5}, {2.5, 6.0}};
+  using Kind = polyplan::ArmPictureOptions::Kind;
+  const std::string without = polyplan::draw_plan(two, report, {Kind::animation, "t"}).str();
+  EXPECT_EQ(without.find("C-space"), std::string::npos);
+  report.graph = graph_of(report.path, {{0, 1}, {1, 2}});
+  for (const Kind kind : {Kind::animation, Kind::strobe}) {
+    const std::string svg = polyplan::draw_plan(two, report, {kind, "t"}).str();
+    EXPECT_EQ(nesting_error(svg), "");
+    EXPECT_NE(svg.find("<g class=\"cspace-graph\">"), std::string::npos);
+    EXPECT_NE(svg.find("<g class=\"workspace-graph\">"), std::string::npos);
+    EXPECT_TRUE(has_label(svg, "tree edges (2) in C-space"));
+    const auto labels = legend_labels(svg);
+    EXPECT_TRUE(std::any_of(labels.begin(), labels.end(),
+                            [](const std::string& label) { return label.starts_with("blocked configurations ("); }));
+  }
+  const ArmProblem three = problem_with_links({2.0, 1.5, 1.0}, 0.15);
+  report.path = {{0.3, 1.0, 0.0}, {1.0, 0.5, 0.2}};
+  report.graph = graph_of(report.path, {{0, 1}});
+  const std::string svg = polyplan::draw_plan(three, report, {Kind::strobe, "t"}).str();
+  EXPECT_EQ(svg.find("C-space"), std::string::npos);
+  EXPECT_TRUE(has_label(svg, "tree edges (1): end-effector traces"));
 }
 
 }  // namespace
