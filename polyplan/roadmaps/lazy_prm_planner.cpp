@@ -19,8 +19,10 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
       : Base("lazyprm", std::move(space), options), roadmap_(this->space(), options.k) {}
 
  private:
-  std::size_t add_milestone(const Configuration& configuration, std::span<const double> at) {
-    return roadmap_.add(configuration, at, [](std::size_t) -> std::optional<bool> { return false; });
+  // A milestone joined to its nearest milestones by edges not yet certified.
+  template <class... Coordinates>
+  std::size_t add_milestone(const Configuration& configuration, Coordinates... at) {
+    return roadmap_.add(configuration, at..., [](std::size_t) -> std::optional<bool> { return false; });
   }
 
   // Certifies the path's unchecked edges from the start on; removes the first that is not free.
@@ -41,11 +43,8 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
 
   Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
     auto& space = this->space();
+    const std::size_t start = add_milestone(space.start(query)), goal = add_milestone(space.goal(query));
     std::vector<double> at(space.dimension());
-    space.coordinates(space.start(query), at);
-    const std::size_t start = add_milestone(space.start(query), at);
-    space.coordinates(space.goal(query), at);
-    const std::size_t goal = add_milestone(space.goal(query), at);
 
     std::size_t searches = 0, removed = 0;
     std::vector<std::size_t> path;
@@ -59,7 +58,7 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
       const std::size_t batch = std::max<std::size_t>(50, roadmap_.size() / 2);
       for (std::size_t i = 0; i < batch && budget.next(); ++i) {
         const Configuration sample = this->draw(at);
-        if (this->state_free(sample)) add_milestone(sample, at);
+        if (this->state_free(sample)) add_milestone(sample, std::span<const double>(at));
       }
     }
 

@@ -24,11 +24,13 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     return id;
   }
 
-  // A milestone joined to its nearest milestones by every motion certified free.
-  std::size_t add_milestone(const Configuration& configuration, std::span<const double> at) {
+  // A milestone joined to its nearest milestones by every motion certified free (coordinates: the
+  // configuration's, or none to have the space give them).
+  template <class... Coordinates>
+  std::size_t add_milestone(const Configuration& configuration, Coordinates... at) {
     const std::size_t id = roadmap_.size();
     components_.push_back(id);
-    return roadmap_.add(configuration, at, [&](std::size_t n) -> std::optional<bool> {
+    return roadmap_.add(configuration, at..., [&](std::size_t n) -> std::optional<bool> {
       if (!this->motion_free(roadmap_.nodes()[n], configuration)) return std::nullopt;
       components_[component(n)] = component(id);
       return true;
@@ -37,14 +39,11 @@ class PrmPlanner final : public SamplingPlanner<Space> {
 
   Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
     auto& space = this->space();
+    const std::size_t start = add_milestone(space.start(query)), goal = add_milestone(space.goal(query));
     std::vector<double> at(space.dimension());
-    space.coordinates(space.start(query), at);
-    const std::size_t start = add_milestone(space.start(query), at);
-    space.coordinates(space.goal(query), at);
-    const std::size_t goal = add_milestone(space.goal(query), at);
     while (component(start) != component(goal) && budget.next()) {
       const Configuration sample = this->draw(at);
-      if (this->state_free(sample)) add_milestone(sample, at);
+      if (this->state_free(sample)) add_milestone(sample, std::span<const double>(at));
     }
 
     Attempt attempt;

@@ -63,13 +63,7 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
     facts.set("tree_size", from_start.size() + from_goal.size());
     facts.set("start_tree_size", from_start.size());
     facts.set("goal_tree_size", from_goal.size());
-    if (record) {
-      auto graph = std::make_shared<PlanGraph<Configuration>>();
-      graph->kind = "tree";
-      from_start.draw_into(*graph);
-      from_goal.draw_into(*graph);
-      attempt.graph = graph;
-    }
+    if (record) attempt.graph = SamplingTree<Space>::picture({&from_start, &from_goal});
     if (!meeting) {
       attempt.why_not = "the trees did not meet within " + budget.limit_reached();
       return attempt;
@@ -79,7 +73,6 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
     attempt.path = from_start.path_from_root(meeting->first);
     std::vector<Configuration> rest = from_goal.path_from_root(meeting->second);
     attempt.path.insert(attempt.path.end(), rest.rbegin() + 1, rest.rend());
-    if (attempt.path.size() == 1) attempt.path.push_back(space.goal(query));  // start == goal
     this->found(budget, this->length(attempt.path));
     return attempt;
   }

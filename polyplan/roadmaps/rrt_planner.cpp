@@ -49,18 +49,12 @@ class RrtPlanner final : public SamplingPlanner<Space> {
       found = toward_goal && at_target;
     }
     facts.set("tree_size", tree.size());
-    if (record) {
-      auto graph = std::make_shared<PlanGraph<Configuration>>();
-      graph->kind = "tree";
-      tree.draw_into(*graph);
-      attempt.graph = graph;
-    }
+    if (record) attempt.graph = SamplingTree<Space>::picture({&tree});
     if (!found) {
       attempt.why_not = "the tree did not reach the goal within " + budget.limit_reached();
       return attempt;
     }
     attempt.path = tree.path_from_root(reached);
-    if (attempt.path.size() == 1) attempt.path.push_back(goal);  // start == goal
     this->found(budget, this->length(attempt.path));
     return attempt;
   }

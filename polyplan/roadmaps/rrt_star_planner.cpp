@@ -142,18 +142,12 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     facts.set("rewired", rewired);
     facts.set("rewire", options_.rewire == Rewiring::k_nearest ? "k-nearest" : "radius");
     Attempt attempt;
-    if (record) {
-      auto graph = std::make_shared<PlanGraph<Configuration>>();
-      graph->kind = "tree";
-      tree.draw_into(*graph);
-      attempt.graph = graph;
-    }
+    if (record) attempt.graph = SamplingTree<Space>::picture({&tree});
     if (!goal_node) {
       attempt.why_not = "the tree did not reach the goal within " + budget.limit_reached();
       return attempt;
     }
     attempt.path = tree.path_from_root(*goal_node);
-    if (attempt.path.size() == 1) attempt.path.push_back(goal);  // start == goal
     return attempt;
   }
 

@@ -123,6 +123,7 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
     report.why_not = std::move(attempt.why_not);
     return finish();
   }
+  if (attempt.path.size() == 1) attempt.path.push_back(space_->goal(query));  // start == goal: one motion of length 0
   if (!(attempt.path.front() == space_->start(query)) || !(attempt.path.back() == space_->goal(query)))
     throw std::logic_error("a sampling planner's path does not run from the query's start to its goal");
   facts.set("first_solution_seconds", improvements_.empty() ? budget.seconds() : improvements_.front().seconds);

@@ -22,6 +22,7 @@
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <memory>
 #include <optional>
 #include <span>
@@ -106,11 +107,16 @@ class SamplingTree {
     for (; id != root; id = parents_[id]) path.push_back(nodes_[parents_[id]]);
     return {path.rbegin(), path.rend()};
   }
-  // The picture's tree: its nodes, and an edge from each to its parent, appended to `graph`.
-  void draw_into(PlanGraph<Configuration>& graph) const {
-    const std::size_t offset = graph.vertices.size();
-    graph.vertices.insert(graph.vertices.end(), nodes_.all().begin(), nodes_.all().end());
-    for (std::size_t id = 1; id < size(); ++id) graph.edges.emplace_back(offset + parents_[id], offset + id);
+  // The picture of trees: their nodes, and an edge from each node to its parent.
+  static std::shared_ptr<const PlanGraph<Configuration>> picture(std::initializer_list<const SamplingTree*> trees) {
+    auto graph = std::make_shared<PlanGraph<Configuration>>();
+    graph->kind = "tree";
+    for (const SamplingTree* tree : trees) {
+      const std::size_t offset = graph->vertices.size();
+      graph->vertices.insert(graph->vertices.end(), tree->nodes_.all().begin(), tree->nodes_.all().end());
+      for (std::size_t id = 1; id < tree->size(); ++id) graph->edges.emplace_back(offset + tree->parents_[id], offset + id);
+    }
+    return graph;
   }
 
  private:
@@ -171,8 +177,8 @@ class SamplingPlanner : public Planner<Space> {
   SamplingPlanner(std::string name, std::unique_ptr<SamplingSpace<Space>> space, SamplingLimits limits);
 
   // What solve() returns: a path from the query's start to its goal (exactly those
-  // configurations) whose consecutive configurations are joined by certified motions, or why
-  // there is none; the picture's graph when `record`.
+  // configurations; the start alone when it is the goal) whose consecutive configurations are
+  // joined by certified motions, or why there is none; the picture's graph when `record`.
   struct Attempt {
     std::vector<Configuration> path;
     std::string why_not;

@@ -36,6 +36,34 @@ TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
   EXPECT_FALSE(k["why_not"].get<std::string>().empty());
 }
 
+// The sampling planners' flags, as the issue writes them: one seed, one path, and the facts.
+TEST(ArmCommand, SamplingPlannersTakeTheirFlagsAndOneSeedGivesOnePath) {
+  const std::string command = "arm " + arm_file("four_link_forest.json") +
+                              " --method rrt --seed 7 --time 20 --iterations 50000 --goal-bias 0.1 --step 1 --extend e2 --json -";
+  const CliRun once = run_polyplan(command), again = run_polyplan(command);
+  ASSERT_EQ(once.exit_code, 0) << once.err;
+  const auto a = nlohmann::json::parse(once.out), b = nlohmann::json::parse(again.out);
+  ASSERT_TRUE(a["found"].get<bool>()) << a.dump();
+  EXPECT_EQ(a["path"], b["path"]);
+  for (const char* key : {"samples", "tree_size", "motions_checked", "first_solution_seconds", "raw_length", "iterations", "seed"})
+    EXPECT_TRUE(a.contains(key)) << key;
+  EXPECT_EQ(a["seed"], 7);
+  EXPECT_EQ(a["roadmap"]["kind"], "rrt");
+  EXPECT_LE(a["length"].get<double>(), a["raw_length"].get<double>());
+  EXPECT_EQ(a["path"].front(), nlohmann::json::parse("[0.1, 0.2, 0.3, 0.4]"));
+
+  const CliRun prm = run_polyplan("arm " + arm_file("two_link_points.json") + " --method prm --k 15 --bidirectional --query hard --json -");
+  ASSERT_EQ(prm.exit_code, 0) << prm.err;
+  const auto p = nlohmann::json::parse(prm.out);
+  EXPECT_TRUE(p["found"].get<bool>());
+  EXPECT_TRUE(p.contains("roadmap_size"));
+  EXPECT_EQ(p["search"]["algorithm"], "bidirectional dijkstra");
+
+  const CliRun bias = run_polyplan("arm " + arm_file("two_link_points.json") + " --method rrt --goal-bias 2");
+  EXPECT_EQ(bias.exit_code, 2);
+  EXPECT_NE(bias.err.find("planner rrt: goal-bias must be a probability in [0, 1]"), std::string::npos) << bias.err;
+}
+
 TEST(ArmCommand, EveryQueryOfAFileGivesAnArrayAndEagerMatchesLazy) {
   const CliRun lazy = run_polyplan("arm " + arm_file("two_link_points.json") + " --json -");
   const CliRun eager = run_polyplan("arm " + arm_file("two_link_points.json") + " --eager --json -");

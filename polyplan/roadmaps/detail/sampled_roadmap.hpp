@@ -27,7 +27,7 @@ class SampledRoadmap {
   using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property, SampledEdge>;
   using Vertex = typename boost::graph_traits<Graph>::vertex_descriptor;
 
-  SampledRoadmap(const SamplingSpace<Space>& space, std::size_t k) : nodes_(space), metric_(space.metric()), k_(k) {
+  SampledRoadmap(const SamplingSpace<Space>& space, std::size_t k) : space_(&space), nodes_(space), k_(k) {
     k_factor_ = std::numbers::e * (1 + 1 / static_cast<double>(space.dimension()));
   }
 
@@ -42,6 +42,14 @@ class SampledRoadmap {
       if (const std::optional<bool> certified = join(n))
         boost::add_edge(n, id, SampledEdge{sampling_distance(metric(), nodes_.coordinates(n), at), *certified}, graph_);
     return id;
+  }
+
+  // The same for a configuration whose coordinates the space gives (a query's start or goal).
+  template <class Join>
+  std::size_t add(const Configuration& configuration, Join join) {
+    std::vector<double> at(space_->dimension());
+    space_->coordinates(configuration, at);
+    return add(configuration, at, join);
   }
 
   // The shortest path start → goal over the edges there are (certified or not), by `options`
@@ -72,14 +80,14 @@ class SampledRoadmap {
   }
 
  private:
-  SamplingMetric metric() const { return metric_; }
+  SamplingMetric metric() const { return space_->metric(); }
   std::size_t neighbour_count() const {
     if (k_ > 0) return k_;
     return static_cast<std::size_t>(std::ceil(k_factor_ * std::log(static_cast<double>(nodes_.size()) + 1)));
   }
 
+  const SamplingSpace<Space>* space_;
   SampledConfigurations<Space> nodes_;
-  SamplingMetric metric_;
   std::size_t k_;
   double k_factor_ = 0;
   Graph graph_;
