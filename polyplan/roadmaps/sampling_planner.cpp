@@ -118,6 +118,7 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
 
   Attempt attempt = solve(query, budget, facts, options.record);
   facts.set("iterations", budget.used());
+  facts.set("stopped_by", budget.stopped_by());
   report.graph = std::move(attempt.graph);
   if (attempt.path.empty()) {
     report.why_not = std::move(attempt.why_not);

@@ -7,6 +7,7 @@
 //   samples                 configurations drawn (free or not)
 //   motions_checked         motions the space certified or refused
 //   iterations              the planner's own steps (samples for the roadmaps, extensions for trees)
+//   stopped_by              "solution", "iteration limit" or "time limit"
 //   first_solution_seconds  when the first path was found (the query's clock)
 //   raw_length              the first path's length before shortcutting (length: the one returned)
 //   roadmap.kind (the planner's name), seed, query_seconds
@@ -137,21 +138,24 @@ class SamplingBudget {
     return true;
   }
   bool spent() {
-    if (used_ >= iterations_) return true;
-    if (seconds() >= seconds_) timed_out_ = true;
-    return timed_out_;
+    if (used_ >= iterations_) out_of_iterations_ = true;
+    else if (seconds() >= seconds_) timed_out_ = true;
+    return out_of_iterations_ || timed_out_;
   }
   std::size_t used() const { return used_; }
   double seconds() const { return std::chrono::duration<double>(std::chrono::steady_clock::now() - began_).count(); }
   // "the time limit (10 s)" or "the iteration limit (100000)": what stopped the query.
   std::string limit_reached() const;
+  // "time limit", "iteration limit", or "solution" when the planner stopped before either (a
+  // query stopped by the time limit may differ from run to run; the others never do).
+  std::string stopped_by() const { return timed_out_ ? "time limit" : out_of_iterations_ ? "iteration limit" : "solution"; }
 
  private:
   std::chrono::steady_clock::time_point began_;
   double seconds_;
   std::size_t iterations_;
   std::size_t used_ = 0;
-  bool timed_out_ = false;
+  bool timed_out_ = false, out_of_iterations_ = false;
 };
 
 // A solution's length when it was found: RRT*'s anytime progress (first, then each improvement),

@@ -114,8 +114,13 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
     for (const auto& [name, value] : report.facts.entries()) EXPECT_TRUE(json.contains(dotted(name))) << name;
     // What a picture needs is recorded without changing the answer.
     recorded.push_back((recording ? recording : planner)->plan(q, QueryOptions{true}));
-    EXPECT_EQ(recorded.back().found, report.found);
-    EXPECT_EQ(recorded.back().path, report.path);
+    const auto timed_out = [](const PlanReport<ExactPoint>& r) {
+      return r.facts.contains("stopped_by") && r.facts.text("stopped_by") == "time limit";
+    };
+    if (!timed_out(report) && !timed_out(recorded.back())) {  // a time limit cuts where the machine's speed says
+      EXPECT_EQ(recorded.back().found, report.found);
+      EXPECT_EQ(recorded.back().path, report.path);
+    }
   }
   const std::string picture = draw_plan(w.cspace, recorded).str();
   EXPECT_NE(picture.find("<svg"), std::string::npos);

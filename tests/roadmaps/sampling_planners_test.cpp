@@ -67,6 +67,7 @@ TEST_P(SamplingPlannerOnWorld, ThreeSeedsGiveExactlyCheckedPathsAndOneSeedOnePat
       EXPECT_GE(report.length, best.length * (1 - 1e-12));
       EXPECT_LE(report.length, report.facts.number("raw_length") * (1 + 1e-12));  // shortcuts never lengthen
       EXPECT_GT(report.facts.count("motions_checked"), 0);
+      EXPECT_EQ(report.facts.text("stopped_by"), planner == "rrtstar" ? "iteration limit" : "solution");  // RRT* is anytime
       EXPECT_GE(report.facts.number("first_solution_seconds"), 0);
       // The same seed, a planner of its own, the same first query: the same path.
       if (i == 0) EXPECT_EQ(make(planner, cspace, options)->plan(q).path, report.path);
@@ -138,10 +139,12 @@ TEST(SamplingPlanners, AnUnreachableGoalEndsAtTheLimitWithTheReason) {
     const auto by_count = make(name, cspace, {{"iterations", "300"}})->plan(walled.queries[0]);
     EXPECT_FALSE(by_count.found);
     EXPECT_NE(by_count.why_not.find("the iteration limit (300)"), std::string::npos) << by_count.why_not;
+    EXPECT_EQ(by_count.facts.text("stopped_by"), "iteration limit");
     EXPECT_TRUE(by_count.path.empty());
     const auto by_time = make(name, cspace, {{"iterations", "100000000"}, {"time", "0.2"}})->plan(walled.queries[0]);
     EXPECT_FALSE(by_time.found);
     EXPECT_NE(by_time.why_not.find("the time limit (0.2 s)"), std::string::npos) << by_time.why_not;
+    EXPECT_EQ(by_time.facts.text("stopped_by"), "time limit");
   }
 }
 
