@@ -39,7 +39,12 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
   void neighbours_of(const SamplingTree<Space>& tree, std::span<const double> at, std::vector<std::size_t>& out) const {
     const double n = static_cast<double>(tree.size());
     if (options_.rewire == Rewiring::k_nearest) {
+      // Only those within one extension (as OMPL's RRT* does): a farther one is rarely a cheaper
+      // parent, and certifying a long motion costs the most.
       tree.nodes().neighbours().nearest(at, static_cast<std::size_t>(std::ceil(k_factor_ * std::log(n + 1))), out);
+      if (step_ > 0)
+        out.erase(std::remove_if(out.begin(), out.end(), [&](std::size_t id) { return this->distance(tree.nodes().coordinates(id), at) > step_; }),
+                  out.end());
       return;
     }
     double r = gamma_ * std::pow(std::log(n + 1) / (n + 1), 1 / static_cast<double>(this->space().dimension()));

@@ -2,7 +2,7 @@
 // RRT* (Karaman & Frazzoli 2011) over any sampling space: RRT whose new node takes, among its
 // neighbours, the parent that reaches it most cheaply, and then becomes the parent of each
 // neighbour it reaches more cheaply (rewiring); every such motion certified. Neighbours are the
-// k nearest, k = ⌈e·(1 + 1/d)·log n⌉, or those within r = min(step, γ·(log n / n)^(1/d)) with
+// k nearest within one step, k = ⌈e·(1 + 1/d)·log n⌉, or those within r = min(step, γ·(log n / n)^(1/d)) with
 // γ = 2·((1 + 1/d)·volume / unit ball)^(1/d). Anytime: it goes on improving the path until the
 // time or iteration limit, so with the defaults it always runs to a limit. Registered as
 // `rrtstar` for polygon worlds and arms.
