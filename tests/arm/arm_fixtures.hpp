@@ -8,6 +8,8 @@
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/world.hpp>
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <limits>
 #include <string>
@@ -52,5 +54,31 @@ inline bool samples_free(const ArmCollisionChecker& checker, const JointAngles& 
 
 // A shipped arm file: data/arms/<name>.
 inline std::string arm_data_file(const std::string& name) { return std::string(POLYPLAN_SOURCE_DIR) + "/data/arms/" + name; }
+
+// A returned arm path checked independently of its planner: it begins at the query's start and
+// ends at its goal (normalised), and every motion is free at samples 0.01° apart (of the joint
+// that turns most) and certified again. Returns the sum of the joints' short-way turns.
+inline double expect_arm_path_free(const ArmCollisionChecker& checker, const ArmQuery& q, const std::vector<JointAngles>& path) {
+  if (path.size() < 2) {
+    ADD_FAILURE() << "a path of " << path.size() << " configurations";
+    return 0;
+  }
+  for (std::size_t j = 0; j < q.start.size(); ++j) {
+    EXPECT_EQ(path.front()[j], normalize_angle(q.start[j]));
+    EXPECT_EQ(path.back()[j], normalize_angle(q.goal[j]));
+  }
+  const double dense = 0.01 * two_pi / 360;
+  double length = 0;
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) {
+    for (const JointAngles& c : motion_samples(path[k], path[k + 1], dense))
+      if (!checker.is_free(c)) {
+        ADD_FAILURE() << "a configuration between path[" << k << "] and path[" << k + 1 << "] collides";
+        break;
+      }
+    EXPECT_TRUE(certify_motion(checker, path[k], path[k + 1]).free()) << "motion " << k;
+    length += total_angular_distance(path[k], path[k + 1]);
+  }
+  return length;
+}
 
 }  // namespace polyplan::test

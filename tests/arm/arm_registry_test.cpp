@@ -12,6 +12,7 @@
 #include <polyplan/draw/arm_svg.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/roadmaps/plan_json.hpp>
+#include "arm_fixtures.hpp"
 #include "registry_fixtures.hpp"
 
 #include <nlohmann/json.hpp>
@@ -36,7 +37,6 @@ TEST_P(EveryArmPlannerOnEveryArm, KeepsThePlannerPromises) {
     if (o.name == "time") options.emplace_back("time", "30");
   const auto planner = entry->make(problem, options);
   const ArmCollisionChecker checker(problem);
-  const double dense = 0.01 * two_pi / 360;
   ASSERT_FALSE(problem.queries.empty());
   std::size_t found = 0;
   for (const ArmQuery& q : problem.queries) {
@@ -50,17 +50,7 @@ TEST_P(EveryArmPlannerOnEveryArm, KeepsThePlannerPromises) {
     ++found;
     EXPECT_TRUE(report.certificate.certified);
     ASSERT_GE(report.path.size(), 2u);
-    for (std::size_t j = 0; j < q.start.size(); ++j) {
-      EXPECT_EQ(report.path.front()[j], normalize_angle(q.start[j]));
-      EXPECT_EQ(report.path.back()[j], normalize_angle(q.goal[j]));
-    }
-    double length = 0;
-    for (std::size_t k = 0; k + 1 < report.path.size(); ++k) {
-      for (const JointAngles& c : motion_samples(report.path[k], report.path[k + 1], dense))
-        ASSERT_TRUE(checker.is_free(c)) << "between path[" << k << "] and path[" << k + 1 << "]";
-      EXPECT_TRUE(certify_motion(checker, report.path[k], report.path[k + 1]).free()) << "motion " << k;
-      length += total_angular_distance(report.path[k], report.path[k + 1]);
-    }
+    const double length = test::expect_arm_path_free(checker, q, report.path);
     // A torus path's length is the joints' short-way turns; no path is shorter than that sum.
     EXPECT_GE(report.length, length - 1e-9);
     EXPECT_GE(report.length, total_angular_distance(q.start, q.goal) - 1e-9);

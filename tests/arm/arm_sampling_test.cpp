@@ -37,7 +37,6 @@ TEST_P(SamplingPlannerOnArm, ThreeSeedsGiveIndependentlyCheckedPathsAndOneSeedOn
   const auto& [planner, arm_name] = GetParam();
   const ArmProblem problem = shipped_arm(arm_name);
   const ArmCollisionChecker checker(problem);
-  const double dense = 0.01 * two_pi / 360;
   for (const std::string seed : {"1", "2", "3"}) {
     SCOPED_TRACE("seed " + seed);
     const OptionValues options{{"seed", seed}, {"time", "20"}};
@@ -46,17 +45,7 @@ TEST_P(SamplingPlannerOnArm, ThreeSeedsGiveIndependentlyCheckedPathsAndOneSeedOn
       SCOPED_TRACE(q.name);
       const auto report = planner_of_seed->plan(q);
       ASSERT_TRUE(report.found) << report.why_not;
-      for (std::size_t j = 0; j < q.start.size(); ++j) {
-        EXPECT_EQ(report.path.front()[j], normalize_angle(q.start[j]));
-        EXPECT_EQ(report.path.back()[j], normalize_angle(q.goal[j]));
-      }
-      double length = 0;
-      for (std::size_t k = 0; k + 1 < report.path.size(); ++k) {
-        for (const JointAngles& c : motion_samples(report.path[k], report.path[k + 1], dense))
-          ASSERT_TRUE(checker.is_free(c)) << "between path[" << k << "] and path[" << k + 1 << "]";
-        EXPECT_TRUE(certify_motion(checker, report.path[k], report.path[k + 1]).free()) << "motion " << k;
-        length += total_angular_distance(report.path[k], report.path[k + 1]);
-      }
+      const double length = test::expect_arm_path_free(checker, q, report.path);
       EXPECT_NEAR(report.length, length, 1e-9 * length);
       EXPECT_LE(report.length, report.facts.number("raw_length") * (1 + 1e-12));
       // The same seed, a planner of its own, the same first query: the same path.
