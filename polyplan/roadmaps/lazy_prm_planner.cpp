@@ -20,9 +20,8 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
 
  private:
   // A milestone joined to its nearest milestones by edges not yet certified.
-  template <class... Coordinates>
-  std::size_t add_milestone(const Configuration& configuration, Coordinates... at) {
-    return roadmap_.add(configuration, at..., [](std::size_t) -> std::optional<bool> { return false; });
+  std::size_t add_milestone(const Configuration& configuration, std::span<const double> at = {}) {
+    return roadmap_.add(configuration, at, [](std::size_t) -> std::optional<bool> { return false; });
   }
 
   // Certifies the path's unchecked edges from the start on; removes the first that is not free.
@@ -58,7 +57,7 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
       const std::size_t batch = std::max<std::size_t>(50, roadmap_.size() / 2);
       for (std::size_t i = 0; i < batch && budget.next(); ++i) {
         const Configuration sample = this->draw(at);
-        if (this->state_free(sample)) add_milestone(sample, std::span<const double>(at));
+        if (this->state_free(sample)) add_milestone(sample, at);
       }
     }
 

@@ -24,13 +24,12 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     return id;
   }
 
-  // A milestone joined to its nearest milestones by every motion certified free (coordinates: the
-  // configuration's, or none to have the space give them).
-  template <class... Coordinates>
-  std::size_t add_milestone(const Configuration& configuration, Coordinates... at) {
+  // A milestone joined to its nearest milestones by every motion certified free (`at`: its
+  // coordinates, or none to have the space give them).
+  std::size_t add_milestone(const Configuration& configuration, std::span<const double> at = {}) {
     const std::size_t id = roadmap_.size();
     components_.push_back(id);
-    return roadmap_.add(configuration, at..., [&](std::size_t n) -> std::optional<bool> {
+    return roadmap_.add(configuration, at, [&](std::size_t n) -> std::optional<bool> {
       if (!this->motion_free(roadmap_.nodes()[n], configuration)) return std::nullopt;
       components_[component(n)] = component(id);
       return true;
@@ -43,7 +42,7 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     std::vector<double> at(space.dimension());
     while (component(start) != component(goal) && budget.next()) {
       const Configuration sample = this->draw(at);
-      if (this->state_free(sample)) add_milestone(sample, std::span<const double>(at));
+      if (this->state_free(sample)) add_milestone(sample, at);
     }
 
     Attempt attempt;

@@ -25,15 +25,14 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
   // One step of `tree` toward `target` (its coordinates `to`) from the nearest node.
   Grown extend(SamplingTree<Space>& tree, const Configuration& target, std::span<const double> to, std::vector<double>& at,
                std::size_t& added) {
-    const std::size_t near = tree.nodes().neighbours().nearest(to);
-    auto [next, reached] = this->steer(tree.nodes().coordinates(near), target, to, step_, at);
-    if (this->distance(tree.nodes().coordinates(near), at) == 0) {
-      added = near;
+    auto step = this->step_toward(tree, target, to, step_, at);
+    if (step.stays) {
+      added = step.from;
       return Grown::reached;  // the target is a node already
     }
-    if (!this->motion_free(tree.nodes()[near], next)) return Grown::trapped;
-    added = tree.add(std::move(next), at, near);
-    return reached ? Grown::reached : Grown::advanced;
+    if (!this->motion_free(tree.nodes()[step.from], step.to)) return Grown::trapped;
+    added = tree.add(std::move(step.to), at, step.from);
+    return step.reaches_target ? Grown::reached : Grown::advanced;
   }
 
   Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {

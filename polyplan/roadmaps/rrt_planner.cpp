@@ -38,15 +38,11 @@ class RrtPlanner final : public SamplingPlanner<Space> {
     std::size_t reached = SamplingTree<Space>::root;
     bool found = space.start(query) == goal;
     while (!found && budget.next()) {
-      const bool toward_goal = uniform01(this->random()) < options_.goal_bias;
-      const Configuration sample = toward_goal ? goal : this->draw(sample_at);
-      const std::span<const double> target = toward_goal ? std::span<const double>(goal_at) : sample_at;
-      const std::size_t near = tree.nodes().neighbours().nearest(target);
-      auto [next, at_target] = this->steer(tree.nodes().coordinates(near), sample, target, step_, new_at);
-      if (this->distance(tree.nodes().coordinates(near), new_at) == 0) continue;
-      if (!this->motion_free(tree.nodes()[near], next)) continue;
-      reached = tree.add(std::move(next), new_at, near);
-      found = toward_goal && at_target;
+      const auto sample = this->goal_biased(goal, goal_at, options_.goal_bias, sample_at);
+      auto step = this->step_toward(tree, sample.configuration, sample.at, step_, new_at);
+      if (step.stays || !this->motion_free(tree.nodes()[step.from], step.to)) continue;
+      reached = tree.add(std::move(step.to), new_at, step.from);
+      found = sample.is_goal && step.reaches_target;
     }
     facts.set("tree_size", tree.size());
     if (record) attempt.graph = SamplingTree<Space>::picture({&tree});

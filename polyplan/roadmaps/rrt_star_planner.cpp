@@ -84,13 +84,12 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     std::vector<std::pair<double, std::size_t>> by_cost;  // (cost through the neighbour, neighbour)
 
     while (!(goal_node && best == 0) && budget.next()) {
-      const bool toward_goal = uniform01(this->random()) < options_.goal_bias;
-      const Configuration sample = toward_goal ? goal : this->draw(sample_at);
-      const std::span<const double> target = toward_goal ? std::span<const double>(goal_at) : sample_at;
-      const std::size_t nearest = tree.nodes().neighbours().nearest(target);
-      auto [next, at_target] = this->steer(tree.nodes().coordinates(nearest), sample, target, step_, new_at);
-      const bool is_goal = toward_goal && at_target;
-      if (this->distance(tree.nodes().coordinates(nearest), new_at) == 0) continue;
+      const auto sample = this->goal_biased(goal, goal_at, options_.goal_bias, sample_at);
+      auto step = this->step_toward(tree, sample.configuration, sample.at, step_, new_at);
+      if (step.stays) continue;
+      const bool is_goal = sample.is_goal && step.reaches_target;
+      const std::size_t nearest = step.from;
+      Configuration& next = step.to;
       if (is_goal && goal_node) {
         // The goal is in the tree already: a cheaper parent for it, if a neighbour offers one.
         neighbours_of(tree, goal_at, near);

@@ -71,8 +71,8 @@ auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::v
   };
 
   const std::size_t attempts = 4 * path.size() + 20;
+  measure();
   for (std::size_t attempt = 0; attempt < attempts && path.size() > 2; ++attempt) {
-    measure();
     double s1 = uniform01(random_) * along.back(), s2 = uniform01(random_) * along.back();
     if (s1 > s2) std::swap(s1, s2);
     const std::size_t i = at(s1, first_at), j = at(s2, second_at);
@@ -89,6 +89,7 @@ auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::v
     shorter.push_back(second);
     shorter.insert(shorter.end(), path.begin() + static_cast<std::ptrdiff_t>(j + 1), path.end());
     path = std::move(shorter);
+    measure();
   }
   for (std::size_t k = 1; k + 1 < path.size();)
     if (motion_free(path[k - 1], path[k + 1])) path.erase(path.begin() + static_cast<std::ptrdiff_t>(k));

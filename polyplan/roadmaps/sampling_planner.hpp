@@ -196,7 +196,6 @@ class SamplingPlanner : public Planner<Space> {
   SamplingSpace<Space>& space() { return *space_; }
   const SamplingSpace<Space>& space() const { return *space_; }
   SamplingRandom& random() { return random_; }
-  const SamplingLimits& limits() const { return limits_; }
   // Draws a configuration uniformly (counted as a sample); its coordinates into `coordinates`.
   Configuration draw(std::span<double> coordinates);
   bool state_free(const Configuration& c) { return space_->is_free(c); }
@@ -207,29 +206,45 @@ class SamplingPlanner : public Planner<Space> {
   double distance(std::span<const double> a, std::span<const double> b) const {
     return sampling_distance(space_->metric(), a, b);
   }
-  // A step from `from` toward `to` (coordinates; `target` is the configuration at `to`): `target`
-  // itself when it is within `step` (or step is 0: all the way), otherwise the configuration
-  // `step` along the way, its coordinates into `out`. reached says which.
-  struct Steered {
+  // What a tree grows toward: the goal itself with probability `goal_bias`, otherwise a drawn
+  // configuration (its coordinates into `drawn_at`).
+  struct Sample {
     Configuration configuration;
-    bool reached = false;
+    std::span<const double> at;
+    bool is_goal = false;
   };
-  Steered steer(std::span<const double> from, const Configuration& target, std::span<const double> to, double step,
-                std::span<double> out) const {
-    const double d = distance(from, to);
+  Sample goal_biased(const Configuration& goal, std::span<const double> goal_at, double goal_bias, std::span<double> drawn_at) {
+    if (uniform01(random_) < goal_bias) return {goal, goal_at, true};
+    Configuration drawn = draw(drawn_at);
+    return {std::move(drawn), drawn_at, false};
+  }
+  // One extension of `tree` toward `target`: from its nearest node, `target` itself when it is
+  // within `step` (or step is 0: all the way), otherwise the configuration `step` along the way;
+  // the coordinates of where it ends into `out`. `stays`: the nearest node is there already.
+  struct Step {
+    std::size_t from = 0;
+    Configuration to;
+    bool reaches_target = false;
+    bool stays = false;
+  };
+  Step step_toward(const SamplingTree<Space>& tree, const Configuration& target, std::span<const double> target_at, double step,
+                   std::span<double> out) const {
+    const std::size_t from = tree.nodes().neighbours().nearest(target_at);
+    const auto from_at = tree.nodes().coordinates(from);
+    const double d = distance(from_at, target_at);
     if (step <= 0 || d <= step) {
-      std::copy(to.begin(), to.end(), out.begin());
-      return {target, true};
+      std::copy(target_at.begin(), target_at.end(), out.begin());
+      return {from, target, true, d == 0};
     }
-    sampling_interpolate(space_->metric(), from, to, step / d, out);
-    return {space_->configuration(out), false};
+    sampling_interpolate(space_->metric(), from_at, target_at, step / d, out);
+    return {from, space_->configuration(out), false, distance(from_at, out) == 0};
   }
   // The length of a path of configurations in the space's metric.
   double length(const std::vector<Configuration>& path) const;
   void found(const SamplingBudget& budget, double length) { improvements_.push_back({budget.seconds(), length}); }
 
  private:
-  // Shortcuts between random pairs of the path's configurations, each a certified motion.
+  // Shortcuts between random points of the path, each new motion certified (the .cpp says how).
   std::vector<Configuration> shortcut(std::vector<Configuration> path);
 
   std::string name_;
@@ -240,7 +255,8 @@ class SamplingPlanner : public Planner<Space> {
   std::vector<SolutionImprovement> improvements_;
 };
 
-// A planner's registry entry for one space: `make(problem, space, options)` builds it. The
+// A planner's registry entry for one space: `make(space, options)` builds it on the space that
+// `make_space` makes of the problem. The
 // sampling planners' sources define their entries with this (one per space, explicitly
 // instantiated for TranslatingRobot and PlanarArm).
 template <class Space, class Options, class Make>

@@ -31,10 +31,16 @@ class SampledRoadmap {
     k_factor_ = std::numbers::e * (1 + 1 / static_cast<double>(space.dimension()));
   }
 
-  // Adds a milestone; `join(neighbour)` says whether to add the edge to each of its nearest
-  // milestones, nearest first, and whether that edge is certified already (nullopt: no edge).
+  // Adds a milestone at its coordinates `at` (none: the space gives them, for a query's start or
+  // goal); `join(neighbour)` says, for each of its nearest milestones, nearest first, whether to
+  // add the edge to it and whether that edge is certified already (nullopt: no edge).
   template <class Join>
   std::size_t add(Configuration configuration, std::span<const double> at, Join join) {
+    if (at.empty()) {
+      scratch_.resize(space_->dimension());
+      space_->coordinates(configuration, scratch_);
+      at = scratch_;
+    }
     nodes_.neighbours().nearest(at, neighbour_count(), near_);
     const std::size_t id = nodes_.add(std::move(configuration), at);
     boost::add_vertex(graph_);
@@ -42,14 +48,6 @@ class SampledRoadmap {
       if (const std::optional<bool> certified = join(n))
         boost::add_edge(n, id, SampledEdge{sampling_distance(metric(), nodes_.coordinates(n), at), *certified}, graph_);
     return id;
-  }
-
-  // The same for a configuration whose coordinates the space gives (a query's start or goal).
-  template <class Join>
-  std::size_t add(const Configuration& configuration, Join join) {
-    std::vector<double> at(space_->dimension());
-    space_->coordinates(configuration, at);
-    return add(configuration, at, join);
   }
 
   // The shortest path start → goal over the edges there are (certified or not), by `options`
@@ -93,6 +91,7 @@ class SampledRoadmap {
   Graph graph_;
   SearchWorkspace<Vertex> workspace_;
   std::vector<std::size_t> near_;
+  std::vector<double> scratch_;
 };
 
 }  // namespace polyplan::detail
