@@ -1,18 +1,22 @@
-// polyplan scen MAP.map SCEN.scen [--reference REF.csv] [--json -]: every query of a MovingAI
-// scenario file, answered from one visibility graph, compared with reference lengths.
+// polyplan scen MAP.map SCEN.scen [--reference REF.csv] [--json -] [--threads N]: every query of a
+// MovingAI scenario file, answered from one preprocessing (roadmaps/euclidean_shortest_paths.hpp)
+// by N threads, compared with reference lengths.
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 
-#include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/movingai_scenario.hpp>
-#include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/roadmaps/euclidean_shortest_paths.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <thread>
+
+#include <sys/resource.h>
 
 namespace polyplan::cli {
 namespace {
@@ -24,9 +28,50 @@ struct ScenOptions {
   std::string scenarios;
   std::string reference;
   std::string json;
+  unsigned threads = 0;
+  std::size_t table_mb = 1024;
 };
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+double peak_memory_mb() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
+}
+
+struct Answered {
+  EuclideanPathAnswer answer;
+  double us = 0;
+};
+
+// Answers every query on `threads` threads sharing `paths`; each answer and its time lands in its
+// query's slot, so the result does not depend on the number of threads.
+std::vector<Answered> answer_all(const EuclideanShortestPaths& paths, const std::vector<ScenarioQuery>& scenarios, unsigned threads) {
+  std::vector<Answered> answers(scenarios.size());
+  std::atomic<std::size_t> next{0}, done{0};
+  auto work = [&](bool reports) {
+    EuclideanShortestPaths::Scratch scratch;
+    Progress progress("queries");
+    for (std::size_t i; (i = next.fetch_add(1)) < scenarios.size();) {
+      const ScenarioQuery& q = scenarios[i];
+      const auto t = Clock::now();
+      answers[i].answer = paths.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
+      answers[i].us = seconds_since(t) * 1e6;
+      const std::size_t finished = done.fetch_add(1) + 1;
+      if (reports) progress.update(std::min(finished, scenarios.size() - 1), scenarios.size());
+    }
+    if (reports) {
+      while (done.load() < scenarios.size()) std::this_thread::yield();
+      progress.update(scenarios.size(), scenarios.size());
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, false);
+  work(true);
+  for (std::thread& thread : pool) thread.join();
+  return answers;
+}
 
 int run_scen(const ScenOptions& options) {
   // Every input is read (and any error reported, alone on stderr) before the long work starts.
@@ -36,24 +81,24 @@ int run_scen(const ScenOptions& options) {
   check_scenarios_match(scenarios, map.width, map.height, map.source, options.scenarios);
   std::vector<std::optional<double>> reference;
   if (!options.reference.empty()) reference = read_reference_lengths(options.reference, scenarios.size());
-  std::fprintf(stderr, "building the visibility graph of %s (%dx%d)...\n", options.map.c_str(), map.width, map.height);
-  const CSpace cspace(world_from_grid(map));
-  VisibilityGraph graph(cspace);
+  const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  std::fprintf(stderr, "building the corner graph and distance table of %s (%dx%d)...\n", options.map.c_str(), map.width,
+               map.height);
+  const EuclideanShortestPaths paths(map, {options.table_mb << 20, threads});
   const double preprocess = seconds_since(started);
+
+  const auto batch = Clock::now();
+  const std::vector<Answered> answers = answer_all(paths, scenarios, threads);
+  const double batch_seconds = seconds_since(batch);
 
   nlohmann::json queries = nlohmann::json::array();
   std::vector<double> micros;
   std::size_t mismatches = 0;
   double max_difference = 0;
-  Progress progress("queries");
-  for (std::size_t i = 0; i < scenarios.size(); ++i) {
-    const ScenarioQuery& q = scenarios[i];
-    const ExactPoint start{q.start_x, q.start_y}, goal{q.goal_x, q.goal_y};
-    const auto t = Clock::now();
-    const PlanReport<ExactPoint> plan = graph.plan(Query{start, goal, "scenario " + std::to_string(i)});
-    const double us = seconds_since(t) * 1e6;
-    micros.push_back(us);
-    nlohmann::json item{{"index", i}, {"found", plan.found}, {"length", plan.found ? nlohmann::json(plan.length) : nlohmann::json(nullptr)}, {"us", us}};
+  for (std::size_t i = 0; i < answers.size(); ++i) {
+    const EuclideanPathAnswer& plan = answers[i].answer;
+    micros.push_back(answers[i].us);
+    nlohmann::json item{{"index", i}, {"found", plan.found}, {"length", plan.found ? nlohmann::json(plan.length) : nlohmann::json(nullptr)}, {"us", answers[i].us}};
     if (i < reference.size() && reference[i]) {
       const double expected = *reference[i];
       item["reference"] = expected;
@@ -66,7 +111,6 @@ int run_scen(const ScenOptions& options) {
       }
     }
     queries.push_back(item);
-    progress.update(i + 1, scenarios.size());
   }
   std::vector<double> sorted = micros;
   std::sort(sorted.begin(), sorted.end());
@@ -75,11 +119,16 @@ int run_scen(const ScenOptions& options) {
   mean = micros.empty() ? 0 : mean / micros.size();
   const double median = sorted.empty() ? 0 : sorted[sorted.size() / 2];
   nlohmann::json summary{{"queries", scenarios.size()},
+                         {"threads", threads},
                          {"mean_us", mean},
                          {"median_us", median},
+                         {"batch_seconds", batch_seconds},
                          {"preprocess_seconds", preprocess},
-                         {"roadmap_vertices", graph.corner_count()},
-                         {"roadmap_edges", boost::num_edges(graph.roadmap())}};
+                         {"index_mb", static_cast<double>(paths.memory_bytes()) / (1 << 20)},
+                         {"peak_memory_mb", peak_memory_mb()},
+                         {"distance_table", paths.has_table()},
+                         {"roadmap_vertices", paths.corner_count()},
+                         {"roadmap_edges", paths.edge_count()}};
   if (!options.reference.empty()) {
     summary["mismatches"] = mismatches;
     summary["max_difference"] = max_difference;
@@ -106,6 +155,11 @@ void add_scen_command(CLI::App& app, Action& run) {
   command->add_option("scenarios", options->scenarios, "MovingAI scenarios (.scen)")->required();
   command->add_option("--reference", options->reference, "Reference lengths (index,length CSV) to compare with");
   command->add_option("--json", options->json, "Write the results as JSON to this file ('-' for standard output)");
+  command->add_option("--threads", options->threads, "Threads answering the queries, sharing one preprocessing (default: every core)")
+      ->check(CLI::Range(1u, 256u));
+  command->add_option("--table-mb", options->table_mb,
+                      "Largest corner-to-corner distance table to build, in MB (larger maps search the corner graph)")
+      ->check(CLI::Range(std::size_t{0}, std::size_t{1} << 20));
   command->callback([options, &run] { run = [options] { return run_scen(*options); }; });
 }
 

@@ -33,6 +33,8 @@ class VertexWedges {
 
   // Wedge k spans from edge k (included) counter-clockwise to edge k+1.
   bool is_free(std::size_t k) const { return edges_[k].free_on_left; }
+  // The other end of edge k (edges sorted counter-clockwise from the positive x direction).
+  const Point& far(std::size_t k) const { return edges_[k].far; }
 
   std::size_t free_wedges() const {
     return static_cast<std::size_t>(std::count_if(edges_.begin(), edges_.end(), [](const Edge& e) { return e.free_on_left; }));

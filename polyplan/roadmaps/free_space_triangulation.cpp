@@ -247,6 +247,35 @@ const Point& FreeSpaceTriangulation::point(std::size_t v) const { return impl_->
 const VertexWedges& FreeSpaceTriangulation::wedges(std::size_t v) const { return impl_->wedges[v]; }
 std::size_t FreeSpaceTriangulation::triangle_count() const { return impl_->cdt.number_of_faces(); }
 
+FreeSpaceTriangulation::Arrays FreeSpaceTriangulation::arrays() const {
+  const Impl& t = *impl_;
+  Arrays arrays;
+  arrays.points = t.points;
+  std::unordered_map<const void*, int> vertex_index, face_index;
+  for (std::size_t i = 0; i < t.handles.size(); ++i) vertex_index.emplace(&*t.handles[i], static_cast<int>(i));
+  for (auto v = t.cdt.finite_vertices_begin(); v != t.cdt.finite_vertices_end(); ++v)
+    if (v->info() == kNoVertex) {  // a frame corner
+      vertex_index.emplace(&*v, static_cast<int>(arrays.points.size()));
+      arrays.points.push_back(v->point());
+    }
+  if (t.cdt.dimension() < 2) return arrays;
+  for (auto f = t.cdt.finite_faces_begin(); f != t.cdt.finite_faces_end(); ++f)
+    face_index.emplace(&*f, static_cast<int>(face_index.size()));
+  arrays.triangles.resize(face_index.size());
+  for (auto f = t.cdt.finite_faces_begin(); f != t.cdt.finite_faces_end(); ++f) {
+    Arrays::Triangle& triangle = arrays.triangles[static_cast<std::size_t>(face_index.at(&*f))];
+    for (int i = 0; i < 3; ++i) {
+      triangle.vertex[i] = vertex_index.at(&*f->vertex(i));
+      const Face n = f->neighbor(i);
+      triangle.neighbour[i] = t.cdt.is_infinite(n) ? -1 : face_index.at(&*n);
+      triangle.constrained[i] = t.cdt.is_constrained({f, i});
+    }
+    triangle.free = f->info().free;
+    triangle.component = f->info().component;
+  }
+  return arrays;
+}
+
 void FreeSpaceTriangulation::visible_from_corner(std::size_t v, std::size_t wedge, std::vector<std::size_t>& out) const {
   const Impl& t = *impl_;
   t.begin_query();

@@ -26,6 +26,32 @@ TEST(Scen, ArenaMatchesTheReference) {
   EXPECT_NE(run.err.find("queries: 160/160"), std::string::npos);  // progress on stderr
 }
 
+// One preprocessing shared by the threads: the answers do not depend on how many there are; the
+// summary says what the preprocessing cost.
+TEST(Scen, ThreadsGiveTheAnswersOfOneAndTheSummaryTellsTheCosts) {
+  const std::string& data = kMovingAi;
+  const std::string files = "scen '" + data + "/maps/den312d.map' '" + data + "/scenarios/den312d.map.scen' --json -";
+  const CliRun one = run_polyplan(files + " --threads 1"), two = run_polyplan(files + " --threads 2");
+  ASSERT_EQ(one.exit_code, 0) << one.err;
+  ASSERT_EQ(two.exit_code, 0) << two.err;
+  const auto a = nlohmann::json::parse(one.out), b = nlohmann::json::parse(two.out);
+  ASSERT_EQ(a["queries"].size(), 320u);
+  ASSERT_EQ(b["queries"].size(), 320u);
+  for (std::size_t i = 0; i < 320; ++i) {
+    EXPECT_EQ(a["queries"][i]["found"], b["queries"][i]["found"]) << i;
+    EXPECT_EQ(a["queries"][i]["length"], b["queries"][i]["length"]) << i;
+  }
+  EXPECT_EQ(a["summary"]["threads"], 1);
+  EXPECT_EQ(b["summary"]["threads"], 2);
+  for (const char* key : {"mean_us", "median_us", "preprocess_seconds", "index_mb", "peak_memory_mb", "batch_seconds"})
+    EXPECT_GT(b["summary"][key].get<double>(), 0) << key;
+  EXPECT_EQ(b["summary"]["distance_table"], true);
+  EXPECT_EQ(b["summary"]["roadmap_vertices"], 187);
+  const CliRun zero = run_polyplan(files + " --threads 0");
+  EXPECT_EQ(zero.exit_code, 2);
+  EXPECT_NE(zero.err.find("--threads"), std::string::npos) << zero.err;
+}
+
 TEST(Scen, BadInputIsOneLineAndExitTwo) {
   const std::string& data = kMovingAi;
   const CliRun run = run_polyplan("scen '" + data + "/maps/arena.map' no_such.scen");

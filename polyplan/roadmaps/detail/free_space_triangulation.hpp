@@ -51,6 +51,23 @@ class FreeSpaceTriangulation {
 
   std::size_t triangle_count() const;
 
+  // The triangulation as plain arrays, for engines that re-run these walks in other arithmetic
+  // (integer_triangulation.hpp). Vertices 0..vertex_count()-1 are the free-space vertices, then
+  // the frame's corners; triangles are the finite ones, counter-clockwise, CGAL's numbering:
+  // edge i is opposite vertex i, between vertices i+1 and i+2 (mod 3).
+  struct Arrays {
+    struct Triangle {
+      int vertex[3];
+      int neighbour[3];  // across edge i; -1 beyond the convex hull
+      bool constrained[3];
+      bool free;
+      int component;  // free component, -1 for blocked triangles
+    };
+    std::vector<Point> points;
+    std::vector<Triangle> triangles;
+  };
+  Arrays arrays() const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;

@@ -1,0 +1,398 @@
+#include <polyplan/roadmaps/euclidean_shortest_paths.hpp>
+
+#include <polyplan/internal/cspace_impl.hpp>
+#include <polyplan/internal/free_space_frame.hpp>
+#include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
+#include <polyplan/roadmaps/detail/integer_triangulation.hpp>
+#include <polyplan/roadmaps/stopwatch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+namespace polyplan {
+namespace {
+
+using detail::IntegerTriangulation;
+using detail::IntPoint;
+using PointLocation = IntegerTriangulation::Location;
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double distance(const IntPoint& a, const IntPoint& b) {
+  const auto dx = static_cast<double>(a.x - b.x), dy = static_cast<double>(a.y - b.y);
+  return std::sqrt(dx * dx + dy * dy);
+}
+
+unsigned thread_count(unsigned asked) { return asked ? asked : std::max(1u, std::thread::hardware_concurrency()); }
+
+// Runs work(i) for i in [0, n) on `threads` threads, each taking every threads-th index.
+void parallel_for(std::size_t n, unsigned threads, const std::function<void(std::size_t, unsigned)>& work) {
+  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t)
+    pool.emplace_back([&, t] {
+      for (std::size_t i = t; i < n; i += threads) work(i, t);
+    });
+  for (std::size_t i = 0; i < n; i += threads) work(i, 0);
+  for (std::thread& thread : pool) thread.join();
+}
+
+struct Reached {
+  int node;
+  double distance;
+};
+
+}  // namespace
+
+struct EuclideanShortestPaths::Scratch::Impl {
+  IntegerTriangulation::Scratch walk;
+  std::vector<int> visible, start_components, goal_components, corners;
+  std::vector<IntPoint> path;
+  std::vector<PointLocation> where;
+  std::vector<Reached> from_start, from_goal;
+  // A* (without a table): per-node records, valid where stamp == generation.
+  std::vector<double> cost, goal_extra;
+  std::vector<int> parent;
+  std::vector<std::uint32_t> stamp, goal_stamp;
+  std::vector<bool> closed;
+  std::uint32_t generation = 0;
+  std::vector<std::pair<double, int>> heap;
+};
+
+EuclideanShortestPaths::Scratch::Scratch() : impl_(std::make_unique<Impl>()) {}
+EuclideanShortestPaths::Scratch::~Scratch() = default;
+EuclideanShortestPaths::Scratch::Scratch(Scratch&&) noexcept = default;
+
+struct EuclideanShortestPaths::Impl {
+  IntegerTriangulation triangulation;
+  // node_at[wedge_offset[v] + k]: the corner of free wedge k at vertex v, or -1.
+  std::vector<std::size_t> wedge_offset;
+  std::vector<int> node_at;
+  std::vector<int> node_vertex;
+  // Corner graph, compressed rows: the neighbours of u are adjacent[begin[u] .. begin[u+1]).
+  std::vector<std::size_t> begin;
+  std::vector<int> adjacent;
+  std::vector<double> weight;
+  // The table (n x n, row s = Dijkstra from s): distance and the predecessor on the path from s.
+  std::vector<double> table_distance;
+  std::vector<int> table_parent;
+  double build_seconds = 0;
+
+  explicit Impl(IntegerTriangulation t) : triangulation(std::move(t)) {}
+
+  std::size_t nodes() const { return node_vertex.size(); }
+  const IntPoint& position(int node) const { return triangulation.point(static_cast<std::size_t>(node_vertex[static_cast<std::size_t>(node)])); }
+
+  // visibility_graph.cpp's arrival_node: the corner a sight line from `from` ends at when it
+  // reaches vertex c, and only if it is tangent there (its continuation stays in the wedge).
+  int arrival_node(std::size_t c, const IntPoint& from) const {
+    const IntPoint& at = triangulation.point(c);
+    const auto wedge = triangulation.wedge(c, {from.x - at.x, from.y - at.y});
+    if (!wedge) return -1;
+    const int node = node_at[wedge_offset[c] + *wedge];
+    if (node < 0 || triangulation.wedge(c, {at.x - from.x, at.y - from.y}) != wedge) return -1;
+    return node;
+  }
+
+  void build_graph(unsigned threads) {
+    const std::size_t n = triangulation.vertex_count();
+    wedge_offset.assign(n + 1, 0);
+    for (std::size_t v = 0; v < n; ++v) wedge_offset[v + 1] = wedge_offset[v] + triangulation.wedge_count(v);
+    node_at.assign(wedge_offset[n], -1);
+    for (std::size_t v = 0; v < n; ++v)
+      for (std::size_t k = 0; k < triangulation.wedge_count(v); ++k)
+        if (triangulation.is_free_wedge(v, k) && triangulation.is_reflex_wedge(v, k)) {
+          node_at[wedge_offset[v] + k] = static_cast<int>(node_vertex.size());
+          node_vertex.push_back(static_cast<int>(v));
+        }
+    // Each pair once (to the higher-numbered corner), from the corners' own visibility.
+    std::vector<std::vector<std::pair<int, int>>> found(threads);
+    std::vector<IntegerTriangulation::Scratch> scratch(threads);
+    std::vector<std::vector<int>> visible(threads);
+    parallel_for(nodes(), threads, [&](std::size_t u, unsigned t) {
+      const auto v = static_cast<std::size_t>(node_vertex[u]);
+      std::size_t k = 0;
+      while (node_at[wedge_offset[v] + k] != static_cast<int>(u)) ++k;
+      visible[t].clear();
+      triangulation.visible_from_corner(v, k, visible[t], scratch[t]);
+      for (int c : visible[t]) {
+        const int target = arrival_node(static_cast<std::size_t>(c), triangulation.point(v));
+        if (target <= static_cast<int>(u)) continue;  // none, or the pair is the other's
+        if (arrival_node(v, triangulation.point(static_cast<std::size_t>(c))) != static_cast<int>(u)) continue;
+        found[t].emplace_back(static_cast<int>(u), target);
+      }
+    });
+    begin.assign(nodes() + 1, 0);
+    for (const auto& edges : found)
+      for (auto [u, v] : edges) {
+        ++begin[static_cast<std::size_t>(u) + 1];
+        ++begin[static_cast<std::size_t>(v) + 1];
+      }
+    for (std::size_t u = 0; u < nodes(); ++u) begin[u + 1] += begin[u];
+    adjacent.resize(begin.back());
+    weight.resize(begin.back());
+    std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
+    for (const auto& edges : found)
+      for (auto [u, v] : edges) {
+        const double w = distance(position(u), position(v));
+        adjacent[fill[static_cast<std::size_t>(u)]] = v;
+        weight[fill[static_cast<std::size_t>(u)]++] = w;
+        adjacent[fill[static_cast<std::size_t>(v)]] = u;
+        weight[fill[static_cast<std::size_t>(v)]++] = w;
+      }
+  }
+
+  void build_table(unsigned threads) {
+    const std::size_t n = nodes();
+    table_distance.assign(n * n, kInfinity);
+    table_parent.assign(n * n, -1);
+    std::vector<std::vector<std::pair<double, int>>> heaps(threads);
+    parallel_for(n, threads, [&](std::size_t s, unsigned t) {
+      double* d = &table_distance[s * n];
+      int* parent = &table_parent[s * n];
+      auto& heap = heaps[t];
+      heap.clear();
+      d[s] = 0;
+      heap.emplace_back(0.0, static_cast<int>(s));
+      while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+        const auto [du, u] = heap.back();
+        heap.pop_back();
+        if (du > d[u]) continue;
+        for (std::size_t e = begin[static_cast<std::size_t>(u)]; e < begin[static_cast<std::size_t>(u) + 1]; ++e) {
+          const int v = adjacent[e];
+          const double dv = du + weight[e];
+          if (dv < d[v]) {
+            d[v] = dv;
+            parent[v] = u;
+            heap.emplace_back(dv, v);
+            std::push_heap(heap.begin(), heap.end(), std::greater<>());
+          }
+        }
+      }
+    });
+  }
+
+  // The corners visible from p that a taut path leaves p towards, with their distances; false
+  // when p is blocked.
+  bool reach(const IntPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
+    out.clear();
+    s.visible.clear();
+    if (!triangulation.visible_from_point(p, where, s.visible, s.walk)) return false;
+    for (int c : s.visible) {
+      const int node = arrival_node(static_cast<std::size_t>(c), p);
+      if (node >= 0) out.push_back({node, distance(p, position(node))});
+    }
+    return true;
+  }
+
+  // The best corner pair through the table; corners as a path from the start's to the goal's.
+  bool best_through_table(const IntPoint& goal, Scratch::Impl& s, std::vector<int>& corners) const {
+    const std::size_t n = nodes();
+    // Through corner a a path is at least ds(a) + |a goal|: taken in that order, the first a whose
+    // bound reaches the best so far ends the search.
+    std::vector<std::pair<double, int>>& order = s.heap;
+    order.clear();
+    for (std::size_t i = 0; i < s.from_start.size(); ++i)
+      order.emplace_back(s.from_start[i].distance + distance(position(s.from_start[i].node), goal), static_cast<int>(i));
+    std::sort(order.begin(), order.end());
+    std::sort(s.from_goal.begin(), s.from_goal.end(), [](const Reached& a, const Reached& b) { return a.node < b.node; });
+    double best = kInfinity;
+    int best_a = -1, best_b = -1;
+    for (const auto& [bound, i] : order) {
+      if (bound >= best) break;
+      const Reached& a = s.from_start[static_cast<std::size_t>(i)];
+      const double* row = &table_distance[static_cast<std::size_t>(a.node) * n];
+      for (const Reached& b : s.from_goal) {
+        const double cost = a.distance + row[b.node] + b.distance;
+        if (cost < best) {
+          best = cost;
+          best_a = a.node;
+          best_b = b.node;
+        }
+      }
+    }
+    if (best_a < 0) return false;
+    corners.clear();
+    const int* parent = &table_parent[static_cast<std::size_t>(best_a) * n];
+    for (int x = best_b; x != best_a; x = parent[x]) corners.push_back(x);
+    corners.push_back(best_a);
+    std::reverse(corners.begin(), corners.end());
+    return true;
+  }
+
+  // Without a table: A* over the corners from every corner the start reaches, ending when the
+  // best start-to-goal cost found is no more than the smallest key left.
+  bool best_by_search(const IntPoint& goal, Scratch::Impl& s, std::vector<int>& corners) const {
+    const std::size_t n = nodes();
+    if (s.cost.size() != n) {
+      s.cost.assign(n, 0);
+      s.goal_extra.assign(n, 0);
+      s.parent.assign(n, -1);
+      s.stamp.assign(n, 0);
+      s.goal_stamp.assign(n, 0);
+      s.closed.assign(n, false);
+      s.generation = 0;
+    }
+    if (++s.generation == 0) {
+      std::fill(s.stamp.begin(), s.stamp.end(), 0);
+      std::fill(s.goal_stamp.begin(), s.goal_stamp.end(), 0);
+      s.generation = 1;
+    }
+    const std::uint32_t now = s.generation;
+    for (const Reached& b : s.from_goal) {
+      const auto node = static_cast<std::size_t>(b.node);
+      if (s.goal_stamp[node] != now || b.distance < s.goal_extra[node]) s.goal_extra[node] = b.distance;
+      s.goal_stamp[node] = now;
+    }
+    auto& heap = s.heap;
+    heap.clear();
+    auto relax = [&](int v, double cost, int from) {
+      const auto node = static_cast<std::size_t>(v);
+      if (s.stamp[node] == now && s.cost[node] <= cost) return;
+      if (s.stamp[node] != now) s.closed[node] = false;
+      s.stamp[node] = now;
+      s.cost[node] = cost;
+      s.parent[node] = from;
+      heap.emplace_back(cost + distance(position(v), goal), v);
+      std::push_heap(heap.begin(), heap.end(), std::greater<>());
+    };
+    for (const Reached& a : s.from_start) relax(a.node, a.distance, -1);
+    double best = kInfinity;
+    int best_node = -1;
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+      const auto [key, u] = heap.back();
+      heap.pop_back();
+      if (key >= best) break;
+      const auto node = static_cast<std::size_t>(u);
+      if (s.closed[node]) continue;
+      s.closed[node] = true;
+      if (s.goal_stamp[node] == now && s.cost[node] + s.goal_extra[node] < best) {
+        best = s.cost[node] + s.goal_extra[node];
+        best_node = u;
+      }
+      for (std::size_t e = begin[node]; e < begin[node + 1]; ++e) relax(adjacent[e], s.cost[node] + weight[e], u);
+    }
+    if (best_node < 0) return false;
+    corners.clear();
+    for (int x = best_node; x >= 0; x = s.parent[static_cast<std::size_t>(x)]) corners.push_back(x);
+    std::reverse(corners.begin(), corners.end());
+    return true;
+  }
+};
+
+EuclideanShortestPaths::EuclideanShortestPaths(const CSpace& cspace, EuclideanShortestPathsOptions options) {
+  const Stopwatch building;
+  std::optional<IntegerTriangulation> triangulation;
+  {
+    const detail::FreeSpaceTriangulation exact(detail::CSpaceAccess::impl(cspace), query_points(cspace.world()));
+    triangulation = IntegerTriangulation::from(exact);
+  }
+  if (!triangulation)
+    throw std::invalid_argument(cspace.world().source +
+                                ": the free space has a corner that is not an integer point below 2^30 in magnitude");
+  impl_ = std::make_unique<Impl>(std::move(*triangulation));
+  build(options);
+  impl_->build_seconds = building.seconds();
+}
+
+EuclideanShortestPaths::EuclideanShortestPaths(const GridMap& map, EuclideanShortestPathsOptions options) {
+  const Stopwatch building;
+  impl_ = std::make_unique<Impl>(IntegerTriangulation::from_grid(map));
+  build(options);
+  impl_->build_seconds = building.seconds();
+}
+
+void EuclideanShortestPaths::build(EuclideanShortestPathsOptions options) {
+  const unsigned threads = thread_count(options.threads);
+  impl_->build_graph(threads);
+  const std::size_t n = impl_->nodes();
+  if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n) impl_->build_table(threads);
+}
+
+EuclideanShortestPaths::~EuclideanShortestPaths() = default;
+EuclideanShortestPaths::EuclideanShortestPaths(EuclideanShortestPaths&&) noexcept = default;
+EuclideanShortestPaths& EuclideanShortestPaths::operator=(EuclideanShortestPaths&&) noexcept = default;
+
+std::size_t EuclideanShortestPaths::corner_count() const { return impl_->nodes(); }
+std::size_t EuclideanShortestPaths::edge_count() const { return impl_->adjacent.size() / 2; }
+bool EuclideanShortestPaths::has_table() const { return !impl_->table_distance.empty(); }
+double EuclideanShortestPaths::build_seconds() const { return impl_->build_seconds; }
+std::size_t EuclideanShortestPaths::memory_bytes() const {
+  const Impl& g = *impl_;
+  return g.triangulation.memory_bytes() + (g.wedge_offset.capacity() + g.begin.capacity()) * sizeof(std::size_t) +
+         (g.node_at.capacity() + g.node_vertex.capacity() + g.adjacent.capacity() + g.table_parent.capacity()) * sizeof(int) +
+         (g.weight.capacity() + g.table_distance.capacity()) * sizeof(double);
+}
+
+EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start, const IntegerPathPoint& goal, Scratch& scratch) const {
+  const Impl& g = *impl_;
+  Scratch::Impl& s = *scratch.impl_;
+  EuclideanPathAnswer answer;
+  const auto fits = [](const IntegerPathPoint& p) {
+    return std::abs(p.x) < detail::kIntegerCoordinateLimit && std::abs(p.y) < detail::kIntegerCoordinateLimit;
+  };
+  const IntPoint from{start.x, start.y}, to{goal.x, goal.y};
+  const PointLocation start_at = fits(start) ? g.triangulation.locate(from) : PointLocation{};
+  const PointLocation goal_at = fits(goal) ? g.triangulation.locate(to) : PointLocation{};
+  g.triangulation.components_at(start_at, s.start_components);
+  g.triangulation.components_at(goal_at, s.goal_components);
+  auto named = [](const char* what, const IntPoint& p) {
+    return std::string(what) + " [" + std::to_string(p.x) + ", " + std::to_string(p.y) + "] is not in the free space";
+  };
+  if (s.start_components.empty()) {
+    answer.why_not = named("the start", from);
+    return answer;
+  }
+  if (s.goal_components.empty()) {
+    answer.why_not = named("the goal", to);
+    return answer;
+  }
+  const bool shared = std::any_of(s.start_components.begin(), s.start_components.end(), [&](int c) {
+    return std::find(s.goal_components.begin(), s.goal_components.end(), c) != s.goal_components.end();
+  });
+  if (!shared) {
+    answer.why_not = "start and goal lie in different components of the free space";
+    return answer;
+  }
+  std::vector<IntPoint>& path = s.path;
+  std::vector<PointLocation>& where = s.where;
+  path.assign(1, from);
+  where.assign(1, start_at);
+  if (!g.triangulation.segment_free(from, start_at, to)) {  // start does not see goal: through corners
+    g.reach(from, start_at, s.from_start, s);
+    g.reach(to, goal_at, s.from_goal, s);
+    const bool found = has_table() ? g.best_through_table(to, s, s.corners) : g.best_by_search(to, s, s.corners);
+    if (!found) {  // cannot happen: one component means one path through its corners
+      answer.why_not = "no path through the corners between start and goal";
+      return answer;
+    }
+    for (int c : s.corners) {
+      path.push_back(g.position(c));
+      where.push_back(IntegerTriangulation::at_vertex(static_cast<std::size_t>(g.node_vertex[static_cast<std::size_t>(c)])));
+    }
+    // Every reported path is checked exactly by the segment walk, which is not the visibility
+    // that found it; a failure is a bug, never a tolerance call.
+    path.push_back(to);
+    where.push_back(goal_at);
+    if (!g.triangulation.path_free(path, where))
+      throw std::logic_error("euclidean shortest paths produced an invalid path: " +
+                             g.triangulation.why_path_blocked(path, where).value_or("(the check disagrees with itself)"));
+  } else {
+    path.push_back(to);
+  }
+  answer.found = true;
+  answer.path.reserve(path.size());
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (i > 0) answer.length += distance(path[i - 1], path[i]);
+    if (i == 0 || !(path[i] == path[i - 1])) answer.path.push_back({path[i].x, path[i].y});
+  }
+  return answer;
+}
+
+}  // namespace polyplan

@@ -1,0 +1,84 @@
+#pragma once
+// Exact Euclidean shortest paths for many queries in a world whose free-space corners are integer
+// points (MovingAI maps: polyplan scen). The reduced visibility graph of visibility_graph.hpp —
+// corners a taut path bends around, bitangent edges — is built in 64-bit integer arithmetic
+// (detail/integer_triangulation.hpp: exact), and then, when it fits the memory budget, every
+// corner-to-corner distance with the first step of each shortest path (one Dijkstra per corner).
+// A query is then: locate start and goal, the segment if they see each other, else the corners
+// each sees and the best pair through the table (or, without a table, an A* over the corners);
+// the path is checked exactly by the integer segment walk before it is returned.
+//
+// Queries are const and take their scratch space from the caller: threads share one instance,
+// each with its own Scratch, and get the answers one thread gets.
+#include <polyplan/geometry/cspace.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace polyplan {
+
+struct GridMap;
+
+struct EuclideanShortestPathsOptions {
+  // The corner-to-corner table is built when it needs at most this many bytes (12 per pair).
+  std::size_t table_bytes = std::size_t{1} << 30;
+  // Threads that build the graph and the table (0: every core).
+  unsigned threads = 0;
+};
+
+struct IntegerPathPoint {
+  std::int64_t x = 0, y = 0;
+  friend bool operator==(const IntegerPathPoint& a, const IntegerPathPoint& b) { return a.x == b.x && a.y == b.y; }
+};
+
+struct EuclideanPathAnswer {
+  bool found = false;
+  double length = 0;  // sum of the segments' correctly rounded lengths
+  std::vector<IntegerPathPoint> path;
+  std::string why_not;  // when not found
+};
+
+class EuclideanShortestPaths {
+ public:
+  // Throws std::invalid_argument when a free-space vertex is not an integer point below 2^30
+  // in magnitude (then use VisibilityGraph).
+  explicit EuclideanShortestPaths(const CSpace& cspace, EuclideanShortestPathsOptions options = {});
+  // A MovingAI map's free space for a point robot (the C-space of world_from_grid(map)), read
+  // straight from its cells: the same answers, without the exact polygon overlay.
+  explicit EuclideanShortestPaths(const GridMap& map, EuclideanShortestPathsOptions options = {});
+  ~EuclideanShortestPaths();
+  EuclideanShortestPaths(EuclideanShortestPaths&&) noexcept;
+  EuclideanShortestPaths& operator=(EuclideanShortestPaths&&) noexcept;
+
+  // One per thread.
+  class Scratch {
+   public:
+    Scratch();
+    ~Scratch();
+    Scratch(Scratch&&) noexcept;
+
+   private:
+    friend class EuclideanShortestPaths;
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+  };
+
+  // The shortest path from start to goal (integer points; a blocked one is not found, saying so).
+  EuclideanPathAnswer query(const IntegerPathPoint& start, const IntegerPathPoint& goal, Scratch& scratch) const;
+
+  std::size_t corner_count() const;
+  std::size_t edge_count() const;
+  bool has_table() const;
+  // Bytes of the triangulation, the graph and the table.
+  std::size_t memory_bytes() const;
+  double build_seconds() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+  void build(EuclideanShortestPathsOptions options);
+};
+
+}  // namespace polyplan
