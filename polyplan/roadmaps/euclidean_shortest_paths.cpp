@@ -63,7 +63,15 @@ struct EuclideanShortestPaths::Scratch::Impl {
   std::vector<std::pair<double, int>> heap;
 };
 
-EuclideanShortestPaths::Scratch::Scratch() : impl_(std::make_unique<Impl>()) {}
+EuclideanShortestPaths::Scratch::Scratch() : impl_(std::make_unique<Impl>()) {
+  // Room for typical queries, so that the first ones do not pay for growing.
+  for (auto* v : {&impl_->visible, &impl_->start_components, &impl_->goal_components, &impl_->corners}) v->reserve(256);
+  impl_->path.reserve(256);
+  impl_->where.reserve(256);
+  impl_->from_start.reserve(256);
+  impl_->from_goal.reserve(256);
+  impl_->heap.reserve(256);
+}
 EuclideanShortestPaths::Scratch::~Scratch() = default;
 EuclideanShortestPaths::Scratch::Scratch(Scratch&&) noexcept = default;
 
@@ -80,6 +88,13 @@ struct EuclideanShortestPaths::Impl {
   // The table (n x n, row s = Dijkstra from s): distance and the predecessor on the path from s.
   std::vector<double> table_distance;
   std::vector<int> table_parent;
+  // With a table, the corners each integer point of the triangulated box reaches (reach()), read
+  // instead of walked: for point (x, y) they are point_corners[point_begin[i] .. point_begin[i+1])
+  // with i = (y - box_low.y) * box_width + (x - box_low.x).
+  IntPoint box_low, box_high;
+  std::int64_t box_width = 0;
+  std::vector<std::uint32_t> point_begin;
+  std::vector<int> point_corners;
   double build_seconds = 0;
 
   explicit Impl(IntegerTriangulation t) : triangulation(std::move(t)) {}
@@ -177,9 +192,50 @@ struct EuclideanShortestPaths::Impl {
     });
   }
 
-  // The corners visible from p that a taut path leaves p towards, with their distances; false
-  // when p is blocked.
-  bool reach(const IntPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
+  // Every integer point's reach() (build_table's companion, for the same maps: its size is the
+  // box's area times the corners each point sees).
+  void build_point_table(unsigned threads) {
+    box_low = box_high = triangulation.point(0);
+    for (std::size_t v = 0; v < triangulation.vertex_count(); ++v) {
+      const IntPoint& p = triangulation.point(v);
+      box_low = {std::min(box_low.x, p.x), std::min(box_low.y, p.y)};
+      box_high = {std::max(box_high.x, p.x), std::max(box_high.y, p.y)};
+    }
+    box_width = box_high.x - box_low.x + 1;
+    const std::int64_t rows = box_high.y - box_low.y + 1;
+    std::vector<std::vector<int>> row_corners(static_cast<std::size_t>(rows));
+    std::vector<std::vector<std::uint32_t>> row_counts(static_cast<std::size_t>(rows));
+    std::vector<Scratch::Impl> scratch(threads);
+    parallel_for(static_cast<std::size_t>(rows), threads, [&](std::size_t r, unsigned t) {
+      std::vector<Reached> reached;
+      for (std::int64_t x = box_low.x; x <= box_high.x; ++x) {
+        const IntPoint p{x, box_low.y + static_cast<std::int64_t>(r)};
+        walk_reach(p, triangulation.locate(p), reached, scratch[t]);
+        for (const Reached& c : reached) row_corners[r].push_back(c.node);
+        row_counts[r].push_back(static_cast<std::uint32_t>(reached.size()));
+      }
+    });
+    point_begin.assign(1, 0);
+    for (std::size_t r = 0; r < row_corners.size(); ++r) {
+      for (std::uint32_t count : row_counts[r]) point_begin.push_back(point_begin.back() + count);
+      point_corners.insert(point_corners.end(), row_corners[r].begin(), row_corners[r].end());
+    }
+  }
+
+  // The corners visible from p that a taut path leaves p towards, with their distances.
+  void reach(const IntPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
+    if (point_begin.empty() || p.x < box_low.x || p.y < box_low.y || p.x > box_high.x || p.y > box_high.y) {
+      walk_reach(p, where, out, s);
+      return;
+    }
+    out.clear();
+    const auto i = static_cast<std::size_t>((p.y - box_low.y) * box_width + (p.x - box_low.x));
+    for (std::uint32_t k = point_begin[i]; k < point_begin[i + 1]; ++k)
+      out.push_back({point_corners[k], distance(p, position(point_corners[k]))});
+  }
+
+  // reach() by walking the triangulation; false when p is blocked.
+  bool walk_reach(const IntPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
     out.clear();
     s.visible.clear();
     if (!triangulation.visible_from_point(p, where, s.visible, s.walk)) return false;
@@ -312,7 +368,10 @@ void EuclideanShortestPaths::build(EuclideanShortestPathsOptions options) {
   const unsigned threads = thread_count(options.threads);
   impl_->build_graph(threads);
   const std::size_t n = impl_->nodes();
-  if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n) impl_->build_table(threads);
+  if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n) {
+    impl_->build_table(threads);
+    impl_->build_point_table(threads);
+  }
 }
 
 EuclideanShortestPaths::~EuclideanShortestPaths() = default;
@@ -326,7 +385,8 @@ double EuclideanShortestPaths::build_seconds() const { return impl_->build_secon
 std::size_t EuclideanShortestPaths::memory_bytes() const {
   const Impl& g = *impl_;
   return g.triangulation.memory_bytes() + (g.wedge_offset.capacity() + g.begin.capacity()) * sizeof(std::size_t) +
-         (g.node_at.capacity() + g.node_vertex.capacity() + g.adjacent.capacity() + g.table_parent.capacity()) * sizeof(int) +
+         (g.node_at.capacity() + g.node_vertex.capacity() + g.adjacent.capacity() + g.table_parent.capacity() +
+          g.point_corners.capacity() + g.point_begin.capacity()) * sizeof(int) +
          (g.weight.capacity() + g.table_distance.capacity()) * sizeof(double);
 }
 

@@ -403,9 +403,11 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntPoint& a, cons
     const Triangle& t = triangles_[static_cast<std::size_t>(face)];
     if (!t.free) return {Blocked::enters};
     if (in_closed_triangle(face, b)) return {};
+    const int side[3] = {orientation(a, b, at_point(t.vertex[0])), orientation(a, b, at_point(t.vertex[1])),
+                         orientation(a, b, at_point(t.vertex[2]))};
     for (int i = 0; i < 3 && at < 0; ++i) {
       const int v = t.vertex[i];
-      if (v != came_from && orientation(a, b, at_point(v)) == 0 && ahead(at_point(v))) at = v;
+      if (v != came_from && side[i] == 0 && ahead(at_point(v))) at = v;
     }
     if (at >= 0) {
       arrived = true;
@@ -413,7 +415,7 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntPoint& a, cons
     }
     int exit_edge = -1;
     for (int i = 0; i < 3; ++i)
-      if (orientation(a, b, at_point(t.vertex[ccw(i)])) < 0 && orientation(a, b, at_point(t.vertex[cw(i)])) > 0) exit_edge = i;
+      if (side[ccw(i)] < 0 && side[cw(i)] > 0) exit_edge = i;
     if (exit_edge < 0) return {Blocked::lost};  // cannot happen
     if (t.is_constrained(exit_edge)) return {Blocked::crosses};
     face = t.neighbour[exit_edge];
