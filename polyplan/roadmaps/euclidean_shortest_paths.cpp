@@ -54,11 +54,13 @@ struct EuclideanShortestPaths::Scratch::Impl {
   std::vector<IntPoint> path;
   std::vector<PointLocation> where;
   std::vector<Reached> from_start, from_goal;
-  // A* (without a table): per-node records, valid where stamp == generation.
-  std::vector<double> cost, goal_extra;
-  std::vector<int> parent;
-  std::vector<std::uint32_t> stamp, goal_stamp;
-  std::vector<bool> closed;
+  // A* (without a table): one record per corner, valid where its stamps equal the generation.
+  struct Record {
+    double cost = 0, goal_extra = 0;
+    int parent = -1;
+    std::uint32_t stamp = 0, goal_stamp = 0, closed = 0;
+  };
+  std::vector<Record> records;
   std::uint32_t generation = 0;
   std::vector<std::pair<double, int>> heap;
 };
@@ -81,6 +83,7 @@ struct EuclideanShortestPaths::Impl {
   std::vector<std::size_t> wedge_offset;
   std::vector<int> node_at;
   std::vector<int> node_vertex;
+  std::vector<IntPoint> node_point;  // node_vertex's points, beside each other for the search
   // Corner graph, compressed rows: the neighbours of u are adjacent[begin[u] .. begin[u+1]).
   std::vector<std::size_t> begin;
   std::vector<int> adjacent;
@@ -100,7 +103,7 @@ struct EuclideanShortestPaths::Impl {
   explicit Impl(IntegerTriangulation t) : triangulation(std::move(t)) {}
 
   std::size_t nodes() const { return node_vertex.size(); }
-  const IntPoint& position(int node) const { return triangulation.point(static_cast<std::size_t>(node_vertex[static_cast<std::size_t>(node)])); }
+  const IntPoint& position(int node) const { return node_point[static_cast<std::size_t>(node)]; }
 
   // visibility_graph.cpp's arrival_node: the corner a sight line from `from` ends at when it
   // reaches vertex c, and only if it is tangent there (its continuation stays in the wedge).
@@ -123,6 +126,7 @@ struct EuclideanShortestPaths::Impl {
         if (triangulation.is_free_wedge(v, k) && triangulation.is_reflex_wedge(v, k)) {
           node_at[wedge_offset[v] + k] = static_cast<int>(node_vertex.size());
           node_vertex.push_back(static_cast<int>(v));
+          node_point.push_back(triangulation.point(v));
         }
     // Each pair once (to the higher-numbered corner), from the corners' own visibility.
     std::vector<std::vector<std::pair<int, int>>> found(threads);
@@ -285,36 +289,29 @@ struct EuclideanShortestPaths::Impl {
   // best start-to-goal cost found is no more than the smallest key left.
   bool best_by_search(const IntPoint& goal, Scratch::Impl& s, std::vector<int>& corners) const {
     const std::size_t n = nodes();
-    if (s.cost.size() != n) {
-      s.cost.assign(n, 0);
-      s.goal_extra.assign(n, 0);
-      s.parent.assign(n, -1);
-      s.stamp.assign(n, 0);
-      s.goal_stamp.assign(n, 0);
-      s.closed.assign(n, false);
+    if (s.records.size() != n) {
+      s.records.assign(n, {});
       s.generation = 0;
     }
-    if (++s.generation == 0) {
-      std::fill(s.stamp.begin(), s.stamp.end(), 0);
-      std::fill(s.goal_stamp.begin(), s.goal_stamp.end(), 0);
+    if (++s.generation == 0) {  // wrapped: clear for real once every 4 billion queries
+      std::fill(s.records.begin(), s.records.end(), Scratch::Impl::Record{});
       s.generation = 1;
     }
     const std::uint32_t now = s.generation;
     for (const Reached& b : s.from_goal) {
-      const auto node = static_cast<std::size_t>(b.node);
-      if (s.goal_stamp[node] != now || b.distance < s.goal_extra[node]) s.goal_extra[node] = b.distance;
-      s.goal_stamp[node] = now;
+      Scratch::Impl::Record& r = s.records[static_cast<std::size_t>(b.node)];
+      if (r.goal_stamp != now || b.distance < r.goal_extra) r.goal_extra = b.distance;
+      r.goal_stamp = now;
     }
     auto& heap = s.heap;
     heap.clear();
     auto relax = [&](int v, double cost, int from) {
-      const auto node = static_cast<std::size_t>(v);
-      if (s.stamp[node] == now && s.cost[node] <= cost) return;
-      if (s.stamp[node] != now) s.closed[node] = false;
-      s.stamp[node] = now;
-      s.cost[node] = cost;
-      s.parent[node] = from;
-      heap.emplace_back(cost + distance(position(v), goal), v);
+      Scratch::Impl::Record& r = s.records[static_cast<std::size_t>(v)];
+      if (r.stamp == now && r.cost <= cost) return;
+      r.stamp = now;
+      r.cost = cost;
+      r.parent = from;
+      heap.emplace_back(cost + distance(node_point[static_cast<std::size_t>(v)], goal), v);
       std::push_heap(heap.begin(), heap.end(), std::greater<>());
     };
     for (const Reached& a : s.from_start) relax(a.node, a.distance, -1);
@@ -326,17 +323,19 @@ struct EuclideanShortestPaths::Impl {
       heap.pop_back();
       if (key >= best) break;
       const auto node = static_cast<std::size_t>(u);
-      if (s.closed[node]) continue;
-      s.closed[node] = true;
-      if (s.goal_stamp[node] == now && s.cost[node] + s.goal_extra[node] < best) {
-        best = s.cost[node] + s.goal_extra[node];
+      Scratch::Impl::Record& r = s.records[node];
+      if (r.closed == now) continue;
+      r.closed = now;
+      if (r.goal_stamp == now && r.cost + r.goal_extra < best) {
+        best = r.cost + r.goal_extra;
         best_node = u;
       }
-      for (std::size_t e = begin[node]; e < begin[node + 1]; ++e) relax(adjacent[e], s.cost[node] + weight[e], u);
+      const double cost = r.cost;
+      for (std::size_t e = begin[node]; e < begin[node + 1]; ++e) relax(adjacent[e], cost + weight[e], u);
     }
     if (best_node < 0) return false;
     corners.clear();
-    for (int x = best_node; x >= 0; x = s.parent[static_cast<std::size_t>(x)]) corners.push_back(x);
+    for (int x = best_node; x >= 0; x = s.records[static_cast<std::size_t>(x)].parent) corners.push_back(x);
     std::reverse(corners.begin(), corners.end());
     return true;
   }
@@ -385,6 +384,7 @@ double EuclideanShortestPaths::build_seconds() const { return impl_->build_secon
 std::size_t EuclideanShortestPaths::memory_bytes() const {
   const Impl& g = *impl_;
   return g.triangulation.memory_bytes() + (g.wedge_offset.capacity() + g.begin.capacity()) * sizeof(std::size_t) +
+         g.node_point.capacity() * sizeof(IntPoint) +
          (g.node_at.capacity() + g.node_vertex.capacity() + g.adjacent.capacity() + g.table_parent.capacity() +
           g.point_corners.capacity() + g.point_begin.capacity()) * sizeof(int) +
          (g.weight.capacity() + g.table_distance.capacity()) * sizeof(double);
