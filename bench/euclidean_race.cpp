@@ -105,7 +105,7 @@ int main(int argc, char** argv) {
   const std::string data = POLYPLAN_BENCHMARK_DIR, meshes = POLYPLAN_PEERS_DIR "/polyanya/meshes";
   const std::string runner = polyanya_runner();
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  std::printf("| map | queries | Polyanya µs | polyplan µs | ratio | preprocess s | index MB | table | %u-thread speed-up | "
+  std::printf("| map | queries | Polyanya µs | polyplan µs | ratio | preprocess s | index MB | corner distances | %u-thread speed-up | "
               "lengths equal | shorter (pinch) | longer |\n",
               cores);
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
@@ -147,7 +147,7 @@ int main(int argc, char** argv) {
     }
     std::printf("| %s | %zu | %.1f | %.1f | %.2f | %.2f | %.1f | %s | %.2f | %zu | %zu | %zu |\n", name.c_str(), queries.size(),
                 peer.mean_us, best_mean, best_mean / peer.mean_us, preprocess, static_cast<double>(paths.memory_bytes()) / (1 << 20),
-                paths.has_table() ? "yes" : "no", one / all, equal, shorter, longer);
+                paths.has_table() ? "table" : paths.has_labels() ? "hub labels" : "A*", one / all, equal, shorter, longer);
     std::fflush(stdout);
   }
 }

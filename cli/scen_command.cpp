@@ -82,9 +82,9 @@ int run_scen(const ScenOptions& options) {
   std::vector<std::optional<double>> reference;
   if (!options.reference.empty()) reference = read_reference_lengths(options.reference, scenarios.size());
   const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  std::fprintf(stderr, "building the corner graph and distance table of %s (%dx%d)...\n", options.map.c_str(), map.width,
-               map.height);
-  const EuclideanShortestPaths paths(map, {options.table_mb << 20, threads});
+  std::fprintf(stderr, "building the corner graph and its distance table or hub labels for %s (%dx%d)...\n", options.map.c_str(),
+               map.width, map.height);
+  const EuclideanShortestPaths paths(map, {.table_bytes = options.table_mb << 20, .label_bytes = options.table_mb << 20, .threads = threads});
   const double preprocess = seconds_since(started);
 
   const auto batch = Clock::now();
@@ -127,6 +127,8 @@ int run_scen(const ScenOptions& options) {
                          {"index_mb", static_cast<double>(paths.memory_bytes()) / (1 << 20)},
                          {"peak_memory_mb", peak_memory_mb()},
                          {"distance_table", paths.has_table()},
+                         {"hub_labels", paths.has_labels()},
+                         {"label_entries", paths.label_entries()},
                          {"roadmap_vertices", paths.corner_count()},
                          {"roadmap_edges", paths.edge_count()}};
   if (!options.reference.empty()) {
@@ -158,8 +160,9 @@ void add_scen_command(CLI::App& app, Action& run) {
   command->add_option("--threads", options->threads, "Threads answering the queries, sharing one preprocessing (default: every core)")
       ->check(CLI::Range(1u, 256u));
   command->add_option("--table-mb", options->table_mb,
-                      "Largest corner-to-corner distance table to build, in MB (larger maps search the corner graph)")
+                      "Largest corner-to-corner distance table, and hub labels, to build, in MB (else queries search the corner graph)")
       ->check(CLI::Range(std::size_t{0}, std::size_t{1} << 20));
+  // (the same budget bounds the hub labels built for maps whose table does not fit)
   command->callback([options, &run] { run = [options] { return run_scen(*options); }; });
 }
 

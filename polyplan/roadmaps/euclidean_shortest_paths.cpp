@@ -5,6 +5,7 @@
 #include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
 #include <polyplan/roadmaps/detail/integer_triangulation.hpp>
 #include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/search/hub_labels.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,13 @@ using detail::IntPoint;
 using PointLocation = IntegerTriangulation::Location;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Hub labels are built only for corner graphs of at most this mean degree. Their size follows how
+// many shortest paths cross: mazes and rooms (3.7 and about 10 edges per corner on the MovingAI
+// maps) get 50-140 entries per corner in seconds, while a field of small obstacles (random512:
+// 46 edges per corner) had not fitted 1 GB after three minutes — and there the A*, whose
+// straight-line heuristic is nearly exact among small obstacles, is fast anyway.
+constexpr std::size_t kLabelDegreeLimit = 16;
 
 double distance(const IntPoint& a, const IntPoint& b) {
   const auto dx = static_cast<double>(a.x - b.x), dy = static_cast<double>(a.y - b.y);
@@ -61,6 +69,12 @@ struct EuclideanShortestPaths::Scratch::Impl {
     std::uint32_t stamp = 0, goal_stamp = 0, closed = 0;
   };
   std::vector<Record> records;
+  // Hub labels: the best start-to-hub cost per hub rank, through which start corner.
+  std::vector<double> hub_cost;
+  std::vector<int> hub_via;
+  std::vector<std::uint32_t> hub_stamp;
+  std::uint32_t hub_generation = 0;
+  std::vector<int> to_hub;
   std::uint32_t generation = 0;
   std::vector<std::pair<double, int>> heap;
 };
@@ -91,7 +105,9 @@ struct EuclideanShortestPaths::Impl {
   // The table (n x n, row s = Dijkstra from s): distance and the predecessor on the path from s.
   std::vector<double> table_distance;
   std::vector<int> table_parent;
-  // With a table, the corners each integer point of the triangulated box reaches (reach()), read
+  // Without a table, when they fit: hub labels of the corner graph.
+  std::optional<HubLabels> labels;
+  // With a table or labels, the corners each integer point of the triangulated box reaches (reach()), read
   // instead of walked: for point (x, y) they are point_corners[point_begin[i] .. point_begin[i+1])
   // with i = (y - box_low.y) * box_width + (x - box_low.x).
   IntPoint box_low, box_high;
@@ -285,6 +301,53 @@ struct EuclideanShortestPaths::Impl {
     return true;
   }
 
+  // Through the hub labels: the best start-to-hub cost of every hub the start's corners know,
+  // then every hub the goal's corners share with them.
+  bool best_through_labels(Scratch::Impl& s, std::vector<int>& corners) const {
+    const std::size_t n = nodes();
+    if (s.hub_cost.size() != n) {
+      s.hub_cost.assign(n, 0);
+      s.hub_via.assign(n, -1);
+      s.hub_stamp.assign(n, 0);
+      s.hub_generation = 0;
+    }
+    if (++s.hub_generation == 0) {
+      std::fill(s.hub_stamp.begin(), s.hub_stamp.end(), 0);
+      s.hub_generation = 1;
+    }
+    const std::uint32_t now = s.hub_generation;
+    for (const Reached& a : s.from_start)
+      for (const HubLabels::Entry* e = labels->label_begin(a.node); e != labels->label_end(a.node); ++e) {
+        const auto h = static_cast<std::size_t>(e->hub);
+        const double cost = a.distance + e->distance;
+        if (s.hub_stamp[h] != now || cost < s.hub_cost[h]) {
+          s.hub_stamp[h] = now;
+          s.hub_cost[h] = cost;
+          s.hub_via[h] = a.node;
+        }
+      }
+    double best = kInfinity;
+    int best_hub = -1, best_b = -1;
+    for (const Reached& b : s.from_goal)
+      for (const HubLabels::Entry* e = labels->label_begin(b.node); e != labels->label_end(b.node); ++e) {
+        const auto h = static_cast<std::size_t>(e->hub);
+        if (s.hub_stamp[h] != now) continue;
+        const double cost = s.hub_cost[h] + e->distance + b.distance;
+        if (cost < best) {
+          best = cost;
+          best_hub = e->hub;
+          best_b = b.node;
+        }
+      }
+    if (best_hub < 0) return false;
+    corners.clear();
+    labels->path_to_hub(s.hub_via[static_cast<std::size_t>(best_hub)], best_hub, corners);  // start's corner .. hub
+    s.to_hub.clear();
+    labels->path_to_hub(best_b, best_hub, s.to_hub);  // goal's corner .. hub
+    corners.insert(corners.end(), s.to_hub.rbegin() + 1, s.to_hub.rend());
+    return true;
+  }
+
   // Without a table: A* over the corners from every corner the start reaches, ending when the
   // best start-to-goal cost found is no more than the smallest key left.
   bool best_by_search(const IntPoint& goal, Scratch::Impl& s, std::vector<int>& corners) const {
@@ -370,6 +433,9 @@ void EuclideanShortestPaths::build(EuclideanShortestPathsOptions options) {
   if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n) {
     impl_->build_table(threads);
     impl_->build_point_table(threads);
+  } else if (n > 0 && impl_->adjacent.size() <= kLabelDegreeLimit * n) {
+    impl_->labels = HubLabels::build(impl_->begin, impl_->adjacent, impl_->weight, options.label_bytes);
+    if (impl_->labels) impl_->build_point_table(threads);
   }
 }
 
@@ -380,6 +446,8 @@ EuclideanShortestPaths& EuclideanShortestPaths::operator=(EuclideanShortestPaths
 std::size_t EuclideanShortestPaths::corner_count() const { return impl_->nodes(); }
 std::size_t EuclideanShortestPaths::edge_count() const { return impl_->adjacent.size() / 2; }
 bool EuclideanShortestPaths::has_table() const { return !impl_->table_distance.empty(); }
+bool EuclideanShortestPaths::has_labels() const { return impl_->labels.has_value(); }
+std::size_t EuclideanShortestPaths::label_entries() const { return impl_->labels ? impl_->labels->entry_count() : 0; }
 double EuclideanShortestPaths::build_seconds() const { return impl_->build_seconds; }
 std::size_t EuclideanShortestPaths::memory_bytes() const {
   const Impl& g = *impl_;
@@ -387,7 +455,7 @@ std::size_t EuclideanShortestPaths::memory_bytes() const {
          g.node_point.capacity() * sizeof(IntPoint) +
          (g.node_at.capacity() + g.node_vertex.capacity() + g.adjacent.capacity() + g.table_parent.capacity() +
           g.point_corners.capacity() + g.point_begin.capacity()) * sizeof(int) +
-         (g.weight.capacity() + g.table_distance.capacity()) * sizeof(double);
+         (g.weight.capacity() + g.table_distance.capacity()) * sizeof(double) + (g.labels ? g.labels->memory_bytes() : 0);
 }
 
 EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start, const IntegerPathPoint& goal, Scratch& scratch) const {
@@ -427,7 +495,9 @@ EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start,
   if (!g.triangulation.segment_free(from, start_at, to)) {  // start does not see goal: through corners
     g.reach(from, start_at, s.from_start, s);
     g.reach(to, goal_at, s.from_goal, s);
-    const bool found = has_table() ? g.best_through_table(to, s, s.corners) : g.best_by_search(to, s, s.corners);
+    const bool found = has_table()    ? g.best_through_table(to, s, s.corners)
+                       : g.labels ? g.best_through_labels(s, s.corners)
+                                  : g.best_by_search(to, s, s.corners);
     if (!found) {  // cannot happen: one component means one path through its corners
       answer.why_not = "no path through the corners between start and goal";
       return answer;

@@ -3,9 +3,11 @@
 // points (MovingAI maps: polyplan scen). The reduced visibility graph of visibility_graph.hpp —
 // corners a taut path bends around, bitangent edges — is built in 64-bit integer arithmetic
 // (detail/integer_triangulation.hpp: exact), and then, when it fits the memory budget, every
-// corner-to-corner distance with the first step of each shortest path (one Dijkstra per corner).
-// A query is then: locate start and goal, the segment if they see each other, else the corners
-// each sees and the best pair through the table (or, without a table, an A* over the corners);
+// corner-to-corner distance with the first step of each shortest path (one Dijkstra per corner),
+// and each integer point's corners; when the table does not fit, hub labels of the corner graph
+// (search/hub_labels.hpp) if they fit, else nothing more. A query is then: locate start and goal,
+// the segment if they see each other, else the corners each sees and the best pair through the
+// table, the best hub through the labels, or an A* over the corners;
 // the path is checked exactly by the integer segment walk before it is returned.
 //
 // Queries are const and take their scratch space from the caller: threads share one instance,
@@ -24,6 +26,9 @@ struct GridMap;
 struct EuclideanShortestPathsOptions {
   // The corner-to-corner table is built when it needs at most this many bytes (12 per pair).
   std::size_t table_bytes = std::size_t{1} << 30;
+  // Else hub labels of the corner graph, when they take at most this many bytes (16 per entry);
+  // else queries search the corner graph.
+  std::size_t label_bytes = std::size_t{1} << 30;
   // Threads that build the graph and the table (0: every core).
   unsigned threads = 0;
 };
@@ -71,6 +76,8 @@ class EuclideanShortestPaths {
   std::size_t corner_count() const;
   std::size_t edge_count() const;
   bool has_table() const;
+  bool has_labels() const;
+  std::size_t label_entries() const;
   // Bytes of the triangulation, the graph and the table.
   std::size_t memory_bytes() const;
   double build_seconds() const;

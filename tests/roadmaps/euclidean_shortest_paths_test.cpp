@@ -38,8 +38,9 @@ TEST(EuclideanShortestPaths, ShippedMapsMatchTheReferenceOnEveryQuery) {
     const GridMap map = read_movingai_map(dir + "/maps/" + name + ".map");
     const auto scenarios = read_scenarios(dir + "/scenarios/" + name + ".map.scen");
     const auto reference = read_reference_lengths(dir + "/reference/" + name + ".csv", scenarios.size());
-    const EuclideanShortestPaths paths(map);
+    const EuclideanShortestPaths paths(map), through_labels(map, {.table_bytes = 0});
     EXPECT_TRUE(paths.has_table());
+    EXPECT_TRUE(through_labels.has_labels());
     EuclideanShortestPaths::Scratch scratch;
     std::size_t compared = 0;
     for (std::size_t i = 0; i < scenarios.size(); ++i) {
@@ -47,7 +48,11 @@ TEST(EuclideanShortestPaths, ShippedMapsMatchTheReferenceOnEveryQuery) {
       const ScenarioQuery& q = scenarios[i];
       const EuclideanPathAnswer answer = paths.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
       ASSERT_EQ(answer.found, *reference[i] >= 0) << name << " query " << i << ": " << answer.why_not;
-      if (answer.found) EXPECT_NEAR(answer.length, *reference[i], 1e-9 * std::max(1.0, *reference[i])) << name << " query " << i;
+      if (answer.found) {
+        EXPECT_NEAR(answer.length, *reference[i], 1e-9 * std::max(1.0, *reference[i])) << name << " query " << i;
+        const EuclideanPathAnswer labelled = through_labels.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
+        EXPECT_NEAR(labelled.length, *reference[i], 1e-9 * std::max(1.0, *reference[i])) << name << " query " << i << " (labels)";
+      }
       ++compared;
     }
     EXPECT_GE(compared, 150u) << name;
@@ -55,27 +60,30 @@ TEST(EuclideanShortestPaths, ShippedMapsMatchTheReferenceOnEveryQuery) {
 }
 
 // The grid construction (straight from the cells) and the exact one (the C-space's arrangement,
-// converted) make the same graph; every answer equals the exact-kernel visibility graph's, with
-// and without the distance table, and every path passes the exact check.
+// converted) make the same graph; every answer equals the exact-kernel visibility graph's, through
+// the distance table, the hub labels or the A*, and every path passes the exact check.
 TEST(EuclideanShortestPaths, RandomGridsAgreeWithTheExactVisibilityGraph) {
   std::mt19937 random(7);
   std::size_t found = 0, not_found = 0, pinch_points = 0;
   for (int trial = 0; trial < 12; ++trial) {
     const GridMap map = random_grid(random, 9 + trial % 4, 7 + trial % 3, 0.3);
     const CSpace cspace(world_from_grid(map));
-    const EuclideanShortestPaths from_cells(map), from_arrangement(cspace), without_table(map, {0, 1});
+    const EuclideanShortestPaths from_cells(map), from_arrangement(cspace), labelled(map, {.table_bytes = 0}),
+        searching(map, {.table_bytes = 0, .label_bytes = 0});
     ASSERT_EQ(from_cells.corner_count(), from_arrangement.corner_count()) << "trial " << trial;
     ASSERT_EQ(from_cells.edge_count(), from_arrangement.edge_count()) << "trial " << trial;
     EXPECT_TRUE(from_cells.has_table());
-    EXPECT_FALSE(without_table.has_table());
+    EXPECT_TRUE(labelled.has_labels());
+    EXPECT_FALSE(searching.has_table() || searching.has_labels());
     VisibilityGraph graph(cspace);
-    EuclideanShortestPaths::Scratch a, b, c;
+    EuclideanShortestPaths::Scratch a, b, c, d;
     std::uniform_int_distribution<int> x(0, map.width), y(0, map.height);
     for (int k = 0; k < 60; ++k) {
       const IntegerPathPoint start{x(random), y(random)}, goal{x(random), y(random)};
       const auto expected = graph.plan(Query{exact({start})[0], exact({goal})[0], "q"});
       for (const EuclideanPathAnswer& answer :
-           {from_cells.query(start, goal, a), from_arrangement.query(start, goal, b), without_table.query(start, goal, c)}) {
+           {from_cells.query(start, goal, a), from_arrangement.query(start, goal, b), labelled.query(start, goal, c),
+            searching.query(start, goal, d)}) {
         ASSERT_EQ(answer.found, expected.found) << "trial " << trial << " query " << k << ": " << answer.why_not << " / " << expected.why_not;
         if (!answer.found) {
           EXPECT_FALSE(answer.why_not.empty());
@@ -125,7 +133,7 @@ TEST(EuclideanShortestPaths, APinchPointIsNoPassageAndBlockedEndsSaySo) {
 TEST(EuclideanShortestPaths, ThreadsShareOnePreprocessingAndGetTheSameAnswers) {
   std::mt19937 random(11);
   const GridMap map = random_grid(random, 40, 30, 0.2);
-  const EuclideanShortestPaths one(map, {std::size_t{1} << 30, 1}), two(map, {std::size_t{1} << 30, 2});
+  const EuclideanShortestPaths one(map, {.threads = 1}), two(map, {.threads = 2});
   EXPECT_EQ(one.edge_count(), two.edge_count());
   std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>> queries;
   std::uniform_int_distribution<int> x(0, map.width), y(0, map.height);
