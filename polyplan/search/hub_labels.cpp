@@ -10,6 +10,58 @@ namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
+// The order in which vertices become hubs: those on the most shortest paths first, estimated from
+// the shortest-path trees of a few roots spread over the graph (a vertex scores the size of its
+// subtree in each: the number of the tree's paths through it), ties by degree. Mazes, where every
+// corner has the same few neighbours, get labels a fraction of the size degree order gives.
+std::vector<int> hub_order(const std::vector<std::size_t>& begin, const std::vector<int>& adjacent,
+                           const std::vector<double>& weight) {
+  const std::size_t n = begin.size() - 1;
+  std::vector<double> score(n, 0), dist(n);
+  std::vector<int> parent(n), settled;
+  std::vector<std::pair<double, int>> heap;
+  const std::size_t roots = std::min<std::size_t>(n, 32);
+  for (std::size_t k = 0; k < roots; ++k) {
+    const int root = static_cast<int>(k * n / roots);
+    std::fill(dist.begin(), dist.end(), kInfinity);
+    settled.clear();
+    dist[static_cast<std::size_t>(root)] = 0;
+    parent[static_cast<std::size_t>(root)] = -1;
+    heap.assign(1, {0.0, root});
+    while (!heap.empty()) {
+      std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+      const auto [d, u] = heap.back();
+      heap.pop_back();
+      if (d > dist[static_cast<std::size_t>(u)]) continue;
+      settled.push_back(u);
+      for (std::size_t e = begin[static_cast<std::size_t>(u)]; e < begin[static_cast<std::size_t>(u) + 1]; ++e) {
+        const auto v = static_cast<std::size_t>(adjacent[e]);
+        if (d + weight[e] < dist[v]) {
+          dist[v] = d + weight[e];
+          parent[v] = u;
+          heap.emplace_back(dist[v], static_cast<int>(v));
+          std::push_heap(heap.begin(), heap.end(), std::greater<>());
+        }
+      }
+    }
+    std::vector<double> subtree(n, 0);
+    for (auto it = settled.rbegin(); it != settled.rend(); ++it) {  // leaves before their parents
+      const auto v = static_cast<std::size_t>(*it);
+      subtree[v] += 1;
+      score[v] += subtree[v];
+      if (parent[v] >= 0) subtree[static_cast<std::size_t>(parent[v])] += subtree[v];
+    }
+  }
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  auto degree = [&](int v) { return begin[static_cast<std::size_t>(v) + 1] - begin[static_cast<std::size_t>(v)]; };
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    const double sa = score[static_cast<std::size_t>(a)], sb = score[static_cast<std::size_t>(b)];
+    return degree(a) != degree(b) ? degree(a) > degree(b) : sa > sb;
+  });
+  return order;
+}
+
 }  // namespace
 
 std::optional<HubLabels> HubLabels::build(const std::vector<std::size_t>& begin, const std::vector<int>& adjacent,
@@ -18,11 +70,7 @@ std::optional<HubLabels> HubLabels::build(const std::vector<std::size_t>& begin,
   HubLabels labels;
   labels.order_.resize(n);
   std::iota(labels.order_.begin(), labels.order_.end(), 0);
-  // Vertices of high degree first: they lie on many shortest paths, so their labels prune most.
-  std::stable_sort(labels.order_.begin(), labels.order_.end(), [&](int a, int b) {
-    return begin[static_cast<std::size_t>(a) + 1] - begin[static_cast<std::size_t>(a)] >
-           begin[static_cast<std::size_t>(b) + 1] - begin[static_cast<std::size_t>(b)];
-  });
+  labels.order_ = hub_order(begin, adjacent, weight);
   const std::size_t max_entries = max_bytes / sizeof(Entry);
   std::vector<std::vector<Entry>> building(n);
   std::size_t entries = 0;
