@@ -212,8 +212,8 @@ struct EuclideanShortestPaths::Impl {
     });
   }
 
-  // Every integer point's reach() (build_table's companion, for the same maps: its size is the
-  // box's area times the corners each point sees).
+  // Every integer point's reach(): the box's area times the corners each point sees (random512:
+  // 87 MB in 3.6 s, which make its queries 10% faster; the small maps' queries 3 times).
   void build_point_table(unsigned threads) {
     box_low = box_high = triangulation.point(0);
     for (std::size_t v = 0; v < triangulation.vertex_count(); ++v) {
@@ -430,13 +430,11 @@ void EuclideanShortestPaths::build(EuclideanShortestPathsOptions options) {
   const unsigned threads = thread_count(options.threads);
   impl_->build_graph(threads);
   const std::size_t n = impl_->nodes();
-  if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n) {
+  if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n)
     impl_->build_table(threads);
-    impl_->build_point_table(threads);
-  } else if (n > 0 && impl_->adjacent.size() <= kLabelDegreeLimit * n) {
+  else if (n > 0 && impl_->adjacent.size() <= kLabelDegreeLimit * n)
     impl_->labels = HubLabels::build(impl_->begin, impl_->adjacent, impl_->weight, options.label_bytes);
-    if (impl_->labels) impl_->build_point_table(threads);
-  }
+  if (n > 0) impl_->build_point_table(threads);
 }
 
 EuclideanShortestPaths::~EuclideanShortestPaths() = default;

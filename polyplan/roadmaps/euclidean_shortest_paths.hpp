@@ -3,9 +3,9 @@
 // points (MovingAI maps: polyplan scen). The reduced visibility graph of visibility_graph.hpp —
 // corners a taut path bends around, bitangent edges — is built in 64-bit integer arithmetic
 // (detail/integer_triangulation.hpp: exact), and then, when it fits the memory budget, every
-// corner-to-corner distance with the first step of each shortest path (one Dijkstra per corner),
-// and each integer point's corners; when the table does not fit, hub labels of the corner graph
-// (search/hub_labels.hpp) if they fit, else nothing more. A query is then: locate start and goal,
+// corner-to-corner distance with the first step of each shortest path (one Dijkstra per corner);
+// when the table does not fit, hub labels of the corner graph (search/hub_labels.hpp) if they fit,
+// else nothing more; and the corners each integer point of the map sees. A query is then: locate start and goal,
 // the segment if they see each other, else the corners each sees and the best pair through the
 // table, the best hub through the labels, or an A* over the corners;
 // the path is checked exactly by the integer segment walk before it is returned.
