@@ -10,8 +10,13 @@
 // `scen --threads`). Lengths are compared query by query: equal within 1e-9 relative, or shorter
 // where Polyanya, at a pinch point, tries one gap only (its README); never longer.
 //
+// With --tradeoff it measures instead what each index costs and buys on every map (the issue's
+// "how close to Euclidean Hub Labelling" table): no index (an A* over the corners), hub labels of
+// the corner graph, and the full corner-to-corner table, each within 1 GB: build seconds (the
+// graph and the per-point corners included), index MB and mean µs per query on one thread.
+//
 // A plain program, not Google Benchmark: it drives the peer's own runner and times whole files.
-// Usage: euclidean_race [--maps arena,den312d,...] [--runs 2]
+// Usage: euclidean_race [--maps arena,den312d,...] [--runs 2] [--tradeoff]
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/movingai_scenario.hpp>
 #include <polyplan/roadmaps/euclidean_shortest_paths.hpp>
@@ -92,6 +97,52 @@ double batch_seconds(const EuclideanShortestPaths& paths, const std::vector<Scen
   return clock.seconds();
 }
 
+// Mean µs per query on one thread, the file once in order (each query timed alone, as Polyanya's
+// runner times its own); the answers land in `answers` when given.
+double mean_query_us(const EuclideanShortestPaths& paths, const std::vector<ScenarioQuery>& queries,
+                     std::vector<EuclideanPathAnswer>* answers = nullptr) {
+  EuclideanShortestPaths::Scratch scratch;
+  double total = 0;
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const ScenarioQuery& q = queries[i];
+    const Stopwatch clock;
+    EuclideanPathAnswer answer = paths.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
+    total += clock.seconds() * 1e6;
+    if (answers) (*answers)[i] = std::move(answer);
+  }
+  return total / static_cast<double>(queries.size());
+}
+
+void tradeoff(const std::vector<std::string>& maps, const std::string& data) {
+  constexpr std::size_t gigabyte = std::size_t{1} << 30;
+  struct Index {
+    const char* name;
+    EuclideanShortestPathsOptions options;
+  };
+  const Index indexes[] = {{"A*", {.table_bytes = 0, .label_bytes = 0}},
+                           {"hub labels", {.table_bytes = 0, .label_bytes = gigabyte}},
+                           {"table", {.table_bytes = gigabyte, .label_bytes = 0}}};
+  std::printf("| map | corners | index | build s | index MB | µs per query |\n|---|---|---|---|---|---|\n");
+  for (const std::string& name : maps) {
+    const GridMap map = read_movingai_map(data + "/maps/" + name + ".map");
+    const auto queries = read_scenarios(data + "/scenarios/" + name + ".map.scen");
+    for (const Index& index : indexes) {
+      const Stopwatch building;
+      const EuclideanShortestPaths paths(map, index.options);
+      const double build = building.seconds();
+      const bool built = std::string(index.name) == "A*" || paths.has_table() || paths.has_labels();
+      if (!built) {
+        std::printf("| %s | %zu | %s | — | — | not built (%s) |\n", name.c_str(), paths.corner_count(), index.name,
+                    std::string(index.name) == "table" ? "over 1 GB" : "mean degree over 16");
+        continue;
+      }
+      std::printf("| %s | %zu | %s | %.2f | %.1f | %.1f |\n", name.c_str(), paths.corner_count(), index.name, build,
+                  static_cast<double>(paths.memory_bytes()) / (1 << 20), mean_query_us(paths, queries));
+      std::fflush(stdout);
+    }
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -100,9 +151,15 @@ int main(int argc, char** argv) {
   int runs = 2;
   app.add_option("--maps", maps, "Maps of ../shared/benchmarks/movingai")->delimiter(',');
   app.add_option("--runs", runs, "Runs of each file; the minimum mean counts")->check(CLI::Range(1, 100));
+  bool measure_tradeoff = false;
+  app.add_flag("--tradeoff", measure_tradeoff, "Measure each index (none, hub labels, table) instead of racing Polyanya");
   CLI11_PARSE(app, argc, argv);
 
   const std::string data = POLYPLAN_BENCHMARK_DIR, meshes = POLYPLAN_PEERS_DIR "/polyanya/meshes";
+  if (measure_tradeoff) {
+    tradeoff(maps, data);
+    return 0;
+  }
   const std::string runner = polyanya_runner();
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   std::printf("| map | queries | Polyanya µs | polyplan µs | ratio | preprocess s | index MB | corner distances | %u-thread speed-up | "
@@ -122,20 +179,9 @@ int main(int argc, char** argv) {
     const Stopwatch building;
     const EuclideanShortestPaths paths(map);
     const double preprocess = building.seconds();
-    EuclideanShortestPaths::Scratch scratch;
     std::vector<EuclideanPathAnswer> answers(queries.size());
-    double best_mean = 0;
-    for (int r = 0; r < runs; ++r) {
-      double total = 0;
-      for (std::size_t i = 0; i < queries.size(); ++i) {
-        const ScenarioQuery& q = queries[i];
-        const Stopwatch clock;
-        answers[i] = paths.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
-        total += clock.seconds() * 1e6;
-      }
-      const double mean = total / static_cast<double>(queries.size());
-      if (r == 0 || mean < best_mean) best_mean = mean;
-    }
+    double best_mean = mean_query_us(paths, queries, &answers);  // the first run, right after building
+    for (int r = 1; r < runs; ++r) best_mean = std::min(best_mean, mean_query_us(paths, queries));
     const double one = batch_seconds(paths, queries, 1), all = batch_seconds(paths, queries, cores);
 
     std::size_t equal = 0, shorter = 0, longer = 0;

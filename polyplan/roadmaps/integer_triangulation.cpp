@@ -402,7 +402,8 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntPoint& a, cons
     }
     const Triangle& t = triangles_[static_cast<std::size_t>(face)];
     if (!t.free) return {Blocked::enters};
-    if (in_closed_triangle(face, b)) return {};
+    // The segment runs on from where it entered (or from a, inside) to a vertex on its line or
+    // across the exit edge; b is in the closed triangle when it comes no later than that.
     const int side[3] = {orientation(a, b, at_point(t.vertex[0])), orientation(a, b, at_point(t.vertex[1])),
                          orientation(a, b, at_point(t.vertex[2]))};
     for (int i = 0; i < 3 && at < 0; ++i) {
@@ -410,6 +411,7 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntPoint& a, cons
       if (v != came_from && side[i] == 0 && ahead(at_point(v))) at = v;
     }
     if (at >= 0) {
+      if (dot(at_point(at) - a, direction) >= dot(direction, direction)) return {};  // b before (or at) the vertex
       arrived = true;
       continue;
     }
@@ -417,6 +419,7 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntPoint& a, cons
     for (int i = 0; i < 3; ++i)
       if (side[ccw(i)] < 0 && side[cw(i)] > 0) exit_edge = i;
     if (exit_edge < 0) return {Blocked::lost};  // cannot happen
+    if (orientation(at_point(t.vertex[ccw(exit_edge)]), at_point(t.vertex[cw(exit_edge)]), b) >= 0) return {};  // b before the exit
     if (t.is_constrained(exit_edge)) return {Blocked::crosses};
     face = t.neighbour[exit_edge];
     if (face < 0) return {Blocked::enters};

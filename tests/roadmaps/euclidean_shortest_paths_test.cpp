@@ -6,7 +6,7 @@
 #include <polyplan/io/movingai_scenario.hpp>
 #include <polyplan/roadmaps/euclidean_shortest_paths.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
-#include "world_fixtures.hpp"
+#include "movingai_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,16 +15,6 @@
 
 namespace polyplan::test {
 namespace {
-
-GridMap random_grid(std::mt19937& random, int width, int height, double blocked) {
-  GridMap map;
-  map.source = "random grid";
-  map.width = width;
-  map.height = height;
-  std::bernoulli_distribution coin(blocked);
-  for (int i = 0; i < width * height; ++i) map.blocked.push_back(coin(random));
-  return map;
-}
 
 std::vector<ExactPoint> exact(const std::vector<IntegerPathPoint>& path) {
   std::vector<ExactPoint> points;

@@ -10,9 +10,22 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <string>
 
 namespace polyplan::test {
+
+// A width x height map whose cells are blocked with the given probability (at 0.3 it has pinch
+// points: blocked cells that touch only at a corner).
+inline GridMap random_grid(std::mt19937& random, int width, int height, double blocked) {
+  GridMap map;
+  map.source = "random grid";
+  map.width = width;
+  map.height = height;
+  std::bernoulli_distribution coin(blocked);
+  for (int i = 0; i < width * height; ++i) map.blocked.push_back(coin(random));
+  return map;
+}
 
 // Every `stride`-th query of the map `name` with a reference length; at least `at_least` of them.
 template <class Planner>
