@@ -31,6 +31,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // straight-line heuristic is nearly exact among small obstacles, is fast anyway.
 constexpr std::size_t kLabelDegreeLimit = 16;
 
+// The per-point corners are kept for boxes of at most this many integer points (a 4096 x 4096 map).
+constexpr std::int64_t kPointTableLimit = std::int64_t{1} << 24;
+
 double distance(const IntPoint& a, const IntPoint& b) {
   const auto dx = static_cast<double>(a.x - b.x), dy = static_cast<double>(a.y - b.y);
   return std::sqrt(dx * dx + dy * dy);
@@ -214,16 +217,21 @@ struct EuclideanShortestPaths::Impl {
   }
 
   // Every integer point's reach(): the box's area times the corners each point sees (random512:
-  // 87 MB in 3.6 s, which make its queries 10% faster; the small maps' queries 3 times).
-  void build_point_table(unsigned threads) {
-    box_low = box_high = triangulation.point(0);
+  // 87 MB in 3.6 s, which make its queries 10% faster; the small maps' queries 3 times). Only
+  // for boxes of at most kPointTableLimit points, and dropped when the corners take more than
+  // `max_bytes`: a world of large integer coordinates walks instead.
+  void build_point_table(unsigned threads, std::size_t max_bytes) {
+    IntPoint low = triangulation.point(0), high = low;
     for (std::size_t v = 0; v < triangulation.vertex_count(); ++v) {
       const IntPoint& p = triangulation.point(v);
-      box_low = {std::min(box_low.x, p.x), std::min(box_low.y, p.y)};
-      box_high = {std::max(box_high.x, p.x), std::max(box_high.y, p.y)};
+      low = {std::min(low.x, p.x), std::min(low.y, p.y)};
+      high = {std::max(high.x, p.x), std::max(high.y, p.y)};
     }
-    box_width = box_high.x - box_low.x + 1;
-    const std::int64_t rows = box_high.y - box_low.y + 1;
+    const std::int64_t width = high.x - low.x + 1, rows = high.y - low.y + 1;
+    if (width > kPointTableLimit / rows) return;
+    box_low = low;
+    box_high = high;
+    box_width = width;
     std::vector<std::vector<int>> row_corners(static_cast<std::size_t>(rows));
     std::vector<std::vector<std::uint32_t>> row_counts(static_cast<std::size_t>(rows));
     std::vector<Scratch::Impl> scratch(threads);
@@ -236,6 +244,9 @@ struct EuclideanShortestPaths::Impl {
         row_counts[r].push_back(static_cast<std::uint32_t>(reached.size()));
       }
     });
+    std::size_t total = 0;
+    for (const auto& corners : row_corners) total += corners.size();
+    if (total > max_bytes / sizeof(int) || total >= std::numeric_limits<std::uint32_t>::max()) return;
     point_begin.assign(1, 0);
     for (std::size_t r = 0; r < row_corners.size(); ++r) {
       for (std::uint32_t count : row_counts[r]) point_begin.push_back(point_begin.back() + count);
@@ -435,7 +446,7 @@ void EuclideanShortestPaths::build(EuclideanShortestPathsOptions options) {
     impl_->build_table(threads);
   else if (n > 0 && impl_->adjacent.size() <= kLabelDegreeLimit * n)
     impl_->labels = HubLabels::build(impl_->begin, impl_->adjacent, impl_->weight, options.label_bytes);
-  if (n > 0) impl_->build_point_table(threads);
+  if (n > 0) impl_->build_point_table(threads, options.table_bytes);
 }
 
 EuclideanShortestPaths::~EuclideanShortestPaths() = default;

@@ -24,7 +24,8 @@ namespace polyplan {
 struct GridMap;
 
 struct EuclideanShortestPathsOptions {
-  // The corner-to-corner table is built when it needs at most this many bytes (12 per pair).
+  // The corner-to-corner table is built when it needs at most this many bytes (12 per pair); the
+  // same bound caps the table of each integer point's corners.
   std::size_t table_bytes = std::size_t{1} << 30;
   // Else hub labels of the corner graph, when they take at most this many bytes (16 per entry);
   // else queries search the corner graph.

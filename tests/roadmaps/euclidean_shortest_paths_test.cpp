@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <thread>
 
@@ -143,6 +144,20 @@ TEST(EuclideanShortestPaths, ThreadsShareOnePreprocessingAndGetTheSameAnswers) {
     EXPECT_EQ(alone[i].length, shared[i].length);
     EXPECT_EQ(alone[i].path, shared[i].path);
   }
+}
+
+// A world of large integer coordinates has too many integer points to table each one's corners:
+// its queries walk instead, in little memory.
+TEST(EuclideanShortestPaths, LargeIntegerCoordinatesWalkInsteadOfTablingEveryPoint) {
+  const CSpace cspace(world_from(R"({"obstacles": [[[1000000, 1000000], [3000000, 1000000], [3000000, 3000000], [1000000, 3000000]]],
+                                    "bounds": [0, 0, 4000000, 4000000]})"));
+  const EuclideanShortestPaths paths(cspace);
+  EXPECT_LT(paths.memory_bytes(), std::size_t{1} << 20);
+  EuclideanShortestPaths::Scratch scratch;
+  const EuclideanPathAnswer around = paths.query({0, 2000000}, {4000000, 2000000}, scratch);
+  ASSERT_TRUE(around.found) << around.why_not;
+  EXPECT_NEAR(around.length, 2e6 * (1 + std::sqrt(2.0)), 1e-6);
+  EXPECT_EQ(around.path.size(), 4u);
 }
 
 TEST(EuclideanShortestPaths, AWorldWithFractionalCornersIsRefusedByName) {
