@@ -25,7 +25,6 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -81,35 +80,28 @@ PeerRun run_polyanya(const std::string& runner, const std::string& mesh, const s
   return run;
 }
 
-// Seconds for the whole file on `threads` threads sharing `paths` (each its own scratch).
-double batch_seconds(const EuclideanShortestPaths& paths, const std::vector<ScenarioQuery>& queries, unsigned threads) {
+using Queries = std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>>;
+
+Queries asked(const std::vector<ScenarioQuery>& scenarios) {
+  Queries queries;
+  for (const ScenarioQuery& q : scenarios) queries.push_back({{q.start_x, q.start_y}, {q.goal_x, q.goal_y}});
+  return queries;
+}
+
+// Seconds for the whole file on `threads` threads sharing `paths`.
+double batch_seconds(const EuclideanShortestPaths& paths, const Queries& queries, unsigned threads) {
   const Stopwatch clock;
-  std::atomic<std::size_t> next{0};
-  auto work = [&] {
-    EuclideanShortestPaths::Scratch scratch;
-    for (std::size_t i; (i = next.fetch_add(1)) < queries.size();)
-      paths.query({queries[i].start_x, queries[i].start_y}, {queries[i].goal_x, queries[i].goal_y}, scratch);
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& thread : pool) thread.join();
+  answer_all(paths, queries, threads);
   return clock.seconds();
 }
 
 // Mean µs per query on one thread, the file once in order (each query timed alone, as Polyanya's
 // runner times its own); the answers land in `answers` when given.
-double mean_query_us(const EuclideanShortestPaths& paths, const std::vector<ScenarioQuery>& queries,
-                     std::vector<EuclideanPathAnswer>* answers = nullptr) {
-  EuclideanShortestPaths::Scratch scratch;
+double mean_query_us(const EuclideanShortestPaths& paths, const Queries& queries, std::vector<TimedPathAnswer>* answers = nullptr) {
+  std::vector<TimedPathAnswer> timed = answer_all(paths, queries, 1);
   double total = 0;
-  for (std::size_t i = 0; i < queries.size(); ++i) {
-    const ScenarioQuery& q = queries[i];
-    const Stopwatch clock;
-    EuclideanPathAnswer answer = paths.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
-    total += clock.seconds() * 1e6;
-    if (answers) (*answers)[i] = std::move(answer);
-  }
+  for (const TimedPathAnswer& t : timed) total += t.us;
+  if (answers) *answers = std::move(timed);
   return total / static_cast<double>(queries.size());
 }
 
@@ -125,7 +117,7 @@ void tradeoff(const std::vector<std::string>& maps, const std::string& data) {
   std::printf("| map | corners | index | build s | index MB | µs per query |\n|---|---|---|---|---|---|\n");
   for (const std::string& name : maps) {
     const GridMap map = read_movingai_map(data + "/maps/" + name + ".map");
-    const auto queries = read_scenarios(data + "/scenarios/" + name + ".map.scen");
+    const Queries queries = asked(read_scenarios(data + "/scenarios/" + name + ".map.scen"));
     for (const Index& index : indexes) {
       const Stopwatch building;
       const EuclideanShortestPaths paths(map, index.options);
@@ -168,7 +160,7 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& name : maps) {
     const std::string scen = data + "/scenarios/" + name + ".map.scen";
-    const auto queries = read_scenarios(scen);
+    const Queries queries = asked(read_scenarios(scen));
     PeerRun peer;
     for (int r = 0; r < runs; ++r) {
       PeerRun run = run_polyanya(runner, meshes + "/" + name + "-merged.mesh", scen);
@@ -179,14 +171,14 @@ int main(int argc, char** argv) {
     const Stopwatch building;
     const EuclideanShortestPaths paths(map);
     const double preprocess = building.seconds();
-    std::vector<EuclideanPathAnswer> answers(queries.size());
+    std::vector<TimedPathAnswer> answers;
     double best_mean = mean_query_us(paths, queries, &answers);  // the first run, right after building
     for (int r = 1; r < runs; ++r) best_mean = std::min(best_mean, mean_query_us(paths, queries));
     const double one = batch_seconds(paths, queries, 1), all = batch_seconds(paths, queries, cores);
 
     std::size_t equal = 0, shorter = 0, longer = 0;
     for (std::size_t i = 0; i < queries.size() && i < peer.lengths.size(); ++i) {
-      const double theirs = peer.lengths[i], ours = answers[i].found ? answers[i].length : -1;
+      const double theirs = peer.lengths[i], ours = answers[i].answer.found ? answers[i].answer.length : -1;
       if ((theirs < 0) != (ours < 0) || ours > theirs + 1e-9 * std::max(1.0, theirs)) ++longer;
       else if (ours < theirs - 1e-9 * std::max(1.0, theirs)) ++shorter;
       else ++equal;

@@ -9,7 +9,6 @@
 #include <polyplan/roadmaps/euclidean_shortest_paths.hpp>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -40,39 +39,6 @@ double peak_memory_mb() {
   return static_cast<double>(usage.ru_maxrss) / 1024.0;  // kilobytes on Linux
 }
 
-struct Answered {
-  EuclideanPathAnswer answer;
-  double us = 0;
-};
-
-// Answers every query on `threads` threads sharing `paths`; each answer and its time lands in its
-// query's slot, so the result does not depend on the number of threads.
-std::vector<Answered> answer_all(const EuclideanShortestPaths& paths, const std::vector<ScenarioQuery>& scenarios, unsigned threads) {
-  std::vector<Answered> answers(scenarios.size());
-  std::atomic<std::size_t> next{0}, done{0};
-  auto work = [&](bool reports) {
-    EuclideanShortestPaths::Scratch scratch;
-    Progress progress("queries");
-    for (std::size_t i; (i = next.fetch_add(1)) < scenarios.size();) {
-      const ScenarioQuery& q = scenarios[i];
-      const auto t = Clock::now();
-      answers[i].answer = paths.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
-      answers[i].us = seconds_since(t) * 1e6;
-      const std::size_t finished = done.fetch_add(1) + 1;
-      if (reports) progress.update(std::min(finished, scenarios.size() - 1), scenarios.size());
-    }
-    if (reports) {
-      while (done.load() < scenarios.size()) std::this_thread::yield();
-      progress.update(scenarios.size(), scenarios.size());
-    }
-  };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work, false);
-  work(true);
-  for (std::thread& thread : pool) thread.join();
-  return answers;
-}
-
 int run_scen(const ScenOptions& options) {
   // Every input is read (and any error reported, alone on stderr) before the long work starts.
   const auto started = Clock::now();
@@ -88,7 +54,11 @@ int run_scen(const ScenOptions& options) {
   const double preprocess = seconds_since(started);
 
   const auto batch = Clock::now();
-  const std::vector<Answered> answers = answer_all(paths, scenarios, threads);
+  std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>> asked;
+  for (const ScenarioQuery& q : scenarios) asked.push_back({{q.start_x, q.start_y}, {q.goal_x, q.goal_y}});
+  Progress progress("queries");
+  const std::vector<TimedPathAnswer> answers =
+      answer_all(paths, asked, threads, [&](std::size_t done) { progress.update(done, asked.size()); });
   const double batch_seconds = seconds_since(batch);
 
   nlohmann::json queries = nlohmann::json::array();

@@ -5,14 +5,17 @@
 #include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
 #include <polyplan/roadmaps/detail/integer_triangulation.hpp>
 #include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/search/compressed_graph.hpp>
 #include <polyplan/search/hub_labels.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <stdexcept>
 #include <thread>
+#include <tuple>
 
 namespace polyplan {
 namespace {
@@ -102,10 +105,7 @@ struct EuclideanShortestPaths::Impl {
   std::vector<int> node_at;
   std::vector<int> node_vertex;
   std::vector<IntPoint> node_point;  // node_vertex's points, beside each other for the search
-  // Corner graph, compressed rows: the neighbours of u are adjacent[begin[u] .. begin[u+1]).
-  std::vector<std::size_t> begin;
-  std::vector<int> adjacent;
-  std::vector<double> weight;
+  CompressedGraph graph;  // of the corners
   // The table (n x n, row s = Dijkstra from s): distance and the predecessor on the path from s.
   std::vector<double> table_distance;
   std::vector<int> table_parent;
@@ -149,7 +149,7 @@ struct EuclideanShortestPaths::Impl {
           node_point.push_back(triangulation.point(v));
         }
     // Each pair once (to the higher-numbered corner), from the corners' own visibility.
-    std::vector<std::vector<std::pair<int, int>>> found(threads);
+    std::vector<std::vector<std::tuple<int, int, double>>> found(threads);
     std::vector<IntegerTriangulation::Scratch> scratch(threads);
     std::vector<std::vector<int>> visible(threads);
     parallel_for(nodes(), threads, [&](std::size_t u, unsigned t) {
@@ -162,27 +162,12 @@ struct EuclideanShortestPaths::Impl {
         const int target = arrival_node(static_cast<std::size_t>(c), triangulation.point(v));
         if (target <= static_cast<int>(u)) continue;  // none, or the pair is the other's
         if (arrival_node(v, triangulation.point(static_cast<std::size_t>(c))) != static_cast<int>(u)) continue;
-        found[t].emplace_back(static_cast<int>(u), target);
+        found[t].emplace_back(static_cast<int>(u), target, distance(position(static_cast<int>(u)), position(target)));
       }
     });
-    begin.assign(nodes() + 1, 0);
-    for (const auto& edges : found)
-      for (auto [u, v] : edges) {
-        ++begin[static_cast<std::size_t>(u) + 1];
-        ++begin[static_cast<std::size_t>(v) + 1];
-      }
-    for (std::size_t u = 0; u < nodes(); ++u) begin[u + 1] += begin[u];
-    adjacent.resize(begin.back());
-    weight.resize(begin.back());
-    std::vector<std::size_t> fill(begin.begin(), begin.end() - 1);
-    for (const auto& edges : found)
-      for (auto [u, v] : edges) {
-        const double w = distance(position(u), position(v));
-        adjacent[fill[static_cast<std::size_t>(u)]] = v;
-        weight[fill[static_cast<std::size_t>(u)]++] = w;
-        adjacent[fill[static_cast<std::size_t>(v)]] = u;
-        weight[fill[static_cast<std::size_t>(v)]++] = w;
-      }
+    std::vector<std::tuple<int, int, double>> edges;
+    for (const auto& part : found) edges.insert(edges.end(), part.begin(), part.end());
+    graph = CompressedGraph::from_edges(nodes(), edges);
   }
 
   void build_table(unsigned threads) {
@@ -191,28 +176,7 @@ struct EuclideanShortestPaths::Impl {
     table_parent.assign(n * n, -1);
     std::vector<std::vector<std::pair<double, int>>> heaps(threads);
     parallel_for(n, threads, [&](std::size_t s, unsigned t) {
-      double* d = &table_distance[s * n];
-      int* parent = &table_parent[s * n];
-      auto& heap = heaps[t];
-      heap.clear();
-      d[s] = 0;
-      heap.emplace_back(0.0, static_cast<int>(s));
-      while (!heap.empty()) {
-        std::pop_heap(heap.begin(), heap.end(), std::greater<>());
-        const auto [du, u] = heap.back();
-        heap.pop_back();
-        if (du > d[u]) continue;
-        for (std::size_t e = begin[static_cast<std::size_t>(u)]; e < begin[static_cast<std::size_t>(u) + 1]; ++e) {
-          const int v = adjacent[e];
-          const double dv = du + weight[e];
-          if (dv < d[v]) {
-            d[v] = dv;
-            parent[v] = u;
-            heap.emplace_back(dv, v);
-            std::push_heap(heap.begin(), heap.end(), std::greater<>());
-          }
-        }
-      }
+      dijkstra(graph, static_cast<int>(s), &table_distance[s * n], &table_parent[s * n], heaps[t]);
     });
   }
 
@@ -266,16 +230,15 @@ struct EuclideanShortestPaths::Impl {
       out.push_back({point_corners[k], distance(p, position(point_corners[k]))});
   }
 
-  // reach() by walking the triangulation; false when p is blocked.
-  bool walk_reach(const IntPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
+  // reach() by walking the triangulation (none from a blocked point).
+  void walk_reach(const IntPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
     out.clear();
     s.visible.clear();
-    if (!triangulation.visible_from_point(p, where, s.visible, s.walk)) return false;
+    triangulation.visible_from_point(p, where, s.visible, s.walk);
     for (int c : s.visible) {
       const int node = arrival_node(static_cast<std::size_t>(c), p);
       if (node >= 0) out.push_back({node, distance(p, position(node))});
     }
-    return true;
   }
 
   // The best corner pair through the table; corners as a path from the start's to the goal's.
@@ -406,7 +369,7 @@ struct EuclideanShortestPaths::Impl {
         best_node = u;
       }
       const double cost = r.cost;
-      for (std::size_t e = begin[node]; e < begin[node + 1]; ++e) relax(adjacent[e], cost + weight[e], u);
+      for (std::size_t e = graph.row_begin(u); e < graph.row_end(u); ++e) relax(graph.adjacent[e], cost + graph.weight[e], u);
     }
     if (best_node < 0) return false;
     corners.clear();
@@ -444,8 +407,8 @@ void EuclideanShortestPaths::build(EuclideanShortestPathsOptions options) {
   const std::size_t n = impl_->nodes();
   if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n)
     impl_->build_table(threads);
-  else if (n > 0 && impl_->adjacent.size() <= kLabelDegreeLimit * n)
-    impl_->labels = HubLabels::build(impl_->begin, impl_->adjacent, impl_->weight, options.label_bytes);
+  else if (n > 0 && impl_->graph.adjacent.size() <= kLabelDegreeLimit * n)
+    impl_->labels = HubLabels::build(impl_->graph, options.label_bytes);
   if (n > 0) impl_->build_point_table(threads, options.table_bytes);
 }
 
@@ -454,18 +417,18 @@ EuclideanShortestPaths::EuclideanShortestPaths(EuclideanShortestPaths&&) noexcep
 EuclideanShortestPaths& EuclideanShortestPaths::operator=(EuclideanShortestPaths&&) noexcept = default;
 
 std::size_t EuclideanShortestPaths::corner_count() const { return impl_->nodes(); }
-std::size_t EuclideanShortestPaths::edge_count() const { return impl_->adjacent.size() / 2; }
+std::size_t EuclideanShortestPaths::edge_count() const { return impl_->graph.adjacent.size() / 2; }
 bool EuclideanShortestPaths::has_table() const { return !impl_->table_distance.empty(); }
 bool EuclideanShortestPaths::has_labels() const { return impl_->labels.has_value(); }
 std::size_t EuclideanShortestPaths::label_entries() const { return impl_->labels ? impl_->labels->entry_count() : 0; }
 double EuclideanShortestPaths::build_seconds() const { return impl_->build_seconds; }
 std::size_t EuclideanShortestPaths::memory_bytes() const {
   const Impl& g = *impl_;
-  return g.triangulation.memory_bytes() + (g.wedge_offset.capacity() + g.begin.capacity()) * sizeof(std::size_t) +
+  return g.triangulation.memory_bytes() + (g.wedge_offset.capacity() + g.graph.begin.capacity()) * sizeof(std::size_t) +
          g.node_point.capacity() * sizeof(IntPoint) +
-         (g.node_at.capacity() + g.node_vertex.capacity() + g.adjacent.capacity() + g.table_parent.capacity() +
+         (g.node_at.capacity() + g.node_vertex.capacity() + g.graph.adjacent.capacity() + g.table_parent.capacity() +
           g.point_corners.capacity() + g.point_begin.capacity()) * sizeof(int) +
-         (g.weight.capacity() + g.table_distance.capacity()) * sizeof(double) + (g.labels ? g.labels->memory_bytes() : 0);
+         (g.graph.weight.capacity() + g.table_distance.capacity()) * sizeof(double) + (g.labels ? g.labels->memory_bytes() : 0);
 }
 
 EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start, const IntegerPathPoint& goal, Scratch& scratch) const {
@@ -481,7 +444,7 @@ EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start,
   g.triangulation.components_at(start_at, s.start_components);
   g.triangulation.components_at(goal_at, s.goal_components);
   auto named = [](const char* what, const IntPoint& p) {
-    return std::string(what) + " [" + std::to_string(p.x) + ", " + std::to_string(p.y) + "] is not in the free space";
+    return std::string(what) + " " + detail::to_text(p) + " is not in the free space";
   };
   if (s.start_components.empty()) {
     answer.why_not = named("the start", from);
@@ -533,6 +496,29 @@ EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start,
     if (i == 0 || !(path[i] == path[i - 1])) answer.path.push_back({path[i].x, path[i].y});
   }
   return answer;
+}
+
+std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
+                                        const std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>>& queries,
+                                        unsigned threads, const std::function<void(std::size_t done)>& progress) {
+  std::vector<TimedPathAnswer> answers(queries.size());
+  std::atomic<std::size_t> next{0}, done{0};
+  auto work = [&](bool reports) {
+    EuclideanShortestPaths::Scratch scratch;
+    for (std::size_t i; (i = next.fetch_add(1)) < queries.size();) {
+      const Stopwatch clock;
+      answers[i].answer = paths.query(queries[i].first, queries[i].second, scratch);
+      answers[i].us = clock.seconds() * 1e6;
+      const std::size_t finished = done.fetch_add(1) + 1;
+      if (reports && progress && finished < queries.size()) progress(finished);  // the last comes once, below
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < thread_count(threads); ++t) pool.emplace_back(work, false);
+  work(true);
+  for (std::thread& thread : pool) thread.join();
+  if (progress) progress(queries.size());
+  return answers;
 }
 
 }  // namespace polyplan

@@ -15,6 +15,7 @@
 #include <polyplan/geometry/cspace.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -88,5 +89,17 @@ class EuclideanShortestPaths {
   std::unique_ptr<Impl> impl_;
   void build(EuclideanShortestPathsOptions options);
 };
+
+// A batch of (start, goal) queries answered on `threads` threads sharing `paths`, each thread with
+// its own scratch. Answer i, with the µs its query took in its thread, lands in slot i: the answers
+// do not depend on the number of threads. `progress(done)` is called on the calling thread after
+// each query it answers while some are left, and once at the end with every query done.
+struct TimedPathAnswer {
+  EuclideanPathAnswer answer;
+  double us = 0;
+};
+std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
+                                        const std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>>& queries,
+                                        unsigned threads, const std::function<void(std::size_t done)>& progress = {});
 
 }  // namespace polyplan

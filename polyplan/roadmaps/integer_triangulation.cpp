@@ -23,7 +23,6 @@ bool angle_less(const IntPoint& a, const IntPoint& b) {
 }
 bool same_direction(const IntPoint& a, const IntPoint& b) { return cross_product(a, b) == 0 && dot(a, b) > 0; }
 
-std::string text(const IntPoint& p) { return "[" + std::to_string(p.x) + ", " + std::to_string(p.y) + "]"; }
 
 std::optional<std::int64_t> integer(const FT& value) {
   const Rational q = to_rational(value);
@@ -430,7 +429,7 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntPoint& a, cons
 
 std::optional<std::string> IntegerTriangulation::why_blocked(const IntPoint& a, const Location& from, const IntPoint& b) const {
   const Blocked blocked = walk(a, from, b);
-  const auto at = [&] { return text(points_[static_cast<std::size_t>(blocked.vertex)]); };
+  const auto at = [&] { return to_text(points_[static_cast<std::size_t>(blocked.vertex)]); };
   switch (blocked.reason) {
     case Blocked::none: return std::nullopt;
     case Blocked::point_blocked: return std::string("the point is blocked");
@@ -472,13 +471,13 @@ std::optional<std::string> IntegerTriangulation::why_path_blocked(const std::vec
   if (path.size() == 1) return why_blocked(path[0], where[0], path[0]);
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
     if (auto why = why_blocked(path[i], where[i], path[i + 1]))
-      return "segment " + std::to_string(i) + " " + text(path[i]) + "-" + text(path[i + 1]) + ": " + *why;
+      return "segment " + std::to_string(i) + " " + to_text(path[i]) + "-" + to_text(path[i + 1]) + ": " + *why;
   // Turning at a pinch point: back into the wedge the path came from, never across.
   for (std::size_t i = 1; i + 1 < path.size(); ++i) {
     if (where[i].type != Location::vertex || static_cast<std::size_t>(where[i].index) >= space_vertices_) continue;
     const auto v = static_cast<std::size_t>(where[i].index);
     if (is_pinch(v) && wedge(v, path[i - 1] - path[i]) != wedge(v, path[i + 1] - path[i]))
-      return "turns at the pinch point " + text(path[i]) + " into another free wedge";
+      return "turns at the pinch point " + to_text(path[i]) + " into another free wedge";
   }
   return std::nullopt;
 }

@@ -5,8 +5,9 @@
 // themselves as a hub, with the distance and the previous vertex, in the label of every vertex it
 // reaches. Then the distance between s and t is the least d(s, h) + d(h, t) over the hubs h their
 // labels share, and a shortest path is read back hop by hop through the previous vertices (each
-// of which holds the same hub). The graph is given as compressed rows: the neighbours of u are
-// adjacent[begin[u] .. begin[u+1]) with weight[...].
+// of which holds the same hub).
+#include <polyplan/search/compressed_graph.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -23,8 +24,7 @@ class HubLabels {
   };
 
   // nullopt when the labels would take more than max_bytes.
-  static std::optional<HubLabels> build(const std::vector<std::size_t>& begin, const std::vector<int>& adjacent,
-                                        const std::vector<double>& weight, std::size_t max_bytes);
+  static std::optional<HubLabels> build(const CompressedGraph& graph, std::size_t max_bytes);
 
   std::size_t vertex_count() const { return label_begin_.empty() ? 0 : label_begin_.size() - 1; }
   const Entry* label_begin(int v) const { return entries_.data() + label_begin_[static_cast<std::size_t>(v)]; }

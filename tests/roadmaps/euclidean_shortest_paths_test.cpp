@@ -12,7 +12,6 @@
 
 #include <cmath>
 #include <random>
-#include <thread>
 
 namespace polyplan::test {
 namespace {
@@ -129,20 +128,15 @@ TEST(EuclideanShortestPaths, ThreadsShareOnePreprocessingAndGetTheSameAnswers) {
   std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>> queries;
   std::uniform_int_distribution<int> x(0, map.width), y(0, map.height);
   for (int k = 0; k < 400; ++k) queries.push_back({{x(random), y(random)}, {x(random), y(random)}});
-  std::vector<EuclideanPathAnswer> alone(queries.size()), shared(queries.size());
+  std::vector<EuclideanPathAnswer> alone(queries.size());
   EuclideanShortestPaths::Scratch scratch;
   for (std::size_t i = 0; i < queries.size(); ++i) alone[i] = one.query(queries[i].first, queries[i].second, scratch);
-  std::vector<std::thread> threads;
-  for (std::size_t t = 0; t < 2; ++t)
-    threads.emplace_back([&, t] {
-      EuclideanShortestPaths::Scratch own;
-      for (std::size_t i = t; i < queries.size(); i += 2) shared[i] = two.query(queries[i].first, queries[i].second, own);
-    });
-  for (auto& thread : threads) thread.join();
+  const std::vector<TimedPathAnswer> shared = answer_all(two, queries, 2);
+  ASSERT_EQ(shared.size(), queries.size());
   for (std::size_t i = 0; i < queries.size(); ++i) {
-    EXPECT_EQ(alone[i].found, shared[i].found);
-    EXPECT_EQ(alone[i].length, shared[i].length);
-    EXPECT_EQ(alone[i].path, shared[i].path);
+    EXPECT_EQ(alone[i].found, shared[i].answer.found);
+    EXPECT_EQ(alone[i].length, shared[i].answer.length);
+    EXPECT_EQ(alone[i].path, shared[i].answer.path);
   }
 }
 

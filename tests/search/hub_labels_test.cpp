@@ -12,11 +12,7 @@
 namespace polyplan {
 namespace {
 
-struct Graph {
-  std::vector<std::size_t> begin;
-  std::vector<int> adjacent;
-  std::vector<double> weight;
-};
+using Graph = CompressedGraph;
 
 // n vertices, a random spanning path plus `extra` random edges, weights in [1, 10) (some equal,
 // for ties), plus `isolated` vertices at the end with no edge.
@@ -33,7 +29,6 @@ Graph random_graph(std::mt19937& random, int n, int extra, int isolated) {
     if (u != v) add(u, v, whole(random) + (e % 3 == 0 ? 0.5 : 0.0));
   }
   Graph g;
-  g.begin.push_back(0);
   for (const auto& list : lists) {
     for (auto [v, w] : list) {
       g.adjacent.push_back(v);
@@ -44,8 +39,9 @@ Graph random_graph(std::mt19937& random, int n, int extra, int isolated) {
   return g;
 }
 
+// The reference, written here apart from the library's (hub labels order their hubs with that one).
 std::vector<double> dijkstra(const Graph& g, int source) {
-  std::vector<double> dist(g.begin.size() - 1, std::numeric_limits<double>::infinity());
+  std::vector<double> dist(g.vertex_count(), std::numeric_limits<double>::infinity());
   std::vector<std::pair<double, int>> heap{{0.0, source}};
   dist[static_cast<std::size_t>(source)] = 0;
   while (!heap.empty()) {
@@ -53,7 +49,7 @@ std::vector<double> dijkstra(const Graph& g, int source) {
     auto [d, u] = heap.back();
     heap.pop_back();
     if (d > dist[static_cast<std::size_t>(u)]) continue;
-    for (std::size_t e = g.begin[static_cast<std::size_t>(u)]; e < g.begin[static_cast<std::size_t>(u) + 1]; ++e)
+    for (std::size_t e = g.row_begin(u); e < g.row_end(u); ++e)
       if (d + g.weight[e] < dist[static_cast<std::size_t>(g.adjacent[e])]) {
         dist[static_cast<std::size_t>(g.adjacent[e])] = d + g.weight[e];
         heap.emplace_back(d + g.weight[e], g.adjacent[e]);
@@ -74,7 +70,7 @@ TEST(HubLabels, DistancesAndPathsAreDijkstras) {
   std::mt19937 random(5);
   for (int trial = 0; trial < 8; ++trial) {
     const Graph g = random_graph(random, 40 + 20 * trial, 60 + 40 * trial, 2);
-    const auto labels = HubLabels::build(g.begin, g.adjacent, g.weight, std::size_t{1} << 30);
+    const auto labels = HubLabels::build(g, std::size_t{1} << 30);
     ASSERT_TRUE(labels);
     const int n = static_cast<int>(g.begin.size()) - 1;
     ASSERT_EQ(labels->vertex_count(), static_cast<std::size_t>(n));
@@ -99,8 +95,8 @@ TEST(HubLabels, DistancesAndPathsAreDijkstras) {
 TEST(HubLabels, ABudgetTooSmallIsRefused) {
   std::mt19937 random(9);
   const Graph g = random_graph(random, 200, 400, 0);
-  EXPECT_FALSE(HubLabels::build(g.begin, g.adjacent, g.weight, 100 * sizeof(HubLabels::Entry)));
-  EXPECT_TRUE(HubLabels::build(g.begin, g.adjacent, g.weight, std::size_t{1} << 24));
+  EXPECT_FALSE(HubLabels::build(g, 100 * sizeof(HubLabels::Entry)));
+  EXPECT_TRUE(HubLabels::build(g, std::size_t{1} << 24));
 }
 
 }  // namespace

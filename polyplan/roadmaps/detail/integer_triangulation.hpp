@@ -6,6 +6,8 @@
 // two products below 2^62: exact, so every answer is the exact kernel's, without its lazy numbers
 // and allocations. Plain arrays, no CGAL: the walks are const and take their scratch space from
 // the caller, so threads share one triangulation.
+#include <polyplan/geometry/rational.hpp>
+
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -25,6 +27,11 @@ struct IntPoint {
   friend bool operator==(const IntPoint& a, const IntPoint& b) { return a.x == b.x && a.y == b.y; }
   friend bool operator!=(const IntPoint& a, const IntPoint& b) { return !(a == b); }
 };
+
+// "[x, y]", as messages name points (geometry/rational.hpp's to_string of an ExactPoint).
+inline std::string to_text(const IntPoint& p) {
+  return to_string(ExactPoint{Rational(static_cast<long>(p.x)), Rational(static_cast<long>(p.y))});
+}
 
 // +1 left turn, -1 right turn, 0 collinear.
 inline int orientation(const IntPoint& a, const IntPoint& b, const IntPoint& c) {
