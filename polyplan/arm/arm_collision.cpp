@@ -45,12 +45,13 @@ struct Box {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// The distance between two boxes (0 when they overlap), as computed in doubles. Used only to skip
-// what cannot matter, always after subtracting the safety margin (see safety_margin).
-double gap(const Box& a, const Box& b) {
+// The squared distance between two boxes (0 when they overlap), as computed in doubles. Used
+// only to skip what cannot matter, always after subtracting the safety margin (see
+// safety_margin); squared, because that test runs for every obstacle near every link.
+double squared_gap(const Box& a, const Box& b) {
   const double dx = std::max({0.0, b.xmin - a.xmax, a.xmin - b.xmax});
   const double dy = std::max({0.0, b.ymin - a.ymax, a.ymin - b.ymax});
-  return std::sqrt(dx * dx + dy * dy);
+  return dx * dx + dy * dy;
 }
 
 // The safety margin subtracted from every double-computed distance, for shapes whose coordinates
@@ -73,24 +74,25 @@ double safety_margin(std::size_t links, double reach, double extent) {
 // A clearance: the computed distance minus the margin, never below 0.
 double clearance_of(double distance, double margin) { return std::max(0.0, distance - margin); }
 
-// Whether something at box distance `box_gap` (its margin already known) can be skipped: it lies
-// apart from the link (a positive lower bound, so it cannot meet it) and cannot bring the
-// clearance below `enough`.
-bool cannot_matter(double box_gap, double margin, double enough) {
-  const double lower_bound = box_gap - margin;
-  return lower_bound > 0 && lower_bound >= enough;
+// Whether something whose box lies `squared_box_gap` (squared) from the link's can be skipped:
+// it lies apart from the link (box gap − margin > 0, so it cannot meet it) and cannot bring the
+// clearance below `enough` (box gap − margin ≥ enough).
+bool cannot_matter(double squared_box_gap, double margin, double enough) {
+  const double reach = enough + margin;
+  return squared_box_gap > margin * margin && squared_box_gap >= reach * reach;
 }
 
-// The distance from p to the segment ab (a == b allowed), in doubles. Clamping the projection
-// keeps the nearest point on the segment, so rounding moves the result by a few ulps of the
-// coordinates only (see safety_margin).
-double point_segment_distance(const Point& p, const Point& a, const Point& b) {
+// The squared distance from p to the segment ab (a == b allowed), in doubles. Clamping the
+// projection keeps the nearest point on the segment, so rounding moves the result by a few ulps of
+// the coordinates only (see safety_margin). Squared: the square root is taken once, of the
+// smallest (sqrt is monotone and correctly rounded, so that is the smallest distance).
+double squared_point_segment_distance(const Point& p, const Point& a, const Point& b) {
   const double vx = b.x() - a.x(), vy = b.y() - a.y();
   const double wx = p.x() - a.x(), wy = p.y() - a.y();
   const double vv = vx * vx + vy * vy;
   const double t = vv > 0 ? std::clamp((wx * vx + wy * vy) / vv, 0.0, 1.0) : 0.0;
   const double dx = wx - t * vx, dy = wy - t * vy;
-  return std::sqrt(dx * dx + dy * dy);
+  return dx * dx + dy * dy;
 }
 
 // A closed convex shape given by 1 vertex (a point), 2 (a segment) or 4 (a strictly convex
@@ -146,21 +148,22 @@ bool meets(const Convex& a, const Convex& b) {
   return contains(b, a.v[0]) || contains(a, b.v[0]);
 }
 
-// The distance from p to the boundary of s, which is its distance to s when p lies outside s.
-double distance_to_boundary(const Point& p, const Convex& s) {
-  if (s.n == 1) return point_segment_distance(p, s.v[0], s.v[0]);
+// The squared distance from p to the boundary of s, which is its distance to s when p lies outside s.
+double squared_distance_to_boundary(const Point& p, const Convex& s) {
+  if (s.n == 1) return squared_point_segment_distance(p, s.v[0], s.v[0]);
   double best = infinity;
-  for (int i = 0; i < edge_count(s); ++i) best = std::min(best, point_segment_distance(p, s.v[i], s.v[(i + 1) % s.n]));
+  for (int i = 0; i < edge_count(s); ++i) best = std::min(best, squared_point_segment_distance(p, s.v[i], s.v[(i + 1) % s.n]));
   return best;
 }
+double distance_to_boundary(const Point& p, const Convex& s) { return std::sqrt(squared_distance_to_boundary(p, s)); }
 
 // The distance between two closed convex shapes that do not meet: the nearest pair of points of
 // two disjoint convex polygons (or segments, or points) always has a vertex of one of them.
 double distance_apart(const Convex& a, const Convex& b) {
   double best = infinity;
-  for (int i = 0; i < a.n; ++i) best = std::min(best, distance_to_boundary(a.v[i], b));
-  for (int i = 0; i < b.n; ++i) best = std::min(best, distance_to_boundary(b.v[i], a));
-  return best;
+  for (int i = 0; i < a.n; ++i) best = std::min(best, squared_distance_to_boundary(a.v[i], b));
+  for (int i = 0; i < b.n; ++i) best = std::min(best, squared_distance_to_boundary(b.v[i], a));
+  return std::sqrt(best);
 }
 
 struct Obstacle {
@@ -335,14 +338,14 @@ struct ArmCollisionChecker::Impl {
   double obstacle_clearance(std::size_t k, double enough, bool stop_at_contact, std::optional<ArmContact>& contact) const {
     const Convex& link = links[k];
     double best = infinity;
-    if (cannot_matter(gap(link.box, everything), everything_margin, enough)) return best;
+    if (cannot_matter(squared_gap(link.box, everything), everything_margin, enough)) return best;
     const auto found = [&](ArmContact c) {
       if (!contact) contact = c;
       best = 0;
       return stop_at_contact;
     };
     for (const Obstacle& o : obstacles) {
-      if (cannot_matter(gap(link.box, o.box), o.margin, std::min(best, enough))) continue;
+      if (cannot_matter(squared_gap(link.box, o.box), o.margin, std::min(best, enough))) continue;
       if (link_meets(link, o)) {
         if (found({k, ArmContact::With::polygon, o.index})) return best;
         continue;
@@ -350,12 +353,12 @@ struct ArmCollisionChecker::Impl {
       // Apart from the closed region, the link is nearest to its boundary: one of the edges.
       for (const Convex& e : o.edges) {
         if (best == 0) break;
-        if (cannot_matter(gap(link.box, e.box), o.margin, std::min(best, enough))) continue;
+        if (cannot_matter(squared_gap(link.box, e.box), o.margin, std::min(best, enough))) continue;
         best = std::min(best, clearance_of(distance_apart(link, e), o.margin));
       }
     }
     for (const PointObstacle& p : points) {
-      if (cannot_matter(gap(link.box, p.box), p.margin, std::min(best, enough))) continue;
+      if (cannot_matter(squared_gap(link.box, p.box), p.margin, std::min(best, enough))) continue;
       if (contains(link, p.p)) {
         if (found({k, ArmContact::With::point, p.index})) return best;
         continue;
@@ -371,7 +374,7 @@ struct ArmCollisionChecker::Impl {
   double pair_clearance(std::size_t k, std::size_t m, double enough, std::optional<ArmContact>& contact) const {
     const Convex& a = links[k];
     const Convex& b = links[m];
-    if (cannot_matter(gap(a.box, b.box), link_pair_margin, enough)) return infinity;
+    if (cannot_matter(squared_gap(a.box, b.box), link_pair_margin, enough)) return infinity;
     if (meets(a, b)) {
       if (!contact) contact = ArmContact{std::min(k, m), ArmContact::With::link, std::max(k, m)};
       return 0;
@@ -379,7 +382,7 @@ struct ArmCollisionChecker::Impl {
     return clearance_of(distance_apart(a, b), link_pair_margin);
   }
 
-  void clearances(const JointAngles& q, ArmClearances& out) const {
+  void clearances(const JointAngles& q, ArmClearances& out, double enough) const {
     place(q);
     const std::size_t n = arm.joints();
     out.links.assign(n, infinity);
@@ -388,9 +391,9 @@ struct ArmCollisionChecker::Impl {
     out.contact.reset();
     // In first_contact's order, so that the first contact recorded is the one it reports.
     for (std::size_t k = 0; k < n; ++k) {
-      out.links[k] = obstacle_clearance(k, infinity, false, out.contact);
+      out.links[k] = obstacle_clearance(k, enough, false, out.contact);
       if (arm.self_collision)
-        for (std::size_t m = k + 2; m < n; ++m) out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, infinity, out.contact);
+        for (std::size_t m = k + 2; m < n; ++m) out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, enough, out.contact);
     }
   }
 
@@ -447,11 +450,13 @@ const Arm& ArmCollisionChecker::arm() const { return impl_->arm; }
 bool ArmCollisionChecker::is_free(const JointAngles& angles) const { return !impl_->contact(angles); }
 std::optional<ArmContact> ArmCollisionChecker::first_contact(const JointAngles& angles) const { return impl_->contact(angles); }
 
-void ArmCollisionChecker::clearances(const JointAngles& q, ArmClearances& out) const { impl_->clearances(q, out); }
+void ArmCollisionChecker::clearances(const JointAngles& q, ArmClearances& out, double enough) const {
+  impl_->clearances(q, out, enough);
+}
 
 void ArmCollisionChecker::clearances(const JointAngles& q, std::vector<double>& out) const {
   ArmClearances& split = impl_->split;
-  impl_->clearances(q, split);
+  impl_->clearances(q, split, infinity);
   out = split.links;
   const std::size_t n = out.size();
   if (!split.pairs.empty())

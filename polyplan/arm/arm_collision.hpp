@@ -35,6 +35,7 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -94,8 +95,10 @@ class ArmCollisionChecker {
   // minimum over the obstacle polygons, the points and, with self-collision, the links it shares
   // no joint with. +infinity when nothing is within reach. Throws like is_free.
   void clearances(const JointAngles& q, std::vector<double>& out) const;
-  // The same split into obstacle and link-pair clearances, with the first contact.
-  void clearances(const JointAngles& q, ArmClearances& out) const;
+  // The same split into obstacle and link-pair clearances, with the first contact. A clearance of
+  // at least `enough` may be reported as any value of at least `enough`: what lies farther away is
+  // not measured (a grid planner needs clearances only up to a step's sweep).
+  void clearances(const JointAngles& q, ArmClearances& out, double enough = std::numeric_limits<double>::infinity()) const;
 
   // Conservative advancement's step (arm_motion.hpp), for the configuration q. When q collides:
   // step 0 and its first contact. Otherwise a lower bound of how long q stays free, at most

@@ -1,5 +1,6 @@
 #include <polyplan/arm/arm_grid_planner.hpp>
 
+#include <polyplan/arm/arm_grid_search.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/roadmaps/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
@@ -31,13 +32,12 @@ struct AngleGrid {
 
   double angle(GridCoordinate k) const { return static_cast<double>(k) * step; }
 
-  JointAngles configuration(const GridGraph& g, GridCell c) const {
-    JointAngles q(g.dimensions());
-    std::array<GridCoordinate, GridGraph::max_dimensions> at;
-    g.coordinates(c, at);
+  JointAngles configuration(std::span<const GridCoordinate> at) const {
+    JointAngles q(at.size());
     for (std::size_t i = 0; i < q.size(); ++i) q[i] = angle(at[i]);
     return q;
   }
+  JointAngles configuration(const GridGraph& g, GridCell c) const { return configuration(g.coordinates(c)); }
 
   // The two cells around angle a on one joint (equal when a is on a cell), nearest first.
   std::array<GridCoordinate, 2> around(double a) const {
@@ -65,34 +65,30 @@ struct MotionTally {
 };
 
 // Where the start (or goal) joins the grid: the first of the cells around it, nearest first (by the
-// sum of the joints' distances), that is free and reached by a free motion.
-struct Join {
-  bool found = false;
-  GridCell cell = 0;
-};
-
-Join join_to_grid(const GridGraph& g, const AngleGrid& grid, const ArmCollisionChecker& checker, const JointAngles& q,
-                  MotionTally& motions) {
+// sum of the joints' distances), that is free and reached by a free motion. Its coordinates, or
+// nothing.
+std::optional<std::vector<GridCoordinate>> join_to_grid(const AngleGrid& grid, const ArmCollisionChecker& checker,
+                                                        const JointAngles& q, MotionTally& motions) {
   const std::size_t joints = q.size();
   std::vector<std::array<GridCoordinate, 2>> options(joints);
   for (std::size_t i = 0; i < joints; ++i) options[i] = grid.around(q[i]);
-  std::vector<std::pair<double, GridCell>> candidates;
-  std::vector<GridCoordinate> at(joints);
+  std::vector<std::pair<double, std::vector<GridCoordinate>>> candidates;
   for (std::uint32_t mask = 0; mask < (1u << joints); ++mask) {
     double distance = 0;
+    std::vector<GridCoordinate> at(joints);
     for (std::size_t i = 0; i < joints; ++i) {
       at[i] = options[i][(mask >> i) & 1u];
       distance += grid.torus ? angular_distance(q[i], grid.angle(at[i])) : std::fabs(normalize_angle(q[i]) - grid.angle(at[i]));
     }
-    candidates.emplace_back(distance, g.cell(at));
+    candidates.emplace_back(distance, std::move(at));
   }
   std::sort(candidates.begin(), candidates.end());
   candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-  for (const auto& [distance, cell] : candidates) {
-    if (!g.is_free(cell)) continue;
-    if (motions.certify(checker, q, grid.configuration(g, cell))) return {true, cell};
+  for (const auto& [distance, at] : candidates) {
+    const JointAngles cell = grid.configuration(at);
+    if (checker.is_free(cell) && motions.certify(checker, q, cell)) return at;
   }
-  return {};
+  return std::nullopt;
 }
 
 JointAngles normalized(const JointAngles& q) {
@@ -137,9 +133,286 @@ ArmGridPlanner::ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options
     throw std::invalid_argument("an arm of " + std::to_string(problem.arm.joints()) + " joints needs a grid of as many axes; it has at most " +
                                 std::to_string(GridGraph::max_dimensions));
   const double cells = std::pow(static_cast<double>(cells_per_axis_), static_cast<double>(problem.arm.joints()));
+  if (!(cells < 0x1p62))
+    throw std::invalid_argument("a grid of " + degrees_text(cells) + " cells (" + std::to_string(cells_per_axis_) + " per joint, " +
+                                std::to_string(problem.arm.joints()) + " joints) is too many to number; use a coarser resolution");
   if (!options_.lazy && cells > static_cast<double>(std::uint64_t{1} << 24))
     throw std::invalid_argument("eager evaluation of " + degrees_text(cells) + " cells is too much (at most 2^24); use lazy evaluation");
+  if (options_.coarse_degrees != 0) {
+    ArmGridOptions coarse = options_;
+    coarse.resolution_degrees = options_.coarse_degrees;
+    cells_per_axis(coarse);  // the same rule: a positive angle that divides 360
+  }
+  if (options_.corridor < 0 || options_.widenings < 0)
+    throw std::invalid_argument("the corridor's half-width and the number of widenings must not be negative");
+  if (!(options_.memory_mb > 0) || !std::isfinite(options_.memory_mb))
+    throw std::invalid_argument("the memory budget memory_mb must be a positive number of megabytes");
 }
+
+namespace {
+
+// What every way of searching the grid shares: the query's report and its counts.
+struct Planning {
+  const ArmCollisionChecker& checker;
+  const ArmGridOptions& options;
+  const AngleGrid& grid;
+  const QueryOptions& record;
+  std::size_t joints;
+  PlanReport<JointAngles>& report;
+  MotionTally& motions;
+  std::size_t cells_evaluated = 0, expanded = 0, generated = 0, moves_by_clearance = 0;
+  double peak_mb = 0;
+
+  std::string budget_message(const std::string& what) const {
+    return "stopped after " + what + ": the memory budget of one query is " + degrees_text(options.memory_mb) +
+           " MB (option memory_mb: raise it with --memory_mb N)";
+  }
+  std::string not_connected() const {
+    return std::string("start and goal are not connected on the ") + (options.torus ? "torus" : "interval") + " grid at " +
+           degrees_text(options.resolution_degrees) + " degrees";
+  }
+  void keep_path(const ArmQuery& query, const std::vector<std::vector<GridCoordinate>>& cells) {
+    report.found = true;
+    report.path.push_back(normalized(query.start));
+    for (const auto& c : cells) report.path.push_back(grid.configuration(c));
+    report.path.push_back(normalized(query.goal));
+    // A start or goal exactly on its cell would repeat it.
+    report.path.erase(std::unique(report.path.begin(), report.path.end()), report.path.end());
+    report.length = arm_path_length(report.path, options.torus);
+    report.certificate = {true, "conservative advancement (every motion certified free by clearance bounds)"};
+  }
+};
+
+// search/'s shortest_path on GridGraph, with a move test that certifies each motion: every search
+// algorithm, and eager evaluation. Its hash maps cost about 330 bytes a cell.
+void plan_on_grid_graph(Planning& p, const ArmQuery& query) {
+  constexpr double bytes_per_cell = 330;
+  const auto max_cells = static_cast<std::size_t>(p.options.memory_mb * 1e6 / bytes_per_cell);
+  const AngleGrid& grid = p.grid;
+  std::vector<GridAxis> axes(p.joints, GridAxis{grid.n, p.options.torus ? AxisKind::wrapping : AxisKind::bounded, grid.step});
+  struct BudgetReached {};  // thrown from the cell test, out of the search, when the budget is spent
+  std::size_t cells_tested = 0;
+  GridGraph g(axes, Connectivity::axis_aligned, StepCost::sum_of_axes, [&](std::span<const GridCoordinate> at) {
+    if (++cells_tested > max_cells) throw BudgetReached{};
+    return p.checker.is_free(grid.configuration(at));
+  });
+  // A move is certified once whichever side the search sees it from (moves on an axis of >= 3
+  // cells are identified by their two cells).
+  std::unordered_map<std::pair<GridCell, GridCell>, bool, boost::hash<std::pair<GridCell, GridCell>>> moves;
+  g.set_move_test([&](GridCell a, GridCell b) {
+    const auto key = std::minmax(a, b);
+    const auto [it, inserted] = moves.try_emplace({key.first, key.second}, false);
+    if (inserted) it->second = p.motions.certify(p.checker, grid.configuration(g, a), grid.configuration(g, b));
+    return it->second;
+  });
+  const auto keep_cells = [&]() {
+    p.cells_evaluated = g.cells_evaluated();
+    p.peak_mb = static_cast<double>(p.cells_evaluated) * bytes_per_cell / 1e6;
+    if (!p.record.record || p.joints != 2) return;
+    auto cells = std::make_shared<CellGrid>();
+    cells->columns = cells->rows = static_cast<std::size_t>(grid.n);
+    cells->x0 = cells->y0 = -grid.step / 2;  // cell k is centred on the angle k·step
+    cells->cell_width = cells->cell_height = grid.step;
+    cells->states.resize(g.cell_count());
+    for (GridCell c = 0; c < g.cell_count(); ++c) cells->states[c] = static_cast<std::uint8_t>(g.state(c));
+    p.report.cells = std::move(cells);
+  };
+  std::optional<std::vector<GridCoordinate>> start, goal;
+  SearchResult<GridCell> result;
+  try {
+    if (!p.options.lazy) g.evaluate_all();
+    start = join_to_grid(grid, p.checker, query.start, p.motions);
+    goal = join_to_grid(grid, p.checker, query.goal, p.motions);
+    if (start && goal) {
+      SearchOptions searching = p.options.search;
+      searching.record_expanded = p.record.record;
+      const GridCell to = g.cell(*goal);
+      result = shortest_path(g, g.cell(*start), to, searching, GridDistanceTo(g, to, GridMetric::sum_of_axes), GridMoveCost{&g});
+    }
+  } catch (const BudgetReached&) {
+    p.report.why_not = p.budget_message("evaluating " + std::to_string(max_cells) + " cells (about 330 bytes each)");
+    keep_cells();
+    return;
+  }
+  keep_cells();
+  if (!start || !goal) {
+    p.report.why_not = std::string("no grid cell next to the ") + (start ? "goal" : "start") +
+                       " is reached from it by a certified free motion; try a finer resolution";
+    return;
+  }
+  p.expanded = result.expanded;
+  p.generated = result.generated;
+  for (const GridCell c : result.expanded_order) p.report.expanded.push_back(grid.configuration(g, c));
+  if (!result.found) {
+    p.report.why_not = p.not_connected();
+    return;
+  }
+  std::vector<std::vector<GridCoordinate>> cells;
+  for (const GridCell c : result.path) cells.push_back(g.coordinates(c));
+  p.keep_path(query, cells);
+  p.report.facts.set("grid.shortest", p.options.search.algorithm == Search::astar || p.options.search.algorithm == Search::dijkstra
+                                          ? "proved" : "not claimed");
+}
+
+// The coarse path's cells, and which fine cells lie within some number of coarse cells of one of
+// them (the largest of the joints' distances, the short way round on the torus).
+class Corridor {
+ public:
+  Corridor(std::vector<std::vector<GridCoordinate>> coarse_path, std::int64_t coarse_n, std::int64_t fine_n, bool torus)
+      : path_(std::move(coarse_path)), coarse_n_(coarse_n), fine_n_(fine_n), torus_(torus) {}
+  void set_radius(int radius) {
+    radius_ = radius;
+    distance_.clear();
+  }
+  // The coarse cell nearest to the fine cell x (fine angle x·360/fine_n, in whole coarse steps).
+  bool contains(std::span<const GridCoordinate> x) {
+    std::uint64_t key = 0;
+    std::array<std::int64_t, GridGraph::max_dimensions> c{};
+    for (std::size_t i = x.size(); i-- > 0;) {
+      c[i] = (2 * std::int64_t{x[i]} * coarse_n_ + fine_n_) / (2 * fine_n_);
+      if (c[i] == coarse_n_) c[i] = torus_ ? 0 : coarse_n_ - 1;
+      key = key * static_cast<std::uint64_t>(coarse_n_) + static_cast<std::uint64_t>(c[i]);
+    }
+    auto [it, inserted] = distance_.try_emplace(key, 0);
+    if (inserted) {
+      std::int64_t best = std::numeric_limits<std::int64_t>::max();
+      for (const auto& p : path_) {
+        std::int64_t far = 0;
+        for (std::size_t i = 0; i < x.size() && far < best; ++i) {
+          std::int64_t d = std::abs(c[i] - p[i]);
+          if (torus_) d = std::min(d, coarse_n_ - d);
+          far = std::max(far, d);
+        }
+        best = std::min(best, far);
+      }
+      it->second = best;
+    }
+    return it->second <= radius_;
+  }
+  std::size_t coarse_cells_seen() const { return distance_.size(); }
+
+ private:
+  std::vector<std::vector<GridCoordinate>> path_;
+  std::int64_t coarse_n_, fine_n_;
+  bool torus_;
+  int radius_ = 0;
+  std::unordered_map<std::uint64_t, std::int64_t> distance_;
+};
+
+// The compact lazy search (arm_grid_search.hpp), coarse to fine when the grid is finer than
+// options.coarse_degrees.
+void plan_compactly(Planning& p, const ArmQuery& query) {
+  const ArmGridOptions& options = p.options;
+  const AngleGrid& grid = p.grid;
+  const auto start = join_to_grid(grid, p.checker, query.start, p.motions);
+  const auto goal = join_to_grid(grid, p.checker, query.goal, p.motions);
+  if (!start || !goal) {
+    p.report.why_not = std::string("no grid cell next to the ") + (start ? "goal" : "start") +
+                       " is reached from it by a certified free motion; try a finer resolution";
+    return;
+  }
+  ArmGridSearchProblem searching;
+  searching.cells_per_axis = grid.n;
+  searching.torus = options.torus;
+  searching.start = *start;
+  searching.goal = *goal;
+  searching.use_heuristic = options.search.algorithm == Search::astar;
+  searching.memory_bytes = static_cast<std::size_t>(options.memory_mb * 1e6);
+  searching.record_expanded = p.record.record;
+
+  // Coarse to fine: the coarse grid's path (its whole grid searched), when there is one.
+  std::optional<Corridor> corridor;
+  if (options.coarse_degrees > options.resolution_degrees) {
+    ArmGridOptions coarse = options;
+    coarse.resolution_degrees = options.coarse_degrees;
+    coarse.coarse_degrees = 0;
+    const std::int64_t coarse_n = cells_per_axis(coarse);
+    const AngleGrid coarse_grid{coarse_n, two_pi / static_cast<double>(coarse_n), options.torus};
+    const auto coarse_start = join_to_grid(coarse_grid, p.checker, query.start, p.motions);
+    const auto coarse_goal = join_to_grid(coarse_grid, p.checker, query.goal, p.motions);
+    p.report.facts.set("grid.coarse_degrees", options.coarse_degrees);
+    if (coarse_start && coarse_goal) {
+      ArmGridSearchProblem first = searching;
+      first.cells_per_axis = coarse_n;
+      first.start = *coarse_start;
+      first.goal = *coarse_goal;
+      first.record_expanded = false;
+      ArmGridSearch coarse_search(p.checker, first);
+      const ArmGridSearchResult found = coarse_search.run();
+      p.cells_evaluated += found.cells_evaluated;
+      p.moves_by_clearance += found.moves_by_clearance;
+      p.motions.checked += found.moves_certified;
+      p.motions.uncertified += found.moves_uncertified;
+      p.peak_mb = static_cast<double>(found.peak_bytes) / 1e6;
+      // The fine search, over the whole grid, would evaluate about as many cells as the coarse one
+      // did times the cells a coarse cell holds: when that is small, search the whole grid.
+      const double predicted = static_cast<double>(found.cells_evaluated) *
+                               std::pow(static_cast<double>(grid.n) / static_cast<double>(coarse_n), static_cast<double>(p.joints));
+      p.report.facts.set("grid.predicted_cells", predicted);
+      if (found.found && predicted > static_cast<double>(options.exact_cells))
+        corridor.emplace(found.path, coarse_n, grid.n, options.torus);
+    }
+  }
+
+  ArmGridSearch search(p.checker, searching);
+  ArmGridSearchResult result;
+  int radius = options.corridor, rounds = 0;
+  for (;;) {
+    if (corridor) {
+      corridor->set_radius(radius);
+      search.set_corridor([&](std::span<const std::int32_t> x) { return corridor->contains(x); });
+    }
+    ArmGridSearchResult round = search.run();
+    ++rounds;
+    p.peak_mb = std::max(p.peak_mb, static_cast<double>(round.peak_bytes) / 1e6);
+    // A widened round that runs out of memory leaves the narrower corridor's path standing.
+    if (round.over_budget && result.found) break;
+    result = std::move(round);
+    const bool proved = !corridor || (result.found ? result.cost_steps <= result.outside_bound_steps
+                                                   : result.outside_bound_steps == std::numeric_limits<std::int64_t>::max());
+    if (proved || result.over_budget || rounds > options.widenings) break;
+    radius *= 2;
+  }
+  p.cells_evaluated += result.cells_evaluated;
+  p.moves_by_clearance += result.moves_by_clearance;
+  p.motions.checked += result.moves_certified;
+  p.motions.uncertified += result.moves_uncertified;
+  p.expanded = result.expanded;
+  p.generated = result.generated;
+  if (corridor) {
+    p.report.facts.set("grid.corridor", radius);
+    p.report.facts.set("grid.rounds", rounds);
+  }
+  for (const auto& c : result.expanded_order) p.report.expanded.push_back(grid.configuration(c));
+  if (p.record.record && p.joints == 2) {
+    auto cells = std::make_shared<CellGrid>();
+    cells->columns = cells->rows = static_cast<std::size_t>(grid.n);
+    cells->x0 = cells->y0 = -grid.step / 2;  // cell k is centred on the angle k·step
+    cells->cell_width = cells->cell_height = grid.step;
+    cells->states.reserve(static_cast<std::size_t>(grid.n * grid.n));
+    for (GridCoordinate y = 0; y < grid.n; ++y)
+      for (GridCoordinate x = 0; x < grid.n; ++x)
+        cells->states.push_back(static_cast<std::uint8_t>(search.state(std::array{x, y})));
+    p.report.cells = std::move(cells);
+  }
+  if (result.over_budget) {
+    p.report.why_not = p.budget_message("evaluating " + std::to_string(result.cells_evaluated) + " cells");
+    return;
+  }
+  if (!result.found) {
+    p.report.why_not = corridor && result.outside_bound_steps != std::numeric_limits<std::int64_t>::max()
+                           ? p.not_connected() + " within " + std::to_string(radius) + " coarse cells of the " +
+                                 degrees_text(options.coarse_degrees) + "-degree path (option corridor widens it)"
+                           : p.not_connected();
+    return;
+  }
+  p.keep_path(query, result.path);
+  const bool proved = result.cost_steps <= result.outside_bound_steps;
+  p.report.facts.set("grid.shortest", proved ? "proved" : "corridor");
+  if (!proved) p.report.facts.set("grid.lower_bound", static_cast<double>(result.outside_bound_steps) * grid.step);
+}
+
+}  // namespace
 
 PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryOptions& record) {
   const Stopwatch planning;
@@ -154,104 +427,27 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
   facts.set("grid.torus", options_.torus);
   facts.set("grid.evaluation", options_.lazy ? "lazy" : "eager");
   facts.set("search.algorithm", to_string(options_.search.algorithm));
-  std::size_t cells_evaluated = 0, expanded = 0, generated = 0;
   MotionTally motions;
-  const auto finish = [&]() {
-    facts.set("cells_evaluated", cells_evaluated);
-    facts.set("moves_checked", motions.checked);
-    facts.set("moves_uncertified", motions.uncertified);
-    facts.set("expanded", expanded);
-    facts.set("search.expanded", expanded);
-    facts.set("search.generated", generated);
-    facts.set("seconds", planning.seconds());
-    return report;
-  };
-
+  Planning p{checker_, options_, grid, record, joints, report, motions};
   if (auto why = query_not_free(checker_, query)) {
     report.why_not = *why;
-    return finish();
+  } else {
+    const bool compact = options_.lazy && (options_.search.algorithm == Search::astar || options_.search.algorithm == Search::dijkstra);
+    if (compact)
+      plan_compactly(p, query);
+    else
+      plan_on_grid_graph(p, query);
   }
-
-  std::vector<GridAxis> axes(joints, GridAxis{n, options_.torus ? AxisKind::wrapping : AxisKind::bounded, grid.step});
-  struct BudgetReached {};  // thrown from the cell test, out of the search, when the budget is spent
-  std::size_t cells_tested = 0;
-  GridGraph g(axes, Connectivity::axis_aligned, StepCost::sum_of_axes, [&](std::span<const GridCoordinate> at) {
-    if (++cells_tested > options_.max_cells) throw BudgetReached{};
-    JointAngles q(at.size());
-    for (std::size_t i = 0; i < q.size(); ++i) q[i] = grid.angle(at[i]);
-    return checker_.is_free(q);
-  });
-  // A move is certified once whichever side the search sees it from (moves on an axis of >= 3
-  // cells are identified by their two cells).
-  std::unordered_map<std::pair<GridCell, GridCell>, bool, boost::hash<std::pair<GridCell, GridCell>>> moves;
-  g.set_move_test([&](GridCell a, GridCell b) {
-    const auto key = std::minmax(a, b);
-    const auto [it, inserted] = moves.try_emplace({key.first, key.second}, false);
-    if (inserted) it->second = motions.certify(checker_, grid.configuration(g, a), grid.configuration(g, b));
-    return it->second;
-  });
-  const auto keep_cells = [&]() {
-    cells_evaluated = g.cells_evaluated();
-    if (!record.record || joints != 2) return;
-    auto cells = std::make_shared<CellGrid>();
-    cells->columns = cells->rows = static_cast<std::size_t>(n);
-    cells->x0 = cells->y0 = -grid.step / 2;  // cell k is centred on the angle k·step
-    cells->cell_width = cells->cell_height = grid.step;
-    cells->states.resize(g.cell_count());
-    for (GridCell c = 0; c < g.cell_count(); ++c) cells->states[c] = static_cast<std::uint8_t>(g.state(c));
-    report.cells = std::move(cells);
-  };
-
-  const auto over_budget = [&]() {
-    report.why_not = "stopped after evaluating " + std::to_string(options_.max_cells) +
-                     " cells, the budget of one query (option max_cells: raise it with --max_cells N, at about 330 bytes a cell)";
-    keep_cells();
-    return finish();
-  };
-  try {
-    if (!options_.lazy) g.evaluate_all();
-  } catch (const BudgetReached&) {
-    return over_budget();
-  }
-  std::optional<Join> start, goal;
-  SearchResult<GridCell> result;
-  try {
-    start = join_to_grid(g, grid, checker_, query.start, motions);
-    goal = join_to_grid(g, grid, checker_, query.goal, motions);
-    if (start->found && goal->found) {
-      SearchOptions searching = options_.search;
-      searching.record_expanded = record.record;
-      result = shortest_path(g, start->cell, goal->cell, searching, GridDistanceTo(g, goal->cell, GridMetric::sum_of_axes),
-                             GridMoveCost{&g});
-    }
-  } catch (const BudgetReached&) {
-    return over_budget();
-  }
-  if (!start->found || !goal->found) {
-    report.why_not = std::string("no grid cell next to the ") + (start->found ? "goal" : "start") +
-                     " is reached from it by a certified free motion; try a finer resolution";
-    keep_cells();
-    return finish();
-  }
-
-  expanded = result.expanded;
-  generated = result.generated;
-  for (const GridCell c : result.expanded_order) report.expanded.push_back(grid.configuration(g, c));
-  keep_cells();
-  if (!result.found) {
-    report.why_not = std::string("start and goal are not connected on the ") + (options_.torus ? "torus" : "interval") +
-                     " grid at " + degrees_text(options_.resolution_degrees) + " degrees";
-    return finish();
-  }
-  report.found = true;
-  report.path.push_back(normalized(query.start));
-  for (const GridCell c : result.path) report.path.push_back(grid.configuration(g, c));
-  report.path.push_back(normalized(query.goal));
-  // A start or goal exactly on its cell would repeat it.
-  report.path.erase(std::unique(report.path.begin(), report.path.end()), report.path.end());
-  report.length = arm_path_length(report.path, options_.torus);
-  report.certificate = {true, "conservative advancement (every motion certified free by clearance bounds)"};
-  return finish();
+  facts.set("cells_evaluated", p.cells_evaluated);
+  facts.set("moves_checked", motions.checked);
+  facts.set("moves_by_clearance", p.moves_by_clearance);
+  facts.set("moves_uncertified", motions.uncertified);
+  facts.set("expanded", p.expanded);
+  facts.set("search.expanded", p.expanded);
+  facts.set("search.generated", p.generated);
+  facts.set("memory_mb", p.peak_mb);
+  facts.set("seconds", planning.seconds());
+  return report;
 }
 
 PlannerEntry<PlanarArm> arm_grid_planner_entry() {
@@ -261,7 +457,13 @@ PlannerEntry<PlanarArm> arm_grid_planner_entry() {
   table.add("evaluation", &ArmGridOptions::lazy, "lazy: decide cells when the search reaches them; eager: every cell first",
             std::vector<std::pair<std::string, bool>>{{"lazy", true}, {"eager", false}});
   add_search_options(table, &ArmGridOptions::search);
-  table.add("max_cells", &ArmGridOptions::max_cells, "cells one query may evaluate before it stops, not found (the memory budget)");
+  table.add("coarse", &ArmGridOptions::coarse_degrees,
+            "a finer grid is searched first at this resolution (degrees), then in a corridor around that path; 0: whole grid");
+  table.add("corridor", &ArmGridOptions::corridor, "the corridor's half-width in coarse cells");
+  table.add("exact_cells", &ArmGridOptions::exact_cells,
+            "a finer grid is searched whole when the coarse search predicts at most this many cells");
+  table.add("widenings", &ArmGridOptions::widenings, "times the corridor may double while it cannot prove its path shortest");
+  table.add("memory_mb", &ArmGridOptions::memory_mb, "the memory one query's tables may take before it stops, saying so");
   return make_planner_entry<PlanarArm, ArmGridOptions>(
       "grid", "seed 000's grid over the joint angles (a torus), searched lazily; every move a certified motion",
       std::move(table), [](const ArmProblem& problem, const ArmGridOptions& o) {

@@ -26,10 +26,20 @@ struct ArmGridOptions {
   bool torus = true;              // false: each joint is the interval [0, 2π) and may not cross 0
   bool lazy = true;               // false: evaluate every cell before searching (at most 2^24 cells)
   SearchOptions search{Search::astar};
-  // The budget of cells one query may evaluate. Each costs 200-330 bytes while the search runs
-  // (touched cells, checked moves, search records): 4 million stay within about 1.3 GB. A query
-  // that reaches it ends not found, and says so, instead of being killed by the system.
-  std::size_t max_cells = 4'000'000;
+  // Coarse to fine: a grid finer than coarse_degrees (which must divide 360) is first searched at
+  // that resolution. When the fine search over the whole grid would evaluate more than
+  // exact_cells cells (predicted: the coarse search's cells times the fine cells per coarse cell),
+  // only a corridor of `corridor` coarse cells around the coarse path is searched, doubled up to
+  // `widenings` times while it cannot prove its path the grid's shortest. coarse_degrees 0: always
+  // the whole grid. A* and Dijkstra with lazy evaluation only (the other searches always search
+  // the whole grid).
+  double coarse_degrees = 5;
+  std::size_t exact_cells = 4'000'000;
+  int corridor = 2;
+  int widenings = 0;
+  // The memory one query's tables may take; a query that reaches it stops, saying so, instead of
+  // being killed by the system (a widening that reaches it returns the narrower corridor's path).
+  double memory_mb = 1500;
 };
 
 class ArmGridPlanner final : public Planner<PlanarArm> {
@@ -40,10 +50,15 @@ class ArmGridPlanner final : public Planner<PlanarArm> {
   explicit ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options = {});
 
   // Each query searches a grid of its own (cells and moves decided afresh). Facts: cells_evaluated
-  // (collision checks of grid cells), moves_checked (grid moves and start/goal joins certified),
-  // moves_uncertified (motions refused because no bound could prove them free near contact),
-  // expanded, seconds, grid.resolution_degrees, grid.cells_per_axis, grid.torus,
-  // grid.evaluation ("lazy"/"eager"), search.algorithm, search.expanded, search.generated.
+  // (collision checks of grid cells), moves_checked (motions given to certify_motion: grid moves
+  // near contact and the start/goal joins), moves_by_clearance (grid moves proved free by their
+  // ends' safe angles alone), moves_uncertified (motions refused because no bound could prove
+  // them free near contact), expanded, seconds, memory_mb (the search tables at their largest),
+  // grid.resolution_degrees, grid.cells_per_axis, grid.torus, grid.evaluation ("lazy"/"eager"),
+  // grid.shortest ("proved": no grid path between the joined cells is shorter; "corridor": the
+  // shortest within the corridor, grid.lower_bound then bounds the grid's shortest from below),
+  // search.algorithm, search.expanded, search.generated; coarse to fine also grid.coarse_degrees,
+  // grid.corridor (the final half-width in coarse cells), grid.rounds.
   // A start or goal in collision is an answer (found = false, why_not names the contact); so is
   // a query of the wrong size. With options.record and two joints, report.cells is the C-space
   // grid (angle k·step is the centre of cell k).
@@ -57,7 +72,7 @@ class ArmGridPlanner final : public Planner<PlanarArm> {
 };
 
 // The registry's arm planner `grid`: options resolution (degrees, 5), torus (true),
-// evaluation (lazy|eager), search, weight.
+// evaluation (lazy|eager), search, weight, coarse, corridor, widenings, memory_mb.
 PlannerEntry<PlanarArm> arm_grid_planner_entry();
 
 // The sum of the joints' rotations along a path: on the torus each joint the short way between

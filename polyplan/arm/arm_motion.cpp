@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -97,6 +98,40 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
   certificate.verdict = MotionCertificate::Verdict::uncertified;
   certificate.at = t;
   return certificate;
+}
+
+JointSafeAngles::JointSafeAngles(const ArmCollisionChecker& checker) : checker_(&checker) {
+  const std::size_t n = checker.arm().joints();
+  JointAngles unit(n, 0.0);
+  std::vector<double> links, pairs;
+  for (std::size_t j = 0; j < n; ++j) {
+    unit.assign(n, 0.0);
+    unit[j] = 1;
+    motion_speeds(checker.arm(), unit, links, pairs);
+    link_speed_.insert(link_speed_.end(), links.begin(), links.end());
+    pair_speed_.insert(pair_speed_.end(), pairs.begin(), pairs.end());
+  }
+}
+
+bool JointSafeAngles::measure(const JointAngles& q, double enough, std::span<double> out) const {
+  const std::size_t n = q.size();
+  // The largest speed of a unit turn is that of the farthest link under joint 0: measuring
+  // clearances up to enough · that speed is enough for every joint.
+  double fastest = 0;
+  for (const double v : link_speed_) fastest = std::max(fastest, v);
+  for (const double v : pair_speed_) fastest = std::max(fastest, v);
+  checker_->clearances(q, clearances_, enough * fastest);
+  if (clearances_.contact) return false;
+  // As safe_step: a clearance c lasts c / v, forever when nothing moves, and not at all when c = 0.
+  const auto lasts = [](double c, double v) { return c == 0 ? 0.0 : v > 0 ? c / v : std::numeric_limits<double>::infinity(); };
+  const std::size_t pairs = clearances_.pairs.size();
+  for (std::size_t j = 0; j < n; ++j) {
+    double step = enough;
+    for (std::size_t k = 0; k < n; ++k) step = std::min(step, lasts(clearances_.links[k], link_speed_[j * n + k]));
+    for (std::size_t p = 0; p < pairs; ++p) step = std::min(step, lasts(clearances_.pairs[p], pair_speed_[j * pairs + p]));
+    out[j] = step;
+  }
+  return true;
 }
 
 bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to) {

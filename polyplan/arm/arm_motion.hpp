@@ -40,6 +40,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace polyplan {
@@ -69,6 +70,25 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
 
 // certify_motion(checker, from, to).free(): false for colliding and for uncertified motions.
 bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to);
+
+// How far each joint alone may turn from a configuration q, either way, with every configuration
+// on the way free: the same motion bound and clearances as certify_motion's first step, for the
+// motion that turns joint j only (links before j stand still). A grid planner measures this once
+// per cell: a move of one step δ along joint j between cells a and b is then free when
+// safe(a)[j] + safe(b)[j] > δ (the two ends' free stretches overlap), or when either end alone
+// reaches the other (safe ≥ δ, the other end being free), with no motion certified.
+class JointSafeAngles {
+ public:
+  explicit JointSafeAngles(const ArmCollisionChecker& checker);
+  // out[j] (out.size() == joints): a lower bound, in radians, of how far joint j may turn; a
+  // value of at least `enough` may be reported as `enough`. False (and out untouched) when q collides.
+  bool measure(const JointAngles& q, double enough, std::span<double> out) const;
+
+ private:
+  const ArmCollisionChecker* checker_;
+  std::vector<double> link_speed_, pair_speed_;  // per joint j: the speeds of a unit turn of j alone
+  mutable ArmClearances clearances_;
+};
 
 // k above (the number of steps between samples). Throws std::invalid_argument when the sizes
 // differ, an angle is not finite, the resolution is not positive and finite, or k would exceed 10^9.

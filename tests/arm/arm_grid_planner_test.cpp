@@ -29,6 +29,24 @@ PlanReport<JointAngles> plan_once(const ArmProblem& p, const ArmQuery& q, const 
   return ArmGridPlanner(p, options).plan(q);
 }
 
+// Four unit links; a wall at x in [2.5, 2.7] with a gap |y| < 0.3: the straight arm fits through
+// it only within 0.11 rad of the x axis (about two 5-degree cells). The start folds link 3 back
+// (joints (1, 0), (2, 0), (1, 0), (0, 0)); the goal stretches the arm straight through the gap, so
+// links 3 and 4 must unfold without sweeping into the wall and thread the gap.
+ArmProblem four_links_and_a_gap() {
+  ArmProblem p;
+  p.source = "four_links_and_a_gap";
+  p.arm.links = {1, 1, 1, 1};
+  const auto box = [](const char* x0, const char* y0, const char* x1, const char* y1) {
+    const Rational a = *parse_rational(x0), b = *parse_rational(y0), c = *parse_rational(x1), d = *parse_rational(y1);
+    return PolygonWithHoles{{{a, b}, {c, b}, {c, d}, {a, d}}, {}};
+  };
+  p.obstacles = {box("2.5", "0.3", "2.7", "5"), box("2.5", "-5", "2.7", "-0.3")};
+  p.obstacle_names = {"obstacles[0]", "obstacles[1]"};
+  p.queries = {{"through the gap", {0, 0, M_PI, 0}, {0, 0, 0, 0}}};
+  return p;
+}
+
 // The planner's promise, checked independently: exact ends, every configuration free, every motion
 // between consecutive ones free at dense samples and certified again, length as the sum of joint
 // rotations.
@@ -92,23 +110,111 @@ TEST(ArmGridPlanner, HardCaseIsFoundOnlyOnTheTorus) {
   EXPECT_NE(on_interval.why_not.find("not connected"), std::string::npos) << on_interval.why_not;
 }
 
-// A query that would evaluate more cells than its budget ends, not found, naming the option; the
-// same query within the budget is found (the hard query at 5 degrees evaluates hundreds of cells).
-TEST(ArmGridPlanner, AQueryStopsAtItsCellBudget) {
+// A query whose tables would outgrow its memory budget ends, not found, naming the budget and the
+// option; the same query within the budget is found. Both searches: the compact one (A*) and the
+// generic one (eager evaluation, about 330 bytes a cell).
+TEST(ArmGridPlanner, AQueryStopsAtItsMemoryBudget) {
   const ArmProblem p = read_arm_problem(arms + "two_link_points.json");
   const ArmQuery& hard = query_named(p, "hard");
   ArmGridOptions small;
-  small.max_cells = 50;
+  small.memory_mb = 0.05;
   const auto stopped = plan_once(p, hard, small);
   EXPECT_FALSE(stopped.found);
-  EXPECT_EQ(stopped.why_not.rfind("stopped after evaluating 50 cells, the budget of one query (option max_cells", 0), 0u)
+  EXPECT_EQ(stopped.why_not.rfind("stopped after evaluating ", 0), 0u) << stopped.why_not;
+  EXPECT_NE(stopped.why_not.find("the memory budget of one query is 0.05 MB (option memory_mb: raise it with --memory_mb N)"),
+            std::string::npos)
       << stopped.why_not;
-  EXPECT_LE(cells_evaluated(stopped), 50);
+  EXPECT_LE(stopped.facts.number("memory_mb"), 0.05);
   small.lazy = false;  // eager evaluation meets the budget before searching
-  EXPECT_FALSE(plan_once(p, hard, small).found);
+  const auto eager = plan_once(p, hard, small);
+  EXPECT_FALSE(eager.found);
+  EXPECT_NE(eager.why_not.find("option memory_mb"), std::string::npos) << eager.why_not;
   const auto within = plan_once(p, hard);
   EXPECT_TRUE(within.found);
-  EXPECT_GT(cells_evaluated(within), 50);
+  EXPECT_GT(within.facts.number("memory_mb"), 0.05);
+}
+
+// The compact search (A*, safe angles, bucket queue) and the generic one (search/'s breadth-first
+// search on GridGraph, every move certified by certify_motion) decide the same cells and moves, and
+// on a grid of equal steps both find a shortest path: their lengths agree (to rounding: paths of
+// equal grid length add their rotations in different orders).
+TEST(ArmGridPlanner, CompactSearchFindsTheLengthsOfTheGenericSearch) {
+  struct Case {
+    ArmProblem problem;
+    double resolution;
+  };
+  std::vector<Case> cases{{read_arm_problem(arms + "two_link_points.json"), 5},
+                          {read_arm_problem(arms + "two_link_points.json"), 2},
+                          {read_arm_problem(arms + "three_link_forest.json"), 10},
+                          {four_links_and_a_gap(), 15}};
+  for (const Case& c : cases)
+    for (const ArmQuery& q : c.problem.queries) {
+      ArmGridOptions compact, generic;
+      compact.resolution_degrees = generic.resolution_degrees = c.resolution;
+      generic.search.algorithm = Search::bfs;
+      const auto a = plan_once(c.problem, q, compact), b = plan_once(c.problem, q, generic);
+      ASSERT_EQ(a.found, b.found) << c.problem.source << " " << q.name;
+      if (!a.found) continue;
+      expect_valid(c.problem, q, a, true);
+      EXPECT_NEAR(a.length, b.length, 1e-12) << c.problem.source << " " << q.name << " at " << c.resolution;
+      EXPECT_EQ(a.facts.text("grid.shortest"), "proved");
+      EXPECT_GT(a.facts.count("moves_by_clearance"), 0) << "most moves are proved by their ends' safe angles";
+    }
+}
+
+// Coarse to fine on the 3R forest at 2 degrees, the corridor forced (exact_cells 0): its path is
+// valid, no shorter than the whole grid's shortest (searched with coarse 0), and the lower bound
+// it reports is one; when it says "proved", it is that shortest.
+TEST(ArmGridPlanner, CorridorPathsAreValidAndTheirBoundsAreBounds) {
+  const ArmProblem p = read_arm_problem(arms + "three_link_forest.json");
+  const ArmQuery& q = p.queries.front();
+  ArmGridOptions whole;
+  whole.resolution_degrees = 2;
+  whole.coarse_degrees = 0;
+  const auto best = plan_once(p, q, whole);
+  expect_valid(p, q, best, true);
+  EXPECT_EQ(best.facts.text("grid.shortest"), "proved");
+  for (const int radius : {1, 2, 4}) {
+    ArmGridOptions corridor = whole;
+    corridor.coarse_degrees = 5;
+    corridor.exact_cells = 0;
+    corridor.corridor = radius;
+    const auto plan = plan_once(p, q, corridor);
+    ASSERT_TRUE(plan.found) << "radius " << radius << ": " << plan.why_not;
+    expect_valid(p, q, plan, true);
+    EXPECT_EQ(plan.facts.number("grid.coarse_degrees"), 5);
+    EXPECT_GE(plan.length, best.length - 1e-12) << "radius " << radius;
+    if (plan.facts.text("grid.shortest") == "proved") {
+      EXPECT_NEAR(plan.length, best.length, 1e-12) << "radius " << radius;
+    } else {
+      EXPECT_EQ(plan.facts.text("grid.shortest"), "corridor");
+      // The bound covers the grid part (the joins are the same cells at the same resolution).
+      EXPECT_LE(plan.facts.number("grid.lower_bound"), best.length) << "radius " << radius;
+    }
+    EXPECT_LT(plan.facts.count("cells_evaluated"), best.facts.count("cells_evaluated") + 30000) << "radius " << radius;
+  }
+  // A corridor wide enough holds every cell the whole search needed: the proof comes with it.
+  ArmGridOptions wide = whole;
+  wide.coarse_degrees = 5;
+  wide.exact_cells = 0;
+  wide.corridor = 36;
+  const auto proved = plan_once(p, q, wide);
+  EXPECT_EQ(proved.facts.text("grid.shortest"), "proved");
+  EXPECT_NEAR(proved.length, best.length, 1e-12);
+}
+
+// The 4R forest at 1 degree (1.7e10 cells): coarse to fine answers with a valid path, shorter than
+// at 5 degrees, in a small part of the memory an exact search needs.
+TEST(ArmGridPlanner, FourLinkForestAtOneDegreeThroughACorridor) {
+  const ArmProblem p = read_arm_problem(arms + "four_link_forest.json");
+  const ArmQuery& q = p.queries.front();
+  ArmGridOptions fine;
+  fine.resolution_degrees = 1;
+  const auto plan = plan_once(p, q, fine);
+  expect_valid(p, q, plan, true);
+  EXPECT_EQ(plan.facts.text("grid.shortest"), "corridor");
+  EXPECT_LT(plan.length, 8.0820061220085) << "the 5-degree grid's shortest";
+  EXPECT_LT(plan.facts.number("memory_mb"), 400);
 }
 
 TEST(ArmGridPlanner, LazyAndEagerFindPathsOfEqualCostAndLazyEvaluatesLess) {
@@ -149,24 +255,6 @@ TEST(ArmGridPlanner, ForestArmsFromSeed001Plan) {
     expect_valid(p, p.queries.front(), plan, true);
     EXPECT_GE(plan.length, total_angular_distance(p.queries.front().start, p.queries.front().goal) - 1e-9) << file;
   }
-}
-
-// Four unit links; a wall at x in [2.5, 2.7] with a gap |y| < 0.3: the straight arm fits through
-// it only within 0.11 rad of the x axis (about two 5-degree cells). The start folds link 3 back
-// (joints (1, 0), (2, 0), (1, 0), (0, 0)); the goal stretches the arm straight through the gap, so
-// links 3 and 4 must unfold without sweeping into the wall and thread the gap.
-ArmProblem four_links_and_a_gap() {
-  ArmProblem p;
-  p.source = "four_links_and_a_gap";
-  p.arm.links = {1, 1, 1, 1};
-  const auto box = [](const char* x0, const char* y0, const char* x1, const char* y1) {
-    const Rational a = *parse_rational(x0), b = *parse_rational(y0), c = *parse_rational(x1), d = *parse_rational(y1);
-    return PolygonWithHoles{{{a, b}, {c, b}, {c, d}, {a, d}}, {}};
-  };
-  p.obstacles = {box("2.5", "0.3", "2.7", "5"), box("2.5", "-5", "2.7", "-0.3")};
-  p.obstacle_names = {"obstacles[0]", "obstacles[1]"};
-  p.queries = {{"through the gap", {0, 0, M_PI, 0}, {0, 0, 0, 0}}};
-  return p;
 }
 
 TEST(ArmGridPlanner, FourLinksThreadANarrowGap) {

@@ -456,3 +456,68 @@ TEST(ArmData, ForestsAreSeed001sArmsAndTheirStartAndGoalAreFree) {
   }
 }
 
+
+// ---------------------------------------------------------------- single-joint safe angles
+
+// One unit segment link at angle 0 and a point at distance 0.5 in direction 0.3 rad: the link
+// first touches it after turning 0.3 rad counter-clockwise. The safe angle is the clearance
+// (0.5·sin 0.3, the point's distance to the link) over the tip's speed (1 per radian): a lower
+// bound of 0.3, and exactly that value up to the safety margin.
+TEST(JointSafeAngles, OneLinkAndAPoint) {
+  ArmProblem p;
+  p.arm.links = {1};
+  p.points = {{0.5 * std::cos(0.3), 0.5 * std::sin(0.3)}};
+  const ArmCollisionChecker checker(p);
+  const JointSafeAngles safe(checker);
+  std::vector<double> out(1);
+  ASSERT_TRUE(safe.measure({0.0}, 10, out));
+  EXPECT_NEAR(out[0], 0.5 * std::sin(0.3), 1e-10);
+  EXPECT_LT(out[0], 0.3);
+  // Capped: a clearance beyond what the caller needs is reported as that need.
+  ASSERT_TRUE(safe.measure({0.0}, 0.01, out));
+  EXPECT_EQ(out[0], 0.01);
+  EXPECT_FALSE(safe.measure({0.3}, 10, out)) << "the link lies on the point";
+}
+
+// Two unit links, a point near link 2 only: joint 2 moves link 2 at radius 1, joint 1 at radius 2,
+// so joint 1's safe angle is half of joint 2's.
+TEST(JointSafeAngles, TheFartherAJointFromTheTipTheSmallerItsAngle) {
+  ArmProblem p;
+  p.arm.links = {1, 1};
+  p.points = {{1.5, 0.1}};
+  const ArmCollisionChecker checker(p);
+  const JointSafeAngles safe(checker);
+  std::vector<double> out(2);
+  ASSERT_TRUE(safe.measure({0.0, 0.0}, 10, out));
+  EXPECT_NEAR(out[1], 0.1, 1e-10);
+  EXPECT_NEAR(out[0], 0.05, 1e-10);
+}
+
+// On the shipped 4R forest, at random free configurations: turning any one joint by its safe angle
+// either way is a motion certify_motion proves free, and dense samples along it are free.
+TEST(JointSafeAngles, EveryStretchIsFreeOnTheForest) {
+  const ArmProblem p = read_arm_problem(arm_data_file("four_link_forest.json"));
+  const ArmCollisionChecker checker(p);
+  const JointSafeAngles safe(checker);
+  std::mt19937 random(14);
+  std::uniform_real_distribution<double> angle(0, two_pi);
+  std::vector<double> out(4);
+  int measured = 0;
+  for (int trial = 0; trial < 300; ++trial) {
+    const JointAngles q{angle(random), angle(random), angle(random), angle(random)};
+    if (!safe.measure(q, 1.0, out)) {
+      EXPECT_FALSE(checker.is_free(q));
+      continue;
+    }
+    ++measured;
+    for (std::size_t j = 0; j < 4; ++j)
+      for (const double sign : {-1.0, 1.0}) {
+        if (out[j] == 0) continue;
+        JointAngles to = q;
+        to[j] += sign * out[j] * (1 - 1e-9);
+        EXPECT_TRUE(certify_motion(checker, q, to).free()) << "trial " << trial << " joint " << j;
+        EXPECT_TRUE(samples_free(checker, q, to, out[j] / 200)) << "trial " << trial << " joint " << j;
+      }
+  }
+  EXPECT_GT(measured, 30);
+}
