@@ -23,6 +23,7 @@ std::string report_line(const std::string& query, const PlanReport<Configuration
   if (facts.contains("roadmap.vertices") && facts.contains("roadmap.edges"))
     line += ", roadmap " + std::to_string(facts.count("roadmap.vertices")) + " vertices " +
             std::to_string(facts.count("roadmap.edges")) + " edges";
+  if (facts.contains("note")) line += "; " + facts.text("note");
   return line;
 }
 

@@ -409,7 +409,16 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   p.keep_path(query, result.path);
   const bool proved = result.cost_steps <= result.outside_bound_steps;
   p.report.facts.set("grid.shortest", proved ? "proved" : "corridor");
-  if (!proved) p.report.facts.set("grid.lower_bound", static_cast<double>(result.outside_bound_steps) * grid.step);
+  if (!proved) {
+    const double bound = static_cast<double>(result.outside_bound_steps) * grid.step;
+    p.report.facts.set("grid.lower_bound", bound);
+    char note[200];
+    std::snprintf(note, sizeof note,
+                  "the shortest within %d coarse cells of the %s-degree path; the grid's shortest, not proved, is at least %.6f "
+                  "rad between the same cells (option coarse 0 searches the whole grid)",
+                  radius, degrees_text(options.coarse_degrees).c_str(), bound);
+    p.report.facts.set("note", note);
+  }
 }
 
 }  // namespace

@@ -28,6 +28,7 @@ using FactValue = std::variant<bool, std::int64_t, double, std::string>;
 //   roadmap.kind, roadmap.vertices, roadmap.edges, roadmap.seconds   the graph built once
 //   search.algorithm, search.expanded, search.generated, search.seconds   the graph search
 //   query_seconds   the whole query
+//   note   a remark on the answer that the command line prints after its summary line
 class Facts {
  public:
   // Integers become counts, floating point measures, text words. Replaces an earlier value.
