@@ -103,6 +103,8 @@ std::string cell(const Run& r) {
     return std::string(t);
   };
   std::string outcome = "no path";
+  const std::string why = a.value("why_not", "");
+  if (why.rfind("stopped after", 0) == 0) outcome = "stopped at the budget";
   if (a.value("found", false)) {
     std::snprintf(text, sizeof text, "%.3f", a["length"].get<double>());
     outcome = text;

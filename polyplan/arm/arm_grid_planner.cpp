@@ -167,6 +167,24 @@ struct Planning {
     return "stopped after " + what + ": the memory budget of one query is " + degrees_text(options.memory_mb) +
            " MB (option memory_mb: raise it with --memory_mb N)";
   }
+  std::string no_join(bool start_joined) const {
+    return std::string("no grid cell next to the ") + (start_joined ? "goal" : "start") +
+           " is reached from it by a certified free motion; try a finer resolution";
+  }
+  // With options.record and two joints, the C-space grid as the search left it (cell k centred on
+  // the angle k·step), for the picture.
+  template <class StateOf>
+  void keep_cells(StateOf state_of) {
+    if (!record.record || joints != 2) return;
+    auto cells = std::make_shared<CellGrid>();
+    cells->columns = cells->rows = static_cast<std::size_t>(grid.n);
+    cells->x0 = cells->y0 = -grid.step / 2;
+    cells->cell_width = cells->cell_height = grid.step;
+    cells->states.reserve(static_cast<std::size_t>(grid.n * grid.n));
+    for (GridCoordinate y = 0; y < grid.n; ++y)
+      for (GridCoordinate x = 0; x < grid.n; ++x) cells->states.push_back(static_cast<std::uint8_t>(state_of(x, y)));
+    report.cells = std::move(cells);
+  }
   std::string not_connected() const {
     return std::string("start and goal are not connected on the ") + (options.torus ? "torus" : "interval") + " grid at " +
            degrees_text(options.resolution_degrees) + " degrees";
@@ -208,14 +226,7 @@ void plan_on_grid_graph(Planning& p, const ArmQuery& query) {
   const auto keep_cells = [&]() {
     p.cells_evaluated = g.cells_evaluated();
     p.peak_mb = static_cast<double>(p.cells_evaluated) * bytes_per_cell / 1e6;
-    if (!p.record.record || p.joints != 2) return;
-    auto cells = std::make_shared<CellGrid>();
-    cells->columns = cells->rows = static_cast<std::size_t>(grid.n);
-    cells->x0 = cells->y0 = -grid.step / 2;  // cell k is centred on the angle k·step
-    cells->cell_width = cells->cell_height = grid.step;
-    cells->states.resize(g.cell_count());
-    for (GridCell c = 0; c < g.cell_count(); ++c) cells->states[c] = static_cast<std::uint8_t>(g.state(c));
-    p.report.cells = std::move(cells);
+    p.keep_cells([&](GridCoordinate x, GridCoordinate y) { return g.state(g.cell({x, y})); });
   };
   std::optional<std::vector<GridCoordinate>> start, goal;
   SearchResult<GridCell> result;
@@ -236,8 +247,7 @@ void plan_on_grid_graph(Planning& p, const ArmQuery& query) {
   }
   keep_cells();
   if (!start || !goal) {
-    p.report.why_not = std::string("no grid cell next to the ") + (start ? "goal" : "start") +
-                       " is reached from it by a certified free motion; try a finer resolution";
+    p.report.why_not = p.no_join(start.has_value());
     return;
   }
   p.expanded = result.expanded;
@@ -307,8 +317,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   const auto start = join_to_grid(grid, p.checker, query.start, p.motions);
   const auto goal = join_to_grid(grid, p.checker, query.goal, p.motions);
   if (!start || !goal) {
-    p.report.why_not = std::string("no grid cell next to the ") + (start ? "goal" : "start") +
-                       " is reached from it by a certified free motion; try a finer resolution";
+    p.report.why_not = p.no_join(start.has_value());
     return;
   }
   ArmGridSearchProblem searching;
@@ -384,17 +393,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
     p.report.facts.set("grid.rounds", rounds);
   }
   for (const auto& c : result.expanded_order) p.report.expanded.push_back(grid.configuration(c));
-  if (p.record.record && p.joints == 2) {
-    auto cells = std::make_shared<CellGrid>();
-    cells->columns = cells->rows = static_cast<std::size_t>(grid.n);
-    cells->x0 = cells->y0 = -grid.step / 2;  // cell k is centred on the angle k·step
-    cells->cell_width = cells->cell_height = grid.step;
-    cells->states.reserve(static_cast<std::size_t>(grid.n * grid.n));
-    for (GridCoordinate y = 0; y < grid.n; ++y)
-      for (GridCoordinate x = 0; x < grid.n; ++x)
-        cells->states.push_back(static_cast<std::uint8_t>(search.state(std::array{x, y})));
-    p.report.cells = std::move(cells);
-  }
+  p.keep_cells([&](GridCoordinate x, GridCoordinate y) { return search.state(std::array{x, y}); });
   if (result.over_budget) {
     p.report.why_not = p.budget_message("evaluating " + std::to_string(result.cells_evaluated) + " cells");
     return;
