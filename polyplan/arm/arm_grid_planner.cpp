@@ -309,6 +309,57 @@ class Corridor {
   std::unordered_map<std::uint64_t, std::int64_t> distance_;
 };
 
+void count(Planning& p, const ArmGridSearchResult& r) {
+  p.cells_evaluated += r.cells_evaluated;
+  p.moves_by_clearance += r.moves_by_clearance;
+  p.motions.checked += r.moves_certified;
+  p.motions.uncertified += r.moves_uncertified;
+  p.peak_mb = std::max(p.peak_mb, static_cast<double>(r.peak_bytes) / 1e6);
+}
+
+// A coarse grid's path, to guide a finer search, and how many cells searching its whole grid
+// evaluates (or would: predicted from the level above).
+struct GuidePath {
+  std::vector<std::vector<GridCoordinate>> path;
+  std::int64_t n = 0;
+  double predicted_cells = 0;
+};
+
+bool divides_the_circle(double degrees) {
+  const double cells = 360 / degrees;
+  return cells >= 3 && std::fabs(cells - std::round(cells)) <= 1e-9 * cells;
+}
+
+// The path at `degrees`: its whole grid searched, or, when that is predicted too costly, only a
+// corridor around the path at twice the step (which is found the same way, up to 45 degrees).
+// Only a guide: whether it is the shortest does not matter, only that it finds the way.
+std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, const ArmGridSearchProblem& like, double degrees) {
+  const auto n = static_cast<std::int64_t>(std::llround(360 / degrees));
+  const AngleGrid grid{n, two_pi / static_cast<double>(n), p.options.torus};
+  const auto start = join_to_grid(grid, p.checker, query.start, p.motions);
+  const auto goal = join_to_grid(grid, p.checker, query.goal, p.motions);
+  if (!start || !goal) return std::nullopt;
+  std::optional<GuidePath> coarser;
+  if (2 * degrees <= 45 && divides_the_circle(2 * degrees)) coarser = guide_path(p, query, like, 2 * degrees);
+  ArmGridSearchProblem level = like;
+  level.cells_per_axis = n;
+  level.start = *start;
+  level.goal = *goal;
+  level.record_expanded = false;
+  const double predicted = coarser ? coarser->predicted_cells * std::pow(2.0, static_cast<double>(p.joints)) : 0;
+  std::optional<Corridor> corridor;
+  if (coarser && predicted > static_cast<double>(p.options.exact_cells)) {
+    corridor.emplace(coarser->path, coarser->n, n, p.options.torus);
+    corridor->set_radius(p.options.corridor);
+    level.in_corridor = [&](std::span<const std::int32_t> x) { return corridor->contains(x); };
+  }
+  ArmGridSearch search(p.checker, level);
+  const ArmGridSearchResult found = search.run();
+  count(p, found);
+  if (!found.found) return std::nullopt;
+  return GuidePath{found.path, n, corridor ? predicted : static_cast<double>(found.cells_evaluated)};
+}
+
 // The compact lazy search (arm_grid_search.hpp), coarse to fine when the grid is finer than
 // options.coarse_degrees.
 void plan_compactly(Planning& p, const ArmQuery& query) {
@@ -329,37 +380,17 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   searching.memory_bytes = static_cast<std::size_t>(options.memory_mb * 1e6);
   searching.record_expanded = p.record.record;
 
-  // Coarse to fine: the coarse grid's path (its whole grid searched), when there is one.
+  // Coarse to fine: the coarse grid's path, when there is one. The fine search over the whole grid
+  // would evaluate about as many cells as the coarse one times the fine cells a coarse cell holds:
+  // only when that is too many is the fine grid searched in a corridor.
   std::optional<Corridor> corridor;
   if (options.coarse_degrees > options.resolution_degrees) {
-    ArmGridOptions coarse = options;
-    coarse.resolution_degrees = options.coarse_degrees;
-    coarse.coarse_degrees = 0;
-    const std::int64_t coarse_n = cells_per_axis(coarse);
-    const AngleGrid coarse_grid{coarse_n, two_pi / static_cast<double>(coarse_n), options.torus};
-    const auto coarse_start = join_to_grid(coarse_grid, p.checker, query.start, p.motions);
-    const auto coarse_goal = join_to_grid(coarse_grid, p.checker, query.goal, p.motions);
     p.report.facts.set("grid.coarse_degrees", options.coarse_degrees);
-    if (coarse_start && coarse_goal) {
-      ArmGridSearchProblem first = searching;
-      first.cells_per_axis = coarse_n;
-      first.start = *coarse_start;
-      first.goal = *coarse_goal;
-      first.record_expanded = false;
-      ArmGridSearch coarse_search(p.checker, first);
-      const ArmGridSearchResult found = coarse_search.run();
-      p.cells_evaluated += found.cells_evaluated;
-      p.moves_by_clearance += found.moves_by_clearance;
-      p.motions.checked += found.moves_certified;
-      p.motions.uncertified += found.moves_uncertified;
-      p.peak_mb = static_cast<double>(found.peak_bytes) / 1e6;
-      // The fine search, over the whole grid, would evaluate about as many cells as the coarse one
-      // did times the cells a coarse cell holds: when that is small, search the whole grid.
-      const double predicted = static_cast<double>(found.cells_evaluated) *
-                               std::pow(static_cast<double>(grid.n) / static_cast<double>(coarse_n), static_cast<double>(p.joints));
+    if (const auto coarse = guide_path(p, query, searching, options.coarse_degrees)) {
+      const double predicted = coarse->predicted_cells * std::pow(static_cast<double>(grid.n) / static_cast<double>(coarse->n),
+                                                                  static_cast<double>(p.joints));
       p.report.facts.set("grid.predicted_cells", predicted);
-      if (found.found && predicted > static_cast<double>(options.exact_cells))
-        corridor.emplace(found.path, coarse_n, grid.n, options.torus);
+      if (predicted > static_cast<double>(options.exact_cells)) corridor.emplace(coarse->path, coarse->n, grid.n, options.torus);
     }
   }
 
@@ -382,10 +413,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
     if (proved || result.over_budget || rounds > options.widenings) break;
     radius *= 2;
   }
-  p.cells_evaluated += result.cells_evaluated;
-  p.moves_by_clearance += result.moves_by_clearance;
-  p.motions.checked += result.moves_certified;
-  p.motions.uncertified += result.moves_uncertified;
+  count(p, result);
   p.expanded = result.expanded;
   p.generated = result.generated;
   if (corridor) {
