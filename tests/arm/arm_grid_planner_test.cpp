@@ -193,6 +193,15 @@ TEST(ArmGridPlanner, CorridorPathsAreValidAndTheirBoundsAreBounds) {
     }
     EXPECT_LT(plan.facts.count("cells_evaluated"), best.facts.count("cells_evaluated") + 30000) << "radius " << radius;
   }
+  // With a tiny exact_cells every coarse level is guided by the next coarser one too (40, 20, 10
+  // and 5 degrees, each in a corridor): still a valid path, never shorter than the shortest.
+  ArmGridOptions cascade = whole;
+  cascade.coarse_degrees = 5;
+  cascade.exact_cells = 1000;
+  const auto guided = plan_once(p, q, cascade);
+  expect_valid(p, q, guided, true);
+  EXPECT_GE(guided.length, best.length - 1e-12);
+  EXPECT_LT(guided.facts.count("cells_evaluated"), best.facts.count("cells_evaluated"));
   // A corridor wide enough holds every cell the whole search needed: the proof comes with it.
   ArmGridOptions wide = whole;
   wide.coarse_degrees = 5;
