@@ -97,23 +97,27 @@ JointAngles normalized(const JointAngles& q) {
   return out;
 }
 
-std::string degrees_text(double degrees) {
+std::string number_text(double x) {
   char text[32];
-  std::snprintf(text, sizeof text, "%g", degrees);
+  std::snprintf(text, sizeof text, "%g", x);
   return text;
 }
 
-std::int64_t cells_per_axis(const ArmGridOptions& options) {
-  const double cells = 360.0 / options.resolution_degrees;
-  if (!(options.resolution_degrees > 0) || !(cells <= 1 << 30))
-    throw std::invalid_argument("the grid resolution " + degrees_text(options.resolution_degrees) +
-                                " degrees is not a positive angle of at least 360/2^30 degrees");
+// The cells a step of `degrees` makes of the circle: nothing unless it divides 360 into at least 3.
+std::optional<std::int64_t> cells_on_the_circle(double degrees) {
+  const double cells = 360.0 / degrees;
+  if (!(degrees > 0) || !(cells <= 1 << 30)) return std::nullopt;
   const auto n = static_cast<std::int64_t>(std::llround(cells));
-  if (n < 3 ||
-      std::fabs(cells - static_cast<double>(n)) > 1e-9 * cells)
-    throw std::invalid_argument("the grid resolution " + degrees_text(options.resolution_degrees) +
-                                " degrees must divide 360 into at least 3 cells");
+  if (n < 3 || std::fabs(cells - static_cast<double>(n)) > 1e-9 * cells) return std::nullopt;
   return n;
+}
+
+std::int64_t cells_per_axis(double degrees) {
+  if (!(degrees > 0) || !(360.0 / degrees <= 1 << 30))
+    throw std::invalid_argument("the grid resolution " + number_text(degrees) +
+                                " degrees is not a positive angle of at least 360/2^30 degrees");
+  if (const auto n = cells_on_the_circle(degrees)) return *n;
+  throw std::invalid_argument("the grid resolution " + number_text(degrees) + " degrees must divide 360 into at least 3 cells");
 }
 
 }  // namespace
@@ -128,21 +132,17 @@ double arm_path_length(const std::vector<JointAngles>& path, bool torus) {
 }
 
 ArmGridPlanner::ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options)
-    : problem_(&problem), options_(options), cells_per_axis_(cells_per_axis(options)), checker_(problem) {
+    : problem_(&problem), options_(options), cells_per_axis_(cells_per_axis(options.resolution_degrees)), checker_(problem) {
   if (problem.arm.joints() > GridGraph::max_dimensions)
     throw std::invalid_argument("an arm of " + std::to_string(problem.arm.joints()) + " joints needs a grid of as many axes; it has at most " +
                                 std::to_string(GridGraph::max_dimensions));
   const double cells = std::pow(static_cast<double>(cells_per_axis_), static_cast<double>(problem.arm.joints()));
   if (!(cells < 0x1p62))
-    throw std::invalid_argument("a grid of " + degrees_text(cells) + " cells (" + std::to_string(cells_per_axis_) + " per joint, " +
+    throw std::invalid_argument("a grid of " + number_text(cells) + " cells (" + std::to_string(cells_per_axis_) + " per joint, " +
                                 std::to_string(problem.arm.joints()) + " joints) is too many to number; use a coarser resolution");
   if (!options_.lazy && cells > static_cast<double>(std::uint64_t{1} << 24))
-    throw std::invalid_argument("eager evaluation of " + degrees_text(cells) + " cells is too much (at most 2^24); use lazy evaluation");
-  if (options_.coarse_degrees != 0) {
-    ArmGridOptions coarse = options_;
-    coarse.resolution_degrees = options_.coarse_degrees;
-    cells_per_axis(coarse);  // the same rule: a positive angle that divides 360
-  }
+    throw std::invalid_argument("eager evaluation of " + number_text(cells) + " cells is too much (at most 2^24); use lazy evaluation");
+  if (options_.coarse_degrees != 0) cells_per_axis(options_.coarse_degrees);  // the same rule: it divides 360
   if (options_.corridor < 0 || options_.widenings < 0)
     throw std::invalid_argument("the corridor's half-width and the number of widenings must not be negative");
   if (!(options_.memory_mb > 0) || !std::isfinite(options_.memory_mb))
@@ -164,7 +164,7 @@ struct Planning {
   double peak_mb = 0;
 
   std::string budget_message(const std::string& what) const {
-    return "stopped after " + what + ": the memory budget of one query is " + degrees_text(options.memory_mb) +
+    return "stopped after " + what + ": the memory budget of one query is " + number_text(options.memory_mb) +
            " MB (option memory_mb: raise it with --memory_mb N)";
   }
   std::string no_join(bool start_joined) const {
@@ -187,7 +187,7 @@ struct Planning {
   }
   std::string not_connected() const {
     return std::string("start and goal are not connected on the ") + (options.torus ? "torus" : "interval") + " grid at " +
-           degrees_text(options.resolution_degrees) + " degrees";
+           number_text(options.resolution_degrees) + " degrees";
   }
   void keep_path(const ArmQuery& query, const std::vector<std::vector<GridCoordinate>>& cells) {
     report.found = true;
@@ -299,7 +299,6 @@ class Corridor {
     }
     return it->second <= radius_;
   }
-  std::size_t coarse_cells_seen() const { return distance_.size(); }
 
  private:
   std::vector<std::vector<GridCoordinate>> path_;
@@ -325,35 +324,51 @@ struct GuidePath {
   double predicted_cells = 0;
 };
 
-bool divides_the_circle(double degrees) {
-  const double cells = 360 / degrees;
-  return cells >= 3 && std::fabs(cells - std::round(cells)) <= 1e-9 * cells;
+// The search of one level's grid (n cells per joint) between the cells the start and goal join,
+// or nothing when one of them joins no cell.
+std::optional<ArmGridSearchProblem> level_problem(Planning& p, const ArmQuery& query, std::int64_t n, bool& start_joined) {
+  const AngleGrid grid{n, two_pi / static_cast<double>(n), p.options.torus};
+  const auto start = join_to_grid(grid, p.checker, query.start, p.motions);
+  start_joined = start.has_value();
+  const auto goal = join_to_grid(grid, p.checker, query.goal, p.motions);
+  if (!start || !goal) return std::nullopt;
+  ArmGridSearchProblem level;
+  level.cells_per_axis = n;
+  level.torus = p.options.torus;
+  level.start = *start;
+  level.goal = *goal;
+  level.use_heuristic = p.options.search.algorithm == Search::astar;
+  level.memory_bytes = static_cast<std::size_t>(p.options.memory_mb * 1e6);
+  return level;
+}
+
+// Whether a grid of n cells per joint is searched only near the guide's path: when its whole
+// search is predicted (the guide's cells times the cells one guide cell holds) above exact_cells.
+std::optional<Corridor> corridor_for(const Planning& p, const std::optional<GuidePath>& guide, std::int64_t n, double& predicted) {
+  predicted = 0;
+  if (!guide) return std::nullopt;
+  predicted = guide->predicted_cells * std::pow(static_cast<double>(n) / static_cast<double>(guide->n), static_cast<double>(p.joints));
+  if (predicted <= static_cast<double>(p.options.exact_cells)) return std::nullopt;
+  return Corridor(guide->path, guide->n, n, p.options.torus);
 }
 
 // The path at `degrees`: its whole grid searched, or, when that is predicted too costly, only a
 // corridor around the path at twice the step (which is found the same way, up to 45 degrees).
 // Only a guide: whether it is the shortest does not matter, only that it finds the way.
-std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, const ArmGridSearchProblem& like, double degrees) {
-  const auto n = static_cast<std::int64_t>(std::llround(360 / degrees));
-  const AngleGrid grid{n, two_pi / static_cast<double>(n), p.options.torus};
-  const auto start = join_to_grid(grid, p.checker, query.start, p.motions);
-  const auto goal = join_to_grid(grid, p.checker, query.goal, p.motions);
-  if (!start || !goal) return std::nullopt;
+std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, double degrees) {
+  const std::int64_t n = cells_per_axis(degrees);
+  bool start_joined = false;
+  auto level = level_problem(p, query, n, start_joined);
+  if (!level) return std::nullopt;
   std::optional<GuidePath> coarser;
-  if (2 * degrees <= 45 && divides_the_circle(2 * degrees)) coarser = guide_path(p, query, like, 2 * degrees);
-  ArmGridSearchProblem level = like;
-  level.cells_per_axis = n;
-  level.start = *start;
-  level.goal = *goal;
-  level.record_expanded = false;
-  const double predicted = coarser ? coarser->predicted_cells * std::pow(2.0, static_cast<double>(p.joints)) : 0;
-  std::optional<Corridor> corridor;
-  if (coarser && predicted > static_cast<double>(p.options.exact_cells)) {
-    corridor.emplace(coarser->path, coarser->n, n, p.options.torus);
+  if (2 * degrees <= 45 && cells_on_the_circle(2 * degrees)) coarser = guide_path(p, query, 2 * degrees);
+  double predicted = 0;
+  std::optional<Corridor> corridor = corridor_for(p, coarser, n, predicted);
+  if (corridor) {
     corridor->set_radius(p.options.corridor);
-    level.in_corridor = [&](std::span<const std::int32_t> x) { return corridor->contains(x); };
+    level->in_corridor = [&](std::span<const std::int32_t> x) { return corridor->contains(x); };
   }
-  ArmGridSearch search(p.checker, level);
+  ArmGridSearch search(p.checker, *level);
   const ArmGridSearchResult found = search.run();
   count(p, found);
   if (!found.found) return std::nullopt;
@@ -365,36 +380,27 @@ std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, const Ar
 void plan_compactly(Planning& p, const ArmQuery& query) {
   const ArmGridOptions& options = p.options;
   const AngleGrid& grid = p.grid;
-  const auto start = join_to_grid(grid, p.checker, query.start, p.motions);
-  const auto goal = join_to_grid(grid, p.checker, query.goal, p.motions);
-  if (!start || !goal) {
-    p.report.why_not = p.no_join(start.has_value());
+  bool start_joined = false;
+  auto searching = level_problem(p, query, grid.n, start_joined);
+  if (!searching) {
+    p.report.why_not = p.no_join(start_joined);
     return;
   }
-  ArmGridSearchProblem searching;
-  searching.cells_per_axis = grid.n;
-  searching.torus = options.torus;
-  searching.start = *start;
-  searching.goal = *goal;
-  searching.use_heuristic = options.search.algorithm == Search::astar;
-  searching.memory_bytes = static_cast<std::size_t>(options.memory_mb * 1e6);
-  searching.record_expanded = p.record.record;
+  searching->record_expanded = p.record.record;
 
-  // Coarse to fine: the coarse grid's path, when there is one. The fine search over the whole grid
-  // would evaluate about as many cells as the coarse one times the fine cells a coarse cell holds:
-  // only when that is too many is the fine grid searched in a corridor.
+  // Coarse to fine: the coarse grid's path, when there is one, and only when the whole fine grid
+  // is predicted too costly.
   std::optional<Corridor> corridor;
   if (options.coarse_degrees > options.resolution_degrees) {
     p.report.facts.set("grid.coarse_degrees", options.coarse_degrees);
-    if (const auto coarse = guide_path(p, query, searching, options.coarse_degrees)) {
-      const double predicted = coarse->predicted_cells * std::pow(static_cast<double>(grid.n) / static_cast<double>(coarse->n),
-                                                                  static_cast<double>(p.joints));
+    if (const auto coarse = guide_path(p, query, options.coarse_degrees)) {
+      double predicted = 0;
+      corridor = corridor_for(p, coarse, grid.n, predicted);
       p.report.facts.set("grid.predicted_cells", predicted);
-      if (predicted > static_cast<double>(options.exact_cells)) corridor.emplace(coarse->path, coarse->n, grid.n, options.torus);
     }
   }
 
-  ArmGridSearch search(p.checker, searching);
+  ArmGridSearch search(p.checker, *searching);
   ArmGridSearchResult result;
   int radius = options.corridor, rounds = 0;
   for (;;) {
@@ -429,7 +435,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   if (!result.found) {
     p.report.why_not = corridor && result.outside_bound_steps != std::numeric_limits<std::int64_t>::max()
                            ? p.not_connected() + " within " + std::to_string(radius) + " coarse cells of the " +
-                                 degrees_text(options.coarse_degrees) + "-degree path (option corridor widens it)"
+                                 number_text(options.coarse_degrees) + "-degree path (option corridor widens it)"
                            : p.not_connected();
     return;
   }
@@ -443,7 +449,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
     std::snprintf(note, sizeof note,
                   "the shortest within %d coarse cells of the %s-degree path; the grid's shortest, not proved, is at least %.6f "
                   "rad between the same cells (option coarse 0 searches the whole grid)",
-                  radius, degrees_text(options.coarse_degrees).c_str(), bound);
+                  radius, number_text(options.coarse_degrees).c_str(), bound);
     p.report.facts.set("note", note);
   }
 }

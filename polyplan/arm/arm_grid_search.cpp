@@ -125,10 +125,7 @@ struct ArmGridSearch::Impl {
       b = blocks[it->second].get();
     } else {
       if (!allocate) return nullptr;
-      if (bytes() + block_bytes > problem.memory_bytes) {
-        result.over_budget = true;
-        return nullptr;
-      }
+      if (!fits(block_bytes)) return nullptr;
       auto fresh = std::make_unique<Block>();
       fresh->g.assign(cells_per_block, unreached);
       fresh->flags.assign(cells_per_block, 0);
@@ -176,8 +173,9 @@ struct ArmGridSearch::Impl {
     auto& bucket = buckets[k];
     if (bucket.size() == bucket.capacity()) {
       const std::size_t grown = std::max<std::size_t>(64, 2 * bucket.capacity());
-      queue_bytes += (grown - bucket.capacity()) * sizeof(std::uint64_t);
-      if (!within_budget()) return false;
+      const std::size_t more = (grown - bucket.capacity()) * sizeof(std::uint64_t);
+      if (!fits(more)) return false;
+      queue_bytes += more;
       bucket.reserve(grown);
     }
     bucket.push_back(cell);
@@ -199,9 +197,12 @@ struct ArmGridSearch::Impl {
     result.peak_bytes = kept_peak;
   }
 
-  bool within_budget() {
-    result.peak_bytes = std::max(result.peak_bytes, bytes());
-    if (bytes() <= problem.memory_bytes) return true;
+  // Whether `more` bytes fit within the budget; when not, the run ends over budget.
+  bool fits(std::size_t more) {
+    if (bytes() + more <= problem.memory_bytes) {
+      result.peak_bytes = std::max(result.peak_bytes, bytes() + more);
+      return true;
+    }
     result.over_budget = true;
     return false;
   }

@@ -111,16 +111,15 @@ JointSafeAngles::JointSafeAngles(const ArmCollisionChecker& checker) : checker_(
     link_speed_.insert(link_speed_.end(), links.begin(), links.end());
     pair_speed_.insert(pair_speed_.end(), pairs.begin(), pairs.end());
   }
+  // The largest speed of a unit turn (that of the farthest link under joint 0): measuring
+  // clearances up to enough · fastest_ is enough for every joint.
+  for (const double v : link_speed_) fastest_ = std::max(fastest_, v);
+  for (const double v : pair_speed_) fastest_ = std::max(fastest_, v);
 }
 
 bool JointSafeAngles::measure(const JointAngles& q, double enough, std::span<double> out) const {
   const std::size_t n = q.size();
-  // The largest speed of a unit turn is that of the farthest link under joint 0: measuring
-  // clearances up to enough · that speed is enough for every joint.
-  double fastest = 0;
-  for (const double v : link_speed_) fastest = std::max(fastest, v);
-  for (const double v : pair_speed_) fastest = std::max(fastest, v);
-  checker_->clearances(q, clearances_, enough * fastest);
+  checker_->clearances(q, clearances_, enough * fastest_);
   if (clearances_.contact) return false;
   // As safe_step: a clearance c lasts c / v, forever when nothing moves, and not at all when c = 0.
   const auto lasts = [](double c, double v) { return c == 0 ? 0.0 : v > 0 ? c / v : std::numeric_limits<double>::infinity(); };

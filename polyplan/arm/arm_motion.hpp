@@ -87,6 +87,7 @@ class JointSafeAngles {
  private:
   const ArmCollisionChecker* checker_;
   std::vector<double> link_speed_, pair_speed_;  // per joint j: the speeds of a unit turn of j alone
+  double fastest_ = 0;                           // the largest of them
   mutable ArmClearances clearances_;
 };
 
