@@ -10,9 +10,9 @@
 // into `missed` (certify_motion found a colliding configuration that the samples skipped) and
 // `refused` (uncertified: no bound proved them free); `unsound` counts motions certified free that
 // a 1° sample sees collide, and must be 0.
-#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/io/arm_reader.hpp>
 
 #include <benchmark/benchmark.h>

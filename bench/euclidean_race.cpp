@@ -19,8 +19,8 @@
 // Usage: euclidean_race [--maps arena,den312d,...] [--runs 2] [--tradeoff]
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/movingai_scenario.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/roadmaps/euclidean_shortest_paths.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
 
 #include <CLI/CLI.hpp>
 
@@ -80,7 +80,7 @@ PeerRun run_polyanya(const std::string& runner, const std::string& mesh, const s
   return run;
 }
 
-using Queries = std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>>;
+using Queries = std::vector<std::pair<IntegerPoint, IntegerPoint>>;
 
 Queries asked(const std::vector<ScenarioQuery>& scenarios) {
   Queries queries;

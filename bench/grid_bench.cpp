@@ -1,5 +1,5 @@
 // Expansions per second of the library's grid A* (BGL astar_search_no_init through shortest_path on
-// the implicit GridGraph, one reused workspace: search/movingai_grid.hpp) against the peer a
+// the implicit GridGraph, one reused workspace: grids/movingai_grid.hpp) against the peer a
 // person would write by hand for MovingAI maps: a flat-array A* with an octile heuristic, a binary
 // heap with lazy deletion and per-query generation stamps instead of clearing. Same maps, same
 // queries (a few hundred per map, every bucket), same run. The goal: BGL >= 0.8x the peer's rate.
@@ -9,9 +9,9 @@
 //                                          load from other processes hits both alike): ratio =
 //                                          bgl rate / flat rate, and each rate
 // Both engines must find the same lengths, or the benchmark stops with an error.
+#include <polyplan/grids/movingai_grid.hpp>
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/movingai_scenario.hpp>
-#include <polyplan/roadmaps/movingai_grid.hpp>
 
 #include <benchmark/benchmark.h>
 

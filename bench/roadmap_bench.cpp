@@ -8,7 +8,7 @@
 //   build/bench/roadmap_bench --benchmark_counters_tabular=true
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/movingai_map.hpp>
-#include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/registry/registry.hpp>
 #include "bench_worlds.hpp"
 #include "heap_counter.hpp"
 

@@ -7,8 +7,8 @@
 //   build/bench/rotation_bench --benchmark_counters_tabular=true
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/rotation_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/rotation/rotation_planner.hpp>
 #include "heap_counter.hpp"
 
 #include <benchmark/benchmark.h>

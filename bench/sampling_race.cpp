@@ -24,7 +24,6 @@
 // builds this program only when find_package(ompl) finds it.
 #include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_motion.hpp>
-#include <polyplan/arm/arm_registry.hpp>
 #include <polyplan/arm/arm_sampling_space.hpp>
 #include <polyplan/geometry/angles.hpp>
 #include <polyplan/geometry/cspace.hpp>
@@ -32,9 +31,9 @@
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/polygon_sampling_space.hpp>
-#include <polyplan/roadmaps/registry.hpp>
-#include <polyplan/roadmaps/sampling_planner.hpp>
+#include <polyplan/registry/registry.hpp>
+#include <polyplan/sampling/polygon_sampling_space.hpp>
+#include <polyplan/sampling/sampling_planner.hpp>
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/PlannerTerminationCondition.h>

@@ -1,5 +1,5 @@
 // Where a search keeps its per-vertex state, measured on a Roadmap, against plain BGL as the peer.
-// Belongs in bench/ (Google Benchmark; not a test): see tests/search/CMakeLists.txt.snippet.
+// Belongs in bench/ (Google Benchmark; performance claims are not timed unit tests).
 //
 // Roadmap: the 400 x 250 8-connected grid (10^5 vertices, ~4 * 10^5 edges); random queries, the goal
 // within `radius` cells of the start (1000 queries; radius 400: anywhere, 100 queries). Variants:

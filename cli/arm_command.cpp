@@ -6,10 +6,10 @@
 #include "cli/planner_choice.hpp"
 #include "cli/report_output.hpp"
 
-#include <polyplan/arm/arm_registry.hpp>
 #include <polyplan/draw/arm_svg.hpp>
 #include <polyplan/io/arm_reader.hpp>
-#include <polyplan/roadmaps/plan_json.hpp>
+#include <polyplan/plan/plan_json.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <cctype>
 #include <iostream>
@@ -24,7 +24,7 @@ struct ArmCommand {
   std::string svg;
   std::string strobe;
   std::size_t every = 0;
-  double check_resolution = 0;  // no longer used: motions are certified, not sampled
+  bool check_resolution = false;  // given: refused, since motions are certified, not sampled
   std::unique_ptr<PlannerChoice<PlanarArm>> planner;
 };
 
@@ -41,9 +41,9 @@ std::string file_name(const std::string& path) { return path.substr(path.find_la
 
 int run_arm(const ArmCommand& command) {
   command.planner->values();  // a bad planner or option is reported before any work
-  if (command.check_resolution != 0)
-    std::cerr << "warning: --check-resolution is ignored: every motion is certified free (conservative advancement), "
-                 "not sampled\n";
+  if (command.check_resolution)
+    throw InputError("--check-resolution is gone: every motion is certified free (conservative advancement), not "
+                     "sampled at a resolution; leave the option out");
   const ArmProblem problem = read_arm_problem(command.file);
   if (problem.queries.empty()) throw InputError(command.file + ": no start/goal and no queries to plan");
   std::vector<const ArmQuery*> queries;
@@ -87,7 +87,11 @@ void add_arm_command(CLI::App& app, Action& run) {
   arm->add_option("--svg", command->svg, "write an SVG animation of the motion (and, for 2 joints, the C-space)");
   arm->add_option("--strobe", command->strobe, "write an SVG with every k-th configuration drawn");
   arm->add_option("--every", command->every, "k for --strobe (default: about 12 configurations)");
-  arm->add_option("--check-resolution", command->check_resolution, "ignored (motions are certified, not sampled); kept for old scripts");
+  // An option that would do nothing is refused, not ignored: a script that passes it learns why.
+  arm->add_option_function<double>(
+         "--check-resolution", [command](double) { command->check_resolution = true; },
+         "refused: motions are certified, not sampled")
+      ->group("");
   command->planner = std::make_unique<PlannerChoice<PlanarArm>>(
       *arm, "--method", std::vector<std::string>{"--planner"}, "grid",
       std::set<std::string>{"--method", "--planner", "--option", "--query", "--json", "--svg", "--strobe", "--every",

@@ -1,8 +1,8 @@
 // polyplan cspace WORLD.json [--svg OUT.svg] [--json -]: builds the exact C-space and reports it.
 #include "cli/command.hpp"
 
-#include <polyplan/geometry/cspace.hpp>
 #include <polyplan/draw/world_svg.hpp>
+#include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/world_reader.hpp>
 
 #include <chrono>

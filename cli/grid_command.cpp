@@ -5,9 +5,9 @@
 #include "cli/progress.hpp"
 
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/grids/movingai_grid.hpp>
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/movingai_scenario.hpp>
-#include <polyplan/roadmaps/movingai_grid.hpp>
 
 #include <algorithm>
 #include <chrono>

@@ -10,9 +10,9 @@
 #include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/plan_json.hpp>
-#include <polyplan/roadmaps/registry.hpp>
-#include <polyplan/roadmaps/rotation_layers.hpp>
+#include <polyplan/plan/plan_json.hpp>
+#include <polyplan/registry/registry.hpp>
+#include <polyplan/rotation/rotation_layers.hpp>
 
 #include <iostream>
 #include <type_traits>

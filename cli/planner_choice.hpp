@@ -6,7 +6,7 @@
 // `--no-NAME` for true-or-false options). The flags come from the registries, so a new planner's
 // options reach the command line without code here.
 #include <polyplan/geometry/input_error.hpp>
-#include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <CLI/CLI.hpp>
 

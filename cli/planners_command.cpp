@@ -1,8 +1,7 @@
 // polyplan planners [--json FILE|-]: every registered planner with its description and options.
 #include "cli/command.hpp"
 
-#include <polyplan/arm/arm_registry.hpp>
-#include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <cstdio>
 #include <iostream>

@@ -1,7 +1,7 @@
 #pragma once
-// How `plan` and `arm` print reports: roadmaps/plan_json.hpp's object per query (an object for
+// How `plan` and `arm` print reports: plan/plan_json.hpp's object per query (an object for
 // one query, an array for several), and for people one line per query.
-#include <polyplan/roadmaps/plan_report.hpp>
+#include <polyplan/plan/plan_report.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -10,7 +10,7 @@
 namespace polyplan::cli {
 
 // "NAME: length 118.944400, 5 segment(s), astar expanded 9 of 26 generated, roadmap 58 vertices
-// 108 edges", from the shared facts (roadmaps/plan_report.hpp) that the report has; or
+// 108 edges", from the shared facts (plan/plan_report.hpp) that the report has; or
 // "NAME: no path (WHY)". `steps` names what lies between path entries ("segment", "motion").
 template <class Configuration>
 std::string report_line(const std::string& query, const PlanReport<Configuration>& report, const std::string& unit,

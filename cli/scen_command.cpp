@@ -54,7 +54,7 @@ int run_scen(const ScenOptions& options) {
   const double preprocess = seconds_since(started);
 
   const auto batch = Clock::now();
-  std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>> asked;
+  std::vector<std::pair<IntegerPoint, IntegerPoint>> asked;
   for (const ScenarioQuery& q : scenarios) asked.push_back({{q.start_x, q.start_y}, {q.goal_x, q.goal_y}});
   Progress progress("queries");
   const std::vector<TimedPathAnswer> answers =

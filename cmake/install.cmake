@@ -2,15 +2,15 @@
 # prefix, so that find_package(polyplan) + target_link_libraries(app polyplan::polyplan) works.
 include(CMakePackageConfigHelpers)
 
-install(TARGETS polyplan polyplan_geometry polyplan_io polyplan_search polyplan_roadmaps polyplan_arm polyplan_draw
+install(TARGETS polyplan ${POLYPLAN_FOLDER_LIBRARIES}
   EXPORT polyplanTargets
   LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
   ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS polyplan_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-# Public headers only: internal/ and detail/ hold CGAL and nlohmann code that users never include.
+# Public headers only: the detail/ folders hold CGAL and nlohmann code that users never include.
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/polyplan/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/polyplan
-  FILES_MATCHING PATTERN "*.hpp" PATTERN "detail" EXCLUDE PATTERN "internal" EXCLUDE)
+  FILES_MATCHING PATTERN "*.hpp" PATTERN "detail" EXCLUDE)
 
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/polyplan)
 install(EXPORT polyplanTargets NAMESPACE polyplan:: DESTINATION ${config_dir})

@@ -1,8 +1,8 @@
 // An SVG of the C-space of every world in a folder (default: data/worlds), and a line each.
 // Usage: cspace_gallery [WORLDS_DIR] [OUT_DIR]
 // Exit code 2 when a world could not be read or drawn (the others are still drawn).
-#include <polyplan/geometry/cspace.hpp>
 #include <polyplan/draw/world_svg.hpp>
+#include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
 

@@ -6,8 +6,8 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/registry.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <cstdio>
 #include <filesystem>

@@ -8,9 +8,9 @@
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/raster_planner.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <cstdio>

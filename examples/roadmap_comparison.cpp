@@ -10,7 +10,7 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <algorithm>
 #include <cstdio>

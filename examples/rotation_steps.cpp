@@ -7,8 +7,8 @@
 #include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/rotation_planner.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/rotation/rotation_planner.hpp>
 
 #include <cstdio>
 #include <exception>

@@ -27,8 +27,8 @@
 //
 // Not thread-safe: a checker keeps scratch buffers and a counter (mutable, for speed: no
 // allocation per check). Use one checker per thread; construction is cheap.
-#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/world.hpp>
 

@@ -2,7 +2,7 @@
 
 #include <polyplan/arm/arm_grid_search.hpp>
 #include <polyplan/arm/arm_motion.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
 #include <polyplan/search/grid_graph.hpp>
 
@@ -163,9 +163,11 @@ struct Planning {
   std::size_t cells_evaluated = 0, expanded = 0, generated = 0, moves_by_clearance = 0;
   double peak_mb = 0;
 
-  std::string budget_message(const std::string& what) const {
-    return "stopped after " + what + ": the memory budget of one query is " + number_text(options.memory_mb) +
-           " MB (option memory_mb: raise it with --memory_mb N)";
+  // The query stopped at its memory budget after `what`.
+  void stop_at_budget(const std::string& what) {
+    report.fail(PlanStatus::limit, "stopped after " + what + ": the memory budget of one query is " +
+                                       number_text(options.memory_mb) + " MB (option memory_mb: raise it with --memory_mb N)");
+    report.facts.set("stopped_by", "memory limit");
   }
   std::string no_join(bool start_joined) const {
     return std::string("no grid cell next to the ") + (start_joined ? "goal" : "start") +
@@ -180,6 +182,7 @@ struct Planning {
     cells->columns = cells->rows = static_cast<std::size_t>(grid.n);
     cells->x0 = cells->y0 = -grid.step / 2;
     cells->cell_width = cells->cell_height = grid.step;
+    cells->wraps = options.torus;
     cells->states.reserve(static_cast<std::size_t>(grid.n * grid.n));
     for (GridCoordinate y = 0; y < grid.n; ++y)
       for (GridCoordinate x = 0; x < grid.n; ++x) cells->states.push_back(static_cast<std::uint8_t>(state_of(x, y)));
@@ -190,7 +193,7 @@ struct Planning {
            number_text(options.resolution_degrees) + " degrees";
   }
   void keep_path(const ArmQuery& query, const std::vector<std::vector<GridCoordinate>>& cells) {
-    report.found = true;
+    report.succeed();
     report.path.push_back(normalized(query.start));
     for (const auto& c : cells) report.path.push_back(grid.configuration(c));
     report.path.push_back(normalized(query.goal));
@@ -241,20 +244,20 @@ void plan_on_grid_graph(Planning& p, const ArmQuery& query) {
       result = shortest_path(g, g.cell(*start), to, searching, GridDistanceTo(g, to, GridMetric::sum_of_axes), GridMoveCost{&g});
     }
   } catch (const BudgetReached&) {
-    p.report.why_not = p.budget_message("evaluating " + std::to_string(max_cells) + " cells (about 330 bytes each)");
+    p.stop_at_budget("evaluating " + std::to_string(max_cells) + " cells (about 330 bytes each)");
     keep_cells();
     return;
   }
   keep_cells();
   if (!start || !goal) {
-    p.report.why_not = p.no_join(start.has_value());
+    p.report.fail(PlanStatus::not_found, p.no_join(start.has_value()));
     return;
   }
   p.expanded = result.expanded;
   p.generated = result.generated;
   for (const GridCell c : result.expanded_order) p.report.expanded.push_back(grid.configuration(g, c));
   if (!result.found) {
-    p.report.why_not = p.not_connected();
+    p.report.fail(PlanStatus::not_found, p.not_connected());
     return;
   }
   std::vector<std::vector<GridCoordinate>> cells;
@@ -383,7 +386,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   bool start_joined = false;
   auto searching = level_problem(p, query, grid.n, start_joined);
   if (!searching) {
-    p.report.why_not = p.no_join(start_joined);
+    p.report.fail(PlanStatus::not_found, p.no_join(start_joined));
     return;
   }
   searching->record_expanded = p.record.record;
@@ -429,14 +432,14 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   for (const auto& c : result.expanded_order) p.report.expanded.push_back(grid.configuration(c));
   p.keep_cells([&](GridCoordinate x, GridCoordinate y) { return search.state(std::array{x, y}); });
   if (result.over_budget) {
-    p.report.why_not = p.budget_message("evaluating " + std::to_string(result.cells_evaluated) + " cells");
+    p.stop_at_budget("evaluating " + std::to_string(result.cells_evaluated) + " cells");
     return;
   }
   if (!result.found) {
-    p.report.why_not = corridor && result.outside_bound_steps != std::numeric_limits<std::int64_t>::max()
+    p.report.fail(PlanStatus::not_found, corridor && result.outside_bound_steps != std::numeric_limits<std::int64_t>::max()
                            ? p.not_connected() + " within " + std::to_string(radius) + " coarse cells of the " +
                                  number_text(options.coarse_degrees) + "-degree path (option corridor widens it)"
-                           : p.not_connected();
+                           : p.not_connected());
     return;
   }
   p.keep_path(query, result.path);
@@ -472,7 +475,7 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
   MotionTally motions;
   Planning p{checker_, options_, grid, record, joints, report, motions};
   if (auto why = query_not_free(checker_, query)) {
-    report.why_not = *why;
+    report.fail(PlanStatus::invalid_query, *why);
   } else {
     const bool compact = options_.lazy && (options_.search.algorithm == Search::astar || options_.search.algorithm == Search::dijkstra);
     if (compact)

@@ -10,11 +10,11 @@
 //
 // The returned path begins exactly at the start and ends exactly at the goal; they are joined to a
 // nearby free grid cell by a motion certified like every other.
-#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
-#include <polyplan/roadmaps/planner.hpp>
-#include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/plan/planner.hpp>
+#include <polyplan/plan/planner_entry.hpp>
 #include <polyplan/search/search_result.hpp>
 
 #include <vector>

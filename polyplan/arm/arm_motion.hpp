@@ -35,8 +35,8 @@
 // k = max(1, ceil(max_i angular_distance(from_i, to_i) / resolution)), so consecutive samples differ
 // by at most `resolution` radians in every joint (up to rounding): frames for pictures, and what
 // tests sample densely to check a certificate independently. Checking samples is not a certificate.
-#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/geometry/angles.hpp>
 
 #include <cstddef>
 #include <optional>

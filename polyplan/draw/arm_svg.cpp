@@ -1,11 +1,11 @@
 #include <polyplan/draw/arm_svg.hpp>
 
-#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm.hpp>
 #include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/draw/theme.hpp>
 #include <polyplan/draw/world_svg.hpp>
+#include <polyplan/geometry/angles.hpp>
 
 #include <algorithm>
 #include <array>
@@ -248,14 +248,11 @@ struct Layout {
 svg::Box2 workspace_box(const ArmProblem& problem) {
   double r = problem.arm.reach();
   if (!(r > 0) || !std::isfinite(r)) r = 1;
-  svg::Box2 box{-r, -r, r, r};
-  auto extend = [&](double x, double y) {
-    box = {std::min(box.xmin, x), std::min(box.ymin, y), std::max(box.xmax, x), std::max(box.ymax, y)};
-  };
+  svg::BoxAround box({-r, -r, r, r});
   for (const PolygonWithHoles& o : problem.obstacles)
-    for (const ExactPoint& p : o.outer) extend(to_double(p.x), to_double(p.y));
-  for (const Eigen::Vector2d& p : problem.points) extend(p.x(), p.y());
-  return box;
+    for (const ExactPoint& p : o.outer) box.add(to_double(p.x), to_double(p.y));
+  for (const Eigen::Vector2d& p : problem.points) box.add(p.x(), p.y());
+  return box.box_or({});
 }
 
 Layout layout(const ArmPlanPicture& picture) {
@@ -926,8 +923,7 @@ svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>&
   if (shows_graph(picture) && !report.cells && problem.arm.joints() == 2) {
     picture.cspace = checked_cspace(problem, kCheckedCSpaceCells);
   }
-  if (const FactValue* torus = report.facts.find("grid.torus"))
-    if (const bool* flag = std::get_if<bool>(torus)) picture.torus = *flag;
+  if (report.cells) picture.torus = report.cells->wraps;
   if (options.kind == ArmPictureOptions::Kind::animation) return animation_drawing(picture);
   const std::size_t about_a_dozen = std::max<std::size_t>(1, picture.motion.size() / 12);
   return strobe_drawing(picture, options.every_kth ? options.every_kth : about_a_dozen);

@@ -7,7 +7,7 @@
 // or tree drawn faint under the path. draw_plan makes either from any arm planner's report.
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
-#include <polyplan/roadmaps/plan_report.hpp>
+#include <polyplan/plan/plan_report.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -68,8 +68,8 @@ std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth)
 
 // Any arm planner's report as a picture: the path's motions drawn densely (every joint at most
 // `degrees_per_frame` between frames, as the planners interpolate: each joint the short way), the
-// report's cells as the C-space panel (two joints), the panel labelled a torus unless the report's
-// fact grid.torus is false, and the report's graph (when the query recorded one) under the path;
+// report's cells as the C-space panel (two joints), the panel labelled a torus unless the cells do
+// not wrap (the grid's --no-torus), and the report's graph (when the query recorded one) under the path;
 // a two-joint report with a graph but no cells (a sampling planner's) gets a panel of 2° cells
 // checked at their centres. The animation, or the strobe of every k-th frame (k = every_kth, or
 // about a dozen configurations when 0).

@@ -204,9 +204,8 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   draw_points(drawing, expanded, "expanded by the search");
 
   for (const auto& r : reports)
-    if (r.found && r.facts.contains("clearance") && r.facts.contains("bottleneck.x") && r.facts.contains("bottleneck.y") &&
-        r.facts.number("clearance") > 0)
-      draw_clearance_disc(drawing, {r.facts.number("bottleneck.x"), r.facts.number("bottleneck.y")}, r.facts.number("clearance"));
+    if (r.found && r.bottleneck && r.bottleneck->clearance > 0)
+      draw_clearance_disc(drawing, {r.bottleneck->x, r.bottleneck->y}, r.bottleneck->clearance);
 
   for (std::size_t i = 0; i < reports.size(); ++i) {
     if (!reports[i].found) continue;

@@ -1,9 +1,9 @@
 #pragma once
 // Any planner's answers for a polygon world in one picture, drawn from the reports alone
-// (roadmaps/plan_report.hpp): a new planner gets its picture without drawing code of its own.
+// (plan/plan_report.hpp): a new planner gets its picture without drawing code of its own.
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
-#include <polyplan/roadmaps/plan_report.hpp>
+#include <polyplan/plan/plan_report.hpp>
 
 #include <string>
 #include <vector>

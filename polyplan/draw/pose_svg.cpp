@@ -63,22 +63,18 @@ svg::Box2 world_box(const World& world, const std::vector<std::vector<Sample>>& 
   if (world.bounds)
     return {to_double(world.bounds->xmin), to_double(world.bounds->ymin), to_double(world.bounds->xmax),
             to_double(world.bounds->ymax)};
-  svg::Box2 box{1e300, 1e300, -1e300, -1e300};
-  const auto extend = [&](double x, double y) {
-    box = {std::min(box.xmin, x), std::min(box.ymin, y), std::max(box.xmax, x), std::max(box.ymax, y)};
-  };
+  svg::BoxAround box;
   for (const PolygonWithHoles& o : world.obstacles)
-    for (const ExactPoint& p : o.outer) extend(to_double(p.x), to_double(p.y));
+    for (const ExactPoint& p : o.outer) box.add(to_double(p.x), to_double(p.y));
   for (const Query& q : world.queries) {
-    extend(to_double(q.start.x), to_double(q.start.y));
-    extend(to_double(q.goal.x), to_double(q.goal.y));
+    box.add(to_double(q.start.x), to_double(q.start.y));
+    box.add(to_double(q.goal.x), to_double(q.goal.y));
   }
   for (const auto& track : tracks)
     for (const Sample& s : track)
       for (const auto& ring : robot_at(robot, s))
-        for (const svg::Point2& p : ring) extend(p.x, p.y);
-  if (box.xmin > box.xmax) return {0, 0, 1, 1};
-  return box;
+        for (const svg::Point2& p : ring) box.add(p.x, p.y);
+  return box.box_or({0, 0, 1, 1});
 }
 
 std::string degrees_label(double radians) {

@@ -6,7 +6,7 @@
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/geometry/world.hpp>
-#include <polyplan/roadmaps/plan_report.hpp>
+#include <polyplan/plan/plan_report.hpp>
 
 #include <string>
 #include <vector>

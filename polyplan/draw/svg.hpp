@@ -1,6 +1,6 @@
 #pragma once
 // A small SVG writer for pictures of worlds, C-spaces, roadmaps and paths. Standard library only:
-// it takes doubles (exact coordinates are converted by the caller, see geometry/cspace_svg.hpp).
+// it takes doubles (exact coordinates are converted by the caller, see draw/world_svg.hpp).
 //
 // Coordinates given to Drawing are world coordinates with y up. The picture shows the given box
 // plus a margin, and larger y is drawn higher; text is never mirrored. Stroke widths, dash
@@ -10,6 +10,7 @@
 // point mapped by to_screen(). That frame keeps every renderer honest: librsvg (rsvg-convert)
 // silently draws nothing for a viewBox narrower than about 0.002 units, and tools that ignore
 // vector-effect="non-scaling-stroke" would draw a 1.5 px stroke 1.5 world units wide.
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <string>
@@ -24,6 +25,24 @@ struct Point2 {
 
 struct Box2 {
   double xmin, ymin, xmax, ymax;
+};
+
+// The smallest box around the points it was given, grown one point at a time.
+class BoxAround {
+ public:
+  BoxAround() = default;
+  explicit BoxAround(Box2 start) : box_(start), empty_(false) {}
+  void add(double x, double y) {
+    box_ = empty_ ? Box2{x, y, x, y}
+                  : Box2{std::min(box_.xmin, x), std::min(box_.ymin, y), std::max(box_.xmax, x), std::max(box_.ymax, y)};
+    empty_ = false;
+  }
+  // The box, or `none` when no point was added.
+  Box2 box_or(Box2 none) const { return empty_ ? none : box_; }
+
+ private:
+  Box2 box_{0, 0, 0, 0};
+  bool empty_ = true;
 };
 
 struct Style {

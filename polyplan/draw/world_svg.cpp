@@ -162,13 +162,10 @@ void draw_free_space(svg::Drawing& drawing, const CSpace& cspace) {
 
 svg::Box2 view_box(const World& world, const CSpace& cspace) {
   if (world.bounds) return to_box(*world.bounds);
-  svg::Box2 box{0, 0, 0, 0};
-  bool empty = true;
+  svg::BoxAround box;
   auto extend = [&](const ExactPoint& p) {
     const svg::Point2 q = point(p);
-    if (empty) box = {q.x, q.y, q.x, q.y};
-    box = {std::min(box.xmin, q.x), std::min(box.ymin, q.y), std::max(box.xmax, q.x), std::max(box.ymax, q.y)};
-    empty = false;
+    box.add(q.x, q.y);
   };
   // Holes lie inside their outer ring, so outer rings suffice.
   for (const PolygonWithHoles& o : world.obstacles)
@@ -183,8 +180,7 @@ svg::Box2 view_box(const World& world, const CSpace& cspace) {
     for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start))
       for (const ExactPoint& p : part) extend(p);
   }
-  if (empty) return {0, 0, 1, 1};
-  return box;  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
+  return box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
 }
 
 void draw_surroundings(svg::Drawing& drawing, const World& world) {

@@ -2,9 +2,9 @@
 // Pictures of worlds and their C-spaces (draw/svg.hpp does the drawing; this file decides what a
 // world looks like, in draw/theme.hpp's colours). Exact coordinates are rounded to double only
 // here, for the eye.
-#include <polyplan/geometry/cspace.hpp>
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/draw/theme.hpp>
+#include <polyplan/geometry/cspace.hpp>
 
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 #include <polyplan/geometry/cspace.hpp>
 
-#include <polyplan/internal/cspace_impl.hpp>
+#include <polyplan/geometry/detail/cspace_impl.hpp>
 #include <polyplan/geometry/input_error.hpp>
 
 #include <CGAL/Boolean_set_operations_2.h>

@@ -3,7 +3,7 @@
 // the obstacles' regularized union (solids), their C-obstacles (Minkowski sums with the
 // reflected robot, joined), the bounds as walls, and the open free space's components.
 //
-// CGAL stays behind this interface (internal/cspace_impl.hpp holds the arrangement), so
+// CGAL stays behind this interface (geometry/detail/cspace_impl.hpp holds the arrangement), so
 // including this header costs nothing. Exact tests of segments and paths: geometry/path_check.hpp.
 #include <polyplan/geometry/world.hpp>
 
@@ -16,7 +16,7 @@
 namespace polyplan {
 
 namespace detail {
-struct CSpaceAccess;  // the door for polyplan's own CGAL code (internal/cspace_impl.hpp)
+struct CSpaceAccess;  // the door for polyplan's own CGAL code (geometry/detail/cspace_impl.hpp)
 }
 
 // One connected component of the open free space, as the closure's boundary cycles. A cycle may
@@ -69,7 +69,7 @@ class CSpace {
   // not configurations of this C-space and are left to the rotation planner.
   void require_free_queries() const;
 
-  struct Impl;  // the CGAL side: incomplete here, defined in internal/cspace_impl.hpp
+  struct Impl;  // the CGAL side: incomplete here, defined in geometry/detail/cspace_impl.hpp
 
  private:
   friend struct detail::CSpaceAccess;

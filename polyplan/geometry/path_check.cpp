@@ -1,7 +1,7 @@
 #include <polyplan/geometry/path_check.hpp>
 
-#include <polyplan/internal/cspace_impl.hpp>
-#include <polyplan/internal/vertex_wedges.hpp>
+#include <polyplan/geometry/detail/cspace_impl.hpp>
+#include <polyplan/geometry/detail/vertex_wedges.hpp>
 
 #include <boost/variant/get.hpp>
 

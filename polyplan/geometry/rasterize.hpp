@@ -12,8 +12,8 @@
 // Cost: each C-obstacle edge visits the cells along it (exact rationals, no floating point);
 // every other cell whose centre lies in some C-obstacle's bounding box is decided by one exact
 // point location. Seed 000's sphere world at 200 × 200 takes about 0.05 s.
-#include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/geometry/world.hpp>
 
 #include <cstddef>

@@ -51,6 +51,9 @@ struct Pose {
   ExactPoint position;
   Rotation rotation;
   double degrees = 0;
+  friend bool operator==(const Pose& a, const Pose& b) {
+    return a.position == b.position && a.rotation == b.rotation && a.degrees == b.degrees;
+  }
 };
 
 // "5°", "-22.5°": an angle as messages name it (the shortest text that reads back the same).

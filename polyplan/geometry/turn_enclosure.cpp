@@ -1,6 +1,6 @@
 #include <polyplan/geometry/turn_enclosure.hpp>
 
-#include <polyplan/internal/cgal_types.hpp>
+#include <polyplan/geometry/detail/cgal_types.hpp>
 
 #include <CGAL/Partition_traits_2.h>
 #include <CGAL/convex_hull_2.h>

@@ -1,6 +1,6 @@
 #include <polyplan/geometry/world_validation.hpp>
 
-#include <polyplan/internal/cgal_types.hpp>
+#include <polyplan/geometry/detail/cgal_types.hpp>
 #include <polyplan/geometry/input_error.hpp>
 
 #include <CGAL/Boolean_set_operations_2.h>

@@ -1,8 +1,8 @@
 #include <polyplan/io/arm_reader.hpp>
 
-#include <polyplan/io/detail/exact_json.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/rational.hpp>
+#include <polyplan/io/detail/exact_json.hpp>
 #include <polyplan/io/world_reader.hpp>
 
 #include <nlohmann/json.hpp>

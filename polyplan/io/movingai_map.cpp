@@ -1,6 +1,6 @@
 #include <polyplan/io/movingai_map.hpp>
 
-#include <polyplan/internal/cgal_types.hpp>
+#include <polyplan/geometry/detail/cgal_types.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/io/detail/text_file.hpp>

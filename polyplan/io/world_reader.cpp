@@ -1,9 +1,9 @@
 #include <polyplan/io/world_reader.hpp>
 
-#include <polyplan/io/detail/exact_json.hpp>
-#include <polyplan/geometry/world_validation.hpp>
-#include <polyplan/io/wkt_reader.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/world_validation.hpp>
+#include <polyplan/io/detail/exact_json.hpp>
+#include <polyplan/io/wkt_reader.hpp>
 
 #include <nlohmann/json.hpp>
 

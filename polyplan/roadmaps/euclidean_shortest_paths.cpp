@@ -1,10 +1,10 @@
 #include <polyplan/roadmaps/euclidean_shortest_paths.hpp>
 
-#include <polyplan/internal/cspace_impl.hpp>
-#include <polyplan/internal/free_space_frame.hpp>
-#include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
-#include <polyplan/roadmaps/detail/integer_triangulation.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/free_space/detail/free_space_triangulation.hpp>
+#include <polyplan/free_space/detail/integer_triangulation.hpp>
+#include <polyplan/geometry/detail/cspace_impl.hpp>
+#include <polyplan/geometry/detail/free_space_frame.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/compressed_graph.hpp>
 #include <polyplan/search/hub_labels.hpp>
 
@@ -21,7 +21,6 @@ namespace polyplan {
 namespace {
 
 using detail::IntegerTriangulation;
-using detail::IntPoint;
 using PointLocation = IntegerTriangulation::Location;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
@@ -37,7 +36,7 @@ constexpr std::size_t kLabelDegreeLimit = 16;
 // The per-point corners are kept for boxes of at most this many integer points (a 4096 x 4096 map).
 constexpr std::int64_t kPointTableLimit = std::int64_t{1} << 24;
 
-double distance(const IntPoint& a, const IntPoint& b) {
+double distance(const IntegerPoint& a, const IntegerPoint& b) {
   const auto dx = static_cast<double>(a.x - b.x), dy = static_cast<double>(a.y - b.y);
   return std::sqrt(dx * dx + dy * dy);
 }
@@ -66,7 +65,7 @@ struct Reached {
 struct EuclideanShortestPaths::Scratch::Impl {
   IntegerTriangulation::Scratch walk;
   std::vector<int> visible, start_components, goal_components, corners;
-  std::vector<IntPoint> path;
+  std::vector<IntegerPoint> path;
   std::vector<PointLocation> where;
   std::vector<Reached> from_start, from_goal;
   // A* (without a table): one record per corner, valid where its stamps equal the generation.
@@ -104,7 +103,7 @@ struct EuclideanShortestPaths::Impl {
   std::vector<std::size_t> wedge_offset;
   std::vector<int> node_at;
   std::vector<int> node_vertex;
-  std::vector<IntPoint> node_point;  // node_vertex's points, beside each other for the search
+  std::vector<IntegerPoint> node_point;  // node_vertex's points, beside each other for the search
   CompressedGraph graph;  // of the corners
   // The table (n x n, row s = Dijkstra from s): distance and the predecessor on the path from s.
   std::vector<double> table_distance;
@@ -114,7 +113,7 @@ struct EuclideanShortestPaths::Impl {
   // With a table or labels, the corners each integer point of the triangulated box reaches (reach()), read
   // instead of walked: for point (x, y) they are point_corners[point_begin[i] .. point_begin[i+1])
   // with i = (y - box_low.y) * box_width + (x - box_low.x).
-  IntPoint box_low, box_high;
+  IntegerPoint box_low, box_high;
   std::int64_t box_width = 0;
   std::vector<std::uint32_t> point_begin;
   std::vector<int> point_corners;
@@ -123,12 +122,12 @@ struct EuclideanShortestPaths::Impl {
   explicit Impl(IntegerTriangulation t) : triangulation(std::move(t)) {}
 
   std::size_t nodes() const { return node_vertex.size(); }
-  const IntPoint& position(int node) const { return node_point[static_cast<std::size_t>(node)]; }
+  const IntegerPoint& position(int node) const { return node_point[static_cast<std::size_t>(node)]; }
 
   // visibility_graph.cpp's arrival_node: the corner a sight line from `from` ends at when it
   // reaches vertex c, and only if it is tangent there (its continuation stays in the wedge).
-  int arrival_node(std::size_t c, const IntPoint& from) const {
-    const IntPoint& at = triangulation.point(c);
+  int arrival_node(std::size_t c, const IntegerPoint& from) const {
+    const IntegerPoint& at = triangulation.point(c);
     const auto wedge = triangulation.wedge(c, {from.x - at.x, from.y - at.y});
     if (!wedge) return -1;
     const int node = node_at[wedge_offset[c] + *wedge];
@@ -185,9 +184,9 @@ struct EuclideanShortestPaths::Impl {
   // for boxes of at most kPointTableLimit points, and dropped when the corners take more than
   // `max_bytes`: a world of large integer coordinates walks instead.
   void build_point_table(unsigned threads, std::size_t max_bytes) {
-    IntPoint low = triangulation.point(0), high = low;
+    IntegerPoint low = triangulation.point(0), high = low;
     for (std::size_t v = 0; v < triangulation.vertex_count(); ++v) {
-      const IntPoint& p = triangulation.point(v);
+      const IntegerPoint& p = triangulation.point(v);
       low = {std::min(low.x, p.x), std::min(low.y, p.y)};
       high = {std::max(high.x, p.x), std::max(high.y, p.y)};
     }
@@ -202,7 +201,7 @@ struct EuclideanShortestPaths::Impl {
     parallel_for(static_cast<std::size_t>(rows), threads, [&](std::size_t r, unsigned t) {
       std::vector<Reached> reached;
       for (std::int64_t x = box_low.x; x <= box_high.x; ++x) {
-        const IntPoint p{x, box_low.y + static_cast<std::int64_t>(r)};
+        const IntegerPoint p{x, box_low.y + static_cast<std::int64_t>(r)};
         walk_reach(p, triangulation.locate(p), reached, scratch[t]);
         for (const Reached& c : reached) row_corners[r].push_back(c.node);
         row_counts[r].push_back(static_cast<std::uint32_t>(reached.size()));
@@ -219,7 +218,7 @@ struct EuclideanShortestPaths::Impl {
   }
 
   // The corners visible from p that a taut path leaves p towards, with their distances.
-  void reach(const IntPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
+  void reach(const IntegerPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
     if (point_begin.empty() || p.x < box_low.x || p.y < box_low.y || p.x > box_high.x || p.y > box_high.y) {
       walk_reach(p, where, out, s);
       return;
@@ -231,7 +230,7 @@ struct EuclideanShortestPaths::Impl {
   }
 
   // reach() by walking the triangulation (none from a blocked point).
-  void walk_reach(const IntPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
+  void walk_reach(const IntegerPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
     out.clear();
     s.visible.clear();
     triangulation.visible_from_point(p, where, s.visible, s.walk);
@@ -242,7 +241,7 @@ struct EuclideanShortestPaths::Impl {
   }
 
   // The best corner pair through the table; corners as a path from the start's to the goal's.
-  bool best_through_table(const IntPoint& goal, Scratch::Impl& s, std::vector<int>& corners) const {
+  bool best_through_table(const IntegerPoint& goal, Scratch::Impl& s, std::vector<int>& corners) const {
     const std::size_t n = nodes();
     // Through corner a a path is at least ds(a) + |a goal|: taken in that order, the first a whose
     // bound reaches the best so far ends the search.
@@ -325,7 +324,7 @@ struct EuclideanShortestPaths::Impl {
 
   // Without a table: A* over the corners from every corner the start reaches, ending when the
   // best start-to-goal cost found is no more than the smallest key left.
-  bool best_by_search(const IntPoint& goal, Scratch::Impl& s, std::vector<int>& corners) const {
+  bool best_by_search(const IntegerPoint& goal, Scratch::Impl& s, std::vector<int>& corners) const {
     const std::size_t n = nodes();
     if (s.records.size() != n) {
       s.records.assign(n, {});
@@ -425,25 +424,25 @@ double EuclideanShortestPaths::build_seconds() const { return impl_->build_secon
 std::size_t EuclideanShortestPaths::memory_bytes() const {
   const Impl& g = *impl_;
   return g.triangulation.memory_bytes() + (g.wedge_offset.capacity() + g.graph.begin.capacity()) * sizeof(std::size_t) +
-         g.node_point.capacity() * sizeof(IntPoint) +
+         g.node_point.capacity() * sizeof(IntegerPoint) +
          (g.node_at.capacity() + g.node_vertex.capacity() + g.graph.adjacent.capacity() + g.table_parent.capacity() +
           g.point_corners.capacity() + g.point_begin.capacity()) * sizeof(int) +
          (g.graph.weight.capacity() + g.table_distance.capacity()) * sizeof(double) + (g.labels ? g.labels->memory_bytes() : 0);
 }
 
-EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start, const IntegerPathPoint& goal, Scratch& scratch) const {
+EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPoint& start, const IntegerPoint& goal, Scratch& scratch) const {
   const Impl& g = *impl_;
   Scratch::Impl& s = *scratch.impl_;
   EuclideanPathAnswer answer;
-  const auto fits = [](const IntegerPathPoint& p) {
+  const auto fits = [](const IntegerPoint& p) {
     return std::abs(p.x) < detail::kIntegerCoordinateLimit && std::abs(p.y) < detail::kIntegerCoordinateLimit;
   };
-  const IntPoint from{start.x, start.y}, to{goal.x, goal.y};
+  const IntegerPoint from{start.x, start.y}, to{goal.x, goal.y};
   const PointLocation start_at = fits(start) ? g.triangulation.locate(from) : PointLocation{};
   const PointLocation goal_at = fits(goal) ? g.triangulation.locate(to) : PointLocation{};
   g.triangulation.components_at(start_at, s.start_components);
   g.triangulation.components_at(goal_at, s.goal_components);
-  auto named = [](const char* what, const IntPoint& p) {
+  auto named = [](const char* what, const IntegerPoint& p) {
     return std::string(what) + " " + detail::to_text(p) + " is not in the free space";
   };
   if (s.start_components.empty()) {
@@ -461,7 +460,7 @@ EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start,
     answer.why_not = "start and goal lie in different components of the free space";
     return answer;
   }
-  std::vector<IntPoint>& path = s.path;
+  std::vector<IntegerPoint>& path = s.path;
   std::vector<PointLocation>& where = s.where;
   path.assign(1, from);
   where.assign(1, start_at);
@@ -499,7 +498,7 @@ EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPathPoint& start,
 }
 
 std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
-                                        const std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>>& queries,
+                                        const std::vector<std::pair<IntegerPoint, IntegerPoint>>& queries,
                                         unsigned threads, const std::function<void(std::size_t done)>& progress) {
   std::vector<TimedPathAnswer> answers(queries.size());
   std::atomic<std::size_t> next{0}, done{0};

@@ -2,7 +2,7 @@
 // Exact Euclidean shortest paths for many queries in a world whose free-space corners are integer
 // points (MovingAI maps: polyplan scen). The reduced visibility graph of visibility_graph.hpp —
 // corners a taut path bends around, bitangent edges — is built in 64-bit integer arithmetic
-// (detail/integer_triangulation.hpp: exact), and then, when it fits the memory budget, every
+// (free_space/detail/integer_triangulation.hpp: exact), and then, when it fits the memory budget, every
 // corner-to-corner distance with the first step of each shortest path (one Dijkstra per corner);
 // when the table does not fit, hub labels of the corner graph (search/hub_labels.hpp) if they fit,
 // else nothing more; and the corners each integer point of the map sees. A query is then: locate start and goal,
@@ -13,6 +13,7 @@
 // Queries are const and take their scratch space from the caller: threads share one instance,
 // each with its own Scratch, and get the answers one thread gets.
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/integer_point.hpp>
 
 #include <cstdint>
 #include <functional>
@@ -35,15 +36,10 @@ struct EuclideanShortestPathsOptions {
   unsigned threads = 0;
 };
 
-struct IntegerPathPoint {
-  std::int64_t x = 0, y = 0;
-  friend bool operator==(const IntegerPathPoint& a, const IntegerPathPoint& b) { return a.x == b.x && a.y == b.y; }
-};
-
 struct EuclideanPathAnswer {
   bool found = false;
   double length = 0;  // sum of the segments' correctly rounded lengths
-  std::vector<IntegerPathPoint> path;
+  std::vector<IntegerPoint> path;
   std::string why_not;  // when not found
 };
 
@@ -73,7 +69,7 @@ class EuclideanShortestPaths {
   };
 
   // The shortest path from start to goal (integer points; a blocked one is not found, saying so).
-  EuclideanPathAnswer query(const IntegerPathPoint& start, const IntegerPathPoint& goal, Scratch& scratch) const;
+  EuclideanPathAnswer query(const IntegerPoint& start, const IntegerPoint& goal, Scratch& scratch) const;
 
   std::size_t corner_count() const;
   std::size_t edge_count() const;
@@ -99,7 +95,7 @@ struct TimedPathAnswer {
   double us = 0;
 };
 std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
-                                        const std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>>& queries,
+                                        const std::vector<std::pair<IntegerPoint, IntegerPoint>>& queries,
                                         unsigned threads, const std::function<void(std::size_t done)>& progress = {});
 
 }  // namespace polyplan

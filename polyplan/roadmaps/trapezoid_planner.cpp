@@ -1,9 +1,10 @@
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 
+#include <polyplan/free_space/channel_funnel.hpp>
+#include <polyplan/free_space/query_frame.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
-#include <polyplan/roadmaps/channel_funnel.hpp>
-#include <polyplan/roadmaps/query_tally.hpp>
+#include <polyplan/plan/query_tally.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
 #include <algorithm>
@@ -49,6 +50,23 @@ struct TrapezoidPlanner::Impl {
   void place(RoadmapVertexId slot, const ExactPoint& p) { roadmap[slot] = RoadmapVertex{p, to_double(p.x), to_double(p.y)}; }
   bool is_wall_node(RoadmapVertexId v) const { return v >= cell_count() && v < start_slot; }
   const TrapezoidWall& wall_of(RoadmapVertexId v) const { return decomposition.walls()[v - cell_count()]; }
+
+  // The roadmap searched from the query's start, joined to the cells `from` around it, to its
+  // goal, joined to the cells `to`; the expanded vertices added to `expanded` when recording.
+  SearchResult<RoadmapVertexId> search(const Query& query, const std::vector<std::size_t>& from,
+                                       const std::vector<std::size_t>& to, bool record, std::vector<ExactPoint>& expanded) {
+    place(start_slot, query.start);
+    place(goal_slot, query.goal);
+    for (std::size_t c : from) add_edge(roadmap, start_slot, c);
+    for (std::size_t c : to) add_edge(roadmap, c, goal_slot);
+    SearchOptions searching = options.search;
+    searching.record_expanded = record;
+    auto result = shortest_path(roadmap, start_slot, goal_slot, searching, workspace);
+    boost::clear_vertex(start_slot, roadmap);
+    boost::clear_vertex(goal_slot, roadmap);
+    for (RoadmapVertexId v : result.expanded_order) expanded.push_back(roadmap[v].exact);
+    return result;
+  }
 
   // The search's path start, centroid, wall midpoint, centroid, ..., goal, as the walls it
   // crosses, each seen from the side the path comes from.
@@ -112,69 +130,49 @@ const TrapezoidalDecomposition& TrapezoidPlanner::decomposition() const { return
 const Roadmap& TrapezoidPlanner::roadmap() const { return impl_->roadmap; }
 
 PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOptions& options) {
-  if (!impl_->decomposition.in_frame(query.start) || !impl_->decomposition.in_frame(query.goal)) {
-    // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
-    impl_ = build_timed<Impl>(*impl_->cspace, impl_->options, query_points(impl_->cspace->world(), {query.start, query.goal}));
-  }
+  if (auto inside = points_to_reframe(impl_->decomposition, impl_->cspace->world(), query))
+    impl_ = build_timed<Impl>(*impl_->cspace, impl_->options, *inside);
   Impl& g = *impl_;
-  QueryTally tally;
-  PlanReport<ExactPoint> report;
-  g.record_facts(report.facts);
-  if (options.record) {
-    report.graph = g.graph();
-    report.decomposition = g.cells();
-  }
-  const auto finish = [&]() {
-    tally.write(report.facts);
-    return report;
-  };
-
-  const std::vector<std::size_t> from = g.decomposition.cells_at(query.start), to = g.decomposition.cells_at(query.goal);
-  if (from.empty() || to.empty()) {
-    report.why_not = g.cspace->query_not_free(query).value_or("the start or goal is in no trapezoid");
-    return finish();
-  }
-
-  std::vector<ExactPoint> zigzag, funnel;
-  std::size_t channel_cells = 1;
-  if (share_a_cell(from, to)) {  // one convex cell holds both: the segment
-    zigzag = funnel = {query.start, query.goal};
-  } else {
-    g.place(g.start_slot, query.start);
-    g.place(g.goal_slot, query.goal);
-    for (std::size_t c : from) add_edge(g.roadmap, g.start_slot, c);
-    for (std::size_t c : to) add_edge(g.roadmap, c, g.goal_slot);
-    SearchOptions searching = g.options.search;
-    searching.record_expanded = options.record;
-    const auto result = shortest_path(g.roadmap, g.start_slot, g.goal_slot, searching, g.workspace);
-    boost::clear_vertex(g.start_slot, g.roadmap);
-    boost::clear_vertex(g.goal_slot, g.roadmap);
-    for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(g.roadmap[v].exact);
-    tally.count(result);
-    if (!result.found) {  // the cells of a free component are joined by walls: another component
-      report.why_not = "start and goal lie in different components of the free space";
-      return finish();
+  return tallied_query<ExactPoint>([&](PlanReport<ExactPoint>& report, QueryTally& tally) {
+    g.record_facts(report.facts);
+    if (options.record) {
+      report.graph = g.graph();
+      report.decomposition = g.cells();
     }
-    zigzag.push_back(query.start);
-    for (std::size_t i = 1; i + 1 < result.path.size(); ++i) zigzag.push_back(g.roadmap[result.path[i]].exact);
-    zigzag.push_back(query.goal);
-    funnel = funnel_path(query.start, g.portals_along(result.path), query.goal);
-    channel_cells = (result.path.size() - 1) / 2;
-  }
-  report.path = without_straight_corners(g.options.path == ChannelPath::funnel ? funnel : zigzag);
-  if (report.path.size() == 1) report.path.push_back(query.goal);  // start == goal: still a segment
-  // Every reported path is checked exactly; a failure is a bug of the decomposition or the
-  // funnel, never a tolerance call.
-  const PathCheck check = check_path(*g.cspace, report.path);
-  if (!check.valid) throw std::logic_error("trapezoid planner produced an invalid path: " + check.reason);
-  report.found = true;
-  report.length = euclidean_length(report.path);
-  report.certificate = {true, "exact path check (geometry/path_check)"};
-  report.facts.set("search.path_edges", report.path.size() - 1);
-  report.facts.set("trapezoid.channel_cells", channel_cells);
-  report.facts.set("trapezoid.zigzag_length", euclidean_length(zigzag));
-  report.facts.set("trapezoid.funnel_length", euclidean_length(funnel));
-  return finish();
+    const std::vector<std::size_t> from = g.decomposition.cells_at(query.start), to = g.decomposition.cells_at(query.goal);
+    if (from.empty() || to.empty())
+      return report.fail(PlanStatus::invalid_query,
+                         g.cspace->query_not_free(query).value_or("the start or goal is in no trapezoid"));
+
+    std::vector<ExactPoint> zigzag, funnel;
+    std::size_t channel_cells = 1;
+    if (share_a_cell(from, to)) {  // one convex cell holds both: the segment
+      zigzag = funnel = {query.start, query.goal};
+    } else {
+      const auto result = g.search(query, from, to, options.record, report.expanded);
+      tally.count(result);
+      if (!result.found)  // the cells of a free component are joined by walls: another component
+        return report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
+      zigzag.push_back(query.start);
+      for (std::size_t i = 1; i + 1 < result.path.size(); ++i) zigzag.push_back(g.roadmap[result.path[i]].exact);
+      zigzag.push_back(query.goal);
+      funnel = funnel_path(query.start, g.portals_along(result.path), query.goal);
+      channel_cells = (result.path.size() - 1) / 2;
+    }
+    report.path = without_straight_corners(g.options.path == ChannelPath::funnel ? funnel : zigzag);
+    if (report.path.size() == 1) report.path.push_back(query.goal);  // start == goal: still a segment
+    // Every reported path is checked exactly; a failure is a bug of the decomposition or the
+    // funnel, never a tolerance call.
+    const PathCheck check = check_path(*g.cspace, report.path);
+    if (!check.valid) throw std::logic_error("trapezoid planner produced an invalid path: " + check.reason);
+    report.succeed();
+    report.length = euclidean_length(report.path);
+    report.certificate = {true, "exact path check (geometry/path_check)"};
+    report.facts.set("search.path_edges", report.path.size() - 1);
+    report.facts.set("trapezoid.channel_cells", channel_cells);
+    report.facts.set("trapezoid.zigzag_length", euclidean_length(zigzag));
+    report.facts.set("trapezoid.funnel_length", euclidean_length(funnel));
+  });
 }
 
 PlannerEntry<TranslatingRobot> trapezoid_planner_entry() {

@@ -1,5 +1,5 @@
 #pragma once
-// The trapezoidal-decomposition roadmap of a course (roadmaps/trapezoidal_decomposition.hpp):
+// The trapezoidal-decomposition roadmap of a course (free_space/trapezoidal_decomposition.hpp):
 // a node at each trapezoid's centroid and at the midpoint of each wall between two trapezoids,
 // an edge from each centroid to the midpoints of its walls. Start and goal are located in their
 // trapezoids and joined to the centroids; a start and goal in one trapezoid are joined directly
@@ -8,13 +8,13 @@
 //
 // The search's path zig-zags through centroids and wall midpoints. `path=funnel` (the default)
 // returns instead the shortest path within the channel of trapezoids that path crosses (the
-// funnel algorithm, roadmaps/channel_funnel.hpp): exact, bending only at wall ends, never leaving
+// funnel algorithm, free_space/channel_funnel.hpp): exact, bending only at wall ends, never leaving
 // the channel. Either path is checked exactly (geometry/path_check.hpp) before it is returned.
 // Registered as `trapezoid`.
+#include <polyplan/free_space/trapezoidal_decomposition.hpp>
 #include <polyplan/geometry/cspace.hpp>
-#include <polyplan/roadmaps/planner.hpp>
-#include <polyplan/roadmaps/registry.hpp>
-#include <polyplan/roadmaps/trapezoidal_decomposition.hpp>
+#include <polyplan/plan/planner.hpp>
+#include <polyplan/plan/planner_entry.hpp>
 #include <polyplan/search/roadmap.hpp>
 #include <polyplan/search/search_result.hpp>
 

@@ -1,10 +1,11 @@
 #include <polyplan/roadmaps/visibility_graph.hpp>
 
+#include <polyplan/free_space/detail/free_space_triangulation.hpp>
+#include <polyplan/free_space/query_frame.hpp>
+#include <polyplan/geometry/detail/cspace_impl.hpp>
 #include <polyplan/geometry/polyline.hpp>
-#include <polyplan/internal/cspace_impl.hpp>
-#include <polyplan/roadmaps/detail/free_space_triangulation.hpp>
-#include <polyplan/roadmaps/query_tally.hpp>
-#include <polyplan/roadmaps/stopwatch.hpp>
+#include <polyplan/plan/query_tally.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
 #include <algorithm>
@@ -37,7 +38,7 @@ struct VisibilityGraph::Impl {
   double build_seconds = 0;
   std::shared_ptr<const PlanGraph<ExactPoint>> picture;  // made for the first query that records
 
-  // Without bounds the triangulation's frame holds `inside` (internal/free_space_frame.hpp).
+  // Without bounds the triangulation's frame holds `inside` (geometry/detail/free_space_frame.hpp).
   Impl(const CSpace& c, VisibilityKind k, SearchOptions s, const std::vector<ExactPoint>& inside)
       : cspace(&c), kind(k), search(s), triangulation(CSpaceAccess::impl(c), inside) {}
 
@@ -123,9 +124,30 @@ struct VisibilityGraph::Impl {
     facts.set("roadmap.seconds", build_seconds);
   }
 
+  // Whether start and goal lie in one component of the free space (a blocked end lies in none).
+  bool share_a_component(const Query& query) const {
+    const std::vector<int> from = triangulation.components_at(to_point(query.start)),
+                           to = triangulation.components_at(to_point(query.goal));
+    return std::any_of(from.begin(), from.end(), [&](int c) { return std::find(to.begin(), to.end(), c) != to.end(); });
+  }
+
+  // The corners searched from the query's start to its goal, each joined to the corners it sees;
+  // the expanded vertices added to `expanded` when the search records them.
+  SearchResult<RoadmapVertexId> search_corners(const Query& query, const SearchOptions& searching,
+                                               std::vector<ExactPoint>& expanded) {
+    connect(start_slot, query.start);
+    connect(goal_slot, query.goal);
+    auto result = shortest_path(roadmap, start_slot, goal_slot, searching, workspace);
+    for (RoadmapVertexId v : result.expanded_order) expanded.push_back(roadmap[v].exact);
+    boost::clear_vertex(start_slot, roadmap);
+    boost::clear_vertex(goal_slot, roadmap);
+    return result;
+  }
+
   // Why there is no path: a blocked end (what it hits), or ends in different components.
-  std::string why_not_connected(const Query& query) const {
-    return cspace->query_not_free(query).value_or("start and goal lie in different components of the free space");
+  void refuse_unconnected(const Query& query, PlanReport<ExactPoint>& report) const {
+    if (auto blocked = cspace->query_not_free(query)) report.fail(PlanStatus::invalid_query, *blocked);
+    else report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
   }
 };
 
@@ -153,62 +175,39 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, const QueryOpti
 
 // `search` by value: a query beyond the frame rebuilds impl_, impl_->search with it.
 PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, SearchOptions search, const QueryOptions& options) {
-  if (!impl_->triangulation.in_frame(query.start) || !impl_->triangulation.in_frame(query.goal))
-    // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
-    build(*impl_->cspace, impl_->kind, impl_->search, query_points(impl_->cspace->world(), {query.start, query.goal}));
+  if (auto inside = points_to_reframe(impl_->triangulation, impl_->cspace->world(), query))
+    build(*impl_->cspace, impl_->kind, impl_->search, *inside);
   Impl& g = *impl_;
-  QueryTally tally;
-  PlanReport<ExactPoint> report;
-  g.record_facts(report.facts);
-  report.facts.set("search.algorithm", to_string(search.algorithm));
-  if (options.record) report.graph = g.graph_picture();
-  const auto finish = [&]() {
-    report.facts.set("search.path_edges", report.path.empty() ? 0 : report.path.size() - 1);
-    tally.write(report.facts);
-    return report;
-  };
+  PlanReport<ExactPoint> answer = tallied_query<ExactPoint>([&](PlanReport<ExactPoint>& report, QueryTally& tally) {
+    g.record_facts(report.facts);
+    report.facts.set("search.algorithm", to_string(search.algorithm));
+    if (options.record) report.graph = g.graph_picture();
+    if (!g.share_a_component(query)) return g.refuse_unconnected(query, report);  // nothing to search
 
-  const Point from = to_point(query.start), to = to_point(query.goal);
-  const std::vector<int> from_components = g.triangulation.components_at(from), to_components = g.triangulation.components_at(to);
-  bool shared_component = false;
-  for (int c : from_components)
-    shared_component |= std::find(to_components.begin(), to_components.end(), c) != to_components.end();
-  if (!shared_component) {  // blocked, or in different components: nothing to search
-    report.why_not = g.why_not_connected(query);
-    return finish();
-  }
-
-  if (!g.triangulation.why_blocked(from, to)) {  // start sees goal: the segment
-    report.path = {query.start, query.goal};
-  } else {
-    g.connect(g.start_slot, query.start);
-    g.connect(g.goal_slot, query.goal);
-    SearchOptions searching = search;
-    searching.record_expanded = options.record;
-    const auto result = shortest_path(g.roadmap, g.start_slot, g.goal_slot, searching, g.workspace);
-    for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(g.roadmap[v].exact);
-    if (result.found)
+    if (!g.triangulation.why_blocked(to_point(query.start), to_point(query.goal))) {  // start sees goal: the segment
+      report.path = {query.start, query.goal};
+    } else {
+      search.record_expanded = options.record;
+      const auto result = g.search_corners(query, search, report.expanded);
+      tally.count(result);
+      if (!result.found)  // cannot happen: one component means one path through its corners
+        return report.fail(PlanStatus::no_path, "no path in the visibility graph between start and goal");
       for (RoadmapVertexId v : result.path) report.path.push_back(g.roadmap[v].exact);
-    boost::clear_vertex(g.start_slot, g.roadmap);
-    boost::clear_vertex(g.goal_slot, g.roadmap);
-    tally.count(result);
-    if (!result.found) {  // cannot happen: one component means one path through its corners
-      report.why_not = "no path in the visibility graph between start and goal";
-      return finish();
+      report.path = without_straight_corners(report.path);
+      // Every reported path is checked exactly (by a walk through the triangulation, not by the
+      // visibility cones that found it; the straight segment above was that walk already); a
+      // failure here is a bug, never a tolerance call.
+      std::vector<Point> points;
+      for (const ExactPoint& p : report.path) points.push_back(to_point(p));
+      if (auto why = g.triangulation.why_path_blocked(points))
+        throw std::logic_error("visibility graph produced an invalid path: " + *why);
     }
-    report.path = without_straight_corners(report.path);
-    // Every reported path is checked exactly (by a walk through the triangulation, not by the
-    // visibility cones that found it; the straight segment above was that walk already); a
-    // failure here is a bug, never a tolerance call.
-    std::vector<Point> points;
-    for (const ExactPoint& p : report.path) points.push_back(to_point(p));
-    if (auto why = g.triangulation.why_path_blocked(points))
-      throw std::logic_error("visibility graph produced an invalid path: " + *why);
-  }
-  report.found = true;
-  report.length = euclidean_length(report.path);
-  report.certificate = {true, "exact path check (walk through the triangulated free space)"};
-  return finish();
+    report.succeed();
+    report.length = euclidean_length(report.path);
+    report.certificate = {true, "exact path check (walk through the triangulated free space)"};
+  });
+  answer.facts.set("search.path_edges", answer.path.empty() ? 0 : answer.path.size() - 1);
+  return answer;
 }
 
 PlannerEntry<TranslatingRobot> visibility_planner_entry(VisibilityKind kind) {

@@ -15,8 +15,8 @@
 // independent of the visibility cones) before returning it. Registered as `visibility` (reduced)
 // and `visibility-full`.
 #include <polyplan/geometry/cspace.hpp>
-#include <polyplan/roadmaps/planner.hpp>
-#include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/plan/planner.hpp>
+#include <polyplan/plan/planner_entry.hpp>
 #include <polyplan/search/roadmap.hpp>
 #include <polyplan/search/search_result.hpp>
 

@@ -1,9 +1,10 @@
 #include <polyplan/roadmaps/voronoi_planner.hpp>
 
+#include <polyplan/free_space/query_frame.hpp>
 #include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
-#include <polyplan/roadmaps/query_tally.hpp>
+#include <polyplan/plan/query_tally.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
@@ -28,6 +29,12 @@ struct Piece {
   double t_u = 0, t_v = 0;
   double clearance = 0, length = 0;
   bool joins_a_query = false;
+};
+
+// The pieces at least as clear as the bottleneck as a roadmap, and which piece joins two vertices.
+struct PieceGraph {
+  Roadmap roadmap;
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> piece_between;
 };
 
 }  // namespace
@@ -130,6 +137,94 @@ struct VoronoiPlanner::Impl {
     }
     out.push_back(diagram.point(e, t2));
   }
+
+  // The search graph's vertices: the diagram's, then the query's start and goal and the two
+  // points where they land on the diagram (pieces_for's numbering).
+  std::size_t start_vertex() const { return diagram.vertices().size(); }
+  std::size_t goal_vertex() const { return diagram.vertices().size() + 1; }
+  std::size_t search_vertices() const { return diagram.vertices().size() + 4; }
+
+  // The bottleneck r*: the pieces joined in order of falling clearance until start and goal
+  // meet; nullopt when they never do. Pieces of the diagram with no clearance (through a pinch
+  // point, into a corner) never join anything.
+  std::optional<double> bottleneck_of(const std::vector<Piece>& pieces) const {
+    std::vector<std::size_t> order(pieces.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pieces[a].clearance > pieces[b].clearance; });
+    std::vector<std::size_t> rank(search_vertices()), parent(search_vertices());
+    boost::disjoint_sets<std::size_t*, std::size_t*> components(rank.data(), parent.data());
+    for (std::size_t v = 0; v < search_vertices(); ++v) components.make_set(v);
+    for (std::size_t i : order) {
+      const Piece& piece = pieces[i];
+      if (piece.clearance <= 0 && !piece.joins_a_query) break;
+      components.union_set(piece.u, piece.v);
+      if (components.find_set(start_vertex()) == components.find_set(goal_vertex())) return piece.clearance;
+    }
+    return std::nullopt;
+  }
+
+  // The graph of the pieces at least `bottleneck` clear, each pair of vertices joined by its
+  // shortest such piece.
+  PieceGraph pieces_at_least(const std::vector<Piece>& pieces, double bottleneck, const Query& query,
+                             const VoronoiDiagram::Retraction& from, const VoronoiDiagram::Retraction& to) const {
+    PieceGraph clear;
+    for (const DiagramVertex& v : diagram.vertices()) add_vertex(clear.roadmap, exactly(v.at));
+    add_vertex(clear.roadmap, query.start);
+    add_vertex(clear.roadmap, query.goal);
+    add_vertex(clear.roadmap, exactly(diagram.point(from.on.edge, from.on.parameter)));
+    add_vertex(clear.roadmap, exactly(diagram.point(to.on.edge, to.on.parameter)));
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+      const Piece& piece = pieces[i];
+      if (piece.clearance < bottleneck || (piece.clearance <= 0 && !piece.joins_a_query)) continue;
+      boost::add_edge(piece.u, piece.v, RoadmapEdge{piece.length}, clear.roadmap);
+      for (const auto& key : {std::pair{piece.u, piece.v}, std::pair{piece.v, piece.u}}) {
+        auto [it, inserted] = clear.piece_between.emplace(key, i);
+        if (!inserted && pieces[it->second].length > piece.length) it->second = i;
+      }
+    }
+    return clear;
+  }
+
+  // The searched vertices as a path from the query's start to its goal: straight moves onto and
+  // off the diagram, its arcs as chords fine enough for the bottleneck.
+  std::vector<ExactPoint> path_along(const std::vector<RoadmapVertexId>& nodes, const std::vector<Piece>& pieces,
+                                     const PieceGraph& clear, double bottleneck, const Query& query) const {
+    std::vector<Vec2> points;
+    for (std::size_t i = 0; i + 1 < nodes.size(); ++i) {
+      const std::size_t u = nodes[i], v = nodes[i + 1];
+      const Piece& piece = pieces[clear.piece_between.at({u, v})];
+      if (!piece.edge) {  // a query point's move onto the diagram, or back from it
+        if (piece.via) points.push_back(*piece.via);
+        points.push_back(approximate(clear.roadmap[v].exact));
+        continue;
+      }
+      const bool forward = piece.u == u;
+      sample(piece, forward ? piece.t_u : piece.t_v, forward ? piece.t_v : piece.t_u, bottleneck, points);
+    }
+    std::vector<ExactPoint> path{query.start};
+    for (std::size_t i = 0; i + 1 < points.size(); ++i) path.push_back(exactly(points[i]));
+    path.push_back(query.goal);
+    path = without_straight_corners(path);
+    if (path.size() == 1) path.push_back(query.goal);
+    return path;
+  }
+
+  // A path is returned only after the exact check; its clearance is measured on it.
+  void certify(PlanReport<ExactPoint>& report) const {
+    const PathCheck check = check_path(*cspace, report.path);
+    if (!check.valid) {
+      report.path.clear();
+      return report.fail(PlanStatus::not_found,
+                         "the maximum-clearance path failed the exact check (the diagram's doubles rounded across the "
+                         "boundary): " + check.reason);
+    }
+    report.succeed();
+    report.length = euclidean_length(report.path);
+    report.certificate = {true, "exact path check (geometry/path_check)"};
+    const PathBottleneck narrowest = path_bottleneck(*cspace, report.path);
+    report.bottleneck = Bottleneck{narrowest.at.x, narrowest.at.y, narrowest.clearance};
+    report.facts.set("search.path_edges", report.path.size() - 1);
+  }
 };
 
 VoronoiPlanner::VoronoiPlanner(const CSpace& cspace, VoronoiOptions options) {
@@ -141,129 +236,44 @@ VoronoiPlanner::~VoronoiPlanner() = default;
 const VoronoiDiagram& VoronoiPlanner::diagram() const { return impl_->diagram; }
 
 PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptions& options) {
-  if (!impl_->diagram.in_frame(query.start) || !impl_->diagram.in_frame(query.goal)) {
-    // An unbounded world asked about a point beyond the frame: frame it anew, around this query too.
-    impl_ = build_timed<Impl>(*impl_->cspace, impl_->options, query_points(impl_->cspace->world(), {query.start, query.goal}));
-  }
+  if (auto inside = points_to_reframe(impl_->diagram, impl_->cspace->world(), query))
+    impl_ = build_timed<Impl>(*impl_->cspace, impl_->options, *inside);
   Impl& g = *impl_;
-  QueryTally tally;
-  PlanReport<ExactPoint> report;
-  g.record_facts(report.facts);
-  if (options.record) report.graph = g.graph();
-  const auto finish = [&]() {
-    tally.write(report.facts);
-    return report;
-  };
-  // A path is returned only after the exact check; its clearance is measured on it.
-  const auto finish_found = [&]() {
-    const PathCheck check = check_path(*g.cspace, report.path);
-    if (!check.valid) {
-      report.why_not = "the maximum-clearance path failed the exact check (the diagram's doubles rounded across the boundary): " +
-                       check.reason;
-      report.path.clear();
-      return finish();
-    }
-    report.found = true;
-    report.length = euclidean_length(report.path);
-    report.certificate = {true, "exact path check (geometry/path_check)"};
-    const PathBottleneck narrowest = path_bottleneck(*g.cspace, report.path);
-    report.facts.set("clearance", narrowest.clearance);
-    report.facts.set("bottleneck.x", narrowest.at.x);
-    report.facts.set("bottleneck.y", narrowest.at.y);
-    report.facts.set("search.path_edges", report.path.size() - 1);
-    return finish();
-  };
+  return tallied_query<ExactPoint>([&](PlanReport<ExactPoint>& report, QueryTally& tally) {
+    g.record_facts(report.facts);
+    if (options.record) report.graph = g.graph();
+    if (auto blocked = g.cspace->query_not_free(query)) return report.fail(PlanStatus::invalid_query, *blocked);
+    const auto from = g.diagram.retract(query.start), to = g.diagram.retract(query.goal);
+    if (!from || !to)
+      return report.fail(PlanStatus::not_found,
+                         std::string("the ") + (from ? "goal" : "start") + " meets no edge of the Voronoi diagram");
 
-  if (auto blocked = g.cspace->query_not_free(query)) {
-    report.why_not = *blocked;
-    return finish();
-  }
-  const auto from = g.diagram.retract(query.start), to = g.diagram.retract(query.goal);
-  if (!from || !to) {
-    report.why_not = std::string("the ") + (from ? "goal" : "start") + " meets no edge of the Voronoi diagram";
-    return finish();
-  }
-
-  // The bottleneck: join pieces in order of falling clearance until start and goal meet. Pieces of
-  // the diagram with no clearance (through a pinch point, into a corner) never join anything.
-  const std::vector<Piece> pieces = g.pieces_for(query.start, *from, query.goal, *to);
-  const std::size_t n = g.diagram.vertices().size(), s = n, t = n + 1, count = n + 4;
-  std::vector<std::size_t> order(pieces.size());
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pieces[a].clearance > pieces[b].clearance; });
-  std::vector<std::size_t> rank(count), parent(count);
-  boost::disjoint_sets<std::size_t*, std::size_t*> components(rank.data(), parent.data());
-  for (std::size_t v = 0; v < count; ++v) components.make_set(v);
-  std::optional<double> bottleneck;
-  for (std::size_t i : order) {
-    const Piece& piece = pieces[i];
-    if (piece.clearance <= 0 && !piece.joins_a_query) break;
-    components.union_set(piece.u, piece.v);
-    if (components.find_set(s) == components.find_set(t)) {
-      bottleneck = piece.clearance;
-      break;
+    const std::vector<Piece> pieces = g.pieces_for(query.start, *from, query.goal, *to);
+    const std::optional<double> bottleneck = g.bottleneck_of(pieces);
+    if (!bottleneck) {
+      if (!g.share_a_component(query))
+        return report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
+      // The exact free space joins them through a passage narrower than the diagram's doubles
+      // resolve (decimal.json's gap of 1e-17): the best clearance is below that resolution, and the
+      // exact shortest path through the passage is as clear as any.
+      report.path = g.exact_planner().plan(query).path;
+      report.facts.set("voronoi.narrows", true);
+      return g.certify(report);
     }
-  }
-  if (!bottleneck) {
-    if (!g.share_a_component(query)) {
-      report.why_not = "start and goal lie in different components of the free space";
-      return finish();
-    }
-    // The exact free space joins them through a passage narrower than the diagram's doubles
-    // resolve (decimal.json's gap of 1e-17): the best clearance is below that resolution, and the
-    // exact shortest path through the passage is as clear as any.
-    report.path = g.exact_planner().plan(query).path;
-    report.facts.set("voronoi.narrows", true);
-    return finish_found();
-  }
 
-  // The shortest path over the pieces at least as clear as the bottleneck.
-  Roadmap roadmap;
-  for (const DiagramVertex& v : g.diagram.vertices()) add_vertex(roadmap, exactly(v.at));
-  add_vertex(roadmap, query.start);
-  add_vertex(roadmap, query.goal);
-  add_vertex(roadmap, exactly(g.diagram.point(from->on.edge, from->on.parameter)));
-  add_vertex(roadmap, exactly(g.diagram.point(to->on.edge, to->on.parameter)));
-  std::map<std::pair<std::size_t, std::size_t>, std::size_t> piece_between;
-  for (std::size_t i = 0; i < pieces.size(); ++i) {
-    const Piece& piece = pieces[i];
-    if (piece.clearance < *bottleneck || (piece.clearance <= 0 && !piece.joins_a_query)) continue;
-    boost::add_edge(piece.u, piece.v, RoadmapEdge{piece.length}, roadmap);
-    for (const auto key : {std::pair{piece.u, piece.v}, std::pair{piece.v, piece.u}}) {
-      auto [it, inserted] = piece_between.emplace(key, i);
-      if (!inserted && pieces[it->second].length > piece.length) it->second = i;
-    }
-  }
-  SearchOptions searching = g.options.search;
-  searching.record_expanded = options.record;
-  const auto result = shortest_path(roadmap, s, t, searching);
-  for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(roadmap[v].exact);
-  tally.count(result);
-  if (!result.found) {  // cannot happen: the bottleneck joined them
-    report.why_not = "no path on the Voronoi diagram at the bottleneck clearance";
-    return finish();
-  }
-
-  std::vector<Vec2> points;
-  for (std::size_t i = 0; i + 1 < result.path.size(); ++i) {
-    const std::size_t u = result.path[i], v = result.path[i + 1];
-    const Piece& piece = pieces[piece_between.at({u, v})];
-    if (!piece.edge) {  // a query point's move onto the diagram, or back from it
-      if (piece.via) points.push_back(*piece.via);
-      points.push_back(approximate(roadmap[v].exact));
-      continue;
-    }
-    const bool forward = piece.u == u;
-    g.sample(piece, forward ? piece.t_u : piece.t_v, forward ? piece.t_v : piece.t_u, *bottleneck, points);
-  }
-  report.path.push_back(query.start);
-  for (std::size_t i = 0; i + 1 < points.size(); ++i) report.path.push_back(exactly(points[i]));
-  report.path.push_back(query.goal);
-  report.path = without_straight_corners(report.path);
-  if (report.path.size() == 1) report.path.push_back(query.goal);
-
-  report.facts.set("voronoi.bottleneck", *bottleneck);
-  return finish_found();
+    // The shortest path over the pieces at least as clear as the bottleneck.
+    const PieceGraph clear = g.pieces_at_least(pieces, *bottleneck, query, *from, *to);
+    SearchOptions searching = g.options.search;
+    searching.record_expanded = options.record;
+    const auto result = shortest_path(clear.roadmap, g.start_vertex(), g.goal_vertex(), searching);
+    for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(clear.roadmap[v].exact);
+    tally.count(result);
+    if (!result.found)  // cannot happen: the bottleneck joined them
+      return report.fail(PlanStatus::not_found, "no path on the Voronoi diagram at the bottleneck clearance");
+    report.path = g.path_along(result.path, pieces, clear, *bottleneck, query);
+    report.facts.set("voronoi.bottleneck", *bottleneck);
+    g.certify(report);
+  });
 }
 
 PlannerEntry<TranslatingRobot> voronoi_planner_entry() {

@@ -1,5 +1,5 @@
 #pragma once
-// The maximum-clearance roadmap (roadmaps/voronoi_diagram.hpp): start and goal are retracted onto
+// The maximum-clearance roadmap (free_space/voronoi_diagram.hpp): start and goal are retracted onto
 // the diagram, moving straight away from their nearest boundary point (their clearance only grows
 // on the way), and the search maximises the smallest clearance along the path first, its length
 // second: the bottleneck r* (the widest path, by joining the diagram's pieces in order of falling
@@ -13,7 +13,7 @@
 // the boundary); elsewhere chords halve until it is. The path's clearance is then within 1e-7 of
 // r*.
 //
-// The diagram is in doubles (roadmaps/voronoi_diagram.hpp): a passage narrower than the doubles
+// The diagram is in doubles (free_space/voronoi_diagram.hpp): a passage narrower than the doubles
 // resolve (decimal.json's gap of 1e-17) is closed in it. When the diagram does not join start and
 // goal but the exact free space does, the best clearance is below that resolution, and the
 // planner returns the exact shortest path (the visibility graph's) through the passage, with the
@@ -21,10 +21,10 @@
 // exactly (geometry/path_check.hpp) before it is returned: a path that fails (which would take a
 // rounding of the diagram's doubles across the boundary) is not returned but named in why_not.
 // Registered as `voronoi`.
+#include <polyplan/free_space/voronoi_diagram.hpp>
 #include <polyplan/geometry/cspace.hpp>
-#include <polyplan/roadmaps/planner.hpp>
-#include <polyplan/roadmaps/registry.hpp>
-#include <polyplan/roadmaps/voronoi_diagram.hpp>
+#include <polyplan/plan/planner.hpp>
+#include <polyplan/plan/planner_entry.hpp>
 #include <polyplan/search/search_result.hpp>
 
 #include <memory>

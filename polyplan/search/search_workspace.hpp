@@ -42,7 +42,7 @@ constexpr bool dense_vertex_table_fits(const Graph&) {
 
 // Where a workspace keeps the per-vertex state.
 //
-// Measured (tests/search/search_workspace_bench.cpp: 400 x 250 8-connected grid Roadmap, 10^5
+// Measured (bench/search_workspace_bench.cpp: 400 x 250 8-connected grid Roadmap, 10^5
 // vertices; microseconds per query, reused workspace, versioned array / hash map):
 //   A*        goal within 3 cells 4.2 / 3.6    within 30 cells  53 / 87     anywhere 2880 / 5390
 //   Dijkstra                     16 / 20                      772 / 1223            24200 / 37400

@@ -1,8 +1,8 @@
 // arm/arm_collision: the exact collision convention and the clearances (lower bounds of distances)
 // that certified motions advance by. Expected values are worked out by hand in the comments, or
 // re-computed independently (long double geometry with a safety margin).
-#include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm.hpp>
+#include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include "arm/arm_fixtures.hpp"
 

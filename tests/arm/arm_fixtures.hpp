@@ -1,9 +1,9 @@
 #pragma once
 // Small helpers shared by the arm/ tests (and the arm reader's): arms, obstacles and data files
 // described inline.
-#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/world.hpp>

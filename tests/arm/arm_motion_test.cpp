@@ -1,8 +1,8 @@
 // arm/arm_motion: certified motions (conservative advancement) and the sampled check they replace,
 // on hand-built cases, on the shipped data/arms files, and against dense independent sampling.
-#include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/arm/arm.hpp>
 #include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include "arm/arm_fixtures.hpp"
 

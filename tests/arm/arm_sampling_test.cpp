@@ -5,12 +5,12 @@
 // with their defaults as well.
 #include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/arm/arm_motion.hpp>
-#include <polyplan/arm/arm_registry.hpp>
 #include <polyplan/arm/arm_sampling_space.hpp>
 #include <polyplan/geometry/angles.hpp>
 #include <polyplan/io/arm_reader.hpp>
-#include <polyplan/roadmaps/sampling_planner.hpp>
-#include "arm_fixtures.hpp"
+#include <polyplan/registry/registry.hpp>
+#include <polyplan/sampling/sampling_planner.hpp>
+#include "arm/arm_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -49,7 +49,9 @@ TEST_P(SamplingPlannerOnArm, ThreeSeedsGiveIndependentlyCheckedPathsAndOneSeedOn
       EXPECT_NEAR(report.length, length, 1e-9 * length);
       EXPECT_LE(report.length, report.facts.number("raw_length") * (1 + 1e-12));
       // The same seed, a planner of its own, the same first query: the same path.
-      if (&q == &problem.queries.front()) EXPECT_EQ(make(planner, problem, options)->plan(q).path, report.path);
+      if (&q == &problem.queries.front()) {  // braces: EXPECT_EQ is an if-else of its own
+        EXPECT_EQ(make(planner, problem, options)->plan(q).path, report.path);
+      }
     }
   }
 }

@@ -56,7 +56,7 @@ TEST(ArmCommand, SamplingPlannersTakeTheirFlagsAndOneSeedGivesOnePath) {
   ASSERT_EQ(prm.exit_code, 0) << prm.err;
   const auto p = nlohmann::json::parse(prm.out);
   EXPECT_TRUE(p["found"].get<bool>());
-  EXPECT_TRUE(p.contains("roadmap_size"));
+  EXPECT_TRUE(p["roadmap"].contains("vertices"));
   EXPECT_EQ(p["search"]["algorithm"], "bidirectional dijkstra");
 
   const CliRun bias = run_polyplan("arm " + arm_file("two_link_points.json") + " --method rrt --goal-bias 2");
@@ -138,10 +138,13 @@ TEST(ArmCommand, OptionsAndTheOldFlagsSetTheSamePlanner) {
   }
 }
 
-TEST(ArmCommand, PathsAreCertifiedAndCheckResolutionNoLongerSamples) {
-  const CliRun run = run_polyplan("arm " + arm_file("two_link_points.json") + " --query easy --check-resolution 0.5 --json -");
+TEST(ArmCommand, PathsAreCertifiedAndCheckResolutionIsRefused) {
+  const CliRun refused = run_polyplan("arm " + arm_file("two_link_points.json") + " --query easy --check-resolution 0.5");
+  EXPECT_EQ(refused.exit_code, 2);
+  EXPECT_NE(refused.err.find("--check-resolution is gone: every motion is certified"), std::string::npos) << refused.err;
+  EXPECT_TRUE(refused.out.empty()) << refused.out;
+  const CliRun run = run_polyplan("arm " + arm_file("two_link_points.json") + " --query easy --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
-  EXPECT_NE(run.err.find("--check-resolution is ignored"), std::string::npos) << run.err;
   const auto j = nlohmann::json::parse(run.out);
   EXPECT_EQ(j["certified"], true);
   EXPECT_NE(j["certified_by"].get<std::string>().find("conservative advancement"), std::string::npos);

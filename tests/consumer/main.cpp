@@ -1,11 +1,10 @@
 // Reads a world and plans it with the registry's default planner, and plans a two-link arm with
 // the arm registry's grid planner: proof that the installed headers and libraries (with their
 // public Eigen, Boost and nlohmann-json dependencies) are usable on their own.
-#include <polyplan/arm/arm_registry.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/plan_json.hpp>
-#include <polyplan/roadmaps/registry.hpp>
+#include <polyplan/plan/plan_json.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <nlohmann/json.hpp>
 

@@ -2,8 +2,8 @@
 // the SVG text itself (tags, keyframes, where the transforms put the arm, how the path is cut).
 #include <polyplan/draw/arm_svg.hpp>
 
-#include <polyplan/geometry/angles.hpp>
 #include <polyplan/arm/arm.hpp>
+#include <polyplan/geometry/angles.hpp>
 #include "draw/svg_fixtures.hpp"
 
 #include <gtest/gtest.h>

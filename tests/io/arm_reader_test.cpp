@@ -1,6 +1,6 @@
 // io/arm_reader: arm files, every field and every bad input with its one-line message.
-#include <polyplan/io/arm_reader.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/io/arm_reader.hpp>
 
 #include <gtest/gtest.h>
 

@@ -16,9 +16,9 @@
 namespace polyplan::test {
 namespace {
 
-std::vector<ExactPoint> exact(const std::vector<IntegerPathPoint>& path) {
+std::vector<ExactPoint> exact(const std::vector<IntegerPoint>& path) {
   std::vector<ExactPoint> points;
-  for (const IntegerPathPoint& p : path) points.push_back({Rational(static_cast<long>(p.x)), Rational(static_cast<long>(p.y))});
+  for (const IntegerPoint& p : path) points.push_back({Rational(static_cast<long>(p.x)), Rational(static_cast<long>(p.y))});
   return points;
 }
 
@@ -69,7 +69,7 @@ TEST(EuclideanShortestPaths, RandomGridsAgreeWithTheExactVisibilityGraph) {
     EuclideanShortestPaths::Scratch a, b, c, d;
     std::uniform_int_distribution<int> x(0, map.width), y(0, map.height);
     for (int k = 0; k < 60; ++k) {
-      const IntegerPathPoint start{x(random), y(random)}, goal{x(random), y(random)};
+      const IntegerPoint start{x(random), y(random)}, goal{x(random), y(random)};
       const auto expected = graph.plan(Query{exact({start})[0], exact({goal})[0], "q"});
       for (const EuclideanPathAnswer& answer :
            {from_cells.query(start, goal, a), from_arrangement.query(start, goal, b), labelled.query(start, goal, c),
@@ -125,7 +125,7 @@ TEST(EuclideanShortestPaths, ThreadsShareOnePreprocessingAndGetTheSameAnswers) {
   const GridMap map = random_grid(random, 40, 30, 0.2);
   const EuclideanShortestPaths one(map, {.threads = 1}), two(map, {.threads = 2});
   EXPECT_EQ(one.edge_count(), two.edge_count());
-  std::vector<std::pair<IntegerPathPoint, IntegerPathPoint>> queries;
+  std::vector<std::pair<IntegerPoint, IntegerPoint>> queries;
   std::uniform_int_distribution<int> x(0, map.width), y(0, map.height);
   for (int k = 0; k < 400; ++k) queries.push_back({{x(random), y(random)}, {x(random), y(random)}});
   std::vector<EuclideanPathAnswer> alone(queries.size());

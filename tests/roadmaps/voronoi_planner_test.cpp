@@ -2,8 +2,8 @@
 // bisection on r with CGAL's offsets — the C-obstacles grown by r (approximated_offset_2, circular
 // arcs, error 1e-10), the walls moved in by r, and whether start and goal stay in one component of
 // what is left — on hand-made worlds, the shipped worlds and random ones.
+#include <polyplan/geometry/detail/cgal_types.hpp>
 #include <polyplan/geometry/path_check.hpp>
-#include <polyplan/internal/cgal_types.hpp>
 #include <polyplan/roadmaps/voronoi_planner.hpp>
 #include "movingai_fixtures.hpp"
 #include "world_fixtures.hpp"
@@ -104,7 +104,7 @@ void expect_best_clearance(const CSpace& c, const Query& q) {
   ASSERT_EQ(report.found, best.has_value()) << report.why_not;
   if (!report.found) return;
   EXPECT_TRUE(check_path(c, report.path).valid);
-  EXPECT_NEAR(report.facts.number("clearance"), *best, 1e-6);
+  EXPECT_NEAR(report.bottleneck.value().clearance, *best, 1e-6);
 }
 
 TEST(VoronoiPlanner, AroundASquareTheWidestPassageIsHalfItsWidth) {
@@ -114,11 +114,11 @@ TEST(VoronoiPlanner, AroundASquareTheWidestPassageIsHalfItsWidth) {
   VoronoiPlanner planner(c);
   const auto report = planner.plan(between(pt("2", "5"), pt("8", "5")));
   ASSERT_TRUE(report.found) << report.why_not;
-  EXPECT_NEAR(report.facts.number("clearance"), 2, 1e-7);
+  EXPECT_NEAR(report.bottleneck.value().clearance, 2, 1e-7);
   EXPECT_NEAR(report.facts.number("voronoi.bottleneck"), 2, 1e-12);
   EXPECT_TRUE(check_path(c, report.path).valid);
   // The bottleneck named is a point of the path that is that close to the boundary.
-  const ExactPoint at{Rational(report.facts.number("bottleneck.x")), Rational(report.facts.number("bottleneck.y"))};
+  const ExactPoint at{Rational(report.bottleneck.value().x), Rational(report.bottleneck.value().y)};
   EXPECT_NEAR(exact_clearance(c, at), 2, 1e-7);
 }
 
@@ -129,8 +129,8 @@ TEST(VoronoiPlanner, ThroughAGapTheClearanceIsHalfTheGap) {
   VoronoiPlanner planner(c);
   const auto report = planner.plan(between(pt("2", "2"), pt("8", "8")));
   ASSERT_TRUE(report.found) << report.why_not;
-  EXPECT_NEAR(report.facts.number("clearance"), 0.5, 1e-7);
-  EXPECT_NEAR(report.facts.number("bottleneck.x"), 5, 1e-6);
+  EXPECT_NEAR(report.bottleneck.value().clearance, 0.5, 1e-7);
+  EXPECT_NEAR(report.bottleneck.value().x, 5, 1e-6);
   expect_best_clearance(c, between(pt("2", "2"), pt("8", "8")));
 }
 
@@ -148,7 +148,7 @@ TEST(VoronoiPlanner, AStartOnTheBoundaryHasNoClearanceToGive) {
   VoronoiPlanner planner(c);
   const auto report = planner.plan(between(pt("4", "5"), pt("8", "5")));
   ASSERT_TRUE(report.found) << report.why_not;
-  EXPECT_EQ(report.facts.number("clearance"), 0);
+  EXPECT_EQ(report.bottleneck.value().clearance, 0);
   EXPECT_TRUE(check_path(c, report.path).valid);
 }
 
@@ -162,7 +162,7 @@ TEST(VoronoiPlanner, APassageNarrowerThanDoublesResolveIsTakenExactly) {
   ASSERT_TRUE(report.found) << report.why_not;
   EXPECT_TRUE(report.facts.flag("voronoi.narrows"));
   EXPECT_TRUE(check_path(c, report.path).valid);
-  EXPECT_LT(report.facts.number("clearance"), 1e-15);
+  EXPECT_LT(report.bottleneck.value().clearance, 1e-15);
 }
 
 TEST(VoronoiPlanner, OnTheShippedWorldsTheClearanceIsTheBestPossible) {

@@ -1,0 +1,95 @@
+#include <polyplan/grids/raster_planner.hpp>
+
+#include <polyplan/grids/raster_grid.hpp>
+#include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/search/graph_search.hpp>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace polyplan {
+
+struct RasterPlanner::Impl {
+  const CSpace* cspace;
+  RasterOptions options;
+  Raster raster;
+  GridGraph graph;
+  std::size_t free_cells = 0, moves = 0;
+  double build_seconds = 0;
+  std::shared_ptr<const CellGrid> picture;  // made for the first query that records
+
+  Impl(const CSpace& c, const RasterOptions& o)
+      : cspace(&c),
+        options(o),
+        raster(rasterize(c, o.resolution)),
+        graph(raster_axes(raster), o.connectivity, StepCost::euclidean, raster_free_cells(raster)),
+        free_cells(raster.blocked.size() - raster.blocked_count()),
+        moves(move_count(graph)) {}
+
+  std::shared_ptr<const CellGrid> cells() {
+    if (!picture) picture = std::make_shared<const CellGrid>(raster_cell_grid(raster));
+    return picture;
+  }
+
+  void record_facts(Facts& facts) const {
+    facts.set("roadmap.kind", "raster");
+    facts.set("roadmap.vertices", free_cells);
+    facts.set("roadmap.edges", moves);
+    facts.set("roadmap.seconds", build_seconds);
+    facts.set("raster.cells_per_axis", raster.cells_per_axis);
+    facts.set("raster.blocked_cells", raster.blocked_count());
+    facts.set("search.algorithm", to_string(options.search.algorithm));
+  }
+};
+
+RasterPlanner::RasterPlanner(const CSpace& cspace, RasterOptions options) : impl_(build_timed<Impl>(cspace, options)) {}
+
+RasterPlanner::~RasterPlanner() = default;
+
+const Raster& RasterPlanner::raster() const { return impl_->raster; }
+const GridGraph& RasterPlanner::graph() const { return impl_->graph; }
+
+std::optional<std::pair<std::size_t, std::size_t>> RasterPlanner::nearest_free_cell(const ExactPoint& p) const {
+  return polyplan::nearest_free_cell(impl_->raster, p);
+}
+
+PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOptions& options) {
+  Impl& r = *impl_;
+  return grid_query(r.raster, [&](PlanReport<ExactPoint>& report, SearchResult<GridCell>& search) {
+    r.record_facts(report.facts);
+    if (options.record) report.cells = r.cells();
+
+    const auto snapped = snap_query(*r.cspace, r.raster, query, report);
+    if (!snapped) return;
+    const auto [from, to] = *snapped;
+    const GridGraph& g = r.graph;
+    SearchOptions searching = r.options.search;
+    searching.record_expanded = options.record;
+    search = shortest_path(g, from, to, searching, GridDistanceTo(g, to, raster_metric(r.raster, g.connectivity())), GridMoveCost{&g});
+    if (!search.found) {
+      const std::string n = std::to_string(r.raster.cells_per_axis);
+      report.fail(PlanStatus::not_found, "no path on the " + n + " x " + n + " grid from cell " + cell_text(r.raster, from) + " to cell " +
+                       cell_text(r.raster, to));
+      return;
+    }
+    report.facts.set("raster.grid_cost", search.cost);
+
+    return_if_valid(*r.cspace, polyline_through_turns(r.raster, query.start, search.path, query.goal),
+                    "the grid path joined to start and goal", report);
+  });
+}
+
+PlannerEntry<TranslatingRobot> raster_planner_entry() {
+  OptionTable<RasterOptions> table;
+  table.add("resolution", &RasterOptions::resolution, "cells per side of the bounds (n x n cells)");
+  table.add("connectivity", &RasterOptions::connectivity, "8: moves to all 8 neighbours without cutting corners; 4: axis moves only",
+            std::vector<std::pair<std::string, Connectivity>>{{"8", Connectivity::full}, {"4", Connectivity::axis_aligned}});
+  add_search_options(table, &RasterOptions::search);
+  return make_planner_entry<TranslatingRobot, RasterOptions>(
+      "raster", "seed 000's occupancy grid: the bounds cut into n x n exact cells, searched 8-connected",
+      std::move(table), [](const CSpace& cspace, const RasterOptions& o) {
+        return std::make_unique<RasterPlanner>(cspace, o);
+      });
+}
+
+}  // namespace polyplan

@@ -1,0 +1,80 @@
+#include <polyplan/plan/plan_json.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <stdexcept>
+
+namespace polyplan {
+namespace {
+
+using json = nlohmann::json;
+
+json value_json(const FactValue& value) {
+  return std::visit([](const auto& v) { return json(v); }, value);
+}
+
+// "roadmap.vertices" → out["roadmap"]["vertices"].
+void put_fact(json& out, const std::string& name, const FactValue& value) {
+  json* at = &out;
+  std::size_t begin = 0;
+  for (std::size_t dot = name.find('.'); dot != std::string::npos; dot = name.find('.', begin)) {
+    at = &(*at)[name.substr(begin, dot - begin)];
+    if (!at->is_object() && !at->is_null())
+      throw std::logic_error("plan_json: the fact " + name + " nests inside a fact that is a value");
+    begin = dot + 1;
+  }
+  (*at)[name.substr(begin)] = value_json(value);
+}
+
+void add_path(json& out, const std::vector<ExactPoint>& path) {
+  json doubles = json::array(), exact = json::array();
+  for (const ExactPoint& p : path) {
+    doubles.push_back({to_double(p.x), to_double(p.y)});
+    exact.push_back({to_string(p.x), to_string(p.y)});
+  }
+  out["path"] = std::move(doubles);
+  out["path_exact"] = std::move(exact);
+}
+
+void add_path(json& out, const std::vector<JointAngles>& path) {
+  json angles = json::array();
+  for (const JointAngles& q : path) angles.push_back(q);
+  out["path"] = std::move(angles);
+}
+
+void add_path(json& out, const std::vector<Pose>& path) {
+  json doubles = json::array(), exact = json::array();
+  for (const Pose& p : path) {
+    doubles.push_back({to_double(p.position.x), to_double(p.position.y), p.degrees});
+    exact.push_back({to_string(p.position.x), to_string(p.position.y), to_string(p.rotation.sin), to_string(p.rotation.cos)});
+  }
+  out["path"] = std::move(doubles);
+  out["path_exact"] = std::move(exact);
+}
+
+template <class Configuration>
+json report_json(const PlanReport<Configuration>& report, const std::string& query) {
+  json out = json::object();
+  if (!query.empty()) out["query"] = query;
+  out["found"] = report.found;
+  out["status"] = std::string(to_string(report.status));
+  out["length"] = report.found ? json(report.length) : json(nullptr);
+  add_path(out, report.path);
+  if (!report.found) out["why_not"] = report.why_not;
+  out["certified"] = report.certificate.certified;
+  if (report.certificate.certified) out["certified_by"] = report.certificate.method;
+  if (report.bottleneck) {
+    out["clearance"] = report.bottleneck->clearance;
+    out["bottleneck"] = {{"x", report.bottleneck->x}, {"y", report.bottleneck->y}};
+  }
+  for (const auto& [name, value] : report.facts.entries()) put_fact(out, name, value);
+  return out;
+}
+
+}  // namespace
+
+json plan_json(const PlanReport<ExactPoint>& report, const std::string& query) { return report_json(report, query); }
+json plan_json(const PlanReport<JointAngles>& report, const std::string& query) { return report_json(report, query); }
+json plan_json(const PlanReport<Pose>& report, const std::string& query) { return report_json(report, query); }
+
+}  // namespace polyplan

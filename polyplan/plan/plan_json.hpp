@@ -1,0 +1,31 @@
+#pragma once
+// The JSON object `polyplan plan` and `polyplan arm` print for one query (DESIGN.md "What the
+// command-line program prints"), written from any planner's report:
+//
+//   {"query": "start/goal", "found": true, "length": 12.3456,
+//    "path": [[x, y], ...], "path_exact": [["3/2", "7/10"], ...],      (points; arms: [[θ1, ...], ...]; poses below)
+//    "certified": true, "certified_by": "exact path check (triangulation walk)",
+//    "roadmap": {"kind": "visibility", "vertices": 120, ...}, "search": {...}, ...}
+//
+// `length` is null and `why_not` says why when nothing was found. Every fact of the report is a
+// key; a dotted name nests ("roadmap.vertices" is roadmap → vertices).
+#include <polyplan/geometry/arm_problem.hpp>
+#include <polyplan/geometry/rational.hpp>
+#include <polyplan/geometry/rotation.hpp>
+#include <polyplan/plan/plan_report.hpp>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+
+namespace polyplan {
+
+// `query` is the query's name ("start/goal", "queries[2]", "easy"); left out when empty.
+nlohmann::json plan_json(const PlanReport<ExactPoint>& report, const std::string& query = {});
+nlohmann::json plan_json(const PlanReport<JointAngles>& report, const std::string& query = {});
+// Poses: "path": [[x, y, theta], ...] (theta: the nominal angle in degrees, unwrapped along the
+// path: consecutive entries differ by the turn between them), "path_exact":
+// [["x", "y", "sin", "cos"], ...] (the exact rotation).
+nlohmann::json plan_json(const PlanReport<Pose>& report, const std::string& query = {});
+
+}  // namespace polyplan

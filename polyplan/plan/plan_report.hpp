@@ -1,0 +1,166 @@
+#pragma once
+// What every planner answers for one query, whatever it plans over (a point in a polygon world,
+// a pose, the joint angles of an arm): its status, found or why not, the path and its length, how the
+// path was proved free, and the planner's facts as named values. One JSON writer
+// (plan/plan_json.hpp) prints any report and one draw_plan (draw/plan_svg.hpp) draws it,
+// neither knowing which planner made it.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
+
+namespace polyplan {
+
+// A fact's value: a flag, a count, a measure or a word.
+using FactValue = std::variant<bool, std::int64_t, double, std::string>;
+
+// The named values a planner reports beside its path: "roadmap.kind", "search.expanded",
+// "query_seconds", ... A dot nests: the JSON writer prints "roadmap.vertices" inside
+// {"roadmap": {...}}. Names keep the order in which they were first set.
+//
+// The words planners share (so that a reader finds them whatever the planner):
+//   roadmap.kind, roadmap.vertices, roadmap.edges, roadmap.seconds   the graph built once
+//   search.algorithm, search.expanded, search.generated, search.seconds   the graph search
+//   query_seconds   the whole query
+//   stopped_by   what ended a search that reached a limit: "time limit", "iteration limit", ...
+//   note   a remark on the answer that the command line prints after its summary line
+class Facts {
+ public:
+  // Integers become counts, floating point measures, text words. Replaces an earlier value.
+  template <class T>
+  void set(std::string_view name, const T& value) {
+    if constexpr (std::is_same_v<T, bool>) put(name, FactValue(value));
+    else if constexpr (std::is_integral_v<T>) put(name, FactValue(static_cast<std::int64_t>(value)));
+    else if constexpr (std::is_floating_point_v<T>) put(name, FactValue(static_cast<double>(value)));
+    else put(name, FactValue(std::string(value)));
+  }
+
+  const FactValue* find(std::string_view name) const;
+  bool contains(std::string_view name) const { return find(name) != nullptr; }
+  // Typed reads; std::out_of_range naming the fact when it is missing or of another kind
+  // (number() reads counts too).
+  std::int64_t count(std::string_view name) const;
+  double number(std::string_view name) const;
+  const std::string& text(std::string_view name) const;
+  bool flag(std::string_view name) const;
+
+  const std::vector<std::pair<std::string, FactValue>>& entries() const { return entries_; }
+
+ private:
+  void put(std::string_view name, FactValue value);
+  std::vector<std::pair<std::string, FactValue>> entries_;
+};
+
+// How a returned path was proved free for every configuration along it (DESIGN.md: motions are
+// certified, never sampled). Every polyplan planner certifies what it returns.
+struct Certificate {
+  bool certified = false;
+  std::string method;  // e.g. "exact path check (triangulation walk)", "conservative advancement"
+};
+
+// A roadmap or a search tree as a picture shows it: configurations, and the pairs joined by a
+// motion of the planner.
+template <class Configuration>
+struct PlanGraph {
+  std::string kind;  // the legend's word: "roadmap" or "tree"
+  std::vector<Configuration> vertices;
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  // Optional, one per edge: the control point of the quadratic Bézier curve the edge follows (a
+  // Voronoi diagram's parabolic arc); none for a straight edge, and empty when every edge is.
+  std::vector<std::optional<Configuration>> bends;
+};
+
+// Cells over two coordinates of the configuration (x and y, or θ1 and θ2) and what the planner
+// knows of them: a raster's occupancy, the part of an arm's C-space grid a lazy search evaluated,
+// a distance field over the free cells and its ridge (the grid GVD).
+struct CellGrid {
+  // ridge: a free cell on a line the planner travels along (the GVD of gvd-grid).
+  enum State : std::uint8_t { not_evaluated = 0, free = 1, blocked = 2, ridge = 3 };
+  std::size_t columns = 0, rows = 0;
+  double x0 = 0, y0 = 0;  // the lower-left corner of cell (0, 0)
+  double cell_width = 1, cell_height = 1;
+  std::vector<std::uint8_t> states;  // columns · rows States, index column + row · columns
+  // Optional: a value per cell (as many as states, same index), drawn as a heat map over the free
+  // and ridge cells, e.g. the distance to the nearest obstacle; empty when the planner has none. `value_name`
+  // says what it is, for the legend.
+  std::vector<float> values;
+  std::string value_name;
+  bool wraps = false;  // opposite edges meet (the torus of an arm's two joint angles)
+  State state(std::size_t column, std::size_t row) const { return static_cast<State>(states[column + row * columns]); }
+};
+
+// A decomposition of the free space into convex cells as a picture shows it: each cell's corners
+// in order, and the walls through which the planner passes from one cell into the next.
+template <class Configuration>
+struct PlanDecomposition {
+  std::string kind;  // the legend's word: "trapezoids"
+  std::vector<std::vector<Configuration>> cells;
+  std::vector<std::pair<Configuration, Configuration>> walls;
+};
+
+// What became of a query, for a caller to branch on (OMPL's PlannerStatus is the model). Every
+// status but `solved` comes with a sentence in PlanReport::why_not.
+enum class PlanStatus : std::uint8_t {
+  solved,         // found: the path is certified free
+  no_path,        // proved: no path exists (the planner is complete for this query: an exact
+                  // roadmap without a path, start and goal in different components of the free space)
+  not_found,      // none found by a planner that is not complete here (a grid at its resolution, a
+                  // diagram rounded shut, a join that failed): a path may still exist
+  limit,          // a time, iteration or memory limit ended the search; the fact stopped_by says which
+  invalid_query,  // the start or the goal is not free, or lies outside the world
+  local_minimum,  // a reactive planner stopped where no move improves
+};
+
+// "solved", "no_path", ...: the JSON's and the command line's word.
+std::string_view to_string(PlanStatus status);
+
+// The narrowest place of a found path, for the planners that maximise clearance: where it is and
+// its distance to the nearest obstacle. JSON: clearance, bottleneck {x, y}; the picture draws the disc.
+struct Bottleneck {
+  double x = 0, y = 0;
+  double clearance = 0;
+};
+
+template <class Configuration>
+struct PlanReport {
+  bool found = false;
+  PlanStatus status = PlanStatus::not_found;  // solved exactly when found
+  // When not found: one sentence saying what stopped the planner ("the start [3, 4] is not free:
+  // it is inside obstacles[2]", "start and goal lie in different components of the free space").
+  std::string why_not;
+  // When found: the query's start exactly, ..., the query's goal exactly; empty otherwise.
+  std::vector<Configuration> path;
+  // In the planner's metric: Euclidean for points, the sum of the joints' turns for arms. A
+  // double: irrational by nature.
+  double length = 0;
+  Certificate certificate;
+  std::optional<Bottleneck> bottleneck;
+  Facts facts;
+
+  // What a picture shows beyond the path, kept when the query asks for it (QueryOptions::record).
+  // The graph, the cells and the decomposition are the planner's, shared by the reports of its queries.
+  std::shared_ptr<const PlanGraph<Configuration>> graph;
+  std::vector<Configuration> expanded;  // where the search expanded, in order
+  std::shared_ptr<const CellGrid> cells;
+  std::shared_ptr<const PlanDecomposition<Configuration>> decomposition;
+
+  // An answer without a path: why, as a status and as a sentence.
+  void fail(PlanStatus failure, std::string why) {
+    found = false;
+    status = failure;
+    why_not = std::move(why);
+  }
+  // A certified path is in `path`.
+  void succeed() {
+    found = true;
+    status = PlanStatus::solved;
+  }
+};
+
+}  // namespace polyplan

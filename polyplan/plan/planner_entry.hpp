@@ -1,0 +1,49 @@
+#pragma once
+// What a planner gives the registry: its name, a one-line description, its options with their
+// defaults, and a factory. Each planner's header declares one function returning its entry
+// (visibility_planner_entry(), prm_planner_entry<Space>(...)); the lists of registry/ call them.
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/plan/planner.hpp>
+#include <polyplan/plan/planner_options.hpp>
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace polyplan {
+
+template <class Space>
+struct PlannerEntry {
+  using Factory = std::function<std::unique_ptr<Planner<Space>>(const typename Space::Problem&, const OptionValues&)>;
+
+  std::string name;         // on the command line: --planner NAME
+  std::string description;  // one line
+  std::vector<OptionInfo> options;
+  // Builds the planner for a problem (which must outlive it) with the options set from `values`.
+  // Throws InputError naming the planner and the option for a value it refuses.
+  Factory make;
+};
+
+// An entry from a plain options struct, its table, and a factory taking the parsed options. A
+// factory's std::invalid_argument (a resolution out of range, say) reaches the user as InputError
+// "planner NAME: ...".
+template <class Space, class Options>
+PlannerEntry<Space> make_planner_entry(
+    std::string name, std::string description, OptionTable<Options> table,
+    std::function<std::unique_ptr<Planner<Space>>(const typename Space::Problem&, const Options&)> factory) {
+  PlannerEntry<Space> entry{name, std::move(description), table.info(), {}};
+  entry.make = [name, table = std::move(table), factory = std::move(factory)](const typename Space::Problem& problem,
+                                                                              const OptionValues& values) {
+    const Options options = table.parse(values, name);
+    try {
+      return factory(problem, options);
+    } catch (const std::invalid_argument& e) {
+      throw InputError("planner " + name + ": " + e.what());
+    }
+  };
+  return entry;
+}
+
+}  // namespace polyplan

@@ -1,0 +1,27 @@
+#include <polyplan/registry/registry.hpp>
+
+#include <polyplan/arm/arm_grid_planner.hpp>
+#include <polyplan/arm/arm_sampling_space.hpp>
+#include <polyplan/sampling/lazy_prm_planner.hpp>
+#include <polyplan/sampling/prm_planner.hpp>
+#include <polyplan/sampling/rrt_connect_planner.hpp>
+#include <polyplan/sampling/rrt_planner.hpp>
+#include <polyplan/sampling/rrt_star_planner.hpp>
+
+namespace polyplan {
+
+// Every arm planner, one line each, in the order `polyplan planners` lists them.
+template <>
+const PlannerRegistry<PlanarArm>& planners<PlanarArm>() {
+  static const PlannerRegistry<PlanarArm> registry{
+      arm_grid_planner_entry(),
+      prm_planner_entry<PlanarArm>(arm_sampling_space),
+      lazy_prm_planner_entry<PlanarArm>(arm_sampling_space),
+      rrt_planner_entry<PlanarArm>(arm_sampling_space),
+      rrt_star_planner_entry<PlanarArm>(arm_sampling_space),
+      rrt_connect_planner_entry<PlanarArm>(arm_sampling_space),
+  };
+  return registry;
+}
+
+}  // namespace polyplan

@@ -1,0 +1,46 @@
+#include <polyplan/registry/registry.hpp>
+
+#include <polyplan/grids/gvd_grid_planner.hpp>
+#include <polyplan/grids/raster_planner.hpp>
+#include <polyplan/roadmaps/trapezoid_planner.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/roadmaps/voronoi_planner.hpp>
+#include <polyplan/rotation/rotation_planner.hpp>
+#include <polyplan/sampling/lazy_prm_planner.hpp>
+#include <polyplan/sampling/polygon_sampling_space.hpp>
+#include <polyplan/sampling/prm_planner.hpp>
+#include <polyplan/sampling/rrt_connect_planner.hpp>
+#include <polyplan/sampling/rrt_planner.hpp>
+#include <polyplan/sampling/rrt_star_planner.hpp>
+
+namespace polyplan {
+
+// Every planner of polygon worlds, one line each, in the order `polyplan planners` lists them.
+template <>
+const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
+  static const PlannerRegistry<TranslatingRobot> registry{
+      visibility_planner_entry(VisibilityKind::reduced),
+      visibility_planner_entry(VisibilityKind::full),
+      raster_planner_entry(),
+      trapezoid_planner_entry(),
+      voronoi_planner_entry(),
+      gvd_grid_planner_entry(),
+      prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      lazy_prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      rrt_star_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      rrt_connect_planner_entry<TranslatingRobot>(polygon_sampling_space),
+  };
+  return registry;
+}
+
+// Every planner of rotating polygon robots.
+template <>
+const PlannerRegistry<RotatingRobot>& planners<RotatingRobot>() {
+  static const PlannerRegistry<RotatingRobot> registry{
+      rotation_planner_entry(),
+  };
+  return registry;
+}
+
+}  // namespace polyplan

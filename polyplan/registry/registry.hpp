@@ -1,0 +1,60 @@
+#pragma once
+// Planners by name. Each configuration space has one registry (planners<Space>()), a list of
+// PlannerEntry (plan/planner_entry.hpp). The command-line program, the Python module, the JSON
+// writer, the pictures and the conformance test read these lists and nothing planner-specific,
+// so a new planner is its header, its source and one registration line in the list of its space
+// (registry/polygon_planners.cpp for TranslatingRobot and RotatingRobot, registry/arm_planners.cpp
+// for PlanarArm). These files are the only ones that name every planner.
+#include <polyplan/plan/planner_entry.hpp>
+
+#include <initializer_list>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace polyplan {
+
+template <class Space>
+class PlannerRegistry {
+ public:
+  // Throws std::logic_error for two entries of one name.
+  PlannerRegistry(std::initializer_list<PlannerEntry<Space>> entries) {
+    for (const auto& e : entries) {
+      if (find(e.name)) throw std::logic_error("two planners are registered as " + e.name);
+      entries_.push_back(e);
+    }
+  }
+
+  const std::vector<PlannerEntry<Space>>& entries() const { return entries_; }
+
+  // nullptr for a name nobody registered.
+  const PlannerEntry<Space>* find(std::string_view name) const {
+    for (const auto& e : entries_)
+      if (e.name == name) return &e;
+    return nullptr;
+  }
+
+  // "visibility, visibility-full, raster": for messages.
+  std::string names() const {
+    std::string out;
+    for (const auto& e : entries_) out += (out.empty() ? "" : ", ") + e.name;
+    return out;
+  }
+
+ private:
+  std::vector<PlannerEntry<Space>> entries_;
+};
+
+// The planners of a configuration space, one specialisation per space.
+template <class Space>
+const PlannerRegistry<Space>& planners();
+
+template <>
+const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>();
+template <>
+const PlannerRegistry<RotatingRobot>& planners<RotatingRobot>();
+template <>
+const PlannerRegistry<PlanarArm>& planners<PlanarArm>();
+
+}  // namespace polyplan

@@ -1,0 +1,105 @@
+#pragma once
+// The roadmap that prm and lazyprm grow and keep from query to query: milestones (configurations
+// with a nearest-neighbour index) and a Boost graph whose edges join each new milestone to its k
+// nearest, k fixed or k = ⌈e·(1 + 1/d)·log n⌉ (PRM*'s), searched with search/graph_search.hpp.
+// prm certifies an edge before adding it; lazyprm adds it unchecked and certifies it when a search
+// wants it (`certified`). Private to the two planners' sources (it includes the BGL algorithms).
+#include <polyplan/sampling/sampling_planner.hpp>
+#include <polyplan/search/bidirectional_search.hpp>
+#include <polyplan/search/graph_search.hpp>
+
+#include <boost/graph/adjacency_list.hpp>
+
+#include <cmath>
+#include <numbers>
+
+namespace polyplan::detail {
+
+// What a roadmap does with a new milestone's neighbour.
+enum class Join {
+  none,         // no edge: the motion is blocked
+  certified,    // an edge whose motion is proved free already (PRM)
+  uncertified,  // an edge to be certified when a path uses it (lazy PRM)
+};
+
+struct SampledEdge {
+  double length = 0;
+  bool certified = false;
+};
+
+template <class Space>
+class SampledRoadmap {
+ public:
+  using Configuration = typename Space::Configuration;
+  using Graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS, boost::no_property, SampledEdge>;
+  using Vertex = typename boost::graph_traits<Graph>::vertex_descriptor;
+
+  SampledRoadmap(const SamplingSpace<Space>& space, std::size_t k) : space_(&space), nodes_(space), k_(k) {
+    k_factor_ = std::numbers::e * (1 + 1 / static_cast<double>(space.dimension()));
+  }
+
+  // Adds a milestone at its coordinates `at` (none: the space gives them, for a query's start or
+  // goal); `join(neighbour)` says, for each of its nearest milestones, nearest first, which Join
+  // to make.
+  template <class JoinNeighbour>
+  std::size_t add(Configuration configuration, std::span<const double> at, JoinNeighbour join) {
+    if (at.empty()) {
+      scratch_.resize(space_->dimension());
+      space_->coordinates(configuration, scratch_);
+      at = scratch_;
+    }
+    nodes_.neighbours().nearest(at, neighbour_count(), near_);
+    const std::size_t id = nodes_.add(std::move(configuration), at);
+    boost::add_vertex(graph_);
+    for (std::size_t n : near_)
+      if (const Join how = join(n); how != Join::none)
+        boost::add_edge(n, id, SampledEdge{sampling_distance(metric(), nodes_.coordinates(n), at), how == Join::certified},
+                        graph_);
+    return id;
+  }
+
+  // The shortest path start → goal over the edges there are (certified or not), by `options`
+  // with the distance to the goal as heuristic.
+  SearchResult<Vertex> search(std::size_t start, std::size_t goal, const SearchOptions& options) {
+    const auto to_goal = nodes_.coordinates(goal);
+    return shortest_path(
+        graph_, start, goal, options, [&](Vertex v) { return sampling_distance(metric(), nodes_.coordinates(v), to_goal); },
+        [&](const typename Graph::edge_descriptor& e) { return graph_[e].length; }, workspace_);
+  }
+
+  SearchResult<Vertex> search_both_ways(std::size_t start, std::size_t goal) {
+    return bidirectional_dijkstra(graph_, start, goal, [&](const typename Graph::edge_descriptor& e) { return graph_[e].length; });
+  }
+
+  const SampledConfigurations<Space>& nodes() const { return nodes_; }
+  Graph& graph() { return graph_; }
+  std::size_t size() const { return nodes_.size(); }
+  std::size_t edges() const { return boost::num_edges(graph_); }
+
+  std::shared_ptr<const PlanGraph<Configuration>> picture() const {
+    auto picture = std::make_shared<PlanGraph<Configuration>>();
+    picture->kind = "roadmap";
+    picture->vertices = nodes_.all();
+    for (auto [e, end] = boost::edges(graph_); e != end; ++e)
+      picture->edges.emplace_back(boost::source(*e, graph_), boost::target(*e, graph_));
+    return picture;
+  }
+
+ private:
+  SamplingMetric metric() const { return space_->metric(); }
+  std::size_t neighbour_count() const {
+    if (k_ > 0) return k_;
+    return static_cast<std::size_t>(std::ceil(k_factor_ * std::log(static_cast<double>(nodes_.size()) + 1)));
+  }
+
+  const SamplingSpace<Space>* space_;
+  SampledConfigurations<Space> nodes_;
+  std::size_t k_;
+  double k_factor_ = 0;
+  Graph graph_;
+  SearchWorkspace<Vertex> workspace_;
+  std::vector<std::size_t> near_;
+  std::vector<double> scratch_;
+};
+
+}  // namespace polyplan::detail

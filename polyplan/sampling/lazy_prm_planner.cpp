@@ -1,0 +1,99 @@
+#include <polyplan/sampling/lazy_prm_planner.hpp>
+
+#include <polyplan/sampling/detail/sampled_roadmap.hpp>
+
+#include <algorithm>
+
+namespace polyplan {
+namespace {
+
+template <class Space>
+class LazyPrmPlanner final : public SamplingPlanner<Space> {
+  using Base = SamplingPlanner<Space>;
+  using typename Base::Attempt;
+  using typename Base::Configuration;
+  using typename Base::Query;
+
+ public:
+  LazyPrmPlanner(std::unique_ptr<SamplingSpace<Space>> space, const LazyPrmOptions& options)
+      : Base("lazyprm", std::move(space), options), roadmap_(this->space(), options.k) {}
+
+ private:
+  // A milestone joined to its nearest milestones by edges not yet certified.
+  std::size_t add_milestone(const Configuration& configuration, std::span<const double> at = {}) {
+    return roadmap_.add(configuration, at, [](std::size_t) { return detail::Join::uncertified; });
+  }
+
+  // Certifies the path's unchecked edges from the start on; removes the first that is not free.
+  bool certify(const std::vector<std::size_t>& path, std::size_t& removed) {
+    auto& graph = roadmap_.graph();
+    for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      const auto [e, exists] = boost::edge(path[i], path[i + 1], graph);
+      if (graph[e].certified) continue;
+      if (!this->motion_free(roadmap_.nodes()[path[i]], roadmap_.nodes()[path[i + 1]])) {
+        boost::remove_edge(e, graph);
+        ++removed;
+        return false;
+      }
+      graph[e].certified = true;
+    }
+    return true;
+  }
+
+  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+    auto& space = this->space();
+    const std::size_t start = add_milestone(space.start(query)), goal = add_milestone(space.goal(query));
+    std::vector<double> at(space.dimension());
+
+    std::size_t searches = 0, removed = 0;
+    std::vector<std::size_t> path;
+    while (path.empty() && !budget.spent()) {
+      ++searches;
+      const auto result = roadmap_.search(start, goal, SearchOptions{Search::astar});
+      if (result.found) {
+        if (certify(result.path, removed)) path = result.path;
+        continue;
+      }
+      const std::size_t batch = std::max<std::size_t>(50, roadmap_.size() / 2);
+      for (std::size_t i = 0; i < batch && budget.next(); ++i) {
+        const Configuration sample = this->draw(at);
+        if (this->state_free(sample)) add_milestone(sample, at);
+      }
+    }
+
+    Attempt attempt;
+    facts.set("roadmap.vertices", roadmap_.size());
+    facts.set("roadmap.edges", roadmap_.edges());
+    facts.set("searches", searches);
+    facts.set("edges_removed", removed);
+    if (record) attempt.graph = roadmap_.picture();
+    if (path.empty()) {
+      attempt.why_not = "no path of certified edges joined start and goal within " + budget.limit_reached();
+      return attempt;
+    }
+    for (std::size_t v : path) attempt.path.push_back(roadmap_.nodes()[v]);
+    this->found(budget, this->length(attempt.path));
+    return attempt;
+  }
+
+  detail::SampledRoadmap<Space> roadmap_;
+};
+
+}  // namespace
+
+template <class Space>
+PlannerEntry<Space> lazy_prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
+  OptionTable<LazyPrmOptions> table;
+  table.add("k", &LazyPrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)");
+  add_sampling_options(table);
+  return make_sampling_entry<Space, LazyPrmOptions>(
+      "lazyprm", "lazy PRM: edges certified only when the shortest path wants them, kept across queries", std::move(table),
+      std::move(make_space), [](std::unique_ptr<SamplingSpace<Space>> space, const LazyPrmOptions& options) {
+        return std::make_unique<LazyPrmPlanner<Space>>(std::move(space), options);
+      });
+}
+
+template PlannerEntry<TranslatingRobot> lazy_prm_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
+template PlannerEntry<PlanarArm> lazy_prm_planner_entry(SamplingSpaceFactory<PlanarArm>);
+
+}  // namespace polyplan

@@ -1,0 +1,21 @@
+#pragma once
+// Lazy PRM (Bohlin & Kavraki 2000) over any sampling space: milestones are free samples joined to
+// their k nearest without checking the motions; a query searches the roadmap for the shortest
+// path and certifies only that path's unchecked edges, from the start on. An edge that is not
+// free is removed and the search runs again; when no path is left, the roadmap grows by half its
+// size (at least 50 samples). Certified edges are remembered from query to query. Registered as
+// `lazyprm` for polygon worlds and arms.
+#include <polyplan/sampling/sampling_planner.hpp>
+
+namespace polyplan {
+
+struct LazyPrmOptions : SamplingLimits {
+  std::size_t k = 10;  // neighbours each milestone is joined to; 0: ⌈e·(1 + 1/d)·log n⌉
+};
+
+// The registry's `lazyprm` for a space: option k and the sampling limits. Facts: roadmap.vertices,
+// roadmap.edges, searches (shortest-path searches run), edges_removed (edges found not free).
+template <class Space>
+PlannerEntry<Space> lazy_prm_planner_entry(SamplingSpaceFactory<Space> make_space);
+
+}  // namespace polyplan

@@ -1,0 +1,99 @@
+#include <polyplan/sampling/polygon_sampling_space.hpp>
+
+#include <polyplan/free_space/detail/free_space_triangulation.hpp>
+#include <polyplan/geometry/detail/cgal_types.hpp>
+#include <polyplan/geometry/detail/cspace_impl.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/rational.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace polyplan {
+namespace {
+
+struct Box {
+  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
+  void add(const ExactPoint& p) {
+    const double x = to_double(p.x), y = to_double(p.y);
+    xmin = std::min(xmin, x), ymin = std::min(ymin, y), xmax = std::max(xmax, x), ymax = std::max(ymax, y);
+  }
+  bool empty() const { return !(xmin <= xmax && ymin <= ymax); }
+};
+
+// The region samples are drawn from (see the header).
+Box sampling_box(const CSpace& cspace) {
+  Box box;
+  if (const auto& reference = cspace.reference_box()) {
+    box.add({reference->xmin, reference->ymin});
+    box.add({reference->xmax, reference->ymax});
+    return box;
+  }
+  for (const PolygonWithHoles& c : cspace.cobstacles())
+    for (const ExactPoint& p : c.outer) box.add(p);
+  for (const Query& q : cspace.world().queries) box.add(q.start), box.add(q.goal);
+  if (box.empty()) box.add({0, 0});
+  const double margin = std::hypot(box.xmax - box.xmin, box.ymax - box.ymin) / 10 + 1;
+  box.xmin -= margin, box.ymin -= margin, box.xmax += margin, box.ymax += margin;
+  return box;
+}
+
+// The corners of the box, which the triangulation's frame must hold in a world without bounds.
+std::vector<ExactPoint> corners(const Box& box) {
+  if (box.empty()) return {};
+  return {{Rational(box.xmin), Rational(box.ymin)}, {Rational(box.xmax), Rational(box.ymax)}};
+}
+
+// Tests run on the free space's constrained triangulation (a walk with exact orientation
+// predicates, microseconds), and on the C-space's arrangement (geometry/path_check.hpp, the same
+// verdicts, much slower) for a configuration beyond the triangulation's frame.
+class PolygonSamplingSpace final : public SamplingSpace<TranslatingRobot> {
+ public:
+  explicit PolygonSamplingSpace(const CSpace& cspace)
+      : cspace_(&cspace), box_(sampling_box(cspace)), triangulation_(detail::CSpaceAccess::impl(cspace), corners(box_)) {}
+
+  std::size_t dimension() const override { return 2; }
+  SamplingMetric metric() const override { return SamplingMetric::euclidean; }
+  double extent() const override { return box_.empty() ? 0 : std::hypot(box_.xmax - box_.xmin, box_.ymax - box_.ymin); }
+  double volume() const override { return box_.empty() ? 0 : (box_.xmax - box_.xmin) * (box_.ymax - box_.ymin); }
+
+  void sample(SamplingRandom& random, std::span<double> out) const override {
+    out[0] = box_.xmin + uniform01(random) * (box_.xmax - box_.xmin);
+    out[1] = box_.ymin + uniform01(random) * (box_.ymax - box_.ymin);
+  }
+  void coordinates(const ExactPoint& p, std::span<double> out) const override {
+    out[0] = to_double(p.x);
+    out[1] = to_double(p.y);
+  }
+  ExactPoint configuration(std::span<const double> c) const override { return {Rational(c[0]), Rational(c[1])}; }
+
+  bool is_free(const ExactPoint& p) override {
+    if (!triangulation_.in_frame(p)) return cspace_->locate(p).kind != Location::Kind::blocked;
+    return !triangulation_.components_at(detail::to_point(p)).empty();
+  }
+  bool motion_is_free(const ExactPoint& a, const ExactPoint& b) override {
+    if (!triangulation_.in_frame(a) || !triangulation_.in_frame(b)) return check_segment(*cspace_, a, b).valid;
+    return !triangulation_.why_blocked(detail::to_point(a), detail::to_point(b));
+  }
+  std::optional<std::string> query_not_free(const Query& query) override {
+    if (box_.empty()) return "the robot does not fit in the bounds";
+    return cspace_->query_not_free(query);
+  }
+  ExactPoint start(const Query& query) const override { return query.start; }
+  ExactPoint goal(const Query& query) const override { return query.goal; }
+  std::string certificate_method() const override { return "exact segment test (triangulation walk)"; }
+
+ private:
+  const CSpace* cspace_;
+  Box box_;
+  detail::FreeSpaceTriangulation triangulation_;
+};
+
+}  // namespace
+
+std::unique_ptr<SamplingSpace<TranslatingRobot>> polygon_sampling_space(const CSpace& cspace) {
+  return std::make_unique<PolygonSamplingSpace>(cspace);
+}
+
+}  // namespace polyplan

@@ -1,0 +1,91 @@
+#include <polyplan/sampling/prm_planner.hpp>
+
+#include <polyplan/sampling/detail/sampled_roadmap.hpp>
+
+#include <numeric>
+
+namespace polyplan {
+namespace {
+
+template <class Space>
+class PrmPlanner final : public SamplingPlanner<Space> {
+  using Base = SamplingPlanner<Space>;
+  using typename Base::Attempt;
+  using typename Base::Configuration;
+  using typename Base::Query;
+
+ public:
+  PrmPlanner(std::unique_ptr<SamplingSpace<Space>> space, const PrmOptions& options)
+      : Base("prm", std::move(space), options), options_(options), roadmap_(this->space(), options.k) {}
+
+ private:
+  std::size_t component(std::size_t id) {
+    while (components_[id] != id) id = components_[id] = components_[components_[id]];  // path halving
+    return id;
+  }
+
+  // A milestone joined to its nearest milestones by every motion certified free (`at`: its
+  // coordinates, or none to have the space give them).
+  std::size_t add_milestone(const Configuration& configuration, std::span<const double> at = {}) {
+    const std::size_t id = roadmap_.size();
+    components_.push_back(id);
+    return roadmap_.add(configuration, at, [&](std::size_t n) {
+      if (!this->motion_free(roadmap_.nodes()[n], configuration)) return detail::Join::none;
+      components_[component(n)] = component(id);
+      return detail::Join::certified;
+    });
+  }
+
+  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+    auto& space = this->space();
+    const std::size_t start = add_milestone(space.start(query)), goal = add_milestone(space.goal(query));
+    std::vector<double> at(space.dimension());
+    while (component(start) != component(goal) && budget.next()) {
+      const Configuration sample = this->draw(at);
+      if (this->state_free(sample)) add_milestone(sample, at);
+    }
+
+    Attempt attempt;
+    const auto finish = [&] {
+      facts.set("roadmap.vertices", roadmap_.size());
+      facts.set("roadmap.edges", roadmap_.edges());
+      if (record) attempt.graph = roadmap_.picture();
+      return std::move(attempt);
+    };
+    if (component(start) != component(goal)) {
+      attempt.why_not = "start and goal were not joined in the roadmap within " + budget.limit_reached();
+      return finish();
+    }
+    const auto result = options_.bidirectional ? roadmap_.search_both_ways(start, goal) : roadmap_.search(start, goal, options_.search);
+    facts.set("search.algorithm", options_.bidirectional ? std::string("bidirectional dijkstra") : std::string(to_string(options_.search.algorithm)));
+    facts.set("search.expanded", result.expanded);
+    for (std::size_t v : result.path) attempt.path.push_back(roadmap_.nodes()[v]);
+    this->found(budget, this->length(attempt.path));
+    return finish();
+  }
+
+  PrmOptions options_;
+  detail::SampledRoadmap<Space> roadmap_;
+  std::vector<std::size_t> components_;  // union-find parents
+};
+
+}  // namespace
+
+template <class Space>
+PlannerEntry<Space> prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
+  OptionTable<PrmOptions> table;
+  table.add("k", &PrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)");
+  add_search_options(table, &PrmOptions::search);
+  table.add("bidirectional", &PrmOptions::bidirectional, "search the roadmap with bidirectional Dijkstra instead");
+  add_sampling_options(table);
+  return make_sampling_entry<Space, PrmOptions>(
+      "prm", "probabilistic roadmap (k nearest), kept across queries, certified motions", std::move(table), std::move(make_space),
+      [](std::unique_ptr<SamplingSpace<Space>> space, const PrmOptions& options) {
+        return std::make_unique<PrmPlanner<Space>>(std::move(space), options);
+      });
+}
+
+template PlannerEntry<TranslatingRobot> prm_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
+template PlannerEntry<PlanarArm> prm_planner_entry(SamplingSpaceFactory<PlanarArm>);
+
+}  // namespace polyplan

@@ -1,0 +1,25 @@
+#pragma once
+// K-PRM (Kavraki et al. 1996) over any sampling space: free samples become milestones, each joined
+// to its k nearest milestones by certified motions; the roadmap is kept from query to query (a
+// multiple-query planner). A query joins its start and goal the same way and samples until they
+// are in one component (union-find), then searches the roadmap (A* by default, or bidirectional
+// Dijkstra, the course's extra). k is fixed (the
+// course's K values; 10 is OMPL's) or, with k = 0, PRM*'s k = ⌈e·(1 + 1/d)·log n⌉. Registered as
+// `prm` for polygon worlds and arms.
+#include <polyplan/sampling/sampling_planner.hpp>
+#include <polyplan/search/search_result.hpp>
+
+namespace polyplan {
+
+struct PrmOptions : SamplingLimits {
+  std::size_t k = 10;  // neighbours each milestone is joined to; 0: ⌈e·(1 + 1/d)·log n⌉
+  SearchOptions search{Search::astar};
+  bool bidirectional = false;  // search with bidirectional Dijkstra instead (search/bidirectional_search.hpp)
+};
+
+// The registry's `prm` for a space: options k, search, weight, bidirectional and the sampling limits
+// (iterations: samples per query). Facts: roadmap.vertices, roadmap.edges, search.algorithm, search.expanded.
+template <class Space>
+PlannerEntry<Space> prm_planner_entry(SamplingSpaceFactory<Space> make_space);
+
+}  // namespace polyplan

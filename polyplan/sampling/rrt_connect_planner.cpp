@@ -1,0 +1,99 @@
+#include <polyplan/sampling/rrt_connect_planner.hpp>
+
+#include <stdexcept>
+
+namespace polyplan {
+namespace {
+
+template <class Space>
+class RrtConnectPlanner final : public SamplingPlanner<Space> {
+  using Base = SamplingPlanner<Space>;
+  using typename Base::Attempt;
+  using typename Base::Configuration;
+  using typename Base::Query;
+
+ public:
+  RrtConnectPlanner(std::unique_ptr<SamplingSpace<Space>> space, const RrtConnectOptions& options)
+      : Base("rrtconnect", std::move(space), options) {
+    if (!(options.step >= 0)) throw std::invalid_argument("step must be 0 (the default) or a positive distance");
+    step_ = options.step > 0 ? options.step : this->space().extent() / 5;
+  }
+
+ private:
+  enum class Grown { trapped, advanced, reached };
+
+  // One step of `tree` toward `target` (its coordinates `to`) from the nearest node.
+  Grown extend(SamplingTree<Space>& tree, const Configuration& target, std::span<const double> to, std::vector<double>& at,
+               std::size_t& added) {
+    auto step = this->step_toward(tree, target, to, step_, at);
+    if (step.stays) {
+      added = step.from;
+      return Grown::reached;  // the target is a node already
+    }
+    if (!this->motion_free(tree.nodes()[step.from], step.to)) return Grown::trapped;
+    added = tree.add(std::move(step.to), at, step.from);
+    return step.reaches_target ? Grown::reached : Grown::advanced;
+  }
+
+  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+    auto& space = this->space();
+    const std::size_t d = space.dimension();
+    SamplingTree<Space> from_start(space, space.start(query)), from_goal(space, space.goal(query));
+    SamplingTree<Space>*grow = &from_start, *other = &from_goal;
+    std::vector<double> sample_at(d), new_at(d), step_at(d);
+
+    Attempt attempt;
+    std::optional<std::pair<std::size_t, std::size_t>> meeting;  // (start tree node, goal tree node)
+    if (space.start(query) == space.goal(query)) meeting.emplace(SamplingTree<Space>::root, SamplingTree<Space>::root);
+    while (!meeting && budget.next()) {
+      const Configuration sample = this->draw(sample_at);
+      std::size_t added = 0;
+      if (extend(*grow, sample, sample_at, new_at, added) != Grown::trapped) {
+        // The other tree connects: steps toward the new node until it gets there or is stopped.
+        const Configuration& target = (*grow).nodes()[added];
+        std::size_t reached_by = 0;
+        Grown connect = Grown::advanced;
+        while (connect == Grown::advanced && !budget.spent()) connect = extend(*other, target, new_at, step_at, reached_by);
+        if (connect == Grown::reached)
+          meeting = grow == &from_start ? std::pair{added, reached_by} : std::pair{reached_by, added};
+      }
+      std::swap(grow, other);
+    }
+    facts.set("tree_size", from_start.size() + from_goal.size());
+    facts.set("start_tree_size", from_start.size());
+    facts.set("goal_tree_size", from_goal.size());
+    if (record) attempt.graph = SamplingTree<Space>::picture({&from_start, &from_goal});
+    if (!meeting) {
+      attempt.why_not = "the trees did not meet within " + budget.limit_reached();
+      return attempt;
+    }
+    // The start tree's path to the meeting node, then the goal tree's from there (the same
+    // configuration, taken once) back to its root, the goal.
+    attempt.path = from_start.path_from_root(meeting->first);
+    std::vector<Configuration> rest = from_goal.path_from_root(meeting->second);
+    attempt.path.insert(attempt.path.end(), rest.rbegin() + 1, rest.rend());
+    this->found(budget, this->length(attempt.path));
+    return attempt;
+  }
+
+  double step_ = 0;
+};
+
+}  // namespace
+
+template <class Space>
+PlannerEntry<Space> rrt_connect_planner_entry(SamplingSpaceFactory<Space> make_space) {
+  OptionTable<RrtConnectOptions> table;
+  table.add("step", &RrtConnectOptions::step, "the farthest one extension goes (0: a fifth of the space's extent)");
+  add_sampling_options(table);
+  return make_sampling_entry<Space, RrtConnectOptions>(
+      "rrtconnect", "two trees, from start and goal, that extend and connect, certified motions", std::move(table),
+      std::move(make_space), [](std::unique_ptr<SamplingSpace<Space>> space, const RrtConnectOptions& options) {
+        return std::make_unique<RrtConnectPlanner<Space>>(std::move(space), options);
+      });
+}
+
+template PlannerEntry<TranslatingRobot> rrt_connect_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
+template PlannerEntry<PlanarArm> rrt_connect_planner_entry(SamplingSpaceFactory<PlanarArm>);
+
+}  // namespace polyplan

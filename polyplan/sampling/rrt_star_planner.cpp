@@ -1,0 +1,182 @@
+#include <polyplan/sampling/rrt_star_planner.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace polyplan {
+namespace {
+
+// The measure of the metric's unit ball in d dimensions: π^(d/2) / Γ(d/2 + 1) (Euclidean), 2^d / d! (the torus's sum of turns).
+double unit_ball(SamplingMetric metric, std::size_t d) {
+  const double n = static_cast<double>(d);
+  if (metric == SamplingMetric::euclidean) return std::pow(std::numbers::pi, n / 2) / std::tgamma(n / 2 + 1);
+  return std::pow(2.0, n) / std::tgamma(n + 1);
+}
+
+template <class Space>
+class RrtStarPlanner final : public SamplingPlanner<Space> {
+  using Base = SamplingPlanner<Space>;
+  using typename Base::Attempt;
+  using typename Base::Configuration;
+  using typename Base::Query;
+
+ public:
+  RrtStarPlanner(std::unique_ptr<SamplingSpace<Space>> space, const RrtStarOptions& options)
+      : Base("rrtstar", std::move(space), options), options_(options), step_(extension_step(options, this->space().extent())) {
+    const double d = static_cast<double>(this->space().dimension());
+    k_factor_ = std::numbers::e * (1 + 1 / d);
+    gamma_ = 2 * std::pow((1 + 1 / d) * this->space().volume() / unit_ball(this->space().metric(), this->space().dimension()), 1 / d);
+  }
+
+ private:
+  struct Node {
+    double cost = 0;  // the tree's path length from the root
+    std::vector<std::size_t> children;
+  };
+
+  void neighbours_of(const SamplingTree<Space>& tree, std::span<const double> at, std::vector<std::size_t>& out) const {
+    const double n = static_cast<double>(tree.size());
+    if (options_.rewire == Rewiring::k_nearest) {
+      // Only those within one extension (as OMPL's RRT* does): a farther one is rarely a cheaper
+      // parent, and certifying a long motion costs the most.
+      tree.nodes().neighbours().nearest(at, static_cast<std::size_t>(std::ceil(k_factor_ * std::log(n + 1))), out);
+      if (step_ > 0)
+        out.erase(std::remove_if(out.begin(), out.end(), [&](std::size_t id) { return this->distance(tree.nodes().coordinates(id), at) > step_; }),
+                  out.end());
+      return;
+    }
+    double r = gamma_ * std::pow(std::log(n + 1) / (n + 1), 1 / static_cast<double>(this->space().dimension()));
+    if (step_ > 0) r = std::min(r, step_);
+    tree.nodes().neighbours().within(at, r, out);
+  }
+
+  // A new parent for `child` (its cost falls by `saving`): the subtree's costs fall with it.
+  void reparent(SamplingTree<Space>& tree, std::vector<Node>& nodes, std::size_t child, std::size_t parent, double cost) {
+    auto& siblings = nodes[tree.parent(child)].children;
+    siblings.erase(std::find(siblings.begin(), siblings.end(), child));
+    tree.set_parent(child, parent);
+    nodes[parent].children.push_back(child);
+    const double saving = nodes[child].cost - cost;
+    std::vector<std::size_t> stack{child};
+    while (!stack.empty()) {
+      const std::size_t id = stack.back();
+      stack.pop_back();
+      nodes[id].cost -= saving;
+      stack.insert(stack.end(), nodes[id].children.begin(), nodes[id].children.end());
+    }
+  }
+
+  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+    auto& space = this->space();
+    const Configuration& goal = space.goal(query);
+    const std::size_t d = space.dimension();
+    std::vector<double> goal_at(d), sample_at(d), new_at(d);
+    space.coordinates(goal, goal_at);
+    SamplingTree<Space> tree(space, space.start(query));
+    std::vector<Node> nodes(1);
+    std::optional<std::size_t> goal_node;
+    if (space.start(query) == goal) goal_node = SamplingTree<Space>::root;
+    double best = goal_node ? 0 : std::numeric_limits<double>::infinity();
+    std::size_t solutions = 0, rewired = 0;
+    std::vector<std::size_t> near;
+    std::vector<std::pair<double, std::size_t>> by_cost;  // (cost through the neighbour, neighbour)
+
+    while (!(goal_node && best == 0) && budget.next()) {
+      const auto sample = this->goal_biased(goal, goal_at, options_.goal_bias, sample_at);
+      auto step = this->step_toward(tree, sample.configuration, sample.at, step_, new_at);
+      if (step.stays) continue;
+      const bool is_goal = sample.is_goal && step.reaches_target;
+      const std::size_t nearest = step.from;
+      Configuration& next = step.to;
+      if (is_goal && goal_node) {
+        // The goal is in the tree already: a cheaper parent for it, if a neighbour offers one.
+        neighbours_of(tree, goal_at, near);
+        by_cost.clear();
+        for (std::size_t n : near)
+          if (n != *goal_node) by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), goal_at), n);
+        std::sort(by_cost.begin(), by_cost.end());
+        for (const auto& [cost, n] : by_cost) {
+          if (cost >= nodes[*goal_node].cost) break;
+          if (this->motion_free(tree.nodes()[n], goal)) {
+            reparent(tree, nodes, *goal_node, n, cost);
+            ++rewired;
+            break;
+          }
+        }
+      } else {
+        if (!this->motion_free(tree.nodes()[nearest], next)) continue;
+        // The cheapest certified parent among the neighbours (the nearest one is certified already).
+        neighbours_of(tree, new_at, near);
+        by_cost.clear();
+        for (std::size_t n : near) by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), new_at), n);
+        std::sort(by_cost.begin(), by_cost.end());
+        std::size_t parent = nearest;
+        double cost = nodes[nearest].cost + this->distance(tree.nodes().coordinates(nearest), new_at);
+        for (const auto& [through, n] : by_cost) {
+          if (through >= cost) break;
+          if (this->motion_free(tree.nodes()[n], next)) {
+            parent = n, cost = through;
+            break;
+          }
+        }
+        const std::size_t id = tree.add(std::move(next), new_at, parent);
+        nodes.push_back({cost, {}});
+        nodes[parent].children.push_back(id);
+        if (is_goal) goal_node = id;
+        // Rewiring: each neighbour the new node reaches more cheaply takes it as its parent.
+        for (const auto& [through, n] : by_cost) {
+          if (n == parent || n == SamplingTree<Space>::root) continue;
+          const double via = cost + this->distance(new_at, tree.nodes().coordinates(n));
+          if (via < nodes[n].cost && this->motion_free(tree.nodes()[id], tree.nodes()[n])) {
+            reparent(tree, nodes, n, id, via);
+            ++rewired;
+          }
+        }
+      }
+      if (goal_node && nodes[*goal_node].cost < best) {
+        best = nodes[*goal_node].cost;
+        ++solutions;
+        this->found(budget, best);
+      }
+    }
+    facts.set("tree_size", tree.size());
+    facts.set("solutions", solutions);
+    facts.set("rewired", rewired);
+    facts.set("rewire", options_.rewire == Rewiring::k_nearest ? "k-nearest" : "radius");
+    Attempt attempt;
+    if (record) attempt.graph = SamplingTree<Space>::picture({&tree});
+    if (!goal_node) {
+      attempt.why_not = "the tree did not reach the goal within " + budget.limit_reached();
+      return attempt;
+    }
+    attempt.path = tree.path_from_root(*goal_node);
+    return attempt;
+  }
+
+  RrtStarOptions options_;
+  double step_;
+  double k_factor_ = 0, gamma_ = 0;
+};
+
+}  // namespace
+
+template <class Space>
+PlannerEntry<Space> rrt_star_planner_entry(SamplingSpaceFactory<Space> make_space) {
+  OptionTable<RrtStarOptions> table;
+  table.add("rewire", &RrtStarOptions::rewire, "the neighbours a new node may take as parent and rewire: k nearest or within a radius",
+            std::vector<std::pair<std::string, Rewiring>>{{"k", Rewiring::k_nearest}, {"radius", Rewiring::radius}});
+  add_tree_options(table);
+  add_sampling_options(table);
+  return make_sampling_entry<Space, RrtStarOptions>(
+      "rrtstar", "RRT* (asymptotically optimal, anytime: improves until its time or iteration limit), certified motions",
+      std::move(table), std::move(make_space), [](std::unique_ptr<SamplingSpace<Space>> space, const RrtStarOptions& options) {
+        return std::make_unique<RrtStarPlanner<Space>>(std::move(space), options);
+      });
+}
+
+template PlannerEntry<TranslatingRobot> rrt_star_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
+template PlannerEntry<PlanarArm> rrt_star_planner_entry(SamplingSpaceFactory<PlanarArm>);
+
+}  // namespace polyplan

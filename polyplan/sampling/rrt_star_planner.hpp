@@ -1,0 +1,26 @@
+#pragma once
+// RRT* (Karaman & Frazzoli 2011) over any sampling space: RRT whose new node takes, among its
+// neighbours, the parent that reaches it most cheaply, and then becomes the parent of each
+// neighbour it reaches more cheaply (rewiring); every such motion certified. Neighbours are the
+// k nearest within one step, k = ⌈e·(1 + 1/d)·log n⌉, or those within r = min(step, γ·(log n / n)^(1/d)) with
+// γ = 2·((1 + 1/d)·volume / unit ball)^(1/d). Anytime: it goes on improving the path until the
+// time or iteration limit, so with the defaults it always runs to a limit. Registered as
+// `rrtstar` for polygon worlds and arms.
+#include <polyplan/sampling/rrt_planner.hpp>
+
+namespace polyplan {
+
+enum class Rewiring { k_nearest, radius };
+
+struct RrtStarOptions : RrtOptions {
+  Rewiring rewire = Rewiring::k_nearest;
+  RrtStarOptions() { iterations = 20000; }
+};
+
+// The registry's `rrtstar` for a space: options rewire (k|radius), goal-bias, step, extend and the
+// sampling limits (iterations 20000 by default). Facts: tree_size, solutions (how often the path
+// improved), rewired (motions that replaced a parent).
+template <class Space>
+PlannerEntry<Space> rrt_star_planner_entry(SamplingSpaceFactory<Space> make_space);
+
+}  // namespace polyplan

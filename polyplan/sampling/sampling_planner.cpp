@@ -1,0 +1,150 @@
+#include <polyplan/sampling/sampling_planner.hpp>
+
+#include <polyplan/plan/planner_options.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace polyplan {
+
+std::string SamplingBudget::limit_reached() const {
+  if (timed_out_) return "the time limit (" + detail::show_number(seconds_) + " s)";
+  return "the iteration limit (" + std::to_string(iterations_) + ")";
+}
+
+template <class Space>
+SamplingPlanner<Space>::SamplingPlanner(std::string name, std::unique_ptr<SamplingSpace<Space>> space, SamplingLimits limits)
+    : name_(std::move(name)), space_(std::move(space)), limits_(limits), random_(limits.seed) {
+  if (!(limits_.time > 0) || !std::isfinite(limits_.time)) throw std::invalid_argument("time must be a number of seconds above 0");
+  if (limits_.iterations == 0) throw std::invalid_argument("iterations must be at least 1");
+}
+
+template <class Space>
+auto SamplingPlanner<Space>::draw(std::span<double> coordinates) -> Configuration {
+  ++samples_;
+  space_->sample(random_, coordinates);
+  return space_->configuration(coordinates);
+}
+
+template <class Space>
+double SamplingPlanner<Space>::length(const std::vector<Configuration>& path) const {
+  const std::size_t d = space_->dimension();
+  std::vector<double> a(d), b(d);
+  double sum = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    space_->coordinates(path[i], a);
+    space_->coordinates(path[i + 1], b);
+    sum += distance(a, b);
+  }
+  return sum;
+}
+
+// Shortcuts between random points of the path (OMPL's shortcutPath): two lengths along it drawn
+// at random give two configurations on two different motions; when the motion between them is
+// certified free, and so are the motions onto them from the configuration before the first and
+// from the second to the one after (a configuration computed on a motion lies on it only up to
+// rounding), they replace what lies between, if that is shorter. Then each configuration between
+// two whose motion is certified free goes. The length never grows.
+template <class Space>
+auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::vector<Configuration> {
+  const std::size_t d = space_->dimension();
+  std::vector<double> a(d), b(d), first_at(d), second_at(d);
+  std::vector<double> along;  // along[k]: the length from the start to path[k]
+  const auto measure = [&] {
+    along.assign(1, 0.0);
+    for (std::size_t k = 0; k + 1 < path.size(); ++k) {
+      space_->coordinates(path[k], a);
+      space_->coordinates(path[k + 1], b);
+      along.push_back(along.back() + distance(a, b));
+    }
+  };
+  // The configuration at length s along the path: on the motion path[k] → path[k + 1].
+  const auto at = [&](double s, std::vector<double>& out) {
+    const std::size_t k = std::min<std::size_t>(
+        static_cast<std::size_t>(std::upper_bound(along.begin(), along.end(), s) - along.begin()) - 1, path.size() - 2);
+    space_->coordinates(path[k], a);
+    space_->coordinates(path[k + 1], b);
+    const double span = along[k + 1] - along[k];
+    sampling_interpolate(space_->metric(), a, b, span > 0 ? (s - along[k]) / span : 0, out);
+    return k;
+  };
+
+  const std::size_t attempts = 4 * path.size() + 20;
+  measure();
+  for (std::size_t attempt = 0; attempt < attempts && path.size() > 2; ++attempt) {
+    double s1 = uniform01(random_) * along.back(), s2 = uniform01(random_) * along.back();
+    if (s1 > s2) std::swap(s1, s2);
+    const std::size_t i = at(s1, first_at), j = at(s2, second_at);
+    if (i == j) continue;
+    space_->coordinates(path[i], a);
+    space_->coordinates(path[j + 1], b);
+    const double now = along[j + 1] - along[i];
+    const double then = distance(a, first_at) + distance(first_at, second_at) + distance(second_at, b);
+    if (!(then < now * (1 - 1e-12))) continue;
+    const Configuration first = space_->configuration(first_at), second = space_->configuration(second_at);
+    if (!motion_free(first, second) || !motion_free(path[i], first) || !motion_free(second, path[j + 1])) continue;
+    std::vector<Configuration> shorter(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(i + 1));
+    shorter.push_back(first);
+    shorter.push_back(second);
+    shorter.insert(shorter.end(), path.begin() + static_cast<std::ptrdiff_t>(j + 1), path.end());
+    path = std::move(shorter);
+    measure();
+  }
+  for (std::size_t k = 1; k + 1 < path.size();)
+    if (motion_free(path[k - 1], path[k + 1])) path.erase(path.begin() + static_cast<std::ptrdiff_t>(k));
+    else ++k;
+  return path;
+}
+
+template <class Space>
+auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& options) -> PlanReport<Configuration> {
+  SamplingBudget budget(limits_);
+  PlanReport<Configuration> report;
+  samples_ = motions_checked_ = 0;
+  improvements_.clear();
+  Facts& facts = report.facts;
+  facts.set("roadmap.kind", name_);
+  facts.set("seed", limits_.seed);
+  const auto finish = [&] {
+    facts.set("samples", samples_);
+    facts.set("motions_checked", motions_checked_);
+    facts.set("query_seconds", budget.seconds());
+    return std::move(report);
+  };
+  if (auto why = space_->query_not_free(query)) {
+    report.fail(PlanStatus::invalid_query, *why);
+    return finish();
+  }
+
+  Attempt attempt = solve(query, budget, facts, options.record);
+  facts.set("iterations", budget.used());
+  facts.set("stopped_by", budget.stopped_by());
+  report.graph = std::move(attempt.graph);
+  if (attempt.path.empty()) {
+    report.fail(PlanStatus::limit, std::move(attempt.why_not));
+    return finish();
+  }
+  if (attempt.path.size() == 1) attempt.path.push_back(space_->goal(query));  // start == goal: one motion of length 0
+  if (!(attempt.path.front() == space_->start(query)) || !(attempt.path.back() == space_->goal(query)))
+    throw std::logic_error("a sampling planner's path does not run from the query's start to its goal");
+  facts.set("first_solution_seconds", improvements_.empty() ? budget.seconds() : improvements_.front().seconds);
+  facts.set("raw_length", length(attempt.path));
+  std::vector<Configuration> path = limits_.shortcut ? shortcut(std::move(attempt.path)) : std::move(attempt.path);
+
+  // Every motion was certified as the planner made it; certified once more as returned, so that
+  // no assembly of tree halves or shortcut can slip an unchecked motion into the answer.
+  for (std::size_t i = 0; i + 1 < path.size(); ++i)
+    if (!space_->motion_is_free(path[i], path[i + 1]))
+      throw std::logic_error("a sampling planner's path has a motion that is not certified free");
+  report.succeed();
+  report.length = length(path);
+  report.path = std::move(path);
+  report.certificate = {true, space_->certificate_method() + ", every motion certified again on the returned path"};
+  return finish();
+}
+
+template class SamplingPlanner<TranslatingRobot>;
+template class SamplingPlanner<PlanarArm>;
+
+}  // namespace polyplan

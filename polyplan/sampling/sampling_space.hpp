@@ -1,0 +1,105 @@
+#pragma once
+// What the sampling planners (prm, lazyprm, rrt, rrtstar, rrtconnect) know of a configuration
+// space, and nothing more: how to sample it, how far apart two configurations are and how to steer
+// between them (on coordinates, by the space's metric), whether a configuration is free, and
+// whether the motion between two is free — certified, never sampled (DESIGN.md). Two spaces
+// implement it: a translating robot in a polygon world (sampling/polygon_sampling_space.hpp: exact
+// positions, the exact segment test) and a planar arm (arm/arm_sampling_space.hpp: joint angles on
+// the torus, conservative advancement).
+//
+// A configuration has coordinates (doubles) on which distances, nearest neighbours and steering
+// are computed; the configuration itself (an exact point, joint angles) is what the motion test
+// and the returned path use. So the query's exact start and goal stay exact in the path even when
+// their coordinates are rounded.
+#include <polyplan/geometry/angles.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <random>
+#include <span>
+#include <string>
+
+namespace polyplan {
+
+// How coordinates are measured and joined. The motion a space certifies between two
+// configurations is the one sampling_interpolate traces, so steering by a fraction of the way
+// lands on that motion.
+enum class SamplingMetric {
+  euclidean,  // √Σ (a_i − b_i)², straight segments
+  torus,      // Σ_i the short way round from a_i to b_i (angles.hpp: a half turn counts as +π), every
+              // coordinate turning at a constant rate: the arm's path length and its motions
+};
+
+inline double sampling_distance(SamplingMetric metric, std::span<const double> a, std::span<const double> b) {
+  double sum = 0;
+  if (metric == SamplingMetric::euclidean) {
+    for (std::size_t i = 0; i < a.size(); ++i) sum += (a[i] - b[i]) * (a[i] - b[i]);
+    return std::sqrt(sum);
+  }
+  for (std::size_t i = 0; i < a.size(); ++i) sum += angular_distance(a[i], b[i]);
+  return sum;
+}
+
+// The point a fraction t ∈ [0, 1] of the way from a to b, into `out` (torus coordinates normalised).
+inline void sampling_interpolate(SamplingMetric metric, std::span<const double> a, std::span<const double> b, double t,
+                                 std::span<double> out) {
+  for (std::size_t i = 0; i < a.size(); ++i)
+    out[i] = metric == SamplingMetric::euclidean ? a[i] + t * (b[i] - a[i])
+                                                 : normalize_angle(a[i] + t * signed_angle_difference(a[i], b[i]));
+}
+
+// The planners' random numbers: a 64-bit Mersenne twister (defined by the standard bit for bit),
+// made into doubles here rather than by std::uniform_real_distribution (whose results differ
+// between standard libraries), so that one seed gives one path everywhere.
+using SamplingRandom = std::mt19937_64;
+inline double uniform01(SamplingRandom& random) { return static_cast<double>(random() >> 11) * 0x1.0p-53; }  // [0, 1)
+
+template <class Space>
+class SamplingSpace {
+ public:
+  using Configuration = typename Space::Configuration;
+  using Query = typename Space::Query;
+
+  virtual ~SamplingSpace() = default;
+
+  virtual std::size_t dimension() const = 0;
+  virtual SamplingMetric metric() const = 0;
+  // The largest distance between two configurations that sample() can give: default steps are
+  // fractions of it.
+  virtual double extent() const = 0;
+  // The measure of the sampled region in the metric's units (area, the torus's (2π)^n): RRT*'s
+  // rewiring radius.
+  virtual double volume() const = 0;
+
+  // A configuration drawn uniformly from the region (the reference point's box, the torus), as
+  // coordinates; it may be in collision.
+  virtual void sample(SamplingRandom&, std::span<double> coordinates) const = 0;
+  virtual void coordinates(const Configuration&, std::span<double> out) const = 0;
+  // The configuration at these coordinates (exactly: the doubles' own values).
+  virtual Configuration configuration(std::span<const double> coordinates) const = 0;
+
+  // Free (contact allowed where the space allows it), decided exactly.
+  virtual bool is_free(const Configuration&) = 0;
+  // The motion from → to (sampling_interpolate's) proved free for every configuration on it;
+  // false when it collides or cannot be proved free.
+  virtual bool motion_is_free(const Configuration& from, const Configuration& to) = 0;
+  // Why a query cannot be planned (a start or goal that is not free, angles of the wrong count),
+  // in one sentence naming what it hits; nullopt when it can.
+  virtual std::optional<std::string> query_not_free(const Query&) = 0;
+  // The query's start and goal as the path gives them (an arm's angles normalised).
+  virtual Configuration start(const Query&) const = 0;
+  virtual Configuration goal(const Query&) const = 0;
+  // The certificate's words for a path of certified motions.
+  virtual std::string certificate_method() const = 0;
+};
+
+// Makes the space of a problem (which outlives it): the sampling planners' registry entries are
+// built with one, so one planner source serves every space.
+template <class Space>
+using SamplingSpaceFactory = std::function<std::unique_ptr<SamplingSpace<Space>>(const typename Space::Problem&)>;
+
+}  // namespace polyplan

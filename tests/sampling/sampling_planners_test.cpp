@@ -1,0 +1,272 @@
+// The sampling planners (prm, lazyprm, rrt, rrtstar, rrtconnect) in polygon worlds: paths re-checked
+// exactly on every shipped world with three seeds, one seed one path, RRT* converging to the
+// visibility graph's optimum, the limits and their answers, the options' errors. The conformance
+// test (registry_test.cpp) runs them with their defaults as well.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/registry/registry.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/sampling/sampling_planner.hpp>
+#include "world_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <string>
+
+namespace polyplan {
+namespace {
+
+constexpr std::array<const char*, 5> sampling_planners{"prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"};
+
+World shipped_world(const std::string& name) {
+  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
+}
+
+std::unique_ptr<Planner<TranslatingRobot>> make(const std::string& name, const CSpace& cspace, OptionValues options) {
+  const auto* entry = planners<TranslatingRobot>().find(name);
+  if (!entry) throw std::logic_error("no planner " + name);
+  return entry->make(cspace, options);
+}
+
+// Every query of worlds whose passages are wide enough to sample (decimal.json's 1e-17 slit and
+// corridor_wide's 1e-9 corridor are not): found where the exact shortest path is, with a path that
+// is checked exactly and no shorter than it; not found where it is not (office's room without a door).
+class SamplingPlannerOnWorld : public ::testing::TestWithParam<std::tuple<std::string, std::string>> {};
+
+TEST_P(SamplingPlannerOnWorld, ThreeSeedsGiveExactlyCheckedPathsAndOneSeedOnePath) {
+  const auto& [planner, world_name] = GetParam();
+  const World world = shipped_world(world_name);
+  const CSpace cspace(world);
+  VisibilityGraph optimum(cspace);
+  for (const std::string seed : {"1", "2", "3"}) {
+    SCOPED_TRACE("seed " + seed);
+    const OptionValues options{{"seed", seed}, {"time", "20"}};
+    auto planner_of_seed = make(planner, cspace, options);
+    // The first four queries (sphere_world has ten), to keep it quick.
+    for (std::size_t i = 0; i < std::min<std::size_t>(4, world.queries.size()); ++i) {
+      const Query& q = world.queries[i];
+      SCOPED_TRACE(q.name);
+      const auto best = optimum.plan(q);
+      if (!best.found) {
+        const auto none = make(planner, cspace, {{"seed", seed}, {"iterations", "500"}})->plan(q);
+        EXPECT_FALSE(none.found);
+        EXPECT_FALSE(none.why_not.empty());
+        continue;
+      }
+      const auto report = planner_of_seed->plan(q);
+      ASSERT_TRUE(report.found) << report.why_not;
+      EXPECT_EQ(report.path.front(), q.start);
+      EXPECT_EQ(report.path.back(), q.goal);
+      const PathCheck check = check_path(cspace, report.path);
+      EXPECT_TRUE(check.valid) << check.reason;
+      EXPECT_NEAR(report.length, euclidean_length(report.path), 1e-9 * report.length);
+      EXPECT_GE(report.length, best.length * (1 - 1e-12));
+      EXPECT_LE(report.length, report.facts.number("raw_length") * (1 + 1e-12));  // shortcuts never lengthen
+      EXPECT_GT(report.facts.count("motions_checked"), 0);
+      EXPECT_EQ(report.facts.text("stopped_by"), planner == "rrtstar" ? "iteration limit" : "solution");  // RRT* is anytime
+      EXPECT_GE(report.facts.number("first_solution_seconds"), 0);
+      // The same seed, a planner of its own, the same first query: the same path.
+      if (i == 0) {  // braces: EXPECT_EQ is an if-else of its own
+        EXPECT_EQ(make(planner, cspace, options)->plan(q).path, report.path);
+      }
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(SamplingPlanners, SamplingPlannerOnWorld,
+                         ::testing::Combine(::testing::ValuesIn(std::vector<std::string>(sampling_planners.begin(), sampling_planners.end())),
+                                            ::testing::ValuesIn(std::vector<std::string>{"maze", "office", "seed004", "sphere_world", "corridor_exact"})),
+                         [](const auto& info) { return std::get<0>(info.param) + "_on_" + std::get<1>(info.param); });
+
+TEST(SamplingPlanners, DifferentSeedsSampleDifferently) {
+  const World world = shipped_world("maze");
+  const CSpace cspace(world);
+  const auto one = make("rrt", cspace, {{"seed", "1"}, {"shortcut", "false"}})->plan(world.queries[0]);
+  const auto two = make("rrt", cspace, {{"seed", "2"}, {"shortcut", "false"}})->plan(world.queries[0]);
+  ASSERT_TRUE(one.found && two.found);
+  EXPECT_NE(one.path, two.path);
+}
+
+// RRT* without shortcuts: the path's cost never grows with more iterations of one seed (the first
+// iterations are the same), and reaches within 10% of the exact optimum.
+TEST(SamplingPlanners, RrtStarConvergesTowardTheVisibilityGraphOptimum) {
+  const World world = shipped_world("office");
+  const CSpace cspace(world);
+  const Query& q = world.queries[0];
+  const double optimum = VisibilityGraph(cspace).plan(q).length;
+  double previous = std::numeric_limits<double>::infinity();
+  for (const std::string iterations : {"2000", "8000", "32000"}) {
+    const auto report =
+        make("rrtstar", cspace, {{"iterations", iterations}, {"shortcut", "false"}, {"time", "60"}})->plan(q);
+    ASSERT_TRUE(report.found) << report.why_not;
+    SCOPED_TRACE(iterations + " iterations: " + std::to_string(report.length) + " against " + std::to_string(optimum));
+    EXPECT_LE(report.length, previous);
+    EXPECT_EQ(report.length, report.facts.number("raw_length"));
+    EXPECT_GE(report.length, optimum * (1 - 1e-12));
+    previous = report.length;
+  }
+  EXPECT_LE(previous, 1.10 * optimum);
+}
+
+TEST(SamplingPlanners, RrtStarImprovesAsItRuns) {
+  const World world = shipped_world("office");
+  const CSpace cspace(world);
+  auto planner = make("rrtstar", cspace, {{"iterations", "4000"}, {"shortcut", "false"}});
+  const auto report = planner->plan(world.queries[0]);
+  ASSERT_TRUE(report.found);
+  const auto& improvements = dynamic_cast<const SamplingPlanner<TranslatingRobot>&>(*planner).improvements();
+  ASSERT_GE(improvements.size(), 2u);
+  EXPECT_EQ(static_cast<std::int64_t>(improvements.size()), report.facts.count("solutions"));
+  for (std::size_t i = 1; i < improvements.size(); ++i) {
+    EXPECT_LT(improvements[i].length, improvements[i - 1].length);
+    EXPECT_GE(improvements[i].seconds, improvements[i - 1].seconds);
+  }
+  EXPECT_EQ(improvements.back().length, report.length);
+  EXPECT_EQ(improvements.front().seconds, report.facts.number("first_solution_seconds"));
+}
+
+// A goal walled in: every planner stops at its limit and says which.
+TEST(SamplingPlanners, AnUnreachableGoalEndsAtTheLimitWithTheReason) {
+  // The goal in the hole of a square ring.
+  const World walled = test::world_from(R"({"bounds": [0, 0, 10, 10],
+      "obstacles": [{"outer": [[6, 6], [9, 6], [9, 9], [6, 9]], "holes": [[[7, 7], [7, 8], [8, 8], [8, 7]]]}],
+      "start": [1, 1], "goal": [7.5, 7.5]})");
+  const CSpace cspace(walled);
+  for (const char* name : sampling_planners) {
+    SCOPED_TRACE(name);
+    const auto by_count = make(name, cspace, {{"iterations", "300"}})->plan(walled.queries[0]);
+    EXPECT_FALSE(by_count.found);
+    EXPECT_NE(by_count.why_not.find("the iteration limit (300)"), std::string::npos) << by_count.why_not;
+    EXPECT_EQ(by_count.facts.text("stopped_by"), "iteration limit");
+    EXPECT_TRUE(by_count.path.empty());
+    const auto by_time = make(name, cspace, {{"iterations", "100000000"}, {"time", "0.2"}})->plan(walled.queries[0]);
+    EXPECT_FALSE(by_time.found);
+    EXPECT_NE(by_time.why_not.find("the time limit (0.2 s)"), std::string::npos) << by_time.why_not;
+    EXPECT_EQ(by_time.facts.text("stopped_by"), "time limit");
+  }
+}
+
+TEST(SamplingPlanners, AStartInAnObstacleIsAnAnswerNamingIt) {
+  const World world = test::world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]],
+      "start": [5, 5], "goal": [9, 9]})");
+  const CSpace cspace(world);
+  for (const char* name : sampling_planners) {
+    const auto report = make(name, cspace, {})->plan(world.queries[0]);
+    EXPECT_FALSE(report.found);
+    EXPECT_EQ(report.why_not, "the start [5, 5] is not free: it is inside obstacles[0]") << name;
+  }
+}
+
+TEST(SamplingPlanners, StartAtTheGoalIsATwoConfigurationPath) {
+  const World world = test::world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [], "start": ["1/3", 2], "goal": ["1/3", 2]})");
+  const CSpace cspace(world);
+  for (const char* name : sampling_planners) {
+    const auto report = make(name, cspace, {})->plan(world.queries[0]);
+    ASSERT_TRUE(report.found) << name << ": " << report.why_not;
+    EXPECT_EQ(report.length, 0) << name;
+    EXPECT_EQ(report.path.front(), world.queries[0].start) << name;
+  }
+}
+
+// Exact start and goal that no double represents stay exact in the path.
+TEST(SamplingPlanners, ExactEndsThatNoDoubleRepresentsStayExact) {
+  const World world = test::world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [[[4, 0], [5, 0], [5, 8], [4, 8]]],
+      "start": ["1/3", "1/7"], "goal": ["29/3", "2/7"]})");
+  const CSpace cspace(world);
+  for (const char* name : sampling_planners) {
+    const auto report = make(name, cspace, {})->plan(world.queries[0]);
+    ASSERT_TRUE(report.found) << name;
+    EXPECT_EQ(report.path.front(), test::pt("1/3", "1/7")) << name;
+    EXPECT_EQ(report.path.back(), test::pt("29/3", "2/7")) << name;
+    EXPECT_TRUE(check_path(cspace, report.path).valid) << name;
+  }
+}
+
+TEST(SamplingPlanners, TheirOptionsAreListedAndBadValuesNamed) {
+  const auto names = [](const char* planner) {
+    std::vector<std::string> out;
+    for (const OptionInfo& o : planners<TranslatingRobot>().find(planner)->options) out.push_back(o.name);
+    return out;
+  };
+  const std::vector<std::string> limits{"seed", "time", "iterations", "shortcut"};
+  const auto with_limits = [&](std::vector<std::string> own) {
+    own.insert(own.end(), limits.begin(), limits.end());
+    return own;
+  };
+  EXPECT_EQ(names("rrt"), with_limits({"goal-bias", "step", "extend"}));
+  EXPECT_EQ(names("rrtstar"), with_limits({"rewire", "goal-bias", "step", "extend"}));
+  EXPECT_EQ(names("rrtconnect"), with_limits({"step"}));
+  EXPECT_EQ(names("prm"), with_limits({"k", "search", "weight", "bidirectional"}));
+  EXPECT_EQ(names("lazyprm"), with_limits({"k"}));
+
+  const World world = shipped_world("maze");
+  const CSpace cspace(world);
+  const auto error = [&](const char* planner, OptionValues options) {
+    return test::input_error_of([&] { make(planner, cspace, options); });
+  };
+  EXPECT_EQ(error("rrt", {{"goal-bias", "1.5"}}), "planner rrt: goal-bias must be a probability in [0, 1]");
+  EXPECT_EQ(error("rrt", {{"extend", "e3"}}), "planner rrt: option extend=e3: expected one of e1|e2");
+  EXPECT_EQ(error("rrtconnect", {{"step", "-1"}}), "planner rrtconnect: step must be 0 (the default) or a positive distance");
+  EXPECT_EQ(error("prm", {{"time", "0"}}), "planner prm: time must be a number of seconds above 0");
+  EXPECT_EQ(error("lazyprm", {{"iterations", "0"}}), "planner lazyprm: iterations must be at least 1");
+  EXPECT_EQ(error("rrtstar", {{"rewire", "all"}}), "planner rrtstar: option rewire=all: expected one of k|radius");
+  EXPECT_EQ(error("rrt", {{"seed", "-1"}}), "planner rrt: option seed=-1: expected a whole number >= 0");
+}
+
+// E1 reaches each sample in one motion; E2 takes steps of at most `step`, so every tree edge is
+// that short.
+TEST(SamplingPlanners, ExtensionE2StepsAtMostTheStepAndE1GoesToTheSample) {
+  const World world = shipped_world("maze");
+  const CSpace cspace(world);
+  const Query& q = world.queries[0];
+  const auto e2 = make("rrt", cspace, {{"step", "0.5"}, {"shortcut", "false"}})->plan(q, QueryOptions{true});
+  ASSERT_TRUE(e2.found && e2.graph);
+  for (const auto& [u, v] : e2.graph->edges)
+    EXPECT_LE(euclidean_length({e2.graph->vertices[u], e2.graph->vertices[v]}), 0.5 * (1 + 1e-12));
+  for (std::size_t i = 0; i + 1 < e2.path.size(); ++i) EXPECT_LE(euclidean_length({e2.path[i], e2.path[i + 1]}), 0.5 * (1 + 1e-12));
+  const auto e1 = make("rrt", cspace, {{"extend", "e1"}, {"shortcut", "false"}})->plan(q, QueryOptions{true});
+  ASSERT_TRUE(e1.found) << e1.why_not;
+  EXPECT_EQ(e1.graph->kind, "tree");
+  EXPECT_EQ(e1.graph->vertices.size(), static_cast<std::size_t>(e1.facts.count("tree_size")));
+}
+
+TEST(SamplingPlanners, PrmKeepsItsRoadmapAcrossQueries) {
+  const World world = shipped_world("office");
+  const CSpace cspace(world);
+  auto planner = make("prm", cspace, {});
+  const auto first = planner->plan(world.queries[0]);
+  const auto again = planner->plan(world.queries[0]);
+  ASSERT_TRUE(first.found && again.found);
+  EXPECT_GE(again.facts.count("roadmap.vertices"), first.facts.count("roadmap.vertices") + 2);
+  EXPECT_LT(again.facts.count("samples"), first.facts.count("samples"));
+  EXPECT_EQ(again.facts.count("samples"), 0);  // joined at once through the roadmap kept
+}
+
+// One seed, one roadmap: bidirectional Dijkstra finds the cost Dijkstra finds (in the maze it
+// settles more milestones: the goal's side of the maze is the larger one).
+TEST(SamplingPlanners, PrmSearchesBothWaysForTheSameCost) {
+  const World world = shipped_world("maze");
+  const CSpace cspace(world);
+  const auto one_way = make("prm", cspace, {{"search", "dijkstra"}, {"shortcut", "false"}})->plan(world.queries[0]);
+  const auto both_ways = make("prm", cspace, {{"bidirectional", "true"}, {"shortcut", "false"}})->plan(world.queries[0]);
+  ASSERT_TRUE(one_way.found && both_ways.found);
+  EXPECT_NEAR(both_ways.length, one_way.length, 1e-9 * one_way.length);
+  EXPECT_EQ(both_ways.facts.text("search.algorithm"), "bidirectional dijkstra");
+  EXPECT_GT(both_ways.facts.count("search.expanded"), 0);
+}
+
+TEST(SamplingPlanners, LazyPrmChecksFewerMotionsThanPrm) {
+  const World world = shipped_world("office");
+  const CSpace cspace(world);
+  const auto lazy = make("lazyprm", cspace, {})->plan(world.queries[0]);
+  const auto eager = make("prm", cspace, {})->plan(world.queries[0]);
+  ASSERT_TRUE(lazy.found && eager.found);
+  EXPECT_LT(lazy.facts.count("motions_checked"), eager.facts.count("motions_checked"));
+}
+
+}  // namespace
+}  // namespace polyplan
