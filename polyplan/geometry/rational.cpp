@@ -117,7 +117,16 @@ std::optional<Rational> parse_rational(std::string_view text, std::string* why) 
 
 std::string to_string(const Rational& value) { return value.get_str(10); }
 
-std::string to_string(const ExactPoint& point) { return "[" + to_string(point.x) + ", " + to_string(point.y) + "]"; }
+// Appended piece by piece: GCC 12 reads "[" + std::string&& as an out-of-bounds memcpy (its bugs
+// 105329 and 105651).
+std::string to_string(const ExactPoint& point) {
+  std::string text = "[";
+  text += to_string(point.x);
+  text += ", ";
+  text += to_string(point.y);
+  text += "]";
+  return text;
+}
 
 double to_double(const Rational& value) {
   mpfr_t rounded;
