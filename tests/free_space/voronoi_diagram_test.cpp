@@ -42,7 +42,7 @@ void expect_same(const VoronoiDiagram& a, const VoronoiDiagram& b) {
 class VoronoiDiagramOfWorld : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(VoronoiDiagramOfWorld, IsTheSameEveryTimeItIsBuilt) {
-  const World world = read_world(data_file("worlds/" + GetParam() + ".json"));
+  const World world = read_world(test::data_file("worlds/" + GetParam() + ".json"));
   const CSpace cspace(world);
   const auto first = std::make_unique<VoronoiDiagram>(cspace, query_points(world));
   // Other allocations between the two builds, so that the second's faces land elsewhere.
