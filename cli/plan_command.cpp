@@ -12,7 +12,7 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/registry/registry.hpp>
-#include <polyplan/rotation/rotation_layers.hpp>
+#include <polyplan/registry/world_queries.hpp>
 
 #include <iostream>
 #include <type_traits>
@@ -54,17 +54,12 @@ int run_plan(const PlanCommand& command) {
   std::vector<std::string> warnings;
   const World world = read_world(command.world, &warnings);
   print_warnings(warnings);
-  if (world.queries.empty()) throw InputError(command.world + ": world: no start/goal and no queries to plan");
-  // A rotating robot's planner builds the C-space of each orientation itself.
   if (command.planner->chose<RotatingRobot>()) {
-    require_free_poses(world);
+    require_plannable_queries(world, nullptr, command.planner->name());
     return answer<RotatingRobot>(command, world, world);
   }
-  if (turns_the_robot(world))
-    throw InputError(command.world + ": a start or goal has an orientation other than 0 degrees ([x, y, theta]); the planner " +
-                     command.planner->name() + " only translates the robot as its file draws it: use --planner rotation");
   const CSpace cspace(world);
-  cspace.require_free_queries();
+  require_plannable_queries(world, &cspace, command.planner->name());
   return answer<TranslatingRobot>(command, world, cspace);
 }
 

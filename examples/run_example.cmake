@@ -1,5 +1,6 @@
 # Runs one example program as CTest does (cmake -P): it must exit 0, print every regular
-# expression of EXPECT (a ;-list) on standard output, and write every file of FILES as an SVG.
+# expression of EXPECT (a ;-list) on standard output, and write every file of FILES: an SVG, or a
+# PNG when its name says .png.
 #   -DPROGRAM=path -DARGS="a;b" -DEXPECT="regex;regex" -DFILES="out.svg;..." -DWORK_DIR=dir
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
@@ -17,9 +18,16 @@ foreach(picture IN LISTS FILES)
   if(NOT EXISTS ${WORK_DIR}/${picture})
     message(FATAL_ERROR "${PROGRAM} did not write ${picture}")
   endif()
-  file(READ ${WORK_DIR}/${picture} svg LIMIT 400)
-  if(NOT svg MATCHES "<svg")
-    message(FATAL_ERROR "${PROGRAM}: ${picture} is not an SVG")
+  if(picture MATCHES "[.]png$")
+    file(READ ${WORK_DIR}/${picture} signature LIMIT 8 HEX)
+    if(NOT signature STREQUAL "89504e470d0a1a0a")
+      message(FATAL_ERROR "${PROGRAM}: ${picture} is not a PNG")
+    endif()
+  else()
+    file(READ ${WORK_DIR}/${picture} svg LIMIT 400)
+    if(NOT svg MATCHES "<svg")
+      message(FATAL_ERROR "${PROGRAM}: ${picture} is not an SVG")
+    endif()
   endif()
 endforeach()
 message(STATUS "${out}")

@@ -67,11 +67,17 @@ json report_json(const PlanReport<Configuration>& report, const std::string& que
     out["clearance"] = report.bottleneck->clearance;
     out["bottleneck"] = {{"x", report.bottleneck->x}, {"y", report.bottleneck->y}};
   }
-  for (const auto& [name, value] : report.facts.entries()) put_fact(out, name, value);
+  out.update(facts_json(report.facts));
   return out;
 }
 
 }  // namespace
+
+json facts_json(const Facts& facts) {
+  json out = json::object();
+  for (const auto& [name, value] : facts.entries()) put_fact(out, name, value);
+  return out;
+}
 
 json plan_json(const PlanReport<ExactPoint>& report, const std::string& query) { return report_json(report, query); }
 json plan_json(const PlanReport<JointAngles>& report, const std::string& query) { return report_json(report, query); }

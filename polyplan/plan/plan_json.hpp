@@ -28,4 +28,7 @@ nlohmann::json plan_json(const PlanReport<JointAngles>& report, const std::strin
 // [["x", "y", "sin", "cos"], ...] (the exact rotation).
 nlohmann::json plan_json(const PlanReport<Pose>& report, const std::string& query = {});
 
+// The facts alone, nested as in plan_json ({"roadmap": {"vertices": 120, ...}, ...}).
+nlohmann::json facts_json(const Facts& facts);
+
 }  // namespace polyplan

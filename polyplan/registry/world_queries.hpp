@@ -1,0 +1,20 @@
+#pragma once
+// The checks made before a planner of the registry answers a world's own queries (`polyplan plan
+// WORLD.json`, Python's polyplan.plan(world)): the world has a query, and every start and goal is
+// a free configuration of the planner's space. A query asked on its own (Planner::plan) needs
+// none of this: a start that is not free is an answer there (status invalid_query).
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/world.hpp>
+
+#include <string_view>
+
+namespace polyplan {
+
+// InputError naming the world's file and the query when the world has no query, or a start or
+// goal is not free: for `planner` (a name of planners<TranslatingRobot>() or
+// planners<RotatingRobot>()) at the query's orientation; a translating planner also refuses an
+// orientation other than 0 degrees. `cspace` is the world's C-space, which a translating planner's
+// check reads (a rotating planner's builds those of its orientations: null will do).
+void require_plannable_queries(const World& world, const CSpace* cspace, std::string_view planner);
+
+}  // namespace polyplan

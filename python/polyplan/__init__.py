@@ -1,0 +1,204 @@
+"""polyplan: exact motion planning in polygon worlds.
+
+Read a problem, build a planner of the registry for it, and ask it for plans::
+
+    import polyplan
+    w = polyplan.read_world("data/worlds/seed004.json")
+    p = polyplan.planner("visibility", w, search="astar")    # built once
+    r = p.plan(start=(2, 3), goal=(95, 80))                  # one query
+    r.found, r.status, r.length, r.path                      # path: an (N, 2) float64 array
+    polyplan.plot(r)                                         # matplotlib
+
+Geometry is exact: coordinates given as int, fractions.Fraction or decimal strings ("0.1") are
+their exact values; a float is the exact value of that double. Every collision and every path is
+decided with exact arithmetic, and a Plan's path is certified free.
+
+Bad input (a file, a value, a planner or an option polyplan refuses) raises polyplan.InputError, a
+ValueError carrying the message the `polyplan` program prints. A RuntimeError is a bug.
+
+Planning, building a C-space and drawing release the GIL: threads planning on different problems
+run in parallel. polyplan.planners() lists every planner with its options.
+"""
+
+import decimal as _decimal
+import fractions as _fractions
+import json as _json
+import math as _math
+import numbers as _numbers
+from typing import List, NamedTuple, Optional
+
+from ._polyplan import (  # noqa: F401 (the public names)
+    Arm,
+    CSpace,
+    InputError,
+    Plan,
+    Planner,
+    World,
+    check,
+    cspace,
+    read_arm,
+    read_world,
+    svg,
+)
+from . import _polyplan
+
+__all__ = [
+    "Arm", "CSpace", "Cells", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
+    "PlannerInfo", "World", "check", "cspace", "plan", "planner", "planners", "plot", "read_arm",
+    "read_world", "svg",
+]
+
+
+class Option(NamedTuple):
+    """One option of a planner: polyplan.planner(name, problem, <name>=value)."""
+
+    name: str
+    kind: str       # "int", "number", "bool", "text" or a choice such as "astar|dijkstra|..."
+    default: str    # the default as the program prints it
+    help: str
+
+
+class PlannerInfo(NamedTuple):
+    """One planner of the registry: its name, the space it plans in, what it does, its options."""
+
+    name: str
+    space: str
+    description: str
+    options: List[Option]
+
+
+class FreeComponent(NamedTuple):
+    """One connected component of a C-space's free space.
+
+    outer: its boundary, an (N, 2) float64 array, or None when the component is unbounded;
+    holes: the C-obstacles inside it, (N, 2) arrays; area: its exact area, a Fraction (None when
+    unbounded)."""
+
+    outer: object
+    holes: list
+    area: Optional[_fractions.Fraction]
+
+
+class Graph(NamedTuple):
+    """A roadmap or a tree a plan recorded: vertices (V, k) float64, edges (E, 2) int64 indices."""
+
+    kind: str
+    vertices: object
+    edges: object
+
+
+class Cells(NamedTuple):
+    """A planner's cells: states[row, column] (uint8: 0 not evaluated, 1 free, 2 blocked, 3 ridge),
+    cell (0, 0)'s lower-left corner (x0, y0), the cells' size, an optional value per cell
+    (values, float32, named value_name) and whether opposite edges meet (an arm's torus)."""
+
+    states: object
+    x0: float
+    y0: float
+    cell_width: float
+    cell_height: float
+    values: object
+    value_name: str
+    wraps: bool
+
+
+def planners() -> List[PlannerInfo]:
+    """Every planner of the registry, as `polyplan planners --json -` lists them.
+
+    Each is a PlannerInfo(name, space, description, options); space says what it plans for (a
+    translating robot, a rotating robot, a planar arm) and options are Option(name, kind,
+    default, help): polyplan.planner(info.name, problem, **{option.name: value})."""
+    return [PlannerInfo(name, space, description, [Option(*o) for o in options])
+            for name, space, description, options in _polyplan._planner_list()]
+
+
+def planner(name: str, problem, **options) -> Planner:
+    """The planner `name` built for `problem` (a World or an Arm), with its options as keyword
+    arguments: polyplan.planner("visibility", world, search="astar").
+
+    polyplan.planners() lists the names and each one's options. The planner builds its roadmap,
+    diagram or grid here, once; each Planner.plan(start=..., goal=...) answers one query with it.
+    An option's value may be a number, a string, True or False. Raises InputError for an unknown
+    planner, one that plans for the other kind of problem, an unknown option or a value the
+    option refuses (the message the program prints)."""
+    return _polyplan._planner(name, problem, options)
+
+
+def plan(problem, planner: Optional[str] = None, *, record: bool = True, **options) -> List[Plan]:
+    """Every query of `problem` (a World or an Arm) answered by one planner: a list of Plan.
+
+    planner: a name from polyplan.planners(); None: "visibility" for a World, "grid" for an Arm
+    (the program's defaults). options: the planner's options as keyword arguments, e.g.
+    polyplan.plan(w, planner="rrtconnect", seed=3) or polyplan.plan(a, planner="grid",
+    resolution=1). record: keep each plan's roadmap, tree, expanded configurations and cells for
+    polyplan.plot and polyplan.svg.
+
+    The queries are checked first as the program checks them: a start or goal that is not free
+    raises InputError. To plan one query of your own, build the planner once with
+    polyplan.planner(...) and call its plan(start=..., goal=...)."""
+    if planner is None:
+        planner = "grid" if isinstance(problem, Arm) else "visibility"
+    return _polyplan._planner(planner, problem, options).plan_all(record)
+
+
+def _json_value(value, where):
+    """A Python value of a world or arm dict as the file's JSON holds it (numbers exact)."""
+    if isinstance(value, bool) or value is None or isinstance(value, str):
+        return value
+    if isinstance(value, _numbers.Integral):  # beyond 64 bits as text, which the readers take exactly
+        return int(value) if abs(int(value)) < 2**63 else str(int(value))
+    if isinstance(value, _fractions.Fraction):
+        return f"{value.numerator}/{value.denominator}" if value.denominator != 1 else value.numerator
+    if isinstance(value, _decimal.Decimal):
+        if not value.is_finite():
+            raise InputError(f"{where}: {value} is not a finite number")
+        return str(value)
+    if isinstance(value, _numbers.Real):
+        x = float(value)
+        if not _math.isfinite(x):
+            raise InputError(f"{where}: {x} is not a finite number")
+        return _json_value(_fractions.Fraction(x), where)
+    if isinstance(value, dict):
+        return {str(k): _json_value(v, f"{where}.{k}" if where else str(k)) for k, v in value.items()}
+    if hasattr(value, "tolist") and not isinstance(value, (list, tuple)):  # numpy arrays and scalars
+        return _json_value(value.tolist(), where)
+    if isinstance(value, (list, tuple)):
+        return [_json_value(v, f"{where}[{i}]") for i, v in enumerate(value)]
+    raise InputError(f"{where}: expected a number, a string, a list or a dict, got {type(value).__name__}")
+
+
+def _from_dict(cls, d, name):
+    if not isinstance(d, dict):
+        raise InputError(f"{name}: expected a dict, got {type(d).__name__}")
+    return cls.from_json(_json.dumps(_json_value(d, "")), name)
+
+
+def _world_from_dict(d: dict, name: str = "<dict>") -> World:
+    """The world a dict describes, in the world file's format (DESIGN.md "World file").
+
+    Coordinates may be int, fractions.Fraction, decimal.Decimal, decimal strings ("0.1"), floats
+    (the exact value of the double: 0.1 is 3602879701896397/36028797018963968) and numpy values
+    or arrays; `name` stands for the file in messages."""
+    return _from_dict(World, d, name)
+
+
+def _arm_from_dict(d: dict, name: str = "<dict>") -> Arm:
+    """The arm a dict describes, in the arm file's format (DESIGN.md "Arm file"); numbers as in
+    World.from_dict."""
+    return _from_dict(Arm, d, name)
+
+
+World.from_dict = staticmethod(_world_from_dict)
+Arm.from_dict = staticmethod(_arm_from_dict)
+
+
+def plot(r, ax=None):
+    """Draw a Plan (or a list of Plans of one problem, or a World or Arm alone) with matplotlib.
+
+    A world's plans: the obstacles, the C-obstacles, the bounds, the recorded roadmap or tree,
+    cells and expanded configurations, and the path from start (o) to goal (*); the rotation
+    planner's path also draws the robot along it. An arm's plan: the workspace with the arm at
+    configurations along the path (light to dark). Returns the Axes (a new figure when ax is
+    None)."""
+    from .plotting import plot as _plot
+    return _plot(r, ax)

@@ -1,0 +1,123 @@
+#include "exact_values.hpp"
+
+#include <cmath>
+
+namespace polyplan::python {
+namespace {
+
+Rational parsed(const std::string& text, const std::string& what) {
+  std::string why;
+  auto value = parse_rational(text, &why);
+  if (!value) throw InputError(what + ": " + why + ": " + text);
+  return *value;
+}
+
+bool is_instance_of(py::handle value, const char* module, const char* name) {
+  return py::isinstance(value, py::module_::import(module).attr(name));
+}
+
+bool is_boolean(py::handle value) { return PyBool_Check(value.ptr()) || is_instance_of(value, "numpy", "bool_"); }
+
+// A sequence that is not text (a str is a sequence of characters, never of numbers).
+bool is_sequence(py::handle value) { return PySequence_Check(value.ptr()) && !py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value); }
+
+py::sequence sequence_of(py::handle value, const std::string& what, const std::string& expected) {
+  if (!is_sequence(value)) throw InputError(what + ": expected " + expected + ", got " + type_name(value));
+  return py::reinterpret_borrow<py::sequence>(value);
+}
+
+}  // namespace
+
+std::string type_name(py::handle value) {
+  const py::handle type = py::type::handle_of(value);
+  const std::string module = py::str(type.attr("__module__"));
+  const std::string name = py::str(type.attr("__qualname__"));
+  return module == "builtins" ? name : module + "." + name;
+}
+
+Rational exact_number(py::handle value, const std::string& what) {
+  if (is_boolean(value)) throw InputError(what + ": expected a number, got a bool (" + std::string(py::str(value)) + ")");
+  if (py::isinstance<py::str>(value)) return parsed(value.cast<std::string>(), what);
+  if (is_instance_of(value, "fractions", "Fraction"))
+    return parsed(std::string(py::str(value.attr("numerator"))) + "/" + std::string(py::str(value.attr("denominator"))), what);
+  if (is_instance_of(value, "decimal", "Decimal")) return parsed(py::str(value), what);
+  if (PyIndex_Check(value.ptr())) return parsed(py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()))), what);
+  if (PyFloat_Check(value.ptr()) || is_instance_of(value, "numpy", "floating")) {
+    const double d = py::float_(py::reinterpret_borrow<py::object>(value));
+    if (!std::isfinite(d)) throw InputError(what + ": not a finite number (" + std::string(py::str(value)) + ")");
+    return parsed(to_string(Rational(d)), what);  // the double's exact value, within the limits of every number read
+  }
+  throw InputError(what + ": expected a number (int, Fraction, float or a decimal string), got " + type_name(value));
+}
+
+double finite_number(py::handle value, const std::string& what) {
+  if (PyFloat_Check(value.ptr()) || is_instance_of(value, "numpy", "floating")) {
+    if (is_boolean(value)) throw InputError(what + ": expected a number, got a bool");
+    const double d = py::float_(py::reinterpret_borrow<py::object>(value));
+    if (!std::isfinite(d)) throw InputError(what + ": not a finite number (" + std::string(py::str(value)) + ")");
+    return d;
+  }
+  return to_double(exact_number(value, what));
+}
+
+ExactPoint exact_point(py::handle value, const std::string& what) {
+  const py::sequence pair = sequence_of(value, what, "a point (x, y)");
+  if (py::len(pair) != 2) throw InputError(what + ": expected a point (x, y), got " + std::to_string(py::len(pair)) + " numbers");
+  return {exact_number(pair[0], what + "[0]"), exact_number(pair[1], what + "[1]")};
+}
+
+std::vector<ExactPoint> exact_points(py::handle value, const std::string& what) {
+  std::vector<ExactPoint> points;
+  if (py::isinstance<py::array>(value)) {
+    const auto array = py::reinterpret_borrow<py::array>(value);
+    if (array.ndim() != 2 || array.shape(1) != 2)
+      throw InputError(what + ": expected an (N, 2) array of points, got shape " + std::string(py::str(value.attr("shape"))));
+    const char kind = array.dtype().kind();
+    if (kind == 'f') {
+      // Any order and stride: a C-ordered float64 copy (forcecast) is read, never the caller's memory.
+      const auto doubles = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(value);
+      const auto view = doubles.unchecked<2>();
+      for (py::ssize_t i = 0; i < view.shape(0); ++i) {
+        const std::string row = what + "[" + std::to_string(i) + "]";
+        points.push_back({exact_number(py::float_(view(i, 0)), row + "[0]"), exact_number(py::float_(view(i, 1)), row + "[1]")});
+      }
+      return points;
+    }
+    if (kind == 'b') throw InputError(what + ": expected numbers, got an array of bools");
+    if (kind != 'i' && kind != 'u' && kind != 'O')
+      throw InputError(what + ": expected an array of numbers, got dtype " + std::string(py::str(array.dtype())));
+    // Integers (exact, whatever their size) and objects (Fractions, strings) element by element.
+  }
+  const py::sequence rows = sequence_of(value, what, "a sequence of points (x, y)");
+  for (std::size_t i = 0; i < py::len(rows); ++i) points.push_back(exact_point(rows[i], what + "[" + std::to_string(i) + "]"));
+  return points;
+}
+
+std::vector<double> finite_numbers(py::handle value, const std::string& what) {
+  if (py::isinstance<py::array>(value) && py::reinterpret_borrow<py::array>(value).ndim() != 1)
+    throw InputError(what + ": expected a 1-d array of numbers, got shape " + std::string(py::str(value.attr("shape"))));
+  const py::sequence numbers = sequence_of(value, what, "a sequence of numbers");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < py::len(numbers); ++i) out.push_back(finite_number(numbers[i], what + "[" + std::to_string(i) + "]"));
+  return out;
+}
+
+py::object fraction(const Rational& value) {
+  return py::module_::import("fractions").attr("Fraction")(py::int_(py::str(value.get_num().get_str())), py::int_(py::str(value.get_den().get_str())));
+}
+
+py::array_t<double> rows_array(const std::vector<std::vector<double>>& rows, std::size_t columns) {
+  py::array_t<double> out({rows.size(), columns});
+  auto view = out.mutable_unchecked<2>();
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    for (std::size_t j = 0; j < columns; ++j) view(i, j) = rows[i].at(j);
+  return out;
+}
+
+py::array_t<double> points_array(const std::vector<ExactPoint>& points) {
+  std::vector<std::vector<double>> rows;
+  for (const ExactPoint& p : points) rows.push_back({to_double(p.x), to_double(p.y)});
+  return rows_array(rows, 2);
+}
+
+}  // namespace polyplan::python

@@ -1,0 +1,221 @@
+// World, Arm and CSpace in Python: reading them, what they hold, and the exact checks.
+#include "problems.hpp"
+
+#include "exact_values.hpp"
+
+#include <polyplan/arm/arm.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/io/arm_reader.hpp>
+#include <polyplan/io/world_reader.hpp>
+
+#include <pybind11/stl.h>
+
+namespace polyplan::python {
+namespace {
+
+using WorldPtr = std::shared_ptr<WorldHandle>;
+using ArmPtr = std::shared_ptr<ArmHandle>;
+
+// Reader warnings (unknown keys) as Python warnings, as the program prints them on stderr.
+void warn(const std::vector<std::string>& warnings) {
+  for (const std::string& w : warnings) PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1);
+}
+
+// A problem made by `read` (a reader that lists its warnings), the warnings raised in Python.
+template <class Handle, class Read>
+std::shared_ptr<Handle> read_warning(Read read) {
+  std::vector<std::string> warnings;
+  auto handle = std::make_shared<Handle>(read(&warnings));
+  warn(warnings);
+  return handle;
+}
+
+py::list rings(const std::vector<PolygonWithHoles>& polygons) {
+  py::list out;
+  for (const PolygonWithHoles& p : polygons) out.append(points_array(p.outer));
+  return out;
+}
+
+py::tuple query_tuple(const Query& q) {
+  const auto pose = [](const ExactPoint& p, const std::optional<double>& theta) {
+    return theta ? py::make_tuple(fraction(p.x), fraction(p.y), *theta) : py::make_tuple(fraction(p.x), fraction(p.y));
+  };
+  return py::make_tuple(q.name, pose(q.start, q.start_theta), pose(q.goal, q.goal_theta));
+}
+
+// The C-space of a world as Python sees it: read-only views, computed when asked.
+struct CSpaceView {
+  WorldPtr world;
+};
+
+py::object free_components(const CSpaceView& view) {
+  const py::object FreeComponent = py::module_::import("polyplan").attr("FreeComponent");
+  py::list out;
+  const auto& components = locked(view.world->lock(), [&]() -> const std::vector<polyplan::FreeComponent>& {
+    return view.world->cspace().free_components();
+  });
+  for (const polyplan::FreeComponent& c : components) {
+    py::list holes;
+    for (const Ring& h : c.holes) holes.append(points_array(h));
+    out.append(FreeComponent(c.outer.empty() ? py::object(py::none()) : py::object(points_array(c.outer)), holes,
+                             c.area ? fraction(*c.area) : py::object(py::none())));
+  }
+  return out;
+}
+
+py::object free_area(const CSpaceView& view) {
+  Rational sum = 0;
+  const auto& components = locked(view.world->lock(), [&]() -> const std::vector<polyplan::FreeComponent>& {
+    return view.world->cspace().free_components();
+  });
+  for (const polyplan::FreeComponent& c : components) {
+    if (!c.area) return py::none();
+    sum += *c.area;
+  }
+  return fraction(sum);
+}
+
+}  // namespace
+
+void bind_problems(py::module_& m) {
+  py::class_<WorldHandle, WorldPtr>(m, "World", R"(A polygon world: obstacles, bounds, a robot and queries, all exact.
+
+Read one with polyplan.read_world(path), World.from_json(text) or World.from_dict(d) (the
+world file's format, DESIGN.md "World file"). Coordinates are exact rationals: an int, a
+fractions.Fraction or a decimal string ("0.1" is exactly 1/10) is its exact value; a float is
+the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
+      .def_static(
+          "from_json",
+          [](const std::string& text, const std::string& name) {
+            return read_warning<WorldHandle>([&](auto* warnings) { return parse_world(text, name, warnings); });
+          },
+          py::arg("text"), py::arg("name") = "<json>",
+          "The world in a world file's JSON text; `name` stands for the file in messages and relative paths.")
+      .def_property_readonly("source", [](const WorldHandle& w) { return w.world().source; }, "The file (or name) it was read from.")
+      .def_property_readonly(
+          "bounds",
+          [](const WorldHandle& w) -> py::object {
+            if (!w.world().bounds) return py::none();
+            const Bounds& b = *w.world().bounds;
+            return py::make_tuple(fraction(b.xmin), fraction(b.ymin), fraction(b.xmax), fraction(b.ymax));
+          },
+          "(xmin, ymin, xmax, ymax) as Fractions, or None for an unbounded world.")
+      .def_property_readonly("obstacles", [](const WorldHandle& w) { return rings(w.world().obstacles); },
+                             "Each obstacle's outer boundary, an (N, 2) float64 array (counter-clockwise).")
+      .def_property_readonly(
+          "robot",
+          [](const WorldHandle& w) {
+            py::list parts;
+            for (const Ring& r : w.world().robot.parts) parts.append(points_array(r));
+            return parts;
+          },
+          "The robot's parts in its own frame, (N, 2) arrays; empty for a point robot.")
+      .def_property_readonly(
+          "queries",
+          [](const WorldHandle& w) {
+            py::list out;
+            for (const Query& q : w.world().queries) out.append(query_tuple(q));
+            return out;
+          },
+          "The world's queries as (name, start, goal); start and goal are (x, y) Fractions, or (x, y, theta) with theta in degrees.")
+      .def("__repr__", [](const WorldHandle& w) {
+        const World& world = w.world();
+        return "<polyplan.World " + world.source + ": " + std::to_string(world.obstacles.size()) + " obstacle(s), " +
+               (world.robot.is_point() ? std::string("point robot") : std::to_string(world.robot.parts.size()) + "-part robot") +
+               ", " + std::to_string(world.queries.size()) + " query(ies)>";
+      });
+
+  py::class_<ArmHandle, ArmPtr>(m, "Arm", R"(A planar n-link arm among obstacle polygons and points (DESIGN.md "Arm file").
+
+Read one with polyplan.read_arm(path), Arm.from_json(text) or Arm.from_dict(d). Joint angles
+are radians, relative (theta1 from +x, theta_i from link i-1).)")
+      .def_static(
+          "from_json",
+          [](const std::string& text, const std::string& name) {
+            return read_warning<ArmHandle>([&](auto* warnings) { return parse_arm_problem(text, name, warnings); });
+          },
+          py::arg("text"), py::arg("name") = "<json>", "The arm in an arm file's JSON text; `name` stands for the file in messages.")
+      .def_property_readonly("source", [](const ArmHandle& a) { return a.problem().source; }, "The file (or name) it was read from.")
+      .def_property_readonly("links", [](const ArmHandle& a) { return a.problem().arm.links; }, "The link lengths, base first.")
+      .def_property_readonly("joints", [](const ArmHandle& a) { return a.problem().arm.joints(); }, "The number of joints (= links).")
+      .def_property_readonly("link_width", [](const ArmHandle& a) { return a.problem().arm.link_width; },
+                             "0: links are segments; w > 0: each link is a w-wide rectangle.")
+      .def_property_readonly("obstacles", [](const ArmHandle& a) { return rings(a.problem().obstacles); },
+                             "Each obstacle polygon's outer boundary, an (N, 2) float64 array.")
+      .def_property_readonly(
+          "points",
+          [](const ArmHandle& a) {
+            std::vector<std::vector<double>> rows;
+            for (const auto& p : a.problem().points) rows.push_back({p.x(), p.y()});
+            return rows_array(rows, 2);
+          },
+          "The point obstacles, an (N, 2) float64 array.")
+      .def_property_readonly(
+          "queries",
+          [](const ArmHandle& a) {
+            py::list out;
+            for (const ArmQuery& q : a.problem().queries) out.append(py::make_tuple(q.name, q.start, q.goal));
+            return out;
+          },
+          "The arm's queries as (name, start angles, goal angles).")
+      .def(
+          "joint_positions",
+          [](const ArmHandle& a, const py::object& angles) {
+            const JointAngles q = finite_numbers(angles, "angles");
+            if (q.size() != a.problem().arm.joints())
+              throw InputError("angles: expected " + std::to_string(a.problem().arm.joints()) + " joint angles, got " +
+                               std::to_string(q.size()));
+            std::vector<std::vector<double>> rows;
+            for (const auto& p : polyplan::joint_positions(a.problem().arm, q)) rows.push_back({p.x(), p.y()});
+            return rows_array(rows, 2);
+          },
+          py::arg("angles"), "The base, every joint and the tip at these joint angles: a (joints + 1, 2) float64 array.")
+      .def("__repr__", [](const ArmHandle& a) {
+        const ArmProblem& p = a.problem();
+        return "<polyplan.Arm " + p.source + ": " + std::to_string(p.arm.joints()) + " link(s), " +
+               std::to_string(p.obstacles.size()) + " obstacle(s), " + std::to_string(p.points.size()) + " point(s), " +
+               std::to_string(p.queries.size()) + " query(ies)>";
+      });
+
+  m.def(
+      "read_world",
+      [](const std::string& path) { return read_warning<WorldHandle>([&](auto* warnings) { return read_world(path, warnings); }); },
+      py::arg("path"), "The world file at `path` (JSON). Raises InputError naming the file and the object for bad input.");
+  m.def(
+      "read_arm",
+      [](const std::string& path) { return read_warning<ArmHandle>([&](auto* warnings) { return read_arm_problem(path, warnings); }); },
+      py::arg("path"), "The arm file at `path` (JSON). Raises InputError naming the file and the object for bad input.");
+
+  py::class_<CSpaceView>(m, "CSpace", "A world's exact configuration space (polyplan.cspace(world)): the C-obstacles and the free space.")
+      .def_property_readonly(
+          "obstacles",
+          [](const CSpaceView& v) {
+            return rings(locked(v.world->lock(), [&]() -> const auto& { return v.world->cspace().cobstacles(); }));
+          },
+          "Each C-obstacle's outer boundary (the obstacles grown by the reflected robot, merged), an (N, 2) float64 array.")
+      .def_property_readonly("free_components", &free_components,
+                             "The free space's connected components: FreeComponent(outer, holes, area), outer None and area "
+                             "None for an unbounded one; area an exact Fraction.")
+      .def_property_readonly("free_area", &free_area, "The free space's exact area (a Fraction); None when it is unbounded.")
+      .def("__repr__", [](const CSpaceView& v) { return "<polyplan.CSpace of " + v.world->world().source + ">"; });
+
+  m.def(
+      "cspace", [](const WorldPtr& world) {
+        locked(world->lock(), [&] { return &world->cspace(); });
+        return CSpaceView{world};
+      },
+      py::arg("world"), "The world's exact C-space (built once per World, shared by its planners).");
+  m.def(
+      "check",
+      [](const WorldPtr& world, const py::object& path) {
+        const std::vector<ExactPoint> points = exact_points(path, "path");
+        if (points.empty()) throw InputError("path: expected at least one point");
+        const PathCheck result = locked(world->lock(), [&] { return check_path(world->cspace(), points); });
+        return py::make_tuple(result.valid, result.reason);
+      },
+      py::arg("world"), py::arg("path"),
+      R"(Whether the polyline `path` ((N, 2) array-like; exact numbers as in World) is a free motion of
+the world's robot, decided exactly: (valid, reason), reason "" when valid.)");
+}
+
+}  // namespace polyplan::python

@@ -1,0 +1,66 @@
+"""How the CLI agreement tests compare: a Plan's JSON is the program's JSON (times aside), its
+attributes say the same as that JSON, and where the program refuses a problem Python raises
+InputError with the program's message."""
+import json
+from fractions import Fraction
+
+import numpy as np
+
+import polyplan
+from conftest import cli_json
+
+ARM_PLANNERS = [p.name for p in polyplan.planners() if "arm" in p.space]
+WORLD_PLANNERS = [p.name for p in polyplan.planners() if "polygon world" in p.space]
+
+
+def without_times(value):
+    """The JSON with every measured time taken out (keys naming seconds), which no two runs share."""
+    if isinstance(value, dict):
+        return {k: without_times(v) for k, v in value.items() if "seconds" not in k}
+    if isinstance(value, list):
+        return [without_times(v) for v in value]
+    return value
+
+
+def as_list(answer):
+    return answer if isinstance(answer, list) else [answer]
+
+
+def fraction(text):
+    return Fraction(text)
+
+
+def agree(plans, expected):
+    assert len(plans) == len(expected)
+    for r, j in zip(plans, expected):
+        assert without_times(json.loads(r.to_json())) == without_times(j)
+        assert r.found == j["found"] and r.status == j["status"] and r.query == j["query"]
+        assert r.certified == j["certified"]
+        if r.found:
+            assert r.length == j["length"]
+            assert r.certified_by == j["certified_by"]
+            assert np.array_equal(r.path, np.array(j["path"], dtype=float).reshape(r.path.shape))
+            if "path_exact" in j:
+                assert r.path_exact == [tuple(fraction(v) for v in point) for point in j["path_exact"]]
+        else:
+            assert r.length is None and r.why_not == j["why_not"] and len(r.path) == 0
+        for key, value in without_times(r.facts).items():
+            assert without_times(j[key]) == value, key
+
+
+def python_answer(call):
+    try:
+        return call(), None
+    except polyplan.InputError as e:
+        return None, str(e)
+
+
+def compare(arguments, python):
+    """The program run with `arguments` against python() (a list of Plan)."""
+    expected, refused = cli_json(*arguments)
+    plans, error = python_answer(python)
+    if refused:
+        assert error is not None and error in refused, (error, refused)
+        return
+    assert error is None, error
+    agree(plans, as_list(expected))
