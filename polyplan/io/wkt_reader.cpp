@@ -130,7 +130,10 @@ class WktParser {
     std::size_t end = at;
     auto separator = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == '(' || c == ')'; };
     while (end < text_.size() && end - at < 20 && !separator(text_[end])) ++end;
-    return "\"" + std::string(text_.substr(at, std::max<std::size_t>(end - at, 1))) + "\"";
+    std::string quoted = "\"";  // appended: GCC 12 takes "\"" + string for an out-of-bounds copy
+    quoted += text_.substr(at, std::max<std::size_t>(end - at, 1));
+    quoted += '"';
+    return quoted;
   }
 
   [[noreturn]] void malformed(const std::string& why) const {

@@ -17,7 +17,11 @@ namespace polyplan {
 
 OrientationSet::OrientationSet(const OrientationOptions& o) {
   const double to = o.to.value_or(o.from + 360);
-  const std::string range = "[" + angle_text(o.from) + ", " + angle_text(to) + "]";
+  std::string range = "[";  // appended: GCC 12 takes "[" + string for an out-of-bounds copy
+  range += angle_text(o.from);
+  range += ", ";
+  range += angle_text(to);
+  range += ']';
   if (!std::isfinite(o.from) || !std::isfinite(to) || to < o.from)
     throw std::invalid_argument("rotation-from/rotation-to: the range " + range + " is reversed or not finite");
   const double width = to - o.from;

@@ -18,7 +18,8 @@ using ArmPtr = std::shared_ptr<ArmHandle>;
 
 // Reader warnings (unknown keys) as Python warnings, as the program prints them on stderr.
 void warn(const std::vector<std::string>& warnings) {
-  for (const std::string& w : warnings) PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1);
+  for (const std::string& w : warnings)
+    if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) != 0) throw py::error_already_set();  // warnings made errors
 }
 
 // A problem made by `read` (a reader that lists its warnings), the warnings raised in Python.

@@ -171,3 +171,11 @@ def test_unknown_keys_warn_as_the_program_does():
         polyplan.World.from_dict(dict(SQUARE, colour="red"))
     with pytest.warns(UserWarning, match="colour"):
         polyplan.Arm.from_json(json.dumps({"links": [1, 1], "colour": "red", "start": [0, 0], "goal": [1, 1]}))
+
+
+def test_warnings_made_errors_raise():
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(UserWarning, match="colour"):
+            polyplan.World.from_dict(dict(SQUARE, colour="red"))

@@ -31,8 +31,10 @@ inline CliRun run_polyplan(const std::string& arguments) {
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("polyplan_cli_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const std::string command = std::string("'") + POLYPLAN_CLI + "' " + arguments + " >'" + (dir / "out").string() +
-                              "' 2>'" + (dir / "err").string() + "' </dev/null";
+  std::string command = "'";  // appended: GCC 12 takes "'" + string for an out-of-bounds copy
+  for (const std::string& piece : {std::string(POLYPLAN_CLI), std::string("' "), arguments, std::string(" >'"), (dir / "out").string(),
+                                   std::string("' 2>'"), (dir / "err").string(), std::string("' </dev/null")})
+    command += piece;
   const int status = std::system(command.c_str());
   CliRun run{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(dir / "out"), slurp(dir / "err")};
   fs::remove_all(dir);

@@ -68,7 +68,9 @@ TEST(Scen, QueriesAndReferencesThatDoNotFitTheMapAreRefused) {
   fs::create_directories(dir);
   auto write = [&](const std::string& name, const std::string& text) {
     std::ofstream(dir / name) << text;
-    return "'" + (dir / name).string() + "'";
+    std::string quoted = "'";  // appended: GCC 12 takes "'" + string for an out-of-bounds copy
+    quoted += (dir / name).string();
+    return quoted + "'";
   };
   const std::string map = write("m.map", "type octile\nheight 3\nwidth 4\nmap\n....\n.@@.\n....\n");
   const std::string good = write("good.scen", "version 1\n0\tm.map\t4\t3\t0\t0\t3\t2\t3.82843\n");

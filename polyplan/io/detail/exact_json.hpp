@@ -71,8 +71,11 @@ class ExactNumberSax {
   std::string where() const {
     std::string path;
     for (const Frame& f : frames_) {
-      if (f.array)
-        path += "[" + std::to_string(f.index) + "]";
+      if (f.array) {  // appended piece by piece: GCC 12 takes "[" + string for an out-of-bounds copy
+        path += '[';
+        path += std::to_string(f.index);
+        path += ']';
+      }
       else if (!f.key.empty())
         path += (path.empty() ? "" : ".") + abbreviated_text(f.key);
     }
