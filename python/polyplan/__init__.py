@@ -190,6 +190,9 @@ def _arm_from_dict(d: dict, name: str = "<dict>") -> Arm:
 
 World.from_dict = staticmethod(_world_from_dict)
 Arm.from_dict = staticmethod(_arm_from_dict)
+# help() and repr name the classes where users find them: polyplan.World, not polyplan._polyplan.World.
+for _cls in (Arm, CSpace, InputError, Plan, Planner, World):
+    _cls.__module__ = __name__
 
 
 def plot(r, ax=None):

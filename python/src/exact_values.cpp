@@ -102,6 +102,22 @@ std::vector<double> finite_numbers(py::handle value, const std::string& what) {
   return out;
 }
 
+std::string text_of(py::handle value, const std::string& what) {
+  if (!py::isinstance<py::str>(value)) throw InputError(what + ": expected a str, got " + type_name(value));
+  return value.cast<std::string>();
+}
+
+std::string path_of(py::handle value, const std::string& what) {
+  if (py::isinstance(value, py::module_::import("os").attr("PathLike"))) return text_of(py::module_::import("os").attr("fspath")(value), what);
+  if (!py::isinstance<py::str>(value)) throw InputError(what + ": expected a file's path (a str or a pathlib.Path), got " + type_name(value));
+  return value.cast<std::string>();
+}
+
+bool flag_of(py::handle value, const std::string& what) {
+  if (!is_boolean(value)) throw InputError(what + ": expected True or False, got " + type_name(value));
+  return py::bool_(py::reinterpret_borrow<py::object>(value));
+}
+
 py::object fraction(const Rational& value) {
   return py::module_::import("fractions").attr("Fraction")(py::int_(py::str(value.get_num().get_str())), py::int_(py::str(value.get_den().get_str())));
 }

@@ -28,6 +28,12 @@ std::vector<ExactPoint> exact_points(py::handle value, const std::string& what);
 // A sequence or 1-d array of finite numbers (joint angles).
 std::vector<double> finite_numbers(py::handle value, const std::string& what);
 
+// A str; a path may also be an os.PathLike (pathlib.Path). InputError for anything else.
+std::string text_of(py::handle value, const std::string& what);
+std::string path_of(py::handle value, const std::string& what);
+// True or False (numpy's bools too); InputError for anything else, 0 and 1 included.
+bool flag_of(py::handle value, const std::string& what);
+
 py::object fraction(const Rational& value);
 // An (N, columns) float64 array of rows given as doubles.
 py::array_t<double> rows_array(const std::vector<std::vector<double>>& rows, std::size_t columns);

@@ -230,7 +230,11 @@ planner answers one query at a time; planners of different problems plan in para
 different threads (the GIL is released while planning).)")
       .def_readonly("name", &PlannerHandle::name, "The planner's name in the registry.")
       .def_property_readonly("space", &PlannerHandle::space, "The configuration space it plans in.")
-      .def("plan", &PlannerHandle::plan, py::arg("start") = py::none(), py::arg("goal") = py::none(), py::arg("query") = py::none(),
+      .def("plan",
+           [](PlannerHandle& p, const py::object& start, const py::object& goal, const py::object& query, const py::object& record) {
+             return p.plan(start, goal, query, flag_of(record, "plan: record"));
+           },
+           py::arg("start") = py::none(), py::arg("goal") = py::none(), py::arg("query") = py::none(),
            py::arg("record") = true,
            R"(One query answered: a Plan.
 
@@ -239,12 +243,15 @@ planner, a sequence of joint angles (radians) for an arm; exact numbers as in Wo
 problem's own query, the first one or the one `query` names (its name or index). A start or goal
 that is not free is an answer (status "invalid_query"), not an error. record: keep the roadmap
 or tree, the expanded configurations and the cells for polyplan.plot and polyplan.svg.)")
-      .def("plan_all", &PlannerHandle::plan_all, py::arg("record") = true,
+      .def("plan_all", [](PlannerHandle& p, const py::object& record) { return p.plan_all(flag_of(record, "plan_all: record")); },
+           py::arg("record") = true,
            "Every query of the problem (checked as `polyplan plan` checks them: InputError for one that is not free): a list of Plan.")
       .def("__repr__", [](const PlannerHandle& p) { return "<polyplan.Planner " + p.name + " for " + p.space() + ">"; });
 
   // polyplan.planner in __init__.py (which documents it) calls this with the options as a dict.
-  m.def("_planner", [](const std::string& name, const py::object& problem, const py::dict& options) { return make_planner(name, problem, options); });
+  m.def("_planner", [](const py::object& name, const py::object& problem, const py::dict& options) {
+    return make_planner(text_of(name, "planner: name"), problem, options);
+  });
   m.def("_planner_list", [] {
     py::list out;
     list_space<TranslatingRobot>(out);

@@ -184,7 +184,7 @@ the planner's counts and measures, nested as in the JSON.)")
 
   m.def(
       "svg",
-      [](const py::object& problem, const py::object& plans, bool strobe) {
+      [](const py::object& problem, const py::object& plans, const py::object& strobe) {
         std::vector<const PlanResult*> list;
         if (py::isinstance<PlanResult>(plans)) list.push_back(&plans.cast<const PlanResult&>());
         else if (!plans.is_none()) {
@@ -194,7 +194,7 @@ the planner's counts and measures, nested as in the JSON.)")
             list.push_back(&p.cast<const PlanResult&>());
           }
         }
-        return svg_of(problem, list, strobe);
+        return svg_of(problem, list, flag_of(strobe, "svg: strobe"));
       },
       py::arg("problem"), py::arg("plans") = py::none(), py::arg("strobe") = false,
       R"(The picture the program draws, as SVG text: a World with its C-space and the plans (one Plan

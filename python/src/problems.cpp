@@ -78,6 +78,11 @@ py::object free_area(const CSpaceView& view) {
 
 }  // namespace
 
+std::shared_ptr<WorldHandle> world_of(py::handle value, const std::string& what) {
+  if (!py::isinstance<WorldHandle>(value)) throw InputError(what + ": expected a polyplan.World, got " + type_name(value));
+  return value.cast<WorldPtr>();
+}
+
 void bind_problems(py::module_& m) {
   py::class_<WorldHandle, WorldPtr>(m, "World", R"(A polygon world: obstacles, bounds, a robot and queries, all exact.
 
@@ -87,8 +92,9 @@ fractions.Fraction or a decimal string ("0.1" is exactly 1/10) is its exact valu
 the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
       .def_static(
           "from_json",
-          [](const std::string& text, const std::string& name) {
-            return read_warning<WorldHandle>([&](auto* warnings) { return parse_world(text, name, warnings); });
+          [](const py::object& text, const py::object& name) {
+            return read_warning<WorldHandle>(
+                [&](auto* warnings) { return parse_world(text_of(text, "World.from_json: text"), text_of(name, "World.from_json: name"), warnings); });
           },
           py::arg("text"), py::arg("name") = "<json>",
           "The world in a world file's JSON text; `name` stands for the file in messages and relative paths.")
@@ -132,8 +138,9 @@ Read one with polyplan.read_arm(path), Arm.from_json(text) or Arm.from_dict(d). 
 are radians, relative (theta1 from +x, theta_i from link i-1).)")
       .def_static(
           "from_json",
-          [](const std::string& text, const std::string& name) {
-            return read_warning<ArmHandle>([&](auto* warnings) { return parse_arm_problem(text, name, warnings); });
+          [](const py::object& text, const py::object& name) {
+            return read_warning<ArmHandle>(
+                [&](auto* warnings) { return parse_arm_problem(text_of(text, "Arm.from_json: text"), text_of(name, "Arm.from_json: name"), warnings); });
           },
           py::arg("text"), py::arg("name") = "<json>", "The arm in an arm file's JSON text; `name` stands for the file in messages.")
       .def_property_readonly("source", [](const ArmHandle& a) { return a.problem().source; }, "The file (or name) it was read from.")
@@ -180,11 +187,15 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
 
   m.def(
       "read_world",
-      [](const std::string& path) { return read_warning<WorldHandle>([&](auto* warnings) { return read_world(path, warnings); }); },
+      [](const py::object& path) {
+        return read_warning<WorldHandle>([&](auto* warnings) { return read_world(path_of(path, "read_world: path"), warnings); });
+      },
       py::arg("path"), "The world file at `path` (JSON). Raises InputError naming the file and the object for bad input.");
   m.def(
       "read_arm",
-      [](const std::string& path) { return read_warning<ArmHandle>([&](auto* warnings) { return read_arm_problem(path, warnings); }); },
+      [](const py::object& path) {
+        return read_warning<ArmHandle>([&](auto* warnings) { return read_arm_problem(path_of(path, "read_arm: path"), warnings); });
+      },
       py::arg("path"), "The arm file at `path` (JSON). Raises InputError naming the file and the object for bad input.");
 
   py::class_<CSpaceView>(m, "CSpace", "A world's exact configuration space (polyplan.cspace(world)): the C-obstacles and the free space.")
@@ -201,14 +212,17 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
       .def("__repr__", [](const CSpaceView& v) { return "<polyplan.CSpace of " + v.world->world().source + ">"; });
 
   m.def(
-      "cspace", [](const WorldPtr& world) {
+      "cspace",
+      [](const py::object& given) {
+        const WorldPtr world = world_of(given, "cspace");
         locked(world->lock(), [&] { return &world->cspace(); });
         return CSpaceView{world};
       },
       py::arg("world"), "The world's exact C-space (built once per World, shared by its planners).");
   m.def(
       "check",
-      [](const WorldPtr& world, const py::object& path) {
+      [](const py::object& given, const py::object& path) {
+        const WorldPtr world = world_of(given, "check");
         const std::vector<ExactPoint> points = exact_points(path, "path");
         if (points.empty()) throw InputError("path: expected at least one point");
         const PathCheck result = locked(world->lock(), [&] { return check_path(world->cspace(), points); });

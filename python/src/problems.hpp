@@ -12,6 +12,7 @@
 
 #include <memory>
 #include <mutex>
+#include <string>
 
 namespace polyplan::python {
 
@@ -50,6 +51,9 @@ decltype(auto) locked(std::mutex& lock, Work&& work) {
   std::lock_guard<std::mutex> held(lock);
   return work();
 }
+
+// The World a Python argument is; InputError naming `what` when it is something else.
+std::shared_ptr<WorldHandle> world_of(pybind11::handle value, const std::string& what);
 
 void bind_problems(pybind11::module_& m);
 

@@ -179,3 +179,21 @@ def test_warnings_made_errors_raise():
         warnings.simplefilter("error")
         with pytest.raises(UserWarning, match="colour"):
             polyplan.World.from_dict(dict(SQUARE, colour="red"))
+
+
+def test_arguments_of_the_wrong_type(world, tmp_path):
+    import pathlib
+    assert polyplan.read_world(pathlib.Path(data("worlds", "seed004.json"))).queries
+    assert polyplan.read_arm(pathlib.Path(data("arms", "two_link_points.json"))).joints == 2
+    raises("path", polyplan.read_world, 123)
+    raises("path", polyplan.read_arm, None)
+    raises("text", polyplan.World.from_json, b"{}")
+    raises("name", polyplan.World.from_json, "{}", 5)
+    raises("World", polyplan.cspace, 42)
+    raises("World", polyplan.check, "world", [[0, 0]])
+    raises("name", polyplan.planner, 5, world)
+    raises("name", polyplan.plan, world, planner=["visibility"])
+    p = polyplan.planner("visibility", world)
+    raises("record", p.plan, record="yes")
+    raises("record", p.plan_all, record=1)
+    raises("strobe", polyplan.svg, world, p.plan(), strobe="yes")
