@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
   add_grid_command(app, run);
   add_arm_command(app, run);
   add_planners_command(app, run);
+  add_steer_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -63,6 +63,11 @@ inline constexpr const char* path_palette[] = {"#d62728", "#1f77b4", "#2ca02c", 
 inline constexpr std::size_t path_palette_size = sizeof path_palette / sizeof path_palette[0];
 inline const char* path_colour(std::size_t i) { return path_palette[i % path_palette_size]; }
 
+// Cars: forward driving blue, reverse orange, turning circles dashed grey.
+inline constexpr const char* car_forward = "#1f77b4";
+inline constexpr const char* car_reverse = "#ff7f0e";
+inline constexpr const char* turning_circle = "#9aa5b1";
+
 // Arms: the moving arm orange; its start configuration blue and its goal red (a strobe ramps
 // between them); the reach circle, the end effector's trace and the base in greys.
 inline constexpr const char* arm_fill = "#f28e2b";

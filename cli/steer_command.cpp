@@ -1,0 +1,83 @@
+// polyplan steer --model dubins|reeds-shepp --radius R --from X,Y,THETA --to X,Y,THETA
+// [--json FILE|-] [--svg OUT.svg]: the shortest steering curve between two poses (theta in
+// degrees), its word and segments, and its picture.
+#include "cli/command.hpp"
+
+#include <polyplan/car/dubins.hpp>
+#include <polyplan/car/reeds_shepp.hpp>
+#include <polyplan/draw/steering_svg.hpp>
+#include <polyplan/geometry/input_error.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace polyplan::cli {
+namespace {
+
+struct SteerOptions {
+  std::string model = "dubins";
+  double radius = 1;
+  std::string from, to;
+  std::string json, svg;
+};
+
+// "X,Y,THETA" with theta in degrees.
+CarPose pose_option(const std::string& text, const char* option) {
+  std::vector<double> values;
+  std::stringstream in(text);
+  std::string part;
+  while (std::getline(in, part, ',')) {
+    std::size_t used = 0;
+    double value = 0;
+    try {
+      value = std::stod(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != part.size() || !std::isfinite(value))
+      throw InputError(std::string(option) + " " + text + ": \"" + part + "\" is not a finite number");
+    values.push_back(value);
+  }
+  if (values.size() != 3) throw InputError(std::string(option) + " " + text + ": expected X,Y,THETA (theta in degrees)");
+  return {values[0], values[1], values[2] * M_PI / 180};
+}
+
+nlohmann::json steering_json(const SteeringPath& path) {
+  nlohmann::json segments = nlohmann::json::array();
+  for (const SteeringSegment& s : path.segments)
+    segments.push_back({{"steer", std::string(1, static_cast<char>(s.steer))}, {"gear", s.gear}, {"length", s.length}});
+  return {{"length", path.length()}, {"word", path.word}, {"segments", segments}};
+}
+
+int run_steer(const SteerOptions& o) {
+  const CarPose from = pose_option(o.from, "--from"), to = pose_option(o.to, "--to");
+  const SteeringPath path =
+      o.model == "dubins" ? shortest_dubins_path(from, to, o.radius) : shortest_reeds_shepp_path(from, to, o.radius);
+  if (!o.json.empty()) write_json(steering_json(path), o.json);
+  char length[32];
+  std::snprintf(length, sizeof length, "%.6g", path.length());
+  const std::string summary = o.model + " " + (path.word.empty() ? "(no motion)" : path.word) + ": length " + length;
+  if (!o.svg.empty()) draw_steering(path, from, to, o.radius, summary).write(o.svg);
+  if (o.json != "-") std::cout << summary << '\n';
+  return ok;
+}
+
+}  // namespace
+
+void add_steer_command(CLI::App& app, Action& run) {
+  auto options = std::make_shared<SteerOptions>();
+  CLI::App* command = app.add_subcommand("steer", "The shortest Dubins or Reeds-Shepp curve between two poses of a car");
+  command->add_option("--model", options->model, "dubins (forward only) or reeds-shepp (may reverse)")
+      ->check(CLI::IsMember({"dubins", "reeds-shepp"}))
+      ->capture_default_str();
+  command->add_option("--radius", options->radius, "turning radius")->capture_default_str();
+  command->add_option("--from", options->from, "start pose X,Y,THETA (theta in degrees)")->required();
+  command->add_option("--to", options->to, "goal pose X,Y,THETA (theta in degrees)")->required();
+  command->add_option("--json", options->json, "write {length, word, segments} as JSON to this file ('-' for standard output)");
+  command->add_option("--svg", options->svg, "draw the curve, its turning circles and the two poses");
+  command->callback([options, &run] { run = [options] { return run_steer(*options); }; });
+}
+
+}  // namespace polyplan::cli

@@ -1,0 +1,143 @@
+#include <polyplan/car/dubins.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace polyplan {
+namespace {
+
+constexpr double two_pi = 2 * M_PI;
+
+// An angle in [0, 2 pi). A value a few rounding errors below 2 pi is 0: it comes from an angle
+// that is 0 exactly (start on the goal's circle, or start = goal) computed as a tiny negative,
+// and taken literally it would drive a full circle instead of none.
+double turn(double angle) {
+  double a = angle - two_pi * std::floor(angle / two_pi);
+  if (a >= two_pi - 1e-11) a = 0;
+  return a;
+}
+
+// The problem in the frame of the Dubins formulas: the start at the origin, the goal at (d, 0),
+// lengths in turning radii, the headings alpha and beta measured from the start-goal line.
+struct DubinsFrame {
+  double d, alpha, beta;
+  double sa, ca, sb, cb;
+};
+
+DubinsFrame frame(const CarPose& from, const CarPose& to, double radius) {
+  const double dx = to.x - from.x, dy = to.y - from.y;
+  const double d = std::hypot(dx, dy) / radius;
+  // Poses at one point: any line through it serves; the start's heading makes alpha 0 exactly.
+  const double line = d > 0 ? std::atan2(dy, dx) : from.theta;
+  const double alpha = turn(from.theta - line), beta = turn(to.theta - line);
+  return {d, alpha, beta, std::sin(alpha), std::cos(alpha), std::sin(beta), std::cos(beta)};
+}
+
+struct Word {
+  const char* letters;
+  double t, p, q;  // in turning radii (arcs: radians)
+  double length() const { return t + p + q; }
+};
+
+// Each word from the centres of its turning circles (left of the car: (-sin, cos) from it;
+// right: (sin, -cos)), which keeps the straight's length free of cancellation.
+std::optional<Word> lsl(const DubinsFrame& f) {
+  const double x = f.d - f.sb + f.sa, y = f.cb - f.ca;
+  const double line = std::atan2(y, x);
+  return Word{"LSL", turn(line - f.alpha), std::sqrt(x * x + y * y), turn(f.beta - line)};
+}
+
+std::optional<Word> rsr(const DubinsFrame& f) {
+  const double x = f.d + f.sb - f.sa, y = f.ca - f.cb;
+  const double line = std::atan2(y, x);
+  return Word{"RSR", turn(f.alpha - line), std::sqrt(x * x + y * y), turn(line - f.beta)};
+}
+
+// The inner tangent between circles whose centres are `centres` apart: none when they overlap.
+// (D - 2)(D + 2), not D^2 - 4: no cancellation near tangent circles.
+std::optional<double> inner_tangent(double centres) {
+  if (centres < 2 - 1e-12) return std::nullopt;
+  return std::sqrt(std::max(0.0, (centres - 2) * (centres + 2)));
+}
+
+std::optional<Word> lsr(const DubinsFrame& f) {
+  const double x = f.d + f.sa + f.sb, y = -f.ca - f.cb;
+  const auto p = inner_tangent(std::sqrt(x * x + y * y));
+  if (!p) return std::nullopt;
+  const double line = std::atan2(y, x) - std::atan2(-2.0, *p);
+  return Word{"LSR", turn(line - f.alpha), *p, turn(line - f.beta)};
+}
+
+std::optional<Word> rsl(const DubinsFrame& f) {
+  const double x = f.d - f.sa - f.sb, y = f.ca + f.cb;
+  const auto p = inner_tangent(std::sqrt(x * x + y * y));
+  if (!p) return std::nullopt;
+  const double line = std::atan2(y, x) - std::atan2(2.0, *p);
+  return Word{"RSL", turn(f.alpha - line), *p, turn(f.beta - line)};
+}
+
+// The middle circle of RLR or LRL touches both end circles, whose centres are `centres` <= 4
+// apart: it turns 2 pi less the angle 2 asin(centres / 4) at its centre (the law of cosines'
+// acos(1 - centres^2 / 8) loses every digit when the centres nearly coincide).
+std::optional<double> middle_turn(double centres) {
+  if (centres > 4 + 1e-12) return std::nullopt;
+  return 2 * M_PI - 2 * std::asin(std::min(1.0, centres / 4));
+}
+
+std::optional<Word> rlr(const DubinsFrame& f) {
+  const double x = f.d + f.sb - f.sa, y = f.ca - f.cb;
+  const auto p = middle_turn(std::sqrt(x * x + y * y));
+  if (!p) return std::nullopt;
+  const double t = turn(f.alpha - std::atan2(y, x) + *p / 2);
+  return Word{"RLR", t, *p, turn(f.alpha - f.beta - t + *p)};
+}
+
+std::optional<Word> lrl(const DubinsFrame& f) {
+  const double x = f.d - f.sb + f.sa, y = f.cb - f.ca;
+  const auto p = middle_turn(std::sqrt(x * x + y * y));
+  if (!p) return std::nullopt;
+  const double t = turn(std::atan2(y, x) - f.alpha + *p / 2);
+  return Word{"LRL", t, *p, turn(f.beta - f.alpha - t + *p)};
+}
+
+SteeringPath path_of(const Word& w, double radius) {
+  SteeringPath path;
+  const double lengths[] = {w.t, w.p, w.q};
+  for (int i = 0; i < 3; ++i) append_segment(path, static_cast<Steer>(w.letters[i]), 1, lengths[i] * radius, radius, false);
+  return path;
+}
+
+constexpr std::optional<Word> (*every_word[])(const DubinsFrame&) = {lsl, rsr, lsr, rsl, rlr, lrl};
+
+// The least word (LSL always exists); a distance query makes no path.
+Word shortest_word(const CarPose& from, const CarPose& to, double radius) {
+  require_steerable(from, to, radius, "dubins");
+  const DubinsFrame f = frame(from, to, radius);
+  Word best = *lsl(f);
+  for (auto word : every_word)
+    if (const auto w = word(f); w && w->length() < best.length()) best = *w;
+  return best;
+}
+
+}  // namespace
+
+std::vector<SteeringPath> dubins_paths(const CarPose& from, const CarPose& to, double radius) {
+  require_steerable(from, to, radius, "dubins");
+  const DubinsFrame f = frame(from, to, radius);
+  std::vector<SteeringPath> paths;
+  for (auto word : every_word)
+    if (const auto w = word(f)) paths.push_back(path_of(*w, radius));
+  return paths;
+}
+
+SteeringPath shortest_dubins_path(const CarPose& from, const CarPose& to, double radius) {
+  return path_of(shortest_word(from, to, radius), radius);
+}
+
+double dubins_distance(const CarPose& from, const CarPose& to, double radius) {
+  return shortest_word(from, to, radius).length() * radius;
+}
+
+}  // namespace polyplan

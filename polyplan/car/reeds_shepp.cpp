@@ -1,0 +1,266 @@
+// The formulas are those of Reeds and Shepp's paper (section 8), in the arrangement OMPL's
+// ReedsSheppStateSpace uses (BSD licence; its distances are the tests' reference): each base
+// formula solves for the goal (x, y, phi) in the start's frame, in turning radii; the time-flip
+// (-x, y, -phi) reverses every gear, the reflection (x, -y, -phi) swaps left and right, and a
+// "backwards" goal (the start seen from the goal) reverses the order of the segments.
+#include <polyplan/car/reeds_shepp.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+namespace polyplan {
+namespace {
+
+constexpr double pi = M_PI;
+constexpr double zero = 10 * std::numeric_limits<double>::epsilon();  // the formulas' sign tolerance
+
+// An angle in (-pi, pi].
+double wrap(double angle) {
+  double a = std::fmod(angle, 2 * pi);
+  if (a <= -pi) a += 2 * pi;
+  else if (a > pi) a -= 2 * pi;
+  return a;
+}
+
+void polar(double x, double y, double& r, double& theta) {
+  r = std::hypot(x, y);
+  theta = std::atan2(y, x);
+}
+
+// A word before it is scaled: up to five letters and their signed lengths (negative: reverse).
+struct Word {
+  std::array<char, 5> letters{};  // 'L', 'S', 'R'; 0 past the end
+  std::array<double, 5> lengths{};
+  int size = 0;
+  double length() const {
+    double sum = 0;
+    for (int i = 0; i < size; ++i) sum += std::abs(lengths[i]);
+    return sum;
+  }
+};
+
+using Letters = const char*;
+
+Word word(Letters letters, std::initializer_list<double> lengths) {
+  Word w;
+  for (double l : lengths) {
+    w.letters[w.size] = letters[w.size];
+    w.lengths[w.size] = l;
+    ++w.size;
+  }
+  return w;
+}
+
+// The same word with left and right swapped (the reflection).
+Letters reflected(Letters letters) {
+  static const std::array<std::pair<const char*, const char*>, 9> pairs{{{"LSL", "RSR"}, {"LSR", "RSL"}, {"LRL", "RLR"},
+                                                                         {"LRLR", "RLRL"}, {"LRSL", "RLSR"}, {"LSRL", "RSLR"},
+                                                                         {"LRSR", "RLSL"}, {"RSRL", "LSLR"}, {"LRSLR", "RLSRL"}}};
+  for (const auto& [a, b] : pairs) {
+    if (std::string_view(a) == letters) return b;
+    if (std::string_view(b) == letters) return a;
+  }
+  return letters;
+}
+
+// ---- The base formulas: true when the word joins the origin (heading 0) to (x, y, phi). ----
+
+// 8.1: L+ S+ L+
+bool lp_sp_lp(double x, double y, double phi, double& t, double& u, double& v) {
+  polar(x - std::sin(phi), y - 1 + std::cos(phi), u, t);
+  if (t < -zero) return false;
+  v = wrap(phi - t);
+  return v >= -zero;
+}
+
+// 8.2: L+ S+ R+
+bool lp_sp_rp(double x, double y, double phi, double& t, double& u, double& v) {
+  double r, theta;
+  polar(x + std::sin(phi), y - 1 - std::cos(phi), r, theta);
+  const double r2 = r * r;
+  if (r2 < 4) return false;
+  u = std::sqrt(r2 - 4);
+  t = wrap(theta + std::atan2(2.0, u));
+  v = wrap(t - phi);
+  return t >= -zero && v >= -zero;
+}
+
+// 8.3: L+ R- L
+bool lp_rm_l(double x, double y, double phi, double& t, double& u, double& v) {
+  double r, theta;
+  polar(x - std::sin(phi), y - 1 + std::cos(phi), r, theta);
+  if (r > 4) return false;
+  u = -2 * std::asin(r / 4);
+  t = wrap(theta + u / 2 + pi);
+  v = wrap(phi - t + u);
+  return t >= -zero && u <= zero;
+}
+
+// The last two angles of the CCCC words (8.7, 8.8).
+void tau_omega(double u, double v, double xi, double eta, double phi, double& tau, double& omega) {
+  const double delta = wrap(u - v), a = std::sin(u) - std::sin(delta), b = std::cos(u) - std::cos(delta) - 1;
+  const double t1 = std::atan2(eta * a - xi * b, xi * a + eta * b), t2 = 2 * (std::cos(delta) - std::cos(v) - std::cos(u)) + 3;
+  tau = t2 < 0 ? wrap(t1 + pi) : wrap(t1);
+  omega = wrap(tau - u + v - phi);
+}
+
+// 8.7: L+ R+ L- R-
+bool lp_rup_lum_rm(double x, double y, double phi, double& t, double& u, double& v) {
+  const double xi = x + std::sin(phi), eta = y - 1 - std::cos(phi), rho = (2 + std::hypot(xi, eta)) / 4;
+  if (rho > 1) return false;
+  u = std::acos(rho);
+  tau_omega(u, -u, xi, eta, phi, t, v);
+  return t >= -zero && v <= zero;
+}
+
+// 8.8: L+ R- L- R+
+bool lp_rum_lum_rp(double x, double y, double phi, double& t, double& u, double& v) {
+  const double xi = x + std::sin(phi), eta = y - 1 - std::cos(phi), rho = (20 - xi * xi - eta * eta) / 16;
+  if (rho < 0 || rho > 1) return false;
+  u = -std::acos(rho);
+  if (u < -pi / 2) return false;
+  tau_omega(u, u, xi, eta, phi, t, v);
+  return t >= -zero && v >= -zero;
+}
+
+// 8.9: L+ R-(pi/2) S- L-
+bool lp_rm_sm_lm(double x, double y, double phi, double& t, double& u, double& v) {
+  double rho, theta;
+  polar(x - std::sin(phi), y - 1 + std::cos(phi), rho, theta);
+  if (rho < 2) return false;
+  const double r = std::sqrt(rho * rho - 4);
+  u = 2 - r;
+  t = wrap(theta + std::atan2(r, -2.0));
+  v = wrap(phi - pi / 2 - t);
+  return t >= -zero && u <= zero && v <= zero;
+}
+
+// 8.10: L+ R-(pi/2) S- R-
+bool lp_rm_sm_rm(double x, double y, double phi, double& t, double& u, double& v) {
+  double rho, theta;
+  polar(-(y - 1 - std::cos(phi)), x + std::sin(phi), rho, theta);
+  if (rho < 2) return false;
+  t = theta;
+  u = 2 - rho;
+  v = wrap(t + pi / 2 - phi);
+  return t >= -zero && u <= zero && v <= zero;
+}
+
+// 8.11: L+ R-(pi/2) S- L-(pi/2) R+
+bool lp_rm_slm_rp(double x, double y, double phi, double& t, double& u, double& v) {
+  const double xi = x + std::sin(phi), eta = y - 1 - std::cos(phi);
+  double rho, theta;
+  polar(xi, eta, rho, theta);
+  if (rho < 2) return false;
+  u = 4 - std::sqrt(rho * rho - 4);
+  if (u > zero) return false;
+  t = wrap(std::atan2((4 - u) * xi - 2 * eta, -2 * xi + (u - 4) * eta));
+  v = wrap(t - phi);
+  return t >= -zero && v >= -zero;
+}
+
+using Formula = bool (*)(double, double, double, double&, double&, double&);
+
+// A base formula under the four symmetries; `make` turns its (t, u, v) and the symmetry's sign
+// (-1: time-flipped) into the word, `letters` for the goal as given, reflected for the mirror.
+template <class Make>
+void symmetric(std::vector<Word>& out, Formula formula, Letters letters, double x, double y, double phi, Make make) {
+  double t, u, v;
+  if (formula(x, y, phi, t, u, v)) out.push_back(make(letters, 1, t, u, v));
+  if (formula(-x, y, -phi, t, u, v)) out.push_back(make(letters, -1, t, u, v));
+  if (formula(x, -y, -phi, t, u, v)) out.push_back(make(reflected(letters), 1, t, u, v));
+  if (formula(-x, -y, phi, t, u, v)) out.push_back(make(reflected(letters), -1, t, u, v));
+}
+
+void csc(std::vector<Word>& out, double x, double y, double phi) {
+  const auto make = [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * v}); };
+  symmetric(out, lp_sp_lp, "LSL", x, y, phi, make);
+  symmetric(out, lp_sp_rp, "LSR", x, y, phi, make);
+}
+
+// The goal's "backwards" twin: the start seen from the goal, for the words read in reverse.
+void backwards(double x, double y, double phi, double& xb, double& yb) {
+  xb = x * std::cos(phi) + y * std::sin(phi);
+  yb = x * std::sin(phi) - y * std::cos(phi);
+}
+
+void ccc(std::vector<Word>& out, double x, double y, double phi) {
+  symmetric(out, lp_rm_l, "LRL", x, y, phi, [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * v}); });
+  double xb, yb;
+  backwards(x, y, phi, xb, yb);
+  symmetric(out, lp_rm_l, "LRL", xb, yb, phi, [](Letters l, double s, double t, double u, double v) { return word(l, {s * v, s * u, s * t}); });
+}
+
+void cccc(std::vector<Word>& out, double x, double y, double phi) {
+  symmetric(out, lp_rup_lum_rm, "LRLR", x, y, phi,
+            [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, -s * u, s * v}); });
+  symmetric(out, lp_rum_lum_rp, "LRLR", x, y, phi,
+            [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * u, s * v}); });
+}
+
+void ccsc(std::vector<Word>& out, double x, double y, double phi) {
+  const auto forward = [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, -s * pi / 2, s * u, s * v}); };
+  symmetric(out, lp_rm_sm_lm, "LRSL", x, y, phi, forward);
+  symmetric(out, lp_rm_sm_rm, "LRSR", x, y, phi, forward);
+  double xb, yb;
+  backwards(x, y, phi, xb, yb);
+  const auto reverse = [](Letters l, double s, double t, double u, double v) { return word(l, {s * v, s * u, -s * pi / 2, s * t}); };
+  symmetric(out, lp_rm_sm_lm, "LSRL", xb, yb, phi, reverse);
+  symmetric(out, lp_rm_sm_rm, "RSRL", xb, yb, phi, reverse);
+}
+
+void ccscc(std::vector<Word>& out, double x, double y, double phi) {
+  symmetric(out, lp_rm_slm_rp, "LRSLR", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+    return word(l, {s * t, -s * pi / 2, s * u, -s * pi / 2, s * v});
+  });
+}
+
+SteeringPath path_of(const Word& w, double radius) {
+  SteeringPath path;
+  for (int i = 0; i < w.size; ++i)
+    append_segment(path, static_cast<Steer>(w.letters[i]), w.lengths[i] < 0 ? -1 : 1, std::abs(w.lengths[i]) * radius, radius, true);
+  return path;
+}
+
+// Every word that joins the poses, in turning radii, the goal in the start's frame.
+std::vector<Word> every_word(const CarPose& from, const CarPose& to, double radius) {
+  require_steerable(from, to, radius, "reeds-shepp");
+  const double dx = to.x - from.x, dy = to.y - from.y, c = std::cos(from.theta), s = std::sin(from.theta);
+  const double x = (c * dx + s * dy) / radius, y = (c * dy - s * dx) / radius, phi = wrap(to.theta - from.theta);
+  std::vector<Word> words;
+  words.reserve(48);
+  csc(words, x, y, phi);
+  ccc(words, x, y, phi);
+  cccc(words, x, y, phi);
+  ccsc(words, x, y, phi);
+  ccscc(words, x, y, phi);
+  return words;
+}
+
+// The least word: L+S+L+ under one of its symmetries always solves (8.1 needs only a circle
+// through the goal).
+Word shortest_word(const CarPose& from, const CarPose& to, double radius) {
+  const std::vector<Word> words = every_word(from, to, radius);
+  return *std::min_element(words.begin(), words.end(), [](const Word& a, const Word& b) { return a.length() < b.length(); });
+}
+
+}  // namespace
+
+std::vector<SteeringPath> reeds_shepp_paths(const CarPose& from, const CarPose& to, double radius) {
+  std::vector<SteeringPath> paths;
+  for (const Word& w : every_word(from, to, radius)) paths.push_back(path_of(w, radius));
+  return paths;
+}
+
+SteeringPath shortest_reeds_shepp_path(const CarPose& from, const CarPose& to, double radius) {
+  return path_of(shortest_word(from, to, radius), radius);
+}
+
+double reeds_shepp_distance(const CarPose& from, const CarPose& to, double radius) {
+  return shortest_word(from, to, radius).length() * radius;
+}
+
+}  // namespace polyplan

@@ -1,0 +1,65 @@
+// polyplan steer, run as a user runs it: the shortest curve's length, word and segments as JSON
+// (the segments add up to the length), its picture, and one-line errors for bad poses and radii.
+#include "cli_runner.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace polyplan::test;
+
+TEST(Steer, PrintsTheShortestCurveAsJson) {
+  // A U-turn onto the lane 2R to the left: half a circle for Dubins.
+  const CliRun dubins = run_polyplan("steer --model dubins --radius 2 --from 0,0,0 --to 0,4,180 --json -");
+  ASSERT_EQ(dubins.exit_code, 0) << dubins.err;
+  const auto d = nlohmann::json::parse(dubins.out);
+  EXPECT_EQ(d["word"], "L");
+  EXPECT_NEAR(d["length"].get<double>(), 2 * M_PI, 1e-12);
+  ASSERT_EQ(d["segments"].size(), 1u);
+  EXPECT_EQ(d["segments"][0]["steer"], "L");
+  EXPECT_EQ(d["segments"][0]["gear"], 1);
+  // Straight back: Reeds–Shepp reverses, Dubins must loop.
+  const auto rs = nlohmann::json::parse(run_polyplan("steer --model reeds-shepp --from 0,0,0 --to -3,0,0 --json -").out);
+  EXPECT_EQ(rs["word"], "S-");
+  EXPECT_EQ(rs["segments"][0]["gear"], -1);
+  EXPECT_DOUBLE_EQ(rs["length"].get<double>(), 3);
+  const auto loop = nlohmann::json::parse(run_polyplan("steer --model dubins --from 0,0,0 --to -3,0,0 --json -").out);
+  EXPECT_GT(loop["length"].get<double>(), 3 + M_PI);
+  double sum = 0;
+  for (const auto& s : loop["segments"]) sum += s["length"].get<double>();
+  EXPECT_NEAR(sum, loop["length"].get<double>(), 1e-12);
+}
+
+TEST(Steer, DrawsTheCurve) {
+  const std::string svg = (std::filesystem::temp_directory_path() / "polyplan_steer_test.svg").string();
+  const CliRun run = run_polyplan("steer --model reeds-shepp --radius 2 --from 0,0,0 --to 1,4,180 --svg '" + svg + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("reeds-shepp R+L-S-L-: length 6.40629"), std::string::npos) << run.out;
+  const std::string picture = slurp(svg);
+  EXPECT_NE(picture.find("<svg"), std::string::npos);
+  EXPECT_NE(picture.find("reverse"), std::string::npos);
+  std::filesystem::remove(svg);
+}
+
+TEST(Steer, RefusesBadInputInOneLine) {
+  const struct {
+    const char* arguments;
+    const char* expected;
+  } cases[] = {
+      {"steer --from 0,0 --to 1,1,0", "--from 0,0: expected X,Y,THETA (theta in degrees)"},
+      {"steer --from 0,0,0 --to 1,y,0", "--to 1,y,0: \"y\" is not a finite number"},
+      {"steer --from 0,0,nan --to 1,1,0", "is not a finite number"},
+      {"steer --radius 0 --from 0,0,0 --to 1,1,0", "turning radius 0: expected a positive finite number"},
+      {"steer --radius -2 --model reeds-shepp --from 0,0,0 --to 1,1,0", "turning radius -2"},
+      {"steer --model car --from 0,0,0 --to 1,1,0", "--model: car not in {dubins,reeds-shepp}"},
+      {"steer --to 1,1,0", "--from is required"},
+  };
+  for (const auto& c : cases) {
+    const CliRun run = run_polyplan(c.arguments);
+    EXPECT_EQ(run.exit_code, 2) << c.arguments;
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << c.arguments << ": " << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  }
+}
