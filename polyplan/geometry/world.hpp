@@ -35,8 +35,18 @@ struct Query {
 
 // A translating robot: its parts in the robot frame; the reference point is the origin.
 // No parts means a point robot.
+// A robot that steers like a car ("robot": {"parts": [...], "car": {...}}): its parts are the body
+// in the car's frame, whose origin is the reference point (the rear-axle centre) and whose +x the
+// heading; it drives arcs of `turning_radius` and straights, forward, and backward too when
+// `reverse` (a Reeds–Shepp car; otherwise a Dubins car).
+struct CarSteering {
+  double turning_radius = 1;
+  bool reverse = false;
+};
+
 struct Robot {
   std::vector<Ring> parts;  // counter-clockwise once validated
+  std::optional<CarSteering> car;
   bool is_point() const { return parts.empty(); }
 };
 

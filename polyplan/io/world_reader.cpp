@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 
@@ -49,11 +50,30 @@ class Reader : public detail::JsonFileReader {
     }
   }
 
+  // "car": {"turning_radius": R, "reverse": true|false}.
+  CarSteering car(const json& v, std::vector<std::string>* warnings) const {
+    if (!v.is_object()) fail("robot.car", "expected {\"turning_radius\": R, \"reverse\": true|false}, got " + abbreviated(v));
+    warn_unknown(v, "robot.car", {"turning_radius", "reverse"}, warnings);
+    CarSteering car;
+    const Rational radius = number(required(v, "turning_radius", "robot.car"), "robot.car.turning_radius");
+    car.turning_radius = to_double(radius);
+    if (radius <= 0 || !std::isfinite(car.turning_radius) || car.turning_radius <= 0)
+      fail("robot.car.turning_radius", to_string(radius) + ": expected a positive number");
+    if (v.contains("reverse")) {
+      if (!v["reverse"].is_boolean()) fail("robot.car.reverse", "expected true or false, got " + abbreviated(v["reverse"]));
+      car.reverse = v["reverse"].get<bool>();
+    }
+    return car;
+  }
+
   Query query(const json& start, const json& goal, const std::string& start_object, const std::string& goal_object,
-              std::string name) const {
+              std::string name, bool car) const {
     Query q;
     pose(start, start_object, q.start, q.start_theta);
     pose(goal, goal_object, q.goal, q.goal_theta);
+    // A car's heading is half its pose: a start without one is a mistake, not heading 0.
+    if (car && !q.start_theta) fail(start_object, "a car's pose is [x, y, theta] (theta in degrees), got " + abbreviated(start));
+    if (car && !q.goal_theta) fail(goal_object, "a car's pose is [x, y, theta] (theta in degrees), got " + abbreviated(goal));
     q.name = std::move(name);
     return q;
   }
@@ -126,18 +146,19 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
   if (root.contains("robot")) {
     const json& robot = root["robot"];
     if (!robot.is_object()) r.fail("robot", "expected {\"parts\": [...]}");
-    r.warn_unknown(robot, "robot", {"parts"}, warnings);
+    r.warn_unknown(robot, "robot", {"parts", "car"}, warnings);
     const json& parts = r.required(robot, "parts", "robot");
     if (!parts.is_array()) r.fail("robot.parts", "expected a list of polygons");
     // A robot named without parts is almost certainly a mistake, not a point robot.
     if (parts.empty()) r.fail("robot.parts", "empty: a robot needs at least one part (leave out \"robot\" for a point robot)");
     for (std::size_t i = 0; i < parts.size(); ++i)
       world.robot.parts.push_back(r.ring(parts[i], "robot.parts[" + std::to_string(i) + "]"));
+    if (robot.contains("car")) world.robot.car = r.car(robot["car"], warnings);
   }
 
   if (root.contains("start") != root.contains("goal"))
     r.fail("world", root.contains("start") ? "missing field \"goal\" (start is given)" : "missing field \"start\" (goal is given)");
-  if (root.contains("start")) world.queries.push_back(r.query(root["start"], root["goal"], "start", "goal", "start/goal"));
+  if (root.contains("start")) world.queries.push_back(r.query(root["start"], root["goal"], "start", "goal", "start/goal", world.robot.car.has_value()));
   if (root.contains("queries")) {
     const json& queries = root["queries"];
     if (!queries.is_array()) r.fail("queries", "expected a list of {\"start\", \"goal\"}");
@@ -147,7 +168,7 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
       if (!q.is_object()) r.fail(object, "expected {\"start\": [x, y], \"goal\": [x, y]}");
       r.warn_unknown(q, object, {"start", "goal"}, warnings);
       world.queries.push_back(r.query(r.required(q, "start", object), r.required(q, "goal", object), object + ".start",
-                                      object + ".goal", object));
+                                      object + ".goal", object, world.robot.car.has_value()));
     }
   }
 

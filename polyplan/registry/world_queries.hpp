@@ -17,4 +17,8 @@ namespace polyplan {
 // check reads (a rotating planner's builds those of its orientations: null will do).
 void require_plannable_queries(const World& world, const CSpace* cspace, std::string_view planner);
 
+// InputError when `planner` cannot plan for the world's robot at all, asked or not: a car's
+// (robot.car) paths must keep to its turning radius, which no translating or rotating planner does.
+void require_planner_for_robot(const World& world, std::string_view planner);
+
 }  // namespace polyplan

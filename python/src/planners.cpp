@@ -47,6 +47,7 @@ struct PythonSpace<TranslatingRobot> {
   static void require_plannable(WorldHandle& world, const std::string& planner) {
     require_plannable_queries(world.world(), &world.cspace(), planner);
   }
+  static void require_fits(const WorldHandle& world, const std::string& planner) { require_planner_for_robot(world.world(), planner); }
 };
 
 template <>
@@ -64,6 +65,7 @@ struct PythonSpace<RotatingRobot> {
   static void require_plannable(WorldHandle& world, const std::string& planner) {
     require_plannable_queries(world.world(), nullptr, planner);
   }
+  static void require_fits(const WorldHandle& world, const std::string& planner) { require_planner_for_robot(world.world(), planner); }
 };
 
 template <>
@@ -80,6 +82,7 @@ struct PythonSpace<PlanarArm> {
                          std::to_string(angles->size()));
     return q;
   }
+  static void require_fits(const ArmHandle&, const std::string&) {}
   static void require_plannable(ArmHandle& arm, const std::string&) {
     if (arm.problem().queries.empty()) throw InputError(arm.problem().source + ": no start/goal and no queries to plan");
   }
@@ -114,6 +117,7 @@ class PlannerOf final : public PlannerHandle {
   PlannerOf(const PlannerEntry<Space>& entry, std::shared_ptr<Handle> handle, const OptionValues& options)
       : handle_(std::move(handle)) {
     name = entry.name;
+    PythonSpace<Space>::require_fits(*handle_, name);
     planner_ = locked(handle_->lock(), [&] { return entry.make(PythonSpace<Space>::problem(*handle_), options); });
   }
 

@@ -176,3 +176,23 @@ TEST(Plan, TheRasterPictureShowsItsCellsAndTheTextSaysWhatWasSearched) {
   EXPECT_NE(picture.find("expanded by the search"), std::string::npos);
   fs::remove(svg);
 }
+
+TEST(Plan, ACarWorldIsRefusedByEveryPlannerThatDoesNotSteer) {
+  // The translating and rotating planners would ignore the turning radius: a car is refused,
+  // not planned as if it could turn on the spot.
+  const fs::path world = fs::temp_directory_path() / "polyplan_cli_test_car.json";
+  std::ofstream(world) << R"({"bounds": [0, 0, 20, 10], "obstacles": [],
+    "robot": {"parts": [[[-1, -1], [3, -1], [3, 1], [-1, 1]]], "car": {"turning_radius": 2, "reverse": true}},
+    "start": [5, 5, 0], "goal": [15, 5, 180]})";
+  for (const char* planner : {"visibility", "rotation", "rrt"}) {
+    const CliRun run = run_polyplan("plan '" + world.string() + "' --planner " + planner);
+    EXPECT_EQ(run.exit_code, 2) << planner;
+    EXPECT_NE(run.err.find("robot.car: the robot steers like a car, and the planner " + std::string(planner) +
+                           " neither steers nor keeps to a turning radius"),
+              std::string::npos)
+        << run.err;
+  }
+  // The C-space of the car's body, as it is drawn, is still the translating robot's.
+  EXPECT_EQ(run_polyplan("cspace '" + world.string() + "'").exit_code, 0);
+  fs::remove(world);
+}

@@ -121,3 +121,42 @@ TEST(WorldReader, FilesThatAreNotInputsEndAtOnce) {
   EXPECT_EQ(input_error_of([] { read_world("/dev/zero"); }), "/dev/zero: larger than the supported 64 MiB");
   EXPECT_EQ(input_error_of([] { read_world(POLYPLAN_SOURCE_DIR); }), std::string(POLYPLAN_SOURCE_DIR) + ": is a directory, not a file");
 }
+
+TEST(WorldReader, ReadsACar) {
+  const World w = world_from(R"({"obstacles": [], "robot": {"parts": [[[-1, -1], [3, -1], [3, 1], [-1, 1]]],
+    "car": {"turning_radius": "5/2", "reverse": true}}, "start": [0, 0, 90], "goal": [10, 0, -90]})");
+  ASSERT_TRUE(w.robot.car);
+  EXPECT_EQ(w.robot.car->turning_radius, 2.5);
+  EXPECT_TRUE(w.robot.car->reverse);
+  EXPECT_EQ(*w.queries[0].goal_theta, -90);
+  EXPECT_FALSE(world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0], [1, 0], [0, 1]]], "car": {"turning_radius": 1}},
+    "start": [0, 0, 0], "goal": [1, 1, 0]})").robot.car->reverse);
+  EXPECT_FALSE(world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0], [1, 0], [0, 1]]]}})").robot.car);
+}
+
+TEST(WorldReader, BadCarsNameTheirField) {
+  const std::string body = R"("parts": [[[-1, -1], [3, -1], [3, 1], [-1, 1]]])";
+  const auto car_world = [&](const std::string& car, const std::string& queries) {
+    return input_error_of([&] { world_from(R"({"obstacles": [], "robot": {)" + body + R"(, "car": )" + car + "}, " + queries + "}"); });
+  };
+  const std::string poses = R"("start": [0, 0, 0], "goal": [5, 5, 90])";
+  EXPECT_EQ(car_world(R"({"turning_radius": 0})", poses), "test.json: robot.car.turning_radius: 0: expected a positive number");
+  EXPECT_EQ(car_world(R"({"turning_radius": -2})", poses), "test.json: robot.car.turning_radius: -2: expected a positive number");
+  EXPECT_EQ(car_world(R"({"turning_radius": "fast"})", poses).rfind("test.json: robot.car.turning_radius: ", 0), 0u);
+  EXPECT_EQ(car_world(R"({"turning_radius": true})", poses), "test.json: robot.car.turning_radius: not a number: true");
+  EXPECT_EQ(car_world(R"({"reverse": true})", poses), "test.json: robot.car: missing field \"turning_radius\"");
+  EXPECT_EQ(car_world(R"({"turning_radius": 1, "reverse": "yes"})", poses), "test.json: robot.car.reverse: expected true or false, got \"yes\"");
+  EXPECT_EQ(car_world("[1]", poses).rfind("test.json: robot.car: expected {", 0), 0u);
+  EXPECT_EQ(car_world(R"({"turning_radius": 1})", R"("start": [0, 0], "goal": [5, 5, 90])"),
+            "test.json: start: a car's pose is [x, y, theta] (theta in degrees), got [0,0]");
+  EXPECT_EQ(car_world(R"({"turning_radius": 1})", R"("queries": [{"start": [0, 0, 0], "goal": [5, 5]}])"),
+            "test.json: queries[0].goal: a car's pose is [x, y, theta] (theta in degrees), got [5,5]");
+  // An empty or self-intersecting body is refused as every robot's is.
+  EXPECT_NE(input_error_of([] { world_from(R"({"obstacles": [], "robot": {"parts": [], "car": {"turning_radius": 1}}})"); })
+                .find("robot.parts: empty"),
+            std::string::npos);
+  EXPECT_NE(input_error_of([] {
+              world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0], [2, 2], [2, 0], [0, 2]]], "car": {"turning_radius": 1}}})");
+            }).find("robot.parts[0]: self-intersecting"),
+            std::string::npos);
+}
