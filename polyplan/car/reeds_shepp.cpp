@@ -54,18 +54,6 @@ Word word(Letters letters, std::initializer_list<double> lengths) {
   return w;
 }
 
-// The same word with left and right swapped (the reflection).
-Letters reflected(Letters letters) {
-  static const std::array<std::pair<const char*, const char*>, 9> pairs{{{"LSL", "RSR"}, {"LSR", "RSL"}, {"LRL", "RLR"},
-                                                                         {"LRLR", "RLRL"}, {"LRSL", "RLSR"}, {"LSRL", "RSLR"},
-                                                                         {"LRSR", "RLSL"}, {"RSRL", "LSLR"}, {"LRSLR", "RLSRL"}}};
-  for (const auto& [a, b] : pairs) {
-    if (std::string_view(a) == letters) return b;
-    if (std::string_view(b) == letters) return a;
-  }
-  return letters;
-}
-
 // ---- The base formulas: true when the word joins the origin (heading 0) to (x, y, phi). ----
 
 // 8.1: L+ S+ L+
@@ -165,20 +153,21 @@ bool lp_rm_slm_rp(double x, double y, double phi, double& t, double& u, double& 
 using Formula = bool (*)(double, double, double, double&, double&, double&);
 
 // A base formula under the four symmetries; `make` turns its (t, u, v) and the symmetry's sign
-// (-1: time-flipped) into the word, `letters` for the goal as given, reflected for the mirror.
+// (-1: time-flipped) into the word: `letters` for the goal as given, `mirrored` (left and right
+// swapped) for the reflection.
 template <class Make>
-void symmetric(std::vector<Word>& out, Formula formula, Letters letters, double x, double y, double phi, Make make) {
+void symmetric(std::vector<Word>& out, Formula formula, Letters letters, Letters mirrored, double x, double y, double phi, Make make) {
   double t, u, v;
   if (formula(x, y, phi, t, u, v)) out.push_back(make(letters, 1, t, u, v));
   if (formula(-x, y, -phi, t, u, v)) out.push_back(make(letters, -1, t, u, v));
-  if (formula(x, -y, -phi, t, u, v)) out.push_back(make(reflected(letters), 1, t, u, v));
-  if (formula(-x, -y, phi, t, u, v)) out.push_back(make(reflected(letters), -1, t, u, v));
+  if (formula(x, -y, -phi, t, u, v)) out.push_back(make(mirrored, 1, t, u, v));
+  if (formula(-x, -y, phi, t, u, v)) out.push_back(make(mirrored, -1, t, u, v));
 }
 
 void csc(std::vector<Word>& out, double x, double y, double phi) {
   const auto make = [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * v}); };
-  symmetric(out, lp_sp_lp, "LSL", x, y, phi, make);
-  symmetric(out, lp_sp_rp, "LSR", x, y, phi, make);
+  symmetric(out, lp_sp_lp, "LSL", "RSR", x, y, phi, make);
+  symmetric(out, lp_sp_rp, "LSR", "RSL", x, y, phi, make);
 }
 
 // The goal's "backwards" twin: the start seen from the goal, for the words read in reverse.
@@ -188,32 +177,32 @@ void backwards(double x, double y, double phi, double& xb, double& yb) {
 }
 
 void ccc(std::vector<Word>& out, double x, double y, double phi) {
-  symmetric(out, lp_rm_l, "LRL", x, y, phi, [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * v}); });
+  symmetric(out, lp_rm_l, "LRL", "RLR", x, y, phi, [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * v}); });
   double xb, yb;
   backwards(x, y, phi, xb, yb);
-  symmetric(out, lp_rm_l, "LRL", xb, yb, phi, [](Letters l, double s, double t, double u, double v) { return word(l, {s * v, s * u, s * t}); });
+  symmetric(out, lp_rm_l, "LRL", "RLR", xb, yb, phi, [](Letters l, double s, double t, double u, double v) { return word(l, {s * v, s * u, s * t}); });
 }
 
 void cccc(std::vector<Word>& out, double x, double y, double phi) {
-  symmetric(out, lp_rup_lum_rm, "LRLR", x, y, phi,
+  symmetric(out, lp_rup_lum_rm, "LRLR", "RLRL", x, y, phi,
             [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, -s * u, s * v}); });
-  symmetric(out, lp_rum_lum_rp, "LRLR", x, y, phi,
+  symmetric(out, lp_rum_lum_rp, "LRLR", "RLRL", x, y, phi,
             [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * u, s * v}); });
 }
 
 void ccsc(std::vector<Word>& out, double x, double y, double phi) {
   const auto forward = [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, -s * pi / 2, s * u, s * v}); };
-  symmetric(out, lp_rm_sm_lm, "LRSL", x, y, phi, forward);
-  symmetric(out, lp_rm_sm_rm, "LRSR", x, y, phi, forward);
+  symmetric(out, lp_rm_sm_lm, "LRSL", "RLSR", x, y, phi, forward);
+  symmetric(out, lp_rm_sm_rm, "LRSR", "RLSL", x, y, phi, forward);
   double xb, yb;
   backwards(x, y, phi, xb, yb);
   const auto reverse = [](Letters l, double s, double t, double u, double v) { return word(l, {s * v, s * u, -s * pi / 2, s * t}); };
-  symmetric(out, lp_rm_sm_lm, "LSRL", xb, yb, phi, reverse);
-  symmetric(out, lp_rm_sm_rm, "RSRL", xb, yb, phi, reverse);
+  symmetric(out, lp_rm_sm_lm, "LSRL", "RSLR", xb, yb, phi, reverse);
+  symmetric(out, lp_rm_sm_rm, "RSRL", "LSLR", xb, yb, phi, reverse);
 }
 
 void ccscc(std::vector<Word>& out, double x, double y, double phi) {
-  symmetric(out, lp_rm_slm_rp, "LRSLR", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+  symmetric(out, lp_rm_slm_rp, "LRSLR", "RLSRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
     return word(l, {s * t, -s * pi / 2, s * u, -s * pi / 2, s * v});
   });
 }

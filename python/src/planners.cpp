@@ -37,12 +37,13 @@ struct PythonSpace<TranslatingRobot> {
   static const CSpace& problem(WorldHandle& world) { return world.cspace(); }
   static const std::vector<Query>& queries(const WorldHandle& world) { return world.world().queries; }
   static Query query(py::handle start, py::handle goal, const WorldHandle&) {
-    Query q{pose_of(start, "start").first, pose_of(goal, "goal").first, "start/goal"};
-    for (const auto& [what, value] : {std::pair{"start", start}, std::pair{"goal", goal}})
-      if (turned(pose_of(value, what).second))
+    const auto [from, from_theta] = pose_of(start, "start");
+    const auto [to, to_theta] = pose_of(goal, "goal");
+    for (const auto& [what, theta] : {std::pair{"start", from_theta}, std::pair{"goal", to_theta}})
+      if (turned(theta))
         throw InputError(std::string(what) + ": an orientation other than 0 degrees; a translating planner moves the robot as "
                          "its file draws it: use planner=\"rotation\"");
-    return q;
+    return Query{from, to, "start/goal"};
   }
   static void require_plannable(WorldHandle& world, const std::string& planner) {
     require_plannable_queries(world.world(), &world.cspace(), planner);
