@@ -1,11 +1,13 @@
 // polyplan plan WORLD.json [--planner NAME] [--option NAME=VALUE]... [--NAME VALUE]...
 //                         [--json FILE|-] [--svg OUT.svg]
 // The world's queries answered by one planner, built once: a translating robot's planner
-// (planners<TranslatingRobot>) or a rotating robot's (planners<RotatingRobot>).
+// (planners<TranslatingRobot>), a rotating robot's (planners<RotatingRobot>) or, when the world's
+// robot is a car, a car's (planners<SteeredCar>; hybrid-astar unless --planner says otherwise).
 #include "cli/command.hpp"
 #include "cli/planner_choice.hpp"
 #include "cli/report_output.hpp"
 
+#include <polyplan/draw/car_svg.hpp>
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
@@ -24,7 +26,7 @@ struct PlanCommand {
   std::string world;
   std::string json;
   std::string svg;
-  std::unique_ptr<PlannerChoice<TranslatingRobot, RotatingRobot>> planner;
+  std::unique_ptr<PlannerChoice<TranslatingRobot, RotatingRobot, SteeredCar>> planner;
 };
 
 // The queries answered, printed and drawn; `problem` is what the space's planners are built from.
@@ -42,7 +44,7 @@ int answer(const PlanCommand& command, const World& world, const typename Space:
     write_json(one_or_array(std::move(answers)), command.json);
   }
   if (command.json != "-") {
-    const std::string steps = std::is_same_v<Space, RotatingRobot> ? "motion" : "segment";
+    const std::string steps = std::is_same_v<Space, RotatingRobot> ? "motion" : "segment";  // a car's: arcs and straights
     for (std::size_t i = 0; i < reports.size(); ++i) std::cout << report_line(world.queries[i].name, reports[i], "", steps) << '\n';
     if (!command.svg.empty()) std::cout << "picture: " << command.svg << '\n';
   }
@@ -50,10 +52,15 @@ int answer(const PlanCommand& command, const World& world, const typename Space:
 }
 
 int run_plan(const PlanCommand& command) {
-  command.planner->values();  // a bad planner or option is reported before any work
   std::vector<std::string> warnings;
   const World world = read_world(command.world, &warnings);
   print_warnings(warnings);
+  if (world.robot.car) command.planner->default_to("hybrid-astar");
+  command.planner->values();  // a bad planner or option is reported before any planning
+  if (command.planner->chose<SteeredCar>()) {
+    require_plannable_queries(world, nullptr, command.planner->name());
+    return answer<SteeredCar>(command, world, world);
+  }
   if (command.planner->chose<RotatingRobot>()) {
     require_plannable_queries(world, nullptr, command.planner->name());
     return answer<RotatingRobot>(command, world, world);
@@ -71,7 +78,7 @@ void add_plan_command(CLI::App& app, Action& run) {
   plan->add_option("world", command->world, "World file (JSON)")->required();
   plan->add_option("--json", command->json, "Write the plan(s) as JSON to this file ('-' for standard output)");
   plan->add_option("--svg", command->svg, "Draw world, C-obstacles, the planner's roadmap or cells, and the path(s)");
-  command->planner = std::make_unique<PlannerChoice<TranslatingRobot, RotatingRobot>>(
+  command->planner = std::make_unique<PlannerChoice<TranslatingRobot, RotatingRobot, SteeredCar>>(
       *plan, "--planner", std::vector<std::string>{"--roadmap"}, "visibility",
       std::set<std::string>{"--planner", "--roadmap", "--option", "--json", "--svg", "--help"});
   plan->callback([command, &run] { run = [command] { return run_plan(*command); }; });

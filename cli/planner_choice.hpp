@@ -29,7 +29,8 @@ class PlannerChoice {
       : flag_(flag), name_(std::move(default_planner)) {
     std::string flags = flag;
     for (const auto& a : aliases) flags += "," + a;
-    command.add_option(flags, name_, "planner: " + names() + " (polyplan planners lists them)")->capture_default_str();
+    chosen_ = command.add_option(flags, name_, "planner: " + names() + " (polyplan planners lists them)");
+    chosen_->capture_default_str();
     command.add_option("--option", assignments_, "set a planner option: NAME=VALUE (repeatable)")->allow_extra_args(false);
 
     // One typed flag per option name, whichever planners have it.
@@ -68,6 +69,12 @@ class PlannerChoice {
     CLI::Option* flag = command.add_flag(alias, *given, help);
     aliases_.push_back({option, value, given, alias});
     return flag;
+  }
+
+  // Unless the command line names a planner, `name` instead of the default (a car world's own
+  // default planner).
+  void default_to(std::string name) {
+    if (chosen_->count() == 0) name_ = std::move(name);
   }
 
   // Whether the chosen planner plans in `Space`.
@@ -154,6 +161,7 @@ class PlannerChoice {
 
   std::string flag_;
   std::string name_;
+  CLI::Option* chosen_ = nullptr;
   std::vector<std::string> assignments_;
   std::vector<Typed> typed_;
   std::vector<Alias> aliases_;

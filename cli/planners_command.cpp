@@ -42,6 +42,7 @@ void print_space(const nlohmann::json& space) {
 int run_planners(const PlannersCommand& command) {
   const nlohmann::json spaces = nlohmann::json::array({space_json<TranslatingRobot>("polyplan plan WORLD.json --planner NAME"),
                                                        space_json<RotatingRobot>("polyplan plan WORLD.json --planner NAME"),
+                                                       space_json<SteeredCar>("polyplan plan CAR_WORLD.json --planner NAME"),
                                                        space_json<PlanarArm>("polyplan arm ARM.json --method NAME")});
   if (!command.json.empty()) write_json(spaces, command.json);
   if (command.json != "-") {

@@ -1,6 +1,7 @@
 #include "cli/report_output.hpp"
 
 #include <polyplan/geometry/arm_problem.hpp>
+#include <polyplan/geometry/car_pose.hpp>
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/rotation.hpp>
 
@@ -23,6 +24,7 @@ std::string report_line(const std::string& query, const PlanReport<Configuration
   if (facts.contains("roadmap.vertices") && facts.contains("roadmap.edges"))
     line += ", roadmap " + std::to_string(facts.count("roadmap.vertices")) + " vertices " +
             std::to_string(facts.count("roadmap.edges")) + " edges";
+  if (facts.contains("gear_changes")) line += ", " + std::to_string(facts.count("gear_changes")) + " gear change(s)";
   if (facts.contains("note")) line += "; " + facts.text("note");
   return line;
 }
@@ -30,6 +32,7 @@ std::string report_line(const std::string& query, const PlanReport<Configuration
 template std::string report_line(const std::string&, const PlanReport<ExactPoint>&, const std::string&, const std::string&);
 template std::string report_line(const std::string&, const PlanReport<JointAngles>&, const std::string&, const std::string&);
 template std::string report_line(const std::string&, const PlanReport<Pose>&, const std::string&, const std::string&);
+template std::string report_line(const std::string&, const PlanReport<CarState>&, const std::string&, const std::string&);
 
 nlohmann::json one_or_array(nlohmann::json answers) { return answers.size() == 1 ? answers[0] : answers; }
 

@@ -22,38 +22,6 @@ void append_segment(SteeringPath& path, Steer steer, int gear, double length, do
   path.segments.push_back({steer, gear, length});
 }
 
-namespace {
-
-// One segment's first `distance` driven from `pose`: a straight moves along the heading; an arc
-// turns about the centre `radius` to the left (or right) of the car.
-CarPose drive(const CarPose& pose, const SteeringSegment& segment, double radius, double distance) {
-  const double signed_distance = segment.gear * distance;
-  CarPose next = pose;
-  switch (segment.steer) {
-    case Steer::straight:
-      next.x += signed_distance * std::cos(pose.theta);
-      next.y += signed_distance * std::sin(pose.theta);
-      break;
-    case Steer::left: {
-      const double turn = signed_distance / radius;
-      next.x += radius * (std::sin(pose.theta + turn) - std::sin(pose.theta));
-      next.y += radius * (std::cos(pose.theta) - std::cos(pose.theta + turn));
-      next.theta += turn;
-      break;
-    }
-    case Steer::right: {
-      const double turn = signed_distance / radius;
-      next.x += radius * (std::sin(pose.theta) - std::sin(pose.theta - turn));
-      next.y += radius * (std::cos(pose.theta - turn) - std::cos(pose.theta));
-      next.theta -= turn;
-      break;
-    }
-  }
-  return next;
-}
-
-}  // namespace
-
 CarPose pose_along(const SteeringPath& path, const CarPose& start, double radius, double s) {
   CarPose pose = start;
   double left = std::max(0.0, s);

@@ -3,23 +3,12 @@
 // in reverse — the curves of Dubins (forward only) and of Reeds and Shepp (either gear), and the
 // poses along them. The reference point is the rear-axle centre; the car turns about a centre
 // `radius` to its left or right.
+#include <polyplan/geometry/car_pose.hpp>
+
 #include <string>
 #include <vector>
 
 namespace polyplan {
-
-// A car's pose: the reference point and the heading, radians counter-clockwise from +x.
-struct CarPose {
-  double x = 0, y = 0, theta = 0;
-};
-
-enum class Steer : char { left = 'L', straight = 'S', right = 'R' };
-
-struct SteeringSegment {
-  Steer steer = Steer::straight;
-  int gear = 1;        // +1 forward, -1 reverse
-  double length = 0;   // distance driven, >= 0; an arc turns length / radius radians
-};
 
 struct SteeringPath {
   // The segments' letters: "LSR" for a Dubins path; "L+R-L+" for a Reeds–Shepp path (each

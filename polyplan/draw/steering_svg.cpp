@@ -16,15 +16,6 @@ std::vector<svg::Point2> circle(double cx, double cy, double r) {
   return ring;
 }
 
-// The pose as an arrow one radius long along the heading.
-std::vector<svg::Point2> arrow(const CarPose& p, double length) {
-  const double c = std::cos(p.theta), s = std::sin(p.theta);
-  const svg::Point2 tip{p.x + length * c, p.y + length * s};
-  const double head = length / 4;
-  return {{p.x, p.y}, tip, {tip.x - head * (c - s / 2), tip.y - head * (s + c / 2)}, tip,
-          {tip.x - head * (c + s / 2), tip.y - head * (s - c / 2)}};
-}
-
 svg::Box2 view_of(const SteeringPath& path, const CarPose& from, const CarPose& to, double radius) {
   svg::BoxAround box;
   for (const CarPose& p : {from, to}) {
@@ -38,27 +29,39 @@ svg::Box2 view_of(const SteeringPath& path, const CarPose& from, const CarPose& 
   return box.box_or({0, 0, 1, 1});
 }
 
-// Each segment sampled finely enough to look round: at most 2 degrees of turn per step.
 void draw_segments(svg::Drawing& drawing, const SteeringPath& path, const CarPose& from, double radius) {
-  double driven = 0;
+  CarPose at = from;
   bool forward_shown = false, reverse_shown = false;
   for (const SteeringSegment& s : path.segments) {
-    const int steps = s.steer == Steer::straight ? 1 : std::max(2, static_cast<int>(std::ceil(s.length / radius / (M_PI / 90))));
-    std::vector<svg::Point2> track;
-    for (int i = 0; i <= steps; ++i) {
-      const CarPose q = pose_along(path, from, radius, driven + s.length * i / steps);
-      track.push_back({q.x, q.y});
-    }
     const svg::Style style = line(s.gear > 0 ? theme::car_forward : theme::car_reverse, 2.5);
-    drawing.polyline(track, style);
+    drawing.polyline(segment_track(at, s, radius), style);
     bool& shown = s.gear > 0 ? forward_shown : reverse_shown;
     if (!shown) drawing.legend(s.gear > 0 ? "forward" : "reverse", style, svg::Swatch::line);
     shown = true;
-    driven += s.length;
+    at = drive(at, s, radius, s.length);
   }
 }
 
 }  // namespace
+
+std::vector<svg::Point2> pose_arrow(const CarPose& p, double length) {
+  const double c = std::cos(p.theta), s = std::sin(p.theta);
+  const svg::Point2 tip{p.x + length * c, p.y + length * s};
+  const double head = length / 4;
+  return {{p.x, p.y}, tip, {tip.x - head * (c - s / 2), tip.y - head * (s + c / 2)}, tip,
+          {tip.x - head * (c + s / 2), tip.y - head * (s - c / 2)}};
+}
+
+std::vector<svg::Point2> segment_track(const CarPose& from, const SteeringSegment& segment, double radius) {
+  const int steps =
+      segment.steer == Steer::straight ? 1 : std::max(2, static_cast<int>(std::ceil(segment.length / radius / (M_PI / 90))));
+  std::vector<svg::Point2> track;
+  for (int i = 0; i <= steps; ++i) {
+    const CarPose q = drive(from, segment, radius, segment.length * i / steps);
+    track.push_back({q.x, q.y});
+  }
+  return track;
+}
 
 svg::Drawing draw_steering(const SteeringPath& path, const CarPose& from, const CarPose& to, double radius,
                            const std::string& title) {
@@ -69,9 +72,9 @@ svg::Drawing draw_steering(const SteeringPath& path, const CarPose& from, const 
       drawing.polyline(circle(p.x - side * radius * std::sin(p.theta), p.y + side * radius * std::cos(p.theta), radius), circles);
   drawing.legend("turning circles", circles, svg::Swatch::line);
   // The poses under the path, so that a short first segment shows over the start's arrow.
-  drawing.polyline(arrow(from, radius), line(theme::start, 2.5));
+  drawing.polyline(pose_arrow(from, radius), line(theme::start, 2.5));
   drawing.legend("start", line(theme::start, 2.5), svg::Swatch::line);
-  drawing.polyline(arrow(to, radius), line(theme::goal, 2.5));
+  drawing.polyline(pose_arrow(to, radius), line(theme::goal, 2.5));
   drawing.legend("goal", line(theme::goal, 2.5), svg::Swatch::line);
   draw_segments(drawing, path, from, radius);
   const svg::Box2 v = drawing.view();

@@ -6,11 +6,19 @@
 #include <polyplan/draw/svg.hpp>
 
 #include <string>
+#include <vector>
 
 namespace polyplan {
 
 // `title` is written at the top (e.g. "reeds-shepp L+S+R-: 12.3").
 svg::Drawing draw_steering(const SteeringPath& path, const CarPose& from, const CarPose& to, double radius,
                            const std::string& title);
+
+// The pieces, shared with the car's plan pictures (draw/car_svg.hpp):
+// a pose as an arrow `length` long along its heading;
+std::vector<svg::Point2> pose_arrow(const CarPose& pose, double length);
+// the reference point's track along one segment driven from `from`, fine enough to look round
+// (at most 2 degrees of turn per step).
+std::vector<svg::Point2> segment_track(const CarPose& from, const SteeringSegment& segment, double radius);
 
 }  // namespace polyplan

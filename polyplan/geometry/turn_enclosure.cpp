@@ -45,6 +45,13 @@ std::vector<Polygon> convex_pieces(const Ring& part) {
 
 }  // namespace
 
+std::vector<Ring> convex_pieces(const Robot& robot) {
+  std::vector<Ring> out;
+  for (const Ring& part : robot.parts)
+    for (const Polygon& piece : convex_pieces(part)) out.push_back(detail::to_ring(piece.vertices()));
+  return out;
+}
+
 Robot turn_enclosure(const Robot& robot, const Rotation& from, const Rotation& to) {
   if (from == to) return rotated(robot, from);
   if (from.sin == -to.sin && from.cos == -to.cos)

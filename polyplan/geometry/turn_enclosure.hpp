@@ -16,4 +16,9 @@ namespace polyplan {
 // for a half turn (180 degrees: the short way is not defined).
 Robot turn_enclosure(const Robot& robot, const Rotation& from, const Rotation& to);
 
+// The robot's parts split into convex pieces (counter-clockwise, exact): a convex part is one
+// piece. What enclosures of a moving robot are built from: the sweep of a convex piece lies in the
+// hull of its vertices' sweeps.
+std::vector<Ring> convex_pieces(const Robot& robot);
+
 }  // namespace polyplan

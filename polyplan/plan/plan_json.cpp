@@ -52,6 +52,21 @@ void add_path(json& out, const std::vector<Pose>& path) {
   out["path_exact"] = std::move(exact);
 }
 
+json pose_json(const CarPose& pose) { return json::array({pose.x, pose.y, pose.theta * 57.295779513082320876798}); }
+
+void add_path(json& out, const std::vector<CarState>& path) {
+  json poses = json::array(), segments = json::array();
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    poses.push_back(pose_json(path[i].pose));
+    if (i == 0) continue;
+    const SteeringSegment& s = path[i].arrival;
+    segments.push_back({{"steer", std::string(1, static_cast<char>(s.steer))}, {"gear", s.gear}, {"length", s.length},
+                        {"start", pose_json(path[i - 1].pose)}});
+  }
+  out["path"] = std::move(poses);
+  out["segments"] = std::move(segments);
+}
+
 template <class Configuration>
 json report_json(const PlanReport<Configuration>& report, const std::string& query) {
   json out = json::object();
@@ -82,5 +97,6 @@ json facts_json(const Facts& facts) {
 json plan_json(const PlanReport<ExactPoint>& report, const std::string& query) { return report_json(report, query); }
 json plan_json(const PlanReport<JointAngles>& report, const std::string& query) { return report_json(report, query); }
 json plan_json(const PlanReport<Pose>& report, const std::string& query) { return report_json(report, query); }
+json plan_json(const PlanReport<CarState>& report, const std::string& query) { return report_json(report, query); }
 
 }  // namespace polyplan

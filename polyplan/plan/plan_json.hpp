@@ -10,6 +10,7 @@
 // `length` is null and `why_not` says why when nothing was found. Every fact of the report is a
 // key; a dotted name nests ("roadmap.vertices" is roadmap → vertices).
 #include <polyplan/geometry/arm_problem.hpp>
+#include <polyplan/geometry/car_pose.hpp>
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/plan/plan_report.hpp>
@@ -27,6 +28,10 @@ nlohmann::json plan_json(const PlanReport<JointAngles>& report, const std::strin
 // path: consecutive entries differ by the turn between them), "path_exact":
 // [["x", "y", "sin", "cos"], ...] (the exact rotation).
 nlohmann::json plan_json(const PlanReport<Pose>& report, const std::string& query = {});
+// A car's: "path": [[x, y, theta], ...] (theta in degrees, as the car turned: not wrapped), the
+// poses at the segments' joints, and "segments": [{"steer": "L"|"S"|"R", "gear": 1|-1, "length",
+// "start": [x, y, theta]}, ...] (as `polyplan steer` prints them, each with the pose it starts at).
+nlohmann::json plan_json(const PlanReport<CarState>& report, const std::string& query = {});
 
 // The facts alone, nested as in plan_json ({"roadmap": {"vertices": 120, ...}, ...}).
 nlohmann::json facts_json(const Facts& facts);

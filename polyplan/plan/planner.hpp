@@ -8,6 +8,7 @@
 // A configuration space is a small traits struct: what a configuration is, what a planner is
 // built from, and what a query is. Planners of one space share everything above them.
 #include <polyplan/geometry/arm_problem.hpp>
+#include <polyplan/geometry/car_pose.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/geometry/world.hpp>
@@ -45,6 +46,18 @@ struct PlanarArm {
   using Problem = ArmProblem;
   using Query = ArmQuery;
   static constexpr std::string_view description = "a planar n-link arm";
+};
+
+// A car among polygon obstacles (the world's robot has `car`: its turning radius, and whether it
+// may reverse): configurations are poses (doubles: the reference point and the heading) with the
+// segment that drove there (geometry/car_pose.hpp); a path is one segment from each entry to the
+// next, an arc at full lock or a straight, certified free (car/car_collision.hpp). The problem is
+// the world itself. `polyplan plan` answers these when the world's robot is a car.
+struct SteeredCar {
+  using Configuration = CarState;
+  using Problem = World;
+  using Query = polyplan::Query;
+  static constexpr std::string_view description = "a car steering among polygon obstacles";
 };
 
 // What a query asks beyond its start and goal.

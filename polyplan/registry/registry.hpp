@@ -4,7 +4,7 @@
 // writer, the pictures and the conformance test read these lists and nothing planner-specific,
 // so a new planner is its header, its source and one registration line in the list of its space
 // (registry/polygon_planners.cpp for TranslatingRobot and RotatingRobot, registry/arm_planners.cpp
-// for PlanarArm). These files are the only ones that name every planner.
+// for PlanarArm, registry/car_planners.cpp for SteeredCar). These files are the only ones that name every planner.
 #include <polyplan/plan/planner_entry.hpp>
 
 #include <initializer_list>
@@ -56,5 +56,7 @@ template <>
 const PlannerRegistry<RotatingRobot>& planners<RotatingRobot>();
 template <>
 const PlannerRegistry<PlanarArm>& planners<PlanarArm>();
+template <>
+const PlannerRegistry<SteeredCar>& planners<SteeredCar>();
 
 }  // namespace polyplan

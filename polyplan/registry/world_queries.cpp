@@ -1,5 +1,6 @@
 #include <polyplan/registry/world_queries.hpp>
 
+#include <polyplan/car/car_planner.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/rotation/rotation_layers.hpp>
@@ -10,14 +11,29 @@
 namespace polyplan {
 
 void require_planner_for_robot(const World& world, std::string_view planner) {
-  if (world.robot.car)
+  const bool car_planner = planners<SteeredCar>().find(planner) != nullptr;
+  if (world.robot.car && !car_planner)
     throw InputError(world.source + ": robot.car: the robot steers like a car, and the planner " + std::string(planner) +
-                     " neither steers nor keeps to a turning radius; this build has no car planner yet");
+                     " neither steers nor keeps to a turning radius: use a car planner (" + planners<SteeredCar>().names() + ")");
+  if (!world.robot.car && car_planner)
+    throw InputError(world.source + ": robot: the planner " + std::string(planner) +
+                     " plans for a car, and this robot has no \"car\": {\"turning_radius\": R, \"reverse\": true|false}");
+}
+
+// A car's starts and goals: its body inside the bounds and clear of every obstacle.
+void require_free_car_poses(const World& world) {
+  const CarCollision collision(world);
+  for (const Query& q : world.queries)
+    for (const auto& [what, pose] : {std::pair{"start", start_pose(q)}, std::pair{"goal", goal_pose(q)}})
+      if (const auto hit = collision.pose_blocked_by(pose))
+        throw InputError(world.source + ": " + q.name + ": the " + what + " " + to_string(pose) + " is not free: the car's body " +
+                         (*hit == "the bounds" ? "leaves the bounds" : "meets " + *hit));
 }
 
 void require_plannable_queries(const World& world, const CSpace* cspace, std::string_view planner) {
   require_planner_for_robot(world, planner);
   if (world.queries.empty()) throw InputError(world.source + ": world: no start/goal and no queries to plan");
+  if (world.robot.car) return require_free_car_poses(world);
   // A rotating robot's planner builds the C-space of each orientation itself.
   if (planners<RotatingRobot>().find(planner)) return require_free_poses(world);
   if (turns_the_robot(world))

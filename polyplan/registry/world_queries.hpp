@@ -11,14 +11,15 @@
 namespace polyplan {
 
 // InputError naming the world's file and the query when the world has no query, or a start or
-// goal is not free: for `planner` (a name of planners<TranslatingRobot>() or
-// planners<RotatingRobot>()) at the query's orientation; a translating planner also refuses an
+// goal is not free: for `planner` (a name of planners<TranslatingRobot>(), planners<RotatingRobot>()
+// or planners<SteeredCar>(): a car's body at its poses) at the query's orientation; a translating planner also refuses an
 // orientation other than 0 degrees. `cspace` is the world's C-space, which a translating planner's
 // check reads (a rotating planner's builds those of its orientations: null will do).
 void require_plannable_queries(const World& world, const CSpace* cspace, std::string_view planner);
 
 // InputError when `planner` cannot plan for the world's robot at all, asked or not: a car's
-// (robot.car) paths must keep to its turning radius, which no translating or rotating planner does.
+// (robot.car) paths must keep to its turning radius, which no translating or rotating planner does,
+// and a car planner needs the car's turning radius.
 void require_planner_for_robot(const World& world, std::string_view planner);
 
 }  // namespace polyplan

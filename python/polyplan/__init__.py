@@ -127,8 +127,8 @@ def planner(name: str, problem, **options) -> Planner:
 def plan(problem, planner: Optional[str] = None, *, record: bool = True, **options) -> List[Plan]:
     """Every query of `problem` (a World or an Arm) answered by one planner: a list of Plan.
 
-    planner: a name from polyplan.planners(); None: "visibility" for a World, "grid" for an Arm
-    (the program's defaults). options: the planner's options as keyword arguments, e.g.
+    planner: a name from polyplan.planners(); None: "visibility" for a World, "hybrid-astar" for a
+    World whose robot is a car, "grid" for an Arm (the program's defaults). options: the planner's options as keyword arguments, e.g.
     polyplan.plan(w, planner="rrtconnect", seed=3) or polyplan.plan(a, planner="grid",
     resolution=1). record: keep each plan's roadmap, tree, expanded configurations and cells for
     polyplan.plot and polyplan.svg.
@@ -137,7 +137,7 @@ def plan(problem, planner: Optional[str] = None, *, record: bool = True, **optio
     raises InputError. To plan one query of your own, build the planner once with
     polyplan.planner(...) and call its plan(start=..., goal=...)."""
     if planner is None:
-        planner = "grid" if isinstance(problem, Arm) else "visibility"
+        planner = "grid" if isinstance(problem, Arm) else "hybrid-astar" if getattr(problem, "car", None) else "visibility"
     return _polyplan._planner(planner, problem, options).plan_all(record)
 
 

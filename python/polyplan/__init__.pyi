@@ -1,7 +1,7 @@
 # Type stub of polyplan (written by hand; python/tests/test_stub.py fails when it and the module
 # disagree on a name, a parameter or a property).
 from fractions import Fraction
-from typing import Any, List, NamedTuple, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, List, NamedTuple, Optional, Sequence, Tuple, Union
 
 import numpy as np
 import numpy.typing as npt
@@ -59,6 +59,8 @@ class World:
     @property
     def robot(self) -> List[np.ndarray]: ...
     @property
+    def car(self) -> Optional[Dict[str, Any]]: ...
+    @property
     def queries(self) -> List[Tuple[str, tuple, tuple]]: ...
 
 class Arm:
@@ -103,6 +105,8 @@ class Plan:
     def path(self) -> np.ndarray: ...
     @property
     def path_exact(self) -> Optional[List[Tuple[Fraction, ...]]]: ...
+    @property
+    def segments(self) -> Optional[List[Dict[str, Any]]]: ...
     @property
     def certified(self) -> bool: ...
     @property

@@ -70,6 +70,22 @@ struct PythonSpace<RotatingRobot> {
 };
 
 template <>
+struct PythonSpace<SteeredCar> {
+  using Handle = WorldHandle;
+  static const World& problem(WorldHandle& world) { return world.world(); }
+  static const std::vector<Query>& queries(const WorldHandle& world) { return world.world().queries; }
+  static Query query(py::handle start, py::handle goal, const WorldHandle& world) {
+    Query q = PythonSpace<RotatingRobot>::query(start, goal, world);
+    if (!q.start_theta || !q.goal_theta) throw InputError(std::string(q.start_theta ? "goal" : "start") + ": a car's pose is (x, y, theta), theta in degrees");
+    return q;
+  }
+  static void require_plannable(WorldHandle& world, const std::string& planner) {
+    require_plannable_queries(world.world(), nullptr, planner);
+  }
+  static void require_fits(const WorldHandle& world, const std::string& planner) { require_planner_for_robot(world.world(), planner); }
+};
+
+template <>
 struct PythonSpace<PlanarArm> {
   using Handle = ArmHandle;
   static const ArmProblem& problem(ArmHandle& arm) { return arm.problem(); }
@@ -189,12 +205,14 @@ std::unique_ptr<PlannerHandle> make_if_named(const std::string& name, const std:
 
 // An unknown name: one of the other kind of problem's planners, or none at all.
 std::unique_ptr<PlannerHandle> unknown(const std::string& name, bool arm) {
-  const bool world_planner = planners<TranslatingRobot>().find(name) || planners<RotatingRobot>().find(name);
+  const bool world_planner =
+      planners<TranslatingRobot>().find(name) || planners<RotatingRobot>().find(name) || planners<SteeredCar>().find(name);
   const bool arm_planner = planners<PlanarArm>().find(name) != nullptr;
   if (arm && world_planner) throw InputError("planner " + name + " plans in a World (polyplan.read_world), not in an Arm");
   if (!arm && arm_planner) throw InputError("planner " + name + " plans for an Arm (polyplan.read_arm), not in a World");
   const std::string names =
-      arm ? planners<PlanarArm>().names() : planners<TranslatingRobot>().names() + ", " + planners<RotatingRobot>().names();
+      arm ? planners<PlanarArm>().names()
+          : planners<TranslatingRobot>().names() + ", " + planners<RotatingRobot>().names() + ", " + planners<SteeredCar>().names();
   throw InputError("unknown planner \"" + name + "\" for a" + (arm ? "n Arm" : " World") + " (" + names + ")");
 }
 
@@ -205,6 +223,7 @@ std::unique_ptr<PlannerHandle> make_planner(const std::string& name, py::handle 
     const auto world = problem.cast<std::shared_ptr<WorldHandle>>();
     if (auto p = make_if_named<TranslatingRobot>(name, world, options)) return p;
     if (auto p = make_if_named<RotatingRobot>(name, world, options)) return p;
+    if (auto p = make_if_named<SteeredCar>(name, world, options)) return p;
     return unknown(name, false);
   }
   if (py::isinstance<ArmHandle>(problem)) {
@@ -261,6 +280,7 @@ or tree, the expanded configurations and the cells for polyplan.plot and polypla
     py::list out;
     list_space<TranslatingRobot>(out);
     list_space<RotatingRobot>(out);
+    list_space<SteeredCar>(out);
     list_space<PlanarArm>(out);
     return out;
   });

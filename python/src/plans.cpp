@@ -5,6 +5,7 @@
 #include "plans.hpp"
 
 #include <polyplan/draw/arm_svg.hpp>
+#include <polyplan/draw/car_svg.hpp>
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/plan/plan_json.hpp>
@@ -19,6 +20,7 @@ namespace {
 std::vector<double> coordinates(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
 std::vector<double> coordinates(const Pose& p) { return {to_double(p.position.x), to_double(p.position.y), p.degrees}; }
 std::vector<double> coordinates(const JointAngles& q) { return q; }
+std::vector<double> coordinates(const CarState& s) { return {s.pose.x, s.pose.y, s.pose.theta * 180 / pi}; }
 
 // Exact coordinates as the JSON's "path_exact" gives them; joint angles are doubles by nature.
 py::object exact(const ExactPoint& p) { return py::make_tuple(fraction(p.x), fraction(p.y)); }
@@ -36,7 +38,7 @@ py::array_t<double> configurations_array(const std::vector<Configuration>& confi
 // Columns of a path array: 2 for points, 3 for poses, the joints for an arm.
 std::size_t columns(const PlanResult& r) {
   if (std::holds_alternative<PlanReport<ExactPoint>>(r.report)) return 2;
-  if (std::holds_alternative<PlanReport<Pose>>(r.report)) return 3;
+  if (std::holds_alternative<PlanReport<Pose>>(r.report) || std::holds_alternative<PlanReport<CarState>>(r.report)) return 3;
   return std::get<std::shared_ptr<ArmHandle>>(r.problem)->problem().arm.joints();
 }
 
@@ -107,13 +109,17 @@ std::string svg_of(py::handle problem, const std::vector<const PlanResult*>& pla
   const auto world = problem.cast<std::shared_ptr<WorldHandle>>();
   std::vector<PlanReport<ExactPoint>> points;
   std::vector<PlanReport<Pose>> poses;
+  std::vector<PlanReport<CarState>> cars;
   for (const PlanResult* p : plans) {
     if (const auto* r = std::get_if<PlanReport<ExactPoint>>(&p->report)) points.push_back(*r);
     else if (const auto* r = std::get_if<PlanReport<Pose>>(&p->report)) poses.push_back(*r);
+    else if (const auto* r = std::get_if<PlanReport<CarState>>(&p->report)) cars.push_back(*r);
     else throw InputError("svg: a plan is an arm's (it was planned in an Arm), not a World's");
   }
-  if (!points.empty() && !poses.empty()) throw InputError("svg: the plans mix a translating planner's and the rotation planner's");
+  if (!points.empty() + !poses.empty() + !cars.empty() > 1)
+    throw InputError("svg: the plans mix planners of different spaces (translating, rotation, car)");
   return locked(world->lock(), [&] {
+    if (!cars.empty() || world->world().robot.car) return draw_plan(world->world(), cars).str();
     return poses.empty() ? draw_plan(world->cspace(), points).str() : draw_plan(world->world(), poses).str();
   });
 }
@@ -143,7 +149,9 @@ the planner's counts and measures, nested as in the JSON.)")
           "path_exact",
           [](const PlanResult& r) {
             return visit(r, [](const auto& p) -> py::object {
-              if constexpr (std::is_same_v<std::decay_t<decltype(p)>, PlanReport<JointAngles>>) return py::none();
+              using Report = std::decay_t<decltype(p)>;
+              if constexpr (std::is_same_v<Report, PlanReport<JointAngles>> || std::is_same_v<Report, PlanReport<CarState>>)
+                return py::none();
               else {
                 py::list out;
                 for (const auto& c : p.path) out.append(exact(c));
@@ -152,7 +160,15 @@ the planner's counts and measures, nested as in the JSON.)")
             });
           },
           "The path exactly: a list of tuples of fractions.Fraction, (x, y) for points, (x, y, sin, cos) for poses (the exact "
-          "rotation); None for an arm (joint angles are doubles).")
+          "rotation); None for an arm or a car (joint angles and a car's poses are doubles).")
+      .def_property_readonly(
+          "segments",
+          [](const PlanResult& r) -> py::object {
+            const nlohmann::json j = json_of(r);
+            return j.contains("segments") ? from_json(j["segments"]) : py::object(py::none());
+          },
+          "A car's path as it drives: a list of dicts {steer: \"L\"|\"S\"|\"R\", gear: 1|-1, length, start: [x, y, theta]}, one per "
+          "segment; None for other robots.")
       .def_property_readonly("certified", [](const PlanResult& r) { return visit(r, [](const auto& p) { return p.certificate.certified; }); },
                              "Whether every configuration along the path was proved free (every found path is).")
       .def_property_readonly(

@@ -3,6 +3,7 @@
 // the planner's names, and the problem it was planned in (kept alive for pictures).
 #include "problems.hpp"
 
+#include <polyplan/geometry/car_pose.hpp>
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/plan/plan_report.hpp>
 
@@ -15,7 +16,7 @@
 
 namespace polyplan::python {
 
-using AnyReport = std::variant<PlanReport<ExactPoint>, PlanReport<Pose>, PlanReport<JointAngles>>;
+using AnyReport = std::variant<PlanReport<ExactPoint>, PlanReport<Pose>, PlanReport<JointAngles>, PlanReport<CarState>>;
 using AnyProblem = std::variant<std::shared_ptr<WorldHandle>, std::shared_ptr<ArmHandle>>;
 
 struct PlanResult {

@@ -118,6 +118,17 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
           },
           "The robot's parts in its own frame, (N, 2) arrays; empty for a point robot.")
       .def_property_readonly(
+          "car",
+          [](const WorldHandle& w) -> py::object {
+            const auto& car = w.world().robot.car;
+            if (!car) return py::none();
+            py::dict out;
+            out["turning_radius"] = car->turning_radius;
+            out["reverse"] = car->reverse;
+            return out;
+          },
+          "When the robot steers like a car: {\"turning_radius\": R, \"reverse\": bool} (the car planners plan for it); else None.")
+      .def_property_readonly(
           "queries",
           [](const WorldHandle& w) {
             py::list out;
@@ -129,6 +140,7 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
         const World& world = w.world();
         return "<polyplan.World " + world.source + ": " + std::to_string(world.obstacles.size()) + " obstacle(s), " +
                (world.robot.is_point() ? std::string("point robot") : std::to_string(world.robot.parts.size()) + "-part robot") +
+               (world.robot.car ? std::string(world.robot.car->reverse ? " (a Reeds–Shepp car)" : " (a Dubins car)") : std::string()) +
                ", " + std::to_string(world.queries.size()) + " query(ies)>";
       });
 
