@@ -55,7 +55,12 @@ int run_plan(const PlanCommand& command) {
   std::vector<std::string> warnings;
   const World world = read_world(command.world, &warnings);
   print_warnings(warnings);
-  if (world.robot.car) command.planner->default_to("hybrid-astar");
+  if (world.robot.car) {
+    command.planner->prefer<SteeredCar>();
+    command.planner->default_to("hybrid-astar");
+  } else {
+    command.planner->prefer<TranslatingRobot>();
+  }
   command.planner->values();  // a bad planner or option is reported before any planning
   if (command.planner->chose<SteeredCar>()) {
     require_plannable_queries(world, nullptr, command.planner->name());

@@ -38,7 +38,8 @@ class PlannerChoice {
     std::set<std::string> planner_names;
     const auto collect = [&](const auto& registry) {
       for (const auto& entry : registry.entries()) {
-        if (!planner_names.insert(entry.name).second) throw std::logic_error("two spaces register a planner " + entry.name);
+        // One planner in several spaces (rrt for polygons and cars) is one source: its options once.
+        if (!planner_names.insert(entry.name).second) continue;
         for (const OptionInfo& option : entry.options) {
           auto& [info, owners] = options[option.name];
           if (owners.empty()) info = option;
@@ -77,9 +78,18 @@ class PlannerChoice {
     if (chosen_->count() == 0) name_ = std::move(name);
   }
 
-  // Whether the chosen planner plans in `Space`.
+  // The space the problem is in (a car world's: SteeredCar): a name registered for several
+  // spaces (rrt) plans there when it is registered there.
+  template <class Space>
+  void prefer() {
+    preferred_ = &space_tag<Space>;
+    preferred_has_ = [](const std::string& name) { return planners<Space>().find(name) != nullptr; };
+  }
+  // Whether the chosen planner plans in `Space`: registered there, and not in the preferred
+  // space instead.
   template <class Space>
   bool chose() const {
+    if (preferred_ && preferred_ != &space_tag<Space> && preferred_has_(name_)) return false;
     return planners<Space>().find(name_) != nullptr;
   }
 
@@ -125,16 +135,25 @@ class PlannerChoice {
   }
 
  private:
+  template <class Space>
+  static constexpr char space_tag = 0;  // its address names the space
+
+  // Every space's planners, each name once.
   static std::string names() {
     std::string all;
-    ((all += (all.empty() ? "" : ", ") + planners<Spaces>().names()), ...);
+    std::set<std::string> named;
+    const auto add = [&](const auto& registry) {
+      for (const auto& entry : registry.entries())
+        if (named.insert(entry.name).second) all += (all.empty() ? "" : ", ") + entry.name;
+    };
+    (add(planners<Spaces>()), ...);
     return all;
   }
 
   const std::vector<OptionInfo>& chosen_options() const {
     const std::vector<OptionInfo>* options = nullptr;
     const auto look = [&](const auto& registry) {
-      if (const auto* entry = registry.find(name_)) options = &entry->options;
+      if (const auto* entry = registry.find(name_); entry && !options) options = &entry->options;
     };
     (look(planners<Spaces>()), ...);
     if (!options) throw InputError(flag_ + ": unknown planner \"" + name_ + "\" (" + names() + ")");
@@ -161,6 +180,8 @@ class PlannerChoice {
 
   std::string flag_;
   std::string name_;
+  const char* preferred_ = nullptr;
+  bool (*preferred_has_)(const std::string&) = nullptr;
   CLI::Option* chosen_ = nullptr;
   std::vector<std::string> assignments_;
   std::vector<Typed> typed_;

@@ -1,80 +1,17 @@
 #include <polyplan/car/car_planner.hpp>
 
-#include <polyplan/car/dubins.hpp>
-#include <polyplan/car/reeds_shepp.hpp>
-#include <polyplan/geometry/rotation.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 
-#include <cmath>
-#include <cstdio>
 #include <stdexcept>
+#include <utility>
 
 namespace polyplan {
-
-CarPose start_pose(const Query& query) {
-  return {to_double(query.start.x), to_double(query.start.y), query.start_theta.value_or(0) * pi / 180};
-}
-CarPose goal_pose(const Query& query) {
-  return {to_double(query.goal.x), to_double(query.goal.y), query.goal_theta.value_or(0) * pi / 180};
-}
-
-std::string to_string(const CarPose& pose) {
-  char text[96];
-  std::snprintf(text, sizeof text, "[%.10g, %.10g, ", pose.x, pose.y);
-  return text + angle_text(pose.theta * 180 / pi) + "]";
-}
-
-std::size_t gear_changes(const std::vector<CarState>& path) {
-  std::size_t changes = 0;
-  int gear = 0;
-  for (const CarState& s : path) {
-    if (s.arrival.length == 0) continue;
-    if (gear != 0 && s.arrival.gear != gear) ++changes;
-    gear = s.arrival.gear;
-  }
-  return changes;
-}
-
-namespace {
-
-// How near a driven end must come to the pose it stands for: rounding of the curves' own
-// arithmetic (their ends reach the goal to 1e-9), in lengths (heading errors times the radius).
-bool arrives(const CarPose& end, const CarPose& at, double radius) {
-  const double scale = 1e-9 * (1 + std::max({std::abs(at.x), std::abs(at.y), radius}));
-  return std::hypot(end.x - at.x, end.y - at.y) <= scale && radius * std::abs(std::remainder(end.theta - at.theta, 2 * pi)) <= scale;
-}
-
-}  // namespace
 
 CarPlanner::CarPlanner(const World& world) : world_(world), collision_(world) {
   if (collision_.body_holds_reference_point()) holonomic_.emplace(world);
 }
 
 bool CarPlanner::reaches_goal(const CarPose& end, const CarPose& goal) const { return arrives(end, goal, radius()); }
-
-SteeringPath CarPlanner::steering_path(const CarPose& from, const CarPose& to) const {
-  return reverse() ? shortest_reeds_shepp_path(from, to, radius()) : shortest_dubins_path(from, to, radius());
-}
-
-double CarPlanner::steering_distance(const CarPose& from, const CarPose& to) const {
-  return reverse() ? reeds_shepp_distance(from, to, radius()) : dubins_distance(from, to, radius());
-}
-
-std::optional<std::vector<CarState>> CarPlanner::certified_states(const CarPose& from, const SteeringPath& path,
-                                                                 const CarPose& to) const {
-  std::vector<CarState> states;
-  CarPose at = from;
-  for (const SteeringSegment& segment : path.segments) {
-    if (!collision_.segment_is_free(at, segment)) return std::nullopt;
-    at = drive(at, segment, radius(), segment.length);
-    states.push_back({at, segment});
-  }
-  if (!states.empty()) {  // the curve's end is `to` to its rounding (arrives()); the heading as the car turned
-    CarPose& end = states.back().pose;
-    end = {to.x, to.y, end.theta + std::remainder(to.theta - end.theta, 2 * pi)};
-  }
-  return states;
-}
 
 PlanReport<CarState> CarPlanner::plan(const Query& query, const QueryOptions& options) {
   const Stopwatch clock;
@@ -86,15 +23,12 @@ PlanReport<CarState> CarPlanner::plan(const Query& query, const QueryOptions& op
     report.facts.set("query_seconds", clock.seconds());
     return report;
   };
-  for (const auto& [what, pose] : {std::pair{"start", start}, std::pair{"goal", goal}})
-    if (const auto hit = collision_.pose_blocked_by(pose)) {
-      report.fail(PlanStatus::invalid_query, std::string("the ") + what + " " + to_string(pose) + " is not free: the car's body " +
-                                                 (*hit == "the bounds" ? "leaves the bounds" : "meets " + *hit));
-      return finish();
-    }
-  if (holonomic_ && holonomic_->separated(query.start, query.goal)) {
-    report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space of the car's reference point, "
-                                     "which lies in its body: no motion of the car joins them");
+  if (auto why = car_query_not_free(collision_, query)) {
+    report.fail(PlanStatus::invalid_query, std::move(*why));
+    return finish();
+  }
+  if (auto why = car_query_unreachable(holonomic(), query)) {
+    report.fail(PlanStatus::no_path, std::move(*why));
     return finish();
   }
   if (holonomic_) holonomic_->set_goal(query.goal);

@@ -10,6 +10,8 @@
 //   certification.enclosures   swept-body enclosures tested during the query (search and re-check)
 //   query_seconds
 #include <polyplan/car/car_collision.hpp>
+#include <polyplan/car/car_motion.hpp>
+#include <polyplan/car/car_query.hpp>
 #include <polyplan/car/holonomic_distance.hpp>
 #include <polyplan/car/steering_path.hpp>
 #include <polyplan/plan/planner.hpp>
@@ -20,16 +22,6 @@
 #include <vector>
 
 namespace polyplan {
-
-// The pose of a query's start or goal: its position rounded to doubles, its theta in radians.
-CarPose start_pose(const Query& query);
-CarPose goal_pose(const Query& query);
-
-// "[1.5, 2, 90°]": a car pose as messages name it.
-std::string to_string(const CarPose& pose);
-
-// How often a path of states changes gear (segments of no length do not count).
-std::size_t gear_changes(const std::vector<CarState>& path);
 
 class CarPlanner : public Planner<SteeredCar> {
  public:
@@ -62,11 +54,12 @@ class CarPlanner : public Planner<SteeredCar> {
   bool reverse() const { return collision_.reverse(); }
   // The car's shortest curve ignoring obstacles (Reeds–Shepp when it may reverse, else Dubins)
   // and its length: a lower bound on any path's length between the poses.
-  SteeringPath steering_path(const CarPose& from, const CarPose& to) const;
-  double steering_distance(const CarPose& from, const CarPose& to) const;
-  // The states along `path` driven from `from`, one per segment, the last one at `to` exactly,
-  // when every segment is certified free; nullopt otherwise.
-  std::optional<std::vector<CarState>> certified_states(const CarPose& from, const SteeringPath& path, const CarPose& to) const;
+  SteeringPath steering_path(const CarPose& from, const CarPose& to) const { return shortest_car_path(*world_.robot.car, from, to); }
+  double steering_distance(const CarPose& from, const CarPose& to) const { return car_distance(*world_.robot.car, from, to); }
+  // car/car_motion.hpp's, on this car.
+  std::optional<std::vector<CarState>> certified_states(const CarPose& from, const SteeringPath& path, const CarPose& to) const {
+    return polyplan::certified_states(collision_, from, path, to);
+  }
 
  private:
   const World& world_;

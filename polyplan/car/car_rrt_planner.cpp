@@ -23,32 +23,12 @@ class CarRrtPlanner final : public CarPlanner {
     if (!(options_.time > 0) || options_.iterations == 0) throw std::invalid_argument("time and iterations must be positive");
     if (options_.dt == 0) options_.dt = radius() / 3;
     if (options_.goal_tolerance < 0) options_.goal_tolerance = radius() / 10;
-    box_ = sampling_box(world);
+    box_ = car_sampling_box(world);
     for (const int gear : reverse() ? std::vector<int>{1, -1} : std::vector<int>{1})
       for (const Steer steer : {Steer::left, Steer::straight, Steer::right}) controls_.push_back({steer, gear, options_.dt});
   }
 
  private:
-  struct Box {
-    double xmin, ymin, xmax, ymax;
-  };
-
-  // Where poses are drawn: the bounds, or the box of the obstacles and queries grown by a tenth of
-  // its diagonal on every side.
-  static Box sampling_box(const World& world) {
-    if (world.bounds)
-      return {to_double(world.bounds->xmin), to_double(world.bounds->ymin), to_double(world.bounds->xmax), to_double(world.bounds->ymax)};
-    Box b{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-    const auto add = [&](const ExactPoint& p) {
-      b = {std::min(b.xmin, to_double(p.x)), std::min(b.ymin, to_double(p.y)), std::max(b.xmax, to_double(p.x)), std::max(b.ymax, to_double(p.y))};
-    };
-    for (const auto& o : world.obstacles)
-      for (const ExactPoint& p : o.outer) add(p);
-    for (const ExactPoint& p : query_points(world)) add(p);
-    const double grow = 0.1 * std::hypot(b.xmax - b.xmin, b.ymax - b.ymin) + 1;
-    return {b.xmin - grow, b.ymin - grow, b.xmax + grow, b.ymax + grow};
-  }
-
   bool reaches_goal(const CarPose& end, const CarPose& goal) const override {
     return CarPlanner::reaches_goal(end, goal) || miss(end, goal) <= options_.goal_tolerance;
   }
@@ -148,7 +128,7 @@ class CarRrtPlanner final : public CarPlanner {
   }
 
   CarRrtOptions options_;
-  Box box_{};
+  CarSamplingBox box_;
   std::vector<SteeringSegment> controls_;
   std::mt19937_64 random_;
 };

@@ -15,7 +15,13 @@ namespace polyplan {
 namespace {
 
 constexpr double pi = M_PI;
-constexpr double zero = 10 * std::numeric_limits<double>::epsilon();  // the formulas' sign tolerance
+// The formulas' sign tolerance, in turning radii. A segment whose exact length is 0 comes out of
+// an atan2 with an error of about the rounding of the coordinates divided by the next segment's
+// length: 1e-16 / 2e-3 = 5e-14 for an S of 2e-3 radii followed by an L (the last stretch of an
+// S L: found where the tail of a shortest curve, itself shortest, was missed). OMPL's 10 machine
+// epsilons rejects it, and the word with it. Lengths within `zero` of 0 are taken as 0 (symmetric()),
+// so the curve's end moves by at most a few `zero` radii.
+constexpr double zero = 1e-11;
 
 // An angle in (-pi, pi].
 double wrap(double angle) {
@@ -158,10 +164,15 @@ using Formula = bool (*)(double, double, double, double&, double&, double&);
 template <class Make>
 void symmetric(std::vector<Word>& out, Formula formula, Letters letters, Letters mirrored, double x, double y, double phi, Make make) {
   double t, u, v;
-  if (formula(x, y, phi, t, u, v)) out.push_back(make(letters, 1, t, u, v));
-  if (formula(-x, y, -phi, t, u, v)) out.push_back(make(letters, -1, t, u, v));
-  if (formula(x, -y, -phi, t, u, v)) out.push_back(make(mirrored, 1, t, u, v));
-  if (formula(-x, -y, phi, t, u, v)) out.push_back(make(mirrored, -1, t, u, v));
+  const auto snapped = [&](Letters l, double sign) {
+    for (double* length : {&t, &u, &v})
+      if (std::abs(*length) < zero) *length = 0;
+    return make(l, sign, t, u, v);
+  };
+  if (formula(x, y, phi, t, u, v)) out.push_back(snapped(letters, 1));
+  if (formula(-x, y, -phi, t, u, v)) out.push_back(snapped(letters, -1));
+  if (formula(x, -y, -phi, t, u, v)) out.push_back(snapped(mirrored, 1));
+  if (formula(-x, -y, phi, t, u, v)) out.push_back(snapped(mirrored, -1));
 }
 
 void csc(std::vector<Word>& out, double x, double y, double phi) {

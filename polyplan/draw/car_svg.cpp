@@ -1,5 +1,6 @@
 #include <polyplan/draw/car_svg.hpp>
 
+#include <polyplan/car/car_motion.hpp>
 #include <polyplan/draw/steering_svg.hpp>
 #include <polyplan/draw/theme.hpp>
 #include <polyplan/draw/world_svg.hpp>
@@ -53,22 +54,37 @@ std::vector<std::pair<CarPose, int>> strobe(const std::vector<CarState>& path, d
   return out;
 }
 
-void draw_tree(svg::Drawing& d, const PlanGraph<CarState>& graph, double radius) {
+// An edge's motion: the segment its end arrived by (hybrid A*, car-rrt), or for poses that
+// arrive by none (a sampling planner's tree or roadmap) the car's shortest curve between them.
+void draw_edge(svg::Drawing& d, const CarState& from, const CarState& to, const CarSteering& steering, const svg::Style& style) {
+  if (to.arrival.length > 0) {
+    d.polyline(segment_track(from.pose, to.arrival, steering.turning_radius), style);
+    return;
+  }
+  CarPose at = from.pose;
+  for (const SteeringSegment& segment : shortest_car_path(steering, from.pose, to.pose).segments) {
+    d.polyline(segment_track(at, segment, steering.turning_radius), style);
+    at = drive(at, segment, steering.turning_radius, segment.length);
+  }
+}
+
+void draw_tree(svg::Drawing& d, const PlanGraph<CarState>& graph, const CarSteering& steering) {
   const svg::Style style{"none", theme::roadmap, 0.6, 0.45, 1.0, ""};
-  for (const auto& [u, v] : graph.edges) d.polyline(segment_track(graph.vertices[u].pose, graph.vertices[v].arrival, radius), style);
+  for (const auto& [u, v] : graph.edges) draw_edge(d, graph.vertices[u], graph.vertices[v], steering, style);
   if (!graph.edges.empty()) d.legend(graph.kind + " (" + std::to_string(graph.vertices.size()) + " poses)", style, svg::Swatch::line);
 }
 
 }  // namespace
 
 svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<CarState>>& reports, const std::vector<std::string>& labels) {
-  const double radius = world.robot.car ? world.robot.car->turning_radius : 1;
+  const CarSteering steering = world.robot.car.value_or(CarSteering{});
+  const double radius = steering.turning_radius;
   const svg::Box2 box = view_of(world, reports);
   svg::Drawing d(box);
   draw_surroundings(d, world);
   for (const auto& report : reports)
     if (report.graph) {
-      draw_tree(d, *report.graph, radius);
+      draw_tree(d, *report.graph, steering);
       break;
     }
   const double diagonal = std::hypot(box.xmax - box.xmin, box.ymax - box.ymin);

@@ -13,6 +13,10 @@ struct CarPose {
   friend bool operator==(const CarPose&, const CarPose&) = default;
 };
 
+// The heading in degrees, as files and answers give it: one conversion for the program, its JSON
+// and Python, so that they print the same numbers.
+inline double heading_degrees(const CarPose& pose) { return pose.theta * 57.295779513082320876798; }
+
 enum class Steer : char { left = 'L', straight = 'S', right = 'R' };
 
 struct SteeringSegment {

@@ -52,7 +52,7 @@ void add_path(json& out, const std::vector<Pose>& path) {
   out["path_exact"] = std::move(exact);
 }
 
-json pose_json(const CarPose& pose) { return json::array({pose.x, pose.y, pose.theta * 57.295779513082320876798}); }
+json pose_json(const CarPose& pose) { return json::array({pose.x, pose.y, heading_degrees(pose)}); }
 
 void add_path(json& out, const std::vector<CarState>& path) {
   json poses = json::array(), segments = json::array();

@@ -1,7 +1,13 @@
 #include <polyplan/registry/registry.hpp>
 
 #include <polyplan/car/car_rrt_planner.hpp>
+#include <polyplan/car/car_sampling_space.hpp>
 #include <polyplan/car/hybrid_astar_planner.hpp>
+#include <polyplan/sampling/lazy_prm_planner.hpp>
+#include <polyplan/sampling/prm_planner.hpp>
+#include <polyplan/sampling/rrt_connect_planner.hpp>
+#include <polyplan/sampling/rrt_planner.hpp>
+#include <polyplan/sampling/rrt_star_planner.hpp>
 
 namespace polyplan {
 
@@ -11,6 +17,11 @@ const PlannerRegistry<SteeredCar>& planners<SteeredCar>() {
   static const PlannerRegistry<SteeredCar> registry{
       hybrid_astar_planner_entry(),
       car_rrt_planner_entry(),
+      prm_planner_entry<SteeredCar>(car_sampling_space),
+      lazy_prm_planner_entry<SteeredCar>(car_sampling_space),
+      rrt_planner_entry<SteeredCar>(car_sampling_space),
+      rrt_star_planner_entry<SteeredCar>(car_sampling_space),
+      rrt_connect_planner_entry<SteeredCar>(car_sampling_space),
   };
   return registry;
 }

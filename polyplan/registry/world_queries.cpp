@@ -1,6 +1,7 @@
 #include <polyplan/registry/world_queries.hpp>
 
-#include <polyplan/car/car_planner.hpp>
+#include <polyplan/car/car_collision.hpp>
+#include <polyplan/car/car_query.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/rotation/rotation_layers.hpp>
@@ -12,10 +13,11 @@ namespace polyplan {
 
 void require_planner_for_robot(const World& world, std::string_view planner) {
   const bool car_planner = planners<SteeredCar>().find(planner) != nullptr;
+  const bool world_planner = planners<TranslatingRobot>().find(planner) || planners<RotatingRobot>().find(planner);
   if (world.robot.car && !car_planner)
     throw InputError(world.source + ": robot.car: the robot steers like a car, and the planner " + std::string(planner) +
                      " neither steers nor keeps to a turning radius: use a car planner (" + planners<SteeredCar>().names() + ")");
-  if (!world.robot.car && car_planner)
+  if (!world.robot.car && car_planner && !world_planner)
     throw InputError(world.source + ": robot: the planner " + std::string(planner) +
                      " plans for a car, and this robot has no \"car\": {\"turning_radius\": R, \"reverse\": true|false}");
 }
@@ -24,10 +26,7 @@ void require_planner_for_robot(const World& world, std::string_view planner) {
 void require_free_car_poses(const World& world) {
   const CarCollision collision(world);
   for (const Query& q : world.queries)
-    for (const auto& [what, pose] : {std::pair{"start", start_pose(q)}, std::pair{"goal", goal_pose(q)}})
-      if (const auto hit = collision.pose_blocked_by(pose))
-        throw InputError(world.source + ": " + q.name + ": the " + what + " " + to_string(pose) + " is not free: the car's body " +
-                         (*hit == "the bounds" ? "leaves the bounds" : "meets " + *hit));
+    if (auto why = car_query_not_free(collision, q)) throw InputError(world.source + ": " + q.name + ": " + *why);
 }
 
 void require_plannable_queries(const World& world, const CSpace* cspace, std::string_view planner) {

@@ -24,13 +24,15 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
     return roadmap_.add(configuration, at, [](std::size_t) { return detail::Join::uncertified; });
   }
 
-  // Certifies the path's unchecked edges from the start on; removes the first that is not free.
+  // Certifies the path's unchecked edges from the start on (both ways in a space that is not
+  // symmetric: the edge serves later queries either way); removes the first that is not free.
   bool certify(const std::vector<std::size_t>& path, std::size_t& removed) {
     auto& graph = roadmap_.graph();
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       const auto [e, exists] = boost::edge(path[i], path[i + 1], graph);
       if (graph[e].certified) continue;
-      if (!this->motion_free(roadmap_.nodes()[path[i]], roadmap_.nodes()[path[i + 1]])) {
+      const Configuration &from = roadmap_.nodes()[path[i]], &to = roadmap_.nodes()[path[i + 1]];
+      if (!this->motion_free(from, to) || (!this->space().symmetric() && !this->motion_free(to, from))) {
         boost::remove_edge(e, graph);
         ++removed;
         return false;
@@ -95,5 +97,6 @@ PlannerEntry<Space> lazy_prm_planner_entry(SamplingSpaceFactory<Space> make_spac
 
 template PlannerEntry<TranslatingRobot> lazy_prm_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> lazy_prm_planner_entry(SamplingSpaceFactory<PlanarArm>);
+template PlannerEntry<SteeredCar> lazy_prm_planner_entry(SamplingSpaceFactory<SteeredCar>);
 
 }  // namespace polyplan

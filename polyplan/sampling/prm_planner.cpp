@@ -25,12 +25,14 @@ class PrmPlanner final : public SamplingPlanner<Space> {
   }
 
   // A milestone joined to its nearest milestones by every motion certified free (`at`: its
-  // coordinates, or none to have the space give them).
+  // coordinates, or none to have the space give them) — both ways in a space that is not
+  // symmetric, since the roadmap's edges serve either way.
   std::size_t add_milestone(const Configuration& configuration, std::span<const double> at = {}) {
     const std::size_t id = roadmap_.size();
     components_.push_back(id);
     return roadmap_.add(configuration, at, [&](std::size_t n) {
       if (!this->motion_free(roadmap_.nodes()[n], configuration)) return detail::Join::none;
+      if (!this->space().symmetric() && !this->motion_free(configuration, roadmap_.nodes()[n])) return detail::Join::none;
       components_[component(n)] = component(id);
       return detail::Join::certified;
     });
@@ -87,5 +89,6 @@ PlannerEntry<Space> prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
 
 template PlannerEntry<TranslatingRobot> prm_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> prm_planner_entry(SamplingSpaceFactory<PlanarArm>);
+template PlannerEntry<SteeredCar> prm_planner_entry(SamplingSpaceFactory<SteeredCar>);
 
 }  // namespace polyplan

@@ -30,7 +30,7 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
       added = step.from;
       return Grown::reached;  // the target is a node already
     }
-    if (!this->motion_free(tree.nodes()[step.from], step.to)) return Grown::trapped;
+    if (!this->motion_free(tree, step.from, step.to)) return Grown::trapped;
     added = tree.add(std::move(step.to), at, step.from);
     return step.reaches_target ? Grown::reached : Grown::advanced;
   }
@@ -38,7 +38,7 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
   Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
     auto& space = this->space();
     const std::size_t d = space.dimension();
-    SamplingTree<Space> from_start(space, space.start(query)), from_goal(space, space.goal(query));
+    SamplingTree<Space> from_start(space, space.start(query)), from_goal(space, space.goal(query), Toward::placed);
     SamplingTree<Space>*grow = &from_start, *other = &from_goal;
     std::vector<double> sample_at(d), new_at(d), step_at(d);
 
@@ -95,5 +95,6 @@ PlannerEntry<Space> rrt_connect_planner_entry(SamplingSpaceFactory<Space> make_s
 
 template PlannerEntry<TranslatingRobot> rrt_connect_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> rrt_connect_planner_entry(SamplingSpaceFactory<PlanarArm>);
+template PlannerEntry<SteeredCar> rrt_connect_planner_entry(SamplingSpaceFactory<SteeredCar>);
 
 }  // namespace polyplan

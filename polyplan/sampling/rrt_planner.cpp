@@ -75,5 +75,6 @@ PlannerEntry<Space> rrt_planner_entry(SamplingSpaceFactory<Space> make_space) {
 
 template PlannerEntry<TranslatingRobot> rrt_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> rrt_planner_entry(SamplingSpaceFactory<PlanarArm>);
+template PlannerEntry<SteeredCar> rrt_planner_entry(SamplingSpaceFactory<SteeredCar>);
 
 }  // namespace polyplan

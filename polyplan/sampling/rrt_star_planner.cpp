@@ -41,7 +41,7 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     if (options_.rewire == Rewiring::k_nearest) {
       // Only those within one extension (as OMPL's RRT* does): a farther one is rarely a cheaper
       // parent, and certifying a long motion costs the most.
-      tree.nodes().neighbours().nearest(at, static_cast<std::size_t>(std::ceil(k_factor_ * std::log(n + 1))), out);
+      tree.nodes().nearest(at, static_cast<std::size_t>(std::ceil(k_factor_ * std::log(n + 1))), out);
       if (step_ > 0)
         out.erase(std::remove_if(out.begin(), out.end(), [&](std::size_t id) { return this->distance(tree.nodes().coordinates(id), at) > step_; }),
                   out.end());
@@ -49,7 +49,7 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     }
     double r = gamma_ * std::pow(std::log(n + 1) / (n + 1), 1 / static_cast<double>(this->space().dimension()));
     if (step_ > 0) r = std::min(r, step_);
-    tree.nodes().neighbours().within(at, r, out);
+    tree.nodes().within(at, r, out);
   }
 
   // A new parent for `child` (its cost falls by `saving`): the subtree's costs fall with it.
@@ -178,5 +178,6 @@ PlannerEntry<Space> rrt_star_planner_entry(SamplingSpaceFactory<Space> make_spac
 
 template PlannerEntry<TranslatingRobot> rrt_star_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> rrt_star_planner_entry(SamplingSpaceFactory<PlanarArm>);
+template PlannerEntry<SteeredCar> rrt_star_planner_entry(SamplingSpaceFactory<SteeredCar>);
 
 }  // namespace polyplan

@@ -66,7 +66,7 @@ auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::v
     space_->coordinates(path[k], a);
     space_->coordinates(path[k + 1], b);
     const double span = along[k + 1] - along[k];
-    sampling_interpolate(space_->metric(), a, b, span > 0 ? (s - along[k]) / span : 0, out);
+    space_->interpolate(a, b, span > 0 ? (s - along[k]) / span : 0, out);
     return k;
   };
 
@@ -116,6 +116,10 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
     report.fail(PlanStatus::invalid_query, *why);
     return finish();
   }
+  if (auto why = space_->no_path(query)) {
+    report.fail(PlanStatus::no_path, *why);
+    return finish();
+  }
 
   Attempt attempt = solve(query, budget, facts, options.record);
   facts.set("iterations", budget.used());
@@ -139,12 +143,13 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
       throw std::logic_error("a sampling planner's path has a motion that is not certified free");
   report.succeed();
   report.length = length(path);
-  report.path = std::move(path);
+  report.path = space_->reported_path(std::move(path), facts);
   report.certificate = {true, space_->certificate_method() + ", every motion certified again on the returned path"};
   return finish();
 }
 
 template class SamplingPlanner<TranslatingRobot>;
 template class SamplingPlanner<PlanarArm>;
+template class SamplingPlanner<SteeredCar>;
 
 }  // namespace polyplan

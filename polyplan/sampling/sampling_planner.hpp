@@ -26,6 +26,7 @@
 #include <initializer_list>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <span>
 #include <string>
 #include <type_traits>
@@ -55,39 +56,134 @@ OptionTable<Options>& add_sampling_options(OptionTable<Options>& table) {
            "shorten the path with certified shortcuts (raw_length keeps the first path's length)");
 }
 
+// Which way a distance runs between a placed configuration and coordinates asked about: the
+// motion from the placed one to them (a tree grown from its root), or from them to the placed one
+// (a tree grown toward its root: RRT-Connect's goal tree). The same in a symmetric space.
+enum class Toward { asked, placed };
+
 // Configurations a planner has placed (tree nodes, roadmap milestones), each with its coordinates
-// in a nearest-neighbour index; ids 0, 1, 2, ... in order.
+// in a nearest-neighbour index; ids 0, 1, 2, ... in order. Nearest means by the space's distance():
+// when that is not the index's metric, the index's (a lower bound both ways) gives candidates —
+// the k nearest by the bound fix a radius r, the true k-th distance among them, and every
+// configuration truly within r is within r by the bound — so each answer is the true one.
 template <class Space>
 class SampledConfigurations {
  public:
   using Configuration = typename Space::Configuration;
 
-  explicit SampledConfigurations(const SamplingSpace<Space>& space) : index_(space.dimension(), space.metric()) {}
+  explicit SampledConfigurations(const SamplingSpace<Space>& space)
+      : space_(&space), dimension_(space.dimension()), index_(space.index_dimension(), space.metric()) {}
 
   std::size_t add(Configuration configuration, std::span<const double> coordinates) {
     configurations_.push_back(std::move(configuration));
-    return index_.add(coordinates);
+    coordinates_.insert(coordinates_.end(), coordinates.begin(), coordinates.begin() + static_cast<std::ptrdiff_t>(dimension_));
+    return index_.add(coordinates.first(index_.dimension()));
   }
   std::size_t size() const { return configurations_.size(); }
   const Configuration& operator[](std::size_t id) const { return configurations_[id]; }
-  std::span<const double> coordinates(std::size_t id) const { return index_.point(id); }
-  const NearestNeighbours& neighbours() const { return index_; }
+  std::span<const double> coordinates(std::size_t id) const { return std::span(coordinates_).subspan(id * dimension_, dimension_); }
   const std::vector<Configuration>& all() const { return configurations_; }
 
+  // The space's distance between configuration `id` and `at`, the way `toward` says.
+  double distance(std::size_t id, std::span<const double> at, Toward toward = Toward::asked) const {
+    return toward == Toward::asked ? space_->distance(coordinates(id), at) : space_->distance(at, coordinates(id));
+  }
+  // The id of a configuration nearest to `at`. Throws std::logic_error when there is none.
+  std::size_t nearest(std::span<const double> at, Toward toward = Toward::asked) const;
+  // The min(k, size()) nearest to `at`, nearest first, into `out` (cleared).
+  void nearest(std::span<const double> at, std::size_t k, std::vector<std::size_t>& out, Toward toward = Toward::asked) const;
+  // Every configuration within `radius` of `at` (distance <= radius), nearest first, into `out`.
+  void within(std::span<const double> at, double radius, std::vector<std::size_t>& out, Toward toward = Toward::asked) const;
+
  private:
+  // A distance grown past the rounding that may put a lower bound, computed otherwise, above it.
+  static double widened(double d) { return d + 1e-9 * (1 + d); }
+  // `ids` ordered by their true distance to `at`, the first `keep` (all by default) kept.
+  void by_distance(std::span<const double> at, std::vector<std::size_t>& ids, Toward toward, std::size_t keep = SIZE_MAX) const;  // SIZE_MAX: <cstdint>
+
+  const SamplingSpace<Space>* space_;
+  std::size_t dimension_;
   std::vector<Configuration> configurations_;
+  std::vector<double> coordinates_;  // configuration i's at [i·dimension, (i + 1)·dimension)
   NearestNeighbours index_;
+  mutable std::vector<std::size_t> candidates_;
+  mutable std::vector<std::pair<double, std::size_t>> ranked_;
 };
 
+template <class Space>
+void SampledConfigurations<Space>::by_distance(std::span<const double> at, std::vector<std::size_t>& ids, Toward toward,
+                                               std::size_t keep) const {
+  ranked_.clear();
+  for (std::size_t id : ids) ranked_.emplace_back(distance(id, at, toward), id);
+  keep = std::min(keep, ranked_.size());
+  std::partial_sort(ranked_.begin(), ranked_.begin() + static_cast<std::ptrdiff_t>(keep), ranked_.end());
+  ids.clear();
+  for (std::size_t i = 0; i < keep; ++i) ids.push_back(ranked_[i].second);
+}
+
+template <class Space>
+void SampledConfigurations<Space>::nearest(std::span<const double> at, std::size_t k, std::vector<std::size_t>& out,
+                                           Toward toward) const {
+  const auto key = at.first(index_.dimension());
+  index_.nearest(key, k, out);
+  if (space_->distance_is_metric() || out.empty()) return;
+  by_distance(at, out, toward);
+  // ranked_ holds the k best so far (distance, id), nearest first. Every other candidate lies
+  // within the k-th distance by the index's bound (widened past rounding: the bounds and the
+  // distance are computed differently), nearest by the bound first, so the walk stops at the
+  // first one the bound puts beyond the k-th.
+  index_.within(key, widened(ranked_[out.size() - 1].first), candidates_);
+  const std::size_t first_k = out.size();
+  for (std::size_t id : candidates_) {
+    const double kth = ranked_[first_k - 1].first;
+    const auto placed_at = coordinates(id);
+    if (sampling_distance(space_->metric(), placed_at.first(key.size()), key) > widened(kth)) break;
+    if (std::find(out.begin(), out.end(), id) != out.end()) continue;
+    const double bound = toward == Toward::asked ? space_->distance_bound(placed_at, at) : space_->distance_bound(at, placed_at);
+    if (bound > widened(kth)) continue;
+    const double d = distance(id, at, toward);
+    if (d >= kth) continue;
+    ranked_[first_k - 1] = {d, id};  // the worst gives way; insertion keeps the order
+    for (std::size_t i = first_k - 1; i > 0 && ranked_[i] < ranked_[i - 1]; --i) std::swap(ranked_[i], ranked_[i - 1]);
+  }
+  out.clear();
+  for (std::size_t i = 0; i < first_k; ++i) out.push_back(ranked_[i].second);
+}
+
+template <class Space>
+std::size_t SampledConfigurations<Space>::nearest(std::span<const double> at, Toward toward) const {
+  if (space_->distance_is_metric()) return index_.nearest(at.first(index_.dimension()));
+  std::vector<std::size_t> one;
+  nearest(at, 1, one, toward);
+  if (one.empty()) throw std::logic_error("nearest configuration asked of none");
+  return one.front();
+}
+
+template <class Space>
+void SampledConfigurations<Space>::within(std::span<const double> at, double radius, std::vector<std::size_t>& out,
+                                          Toward toward) const {
+  if (space_->distance_is_metric()) return index_.within(at.first(index_.dimension()), radius, out);
+  index_.within(at.first(index_.dimension()), widened(radius), out);
+  std::erase_if(out, [&](std::size_t id) {
+    const auto placed_at = coordinates(id);
+    const double bound = toward == Toward::asked ? space_->distance_bound(placed_at, at) : space_->distance_bound(at, placed_at);
+    return bound > widened(radius) || distance(id, at, toward) > radius;
+  });
+  by_distance(at, out, toward);
+}
+
 // A tree of configurations (rrt, rrtconnect, rrtstar): each node but the root joined to its
-// parent by a certified motion.
+// parent by a certified motion — from the parent to the node when the tree grows from its root
+// (Toward::asked: distances run from nodes to what the tree extends toward), from the node to its
+// parent when it grows toward its root (Toward::placed: RRT-Connect's goal tree).
 template <class Space>
 class SamplingTree {
  public:
   using Configuration = typename Space::Configuration;
   static constexpr std::size_t root = 0;
 
-  SamplingTree(const SamplingSpace<Space>& space, const Configuration& root_configuration) : nodes_(space) {
+  SamplingTree(const SamplingSpace<Space>& space, const Configuration& root_configuration, Toward growth = Toward::asked)
+      : nodes_(space), growth_(growth) {
     std::vector<double> coordinates(space.dimension());
     space.coordinates(root_configuration, coordinates);
     add(root_configuration, coordinates, root);
@@ -99,6 +195,7 @@ class SamplingTree {
   }
   std::size_t size() const { return nodes_.size(); }
   const SampledConfigurations<Space>& nodes() const { return nodes_; }
+  Toward growth() const { return growth_; }
   std::size_t parent(std::size_t id) const { return parents_[id]; }
   void set_parent(std::size_t id, std::size_t parent) { parents_[id] = parent; }
 
@@ -108,20 +205,26 @@ class SamplingTree {
     for (; id != root; id = parents_[id]) path.push_back(nodes_[parents_[id]]);
     return {path.rbegin(), path.rend()};
   }
-  // The picture of trees: their nodes, and an edge from each node to its parent.
+  // The picture of trees: their nodes, and an edge for each node's motion, from where it starts
+  // to where it ends (parent to node, or node to parent in a tree grown toward its root).
   static std::shared_ptr<const PlanGraph<Configuration>> picture(std::initializer_list<const SamplingTree*> trees) {
     auto graph = std::make_shared<PlanGraph<Configuration>>();
     graph->kind = "tree";
     for (const SamplingTree* tree : trees) {
       const std::size_t offset = graph->vertices.size();
       graph->vertices.insert(graph->vertices.end(), tree->nodes_.all().begin(), tree->nodes_.all().end());
-      for (std::size_t id = 1; id < tree->size(); ++id) graph->edges.emplace_back(offset + tree->parents_[id], offset + id);
+      for (std::size_t id = 1; id < tree->size(); ++id) {
+        const std::size_t parent = offset + tree->parents_[id], node = offset + id;
+        if (tree->growth_ == Toward::asked) graph->edges.emplace_back(parent, node);
+        else graph->edges.emplace_back(node, parent);
+      }
     }
     return graph;
   }
 
  private:
   SampledConfigurations<Space> nodes_;
+  Toward growth_;
   std::vector<std::size_t> parents_;
 };
 
@@ -203,9 +306,7 @@ class SamplingPlanner : public Planner<Space> {
     ++motions_checked_;
     return space_->motion_is_free(from, to);
   }
-  double distance(std::span<const double> a, std::span<const double> b) const {
-    return sampling_distance(space_->metric(), a, b);
-  }
+  double distance(std::span<const double> a, std::span<const double> b) const { return space_->distance(a, b); }
   // What a tree grows toward: the goal itself with probability `goal_bias`, otherwise a drawn
   // configuration (its coordinates into `drawn_at`).
   struct Sample {
@@ -219,7 +320,8 @@ class SamplingPlanner : public Planner<Space> {
     return {std::move(drawn), drawn_at, false};
   }
   // One extension of `tree` toward `target`: from its nearest node, `target` itself when it is
-  // within `step` (or step is 0: all the way), otherwise the configuration `step` along the way;
+  // within `step` (or step is 0: all the way), otherwise the configuration `step` along the way
+  // (in a tree grown toward its root: `step` before the node on the motion from `target` to it);
   // the coordinates of where it ends into `out`. `stays`: the nearest node is there already.
   struct Step {
     std::size_t from = 0;
@@ -229,15 +331,22 @@ class SamplingPlanner : public Planner<Space> {
   };
   Step step_toward(const SamplingTree<Space>& tree, const Configuration& target, std::span<const double> target_at, double step,
                    std::span<double> out) const {
-    const std::size_t from = tree.nodes().neighbours().nearest(target_at);
+    const Toward toward = tree.growth();
+    const std::size_t from = tree.nodes().nearest(target_at, toward);
     const auto from_at = tree.nodes().coordinates(from);
-    const double d = distance(from_at, target_at);
+    const double d = tree.nodes().distance(from, target_at, toward);
     if (step <= 0 || d <= step) {
       std::copy(target_at.begin(), target_at.end(), out.begin());
       return {from, target, true, d == 0};
     }
-    sampling_interpolate(space_->metric(), from_at, target_at, step / d, out);
-    return {from, space_->configuration(out), false, distance(from_at, out) == 0};
+    if (toward == Toward::asked) space_->interpolate(from_at, target_at, step / d, out);
+    else space_->interpolate(target_at, from_at, 1 - step / d, out);
+    return {from, space_->configuration(out), false, tree.nodes().distance(from, out, toward) == 0};
+  }
+  // The motion that joins a tree's node `from` and a configuration `to` grown from it: from → to,
+  // or to → from in a tree grown toward its root. Certified and counted.
+  bool motion_free(const SamplingTree<Space>& tree, std::size_t from, const Configuration& to) {
+    return tree.growth() == Toward::asked ? motion_free(tree.nodes()[from], to) : motion_free(to, tree.nodes()[from]);
   }
   // The length of a path of configurations in the space's metric.
   double length(const std::vector<Configuration>& path) const;

@@ -2,16 +2,19 @@
 // What the sampling planners (prm, lazyprm, rrt, rrtstar, rrtconnect) know of a configuration
 // space, and nothing more: how to sample it, how far apart two configurations are and how to steer
 // between them (on coordinates, by the space's metric), whether a configuration is free, and
-// whether the motion between two is free — certified, never sampled (DESIGN.md). Two spaces
+// whether the motion between two is free — certified, never sampled (DESIGN.md). Three spaces
 // implement it: a translating robot in a polygon world (sampling/polygon_sampling_space.hpp: exact
-// positions, the exact segment test) and a planar arm (arm/arm_sampling_space.hpp: joint angles on
-// the torus, conservative advancement).
+// positions, the exact segment test), a planar arm (arm/arm_sampling_space.hpp: joint angles on
+// the torus, conservative advancement) and a steered car (car/car_sampling_space.hpp: poses joined
+// by the car's shortest curves, whose length is the distance — not a metric of coordinates, and
+// not symmetric for a car that cannot reverse).
 //
 // A configuration has coordinates (doubles) on which distances, nearest neighbours and steering
 // are computed; the configuration itself (an exact point, joint angles) is what the motion test
 // and the returned path use. So the query's exact start and goal stay exact in the path even when
 // their coordinates are rounded.
 #include <polyplan/geometry/angles.hpp>
+#include <polyplan/plan/plan_report.hpp>
 
 #include <cmath>
 #include <cstddef>
@@ -22,6 +25,7 @@
 #include <random>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace polyplan {
 
@@ -67,7 +71,28 @@ class SamplingSpace {
   virtual ~SamplingSpace() = default;
 
   virtual std::size_t dimension() const = 0;
+  // The metric of the nearest-neighbour index, on the first index_dimension() coordinates. For a
+  // space whose distance() is its own (distance_is_metric() false), this metric must bound
+  // distance() from below both ways, so that the index finds the true nearest (sampling_planner.hpp).
   virtual SamplingMetric metric() const = 0;
+  virtual std::size_t index_dimension() const { return dimension(); }
+  virtual bool distance_is_metric() const { return true; }
+  // Whether distance(a, b) = distance(b, a) and the motion b → a is a → b's reversed: then a
+  // roadmap's edge serves both ways once certified one way.
+  virtual bool symmetric() const { return true; }
+  // The length of the motion a → b, and the coordinates a fraction t ∈ [0, 1] of the way along it
+  // (the metric's and sampling_interpolate's by default).
+  virtual double distance(std::span<const double> a, std::span<const double> b) const {
+    return sampling_distance(metric(), a, b);
+  }
+  // A lower bound on distance(a, b) cheaper than it, at least the index metric's (which it is by
+  // default): nearest-neighbour queries skip what it rules out.
+  virtual double distance_bound(std::span<const double> a, std::span<const double> b) const {
+    return sampling_distance(metric(), a.first(index_dimension()), b.first(index_dimension()));
+  }
+  virtual void interpolate(std::span<const double> a, std::span<const double> b, double t, std::span<double> out) const {
+    sampling_interpolate(metric(), a, b, t, out);
+  }
   // The largest distance between two configurations that sample() can give: default steps are
   // fractions of it.
   virtual double extent() const = 0;
@@ -90,11 +115,18 @@ class SamplingSpace {
   // Why a query cannot be planned (a start or goal that is not free, angles of the wrong count),
   // in one sentence naming what it hits; nullopt when it can.
   virtual std::optional<std::string> query_not_free(const Query&) = 0;
+  // Why no motion joins the query's start and goal, when the space can prove it (a car whose
+  // start and goal lie in different components of its reference point's free space); nullopt when
+  // it cannot, and by default.
+  virtual std::optional<std::string> no_path(const Query&) { return std::nullopt; }
   // The query's start and goal as the path gives them (an arm's angles normalised).
   virtual Configuration start(const Query&) const = 0;
   virtual Configuration goal(const Query&) const = 0;
   // The certificate's words for a path of certified motions.
   virtual std::string certificate_method() const = 0;
+  // The path of certified motions as the report gives it, and the space's own facts about it (a
+  // car's curves cut at their segments' joints, its gear changes). The path itself by default.
+  virtual std::vector<Configuration> reported_path(std::vector<Configuration> path, Facts&) const { return path; }
 };
 
 // Makes the space of a problem (which outlives it): the sampling planners' registry entries are

@@ -210,9 +210,10 @@ std::unique_ptr<PlannerHandle> unknown(const std::string& name, bool arm) {
   const bool arm_planner = planners<PlanarArm>().find(name) != nullptr;
   if (arm && world_planner) throw InputError("planner " + name + " plans in a World (polyplan.read_world), not in an Arm");
   if (!arm && arm_planner) throw InputError("planner " + name + " plans for an Arm (polyplan.read_arm), not in a World");
-  const std::string names =
-      arm ? planners<PlanarArm>().names()
-          : planners<TranslatingRobot>().names() + ", " + planners<RotatingRobot>().names() + ", " + planners<SteeredCar>().names();
+  std::string names = arm ? planners<PlanarArm>().names() : planners<TranslatingRobot>().names() + ", " + planners<RotatingRobot>().names();
+  if (!arm)  // the car's own (its sampling planners are named already)
+    for (const auto& entry : planners<SteeredCar>().entries())
+      if (!planners<TranslatingRobot>().find(entry.name)) names += ", " + entry.name;
   throw InputError("unknown planner \"" + name + "\" for a" + (arm ? "n Arm" : " World") + " (" + names + ")");
 }
 
@@ -221,6 +222,9 @@ std::unique_ptr<PlannerHandle> unknown(const std::string& name, bool arm) {
 std::unique_ptr<PlannerHandle> make_planner(const std::string& name, py::handle problem, const py::dict& options) {
   if (py::isinstance<WorldHandle>(problem)) {
     const auto world = problem.cast<std::shared_ptr<WorldHandle>>();
+    // A car's world plans in the car's space first: rrt and its kin are registered for both.
+    if (world->world().robot.car)
+      if (auto p = make_if_named<SteeredCar>(name, world, options)) return p;
     if (auto p = make_if_named<TranslatingRobot>(name, world, options)) return p;
     if (auto p = make_if_named<RotatingRobot>(name, world, options)) return p;
     if (auto p = make_if_named<SteeredCar>(name, world, options)) return p;

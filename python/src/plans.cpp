@@ -20,7 +20,7 @@ namespace {
 std::vector<double> coordinates(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
 std::vector<double> coordinates(const Pose& p) { return {to_double(p.position.x), to_double(p.position.y), p.degrees}; }
 std::vector<double> coordinates(const JointAngles& q) { return q; }
-std::vector<double> coordinates(const CarState& s) { return {s.pose.x, s.pose.y, s.pose.theta * 180 / pi}; }
+std::vector<double> coordinates(const CarState& s) { return {s.pose.x, s.pose.y, heading_degrees(s.pose)}; }
 
 // Exact coordinates as the JSON's "path_exact" gives them; joint angles are doubles by nature.
 py::object exact(const ExactPoint& p) { return py::make_tuple(fraction(p.x), fraction(p.y)); }

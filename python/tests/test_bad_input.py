@@ -203,5 +203,5 @@ def test_a_car_is_refused_by_planners_that_do_not_steer():
     car = polyplan.World.from_dict({"bounds": [0, 0, 20, 10], "obstacles": [],
                                     "robot": {"parts": [[[-1, -1], [3, -1], [3, 1], [-1, 1]]], "car": {"turning_radius": 2}},
                                     "start": [5, 5, 0], "goal": [15, 5, 180]})
-    for name in ("visibility", "rotation", "prm"):
+    for name in ("visibility", "rotation", "trapezoid"):
         raises("robot.car", polyplan.planner, name, car)

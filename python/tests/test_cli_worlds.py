@@ -1,5 +1,6 @@
 """Python answers what the program answers on every shipped world with every planner of polygon
-worlds (default options, so the same seed), with options set either way, and polyplan.planners()
+worlds (default options, so the same seed) and every car planner on the car's worlds, with options
+set either way, and polyplan.planners()
 lists what `polyplan planners` lists."""
 import pytest
 
@@ -8,11 +9,26 @@ from cli_agreement import WORLD_PLANNERS, as_list, agree, compare
 from conftest import cli_json, data, shipped
 
 
-@pytest.mark.parametrize("planner", WORLD_PLANNERS)
-@pytest.mark.parametrize("world", shipped("worlds"))
+CAR_PLANNERS = [p.name for p in polyplan.planners() if "car" in p.space]
+CAR_WORLDS = [w for w in shipped("worlds") if polyplan.read_world(data("worlds", w)).car]
+
+
+@pytest.mark.parametrize("world, planner", [(w, p) for w in shipped("worlds") for p in WORLD_PLANNERS
+                                            if not (w in CAR_WORLDS and p in CAR_PLANNERS)])
 def test_world_plans_match_the_program(world, planner):
+    """A car's world is refused alike by the planners that do not steer."""
     path = data("worlds", world)
     compare(["plan", path, "--planner", planner], lambda: polyplan.plan(polyplan.read_world(path), planner=planner))
+
+
+@pytest.mark.parametrize("planner", CAR_PLANNERS)
+@pytest.mark.parametrize("world", CAR_WORLDS)
+def test_car_plans_match_the_program(world, planner):
+    """Every car planner (rrt and its kin plan the car in a car's world), stopped by an iteration
+    limit rather than the clock so that both runs give one answer."""
+    path = data("worlds", world)
+    compare(["plan", path, "--planner", planner, "--iterations", "3000"],
+            lambda: polyplan.plan(polyplan.read_world(path), planner=planner, iterations=3000))
 
 
 def test_options_reach_the_planner_as_on_the_command_line():

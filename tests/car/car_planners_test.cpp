@@ -27,13 +27,13 @@ PlanReport<CarState> plan(const std::string& planner, const World& world, Option
 
 TEST(CarPlanners, AReedsSheppCarTurnsRoundInACorridorNarrowerThanTwoRadiiADubinsCarCannot) {
   const World reeds_shepp = shipped("car_u_turn", true), dubins = shipped("car_u_turn", false);
-  for (const char* planner : {"hybrid-astar", "car-rrt"}) {
+  for (const char* planner : {"hybrid-astar", "car-rrt", "rrt", "rrtconnect"}) {
     SCOPED_TRACE(planner);
     const auto turned = plan(planner, reeds_shepp);
     ASSERT_TRUE(turned.found) << turned.why_not;
     EXPECT_GE(turned.facts.count("gear_changes"), 2) << "a three-point turn at least";
     if (auto why = test::sampled_car_overlap(reeds_shepp, turned.path)) ADD_FAILURE() << *why;
-    const auto stuck = plan(planner, dubins, {{"time", "1"}});
+    const auto stuck = plan(planner, dubins, {{"time", "1"}, {"iterations", "2000"}});
     EXPECT_FALSE(stuck.found);
   }
   EXPECT_EQ(plan("hybrid-astar", dubins).status, PlanStatus::not_found);  // it closes every bin it reaches

@@ -184,7 +184,7 @@ TEST(Plan, ACarWorldIsRefusedByEveryPlannerThatDoesNotSteer) {
   std::ofstream(world) << R"({"bounds": [0, 0, 20, 10], "obstacles": [],
     "robot": {"parts": [[[-1, -1], [3, -1], [3, 1], [-1, 1]]], "car": {"turning_radius": 2, "reverse": true}},
     "start": [5, 5, 0], "goal": [15, 5, 180]})";
-  for (const char* planner : {"visibility", "rotation", "rrt"}) {
+  for (const char* planner : {"visibility", "rotation", "trapezoid"}) {
     const CliRun run = run_polyplan("plan '" + world.string() + "' --planner " + planner);
     EXPECT_EQ(run.exit_code, 2) << planner;
     EXPECT_NE(run.err.find("robot.car: the robot steers like a car, and the planner " + std::string(planner) +
@@ -195,4 +195,36 @@ TEST(Plan, ACarWorldIsRefusedByEveryPlannerThatDoesNotSteer) {
   // The C-space of the car's body, as it is drawn, is still the translating robot's.
   EXPECT_EQ(run_polyplan("cspace '" + world.string() + "'").exit_code, 0);
   fs::remove(world);
+}
+
+TEST(Plan, ACarWorldIsPlannedByHybridAStarByDefaultAndByRrtWhenAsked) {
+  // The U-turn in a corridor narrower than two turning radii: the car must reverse.
+  for (const std::string planner : {"", " --planner rrt", " --planner rrtconnect --iterations 3000"}) {
+    SCOPED_TRACE(planner);
+    const CliRun run = run_polyplan("plan " + world("car_u_turn.json") + planner + " --json -");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    const auto plan = nlohmann::json::parse(run.out);
+    if (planner.empty()) EXPECT_EQ(plan["search"]["algorithm"], "hybrid A*");
+    else EXPECT_EQ(plan["roadmap"]["kind"], planner.substr(11, planner.find(' ', 11) - 11));
+    ASSERT_TRUE(plan["found"].get<bool>());
+    EXPECT_EQ(plan["certified_by"].get<std::string>().rfind("swept-body enclosures", 0), 0u);
+    ASSERT_EQ(plan["segments"].size() + 1, plan["path"].size());
+    double length = 0;
+    int reversing = 0;
+    for (const auto& s : plan["segments"]) {
+      length += s["length"].get<double>();
+      reversing += s["gear"] == -1;
+    }
+    EXPECT_NEAR(length, plan["length"].get<double>(), 1e-9);
+    EXPECT_GT(reversing, 0) << "a U-turn narrower than 2R needs reverse";
+    EXPECT_GE(plan["gear_changes"].get<int>(), 1);
+    EXPECT_EQ(plan["path"][0], nlohmann::json::array({6, 2.5, 0}));
+  }
+  const fs::path svg = fs::temp_directory_path() / "polyplan_cli_test_car.svg";
+  const CliRun drawn = run_polyplan("plan " + world("car_u_turn.json") + " --planner rrt --svg '" + svg.string() + "'");
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+  EXPECT_NE(drawn.out.find("gear change"), std::string::npos) << drawn.out;
+  const std::string picture = slurp(svg);
+  EXPECT_NE(picture.find("tree ("), std::string::npos) << "the tree is drawn with its curves";
+  fs::remove(svg);
 }

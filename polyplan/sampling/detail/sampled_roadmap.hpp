@@ -48,12 +48,12 @@ class SampledRoadmap {
       space_->coordinates(configuration, scratch_);
       at = scratch_;
     }
-    nodes_.neighbours().nearest(at, neighbour_count(), near_);
+    nodes_.nearest(at, neighbour_count(), near_);
     const std::size_t id = nodes_.add(std::move(configuration), at);
     boost::add_vertex(graph_);
     for (std::size_t n : near_)
       if (const Join how = join(n); how != Join::none)
-        boost::add_edge(n, id, SampledEdge{sampling_distance(metric(), nodes_.coordinates(n), at), how == Join::certified},
+        boost::add_edge(n, id, SampledEdge{edge_length(n, at), how == Join::certified},
                         graph_);
     return id;
   }
@@ -63,7 +63,7 @@ class SampledRoadmap {
   SearchResult<Vertex> search(std::size_t start, std::size_t goal, const SearchOptions& options) {
     const auto to_goal = nodes_.coordinates(goal);
     return shortest_path(
-        graph_, start, goal, options, [&](Vertex v) { return sampling_distance(metric(), nodes_.coordinates(v), to_goal); },
+        graph_, start, goal, options, [&](Vertex v) { return space_->distance(nodes_.coordinates(v), to_goal); },
         [&](const typename Graph::edge_descriptor& e) { return graph_[e].length; }, workspace_);
   }
 
@@ -86,7 +86,13 @@ class SampledRoadmap {
   }
 
  private:
-  SamplingMetric metric() const { return space_->metric(); }
+  // An edge's length: its motion's, or in a space that is not symmetric the longer of its two
+  // (so that the distance to the goal stays a lower bound on the search's costs, which the
+  // triangle inequality of a shortest curves' length gives).
+  double edge_length(std::size_t n, std::span<const double> at) const {
+    const double there = space_->distance(nodes_.coordinates(n), at);
+    return space_->symmetric() ? there : std::max(there, space_->distance(at, nodes_.coordinates(n)));
+  }
   std::size_t neighbour_count() const {
     if (k_ > 0) return k_;
     return static_cast<std::size_t>(std::ceil(k_factor_ * std::log(static_cast<double>(nodes_.size()) + 1)));
