@@ -15,17 +15,7 @@ namespace {
 constexpr std::size_t kMostBodiesPerPath = 80;
 
 std::vector<std::vector<svg::Point2>> body_at(const Robot& robot, const CarPose& pose) {
-  const double c = std::cos(pose.theta), s = std::sin(pose.theta);
-  std::vector<std::vector<svg::Point2>> rings;
-  for (const Ring& part : robot.parts) {
-    std::vector<svg::Point2> ring;
-    for (const ExactPoint& p : part) {
-      const double px = to_double(p.x), py = to_double(p.y);
-      ring.push_back({pose.x + c * px - s * py, pose.y + s * px + c * py});
-    }
-    rings.push_back(std::move(ring));
-  }
-  return rings;
+  return placed_robot(robot, pose.x, pose.y, pose.theta);
 }
 
 svg::Box2 view_of(const World& world, const std::vector<PlanReport<CarState>>& reports) {

@@ -45,19 +45,7 @@ std::vector<Sample> samples(const std::vector<Pose>& path, double radius, double
   return out;
 }
 
-std::vector<std::vector<svg::Point2>> robot_at(const Robot& robot, const Sample& s) {
-  const double c = std::cos(s.angle), sn = std::sin(s.angle);
-  std::vector<std::vector<svg::Point2>> rings;
-  for (const Ring& part : robot.parts) {
-    std::vector<svg::Point2> ring;
-    for (const ExactPoint& p : part) {
-      const double px = to_double(p.x), py = to_double(p.y);
-      ring.push_back({s.x + c * px - sn * py, s.y + sn * px + c * py});
-    }
-    rings.push_back(std::move(ring));
-  }
-  return rings;
-}
+std::vector<std::vector<svg::Point2>> robot_at(const Robot& robot, const Sample& s) { return placed_robot(robot, s.x, s.y, s.angle); }
 
 svg::Box2 world_box(const World& world, const std::vector<std::vector<Sample>>& tracks, const Robot& robot) {
   if (world.bounds)

@@ -3,6 +3,7 @@
 #include <polyplan/draw/theme.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -181,6 +182,20 @@ svg::Box2 view_box(const World& world, const CSpace& cspace) {
       for (const ExactPoint& p : part) extend(p);
   }
   return box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
+}
+
+std::vector<std::vector<svg::Point2>> placed_robot(const Robot& robot, double x, double y, double radians) {
+  const double c = std::cos(radians), s = std::sin(radians);
+  std::vector<std::vector<svg::Point2>> rings;
+  for (const Ring& part : robot.parts) {
+    std::vector<svg::Point2> ring;
+    for (const ExactPoint& p : part) {
+      const double px = to_double(p.x), py = to_double(p.y);
+      ring.push_back({x + c * px - s * py, y + s * px + c * py});
+    }
+    rings.push_back(std::move(ring));
+  }
+  return rings;
 }
 
 void draw_surroundings(svg::Drawing& drawing, const World& world) {

@@ -18,6 +18,10 @@ svg::Box2 view_box(const World& world, const CSpace& cspace);
 // The bounds and the obstacles (with holes), a legend entry each: the world without its robot.
 void draw_surroundings(svg::Drawing& drawing, const World& world);
 
+// The robot's parts placed with its reference point at (x, y), turned by `radians`: the rings a
+// strobe draws (rotating robots, cars).
+std::vector<std::vector<svg::Point2>> placed_robot(const Robot& robot, double x, double y, double radians);
+
 // The world as its file describes it: bounds, obstacles (with holes), the robot placed at the
 // first start, and the starts and goals; a legend entry each.
 void draw_world(svg::Drawing& drawing, const World& world);
