@@ -106,7 +106,8 @@ def planners() -> List[PlannerInfo]:
     """Every planner of the registry, as `polyplan planners --json -` lists them.
 
     Each is a PlannerInfo(name, space, description, options); space says what it plans for (a
-    translating robot, a rotating robot, a planar arm) and options are Option(name, kind,
+    translating robot, a rotating robot, a steered car, a planar arm: prm, rrt and their kin are
+    listed for each space they plan in) and options are Option(name, kind,
     default, help): polyplan.planner(info.name, problem, **{option.name: value})."""
     return [PlannerInfo(name, space, description, [Option(*o) for o in options])
             for name, space, description, options in _polyplan._planner_list()]
@@ -114,7 +115,8 @@ def planners() -> List[PlannerInfo]:
 
 def planner(name: str, problem, **options) -> Planner:
     """The planner `name` built for `problem` (a World or an Arm), with its options as keyword
-    arguments: polyplan.planner("visibility", world, search="astar").
+    arguments: polyplan.planner("visibility", world, search="astar"). In a World whose robot is
+    a car, a name registered for the car too (rrt, rrtconnect, ...) plans the car.
 
     polyplan.planners() lists the names and each one's options. The planner builds its roadmap,
     diagram or grid here, once; each Planner.plan(start=..., goal=...) answers one query with it.
