@@ -2,7 +2,7 @@
 //                         [--json FILE|-] [--svg OUT.svg]
 // The world's queries answered by one planner, built once: a translating robot's planner
 // (planners<TranslatingRobot>), a rotating robot's (planners<RotatingRobot>) or, when the world's
-// robot is a car, a car's (planners<SteeredCar>; hybrid-astar unless --planner says otherwise).
+// robot is a car, a car's (planners<SteeredCar>; its first, hybrid-astar, unless --planner says otherwise).
 #include "cli/command.hpp"
 #include "cli/planner_choice.hpp"
 #include "cli/report_output.hpp"
@@ -57,7 +57,7 @@ int run_plan(const PlanCommand& command) {
   print_warnings(warnings);
   if (world.robot.car) {
     command.planner->prefer<SteeredCar>();
-    command.planner->default_to("hybrid-astar");
+    command.planner->default_to(planners<SteeredCar>().entries().front().name);  // the registry lists a space's default first
   } else {
     command.planner->prefer<TranslatingRobot>();
   }

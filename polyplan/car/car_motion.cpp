@@ -18,18 +18,27 @@ double car_distance(const CarSteering& steering, const CarPose& from, const CarP
   return steering.reverse ? reeds_shepp_distance(from, to, steering.turning_radius) : dubins_distance(from, to, steering.turning_radius);
 }
 
-std::optional<std::vector<CarState>> certified_states(const CarCollision& car, const CarPose& from, const SteeringPath& path,
-                                                      const CarPose& to) {
+std::vector<CarState> states_along(const CarPose& from, const SteeringPath& path, const CarPose& to, double radius) {
   std::vector<CarState> states;
   CarPose at = from;
   for (const SteeringSegment& segment : path.segments) {
-    if (!car.segment_is_free(at, segment)) return std::nullopt;
-    at = drive(at, segment, car.turning_radius(), segment.length);
+    at = drive(at, segment, radius, segment.length);
     states.push_back({at, segment});
   }
   if (!states.empty()) {  // the curve's end is `to` to its rounding (arrives()); the heading as the car turned
     CarPose& end = states.back().pose;
     end = {to.x, to.y, end.theta + std::remainder(to.theta - end.theta, 2 * pi)};
+  }
+  return states;
+}
+
+// Each segment starts where the one before ends, at the states' own poses (only the last, which
+// starts nothing, is moved onto `to`): certifying from them certifies the states returned.
+std::optional<std::vector<CarState>> certified_states(const CarCollision& car, const CarPose& from, const SteeringPath& path,
+                                                      const CarPose& to) {
+  std::vector<CarState> states = states_along(from, path, to, car.turning_radius());
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    if (!car.segment_is_free(i == 0 ? from : states[i - 1].pose, states[i].arrival)) return std::nullopt;
   }
   return states;
 }

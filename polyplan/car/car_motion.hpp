@@ -17,9 +17,11 @@ namespace polyplan {
 SteeringPath shortest_car_path(const CarSteering& steering, const CarPose& from, const CarPose& to);
 double car_distance(const CarSteering& steering, const CarPose& from, const CarPose& to);
 
-// The states along `path` driven from `from`, one per segment, the last one at `to` (its position
-// exactly, its heading as the car turned, so that headings along a path read continuously), when
-// every segment is certified free; nullopt otherwise.
+// The states along `path` driven from `from` turning with `radius`, one per segment, the last one
+// at `to` (its position exactly, its heading as the car turned, so that headings along a path read
+// continuously).
+std::vector<CarState> states_along(const CarPose& from, const SteeringPath& path, const CarPose& to, double radius);
+// Those states when every segment is certified free; nullopt otherwise.
 std::optional<std::vector<CarState>> certified_states(const CarCollision& car, const CarPose& from, const SteeringPath& path,
                                                       const CarPose& to);
 

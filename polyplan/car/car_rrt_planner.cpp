@@ -3,10 +3,10 @@
 #include <polyplan/car/car_planner.hpp>
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/sampling/sampling_space.hpp>
 
 #include <cmath>
 #include <limits>
-#include <random>
 #include <stdexcept>
 
 namespace polyplan {
@@ -35,8 +35,6 @@ class CarRrtPlanner final : public CarPlanner {
   double miss(const CarPose& end, const CarPose& goal) const {
     return std::max(std::hypot(end.x - goal.x, end.y - goal.y), radius() * std::abs(std::remainder(end.theta - goal.theta, 2 * pi)));
   }
-
-  double uniform01() { return static_cast<double>(random_() >> 11) * 0x1.0p-53; }
 
   // The node nearest to `to` by the steering distance; the Euclidean distance bounds it from
   // below, so a node farther than the best so far in the plane is never measured.
@@ -92,10 +90,10 @@ class CarRrtPlanner final : public CarPlanner {
     while (iterations < options_.iterations) {
       if (clock.seconds() >= options_.time) break;
       ++iterations;
-      const CarPose sample = uniform01() < options_.goal_bias
+      const CarPose sample = uniform01(random_) < options_.goal_bias
                                  ? goal
-                                 : CarPose{box_.xmin + uniform01() * (box_.xmax - box_.xmin), box_.ymin + uniform01() * (box_.ymax - box_.ymin),
-                                           (2 * uniform01() - 1) * pi};
+                                 : CarPose{box_.xmin + uniform01(random_) * (box_.xmax - box_.xmin), box_.ymin + uniform01(random_) * (box_.ymax - box_.ymin),
+                                           (2 * uniform01(random_) - 1) * pi};
       const std::size_t from = nearest(nodes, sample);
       std::optional<CarState> chosen;
       double chosen_distance = HUGE_VAL;
@@ -130,7 +128,7 @@ class CarRrtPlanner final : public CarPlanner {
   CarRrtOptions options_;
   CarSamplingBox box_;
   std::vector<SteeringSegment> controls_;
-  std::mt19937_64 random_;
+  SamplingRandom random_;  // sampling/sampling_space.hpp's, made into doubles by its uniform01: one seed, one path everywhere
 };
 
 }  // namespace

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 
 namespace polyplan {
 namespace {
@@ -69,15 +68,16 @@ class CarSamplingSpace final : public SamplingSpace<SteeredCar> {
   CarState goal(const Query& query) const override { return {goal_pose(query), {}}; }
   std::string certificate_method() const override { return CarCollision::method; }
 
-  // Each motion cut at its segments' joints; each joint of the sampled path kept as it was
-  // certified from (its heading as drawn, not as the car turned to it).
+  // Each motion cut at its segments' joints (certified already: the planner certified every motion
+  // of the path once more before it asks); each joint of the sampled path kept as it was certified
+  // from (its heading as drawn, not as the car turned to it).
   std::vector<CarState> reported_path(std::vector<CarState> path, Facts& facts) const override {
     std::vector<CarState> cut{path.front()};
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
-      auto states = states_between(path[i], path[i + 1]);
-      if (!states) throw std::logic_error("car sampling space: a certified motion is not free when it is cut at its joints");
-      if (!states->empty()) states->back().pose = path[i + 1].pose;
-      cut.insert(cut.end(), states->begin(), states->end());
+      const CarPose &from = path[i].pose, &to = path[i + 1].pose;
+      std::vector<CarState> states = states_along(from, shortest_car_path(steering_, from, to), to, steering_.turning_radius);
+      if (!states.empty()) states.back().pose = to;
+      cut.insert(cut.end(), states.begin(), states.end());
     }
     facts.set("gear_changes", gear_changes(cut));
     return cut;

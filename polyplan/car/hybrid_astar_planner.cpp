@@ -115,7 +115,7 @@ class HybridAStarPlanner final : public CarPlanner {
       if (best.at(bin) != id || !closed.insert(bin).second) continue;
       ++expanded;
       const CarState here = nodes[id].state;
-      if (expanded % options_.analytic_every == 1 || options_.analytic_every == 1) {
+      if ((expanded - 1) % options_.analytic_every == 0) {  // the first expansion and every analytic_every-th after it
         ++analytic_tries;
         if (auto rest = certified_states(here.pose, steering_path(here.pose, goal), goal)) {
           attempt.path = path_to(nodes, id);

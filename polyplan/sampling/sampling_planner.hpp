@@ -164,12 +164,16 @@ void SampledConfigurations<Space>::within(std::span<const double> at, double rad
                                           Toward toward) const {
   if (space_->distance_is_metric()) return index_.within(at.first(index_.dimension()), radius, out);
   index_.within(at.first(index_.dimension()), widened(radius), out);
-  std::erase_if(out, [&](std::size_t id) {
+  ranked_.clear();
+  for (std::size_t id : out) {
     const auto placed_at = coordinates(id);
     const double bound = toward == Toward::asked ? space_->distance_bound(placed_at, at) : space_->distance_bound(at, placed_at);
-    return bound > widened(radius) || distance(id, at, toward) > radius;
-  });
-  by_distance(at, out, toward);
+    if (bound > widened(radius)) continue;
+    if (const double d = distance(id, at, toward); d <= radius) ranked_.emplace_back(d, id);
+  }
+  std::sort(ranked_.begin(), ranked_.end());
+  out.clear();
+  for (const auto& [d, id] : ranked_) out.push_back(id);
 }
 
 // A tree of configurations (rrt, rrtconnect, rrtstar): each node but the root joined to its

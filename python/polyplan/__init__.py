@@ -139,7 +139,8 @@ def plan(problem, planner: Optional[str] = None, *, record: bool = True, **optio
     raises InputError. To plan one query of your own, build the planner once with
     polyplan.planner(...) and call its plan(start=..., goal=...)."""
     if planner is None:
-        planner = "grid" if isinstance(problem, Arm) else "hybrid-astar" if getattr(problem, "car", None) else "visibility"
+        car_default = next(p.name for p in planners() if "car" in p.space)  # the registry lists a space's default first
+        planner = "grid" if isinstance(problem, Arm) else car_default if getattr(problem, "car", None) else "visibility"
     return _polyplan._planner(planner, problem, options).plan_all(record)
 
 
