@@ -1,7 +1,8 @@
 """Planning releases the GIL: Python runs while a plan is made, and two threads planning on two
-worlds finish in about the time of one on two cores (the speed-up is shown, with a margin wide
-enough for a busy machine; a planner holding the GIL would give 1.0)."""
-import os
+worlds plan at the same time. The proof is the overlap of the two calls, not a speed-up: a planner
+holding the GIL lets the second call begin only when the first has returned, however idle the
+machine, while a speed-up depends on how busy the machine is (a loaded CI runner gave 1.14 on two
+cores). The speed-up is printed for a reader; performance claims live in bench/."""
 import threading
 import time
 
@@ -45,8 +46,7 @@ def test_python_runs_while_a_plan_is_made():
     assert counted[0] > 50, counted[0]
 
 
-@pytest.mark.skipif((os.cpu_count() or 1) < 2, reason="a speed-up needs two cores")
-def test_two_threads_on_two_worlds_take_about_the_time_of_one():
+def test_two_threads_on_two_worlds_plan_at_the_same_time():
     first, second = worlds()
     for w in (first, second):
         polyplan.cspace(w)
@@ -55,19 +55,30 @@ def test_two_threads_on_two_worlds_take_about_the_time_of_one():
     sequential = time.perf_counter() - began
 
     results = [None, None]
-    threads = [threading.Thread(target=lambda i=i, w=w: results.__setitem__(i, work(w))) for i, w in enumerate((first, second))]
+    spans = [None, None]
+
+    def plan(i, world):
+        entered = time.perf_counter()
+        results[i] = work(world)
+        spans[i] = (entered, time.perf_counter())
+
+    threads = [threading.Thread(target=plan, args=(i, w)) for i, w in enumerate((first, second))]
     began = time.perf_counter()
     for t in threads:
         t.start()
     for t in threads:
         t.join()
     parallel = time.perf_counter() - began
-    speedup = sequential / parallel
-    print(f"two plans: {sequential:.2f} s one after the other, {parallel:.2f} s in two threads: speed-up {speedup:.2f}")
+    print(f"two plans: {sequential:.2f} s one after the other, {parallel:.2f} s in two threads: "
+          f"speed-up {sequential / parallel:.2f}")
     # The same answers (one seed, one path) ...
     assert [(r.status, r.length) for r in results] == [(r.status, r.length) for r in alone]
-    # ... in parallel.
-    assert speedup > 1.4, f"speed-up {speedup:.2f}"
+    # ... from two calls that ran at once: with the GIL held, the later call could only begin
+    # once the earlier one had returned, and the overlap would be nil.
+    overlap = min(end for _, end in spans) - max(entered for entered, _ in spans)
+    shorter = min(end - entered for entered, end in spans)
+    assert shorter > 0.2, "the plans are too quick to show anything"
+    assert overlap > 0.5 * shorter, f"the calls overlapped {overlap:.2f} s of {shorter:.2f} s"
 
 
 def test_one_world_from_two_threads_takes_turns_and_stays_right():
