@@ -104,7 +104,8 @@ struct IncrementalStep {
   IncrementalKey<Cost> key{};  // the key it was popped with
   Cost g_before{}, g_after{}, rhs{};
   Kind kind = Kind::overconsistent;
-  std::vector<Update> updated;  // every vertex UpdateVertex saw in this pass, in order
+  std::vector<Update> updated;  // the vertices whose rhs or open-list membership this pass changed, in order
+                                // (the popped vertex itself too, when it was raised)
 };
 
 // BGL-visitor-like hook: called after each pass with what it did; the search is there to be read
@@ -238,18 +239,27 @@ class IncrementalSearch {
 
   // Start ... goal, each step to a neighbour minimising the link cost + g; empty without a path.
   std::vector<vertex_type> path() const {
+    std::vector<vertex_type> path = path_to_root(aim_);
+    if constexpr (from_start) std::reverse(path.begin(), path.end());
+    return path;
+  }
+
+  // v, then each step to a neighbour minimising the link cost + g, to the vertex the search grows
+  // from (D* Lite: the goal, a path v → goal; LPA*: the start, a path v → start on the reversed
+  // edges). For any v whose g is settled: the aimed-at vertex and every vertex on its path. Empty
+  // when g(v) is infinite.
+  std::vector<vertex_type> path_to_root(vertex_type v) const {
     std::vector<vertex_type> path;
-    if (records_[aim_].g == cost_type::infinity()) return path;
-    path.push_back(aim_);
+    if (records_[v].g == cost_type::infinity()) return path;
+    path.push_back(v);
     while (path.back() != root_) {
-      const vertex_type v = path.back();
-      const auto [parent, through] = best_parent(v);
+      const vertex_type u = path.back();
+      const auto [parent, through] = best_parent(u);
       // g strictly decreases along a consistent chain with positive costs; anything else is a bug.
-      if (through != records_[v].g || !(records_[parent].g < records_[v].g) || path.size() > records_.size())
+      if (through != records_[u].g || !(records_[parent].g < records_[u].g) || path.size() > records_.size())
         throw std::logic_error("incremental search: the g values do not form a path (not computed after a change?)");
       path.push_back(parent);
     }
-    if constexpr (from_start) std::reverse(path.begin(), path.end());
     return path;
   }
 
@@ -375,8 +385,9 @@ class IncrementalSearch {
     pop(u);
     ++counts_.expanded;
     for_each_neighbour(u, [&](vertex_type s) {
+      const cost_type before = records_[s].rhs;
       if (s != root_) records_[s].rhs = std::min(records_[s].rhs, link(s, u) + r.g);
-      note(step, s, update_vertex_queue(s));
+      note(step, s, before, update_vertex_queue(s));
     });
   }
   void raise(vertex_type u, Step* step) {
@@ -385,10 +396,12 @@ class IncrementalSearch {
     r.g = cost_type::infinity();
     ++counts_.expanded;
     for_each_neighbour(u, [&](vertex_type s) {
+      const cost_type before = records_[s].rhs;
       if (s != root_ && records_[s].rhs == link(s, u) + g_old) records_[s].rhs = best_rhs(s);
-      note(step, s, update_vertex_queue(s));
+      note(step, s, before, update_vertex_queue(s));
     });
-    note(step, u, update_vertex_queue(u));
+    const OpenListAction own = update_vertex_queue(u);
+    if (step) step->updated.push_back({u, r.g, r.rhs, own});
     if (step) step->kind = Step::Kind::underconsistent;
   }
 
@@ -401,8 +414,12 @@ class IncrementalSearch {
     step_.rhs = records_[u].rhs;
     return &step_;
   }
-  void note(Step* step, vertex_type v, OpenListAction action) {
-    if (step) step->updated.push_back({v, records_[v].g, records_[v].rhs, action});
+  // A neighbour goes in the step's table when its rhs changed or it entered or left the open list
+  // (the seed's "Updated rhs"); a neighbour merely looked at does not.
+  void note(Step* step, vertex_type v, const cost_type& rhs_before, OpenListAction action) {
+    const Record& r = records_[v];
+    if (step && (r.rhs != rhs_before || action == OpenListAction::added || action == OpenListAction::removed))
+      step->updated.push_back({v, r.g, r.rhs, action});
   }
   void finish_step(Step& step) {
     step.g_after = records_[step.popped].g;

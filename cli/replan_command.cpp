@@ -1,0 +1,196 @@
+// polyplan replan MAP.map --start X,Y --goal X,Y --sensor R [--algorithm dstar-lite|lpastar|astar]
+// [--json FILE|-] [--svg OUT.svg] [--trace FILE|-]: a robot that discovers the MovingAI map as it
+// drives (x = column, y = row), replanning with D* Lite, LPA* or A* from scratch; the trace is
+// seed 002's g/rhs tables for every pass of every replan.
+#include "cli/command.hpp"
+
+#include <polyplan/draw/replan_svg.hpp>
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/incremental/discovering_robot.hpp>
+#include <polyplan/io/movingai_map.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <vector>
+
+namespace polyplan::cli {
+namespace {
+
+struct ReplanCommandOptions {
+  std::string map, start, goal;
+  double sensor = 1.5;
+  std::string algorithm = "dstar-lite";
+  std::string json, svg, trace;
+};
+
+// "X,Y" with integers.
+GridPoint cell_option(const std::string& text, const char* option) {
+  int x = 0, y = 0;
+  char rest = 0;
+  if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &rest) != 2)
+    throw InputError(std::string(option) + " " + text + ": expected X,Y (a column and a row, integers)");
+  return {x, y};
+}
+
+nlohmann::json cost_json(const OctileLength& c) {
+  return c == OctileLength::infinity() ? nlohmann::json(nullptr) : nlohmann::json(c.to_double());
+}
+nlohmann::json point_json(GridPoint p) { return nlohmann::json::array({p.x, p.y}); }
+
+nlohmann::json result_json(const ReplanResult& r, double sensor) {
+  nlohmann::json traversed = nlohmann::json::array(), steps = nlohmann::json::array(), plan = nlohmann::json::array();
+  for (const GridPoint& p : r.traversed) traversed.push_back(point_json(p));
+  for (const GridPoint& p : r.last_plan) plan.push_back(point_json(p));
+  for (const ReplanStep& s : r.steps)
+    steps.push_back({{"at", point_json(s.at)},
+                     {"cost_to_goal", cost_json(s.cost_to_goal)},
+                     {"cost_to_goal_exact", s.cost_to_goal.to_string()},
+                     {"expanded", s.expanded},
+                     {"changed_cells", s.changed_cells},
+                     {"replanned", s.replanned}});
+  nlohmann::json out{{"found", r.found},
+                     {"status", std::string(to_string(r.status))},
+                     {"algorithm", std::string(to_string(r.algorithm))},
+                     {"sensor_radius", sensor},
+                     {"traversed", traversed},
+                     {"traversed_cost", r.traversed_cost.to_double()},
+                     {"traversed_cost_exact", r.traversed_cost.to_string()},
+                     {"moves", r.moves},
+                     {"replans", r.replans},
+                     {"expanded", r.expanded},
+                     {"generated", r.generated},
+                     {"heap_operations", r.heap_operations},
+                     {"seconds", r.seconds},
+                     {"last_plan", plan},
+                     {"steps", steps}};
+  if (r.status == PlanStatus::no_path)
+    out["why_not"] = "the goal is unreachable on what the robot knows after " + std::to_string(r.moves) + " moves";
+  if (r.status == PlanStatus::limit) out["why_not"] = "the robot made its limit of " + std::to_string(r.moves) + " moves";
+  return out;
+}
+
+// The trace as JSON lines (one per replan's start, one per pass) or as the seed's tables.
+class TraceWriter : public ReplanTrace {
+ public:
+  TraceWriter(std::ostream& out, bool tables) : out_(&out), tables_(tables) {}
+  void replan_begins(std::size_t replan, GridPoint at, std::size_t changed) override {
+    if (!tables_) {
+      *out_ << nlohmann::json{{"replan", replan}, {"at", point_json(at)}, {"changed_cells", changed}}.dump() << '\n';
+      return;
+    }
+    *out_ << "replan " << replan << " at " << cell(at) << ": " << changed << " cell(s) changed\n";
+  }
+  void pass(const ReplanTracePass& p) override {
+    if (tables_) return print(p);
+    nlohmann::json updated = nlohmann::json::array(), open = nlohmann::json::array();
+    for (const auto& u : p.updated)
+      updated.push_back({{"cell", point_json(u.at)}, {"g", cost_json(u.g)}, {"rhs", cost_json(u.rhs)}, {"list", u.action}});
+    for (const auto& e : p.open)
+      open.push_back({{"cell", point_json(e.at)}, {"g", cost_json(e.g)}, {"rhs", cost_json(e.rhs)},
+                      {"key", {cost_json(e.key_first), cost_json(e.key_second)}}, {"state", e.state}});
+    *out_ << nlohmann::json{{"replan", p.replan},
+                            {"pass", p.pass},
+                            {"popped", point_json(p.popped)},
+                            {"key", {cost_json(p.key_first), cost_json(p.key_second)}},
+                            {"kind", p.kind},
+                            {"g_before", cost_json(p.g_before)},
+                            {"g_after", cost_json(p.g_after)},
+                            {"rhs", cost_json(p.rhs)},
+                            {"updated", updated},
+                            {"open", open}}
+                 .dump()
+          << '\n';
+  }
+
+ private:
+  static std::string cell(GridPoint p) { return "(" + std::to_string(p.x) + "," + std::to_string(p.y) + ")"; }
+  static std::string number(const OctileLength& c) {
+    if (c == OctileLength::infinity()) return "∞";
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", c.to_double());
+    return text;
+  }
+  // Left-aligned in `width` characters, counted as code points ("∞" is one).
+  static std::string pad(const std::string& text, std::size_t width) {
+    std::size_t shown = 0;
+    for (const unsigned char c : text) shown += (c & 0xC0) != 0x80;
+    return text + std::string(width > shown ? width - shown : 0, ' ');
+  }
+  void row(const std::vector<std::string>& cells) {
+    static constexpr std::size_t widths[] = {10, 9, 9, 20, 6};
+    *out_ << "    ";
+    for (std::size_t i = 0; i < cells.size(); ++i) *out_ << (i + 1 < cells.size() ? pad(cells[i], widths[i]) : cells[i]);
+    *out_ << '\n';
+  }
+  void print(const ReplanTracePass& p) {
+    *out_ << "  pass " << p.pass << ": pops " << cell(p.popped) << " key [" << number(p.key_first) << "; "
+          << number(p.key_second) << "] (" << p.kind << "): g " << number(p.g_before) << " -> " << number(p.g_after)
+          << ", rhs " << number(p.rhs) << '\n';
+    if (!p.updated.empty()) {
+      *out_ << "    updated rhs:\n";
+      row({"cell", "g", "rhs", "list"});
+      for (const auto& u : p.updated) row({cell(u.at), number(u.g), number(u.rhs), u.action});
+    }
+    *out_ << "    open list:\n";
+    row({"cell", "g", "rhs", "key", "state"});
+    for (const auto& e : p.open)
+      row({cell(e.at), number(e.g), number(e.rhs), "[" + number(e.key_first) + "; " + number(e.key_second) + "]", e.state});
+  }
+
+  std::ostream* out_;
+  bool tables_;
+};
+
+int run_replan(const ReplanCommandOptions& o) {
+  ReplanOptions options;
+  const auto algorithm = replan_algorithm_from_string(o.algorithm);
+  if (!algorithm) throw InputError("--algorithm: unknown algorithm \"" + o.algorithm + "\" (dstar-lite, lpastar, astar)");
+  options.algorithm = *algorithm;
+  options.sensor_radius = o.sensor;
+  if (o.json == "-" && o.trace == "-") throw InputError("--json - and --trace -: only one of them can go to standard output");
+  const GridPoint start = cell_option(o.start, "--start"), goal = cell_option(o.goal, "--goal");
+  GridMap map = read_movingai_map(o.map);
+
+  std::ofstream trace_file;
+  std::unique_ptr<TraceWriter> trace;
+  if (o.trace == "-") {
+    trace = std::make_unique<TraceWriter>(std::cout, true);
+  } else if (!o.trace.empty()) {
+    trace_file.open(o.trace);
+    if (!trace_file) throw InputError(o.trace + ": cannot write the trace");
+    trace = std::make_unique<TraceWriter>(trace_file, false);
+  }
+  options.trace = trace.get();
+  const ReplanResult r = drive_through_unknown_map(std::move(map), start, goal, options);
+  if (trace_file && !trace_file.flush()) throw InputError(o.trace + ": cannot write the trace");
+
+  if (!o.json.empty()) write_json(result_json(r, o.sensor), o.json);
+  if (!o.svg.empty()) draw_replan(r, "polyplan replan " + o.map + " (" + o.algorithm + ")").write(o.svg);
+  if (o.json != "-") {
+    std::printf("%s: %s after %zu moves, cost %s (%.6g), %zu replans, %zu expanded, %.3g ms replanning\n",
+                o.algorithm.c_str(), std::string(to_string(r.status)).c_str(), r.moves, r.traversed_cost.to_string().c_str(),
+                r.traversed_cost.to_double(), r.replans, r.expanded, r.seconds * 1e3);
+  }
+  return ok;
+}
+
+}  // namespace
+
+void add_replan_command(CLI::App& app, Action& run) {
+  auto options = std::make_shared<ReplanCommandOptions>();
+  CLI::App* command = app.add_subcommand("replan", "Drive a robot through a MovingAI map it discovers as it goes, replanning");
+  command->add_option("map", options->map, "MovingAI map (.map)")->required();
+  command->add_option("--start", options->start, "Start cell X,Y (column, row)")->required();
+  command->add_option("--goal", options->goal, "Goal cell X,Y (column, row)")->required();
+  command->add_option("--sensor", options->sensor, "Sensor radius in cells (at least √2)")->capture_default_str();
+  command->add_option("--algorithm", options->algorithm, "dstar-lite, lpastar or astar (from scratch)")->capture_default_str();
+  command->add_option("--json", options->json, "Write the drive as JSON to this file ('-' for standard output)");
+  command->add_option("--svg", options->svg, "Draw the map, what the robot knew and its path (SVG)");
+  command->add_option("--trace", options->trace, "Every pass of every replan: JSON lines to this file, or tables with '-'");
+  command->callback([options, &run] { run = [options] { return run_replan(*options); }; });
+}
+
+}  // namespace polyplan::cli

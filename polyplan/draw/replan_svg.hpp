@@ -1,0 +1,16 @@
+#pragma once
+// The picture of a robot's drive through a map it discovered (polyplan replan): the true map, what
+// the robot knew at the end (blocked cells it saw dark, blocked cells it never saw pale, free cells
+// it saw tinted), the traversed path and the last path it planned. Drawn as the map file reads:
+// row 0 at the top.
+#include <polyplan/draw/svg.hpp>
+#include <polyplan/incremental/discovering_robot.hpp>
+
+#include <string>
+
+namespace polyplan {
+
+// `title` is written at the top.
+svg::Drawing draw_replan(const ReplanResult& result, const std::string& title);
+
+}  // namespace polyplan

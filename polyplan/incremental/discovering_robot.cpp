@@ -1,0 +1,254 @@
+#include <polyplan/incremental/discovering_robot.hpp>
+
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/search/changing_grid.hpp>
+#include <polyplan/search/incremental_search.hpp>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <utility>
+
+namespace polyplan {
+namespace {
+
+constexpr std::array<std::pair<ReplanAlgorithm, std::string_view>, 3> algorithm_names{{
+    {ReplanAlgorithm::dstar_lite, "dstar-lite"},
+    {ReplanAlgorithm::lpastar, "lpastar"},
+    {ReplanAlgorithm::astar, "astar"},
+}};
+
+template <IncrementalDirection Direction>
+using GridSearch = IncrementalSearch<GridGraph, ChangingGridCosts, ChangingGridDistance, Direction>;
+
+std::string action_word(OpenListAction action) {
+  switch (action) {
+    case OpenListAction::added: return "add";
+    case OpenListAction::rekeyed: return "readd";
+    case OpenListAction::removed: return "remove";
+    case OpenListAction::unchanged: break;
+  }
+  return "";
+}
+
+std::string state_word(Consistency state) { return state == Consistency::overconsistent ? "over" : "under"; }
+
+// Passes of a search, in cells, for a ReplanTrace.
+template <class Search>
+class TraceAdapter : public IncrementalObserver<Search> {
+ public:
+  TraceAdapter(const ChangingGrid& grid, ReplanTrace& trace) : grid_(&grid), trace_(&trace) {}
+  void begin(std::size_t replan) {
+    replan_ = replan;
+    pass_ = 0;
+  }
+  void step(const Search& search, const IncrementalStep<GridCell, OctileLength>& s) override {
+    using Kind = IncrementalStep<GridCell, OctileLength>::Kind;
+    ReplanTracePass pass;
+    pass.replan = replan_;
+    pass.pass = ++pass_;
+    pass.popped = point(s.popped);
+    pass.key_first = s.key.first;
+    pass.key_second = s.key.second;
+    pass.g_before = s.g_before;
+    pass.g_after = s.g_after;
+    pass.rhs = s.rhs;
+    pass.kind = s.kind == Kind::overconsistent ? "over" : s.kind == Kind::underconsistent ? "under" : "stale key";
+    for (const auto& u : s.updated) pass.updated.push_back({point(u.vertex), u.g, u.rhs, action_word(u.action)});
+    for (const auto& e : search.open_list())
+      pass.open.push_back({point(e.vertex), e.g, e.rhs, e.key.first, e.key.second, state_word(e.state)});
+    trace_->pass(pass);
+  }
+
+ private:
+  GridPoint point(GridCell c) const { return {grid_->x(c), grid_->y(c)}; }
+  const ChangingGrid* grid_;
+  ReplanTrace* trace_;
+  std::size_t replan_ = 0, pass_ = 0;
+};
+
+// One algorithm behind the robot's loop: told where the robot is and what changed, asked to plan.
+class Replanner {
+ public:
+  virtual ~Replanner() = default;
+  virtual void moved(GridCell at) = 0;
+  virtual void changed(const std::vector<ChangedMove>& moves) = 0;
+  virtual void replan(std::size_t replan) = 0;
+  virtual OctileLength cost_from(GridCell at) const = 0;
+  virtual std::vector<GridCell> path_from(GridCell at) const = 0;
+  virtual const IncrementalCounts& counts() const = 0;
+};
+
+// Every algorithm searches from the goal towards the robot, so g(at) is the robot's cost to go and
+// path_to_root(at) its route; the grid's costs are symmetric, which LPA* (whose edges point away
+// from its root) needs for that.
+template <IncrementalDirection Direction>
+class SearchReplanner : public Replanner {
+ public:
+  SearchReplanner(const ChangingGrid& grid, GridCell start, GridCell goal, ReplanAlgorithm algorithm, ReplanTrace* trace)
+      : search_(grid.graph(), {&grid}, {&grid}, Direction == IncrementalDirection::from_goal ? start : goal,
+                Direction == IncrementalDirection::from_goal ? goal : start),
+        algorithm_(algorithm), at_(start) {
+    if (trace) {
+      adapter_ = std::make_unique<TraceAdapter<Search>>(grid, *trace);
+      search_.set_observer(adapter_.get());
+    }
+  }
+  void moved(GridCell at) override {
+    at_ = at;
+    if constexpr (Direction == IncrementalDirection::from_goal) search_.move_start(at);  // k_m, lazily
+  }
+  void changed(const std::vector<ChangedMove>& moves) override {
+    if (algorithm_ == ReplanAlgorithm::astar) return;  // it forgets everything anyway
+    for (const ChangedMove& m : moves) search_.edge_changed(m.from, m.to, m.old_cost);
+  }
+  void replan(std::size_t replan) override {
+    if (adapter_) adapter_->begin(replan);
+    if (algorithm_ == ReplanAlgorithm::astar) {
+      search_.restart();
+    } else if constexpr (Direction == IncrementalDirection::from_start) {
+      if (search_.goal() != at_) search_.move_goal(at_);  // every queued key recomputed
+    }
+    search_.compute_shortest_path();
+  }
+  OctileLength cost_from(GridCell at) const override { return search_.g(at); }
+  std::vector<GridCell> path_from(GridCell at) const override { return search_.path_to_root(at); }
+  const IncrementalCounts& counts() const override { return search_.counts(); }
+
+ private:
+  using Search = GridSearch<Direction>;
+  Search search_;
+  ReplanAlgorithm algorithm_;
+  GridCell at_;
+  std::unique_ptr<TraceAdapter<Search>> adapter_;
+};
+
+std::unique_ptr<Replanner> make_replanner(const ChangingGrid& grid, GridCell start, GridCell goal, const ReplanOptions& options) {
+  // LPA* grows from its start: its root is the robot's goal, the robot's cell the goal it aims at.
+  if (options.algorithm == ReplanAlgorithm::lpastar)
+    return std::make_unique<SearchReplanner<IncrementalDirection::from_start>>(grid, start, goal, options.algorithm, options.trace);
+  return std::make_unique<SearchReplanner<IncrementalDirection::from_goal>>(grid, start, goal, options.algorithm, options.trace);
+}
+
+void check_cell(const GridMap& map, GridPoint p, const char* what) {
+  const std::string at = std::string(what) + " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")";
+  if (p.x < 0 || p.y < 0 || p.x >= map.width || p.y >= map.height)
+    throw InputError(map.source + ": the " + at + " is outside the " + std::to_string(map.width) + " x " +
+                     std::to_string(map.height) + " map");
+  if (map.is_blocked(p.x, p.y)) throw InputError(map.source + ": the " + at + " is a blocked cell");
+}
+
+void check_options(const ReplanOptions& options) {
+  const double r = options.sensor_radius;
+  if (!std::isfinite(r) || r * r < 2.0)
+    throw InputError("sensor radius: must be a finite number of at least √2 ≈ 1.41421357 (the robot must see every "
+                     "cell its next move touches), got " + std::to_string(r));
+}
+
+// What the robot knows, and the grid it plans on (unknown cells free).
+struct Knowledge {
+  Knowledge(int width, int height)
+      : grid(width, height), cells(static_cast<std::size_t>(width) * height, CellKnowledge::unknown) {}
+  // Senses the cells within `radius` of `at`; returns how many cells changed their believed state
+  // and appends the moves that changed.
+  std::size_t sense(const GridMap& truth, GridPoint at, double radius, std::vector<ChangedMove>& changed) {
+    std::size_t changed_cells = 0;
+    const int reach = static_cast<int>(std::floor(radius));
+    for (int dy = -reach; dy <= reach; ++dy)
+      for (int dx = -reach; dx <= reach; ++dx) {
+        const int x = at.x + dx, y = at.y + dy;
+        if (!grid.contains(x, y) || static_cast<double>(dx * dx + dy * dy) > radius * radius) continue;
+        const bool blocked = truth.is_blocked(x, y);
+        const GridCell c = grid.cell(x, y);
+        cells[c] = blocked ? CellKnowledge::blocked : CellKnowledge::free;
+        changed_cells += grid.set_blocked(c, blocked, changed);
+      }
+    return changed_cells;
+  }
+  ChangingGrid grid;
+  std::vector<CellKnowledge> cells;
+};
+
+}  // namespace
+
+std::string_view to_string(ReplanAlgorithm algorithm) {
+  for (const auto& [value, name] : algorithm_names)
+    if (value == algorithm) return name;
+  return "unknown";
+}
+
+std::optional<ReplanAlgorithm> replan_algorithm_from_string(std::string_view name) {
+  for (const auto& [value, text] : algorithm_names)
+    if (text == name) return value;
+  return std::nullopt;
+}
+
+ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint goal, const ReplanOptions& options) {
+  check_options(options);
+  check_cell(truth, start, "start");
+  check_cell(truth, goal, "goal");
+  Knowledge known(truth.width, truth.height);
+  const GridCell goal_cell = known.grid.cell(goal.x, goal.y);
+  GridCell at = known.grid.cell(start.x, start.y);
+  const auto replanner = make_replanner(known.grid, at, goal_cell, options);
+  const std::size_t limit = options.max_moves ? options.max_moves : 4 * known.cells.size();
+
+  ReplanResult result;
+  result.algorithm = options.algorithm;
+  result.traversed = {start};
+  std::vector<ChangedMove> changed;
+  for (bool first = true;; first = false) {
+    const GridPoint here{known.grid.x(at), known.grid.y(at)};
+    if (options.world_changes) options.world_changes(result.moves, truth);
+    changed.clear();
+    ReplanStep step{here, {}, 0, known.sense(truth, here, options.sensor_radius, changed), false};
+    if (at == goal_cell) {
+      result.status = PlanStatus::solved;
+      break;
+    }
+    if (first || !changed.empty()) {
+      const auto began = std::chrono::steady_clock::now();
+      const std::size_t expanded = replanner->counts().expanded;
+      if (options.trace) options.trace->replan_begins(result.replans + 1, here, step.changed_cells);
+      replanner->changed(changed);
+      replanner->replan(++result.replans);
+      result.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      step.replanned = true;
+      step.expanded = replanner->counts().expanded - expanded;
+    }
+    step.cost_to_goal = replanner->cost_from(at);
+    result.steps.push_back(step);
+    if (step.cost_to_goal == OctileLength::infinity()) {
+      result.status = PlanStatus::no_path;
+      result.last_plan.clear();
+      break;
+    }
+    const std::vector<GridCell> route = replanner->path_from(at);
+    if (step.replanned) {
+      result.last_plan.clear();
+      for (const GridCell c : route) result.last_plan.push_back({known.grid.x(c), known.grid.y(c)});
+    }
+    if (result.moves == limit) {
+      result.status = PlanStatus::limit;
+      break;
+    }
+    result.traversed_cost = result.traversed_cost + known.grid.cost(at, route[1]);
+    at = route[1];
+    ++result.moves;
+    result.traversed.push_back({known.grid.x(at), known.grid.y(at)});
+    replanner->moved(at);
+  }
+  result.found = result.status == PlanStatus::solved;
+  const IncrementalCounts& counts = replanner->counts();
+  result.expanded = counts.expanded;
+  result.generated = counts.generated;
+  result.heap_operations = counts.heap_operations();
+  result.width = truth.width;
+  result.height = truth.height;
+  result.knowledge = std::move(known.cells);
+  result.truth = std::move(truth);
+  return result;
+}
+
+}  // namespace polyplan

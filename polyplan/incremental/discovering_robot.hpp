@@ -1,0 +1,108 @@
+#pragma once
+// A robot that discovers its map as it drives (Koenig & Likhachev's setting for D* Lite): on a
+// MovingAI grid it knows nothing at first but its own cell, assumes every unknown cell free, and at
+// every cell it stands on senses each cell whose centre lies within Euclidean distance R of its own
+// centre. It moves on the 8-connected grid (steps 1 and √2, no corner cutting) along a shortest path
+// on what it knows, and replans whenever what it knows changes:
+//
+//   dstar_lite  D* Lite from the goal; the start moves with the robot (k_m)
+//   lpastar     LPA* from the goal, its open list re-keyed each time the robot has moved
+//   astar       a search from scratch each time (repeated A*, on the same graph, costs and heap)
+//
+// All three run on exact costs (OctileLength), so they plan the same costs: only the work differs.
+// The robot stops at the goal, or as soon as the goal is unreachable on what it knows (no_path).
+#include <polyplan/io/movingai_map.hpp>
+#include <polyplan/plan/plan_report.hpp>
+#include <polyplan/search/octile_length.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace polyplan {
+
+enum class ReplanAlgorithm { dstar_lite, lpastar, astar };
+
+// "dstar-lite", "lpastar", "astar": the command line's and the JSON's words.
+std::string_view to_string(ReplanAlgorithm);
+std::optional<ReplanAlgorithm> replan_algorithm_from_string(std::string_view);
+
+struct GridPoint {
+  int x = 0, y = 0;  // column, row
+  friend bool operator==(const GridPoint&, const GridPoint&) = default;
+};
+
+enum class CellKnowledge : std::uint8_t { unknown, free, blocked };
+
+// One pass of a replan's search, in cells, as seed 002 works it by hand.
+struct ReplanTracePass {
+  struct Cell {
+    GridPoint at;
+    OctileLength g, rhs;
+    std::string action;  // the open list's: "add", "readd" (its key changed), "remove", "" (none)
+  };
+  struct Open {
+    GridPoint at;
+    OctileLength g, rhs, key_first, key_second;
+    std::string state;  // "over" (g > rhs) or "under" (g < rhs)
+  };
+  std::size_t replan = 0, pass = 0;  // replan counts from 1, pass from 1 within it
+  GridPoint popped;
+  OctileLength key_first, key_second, g_before, g_after, rhs;
+  std::string kind;            // "over" (g := rhs), "under" (g := ∞), "stale key" (put back)
+  std::vector<Cell> updated;   // the rhs values it recomputed, in order
+  std::vector<Open> open;      // the open list after the pass, by key
+};
+
+class ReplanTrace {
+ public:
+  virtual ~ReplanTrace() = default;
+  // Before a replan's first pass: where the robot is and how many cells its sensing changed.
+  virtual void replan_begins(std::size_t replan, GridPoint at, std::size_t changed_cells) = 0;
+  virtual void pass(const ReplanTracePass&) = 0;
+};
+
+struct ReplanOptions {
+  ReplanAlgorithm algorithm = ReplanAlgorithm::dstar_lite;
+  double sensor_radius = 1.5;  // finite and >= 0 (InputError otherwise)
+  std::size_t max_moves = 0;   // 0: 4 x the map's cells; then status limit
+  ReplanTrace* trace = nullptr;
+  // Called before the robot senses, with the moves made so far: a world that changes as the robot
+  // drives (the truth may change; the robot learns of it only where it senses).
+  std::function<void(std::size_t moves, GridMap& truth)> world_changes;
+};
+
+struct ReplanStep {
+  GridPoint at;
+  OctileLength cost_to_goal;    // planned from `at` on the knowledge at that moment (∞: no path)
+  std::size_t expanded = 0;     // by the replan here (0 when nothing changed: the plan held)
+  std::size_t changed_cells = 0;  // cells whose believed state the sensing here changed
+  bool replanned = false;
+};
+
+struct ReplanResult {
+  PlanStatus status = PlanStatus::no_path;  // solved, no_path or limit
+  bool found = false;
+  ReplanAlgorithm algorithm = ReplanAlgorithm::dstar_lite;
+  std::vector<GridPoint> traversed;  // start first; the goal last when found
+  OctileLength traversed_cost;
+  std::size_t moves = 0, replans = 0;
+  std::size_t expanded = 0, generated = 0, heap_operations = 0;  // over every replan
+  // One per cell the robot planned from: traversed[i] for every i but the goal's.
+  std::vector<ReplanStep> steps;
+  int width = 0, height = 0;
+  std::vector<CellKnowledge> knowledge;  // at the end, row-major
+  std::vector<GridPoint> last_plan;      // the last planned path, from where it was made
+  GridMap truth;                         // the map at the end (it may have changed)
+  double seconds = 0;                    // in replanning (changes and searches)
+};
+
+// Throws InputError for a start or goal outside the map or on a blocked cell of the truth, a
+// sensor radius that is negative or not finite.
+ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint goal, const ReplanOptions& options);
+
+}  // namespace polyplan

@@ -1,0 +1,123 @@
+// polyplan replan, run as a user runs it: the drive as JSON (each algorithm planning the same
+// costs, D* Lite with far fewer expansions than A* from scratch), an unreachable goal, the trace as
+// JSON lines and as the seed's tables, the picture, and one-line errors.
+#include "cli_runner.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+
+using namespace polyplan::test;
+
+namespace {
+
+const std::string den312d = "'" + kSource + "/data/movingai/maps/den312d.map'";
+const std::string closed_room = "'" + kSource + "/tests/data/replan/closed_room.map'";
+
+nlohmann::json drive(const std::string& algorithm) {
+  const CliRun run = run_polyplan("replan " + den312d + " --start 60,12 --goal 63,76 --sensor 1.5 --algorithm " + algorithm + " --json -");
+  EXPECT_EQ(run.exit_code, 0) << run.err;
+  return nlohmann::json::parse(run.out);
+}
+
+}  // namespace
+
+TEST(Replan, EachAlgorithmDrivesTheSameCostsWithDifferentWork) {
+  const auto dstar = drive("dstar-lite"), lpa = drive("lpastar"), astar = drive("astar");
+  for (const auto* r : {&dstar, &lpa, &astar}) {
+    EXPECT_EQ((*r)["status"], "solved");
+    EXPECT_EQ((*r)["found"], true);
+    EXPECT_EQ((*r)["traversed_cost_exact"], dstar["traversed_cost_exact"]);
+    EXPECT_EQ((*r)["replans"], dstar["replans"]);
+    ASSERT_EQ((*r)["steps"].size(), (*r)["moves"].get<std::size_t>());
+    ASSERT_EQ((*r)["traversed"].size(), (*r)["moves"].get<std::size_t>() + 1);
+    EXPECT_EQ((*r)["traversed"][0], nlohmann::json::parse("[60, 12]"));
+    EXPECT_EQ((*r)["traversed"].back(), nlohmann::json::parse("[63, 76]"));
+    for (std::size_t i = 0; i < (*r)["steps"].size(); ++i) {
+      EXPECT_EQ((*r)["steps"][i]["at"], (*r)["traversed"][i]);
+      EXPECT_EQ((*r)["steps"][i]["cost_to_goal_exact"], dstar["steps"][i]["cost_to_goal_exact"]) << i;
+    }
+  }
+  // The optimal cost from the start on an empty map (nothing known yet) is the octile distance.
+  EXPECT_EQ(dstar["steps"][0]["cost_to_goal_exact"], "61 + 3√2");
+  EXPECT_LT(10 * dstar["expanded"].get<std::size_t>(), astar["expanded"].get<std::size_t>());
+}
+
+TEST(Replan, AnUnreachableGoalEndsWithNoPath) {
+  const CliRun run = run_polyplan("replan " + closed_room + " --start 0,0 --goal 7,2 --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto r = nlohmann::json::parse(run.out);
+  EXPECT_EQ(r["status"], "no_path");
+  EXPECT_EQ(r["found"], false);
+  EXPECT_EQ(r["steps"].back()["cost_to_goal"], nullptr);
+  EXPECT_EQ(r["why_not"], "the goal is unreachable on what the robot knows after " + std::to_string(r["moves"].get<int>()) + " moves");
+}
+
+TEST(Replan, TracesEveryPassAsJsonLinesOrAsTables) {
+  const std::string file = (std::filesystem::temp_directory_path() / "polyplan_replan_trace.jsonl").string();
+  // Along the room's wall, which the robot discovers a few cells at a time.
+  const CliRun run = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --trace '" + file + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  std::istringstream lines(slurp(file));
+  std::string line;
+  std::size_t replans = 0, passes = 0, open_entries = 0;
+  while (std::getline(lines, line)) {
+    const auto j = nlohmann::json::parse(line);
+    if (j.contains("pass")) {
+      ++passes;
+      EXPECT_EQ(j["replan"], replans);
+      for (const auto& e : j["open"]) {
+        ++open_entries;
+        EXPECT_TRUE(e["state"] == "over" || e["state"] == "under") << e;
+      }
+    } else {
+      EXPECT_EQ(j["replan"], ++replans);
+    }
+  }
+  EXPECT_GT(replans, 1u);
+  EXPECT_GT(passes, replans);
+  EXPECT_GT(open_entries, passes);
+  std::filesystem::remove(file);
+
+  const CliRun tables = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --trace -");
+  ASSERT_EQ(tables.exit_code, 0) << tables.err;
+  EXPECT_NE(tables.out.find("replan 1 at (0,4)"), std::string::npos) << tables.out;
+  // The goal first, its key the octile distance 5 + 4√2 from the start.
+  EXPECT_NE(tables.out.find("pass 1: pops (9,0) key [10.66; 0] (over): g ∞ -> 0, rhs 0"), std::string::npos) << tables.out;
+  EXPECT_NE(tables.out.find("(under)"), std::string::npos) << "a replan raises some g to ∞";
+  EXPECT_NE(tables.out.find("open list:"), std::string::npos);
+}
+
+TEST(Replan, DrawsWhatTheRobotKnew) {
+  const std::string svg = (std::filesystem::temp_directory_path() / "polyplan_replan_test.svg").string();
+  const CliRun run = run_polyplan("replan " + closed_room + " --start 0,0 --goal 4,4 --svg '" + svg + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  EXPECT_NE(run.out.find("dstar-lite: solved after"), std::string::npos) << run.out;
+  const std::string picture = slurp(svg);
+  for (const char* word : {"<svg", "blocked, seen", "blocked, never seen", "traversed"})
+    EXPECT_NE(picture.find(word), std::string::npos) << word;
+  std::filesystem::remove(svg);
+}
+
+TEST(Replan, RefusesBadInputInOneLine) {
+  const struct {
+    std::string arguments;
+    const char* expected;
+  } cases[] = {
+      {"replan " + closed_room + " --start 0,0 --goal 4,4 --algorithm dijkstra", "--algorithm: unknown algorithm \"dijkstra\""},
+      {"replan " + closed_room + " --start 0 --goal 4,4", "--start 0: expected X,Y"},
+      {"replan " + closed_room + " --start 6,1 --goal 4,4", "the start (6, 1) is a blocked cell"},
+      {"replan " + closed_room + " --start 0,0 --goal 10,4", "the goal (10, 4) is outside the 10 x 5 map"},
+      {"replan " + closed_room + " --start 0,0 --goal 4,4 --sensor 1", "sensor radius: must be a finite number of at least √2"},
+      {"replan " + closed_room + " --start 0,0 --goal 4,4 --json - --trace -", "only one of them can go to standard output"},
+      {"replan /nonexistent.map --start 0,0 --goal 4,4", "/nonexistent.map"},
+  };
+  for (const auto& c : cases) {
+    const CliRun run = run_polyplan(c.arguments);
+    EXPECT_EQ(run.exit_code, 2) << c.arguments;
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << c.arguments << ": " << run.err;
+    EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+  }
+}
