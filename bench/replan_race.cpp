@@ -77,12 +77,24 @@ void race_map(const std::filesystem::path& map_file, const std::filesystem::path
 }
 
 // The LPA* experiment: fixed start and goal, cells toggled between episodes.
+// The maze: 30 % of the cells blocked at random, the corners free.
+ChangingGrid maze(std::uint32_t seed) {
+  std::mt19937 random(seed);
+  std::bernoulli_distribution blocked(0.3);
+  ChangingGrid grid(61, 61);
+  std::vector<ChangedMove> ignored;
+  for (GridCell c = 1; c + 1 < grid.graph().cell_count(); ++c)
+    if (blocked(random)) grid.set_blocked(c, true, ignored);
+  return grid;
+}
+
 template <class Search>
-double episodes(ChangingGrid grid, std::size_t count, std::size_t toggles, std::uint32_t seed, bool from_scratch,
-                std::size_t& expanded) {
+double episodes(std::size_t count, std::size_t toggles, std::uint32_t seed, bool from_scratch,
+                std::size_t& expanded, std::size_t& solved) {
+  ChangingGrid grid = maze(seed);
   const GridCell start = grid.cell(0, 0), goal = grid.cell(grid.width() - 1, grid.height() - 1);
   Search search(grid.graph(), {&grid}, {&grid}, start, goal);
-  std::mt19937 random(seed);
+  std::mt19937 random(seed + 1);
   std::uniform_int_distribution<GridCell> any(0, grid.graph().cell_count() - 1);
   std::vector<ChangedMove> changed;
   double seconds = 0;
@@ -98,7 +110,7 @@ double episodes(ChangingGrid grid, std::size_t count, std::size_t toggles, std::
     } else {
       for (const ChangedMove& m : changed) search.edge_changed(m.from, m.to, m.old_cost);
     }
-    search.compute_shortest_path();
+    solved += search.compute_shortest_path();
     seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   }
   expanded = search.counts().expanded;
@@ -106,19 +118,13 @@ double episodes(ChangingGrid grid, std::size_t count, std::size_t toggles, std::
 }
 
 void race_maze(std::size_t count, std::uint32_t seed) {
-  std::mt19937 random(seed);
-  std::bernoulli_distribution blocked(0.3);
-  ChangingGrid grid(61, 61);
-  std::vector<ChangedMove> ignored;
-  for (GridCell c = 1; c + 1 < grid.graph().cell_count(); ++c)
-    if (blocked(random)) grid.set_blocked(c, true, ignored);
   const std::size_t toggles = 4;  // 0.1 % of 3,721 cells
   using Lpa = LpaStar<GridGraph, ChangingGridCosts, ChangingGridDistance>;
   using DLite = DStarLite<GridGraph, ChangingGridCosts, ChangingGridDistance>;
   Totals t[3];
-  t[0].seconds = episodes<DLite>(grid, count, toggles, seed, false, t[0].expanded);
-  t[1].seconds = episodes<Lpa>(grid, count, toggles, seed, false, t[1].expanded);
-  t[2].seconds = episodes<DLite>(grid, count, toggles, seed, true, t[2].expanded);
+  t[0].seconds = episodes<DLite>(count, toggles, seed, false, t[0].expanded, t[0].solved);
+  t[1].seconds = episodes<Lpa>(count, toggles, seed, false, t[1].expanded, t[1].solved);
+  t[2].seconds = episodes<DLite>(count, toggles, seed, true, t[2].expanded, t[2].solved);
   t[2].replans = count;
   print_row("maze 61x61 30%, 4 cells", 0, t);
 }

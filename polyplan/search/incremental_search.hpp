@@ -27,7 +27,8 @@
 //   cost from → to under every cost the edges will take (the free-space distance).
 // - Cost: default-constructed zero, Cost::infinity(), exact +, <=> and ==, to_double() (for
 //   traces). OctileLength (search/octile_length.hpp) on grids: every comparison exact, so the costs
-//   reported equal a fresh search's exactly and ties are true ties.
+//   reported equal a fresh search's exactly and ties are true ties; ScaledLength on a stored
+//   Roadmap (search/roadmap_costs.hpp): integer units, exact sums.
 //
 // Not thread-safe; one search per thread. Heavy include (Boost.Heap): include it where a search
 // is instantiated.

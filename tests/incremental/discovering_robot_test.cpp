@@ -16,7 +16,7 @@
 
 namespace polyplan {
 
-void PrintTo(const OctileLength& l, std::ostream* out) { *out << l.to_string(); }
+inline void PrintTo(const OctileLength& l, std::ostream* out) { *out << l.to_string(); }
 
 namespace {
 

@@ -3,9 +3,12 @@
 #include <polyplan/search/changing_grid.hpp>
 #include <polyplan/search/incremental_search.hpp>
 #include <polyplan/search/octile_length.hpp>
+#include <polyplan/search/roadmap_costs.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <ostream>
@@ -18,7 +21,7 @@
 namespace polyplan {
 
 // gtest prints OctileLength as its exact value.
-void PrintTo(const OctileLength& l, std::ostream* out) { *out << l.to_string(); }
+inline void PrintTo(const OctileLength& l, std::ostream* out) { *out << l.to_string(); }
 
 namespace {
 
@@ -300,6 +303,73 @@ TEST(IncrementalSearch, TheObserverSeesOverAndUnderconsistentPasses) {
   EXPECT_GT(recorder.under, 0u);
   EXPECT_EQ(recorder.mislabelled, 0u);
   expect_optimal(grid, search, "after the diagonal closed");
+}
+
+// A stored Roadmap: random points joined to their nearest neighbours, edges set to infinity, to
+// dearer and back, both ways at once or one way only; against Dijkstra on the same integer costs.
+ScaledLength roadmap_dijkstra(const Roadmap& g, const RoadmapCosts& costs, RoadmapVertexId from, RoadmapVertexId to) {
+  std::vector<ScaledLength> d(num_vertices(g), ScaledLength::infinity());
+  using Item = std::pair<ScaledLength, RoadmapVertexId>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> open;
+  d[from] = ScaledLength();
+  open.push({d[from], from});
+  while (!open.empty()) {
+    const auto [du, u] = open.top();
+    open.pop();
+    if (du != d[u]) continue;
+    for (auto [e, end] = out_edges(u, g); e != end; ++e) {
+      const RoadmapVertexId v = target(*e, g);
+      if (const ScaledLength through = du + costs(u, v); through < d[v]) {
+        d[v] = through;
+        open.push({through, v});
+      }
+    }
+  }
+  return d[to];
+}
+
+TEST(IncrementalSearch, OnAStoredRoadmapWithEdgesChangingEitherWay) {
+  std::mt19937 random(11);
+  std::uniform_int_distribution<long> coordinate(0, 1000);
+  Roadmap g;
+  for (int i = 0; i < 80; ++i) add_vertex(g, ExactPoint{Rational(coordinate(random)), Rational(coordinate(random))});
+  for (RoadmapVertexId u = 0; u < 80; ++u) {
+    std::vector<std::pair<double, RoadmapVertexId>> near;
+    for (RoadmapVertexId v = 0; v < 80; ++v)
+      if (v != u) near.push_back({std::hypot(g[u].x - g[v].x, g[u].y - g[v].y), v});
+    std::sort(near.begin(), near.end());
+    for (int k = 0; k < 4; ++k)
+      if (!boost::edge(u, near[k].second, g).second) add_edge(g, u, near[k].second);
+  }
+  using Lpa = LpaStar<Roadmap, RoadmapCosts, RoadmapDistance>;
+  using DLite = DStarLite<Roadmap, RoadmapCosts, RoadmapDistance>;
+  Lpa lpa(g, RoadmapCosts(g), RoadmapDistance{&g}, 0, 79);
+  DLite dlite(g, RoadmapCosts(g), RoadmapDistance{&g}, 0, 79);
+  std::vector<std::pair<RoadmapVertexId, RoadmapVertexId>> edges;
+  for (auto [e, end] = boost::edges(g); e != end; ++e) edges.push_back({source(*e, g), target(*e, g)});
+  std::uniform_int_distribution<std::size_t> any(0, edges.size() - 1);
+  std::uniform_int_distribution<int> change(0, 3);
+  for (int round = 0; round < 400; ++round) {
+    const auto [u, v] = edges[any(random)];
+    const ScaledLength length = ScaledLength::at_least(std::hypot(g[u].x - g[v].x, g[u].y - g[v].y));
+    const int c = change(random);
+    const ScaledLength cost = c == 0 ? ScaledLength::infinity() : c == 1 ? ScaledLength(3 * length.units()) : length;
+    lpa.update_edge(u, v, cost);
+    dlite.update_edge(u, v, cost);
+    if (c != 3) {  // the other way too, but for one change in four
+      lpa.update_edge(v, u, cost);
+      dlite.update_edge(v, u, cost);
+    }
+    lpa.compute_shortest_path();
+    dlite.compute_shortest_path();
+    ASSERT_EQ(lpa.cost(), roadmap_dijkstra(g, lpa.costs(), 0, 79)) << "round " << round;
+    ASSERT_EQ(dlite.cost(), roadmap_dijkstra(g, dlite.costs(), 0, 79)) << "round " << round;
+    if (const auto path = lpa.path(); !path.empty()) {
+      ScaledLength sum;
+      for (std::size_t i = 1; i < path.size(); ++i) sum = sum + lpa.costs()(path[i - 1], path[i]);
+      ASSERT_EQ(sum, lpa.cost());
+    }
+  }
 }
 
 }  // namespace
