@@ -1,5 +1,5 @@
 // polyplan replan MAP.map --start X,Y --goal X,Y --sensor R [--algorithm dstar-lite|lpastar|astar]
-// [--json FILE|-] [--svg OUT.svg] [--trace FILE|-]: a robot that discovers the MovingAI map as it
+// [--json FILE|-] [--svg OUT.svg [--animate]] [--trace FILE|-]: a robot that discovers the MovingAI map as it
 // drives (x = column, y = row), replanning with D* Lite, LPA* or A* from scratch; the trace is
 // seed 002's g/rhs tables for every pass of every replan.
 #include "cli/command.hpp"
@@ -24,6 +24,7 @@ struct ReplanCommandOptions {
   double sensor = 1.5;
   std::string algorithm = "dstar-lite";
   std::string json, svg, trace;
+  bool animate = false;
 };
 
 // "X,Y" with integers.
@@ -150,6 +151,7 @@ int run_replan(const ReplanCommandOptions& o) {
   if (!algorithm) throw InputError("--algorithm: unknown algorithm \"" + o.algorithm + "\" (dstar-lite, lpastar, astar)");
   options.algorithm = *algorithm;
   options.sensor_radius = o.sensor;
+  if (o.animate && o.svg.empty()) throw InputError("--animate: give --svg OUT.svg for the animation");
   if (o.json == "-" && o.trace == "-") throw InputError("--json - and --trace -: only one of them can go to standard output");
   const GridPoint start = cell_option(o.start, "--start"), goal = cell_option(o.goal, "--goal");
   GridMap map = read_movingai_map(o.map);
@@ -168,7 +170,8 @@ int run_replan(const ReplanCommandOptions& o) {
   if (trace_file && !trace_file.flush()) throw InputError(o.trace + ": cannot write the trace");
 
   if (!o.json.empty()) write_json(result_json(r, o.sensor), o.json);
-  if (!o.svg.empty()) draw_replan(r, "polyplan replan " + o.map + " (" + o.algorithm + ")").write(o.svg);
+  const std::string title = "polyplan replan " + o.map + " (" + o.algorithm + ")";
+  if (!o.svg.empty()) (o.animate ? draw_replan_animation(r, title) : draw_replan(r, title)).write(o.svg);
   if (o.json != "-") {
     std::printf("%s: %s after %zu moves, cost %s (%.6g), %zu replans, %zu expanded, %.3g ms replanning\n",
                 o.algorithm.c_str(), std::string(to_string(r.status)).c_str(), r.moves, r.traversed_cost.to_string().c_str(),
@@ -189,6 +192,7 @@ void add_replan_command(CLI::App& app, Action& run) {
   command->add_option("--algorithm", options->algorithm, "dstar-lite, lpastar or astar (from scratch)")->capture_default_str();
   command->add_option("--json", options->json, "Write the drive as JSON to this file ('-' for standard output)");
   command->add_option("--svg", options->svg, "Draw the map, what the robot knew and its path (SVG)");
+  command->add_flag("--animate", options->animate, "Make the --svg picture an animation, one frame per move");
   command->add_option("--trace", options->trace, "Every pass of every replan: JSON lines to this file, or tables with '-'");
   command->callback([options, &run] { run = [options] { return run_replan(*options); }; });
 }

@@ -149,10 +149,11 @@ void check_options(const ReplanOptions& options) {
 // What the robot knows, and the grid it plans on (unknown cells free).
 struct Knowledge {
   Knowledge(int width, int height)
-      : grid(width, height), cells(static_cast<std::size_t>(width) * height, CellKnowledge::unknown) {}
+      : grid(width, height), cells(static_cast<std::size_t>(width) * height, CellKnowledge::unknown),
+        seen_after(cells.size(), never_seen) {}
   // Senses the cells within `radius` of `at`; returns how many cells changed their believed state
   // and appends the moves that changed.
-  std::size_t sense(const GridMap& truth, GridPoint at, double radius, std::vector<ChangedMove>& changed) {
+  std::size_t sense(const GridMap& truth, GridPoint at, double radius, std::size_t moves, std::vector<ChangedMove>& changed) {
     std::size_t changed_cells = 0;
     const int reach = static_cast<int>(std::floor(radius));
     for (int dy = -reach; dy <= reach; ++dy)
@@ -162,12 +163,14 @@ struct Knowledge {
         const bool blocked = truth.is_blocked(x, y);
         const GridCell c = grid.cell(x, y);
         cells[c] = blocked ? CellKnowledge::blocked : CellKnowledge::free;
+        if (seen_after[c] == never_seen) seen_after[c] = moves;
         changed_cells += grid.set_blocked(c, blocked, changed);
       }
     return changed_cells;
   }
   ChangingGrid grid;
   std::vector<CellKnowledge> cells;
+  std::vector<std::size_t> seen_after;
 };
 
 }  // namespace
@@ -202,7 +205,7 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
     const GridPoint here{known.grid.x(at), known.grid.y(at)};
     if (options.world_changes) options.world_changes(result.moves, truth);
     changed.clear();
-    ReplanStep step{here, {}, 0, known.sense(truth, here, options.sensor_radius, changed), false};
+    ReplanStep step{here, {}, 0, known.sense(truth, here, options.sensor_radius, result.moves, changed), false};
     if (at == goal_cell) {
       result.status = PlanStatus::solved;
       break;
@@ -247,6 +250,7 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
   result.width = truth.width;
   result.height = truth.height;
   result.knowledge = std::move(known.cells);
+  result.seen_after = std::move(known.seen_after);
   result.truth = std::move(truth);
   return result;
 }

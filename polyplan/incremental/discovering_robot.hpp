@@ -84,6 +84,8 @@ struct ReplanStep {
   bool replanned = false;
 };
 
+inline constexpr std::size_t never_seen = static_cast<std::size_t>(-1);
+
 struct ReplanResult {
   PlanStatus status = PlanStatus::no_path;  // solved, no_path or limit
   bool found = false;
@@ -96,6 +98,7 @@ struct ReplanResult {
   std::vector<ReplanStep> steps;
   int width = 0, height = 0;
   std::vector<CellKnowledge> knowledge;  // at the end, row-major
+  std::vector<std::size_t> seen_after;   // the moves made when each cell was first sensed (never_seen)
   std::vector<GridPoint> last_plan;      // the last planned path, from where it was made
   GridMap truth;                         // the map at the end (it may have changed)
   double seconds = 0;                    // in replanning (changes and searches)

@@ -98,6 +98,20 @@ TEST(Replan, DrawsWhatTheRobotKnew) {
   const std::string picture = slurp(svg);
   for (const char* word : {"<svg", "blocked, seen", "blocked, never seen", "traversed"})
     EXPECT_NE(picture.find(word), std::string::npos) << word;
+
+  // Animated: the robot's dot keyed once per cell it stood on (its start, each move, and the
+  // hold at the end), and cells appearing as they are sensed.
+  const CliRun animated = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --json - --svg '" + svg + "' --animate");
+  ASSERT_EQ(animated.exit_code, 0) << animated.err;
+  const auto moves = nlohmann::json::parse(animated.out)["moves"].get<std::size_t>();
+  const std::string frames = slurp(svg);
+  const auto cx = frames.find("attributeName=\"cx\"");
+  ASSERT_NE(cx, std::string::npos);
+  const auto values = frames.find("values=\"", cx), end = frames.find('"', values + 8);
+  const std::string xs = frames.substr(values + 8, end - values - 8);
+  EXPECT_EQ(static_cast<std::size_t>(std::count(xs.begin(), xs.end(), ';')), moves + 1) << xs;
+  EXPECT_NE(frames.find("blocked, not yet seen"), std::string::npos);
+  EXPECT_GT(std::count(frames.begin(), frames.end(), '\n'), 10);
   std::filesystem::remove(svg);
 }
 
@@ -113,6 +127,7 @@ TEST(Replan, RefusesBadInputInOneLine) {
       {"replan " + closed_room + " --start 0,0 --goal 4,4 --sensor 1", "sensor radius: must be a finite number of at least √2"},
       {"replan " + closed_room + " --start 0,0 --goal 4,4 --json - --trace -", "only one of them can go to standard output"},
       {"replan /nonexistent.map --start 0,0 --goal 4,4", "/nonexistent.map"},
+      {"replan " + closed_room + " --start 0,0 --goal 4,4 --animate", "--animate: give --svg OUT.svg"},
   };
   for (const auto& c : cases) {
     const CliRun run = run_polyplan(c.arguments);
