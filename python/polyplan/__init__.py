@@ -30,6 +30,7 @@ from typing import List, NamedTuple, Optional
 from ._polyplan import (  # noqa: F401 (the public names)
     Arm,
     CSpace,
+    Drive,
     InputError,
     Plan,
     Planner,
@@ -38,14 +39,15 @@ from ._polyplan import (  # noqa: F401 (the public names)
     cspace,
     read_arm,
     read_world,
+    replan,
     svg,
 )
 from . import _polyplan
 
 __all__ = [
-    "Arm", "CSpace", "Cells", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
+    "Arm", "CSpace", "Cells", "Drive", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
     "PlannerInfo", "World", "check", "cspace", "plan", "planner", "planners", "plot", "read_arm",
-    "read_world", "svg",
+    "read_world", "replan", "svg",
 ]
 
 

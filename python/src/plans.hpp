@@ -46,5 +46,6 @@ std::unique_ptr<PlannerHandle> make_planner(const std::string& name, pybind11::h
 
 void bind_plans(pybind11::module_& m);
 void bind_planners(pybind11::module_& m);
+void bind_replan(pybind11::module_& m);
 
 }  // namespace polyplan::python
