@@ -22,7 +22,7 @@ namespace {
 struct ReplanCommandOptions {
   std::string map, start, goal;
   double sensor = 1.5;
-  std::string algorithm = "dstar-lite";
+  std::string algorithm{to_string(ReplanAlgorithm::dstar_lite)};
   std::string json, svg, trace;
   bool animate = false;
 };
@@ -147,9 +147,7 @@ class TraceWriter : public ReplanTrace {
 
 int run_replan(const ReplanCommandOptions& o) {
   ReplanOptions options;
-  const auto algorithm = replan_algorithm_from_string(o.algorithm);
-  if (!algorithm) throw InputError("--algorithm: unknown algorithm \"" + o.algorithm + "\" (dstar-lite, lpastar, astar)");
-  options.algorithm = *algorithm;
+  options.algorithm = parse_replan_algorithm(o.algorithm, "--algorithm");
   options.sensor_radius = o.sensor;
   if (o.animate && o.svg.empty()) throw InputError("--animate: give --svg OUT.svg for the animation");
   if (o.json == "-" && o.trace == "-") throw InputError("--json - and --trace -: only one of them can go to standard output");
@@ -170,8 +168,7 @@ int run_replan(const ReplanCommandOptions& o) {
   if (trace_file && !trace_file.flush()) throw InputError(o.trace + ": cannot write the trace");
 
   if (!o.json.empty()) write_json(result_json(r, o.sensor), o.json);
-  const std::string title = "polyplan replan " + o.map + " (" + o.algorithm + ")";
-  if (!o.svg.empty()) (o.animate ? draw_replan_animation(r, title) : draw_replan(r, title)).write(o.svg);
+  if (!o.svg.empty()) (o.animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).write(o.svg);
   if (o.json != "-") {
     std::printf("%s: %s after %zu moves, cost %s (%.6g), %zu replans, %zu expanded, %.3g ms replanning\n",
                 o.algorithm.c_str(), std::string(to_string(r.status)).c_str(), r.moves, r.traversed_cost.to_string().c_str(),

@@ -2,6 +2,7 @@
 
 #include <polyplan/draw/theme.hpp>
 
+#include <string>
 #include <vector>
 
 namespace polyplan {
@@ -20,6 +21,18 @@ std::vector<svg::Point2> centres(const ReplanResult& r, const std::vector<GridPo
   return points;
 }
 
+// The cells' three looks, the same in the picture and in the animation.
+struct CellStyles {
+  svg::Style free = svg::filled(theme::free_tints[0].fill, 1.0, "none", 0);
+  svg::Style unseen = svg::filled(theme::blocked_cell_fill, 0.55, "none", 0);
+  svg::Style seen = svg::filled(theme::obstacle_fill, 1.0, "none", 0);
+  void legend(svg::Drawing& drawing, const char* unseen_label) const {
+    drawing.legend("seen free", free, svg::Swatch::area);
+    drawing.legend("blocked, seen", seen, svg::Swatch::area);
+    drawing.legend(unseen_label, unseen, svg::Swatch::area);
+  }
+};
+
 void draw_cells(svg::Drawing& drawing, const ReplanResult& r) {
   std::vector<svg::Box2> seen_free, seen_blocked, unseen_blocked;
   for (int y = 0; y < r.height; ++y)
@@ -29,15 +42,11 @@ void draw_cells(svg::Drawing& drawing, const ReplanResult& r) {
       if (k == CellKnowledge::blocked) seen_blocked.push_back(cell_box(r, x, y));
       if (k == CellKnowledge::unknown && r.truth.is_blocked(x, y)) unseen_blocked.push_back(cell_box(r, x, y));
     }
-  const svg::Style free_style = svg::filled(theme::free_tints[0].fill, 1.0, "none", 0);
-  const svg::Style unseen_style = svg::filled(theme::blocked_cell_fill, 0.55, "none", 0);
-  const svg::Style seen_style = svg::filled(theme::obstacle_fill, 1.0, "none", 0);
-  drawing.boxes(seen_free, free_style);
-  drawing.boxes(unseen_blocked, unseen_style);
-  drawing.boxes(seen_blocked, seen_style);
-  drawing.legend("seen free", free_style, svg::Swatch::area);
-  drawing.legend("blocked, seen", seen_style, svg::Swatch::area);
-  drawing.legend("blocked, never seen", unseen_style, svg::Swatch::area);
+  const CellStyles styles;
+  drawing.boxes(seen_free, styles.free);
+  drawing.boxes(unseen_blocked, styles.unseen);
+  drawing.boxes(seen_blocked, styles.seen);
+  styles.legend(drawing, "blocked, never seen");
 }
 
 // "0;0;1;1" over "0;t;t;1": hidden until t of the loop, then shown to its end.
@@ -49,29 +58,26 @@ std::string appear_at(double t, const std::string& timing) {
 
 void draw_cells_as_seen(svg::Drawing& drawing, const ReplanResult& r, double frames, const std::string& timing) {
   // Cells grouped by the move after which they were first sensed: one path per group and kind.
-  std::vector<std::vector<svg::Box2>> free_by_move(r.moves + 1), blocked_by_move(r.moves + 1), unseen(1);
+  std::vector<std::vector<svg::Box2>> free_by_move(r.moves + 1), blocked_by_move(r.moves + 1);
+  std::vector<svg::Box2> blocked;
   for (int y = 0; y < r.height; ++y)
     for (int x = 0; x < r.width; ++x) {
       const std::size_t c = static_cast<std::size_t>(y) * r.width + x, m = r.seen_after[c];
       // Every blocked cell pale until it is seen, dark from then on.
-      if (r.truth.is_blocked(x, y)) unseen[0].push_back(cell_box(r, x, y));
+      if (r.truth.is_blocked(x, y)) blocked.push_back(cell_box(r, x, y));
       if (m != never_seen)
         (r.knowledge[c] == CellKnowledge::blocked ? blocked_by_move : free_by_move)[m].push_back(cell_box(r, x, y));
     }
-  const svg::Style free_style = svg::filled(theme::free_tints[0].fill, 1.0, "none", 0);
-  const svg::Style unseen_style = svg::filled(theme::blocked_cell_fill, 0.55, "none", 0);
-  const svg::Style seen_style = svg::filled(theme::obstacle_fill, 1.0, "none", 0);
-  drawing.boxes(unseen[0], unseen_style);
+  const CellStyles styles;
+  drawing.boxes(blocked, styles.unseen);
   for (std::size_t m = 0; m <= r.moves; ++m)
-    for (const auto& [cells, style] : {std::pair{&free_by_move[m], &free_style}, std::pair{&blocked_by_move[m], &seen_style}}) {
+    for (const auto& [cells, style] : {std::pair{&free_by_move[m], &styles.free}, std::pair{&blocked_by_move[m], &styles.seen}}) {
       if (cells->empty()) continue;
       drawing.begin_group("opacity=\"0\"", appear_at(m / frames, timing));
       drawing.boxes(*cells, *style);
       drawing.end_group();
     }
-  drawing.legend("seen free", free_style, svg::Swatch::area);
-  drawing.legend("blocked, seen", seen_style, svg::Swatch::area);
-  drawing.legend("blocked, not yet seen", unseen_style, svg::Swatch::area);
+  styles.legend(drawing, "blocked, not yet seen");
 }
 
 void draw_frame_and_title(svg::Drawing& drawing, const ReplanResult& r, const std::string& title) {
@@ -82,6 +88,10 @@ void draw_frame_and_title(svg::Drawing& drawing, const ReplanResult& r, const st
 }
 
 }  // namespace
+
+std::string replan_title(const ReplanResult& r) {
+  return "polyplan replan " + r.truth.source + " (" + std::string(to_string(r.algorithm)) + ")";
+}
 
 svg::Drawing draw_replan_animation(const ReplanResult& r, const std::string& title, double seconds_per_move) {
   svg::Drawing drawing({0, 0, static_cast<double>(r.width), static_cast<double>(r.height)});

@@ -10,6 +10,9 @@
 
 namespace polyplan {
 
+// "polyplan replan MAP (ALGORITHM)": the title the program and Python give.
+std::string replan_title(const ReplanResult& result);
+
 // `title` is written at the top.
 svg::Drawing draw_replan(const ReplanResult& result, const std::string& title);
 

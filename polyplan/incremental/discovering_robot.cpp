@@ -187,6 +187,13 @@ std::optional<ReplanAlgorithm> replan_algorithm_from_string(std::string_view nam
   return std::nullopt;
 }
 
+ReplanAlgorithm parse_replan_algorithm(std::string_view name, const std::string& what) {
+  if (const auto algorithm = replan_algorithm_from_string(name)) return *algorithm;
+  std::string known;
+  for (const auto& [value, text] : algorithm_names) known += (known.empty() ? "" : ", ") + std::string(text);
+  throw InputError(what + ": unknown algorithm \"" + std::string(name) + "\" (" + known + ")");
+}
+
 ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint goal, const ReplanOptions& options) {
   check_options(options);
   check_cell(truth, start, "start");
@@ -201,7 +208,10 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
   result.algorithm = options.algorithm;
   result.traversed = {start};
   std::vector<ChangedMove> changed;
-  for (bool first = true;; first = false) {
+  // The route planned from where the robot is; without a change it still holds, its head dropped.
+  std::vector<GridCell> route;
+  std::size_t along = 0;
+  for (;;) {
     const GridPoint here{known.grid.x(at), known.grid.y(at)};
     if (options.world_changes) options.world_changes(result.moves, truth);
     changed.clear();
@@ -210,7 +220,7 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
       result.status = PlanStatus::solved;
       break;
     }
-    if (first || !changed.empty()) {
+    if (result.replans == 0 || !changed.empty()) {
       const auto began = std::chrono::steady_clock::now();
       const std::size_t expanded = replanner->counts().expanded;
       if (options.trace) options.trace->replan_begins(result.replans + 1, here, step.changed_cells);
@@ -219,6 +229,10 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
       result.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
       step.replanned = true;
       step.expanded = replanner->counts().expanded - expanded;
+      route = replanner->path_from(at);
+      along = 0;
+      result.last_plan.clear();
+      for (const GridCell c : route) result.last_plan.push_back({known.grid.x(c), known.grid.y(c)});
     }
     step.cost_to_goal = replanner->cost_from(at);
     result.steps.push_back(step);
@@ -227,17 +241,13 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
       result.last_plan.clear();
       break;
     }
-    const std::vector<GridCell> route = replanner->path_from(at);
-    if (step.replanned) {
-      result.last_plan.clear();
-      for (const GridCell c : route) result.last_plan.push_back({known.grid.x(c), known.grid.y(c)});
-    }
     if (result.moves == limit) {
       result.status = PlanStatus::limit;
       break;
     }
-    result.traversed_cost = result.traversed_cost + known.grid.cost(at, route[1]);
-    at = route[1];
+    const GridCell next = route[++along];
+    result.traversed_cost = result.traversed_cost + known.grid.cost(at, next);
+    at = next;
     ++result.moves;
     result.traversed.push_back({known.grid.x(at), known.grid.y(at)});
     replanner->moved(at);

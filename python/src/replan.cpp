@@ -91,8 +91,7 @@ void bind_replan(py::module_& m) {
       .def(
           "svg",
           [](const ReplanResult& r, bool animate) {
-            const std::string title = "polyplan replan " + r.truth.source + " (" + std::string(to_string(r.algorithm)) + ")";
-            return (animate ? draw_replan_animation(r, title) : draw_replan(r, title)).str();
+            return (animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).str();
           },
           py::arg("animate") = false, "The picture (or, animate=True, the animation) as SVG text.")
       .def("__repr__", [](const ReplanResult& r) {
@@ -103,10 +102,8 @@ void bind_replan(py::module_& m) {
   m.def(
       "replan",
       [](const py::object& map, const py::object& start, const py::object& goal, double sensor, const std::string& algorithm) {
-        const auto chosen = replan_algorithm_from_string(algorithm);
-        if (!chosen) throw InputError("algorithm: unknown algorithm \"" + algorithm + "\" (dstar-lite, lpastar, astar)");
         ReplanOptions options;
-        options.algorithm = *chosen;
+        options.algorithm = parse_replan_algorithm(algorithm, "algorithm");
         options.sensor_radius = sensor;
         const GridPoint from = cell_of(start, "start"), to = cell_of(goal, "goal");
         const std::string path = path_of(map, "replan: map");
