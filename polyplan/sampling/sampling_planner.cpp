@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <stdexcept>
 
 namespace polyplan {
@@ -99,6 +100,16 @@ auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::v
 
 template <class Space>
 auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& options) -> PlanReport<Configuration> {
+  // Each query draws from its own random stream, fixed by the seed and the query's ordinal (the
+  // first query's by the seed alone): carried over from the query before, the stream would depend
+  // on where a time limit cut that query, and the same input would not give the same answer.
+  if (queries_asked_ == 0) random_.seed(limits_.seed);
+  else {
+    std::seed_seq stream{static_cast<std::uint32_t>(limits_.seed), static_cast<std::uint32_t>(limits_.seed >> 32),
+                         static_cast<std::uint32_t>(queries_asked_), static_cast<std::uint32_t>(queries_asked_ >> 32)};
+    random_.seed(stream);
+  }
+  ++queries_asked_;
   SamplingBudget budget(limits_);
   PlanReport<Configuration> report;
   samples_ = motions_checked_ = 0;

@@ -254,7 +254,9 @@ class SamplingBudget {
   // "the time limit (10 s)" or "the iteration limit (100000)": what stopped the query.
   std::string limit_reached() const;
   // "time limit", "iteration limit", or "solution" when the planner stopped before either (a
-  // query stopped by the time limit may differ from run to run; the others never do).
+  // query stopped by the time limit may differ from run to run; the others never do, nor do the
+  // queries after a cut one, which draw their own random streams — but a roadmap that a cut query
+  // grew is the roadmap the next query finds).
   std::string stopped_by() const { return timed_out_ ? "time limit" : out_of_iterations_ ? "iteration limit" : "solution"; }
 
  private:
@@ -364,6 +366,7 @@ class SamplingPlanner : public Planner<Space> {
   std::unique_ptr<SamplingSpace<Space>> space_;
   SamplingLimits limits_;
   SamplingRandom random_;
+  std::uint64_t queries_asked_ = 0;  // the ordinal of the next query: it picks the query's random stream
   std::size_t samples_ = 0, motions_checked_ = 0;
   std::vector<SolutionImprovement> improvements_;
 };

@@ -91,6 +91,27 @@ TEST(SamplingPlanners, DifferentSeedsSampleDifferently) {
   EXPECT_NE(one.path, two.path);
 }
 
+// Each query draws its own random stream, fixed by the seed and the query's ordinal: a tree
+// planner's second answer is the same whatever its first query drew (a query cut by a time limit
+// draws as many numbers as the machine's speed allows), and differs from a first query's answer.
+TEST(SamplingPlanners, EachQueryDrawsItsOwnRandomStream) {
+  const World world = shipped_world("office");
+  const CSpace cspace(world);
+  ASSERT_GE(world.queries.size(), 3u);
+  for (const char* name : {"rrt", "rrtconnect"}) {  // RRT* draws for its whole iteration limit, whatever the query
+    SCOPED_TRACE(name);
+    const OptionValues options{{"shortcut", "false"}, {"time", "20"}};
+    auto after_one = make(name, cspace, options), after_other = make(name, cspace, options);
+    ASSERT_NE(after_one->plan(world.queries[0]).facts.count("samples"), after_other->plan(world.queries[2]).facts.count("samples"));
+    const auto second = after_one->plan(world.queries[1]), second_too = after_other->plan(world.queries[1]);
+    ASSERT_TRUE(second.found);
+    EXPECT_EQ(second.path, second_too.path);
+    const auto first = make(name, cspace, options)->plan(world.queries[1]);
+    ASSERT_TRUE(first.found);
+    EXPECT_NE(first.path, second.path);
+  }
+}
+
 // RRT* without shortcuts: the path's cost never grows with more iterations of one seed (the first
 // iterations are the same), and reaches within 10% of the exact optimum.
 TEST(SamplingPlanners, RrtStarConvergesTowardTheVisibilityGraphOptimum) {
