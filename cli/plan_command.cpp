@@ -60,6 +60,13 @@ int run_plan(const PlanCommand& command) {
     command.planner->default_to(planners<SteeredCar>().entries().front().name);  // the registry lists a space's default first
   } else {
     command.planner->prefer<TranslatingRobot>();
+    // A world that changes goes to the first planner that follows its changes, unless one is named.
+    if (!world.changes.empty())
+      for (const auto& entry : planners<TranslatingRobot>().entries())
+        if (entry.follows_world_changes) {
+          command.planner->default_to(entry.name);
+          break;
+        }
   }
   command.planner->values();  // a bad planner or option is reported before any planning
   if (command.planner->chose<SteeredCar>()) {

@@ -3,6 +3,7 @@
 #include <polyplan/geometry/rational.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,17 @@ struct Robot {
   bool is_point() const { return parts.empty(); }
 };
 
+// A change of the world while a robot drives (the file's "changes"; read by the replanning
+// planners, dstar-lite and its kin): once the robot has made `after_moves` moves, an obstacle
+// appears (`added`) or one disappears (`removed`: its number among the world's obstacles, then
+// those added by earlier changes, in order). Changes are listed by after_moves, never decreasing.
+struct WorldChange {
+  std::size_t after_moves = 0;
+  std::optional<PolygonWithHoles> added;
+  std::optional<std::size_t> removed;
+  std::string name;  // "changes[2]", for messages
+};
+
 struct World {
   std::string source;  // the file it was read from, for messages
   std::optional<Bounds> bounds;
@@ -58,6 +70,7 @@ struct World {
   Robot robot;
   // start/goal of the world, followed by its `queries`; empty when the file has none.
   std::vector<Query> queries;
+  std::vector<WorldChange> changes;  // empty: the world stays as it is
 };
 
 // The starts and goals of the world's queries, then `more`: the points a frame around an

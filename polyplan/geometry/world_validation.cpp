@@ -142,6 +142,52 @@ Polygon check_ring(const World& world, Ring& ring, const std::string& object, CG
   return polygon;
 }
 
+// An obstacle's outer boundary and holes (oriented on success), named `name` in messages.
+void check_obstacle(const World& world, PolygonWithHoles& obstacle, const std::string& name) {
+  const Polygon outer = check_ring(world, obstacle.outer, name, CGAL::COUNTERCLOCKWISE);
+  std::vector<Polygon> holes_ccw;
+  for (std::size_t h = 0; h < obstacle.holes.size(); ++h) {
+    const std::string hole_name = name + " hole " + std::to_string(h);
+    Polygon hole_ccw = check_ring(world, obstacle.holes[h], hole_name, CGAL::CLOCKWISE);
+    hole_ccw.reverse_orientation();
+    // Regularized: a hole may touch its outer boundary, but no part of it may lie outside.
+    std::vector<PolygonH> outside;
+    CGAL::difference(hole_ccw, outer, std::back_inserter(outside));
+    if (!outside.empty()) fail(world, hole_name, "not inside the outer boundary of " + name);
+    if (shares_a_segment(outer, hole_ccw))
+      fail(world, hole_name, "shares a boundary segment with the outer boundary of " + name +
+                                 " (zero width there: make the hole a notch of the outer boundary instead)");
+    holes_ccw.push_back(std::move(hole_ccw));
+  }
+  if (const auto pair = overlapping_holes(holes_ccw))
+    fail(world, name + " hole " + std::to_string(pair->second),
+         "overlaps hole " + std::to_string(pair->first) + " (holes may touch but not overlap or nest)");
+}
+
+// The changes: listed by after_moves, an added obstacle checked as the world's are, a removed
+// one among those that exist at that moment (the world's, then the added ones) and not gone yet.
+void check_changes(World& world) {
+  std::vector<bool> gone(world.obstacles.size(), false);
+  for (std::size_t i = 0; i < world.changes.size(); ++i) {
+    WorldChange& change = world.changes[i];
+    if (i > 0 && change.after_moves < world.changes[i - 1].after_moves)
+      fail(world, change.name + ".after_moves", std::to_string(change.after_moves) + " after " + world.changes[i - 1].name + "'s " +
+                                                    std::to_string(world.changes[i - 1].after_moves) + ": list the changes in the order they happen");
+    if (change.added) {
+      check_obstacle(world, *change.added, change.name + ".add_obstacle");
+      gone.push_back(false);
+    }
+    if (change.removed) {
+      const std::size_t k = *change.removed;
+      if (k >= gone.size())
+        fail(world, change.name + ".remove_obstacle", std::to_string(k) + ": there are " + std::to_string(gone.size()) +
+                                                          " obstacles at that moment (numbered from 0: the world's, then those the changes before added)");
+      if (gone[k]) fail(world, change.name + ".remove_obstacle", "obstacle " + std::to_string(k) + " was removed by an earlier change");
+      gone[k] = true;
+    }
+  }
+}
+
 }  // namespace
 
 void validate_world(World& world) {
@@ -151,30 +197,10 @@ void validate_world(World& world) {
       fail(world, "bounds", "empty or inverted: [" + to_string(b.xmin) + ", " + to_string(b.ymin) + ", " +
                                 to_string(b.xmax) + ", " + to_string(b.ymax) + "] needs xmin < xmax and ymin < ymax");
   }
-  for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
-    PolygonWithHoles& obstacle = world.obstacles[i];
-    const std::string& name = world.obstacle_names[i];
-    const Polygon outer = check_ring(world, obstacle.outer, name, CGAL::COUNTERCLOCKWISE);
-    std::vector<Polygon> holes_ccw;
-    for (std::size_t h = 0; h < obstacle.holes.size(); ++h) {
-      const std::string hole_name = name + " hole " + std::to_string(h);
-      Polygon hole_ccw = check_ring(world, obstacle.holes[h], hole_name, CGAL::CLOCKWISE);
-      hole_ccw.reverse_orientation();
-      // Regularized: a hole may touch its outer boundary, but no part of it may lie outside.
-      std::vector<PolygonH> outside;
-      CGAL::difference(hole_ccw, outer, std::back_inserter(outside));
-      if (!outside.empty()) fail(world, hole_name, "not inside the outer boundary of " + name);
-      if (shares_a_segment(outer, hole_ccw))
-        fail(world, hole_name, "shares a boundary segment with the outer boundary of " + name +
-                                   " (zero width there: make the hole a notch of the outer boundary instead)");
-      holes_ccw.push_back(std::move(hole_ccw));
-    }
-    if (const auto pair = overlapping_holes(holes_ccw))
-      fail(world, name + " hole " + std::to_string(pair->second),
-           "overlaps hole " + std::to_string(pair->first) + " (holes may touch but not overlap or nest)");
-  }
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i) check_obstacle(world, world.obstacles[i], world.obstacle_names[i]);
   for (std::size_t i = 0; i < world.robot.parts.size(); ++i)
     check_ring(world, world.robot.parts[i], "robot.parts[" + std::to_string(i) + "]", CGAL::COUNTERCLOCKWISE);
+  check_changes(world);
 }
 
 }  // namespace polyplan

@@ -155,11 +155,13 @@ struct Knowledge {
   // and appends the moves that changed.
   std::size_t sense(const GridMap& truth, GridPoint at, double radius, std::size_t moves, std::vector<ChangedMove>& changed) {
     std::size_t changed_cells = 0;
-    const int reach = static_cast<int>(std::floor(radius));
-    for (int dy = -reach; dy <= reach; ++dy)
-      for (int dx = -reach; dx <= reach; ++dx) {
-        const int x = at.x + dx, y = at.y + dy;
-        if (!grid.contains(x, y) || static_cast<double>(dx * dx + dy * dy) > radius * radius) continue;
+    // The square of cells the disc reaches, cut to the map (a radius beyond the map's diagonal
+    // sees the whole map at the cost of its cells, not of the square).
+    const int reach = static_cast<int>(std::min(std::floor(radius), static_cast<double>(grid.width() + grid.height())));
+    for (int y = std::max(0, at.y - reach); y <= std::min(grid.height() - 1, at.y + reach); ++y)
+      for (int x = std::max(0, at.x - reach); x <= std::min(grid.width() - 1, at.x + reach); ++x) {
+        const std::int64_t dx = x - at.x, dy = y - at.y;
+        if (static_cast<double>(dx * dx + dy * dy) > radius * radius) continue;
         const bool blocked = truth.is_blocked(x, y);
         const GridCell c = grid.cell(x, y);
         cells[c] = blocked ? CellKnowledge::blocked : CellKnowledge::free;

@@ -100,6 +100,27 @@ class Reader : public detail::JsonFileReader {
     }
     return p;
   }
+
+  // {"after_moves": k, "add_obstacle": polygon} or {"after_moves": k, "remove_obstacle": i}.
+  WorldChange change(const json& v, const std::string& object, std::vector<std::string>* warnings) const {
+    const std::string form = "expected {\"after_moves\": k, \"add_obstacle\": [[x, y], ...]} or {\"after_moves\": k, \"remove_obstacle\": i}";
+    if (!v.is_object()) fail(object, form + ", got " + abbreviated(v));
+    warn_unknown(v, object, {"after_moves", "add_obstacle", "remove_obstacle"}, warnings);
+    WorldChange c;
+    c.name = object;
+    c.after_moves = count(required(v, "after_moves", object), object + ".after_moves");
+    if (v.contains("add_obstacle") == v.contains("remove_obstacle"))
+      fail(object, "give one of \"add_obstacle\" and \"remove_obstacle\": " + form);
+    if (v.contains("add_obstacle")) c.added = polygon(v["add_obstacle"], object + ".add_obstacle", warnings);
+    else c.removed = count(v["remove_obstacle"], object + ".remove_obstacle");
+    return c;
+  }
+
+  std::size_t count(const json& v, const std::string& object) const {
+    if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<std::int64_t>() >= 0))
+      fail(object, "expected a whole number of at least 0, got " + abbreviated(v));
+    return v.get<std::size_t>();
+  }
 };
 
 }  // namespace
@@ -108,7 +129,7 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
   Reader r(name);
   json root = r.parse(text);
   if (!root.is_object()) r.fail("world", "expected a JSON object at the top level");
-  r.warn_unknown(root, "world", {"bounds", "obstacles", "obstacles_wkt", "robot", "start", "goal", "queries"}, warnings);
+  r.warn_unknown(root, "world", {"bounds", "obstacles", "obstacles_wkt", "robot", "start", "goal", "queries", "changes"}, warnings);
 
   World world;
   world.source = name;
@@ -170,6 +191,12 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
       world.queries.push_back(r.query(r.required(q, "start", object), r.required(q, "goal", object), object + ".start",
                                       object + ".goal", object, world.robot.car.has_value()));
     }
+  }
+
+  if (root.contains("changes")) {
+    const json& changes = root["changes"];
+    if (!changes.is_array()) r.fail("changes", "expected a list of {\"after_moves\", \"add_obstacle\" or \"remove_obstacle\"}");
+    for (std::size_t i = 0; i < changes.size(); ++i) world.changes.push_back(r.change(changes[i], "changes[" + std::to_string(i) + "]", warnings));
   }
 
   validate_world(world);

@@ -21,6 +21,9 @@ struct PlannerEntry {
   std::string name;         // on the command line: --planner NAME
   std::string description;  // one line
   std::vector<OptionInfo> options;
+  // Whether it follows a world's "changes" (World::changes) as its robot drives: only such a
+  // planner is given a world that changes (registry/world_queries.hpp refuses the others).
+  bool follows_world_changes = false;
   // Builds the planner for a problem (which must outlive it) with the options set from `values`.
   // Throws InputError naming the planner and the option for a value it refuses.
   Factory make;
@@ -33,7 +36,7 @@ template <class Space, class Options>
 PlannerEntry<Space> make_planner_entry(
     std::string name, std::string description, OptionTable<Options> table,
     std::function<std::unique_ptr<Planner<Space>>(const typename Space::Problem&, const Options&)> factory) {
-  PlannerEntry<Space> entry{name, std::move(description), table.info(), {}};
+  PlannerEntry<Space> entry{name, std::move(description), table.info(), false, {}};
   entry.make = [name, table = std::move(table), factory = std::move(factory)](const typename Space::Problem& problem,
                                                                               const OptionValues& values) {
     const Options options = table.parse(values, name);

@@ -2,6 +2,7 @@
 
 #include <polyplan/grids/gvd_grid_planner.hpp>
 #include <polyplan/grids/raster_planner.hpp>
+#include <polyplan/incremental/replanning_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/roadmaps/voronoi_planner.hpp>
@@ -25,6 +26,9 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       trapezoid_planner_entry(),
       voronoi_planner_entry(),
       gvd_grid_planner_entry(),
+      replanning_planner_entry(ReplanAlgorithm::dstar_lite),
+      replanning_planner_entry(ReplanAlgorithm::lpastar),
+      replanning_planner_entry(ReplanAlgorithm::astar),
       prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
       lazy_prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
       rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),

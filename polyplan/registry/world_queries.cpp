@@ -10,6 +10,24 @@
 #include <string>
 
 namespace polyplan {
+namespace {
+
+// A world that changes as the robot drives, for a planner that plans a world standing still:
+// its answer would hold for the world of the file's first moment only.
+void require_planner_for_changes(const World& world, std::string_view planner) {
+  std::string following;
+  bool follows = false;
+  for (const PlannerEntry<TranslatingRobot>& entry : planners<TranslatingRobot>().entries())
+    if (entry.follows_world_changes) {
+      following += (following.empty() ? "" : ", ") + entry.name;
+      follows |= entry.name == planner;
+    }
+  if (!follows)
+    throw InputError(world.source + ": " + world.changes.front().name + ": the world changes as the robot drives, and the planner " +
+                     std::string(planner) + " plans a world that stands still: use one that follows the changes (" + following + ")");
+}
+
+}  // namespace
 
 void require_planner_for_robot(const World& world, std::string_view planner) {
   const bool car_planner = planners<SteeredCar>().find(planner) != nullptr;
@@ -20,6 +38,7 @@ void require_planner_for_robot(const World& world, std::string_view planner) {
   if (!world.robot.car && car_planner && !world_planner)
     throw InputError(world.source + ": robot: the planner " + std::string(planner) +
                      " plans for a car, and this robot has no \"car\": {\"turning_radius\": R, \"reverse\": true|false}");
+  if (!world.changes.empty()) require_planner_for_changes(world, planner);
 }
 
 // A car's starts and goals: its body inside the bounds and clear of every obstacle.

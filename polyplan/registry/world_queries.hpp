@@ -19,7 +19,8 @@ void require_plannable_queries(const World& world, const CSpace* cspace, std::st
 
 // InputError when `planner` cannot plan for the world's robot at all, asked or not: a car's
 // (robot.car) paths must keep to its turning radius, which no translating or rotating planner does,
-// and a car planner needs the car's turning radius.
+// and a car planner needs the car's turning radius; a world with "changes" goes only to a planner
+// that follows them (PlannerEntry::follows_world_changes).
 void require_planner_for_robot(const World& world, std::string_view planner);
 
 }  // namespace polyplan

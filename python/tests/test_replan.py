@@ -48,3 +48,17 @@ def test_knowledge_and_picture():
 def test_bad_input_is_an_input_error(args, message):
     with pytest.raises(polyplan.InputError, match=message.replace("(", r"\(").replace(")", r"\)")):
         polyplan.replan(DEN, **args)
+
+
+def test_a_world_that_changes_is_planned_as_the_program_plans_it():
+    """The world's "changes" reach the replanning planners from Python as from the program, and
+    the others refuse the world, naming the change."""
+    from cli_agreement import compare
+    path = data("changing_worlds", "door_closes.json")
+    world = polyplan.read_world(path)
+    for planner in ("dstar-lite", "repeated-astar"):
+        compare(["plan", path, "--planner", planner], lambda: polyplan.plan(world, planner=planner))
+    plan = polyplan.plan(world, planner="dstar-lite", sensor=3)[0]
+    assert plan.found and plan.facts["replan"]["changes_made"] == 3
+    with pytest.raises(polyplan.InputError, match=r"changes\[0\]: the world changes as the robot drives"):
+        polyplan.plan(world, planner="visibility")

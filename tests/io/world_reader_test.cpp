@@ -160,3 +160,45 @@ TEST(WorldReader, BadCarsNameTheirField) {
             }).find("robot.parts[0]: self-intersecting"),
             std::string::npos);
 }
+
+TEST(WorldReader, ReadsChanges) {
+  const World w = world_from(R"({"obstacles": [[[0, 0], [1, 0], [1, 1], [0, 1]]], "changes": [
+    {"after_moves": 3, "add_obstacle": [[5, 5], [5, 6], [6, 6], [6, 5]]},
+    {"after_moves": 3, "remove_obstacle": 0},
+    {"after_moves": 9, "remove_obstacle": 1}]})");
+  ASSERT_EQ(w.changes.size(), 3u);
+  EXPECT_EQ(w.changes[0].after_moves, 3u);
+  ASSERT_TRUE(w.changes[0].added);
+  // Written clockwise, oriented counter-clockwise as the world's obstacles are.
+  EXPECT_EQ(w.changes[0].added->outer, (Ring{{6, 5}, {6, 6}, {5, 6}, {5, 5}}));
+  EXPECT_EQ(*w.changes[1].removed, 0u);
+  EXPECT_EQ(*w.changes[2].removed, 1u);  // the one changes[0] added
+  EXPECT_EQ(w.changes[2].name, "changes[2]");
+  EXPECT_TRUE(world_from(R"({"obstacles": []})").changes.empty());
+}
+
+TEST(WorldReader, BadChangesNameTheirField) {
+  const auto changes = [](const std::string& list) {
+    return input_error_of([&] { world_from(R"({"obstacles": [[[0, 0], [1, 0], [1, 1], [0, 1]]], "changes": )" + list + "}"); });
+  };
+  EXPECT_EQ(changes("{}").rfind("test.json: changes: expected a list", 0), 0u);
+  EXPECT_EQ(changes(R"([{"add_obstacle": [[0, 0], [1, 0], [0, 1]]}])"), "test.json: changes[0]: missing field \"after_moves\"");
+  EXPECT_EQ(changes(R"([{"after_moves": -1, "remove_obstacle": 0}])"),
+            "test.json: changes[0].after_moves: expected a whole number of at least 0, got -1");
+  EXPECT_EQ(changes(R"([{"after_moves": 1.5, "remove_obstacle": 0}])"),
+            "test.json: changes[0].after_moves: expected a whole number of at least 0, got \"1.5\"");
+  EXPECT_EQ(changes(R"([{"after_moves": 1}])").rfind("test.json: changes[0]: give one of \"add_obstacle\" and \"remove_obstacle\"", 0), 0u);
+  EXPECT_EQ(changes(R"([{"after_moves": 1, "remove_obstacle": 0, "add_obstacle": [[0, 0], [1, 0], [0, 1]]}])")
+                .rfind("test.json: changes[0]: give one of", 0),
+            0u);
+  EXPECT_EQ(changes(R"([{"after_moves": 1, "add_obstacle": [[0, 0], [2, 2], [2, 0], [0, 2]]}])").rfind(
+                "test.json: changes[0].add_obstacle: self-intersecting", 0),
+            0u);
+  EXPECT_EQ(changes(R"([{"after_moves": 1, "remove_obstacle": 1}])"),
+            "test.json: changes[0].remove_obstacle: 1: there are 1 obstacles at that moment (numbered from 0: the world's, then those "
+            "the changes before added)");
+  EXPECT_EQ(changes(R"([{"after_moves": 1, "remove_obstacle": 0}, {"after_moves": 2, "remove_obstacle": 0}])"),
+            "test.json: changes[1].remove_obstacle: obstacle 0 was removed by an earlier change");
+  EXPECT_EQ(changes(R"([{"after_moves": 5, "remove_obstacle": 0}, {"after_moves": 2, "add_obstacle": [[0, 0], [1, 0], [0, 1]]}])"),
+            "test.json: changes[1].after_moves: 2 after changes[0]'s 5: list the changes in the order they happen");
+}

@@ -2,7 +2,8 @@
 # only itself and the folders listed for it here (all below it), so no include runs upwards and
 # no two folders include each other. A family folder never includes registry/, draw/ or another
 # family, except arm/ → sampling/ and car/ → sampling/ (their sampling spaces) and car/ →
-# roadmaps/ (the visibility graph under hybrid A*'s 2D heuristic), and holds planning only: no JSON (nlohmann) and no
+# roadmaps/ (the visibility graph under hybrid A*'s 2D heuristic) and incremental/ → grids/ (the
+# raster its world planners drive), and holds planning only: no JSON (nlohmann) and no
 # command line (CLI11). Run with cmake -DSOURCE_DIR=... -P.
 cmake_minimum_required(VERSION 3.20)  # IN_LIST
 set(below_geometry "")
@@ -12,12 +13,12 @@ set(below_plan geometry search)
 set(below_free_space geometry io search)
 set(below_roadmaps plan free_space geometry io search)
 set(below_grids plan geometry io search)
-set(below_incremental plan geometry io search)
+set(below_incremental plan grids geometry io search)
 set(below_rotation plan free_space geometry search)
 set(below_sampling plan free_space geometry search)
 set(below_arm plan sampling geometry search)
 set(below_car plan roadmaps sampling geometry search)
-set(below_registry plan roadmaps grids rotation sampling arm car geometry search)
+set(below_registry plan roadmaps grids incremental rotation sampling arm car geometry search)
 set(below_draw plan arm car incremental io sampling geometry search)
 
 file(GLOB folders RELATIVE ${SOURCE_DIR}/polyplan ${SOURCE_DIR}/polyplan/*)

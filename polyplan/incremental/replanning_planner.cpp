@@ -1,0 +1,226 @@
+#include <polyplan/incremental/replanning_planner.hpp>
+
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/grids/raster_grid.hpp>
+#include <polyplan/plan/stopwatch.hpp>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace polyplan {
+namespace {
+
+// The world once its first `made` changes have happened: the obstacles numbered as the file
+// numbers them (the world's, then the added ones), the removed ones gone.
+World world_after(const World& world, std::size_t made) {
+  std::vector<std::optional<PolygonWithHoles>> obstacles(world.obstacles.begin(), world.obstacles.end());
+  std::vector<std::string> names = world.obstacle_names;
+  for (std::size_t i = 0; i < made; ++i) {
+    const WorldChange& change = world.changes[i];
+    if (change.added) {
+      obstacles.emplace_back(*change.added);
+      names.push_back(change.name + ".add_obstacle");
+    }
+    if (change.removed) obstacles[*change.removed].reset();
+  }
+  World after = world;
+  after.obstacles.clear();
+  after.obstacle_names.clear();
+  after.changes.clear();
+  for (std::size_t k = 0; k < obstacles.size(); ++k)
+    if (obstacles[k]) {
+      after.obstacles.push_back(std::move(*obstacles[k]));
+      after.obstacle_names.push_back(std::move(names[k]));
+    }
+  return after;
+}
+
+// The world between two moments of change: from the move `from_moves` on, `made` changes made.
+struct Phase {
+  std::size_t from_moves = 0, made = 0;
+  std::unique_ptr<const CSpace> owned;  // none for the planner's own world (the first phase)
+  const CSpace* cspace = nullptr;
+  Raster raster;
+};
+
+GridMap grid_map(const Raster& raster, const std::string& source) {
+  GridMap map;
+  map.source = source;
+  map.width = map.height = static_cast<int>(raster.cells_per_axis);
+  map.blocked.assign(raster.blocked.begin(), raster.blocked.end());  // both x + y·n
+  return map;
+}
+
+// The registry's name: the algorithm's, but A* is the raster planner's already.
+std::string replanning_planner_name(ReplanAlgorithm algorithm) {
+  return algorithm == ReplanAlgorithm::astar ? "repeated-astar" : std::string(to_string(algorithm));
+}
+
+GridCell cell_of(const Raster& raster, GridPoint p) {
+  return static_cast<GridCell>(p.x) + static_cast<GridCell>(p.y) * raster.cells_per_axis;
+}
+
+GridPoint point_of(const Raster& raster, GridCell c) {
+  return {static_cast<int>(c % raster.cells_per_axis), static_cast<int>(c / raster.cells_per_axis)};
+}
+
+}  // namespace
+
+struct ReplanningPlanner::Impl {
+  const CSpace* cspace;
+  ReplanAlgorithm algorithm;
+  ReplanningOptions options;
+  std::vector<Phase> phases;  // by from_moves; the first is the world as it starts
+
+  Impl(const CSpace& c, ReplanAlgorithm a, const ReplanningOptions& o) : cspace(&c), algorithm(a), options(o) {
+    if (o.sensor != 0 && !(std::isfinite(o.sensor) && o.sensor > 0 && o.sensor * o.sensor >= 2))
+      throw std::invalid_argument("sensor: expected 0 (the whole raster) or a finite number of cells of at least √2 ≈ 1.41421357, got " +
+                                  std::to_string(o.sensor));
+    phases.push_back({0, 0, nullptr, &c, rasterize(c, o.resolution)});
+    const World& world = c.world();
+    // One world for each moment of change: the changes listed with one after_moves happen at once.
+    for (std::size_t i = 0; i < world.changes.size(); ++i) {
+      if (i + 1 < world.changes.size() && world.changes[i + 1].after_moves == world.changes[i].after_moves) continue;
+      auto changed = std::make_unique<const CSpace>(world_after(world, i + 1));
+      Raster raster = rasterize(*changed, o.resolution);
+      const CSpace* view = changed.get();
+      phases.push_back({world.changes[i].after_moves, i + 1, std::move(changed), view, std::move(raster)});
+    }
+  }
+
+  double sensor_radius() const {
+    const double n = static_cast<double>(phases.front().raster.cells_per_axis);
+    return options.sensor != 0 ? options.sensor : std::hypot(n, n) + 1;
+  }
+
+  // The drive's cells from move `from` to move `to` (both included), on the raster.
+  static std::vector<GridCell> stretch(const Raster& raster, const ReplanResult& drive, std::size_t from, std::size_t to) {
+    std::vector<GridCell> cells;
+    for (std::size_t m = from; m <= to; ++m) cells.push_back(cell_of(raster, drive.traversed[m]));
+    return cells;
+  }
+
+  // start → turns → goal, each stretch between two changes checked exactly in its own world.
+  void return_drive(const Query& query, const ReplanResult& drive, std::size_t lived, PlanReport<ExactPoint>& report) const {
+    std::vector<ExactPoint> path;
+    for (std::size_t p = 0; p < lived; ++p) {
+      const Phase& phase = phases[p];
+      const std::size_t to = p + 1 < lived ? phases[p + 1].from_moves : drive.moves;
+      const std::vector<GridCell> cells = stretch(phase.raster, drive, phase.from_moves, to);
+      const ExactPoint from_point = p == 0 ? query.start : path.back();
+      const ExactPoint to_point = p + 1 == lived ? query.goal : phase.raster.cell_center(drive.traversed[to].x, drive.traversed[to].y);
+      const std::vector<ExactPoint> piece = polyline_through_turns(phase.raster, from_point, cells, to_point);
+      const PathCheck check = check_path(*phase.cspace, piece);
+      if (!check.valid) {
+        report.fail(PlanStatus::not_found, "the drive from move " + std::to_string(phase.from_moves) + " to move " + std::to_string(to) +
+                                               " is not a valid motion in the world of " + made_text(phase) + ": " + check.reason);
+        return;
+      }
+      path.insert(path.end(), piece.begin() + (path.empty() ? 0 : 1), piece.end());
+    }
+    if (path.size() == 1) path.push_back(path.front());  // start = goal: one motion of length 0
+    report.succeed();
+    report.path = std::move(path);
+    report.length = euclidean_length(report.path);
+    report.certificate = {true, "exact path check (arrangement zone walk) of each stretch in the world as it was when driven"};
+  }
+
+  std::string made_text(const Phase& phase) const {
+    if (phase.made == 0) return "the file";
+    return phase.made == 1 ? "changes[0]" : "changes[0.." + std::to_string(phase.made - 1) + "]";
+  }
+
+  // Why a drive that did not reach the goal ended.
+  void report_stop(const ReplanResult& drive, const Phase& last, PlanReport<ExactPoint>& report) const {
+    const GridPoint at = drive.traversed.back();
+    const std::string cell = cell_text(static_cast<std::size_t>(at.x), static_cast<std::size_t>(at.y));
+    const std::string after = "after " + std::to_string(drive.moves) + " moves";
+    if (drive.status == PlanStatus::limit) {
+      report.facts.set("stopped_by", "move limit");
+      report.fail(PlanStatus::limit, after + ": the move limit ended the drive at cell " + cell);
+    } else if (drive.truth.is_blocked(at.x, at.y)) {
+      report.fail(PlanStatus::not_found, after + ", the world of " + made_text(last) + " blocks the robot's own cell " + cell);
+    } else {
+      const std::string n = std::to_string(last.raster.cells_per_axis);
+      report.fail(PlanStatus::not_found, after + ", no path on the " + n + " x " + n + " grid the robot knows from cell " + cell +
+                                             " to the goal's cell");
+    }
+  }
+
+  void record_facts(const ReplanResult& drive, std::size_t lived, Facts& facts) const {
+    facts.set("replan.moves", drive.moves);
+    facts.set("replan.replans", drive.replans);
+    facts.set("replan.changes_made", phases[lived - 1].made);
+    facts.set("replan.grid_cost", drive.traversed_cost.to_double());
+    facts.set("search.expanded", drive.expanded);
+    facts.set("search.generated", drive.generated);
+    facts.set("search.heap_operations", drive.heap_operations);
+    facts.set("search.seconds", drive.seconds);
+  }
+};
+
+ReplanningPlanner::ReplanningPlanner(const CSpace& cspace, ReplanAlgorithm algorithm, ReplanningOptions options)
+    : impl_(std::make_unique<Impl>(cspace, algorithm, options)) {}
+
+ReplanningPlanner::~ReplanningPlanner() = default;
+
+PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOptions& options) {
+  const Impl& r = *impl_;
+  const Stopwatch querying;
+  const Raster& first = r.phases.front().raster;
+  PlanReport<ExactPoint> report;
+  Facts& facts = report.facts;
+  facts.set("roadmap.kind", replanning_planner_name(r.algorithm));
+  facts.set("raster.cells_per_axis", first.cells_per_axis);
+  facts.set("raster.blocked_cells", first.blocked_count());
+  facts.set("replan.algorithm", std::string(to_string(r.algorithm)));
+  facts.set("replan.sensor_cells", r.sensor_radius());
+  const auto finish = [&] {
+    facts.set("query_seconds", querying.seconds());
+    return std::move(report);
+  };
+  const auto snapped = snap_query(*r.cspace, first, query, report);
+  if (!snapped) return finish();
+
+  std::size_t lived = 1;  // the phases the drive has seen
+  ReplanOptions replanning;
+  replanning.algorithm = r.algorithm;
+  replanning.sensor_radius = r.sensor_radius();
+  replanning.max_moves = r.options.max_moves;
+  replanning.world_changes = [&](std::size_t moves, GridMap& truth) {
+    for (; lived < r.phases.size() && r.phases[lived].from_moves <= moves; ++lived)
+      truth.blocked.assign(r.phases[lived].raster.blocked.begin(), r.phases[lived].raster.blocked.end());
+  };
+  const ReplanResult drive = drive_through_unknown_map(grid_map(first, r.cspace->world().source), point_of(first, snapped->first),
+                                                       point_of(first, snapped->second), replanning);
+  r.record_facts(drive, lived, facts);
+  const Phase& last = r.phases[lived - 1];
+  if (options.record) report.cells = std::make_shared<const CellGrid>(raster_cell_grid(last.raster));
+  if (drive.found) r.return_drive(query, drive, lived, report);
+  else r.report_stop(drive, last, report);
+  return finish();
+}
+
+PlannerEntry<TranslatingRobot> replanning_planner_entry(ReplanAlgorithm algorithm) {
+  OptionTable<ReplanningOptions> table;
+  table.add("resolution", &ReplanningOptions::resolution, "cells per side of the bounds (n x n cells)")
+      .add("sensor", &ReplanningOptions::sensor, "sensing radius in cells (at least 1.41421357), 0: the robot sees the whole raster")
+      .add("max-moves", &ReplanningOptions::max_moves, "moves before the drive stops with status limit (0: 4 x the cells)");
+  static constexpr const char* how[] = {"D* Lite (Koenig & Likhachev), the start moving with the robot",
+                                        "LPA*, re-keyed each time the robot has moved", "A* from scratch at every replan"};
+  PlannerEntry<TranslatingRobot> entry = make_planner_entry<TranslatingRobot, ReplanningOptions>(
+      replanning_planner_name(algorithm),
+      std::string("a robot drives the raster while the world's \"changes\" happen, replanning with ") + how[static_cast<int>(algorithm)],
+      std::move(table), [algorithm](const CSpace& cspace, const ReplanningOptions& o) {
+        return std::make_unique<ReplanningPlanner>(cspace, algorithm, o);
+      });
+  entry.follows_world_changes = true;
+  return entry;
+}
+
+}  // namespace polyplan
