@@ -196,7 +196,14 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   }
   if (with_cells) draw_cells(drawing, *with_cells->cells);
   if (with_decomposition) draw_decomposition(drawing, *with_decomposition->decomposition);
-  draw_cspace(drawing, cspace, with_cells || with_decomposition ? FreeSpace::unfilled : FreeSpace::filled);
+  // A world that changed as the robot drove is drawn as it ended, where the cells show it too.
+  const CSpace* drawn = &cspace;
+  for (const auto& r : reports)
+    if (r.world_at_end) {
+      drawn = r.world_at_end.get();
+      break;
+    }
+  draw_cspace(drawing, *drawn, with_cells || with_decomposition ? FreeSpace::unfilled : FreeSpace::filled);
   if (with_graph) draw_graph(drawing, *with_graph->graph);
 
   std::vector<ExactPoint> expanded;

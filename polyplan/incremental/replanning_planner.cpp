@@ -43,7 +43,7 @@ World world_after(const World& world, std::size_t made) {
 // The world between two moments of change: from the move `from_moves` on, `made` changes made.
 struct Phase {
   std::size_t from_moves = 0, made = 0;
-  std::unique_ptr<const CSpace> owned;  // none for the planner's own world (the first phase)
+  std::shared_ptr<const CSpace> owned;  // none for the planner's own world (the first phase); the picture shares it
   const CSpace* cspace = nullptr;
   Raster raster;
 };
@@ -86,7 +86,7 @@ struct ReplanningPlanner::Impl {
     // One world for each moment of change: the changes listed with one after_moves happen at once.
     for (std::size_t i = 0; i < world.changes.size(); ++i) {
       if (i + 1 < world.changes.size() && world.changes[i + 1].after_moves == world.changes[i].after_moves) continue;
-      auto changed = std::make_unique<const CSpace>(world_after(world, i + 1));
+      auto changed = std::make_shared<const CSpace>(world_after(world, i + 1));
       Raster raster = rasterize(*changed, o.resolution);
       const CSpace* view = changed.get();
       phases.push_back({world.changes[i].after_moves, i + 1, std::move(changed), view, std::move(raster)});
@@ -200,7 +200,10 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
                                                        point_of(first, snapped->second), replanning);
   r.record_facts(drive, lived, facts);
   const Phase& last = r.phases[lived - 1];
-  if (options.record) report.cells = std::make_shared<const CellGrid>(raster_cell_grid(last.raster));
+  if (options.record) {
+    report.cells = std::make_shared<const CellGrid>(raster_cell_grid(last.raster));
+    report.world_at_end = last.owned;
+  }
   if (drive.found) r.return_drive(query, drive, lived, report);
   else r.report_stop(drive, last, report);
   return finish();

@@ -42,7 +42,8 @@ class ReplanningPlanner final : public Planner<TranslatingRobot> {
   // start), raster.start_cell, raster.goal_cell, replan.algorithm, replan.sensor_cells,
   // replan.moves, replan.replans, replan.changes_made (those the drive lived to see),
   // replan.grid_cost (the moves' cost in cells), search.expanded, search.generated,
-  // search.heap_operations, query_seconds. The picture's cells are the raster at the drive's end.
+  // search.heap_operations, query_seconds. The picture shows the world and its raster as they
+  // were at the drive's end (PlanReport::world_at_end).
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
 
  private:

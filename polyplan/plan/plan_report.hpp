@@ -17,6 +17,8 @@
 
 namespace polyplan {
 
+class CSpace;  // geometry/cspace.hpp
+
 // A fact's value: a flag, a count, a measure or a word.
 using FactValue = std::variant<bool, std::int64_t, double, std::string>;
 
@@ -149,6 +151,9 @@ struct PlanReport {
   std::vector<Configuration> expanded;  // where the search expanded, in order
   std::shared_ptr<const CellGrid> cells;
   std::shared_ptr<const PlanDecomposition<Configuration>> decomposition;
+  // The C-space of the world the answer ends in, when the world changed on the way (a world
+  // file's "changes"): the picture draws it instead of the problem's. Null: the problem's.
+  std::shared_ptr<const CSpace> world_at_end;
 
   // An answer without a path: why, as a status and as a sentence.
   void fail(PlanStatus failure, std::string why) {
