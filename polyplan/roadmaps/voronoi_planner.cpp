@@ -4,6 +4,7 @@
 #include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/search/shortest_path.hpp>
@@ -51,11 +52,6 @@ struct VoronoiPlanner::Impl {
   VisibilityGraph& exact_planner() {
     if (!exact_shortest) exact_shortest = std::make_unique<VisibilityGraph>(*cspace);
     return *exact_shortest;
-  }
-
-  bool share_a_component(const Query& query) const {
-    const auto a = cspace->locate(query.start).components, b = cspace->locate(query.goal).components;
-    return std::any_of(a.begin(), a.end(), [&](std::size_t c) { return std::find(b.begin(), b.end(), c) != b.end(); });
   }
 
   Impl(const CSpace& c, const VoronoiOptions& o, const std::vector<ExactPoint>& inside)
@@ -251,7 +247,7 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
     const std::vector<Piece> pieces = g.pieces_for(query.start, *from, query.goal, *to);
     const std::optional<double> bottleneck = g.bottleneck_of(pieces);
     if (!bottleneck) {
-      if (!g.share_a_component(query))
+      if (!share_a_component(*g.cspace, query.start, query.goal))
         return report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
       // The exact free space joins them through a passage narrower than the diagram's doubles
       // resolve (decimal.json's gap of 1e-17): the best clearance is below that resolution, and the

@@ -74,11 +74,15 @@ TEST(Plan, EveryRegisteredPlannerAnswersByNameAndRoadmapIsAnAlias) {
       const CliRun run = run_polyplan("plan " + world("maze.json") + " " + flag + " " + name + " --json -");
       ASSERT_EQ(run.exit_code, 0) << run.err;
       const auto plan = nlohmann::json::parse(run.out);
-      EXPECT_TRUE(plan["found"].get<bool>()) << plan.dump();
+      EXPECT_EQ(plan["roadmap"]["kind"], name);
+      if (name == "potential-field") {  // a reactive planner that stops in one of the maze's local minima: an answer, no path
+        EXPECT_EQ(plan["status"], "local_minimum") << plan.dump();
+        continue;
+      }
+      ASSERT_TRUE(plan["found"].get<bool>()) << plan.dump();
       EXPECT_TRUE(plan["certified"].get<bool>());
       EXPECT_EQ(plan["path_exact"][0], nlohmann::json::array({"1", "1"}));
       EXPECT_EQ(plan["path_exact"].back(), nlohmann::json::array({"19", "19"}));
-      EXPECT_EQ(plan["roadmap"]["kind"], name);
     }
     ++answered;
   }
@@ -105,7 +109,7 @@ TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
   struct Case {
     std::string arguments, message;
   } cases[] = {
-      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, prm, lazyprm, rrt, rrtstar, rrtconnect, rotation, hybrid-astar, car-rrt)"},
+      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, potential-field, prm, lazyprm, rrt, rrtstar, rrtconnect, rotation, hybrid-astar, car-rrt)"},
       {"--roadmap teleport", "--planner: unknown planner \"teleport\""},
       {"--resolution 40", "--resolution: the planner visibility has no option resolution (its options: search weight)"},
       {"--planner raster --resolution forty", "planner raster: option resolution=forty: expected a whole number"},

@@ -1,0 +1,54 @@
+#pragma once
+// The potential-field planner (`potential-field`; Choset et al. ch. 4): gradient descent on the
+// goal's attraction plus each C-obstacle's and wall's repulsion (reactive/obstacle_field.hpp).
+//
+// Each step goes along −∇U, `step` long at most, never longer than half the clearance where it
+// starts nor than the way to the goal, halved where the descent turns sharply (the gradient
+// changes fast) and grown back by a quarter where it runs straight. Every step's segment is
+// checked exactly against the C-space before it is taken; one that fails is halved until it
+// passes. It stops
+//   solved         within `goal-tolerance` of the goal, the last step to the goal itself checked;
+//   local_minimum  where the gradient vanishes, the steps shrink to nothing, or `patience` steps
+//                  in a row bring it no closer to the goal than it has been (it oscillates);
+//   limit          after `max-steps` steps (stopped_by "step limit");
+//   no_path        when start and goal lie in different components of the free space (proved).
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/plan/planner.hpp>
+#include <polyplan/plan/planner_entry.hpp>
+#include <polyplan/reactive/obstacle_field.hpp>
+
+#include <cstddef>
+#include <memory>
+
+namespace polyplan {
+
+struct PotentialFieldOptions {
+  double zeta = 1, d_star = 0, eta = 1, q_star = 1;
+  double step = 0;            // the longest step; 0: 1/200 of the diagonal of the box the world and queries span
+  double goal_tolerance = 0;  // 0: the step
+  std::size_t max_steps = 20000;
+  std::size_t patience = 400;  // steps without getting closer to the goal before it is a local minimum
+};
+
+class PotentialFieldPlanner final : public Planner<TranslatingRobot> {
+ public:
+  // `cspace` must outlive the planner. Throws std::invalid_argument for a weight or an influence
+  // that is negative or not finite, a negative step or tolerance, or 0 patience.
+  PotentialFieldPlanner(const CSpace& cspace, PotentialFieldOptions options = {});
+  ~PotentialFieldPlanner() override;
+
+  // Facts: roadmap.kind "potential-field", potential.steps, potential.step (the longest),
+  // potential.stopped_at ("(x, y)"), potential.gradient (its length there), potential.value,
+  // query_seconds. With QueryOptions::record the picture's cells hold log(1 + U) on a 64 × 64
+  // raster of the bounds (a world without bounds: none), and its expanded points are the
+  // descent's steps, wherever it stopped.
+  PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+PlannerEntry<TranslatingRobot> potential_field_planner_entry();
+
+}  // namespace polyplan

@@ -1,0 +1,96 @@
+// The potential-field planner on the exact C-space: solved where the field leads to the goal (the
+// path re-checked exactly), local_minimum in the U-shaped trap and at seed 002's minimum beside
+// the infinite wall, no_path proved between components, the step limit, bad options named.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/registry/registry.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace polyplan {
+namespace {
+
+World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json"); }
+
+PlanReport<ExactPoint> descend(const CSpace& cspace, const Query& query, const OptionValues& options = {}) {
+  return planners<TranslatingRobot>().find("potential-field")->make(cspace, options)->plan(query);
+}
+
+// "(x, y)" of the fact potential.stopped_at.
+std::pair<double, double> stopped_at(const PlanReport<ExactPoint>& report) {
+  double x = 0, y = 0;
+  EXPECT_EQ(std::sscanf(report.facts.text("potential.stopped_at").c_str(), "(%lf, %lf)", &x, &y), 2);
+  return {x, y};
+}
+
+TEST(PotentialFieldPlanner, DescendsToAGoalInTheOpenWithAnExactlyCheckedPath) {
+  const World world = shipped("u_trap");
+  const CSpace cspace(world);
+  const Query beside{{3, 17}, {17, 17}, "beside"};  // above the U, the way clear
+  const Query round{{3, 3}, {17, 16}, "round"};      // past the U's corner: repelled, then past it
+  for (const Query& q : {beside, round}) {
+    SCOPED_TRACE(q.name);
+    const auto report = descend(cspace, q);
+    ASSERT_TRUE(report.found) << report.why_not;
+    EXPECT_EQ(report.path.front(), q.start);
+    EXPECT_EQ(report.path.back(), q.goal);
+    EXPECT_TRUE(check_path(cspace, report.path).valid) << check_path(cspace, report.path).reason;
+    EXPECT_GT(report.facts.count("potential.steps"), 10);
+  }
+}
+
+TEST(PotentialFieldPlanner, TheUShapedTrapIsALocalMinimumAboveItsBottomWall) {
+  const World world = shipped("u_trap");
+  const auto report = descend(CSpace(world), world.queries[0]);
+  EXPECT_EQ(report.status, PlanStatus::local_minimum) << report.why_not;
+  EXPECT_NE(report.why_not.find("a local minimum of the potential at"), std::string::npos) << report.why_not;
+  const auto [x, y] = stopped_at(report);
+  // Seed 002's minimum again, turned: 0.68233 above the wall's top y = 7, where the repulsion
+  // (η = Q* = 1) balances the conic pull (ζ = 1).
+  EXPECT_NEAR(x, 10, 1e-4);
+  EXPECT_NEAR(y, 7.68233, 1e-4);
+}
+
+// Seed 002, problem 1: ζ = 1 conic (d* = 0), η = 1, Q* = 1; the descent ends at the seed's one
+// critical point, the minimum (−0.68233, 0).
+TEST(PotentialFieldPlanner, SeedTwosWallHoldsTheRobotAtItsMinimum) {
+  const World world = shipped("seed002_wall");
+  const auto report = descend(CSpace(world), world.queries[0], {{"step", "0.01"}, {"patience", "2000"}, {"max-steps", "50000"}});
+  EXPECT_EQ(report.status, PlanStatus::local_minimum) << report.why_not;
+  const auto [x, y] = stopped_at(report);
+  EXPECT_NEAR(x, -0.68233, 1e-4);
+  EXPECT_NEAR(y, 0, 1e-4);
+}
+
+TEST(PotentialFieldPlanner, NoPathIsProvedAndTheStepLimitIsALimit) {
+  const World corners = shipped("touching_corners");
+  EXPECT_EQ(descend(CSpace(corners), corners.queries[0]).status, PlanStatus::no_path);
+  const World trap = shipped("u_trap");
+  const auto cut = descend(CSpace(trap), trap.queries[0], {{"max-steps", "3"}});
+  EXPECT_EQ(cut.status, PlanStatus::limit);
+  EXPECT_EQ(cut.facts.text("stopped_by"), "step limit");
+  EXPECT_EQ(cut.facts.count("potential.steps"), 3);
+}
+
+TEST(PotentialFieldPlanner, BadOptionsAreNamed) {
+  const CSpace cspace(shipped("u_trap"));
+  const auto* entry = planners<TranslatingRobot>().find("potential-field");
+  for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{{"zeta", "-1"}, {"zeta", "0"}, {"q-star", "-2"}, {"patience", "0"}}) {
+    SCOPED_TRACE(name + "=" + value);
+    try {
+      entry->make(cspace, {{name, value}});
+      FAIL() << "accepted";
+    } catch (const InputError& e) {
+      EXPECT_EQ(std::string(e.what()).rfind("planner potential-field: " + name, 0), 0u) << e.what();
+    }
+  }
+}
+
+}  // namespace
+}  // namespace polyplan
