@@ -24,9 +24,13 @@ void add_arm_command(CLI::App& app, Action& run);
 void add_planners_command(CLI::App& app, Action& run);
 void add_steer_command(CLI::App& app, Action& run);
 void add_replan_command(CLI::App& app, Action& run);
+void add_potential_command(CLI::App& app, Action& run);
 
 // Writes `value` to `target` ("-" is standard output); throws InputError if it cannot.
 void write_json(const nlohmann::json& value, const std::string& target);
+
+// "1,2.5,-3" as numbers; throws InputError "OPTION TEXT: "PART" is not a finite number".
+std::vector<double> comma_numbers(const std::string& text, const std::string& option);
 
 // Prints warnings of the world reader on stderr.
 void print_warnings(const std::vector<std::string>& warnings);

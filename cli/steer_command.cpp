@@ -11,7 +11,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <sstream>
 
 namespace polyplan::cli {
 namespace {
@@ -25,21 +24,7 @@ struct SteerOptions {
 
 // "X,Y,THETA" with theta in degrees.
 CarPose pose_option(const std::string& text, const char* option) {
-  std::vector<double> values;
-  std::stringstream in(text);
-  std::string part;
-  while (std::getline(in, part, ',')) {
-    std::size_t used = 0;
-    double value = 0;
-    try {
-      value = std::stod(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used == 0 || used != part.size() || !std::isfinite(value))
-      throw InputError(std::string(option) + " " + text + ": \"" + part + "\" is not a finite number");
-    values.push_back(value);
-  }
+  const std::vector<double> values = comma_numbers(text, std::string(option));
   if (values.size() != 3) throw InputError(std::string(option) + " " + text + ": expected X,Y,THETA (theta in degrees)");
   return {values[0], values[1], values[2] * M_PI / 180};
 }

@@ -2,9 +2,9 @@
 
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
-#include <polyplan/geometry/rasterize.hpp>
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/reactive/potential_map.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -18,21 +18,6 @@ namespace {
 double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 std::string point_text(Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
-
-// The diagonal of the box the world's bounds span, or without bounds its C-obstacles and queries.
-double world_diagonal(const CSpace& cspace) {
-  const World& world = cspace.world();
-  if (world.bounds) return std::hypot(to_double(world.bounds->xmax - world.bounds->xmin), to_double(world.bounds->ymax - world.bounds->ymin));
-  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  const auto take = [&](const ExactPoint& p) {
-    const Vec2 v = approximate(p);
-    x0 = std::min(x0, v.x), y0 = std::min(y0, v.y), x1 = std::max(x1, v.x), y1 = std::max(y1, v.y);
-  };
-  for (const PolygonWithHoles& c : cspace.cobstacles())
-    for (const ExactPoint& p : c.outer) take(p);
-  for (const ExactPoint& p : query_points(world)) take(p);
-  return x1 >= x0 ? std::max(std::hypot(x1 - x0, y1 - y0), 1.0) : 1.0;
-}
 
 void check_options(const PotentialFieldOptions& o) {
   const auto weight = [](double v, const char* name) {
@@ -59,7 +44,7 @@ struct PotentialFieldPlanner::Impl {
 
   Impl(const CSpace& c, const PotentialFieldOptions& o)
       : cspace(&c), options(o), parameters{{o.zeta, o.d_star}, {o.eta, o.q_star}}, field(c),
-        step(o.step > 0 ? o.step : world_diagonal(c) / 200), tolerance(o.goal_tolerance > 0 ? o.goal_tolerance : step) {}
+        step(o.step > 0 ? o.step : box_around(c, 1).diagonal() / 200), tolerance(o.goal_tolerance > 0 ? o.goal_tolerance : step) {}
 
   // One step from `at` along `direction`, at most `length` long: halved until its segment is
   // exactly free (a step that started in the free space always ends so, at some length).
@@ -132,23 +117,9 @@ struct PotentialFieldPlanner::Impl {
     return d;
   }
 
-  // log(1 + U) over the free cells of a 64 × 64 raster of the bounds, for the picture.
+  // log(1 + U) over a 64 × 64 grid of the box around the world, for the picture.
   std::shared_ptr<const CellGrid> heat_map(const Query& query) const {
-    if (!cspace->world().bounds) return nullptr;
-    const Raster raster = rasterize(*cspace, 64);
-    auto grid = std::make_shared<CellGrid>();
-    grid->columns = grid->rows = raster.cells_per_axis;
-    grid->x0 = to_double(raster.bounds.xmin), grid->y0 = to_double(raster.bounds.ymin);
-    grid->cell_width = to_double(raster.cell_width()), grid->cell_height = to_double(raster.cell_height());
-    grid->value_name = "log(1 + potential)";
-    const Vec2 goal = approximate(query.goal);
-    for (std::size_t y = 0; y < raster.cells_per_axis; ++y)
-      for (std::size_t x = 0; x < raster.cells_per_axis; ++x) {
-        const bool blocked = raster.blocked[x + y * raster.cells_per_axis] != 0;
-        grid->states.push_back(blocked ? CellGrid::blocked : CellGrid::free);
-        grid->values.push_back(blocked ? 0.0f : static_cast<float>(std::log1p(field.potential(approximate(raster.cell_center(x, y)), goal, parameters).value)));
-      }
-    return grid;
+    return std::make_shared<const CellGrid>(potential_map(*cspace, field, approximate(query.goal), parameters, box_around(*cspace, 64)));
   }
 };
 

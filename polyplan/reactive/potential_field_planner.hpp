@@ -24,7 +24,7 @@ namespace polyplan {
 
 struct PotentialFieldOptions {
   double zeta = 1, d_star = 0, eta = 1, q_star = 1;
-  double step = 0;            // the longest step; 0: 1/200 of the diagonal of the box the world and queries span
+  double step = 0;            // the longest step; 0: 1/200 of the diagonal of the box around the world (box_around)
   double goal_tolerance = 0;  // 0: the step
   std::size_t max_steps = 20000;
   std::size_t patience = 400;  // steps without getting closer to the goal before it is a local minimum
@@ -40,7 +40,7 @@ class PotentialFieldPlanner final : public Planner<TranslatingRobot> {
   // Facts: roadmap.kind "potential-field", potential.steps, potential.step (the longest),
   // potential.stopped_at ("(x, y)"), potential.gradient (its length there), potential.value,
   // query_seconds. With QueryOptions::record the picture's cells hold log(1 + U) on a 64 × 64
-  // raster of the bounds (a world without bounds: none), and its expanded points are the
+  // grid of the box around the world (reactive/potential_map.hpp), and its expanded points are the
   // descent's steps, wherever it stopped.
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
 

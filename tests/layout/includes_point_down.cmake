@@ -20,7 +20,7 @@ set(below_sampling plan free_space geometry search)
 set(below_arm plan sampling geometry search)
 set(below_car plan roadmaps sampling geometry search)
 set(below_registry plan roadmaps grids incremental reactive rotation sampling arm car geometry search)
-set(below_draw plan arm car incremental io sampling geometry search)
+set(below_draw plan arm car incremental reactive io sampling geometry search)
 
 file(GLOB folders RELATIVE ${SOURCE_DIR}/polyplan ${SOURCE_DIR}/polyplan/*)
 set(families free_space roadmaps grids incremental reactive rotation sampling arm car)
