@@ -3,6 +3,7 @@
 #include <polyplan/grids/gvd_grid_planner.hpp>
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/incremental/replanning_planner.hpp>
+#include <polyplan/reactive/bug_planner.hpp>
 #include <polyplan/reactive/potential_field_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
@@ -31,6 +32,8 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       replanning_planner_entry(ReplanAlgorithm::lpastar),
       replanning_planner_entry(ReplanAlgorithm::astar),
       potential_field_planner_entry(),
+      bug_planner_entry(BugKind::bug1),
+      bug_planner_entry(BugKind::bug2),
       prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
       lazy_prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
       rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),

@@ -1,0 +1,47 @@
+#pragma once
+// Bug1 and Bug2 (Lumelsky & Stepanov; Choset et al. ch. 2), registered as `bug1` and `bug2`, on
+// the exact C-space: the robot heads for the goal along the straight line; where that line would
+// enter a C-obstacle (the hit point, exact: where the line meets the free space's boundary) it
+// follows the boundary with the obstacle on its right, along the free space's boundary cycles
+// (CSpace::free_components(): C-obstacles and walls alike), and leaves
+//   bug1  after going round the whole obstacle, from the boundary point nearest the goal (exact:
+//         the foot of the perpendicular or a corner), reached the shorter way round;
+//   bug2  at the first point of the m-line (the segment start–goal) nearer the goal than the hit
+//         point from which it can head for the goal.
+// Every point it reports is rational and every motion runs along the straight line or along a
+// boundary edge, so the path is checked exactly like any other. Both are complete: the goal is
+// unreachable when Bug1's nearest point cannot head for it, or Bug2 comes back to its hit point
+// (status no_path, and start and goal lying in different components is the proof it finds).
+// Facts: bug.hits, bug.leaves (points "(x, y)" in order), bug.distance, bug.bound — D + 1.5 Σ pᵢ
+// for Bug1, D + ½ Σ nᵢ pᵢ for Bug2 (D the start–goal distance, pᵢ the perimeters of the boundary
+// cycles met, nᵢ how often the m-line crosses each) — which the distance never exceeds.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/plan/planner.hpp>
+#include <polyplan/plan/planner_entry.hpp>
+
+#include <cstddef>
+#include <memory>
+
+namespace polyplan {
+
+enum class BugKind { bug1, bug2 };
+
+struct BugOptions {
+  std::size_t max_hits = 1000;  // then status limit (stopped_by "hit limit")
+};
+
+class BugPlanner final : public Planner<TranslatingRobot> {
+ public:
+  // `cspace` must outlive the planner.
+  BugPlanner(const CSpace& cspace, BugKind kind, BugOptions options = {});
+  ~BugPlanner() override;
+  PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+PlannerEntry<TranslatingRobot> bug_planner_entry(BugKind kind);
+
+}  // namespace polyplan

@@ -1,0 +1,79 @@
+// Bug1 and Bug2 on the exact C-space: round seed 002's wall and out of the U-shaped trap, paths
+// checked exactly, hit and leave points where the geometry puts them, the distance within the
+// textbook's bound computed here from the obstacle's own perimeter; unreachable goals no_path.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/registry/registry.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+namespace polyplan {
+namespace {
+
+World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json"); }
+
+PlanReport<ExactPoint> walk(const char* bug, const CSpace& cspace, const Query& q) {
+  return planners<TranslatingRobot>().find(bug)->make(cspace, {})->plan(q);
+}
+
+// The wall x ∈ [0, 0.5], y ∈ [−100, 100]: perimeter 401. From (−3, 0.5) the line to (2, 0) hits
+// it at (0, 0.2) (y = 0.5 − 0.1·3).
+TEST(BugPlanners, GoRoundSeedTwosWallWithinTheirBounds) {
+  const World world = shipped("seed002_wall");
+  const CSpace cspace(world);
+  const Query& q = world.queries[0];
+  const double d = std::hypot(5.0, 0.5), perimeter = 401;
+  for (const char* bug : {"bug1", "bug2"}) {
+    SCOPED_TRACE(bug);
+    const auto report = walk(bug, cspace, q);
+    ASSERT_TRUE(report.found) << report.why_not;
+    EXPECT_EQ(report.path.front(), q.start);
+    EXPECT_EQ(report.path.back(), q.goal);
+    EXPECT_TRUE(check_path(cspace, report.path).valid);
+    EXPECT_EQ(report.facts.text("bug.hits"), "(0.000000, 0.200000)");
+    const double bound = std::string(bug) == "bug1" ? d + 1.5 * perimeter : d + 0.5 * 2 * perimeter;  // the m-line crosses the wall twice
+    EXPECT_NEAR(report.facts.number("bug.bound"), bound, 1e-9);
+    EXPECT_LE(report.length, bound);
+    EXPECT_GT(report.length, 200);  // round an end of the wall
+  }
+  // Bug2 leaves where the m-line comes out of the wall's far side, x = 0.5: y = 0.5 − 0.1·3.5.
+  EXPECT_EQ(walk("bug2", cspace, q).facts.text("bug.leaves"), "(0.500000, 0.150000)");
+  // Bug1 leaves from the wall's point nearest the goal, the foot of the perpendicular on x = 0.5.
+  EXPECT_EQ(walk("bug1", cspace, q).facts.text("bug.leaves"), "(0.500000, 0.000000)");
+}
+
+TEST(BugPlanners, WalkOutOfTheTrap) {
+  const World world = shipped("u_trap");
+  const CSpace cspace(world);
+  for (const char* bug : {"bug1", "bug2"}) {
+    SCOPED_TRACE(bug);
+    const auto report = walk(bug, cspace, world.queries[0]);
+    ASSERT_TRUE(report.found) << report.why_not;
+    EXPECT_TRUE(check_path(cspace, report.path).valid);
+    EXPECT_EQ(report.facts.text("bug.hits"), "(10.000000, 7.000000)");  // the inside of the U's bottom
+    EXPECT_LE(report.length, report.facts.number("bug.bound"));
+  }
+  // Bug2 leaves where the m-line x = 10 meets the U's outside bottom, y = 6.
+  EXPECT_EQ(walk("bug2", cspace, world.queries[0]).facts.text("bug.leaves"), "(10.000000, 6.000000)");
+}
+
+TEST(BugPlanners, AnUnreachableGoalIsNoPath) {
+  // office.json's query 3 starts inside the pillar's hole; wkt_obstacles' query 1 inside a ring.
+  for (const auto& [name, index] : {std::pair{"office", 3}, std::pair{"wkt_obstacles", 1}}) {
+    const World world = shipped(name);
+    const CSpace cspace(world);
+    for (const char* bug : {"bug1", "bug2"}) {
+      SCOPED_TRACE(std::string(name) + " " + bug);
+      const auto report = walk(bug, cspace, world.queries[static_cast<std::size_t>(index)]);
+      EXPECT_EQ(report.status, PlanStatus::no_path) << report.why_not;
+      EXPECT_NE(report.why_not.find("the goal is unreachable"), std::string::npos) << report.why_not;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace polyplan
