@@ -179,7 +179,7 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
   facts.set("raster.cells_per_axis", first.cells_per_axis);
   facts.set("raster.blocked_cells", first.blocked_count());
   facts.set("replan.algorithm", std::string(to_string(r.algorithm)));
-  facts.set("replan.sensor_cells", r.sensor_radius());
+  facts.set("replan.sensor_cells", r.options.sensor);  // 0: the whole raster
   const auto finish = [&] {
     facts.set("query_seconds", querying.seconds());
     return std::move(report);

@@ -39,7 +39,7 @@ class ReplanningPlanner final : public Planner<TranslatingRobot> {
   ~ReplanningPlanner() override;
 
   // Facts: roadmap.kind (the planner's name), raster.cells_per_axis, raster.blocked_cells (at the
-  // start), raster.start_cell, raster.goal_cell, replan.algorithm, replan.sensor_cells,
+  // start), raster.start_cell, raster.goal_cell, replan.algorithm, replan.sensor_cells (0: all),
   // replan.moves, replan.replans, replan.changes_made (those the drive lived to see),
   // replan.grid_cost (the moves' cost in cells), search.expanded, search.generated,
   // search.heap_operations, query_seconds. The picture shows the world and its raster as they
