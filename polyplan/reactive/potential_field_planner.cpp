@@ -4,6 +4,7 @@
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/reactive/gradient_descent.hpp>
 #include <polyplan/reactive/potential_map.hpp>
 
 #include <algorithm>
@@ -14,10 +15,6 @@
 
 namespace polyplan {
 namespace {
-
-double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
-
-std::string point_text(Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
 
 void check_options(const PotentialFieldOptions& o) {
   const auto weight = [](double v, const char* name) {
@@ -46,75 +43,14 @@ struct PotentialFieldPlanner::Impl {
       : cspace(&c), options(o), parameters{{o.zeta, o.d_star}, {o.eta, o.q_star}}, field(c),
         step(o.step > 0 ? o.step : box_around(c, 1).diagonal() / 200), tolerance(o.goal_tolerance > 0 ? o.goal_tolerance : step) {}
 
-  // One step from `at` along `direction`, at most `length` long: halved until its segment is
-  // exactly free (a step that started in the free space always ends so, at some length).
-  std::optional<ExactPoint> free_step(const ExactPoint& at, Vec2 from, Vec2 direction, double length) const {
-    for (int halvings = 0; halvings < 60; ++halvings, length /= 2) {
-      const ExactPoint to = exactly({from.x + length * direction.x, from.y + length * direction.y});
-      if (check_segment(*cspace, at, to).valid) return to;
-    }
-    return std::nullopt;
-  }
-
-  struct Descent {
-    std::vector<ExactPoint> path;
-    PlanStatus status = PlanStatus::limit;
-    std::string why;
-    Potential last;
-  };
-
   Descent descend(const Query& query) const {
-    Descent d;
-    d.path = {query.start};
     const Vec2 goal = approximate(query.goal);
-    Vec2 q = approximate(query.start), previous_direction{0, 0};
-    double current = step, best = distance(q, goal);
-    std::size_t since_best = 0;
-    for (std::size_t k = 0; k < options.max_steps; ++k) {
-      if (distance(q, goal) <= tolerance) {
-        if (check_segment(*cspace, d.path.back(), query.goal).valid) {
-          d.path.push_back(query.goal);
-          d.status = PlanStatus::solved;
-        } else {
-          d.status = PlanStatus::not_found;
-          d.why = "within the goal tolerance at " + point_text(q) + ", but the straight step to the goal is not free";
-        }
-        return d;
-      }
-      if (field.clearance(q) == 0) {  // the repulsion is infinite in contact: no gradient to follow
-        d.status = PlanStatus::not_found;
-        d.why = "at " + point_text(q) + " the robot touches an obstacle, where the repulsion is infinite and has no gradient";
-        return d;
-      }
-      d.last = field.potential(q, goal, parameters);
-      const double g = std::hypot(d.last.gradient.x, d.last.gradient.y);
-      if (!(g > 1e-12 * (options.zeta + 1))) return stop(d, q, "the gradient vanishes");
-      const Vec2 direction{-d.last.gradient.x / g, -d.last.gradient.y / g};
-      // A sharp turn means the gradient changes fast here: shorter steps; a straight run, longer.
-      current = direction.x * previous_direction.x + direction.y * previous_direction.y < 0.5 && k > 0 ? current / 2
-                                                                                                         : std::min(step, current * 1.25);
-      previous_direction = direction;
-      if (current < 1e-9 * step) return stop(d, q, "its steps shrank to nothing");
-      const double length = std::min({current, distance(q, goal), field.clearance(q) / 2});
-      const auto to = free_step(d.path.back(), q, direction, length);
-      if (!to) return stop(d, q, "no step along the gradient is free");
-      d.path.push_back(*to);
-      q = approximate(*to);
-      if (distance(q, goal) < best * (1 - 1e-9)) {
-        best = distance(q, goal);
-        since_best = 0;
-      } else if (++since_best >= options.patience) {
-        return stop(d, q, std::to_string(options.patience) + " steps brought it no closer to the goal (it oscillates)");
-      }
-    }
-    d.why = "the step limit (" + std::to_string(options.max_steps) + ") ended the descent at " + point_text(q);
-    return d;
-  }
-
-  static Descent& stop(Descent& d, Vec2 q, const std::string& why) {
-    d.status = PlanStatus::local_minimum;
-    d.why = "a local minimum of the potential at " + point_text(q) + ": " + why;
-    return d;
+    const SlopeFunction slope = [&](Vec2 q) -> SlopeAt {
+      if (field.clearance(q) == 0) return {std::nullopt, "the robot touches an obstacle, where the repulsion is infinite and has no gradient"};
+      const Potential p = field.potential(q, goal, parameters);
+      return {Slope{p.gradient, p.value}, {}};
+    };
+    return polyplan::descend(*cspace, field, query, slope, {step, tolerance, options.max_steps, options.patience, 1e-12 * (options.zeta + 1)});
   }
 
   // log(1 + U) over a 64 × 64 grid of the box around the world, for the picture.
@@ -150,7 +86,7 @@ PlanReport<ExactPoint> PotentialFieldPlanner::plan(const Query& query, const Que
     report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
     return finish();
   }
-  Impl::Descent descent = r.descend(query);
+  Descent descent = r.descend(query);
   if (options.record) report.expanded = descent.path;  // the picture shows the descent, wherever it stopped
   const Vec2 stopped = approximate(descent.path.back());
   facts.set("potential.steps", descent.path.size() - 1);

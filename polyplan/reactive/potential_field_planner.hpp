@@ -2,16 +2,9 @@
 // The potential-field planner (`potential-field`; Choset et al. ch. 4): gradient descent on the
 // goal's attraction plus each C-obstacle's and wall's repulsion (reactive/obstacle_field.hpp).
 //
-// Each step goes along −∇U, `step` long at most, never longer than half the clearance where it
-// starts nor than the way to the goal, halved where the descent turns sharply (the gradient
-// changes fast) and grown back by a quarter where it runs straight. Every step's segment is
-// checked exactly against the C-space before it is taken; one that fails is halved until it
-// passes. It stops
-//   solved         within `goal-tolerance` of the goal, the last step to the goal itself checked;
-//   local_minimum  where the gradient vanishes, the steps shrink to nothing, or `patience` steps
-//                  in a row bring it no closer to the goal than it has been (it oscillates);
-//   limit          after `max-steps` steps (stopped_by "step limit");
-//   no_path        when start and goal lie in different components of the free space (proved).
+// The descent and its ends (solved, local_minimum, not_found, limit) are
+// reactive/gradient_descent.hpp's; no_path when start and goal lie in different components of the
+// free space (proved).
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/plan/planner_entry.hpp>

@@ -4,6 +4,7 @@
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/incremental/replanning_planner.hpp>
 #include <polyplan/reactive/bug_planner.hpp>
+#include <polyplan/reactive/navigation_function_planner.hpp>
 #include <polyplan/reactive/potential_field_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
@@ -32,6 +33,7 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       replanning_planner_entry(ReplanAlgorithm::lpastar),
       replanning_planner_entry(ReplanAlgorithm::astar),
       potential_field_planner_entry(),
+      navigation_function_planner_entry(),
       bug_planner_entry(BugKind::bug1),
       bug_planner_entry(BugKind::bug2),
       prm_planner_entry<TranslatingRobot>(polygon_sampling_space),

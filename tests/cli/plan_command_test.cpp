@@ -79,6 +79,10 @@ TEST(Plan, EveryRegisteredPlannerAnswersByNameAndRoadmapIsAnAlias) {
         EXPECT_EQ(plan["status"], "local_minimum") << plan.dump();
         continue;
       }
+      if (name == "navigation-function") {  // the maze's walls are no discs
+        EXPECT_EQ(plan["why_not"].get<std::string>().rfind("not a sphere world", 0), 0u) << plan.dump();
+        continue;
+      }
       ASSERT_TRUE(plan["found"].get<bool>()) << plan.dump();
       EXPECT_TRUE(plan["certified"].get<bool>());
       EXPECT_EQ(plan["path_exact"][0], nlohmann::json::array({"1", "1"}));
@@ -109,7 +113,7 @@ TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
   struct Case {
     std::string arguments, message;
   } cases[] = {
-      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, potential-field, bug1, bug2, prm, lazyprm, rrt, rrtstar, rrtconnect, rotation, hybrid-astar, car-rrt)"},
+      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, potential-field, navigation-function, bug1, bug2, prm, lazyprm, rrt, rrtstar, rrtconnect, rotation, hybrid-astar, car-rrt)"},
       {"--roadmap teleport", "--planner: unknown planner \"teleport\""},
       {"--resolution 40", "--resolution: the planner visibility has no option resolution (its options: search weight)"},
       {"--planner raster --resolution forty", "planner raster: option resolution=forty: expected a whole number"},

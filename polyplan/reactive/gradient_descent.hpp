@@ -1,0 +1,56 @@
+#pragma once
+// Gradient descent through the exact C-space, for the reactive planners (potential-field,
+// navigation-function): each step goes along the descent direction a slope gives, at most `step`
+// long, never longer than half the clearance where it starts nor than the way to the goal, halved
+// where the descent turns sharply (the slope changes fast) and grown back by a quarter where it
+// runs straight; every step's segment is checked exactly before it is taken, and halved until it
+// passes. It ends
+//   solved         within `tolerance` of the goal, the last step to the goal itself checked;
+//   local_minimum  where the slope vanishes, the steps shrink to nothing, or `patience` steps in
+//                  a row bring it no closer to the goal than it has been (it oscillates);
+//   not_found      where the slope is undefined (in contact with an obstacle, say);
+//   limit          after `max_steps` steps.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/plan/plan_report.hpp>
+#include <polyplan/reactive/obstacle_field.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace polyplan {
+
+struct Slope {
+  Vec2 gradient;     // the descent goes against it
+  double value = 0;  // of the function descended, for the facts
+};
+
+// The slope at a point, or why there is none there.
+struct SlopeAt {
+  std::optional<Slope> slope;
+  std::string why_none;
+};
+using SlopeFunction = std::function<SlopeAt(Vec2)>;
+
+struct DescentOptions {
+  double step = 1, tolerance = 1;
+  std::size_t max_steps = 20000, patience = 400;
+  double vanishing = 1e-12;  // a gradient shorter than this has vanished
+};
+
+struct Descent {
+  std::vector<ExactPoint> path;  // start first, every step taken
+  PlanStatus status = PlanStatus::limit;
+  std::string why;
+  Slope last;
+};
+
+// `field` gives the clearance that caps the steps.
+Descent descend(const CSpace& cspace, const ObstacleField& field, const Query& query, const SlopeFunction& slope, const DescentOptions& options);
+
+// "(x, y)" with six decimals.
+std::string point_text(Vec2 p);
+
+}  // namespace polyplan

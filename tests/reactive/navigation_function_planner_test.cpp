@@ -1,0 +1,74 @@
+// The navigation function of a sphere world: through the gap between two discs where the potential
+// field stops, and every query of seed 000's sphere world, paths checked exactly and the κ used
+// reported; worlds that are not sphere worlds said so; a bad κ named.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/registry/registry.hpp>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace polyplan {
+namespace {
+
+World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json"); }
+
+PlanReport<ExactPoint> plan_with(const char* planner, const CSpace& cspace, const Query& q, const OptionValues& options = {}) {
+  return planners<TranslatingRobot>().find(planner)->make(cspace, options)->plan(q);
+}
+
+TEST(NavigationFunctionPlanner, PassesTheGapWhereThePotentialFieldStops) {
+  const World world = shipped("disc_gap");
+  const CSpace cspace(world);
+  const Query& q = world.queries[0];
+  const auto field = plan_with("potential-field", cspace, q);
+  EXPECT_EQ(field.status, PlanStatus::local_minimum) << field.why_not;
+  const auto navigation = plan_with("navigation-function", cspace, q);
+  ASSERT_TRUE(navigation.found) << navigation.why_not;
+  EXPECT_EQ(navigation.path.back(), q.goal);
+  EXPECT_TRUE(check_path(cspace, navigation.path).valid);
+  EXPECT_GE(navigation.facts.number("navigation.kappa"), 2);
+  EXPECT_EQ(navigation.facts.count("navigation.spheres"), 2);
+  // A κ given is the κ used.
+  const auto at_64 = plan_with("navigation-function", cspace, q, {{"kappa", "64"}});
+  ASSERT_TRUE(at_64.found) << at_64.why_not;
+  EXPECT_EQ(at_64.facts.number("navigation.kappa"), 64);
+}
+
+TEST(NavigationFunctionPlanner, SolvesEveryQueryOfTheSphereWorld) {
+  const World world = shipped("sphere_world");
+  const CSpace cspace(world);
+  for (const Query& q : world.queries) {
+    SCOPED_TRACE(q.name);
+    const auto report = plan_with("navigation-function", cspace, q);
+    ASSERT_TRUE(report.found) << report.why_not;
+    EXPECT_TRUE(check_path(cspace, report.path).valid);
+  }
+}
+
+TEST(NavigationFunctionPlanner, AWorldThatIsNoSphereWorldIsSaidToBe) {
+  const World office = shipped("office");
+  const auto report = plan_with("navigation-function", CSpace(office), office.queries[0]);
+  EXPECT_EQ(report.status, PlanStatus::not_found);
+  EXPECT_EQ(report.why_not.rfind("not a sphere world: ", 0), 0u) << report.why_not;
+  const World trap = shipped("u_trap");  // the start lies in the disc around the U
+  const auto inside = plan_with("navigation-function", CSpace(trap), trap.queries[0]);
+  EXPECT_EQ(inside.status, PlanStatus::not_found);
+  EXPECT_NE(inside.why_not.find("inside the disc standing for C-obstacle 0"), std::string::npos) << inside.why_not;
+}
+
+TEST(NavigationFunctionPlanner, ABadKappaIsNamed) {
+  const CSpace cspace(shipped("disc_gap"));
+  try {
+    planners<TranslatingRobot>().find("navigation-function")->make(cspace, {{"kappa", "0.5"}});
+    FAIL() << "kappa 0.5 accepted";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("planner navigation-function: kappa", 0), 0u) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace polyplan
