@@ -1,6 +1,8 @@
 #include <polyplan/reactive/gradient_descent.hpp>
 
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/geometry/shared_component.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -77,6 +79,33 @@ Descent descend(const CSpace& cspace, const ObstacleField& field, const Query& q
   }
   d.why = "the step limit (" + std::to_string(o.max_steps) + ") ended the descent at " + point_text(q);
   return d;
+}
+
+bool answered_before_descent(const CSpace& cspace, const Query& query, PlanReport<ExactPoint>& report) {
+  if (auto why = cspace.query_not_free(query)) {
+    report.fail(PlanStatus::invalid_query, *why);
+    return true;
+  }
+  if (!share_a_component(cspace, query.start, query.goal)) {
+    report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
+    return true;
+  }
+  return false;
+}
+
+void report_descent(Descent descent, const std::string& prefix, bool record, const std::string& why_suffix, PlanReport<ExactPoint>& report) {
+  if (record) report.expanded = descent.path;  // the picture shows the descent, wherever it stopped
+  report.facts.set(prefix + ".steps", descent.path.size() - 1);
+  report.facts.set(prefix + ".stopped_at", point_text(approximate(descent.path.back())));
+  if (descent.status != PlanStatus::solved) {
+    if (descent.status == PlanStatus::limit) report.facts.set("stopped_by", "step limit");
+    report.fail(descent.status, descent.why + why_suffix);
+    return;
+  }
+  report.succeed();
+  report.path = std::move(descent.path);
+  report.length = euclidean_length(report.path);
+  report.certificate = {true, "exact segment test of every step as it was taken (arrangement zone walk)"};
 }
 
 }  // namespace polyplan

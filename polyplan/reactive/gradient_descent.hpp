@@ -50,6 +50,17 @@ struct Descent {
 // `field` gives the clearance that caps the steps.
 Descent descend(const CSpace& cspace, const ObstacleField& field, const Query& query, const SlopeFunction& slope, const DescentOptions& options);
 
+// A query a descent need not be tried on, answered in `report` (true): a start or goal that is
+// not free (invalid_query), or start and goal in different components of the free space (no_path,
+// proved).
+bool answered_before_descent(const CSpace& cspace, const Query& query, PlanReport<ExactPoint>& report);
+
+// The descent as a planner's answer: the facts PREFIX.steps and PREFIX.stopped_at, its steps as
+// the expanded configurations when `record`, and the path (certified: every step was checked
+// exactly) when solved, or the status and `why` (followed by `why_suffix`) otherwise — stopped_by
+// "step limit" for a limit.
+void report_descent(Descent descent, const std::string& prefix, bool record, const std::string& why_suffix, PlanReport<ExactPoint>& report);
+
 // "(x, y)" with six decimals.
 std::string point_text(Vec2 p);
 

@@ -1,7 +1,5 @@
 #include <polyplan/reactive/navigation_function_planner.hpp>
 
-#include <polyplan/geometry/polyline.hpp>
-#include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/gradient_descent.hpp>
 #include <polyplan/reactive/obstacle_field.hpp>
@@ -120,14 +118,7 @@ PlanReport<ExactPoint> NavigationFunctionPlanner::plan(const Query& query, const
     facts.set("query_seconds", querying.seconds());
     return std::move(report);
   };
-  if (auto why = r.cspace->query_not_free(query)) {
-    report.fail(PlanStatus::invalid_query, *why);
-    return finish();
-  }
-  if (!share_a_component(*r.cspace, query.start, query.goal)) {
-    report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
-    return finish();
-  }
+  if (answered_before_descent(*r.cspace, query, report)) return finish();
   if (auto why = not_a_sphere_world(r.world, r.obstacles)) {
     report.fail(PlanStatus::not_found, "not a sphere world: " + *why);
     return finish();
@@ -139,19 +130,8 @@ PlanReport<ExactPoint> NavigationFunctionPlanner::plan(const Query& query, const
     descent = r.descend(query, k);
     if (descent.status == PlanStatus::solved || descent.status == PlanStatus::not_found) break;
   }
-  if (options.record) report.expanded = descent.path;
   facts.set("navigation.kappa", kappa);
-  facts.set("navigation.steps", descent.path.size() - 1);
-  facts.set("navigation.stopped_at", point_text(approximate(descent.path.back())));
-  if (descent.status != PlanStatus::solved) {
-    if (descent.status == PlanStatus::limit) facts.set("stopped_by", "step limit");
-    report.fail(descent.status, descent.why + " (kappa " + std::to_string(kappa) + ")");
-    return finish();
-  }
-  report.succeed();
-  report.path = std::move(descent.path);
-  report.length = euclidean_length(report.path);
-  report.certificate = {true, "exact segment test of every step as it was taken (arrangement zone walk)"};
+  report_descent(std::move(descent), "navigation", options.record, " (kappa " + std::to_string(kappa) + ")", report);
   return finish();
 }
 

@@ -1,8 +1,6 @@
 #include <polyplan/reactive/potential_field_planner.hpp>
 
 #include <polyplan/geometry/path_check.hpp>
-#include <polyplan/geometry/polyline.hpp>
-#include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/gradient_descent.hpp>
 #include <polyplan/reactive/potential_map.hpp>
@@ -78,30 +76,11 @@ PlanReport<ExactPoint> PotentialFieldPlanner::plan(const Query& query, const Que
     return std::move(report);
   };
   if (options.record) report.cells = r.heat_map(query);
-  if (auto why = r.cspace->query_not_free(query)) {
-    report.fail(PlanStatus::invalid_query, *why);
-    return finish();
-  }
-  if (!share_a_component(*r.cspace, query.start, query.goal)) {
-    report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
-    return finish();
-  }
+  if (answered_before_descent(*r.cspace, query, report)) return finish();
   Descent descent = r.descend(query);
-  if (options.record) report.expanded = descent.path;  // the picture shows the descent, wherever it stopped
-  const Vec2 stopped = approximate(descent.path.back());
-  facts.set("potential.steps", descent.path.size() - 1);
-  facts.set("potential.stopped_at", point_text(stopped));
   facts.set("potential.gradient", std::hypot(descent.last.gradient.x, descent.last.gradient.y));
   facts.set("potential.value", descent.last.value);
-  if (descent.status != PlanStatus::solved) {
-    if (descent.status == PlanStatus::limit) facts.set("stopped_by", "step limit");
-    report.fail(descent.status, descent.why);
-    return finish();
-  }
-  report.succeed();
-  report.path = std::move(descent.path);
-  report.length = euclidean_length(report.path);
-  report.certificate = {true, "exact segment test of every step as it was taken (arrangement zone walk)"};
+  report_descent(std::move(descent), "potential", options.record, "", report);
   return finish();
 }
 
