@@ -61,6 +61,23 @@ TEST(BugPlanners, WalkOutOfTheTrap) {
   EXPECT_EQ(walk("bug2", cspace, world.queries[0]).facts.text("bug.leaves"), "(10.000000, 6.000000)");
 }
 
+// Out of the spiral's heart (eight overlapping walls, one C-obstacle): both walk it out within
+// their bounds, where the potential field is caught in a corner.
+TEST(BugPlanners, WalkOutOfTheSpiral) {
+  const World world = shipped("spiral");
+  const CSpace cspace(world);
+  for (const char* bug : {"bug1", "bug2"}) {
+    SCOPED_TRACE(bug);
+    const auto report = walk(bug, cspace, world.queries[0]);
+    ASSERT_TRUE(report.found) << report.why_not;
+    EXPECT_TRUE(check_path(cspace, report.path).valid);
+    EXPECT_LE(report.length, report.facts.number("bug.bound"));
+    EXPECT_EQ(report.facts.text("bug.hits").rfind("(7.500000, 7.500000)", 0), 0u);  // the first wall the line to (1, 1) meets
+  }
+  const auto field = planners<TranslatingRobot>().find("potential-field")->make(cspace, {})->plan(world.queries[0]);
+  EXPECT_EQ(field.status, PlanStatus::local_minimum) << field.why_not;
+}
+
 TEST(BugPlanners, AnUnreachableGoalIsNoPath) {
   // office.json's query 3 starts inside the pillar's hole; wkt_obstacles' query 1 inside a ring.
   for (const auto& [name, index] : {std::pair{"office", 3}, std::pair{"wkt_obstacles", 1}}) {
