@@ -46,17 +46,23 @@ TEST(BugPlanners, GoRoundSeedTwosWallWithinTheirBounds) {
   EXPECT_EQ(walk("bug1", cspace, q).facts.text("bug.leaves"), "(0.500000, 0.000000)");
 }
 
+// Both Bugs reach the goal of the world's first query along an exactly valid path within their
+// bound, the first hit point where `first_hit` says.
+void expect_both_walk_out(const CSpace& cspace, const Query& q, const std::string& first_hit) {
+  for (const char* bug : {"bug1", "bug2"}) {
+    SCOPED_TRACE(bug);
+    const auto report = walk(bug, cspace, q);
+    ASSERT_TRUE(report.found) << report.why_not;
+    EXPECT_TRUE(check_path(cspace, report.path).valid);
+    EXPECT_LE(report.length, report.facts.number("bug.bound"));
+    EXPECT_EQ(report.facts.text("bug.hits").rfind(first_hit, 0), 0u) << report.facts.text("bug.hits");
+  }
+}
+
 TEST(BugPlanners, WalkOutOfTheTrap) {
   const World world = shipped("u_trap");
   const CSpace cspace(world);
-  for (const char* bug : {"bug1", "bug2"}) {
-    SCOPED_TRACE(bug);
-    const auto report = walk(bug, cspace, world.queries[0]);
-    ASSERT_TRUE(report.found) << report.why_not;
-    EXPECT_TRUE(check_path(cspace, report.path).valid);
-    EXPECT_EQ(report.facts.text("bug.hits"), "(10.000000, 7.000000)");  // the inside of the U's bottom
-    EXPECT_LE(report.length, report.facts.number("bug.bound"));
-  }
+  expect_both_walk_out(cspace, world.queries[0], "(10.000000, 7.000000)");  // the inside of the U's bottom
   // Bug2 leaves where the m-line x = 10 meets the U's outside bottom, y = 6.
   EXPECT_EQ(walk("bug2", cspace, world.queries[0]).facts.text("bug.leaves"), "(10.000000, 6.000000)");
 }
@@ -66,14 +72,7 @@ TEST(BugPlanners, WalkOutOfTheTrap) {
 TEST(BugPlanners, WalkOutOfTheSpiral) {
   const World world = shipped("spiral");
   const CSpace cspace(world);
-  for (const char* bug : {"bug1", "bug2"}) {
-    SCOPED_TRACE(bug);
-    const auto report = walk(bug, cspace, world.queries[0]);
-    ASSERT_TRUE(report.found) << report.why_not;
-    EXPECT_TRUE(check_path(cspace, report.path).valid);
-    EXPECT_LE(report.length, report.facts.number("bug.bound"));
-    EXPECT_EQ(report.facts.text("bug.hits").rfind("(7.500000, 7.500000)", 0), 0u);  // the first wall the line to (1, 1) meets
-  }
+  expect_both_walk_out(cspace, world.queries[0], "(7.500000, 7.500000)");  // the first wall the line to (1, 1) meets
   const auto field = planners<TranslatingRobot>().find("potential-field")->make(cspace, {})->plan(world.queries[0]);
   EXPECT_EQ(field.status, PlanStatus::local_minimum) << field.why_not;
 }
