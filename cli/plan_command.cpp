@@ -61,12 +61,7 @@ int run_plan(const PlanCommand& command) {
   } else {
     command.planner->prefer<TranslatingRobot>();
     // A world that changes goes to the first planner that follows its changes, unless one is named.
-    if (!world.changes.empty())
-      for (const auto& entry : planners<TranslatingRobot>().entries())
-        if (entry.follows_world_changes) {
-          command.planner->default_to(entry.name);
-          break;
-        }
+    if (!world.changes.empty()) command.planner->default_to(planners_following_changes().front());
   }
   command.planner->values();  // a bad planner or option is reported before any planning
   if (command.planner->chose<SteeredCar>()) {

@@ -32,7 +32,7 @@ Descent& stop(Descent& d, Vec2 q, const std::string& why) {
 
 std::string point_text(Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
 
-Descent descend(const CSpace& cspace, const ObstacleField& field, const Query& query, const SlopeFunction& slope, const DescentOptions& o) {
+Descent descend(const CSpace& cspace, const Query& query, const SlopeFunction& slope, const DescentOptions& o) {
   Descent d;
   d.path = {query.start};
   const Vec2 goal = approximate(query.goal);
@@ -65,7 +65,7 @@ Descent descend(const CSpace& cspace, const ObstacleField& field, const Query& q
     current = sharp ? current / 2 : std::min(o.step, current * 1.25);
     previous_direction = direction;
     if (current < 1e-9 * o.step) return stop(d, q, "its steps shrank to nothing");
-    const double length = std::min({current, distance(q, goal), field.clearance(q) / 2});
+    const double length = std::min({current, distance(q, goal), d.last.clearance / 2});
     const auto to = free_step(cspace, d.path.back(), q, direction, length);
     if (!to) return stop(d, q, "no step along the gradient is free");
     d.path.push_back(*to);

@@ -12,7 +12,7 @@
 //   limit          after `max_steps` steps.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/plan/plan_report.hpp>
-#include <polyplan/reactive/obstacle_field.hpp>
+#include <polyplan/geometry/clearance.hpp>
 
 #include <cstddef>
 #include <functional>
@@ -23,8 +23,9 @@
 namespace polyplan {
 
 struct Slope {
-  Vec2 gradient;     // the descent goes against it
-  double value = 0;  // of the function descended, for the facts
+  Vec2 gradient;          // the descent goes against it
+  double value = 0;       // of the function descended, for the facts
+  double clearance = 0;   // the distance to the nearest obstacle there: half of it caps the step
 };
 
 // The slope at a point, or why there is none there.
@@ -47,8 +48,7 @@ struct Descent {
   Slope last;
 };
 
-// `field` gives the clearance that caps the steps.
-Descent descend(const CSpace& cspace, const ObstacleField& field, const Query& query, const SlopeFunction& slope, const DescentOptions& options);
+Descent descend(const CSpace& cspace, const Query& query, const SlopeFunction& slope, const DescentOptions& options);
 
 // A query a descent need not be tried on, answered in `report` (true): a start or goal that is
 // not free (invalid_query), or start and goal in different components of the free space (no_path,

@@ -90,12 +90,12 @@ struct NavigationFunctionPlanner::Impl {
       if (!(beta > 0)) return {std::nullopt, "the robot is inside the disc standing for C-obstacle " + std::to_string(i)};
       add(beta, {2 * (q.x - s.centre.x), 2 * (q.y - s.centre.y)});
     }
-    return {Slope{g, gamma}, {}};
+    return {Slope{g, gamma, field.clearance(q)}, {}};
   }
 
   Descent descend(const Query& query, double kappa) const {
     const Vec2 goal = approximate(query.goal);
-    return polyplan::descend(*cspace, field, query, [&](Vec2 q) { return slope(q, goal, kappa); },
+    return polyplan::descend(*cspace, query, [&](Vec2 q) { return slope(q, goal, kappa); },
                              {step, step, options.max_steps, options.patience, 1e-12});
   }
 };

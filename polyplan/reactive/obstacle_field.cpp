@@ -44,16 +44,22 @@ std::vector<NearestPoint> ObstacleField::nearest_points(Vec2 q) const {
   return out;
 }
 
-double ObstacleField::clearance(Vec2 q) const {
+double ObstacleField::clearance(std::span<const NearestPoint> nearest) {
   double d = std::numeric_limits<double>::infinity();
-  for (const NearestPoint& n : nearest_points(q)) d = std::min(d, n.distance);
+  for (const NearestPoint& n : nearest) d = std::min(d, n.distance);
   return d;
 }
 
-Potential ObstacleField::potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters) const {
+double ObstacleField::clearance(Vec2 q) const { return clearance(nearest_points(q)); }
+
+Potential ObstacleField::potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters, std::span<const NearestPoint> nearest) {
   Potential total = attractive_potential(q, goal, parameters.attractive);
-  for (const NearestPoint& n : nearest_points(q)) total = total + repulsive_potential(q, n, parameters.repulsive);
+  for (const NearestPoint& n : nearest) total = total + repulsive_potential(q, n, parameters.repulsive);
   return total;
+}
+
+Potential ObstacleField::potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters) const {
+  return potential(q, goal, parameters, nearest_points(q));
 }
 
 }  // namespace polyplan

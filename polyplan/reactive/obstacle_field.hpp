@@ -11,6 +11,7 @@
 #include <polyplan/reactive/potential_field.hpp>
 
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace polyplan {
@@ -32,6 +33,12 @@ class ObstacleField {
   double clearance(Vec2 q) const;
   // Attraction to `goal` plus every obstacle's repulsion.
   Potential potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters) const;
+  // The same from the nearest points nearest_points(q) found already (a descent needs them for
+  // its clearance too, and finding them is the work of the step).
+  static Potential potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters, std::span<const NearestPoint> nearest);
+
+  // The smallest of the distances (infinite for none).
+  static double clearance(std::span<const NearestPoint> nearest);
 
   std::size_t obstacles() const { return cobstacles_.size() + walls_.size(); }
 

@@ -44,11 +44,13 @@ struct PotentialFieldPlanner::Impl {
   Descent descend(const Query& query) const {
     const Vec2 goal = approximate(query.goal);
     const SlopeFunction slope = [&](Vec2 q) -> SlopeAt {
-      if (field.clearance(q) == 0) return {std::nullopt, "the robot touches an obstacle, where the repulsion is infinite and has no gradient"};
-      const Potential p = field.potential(q, goal, parameters);
-      return {Slope{p.gradient, p.value}, {}};
+      const std::vector<NearestPoint> nearest = field.nearest_points(q);
+      const double clearance = ObstacleField::clearance(nearest);
+      if (clearance == 0) return {std::nullopt, "the robot touches an obstacle, where the repulsion is infinite and has no gradient"};
+      const Potential p = ObstacleField::potential(q, goal, parameters, nearest);
+      return {Slope{p.gradient, p.value, clearance}, {}};
     };
-    return polyplan::descend(*cspace, field, query, slope, {step, tolerance, options.max_steps, options.patience, 1e-12 * (options.zeta + 1)});
+    return polyplan::descend(*cspace, query, slope, {step, tolerance, options.max_steps, options.patience, 1e-12 * (options.zeta + 1)});
   }
 
   // log(1 + U) over a 64 × 64 grid of the box around the world, for the picture.

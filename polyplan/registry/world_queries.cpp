@@ -6,6 +6,7 @@
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/rotation/rotation_layers.hpp>
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -15,19 +16,22 @@ namespace {
 // A world that changes as the robot drives, for a planner that plans a world standing still:
 // its answer would hold for the world of the file's first moment only.
 void require_planner_for_changes(const World& world, std::string_view planner) {
-  std::string following;
-  bool follows = false;
-  for (const PlannerEntry<TranslatingRobot>& entry : planners<TranslatingRobot>().entries())
-    if (entry.follows_world_changes) {
-      following += (following.empty() ? "" : ", ") + entry.name;
-      follows |= entry.name == planner;
-    }
-  if (!follows)
-    throw InputError(world.source + ": " + world.changes.front().name + ": the world changes as the robot drives, and the planner " +
-                     std::string(planner) + " plans a world that stands still: use one that follows the changes (" + following + ")");
+  const std::vector<std::string> following = planners_following_changes();
+  if (std::find(following.begin(), following.end(), planner) != following.end()) return;
+  std::string names;
+  for (const std::string& name : following) names += (names.empty() ? "" : ", ") + name;
+  throw InputError(world.source + ": " + world.changes.front().name + ": the world changes as the robot drives, and the planner " +
+                   std::string(planner) + " plans a world that stands still: use one that follows the changes (" + names + ")");
 }
 
 }  // namespace
+
+std::vector<std::string> planners_following_changes() {
+  std::vector<std::string> names;
+  for (const PlannerEntry<TranslatingRobot>& entry : planners<TranslatingRobot>().entries())
+    if (entry.follows_world_changes) names.push_back(entry.name);
+  return names;
+}
 
 void require_planner_for_robot(const World& world, std::string_view planner) {
   const bool car_planner = planners<SteeredCar>().find(planner) != nullptr;

@@ -6,7 +6,9 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/world.hpp>
 
+#include <string>
 #include <string_view>
+#include <vector>
 
 namespace polyplan {
 
@@ -22,5 +24,9 @@ void require_plannable_queries(const World& world, const CSpace* cspace, std::st
 // and a car planner needs the car's turning radius; a world with "changes" goes only to a planner
 // that follows them (PlannerEntry::follows_world_changes).
 void require_planner_for_robot(const World& world, std::string_view planner);
+
+// The planners of polygon worlds that follow a world's "changes", in the registry's order (the
+// first is a changing world's default).
+std::vector<std::string> planners_following_changes();
 
 }  // namespace polyplan
