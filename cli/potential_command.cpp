@@ -7,11 +7,11 @@
 #include <polyplan/draw/potential_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/reactive/critical_points.hpp>
+#include <polyplan/registry/potential_json.hpp>
 
-#include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <optional>
 
 namespace polyplan::cli {
 namespace {
@@ -28,9 +28,7 @@ struct PotentialOptions {
 BoxGrid box_option(const std::string& text, std::size_t cells) {
   const std::vector<double> v = comma_numbers(text, "--box");
   if (v.size() != 4) throw InputError("--box " + text + ": expected XMIN,YMIN,XMAX,YMAX");
-  const BoxGrid box{v[0], v[1], v[2], v[3], cells};
-  if (!(box.xmax > box.xmin) || !(box.ymax > box.ymin)) throw InputError("--box " + text + ": expected XMIN < XMAX and YMIN < YMAX");
-  return box;
+  return BoxGrid{v[0], v[1], v[2], v[3], cells};
 }
 
 std::string text(Vec2 p) {
@@ -39,44 +37,25 @@ std::string text(Vec2 p) {
   return out;
 }
 
-nlohmann::json potential_json(const PotentialOptions& o, const BoxGrid& box, Vec2 goal, const CriticalPoints& found) {
-  nlohmann::json points = nlohmann::json::array();
-  for (const CriticalPoint& p : found.points)
-    points.push_back({{"at", {p.at.x, p.at.y}}, {"kind", p.kind}, {"eigenvalues", {p.eigenvalues.smaller, p.eigenvalues.larger}},
-                      {"value", p.value}, {"gradient", p.gradient}});
-  return {{"goal", {goal.x, goal.y}},
-          {"parameters", {{"zeta", o.zeta}, {"d_star", o.d_star}, {"eta", o.eta}, {"q_star", o.q_star}}},
-          {"box", {box.xmin, box.ymin, box.xmax, box.ymax}},
-          {"cells_per_axis", box.cells_per_axis},
-          {"candidates", found.candidates},
-          {"critical_points", points}};
-}
-
 int run_potential(const PotentialOptions& o) {
   std::vector<std::string> warnings;
   const World world = read_world(o.world, &warnings);
   print_warnings(warnings);
-  if (world.queries.empty()) throw InputError(world.source + ": world: no start/goal: the potential needs the goal");
-  if (o.cells == 0 || o.cells > 4096) throw InputError("--cells " + std::to_string(o.cells) + ": expected 1 to 4096");
-  for (const auto& [value, name] : {std::pair{o.zeta, "--zeta"}, {o.d_star, "--d-star"}, {o.eta, "--eta"}, {o.q_star, "--q-star"}})
-    if (!std::isfinite(value) || value < 0) throw InputError(std::string(name) + " " + std::to_string(value) + ": expected a finite number of at least 0");
+  const Vec2 goal = potential_goal(world);
+  const PotentialParameters parameters{{o.zeta, o.d_star}, {o.eta, o.q_star}};
+  check_potential_inputs(parameters, o.cells, {"--zeta", "--d-star", "--eta", "--q-star", "--cells"});
   const CSpace cspace(world);
   const ObstacleField field(cspace);
-  const PotentialParameters parameters{{o.zeta, o.d_star}, {o.eta, o.q_star}};
-  const Vec2 goal = approximate(world.queries.front().goal);
-  const BoxGrid box = o.box.empty() ? box_around(cspace, o.cells) : box_option(o.box, o.cells);
-  const CriticalPoints found = find_critical_points(cspace, field, goal, parameters, box);
-  if (!o.json.empty()) write_json(potential_json(o, box, goal, found), o.json);
-  if (!o.svg.empty()) {
-    BoxGrid picture = box;
-    picture.cells_per_axis = std::min<std::size_t>(box.cells_per_axis, 160);
-    draw_potential(cspace, potential_map(cspace, field, goal, parameters, picture), field, goal, parameters, found.points).write(o.svg);
-  }
+  const std::optional<BoxGrid> box = o.box.empty() ? std::nullopt : std::optional(box_option(o.box, o.cells));
+  const PotentialStudy study = study_potential(cspace, field, goal, parameters, box, o.cells, "--box " + o.box);
+  if (!o.json.empty()) write_json(potential_json(study), o.json);
+  if (!o.svg.empty()) draw_potential_study(cspace, field, study).write(o.svg);
   if (o.json != "-") {
-    std::cout << found.points.size() << " critical point(s) in the free space of [" << box.xmin << ", " << box.xmax << "] x [" << box.ymin
-              << ", " << box.ymax << "] (" << found.candidates << " candidate cells of " << box.cells_per_axis << " x " << box.cells_per_axis
+    const BoxGrid& b = study.box;
+    std::cout << study.found.points.size() << " critical point(s) in the free space of [" << b.xmin << ", " << b.xmax << "] x [" << b.ymin
+              << ", " << b.ymax << "] (" << study.found.candidates << " candidate cells of " << b.cells_per_axis << " x " << b.cells_per_axis
               << ")\n";
-    for (const CriticalPoint& p : found.points) std::cout << "  " << p.kind << " at " << text(p.at) << ", U = " << p.value << '\n';
+    for (const CriticalPoint& p : study.found.points) std::cout << "  " << p.kind << " at " << text(p.at) << ", U = " << p.value << '\n';
     if (!o.svg.empty()) std::cout << "picture: " << o.svg << '\n';
   }
   return ok;

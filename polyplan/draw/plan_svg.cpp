@@ -183,6 +183,43 @@ void draw_points(svg::Drawing& drawing, const std::vector<ExactPoint>& points, c
                  svg::filled(theme::expanded_fill, 1.0, theme::expanded_edge, 0.8), svg::Swatch::dot);
 }
 
+// A planner's marks: regions tinted under everything else it marks, lines dashed, points as rings,
+// each kind in colours of its own taken in turn.
+void draw_marks(svg::Drawing& drawing, const std::vector<PlanMark<ExactPoint>>& marks) {
+  using Kind = PlanMark<ExactPoint>::Kind;
+  std::size_t tint = 0, line = 0, dot = 0;
+  for (const Kind kind : {Kind::regions, Kind::lines, Kind::points})
+    for (const PlanMark<ExactPoint>& mark : marks) {
+      if (mark.kind != kind || mark.parts.empty()) continue;
+      std::vector<std::vector<svg::Point2>> parts;
+      std::size_t count = 0;
+      for (const auto& part : mark.parts) {
+        parts.emplace_back();
+        for (const ExactPoint& p : part) parts.back().push_back(point(p));
+        count += part.size();
+      }
+      // Each kind from its own place in the palette: a sensed region is not drawn like a C-obstacle.
+      const std::size_t turn = kind == Kind::regions ? 1 + tint++ : kind == Kind::lines ? 2 + line++ : dot++;
+      const char* colour = theme::mark_palette[turn % theme::mark_palette_size];
+      if (kind == Kind::regions) {
+        const svg::Style style = svg::filled(colour, 0.18, colour, 0.8);
+        for (const auto& ring : parts) drawing.polygon({ring}, style);
+        drawing.legend(mark.legend + " (" + std::to_string(parts.size()) + ")", style);
+      } else if (kind == Kind::lines) {
+        svg::Style style;
+        style.stroke = colour;
+        style.stroke_px = 1.4;
+        style.dash = "6 4";
+        for (const auto& polyline : parts) drawing.polyline(polyline, style);
+        drawing.legend(mark.legend, style, svg::Swatch::line);
+      } else {
+        const svg::Style style = svg::filled("#ffffff", 1.0, colour, 2.2);
+        for (const auto& points : parts) drawing.points(points, 5.0, style);
+        drawing.legend(mark.legend + " (" + std::to_string(count) + ")", style, svg::Swatch::dot);
+      }
+    }
+}
+
 svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactPoint>>& reports,
                        const std::vector<std::string>& labels) {
   svg::Drawing drawing(view_box(cspace.world(), cspace));
@@ -213,6 +250,16 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   for (const auto& r : reports)
     if (r.found && r.bottleneck && r.bottleneck->clearance > 0)
       draw_clearance_disc(drawing, {r.bottleneck->x, r.bottleneck->y}, r.bottleneck->clearance);
+
+  // The marks of every query together, one legend entry per word.
+  std::vector<PlanMark<ExactPoint>> marks;
+  for (const auto& r : reports)
+    for (const auto& mark : r.marks) {
+      auto same = std::find_if(marks.begin(), marks.end(), [&](const auto& m) { return m.kind == mark.kind && m.legend == mark.legend; });
+      if (same == marks.end()) marks.push_back(mark);
+      else same->parts.insert(same->parts.end(), mark.parts.begin(), mark.parts.end());
+    }
+  draw_marks(drawing, marks);
 
   for (std::size_t i = 0; i < reports.size(); ++i) {
     if (!reports[i].found) continue;

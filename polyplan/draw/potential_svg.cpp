@@ -120,4 +120,11 @@ svg::Drawing draw_potential(const CSpace& cspace, const CellGrid& map, const Obs
   return drawing;
 }
 
+svg::Drawing draw_potential_study(const CSpace& cspace, const ObstacleField& field, const PotentialStudy& study) {
+  BoxGrid picture = study.box;
+  picture.cells_per_axis = std::min<std::size_t>(study.box.cells_per_axis, 160);
+  return draw_potential(cspace, potential_map(cspace, field, study.goal, study.parameters, picture), field, study.goal, study.parameters,
+                        study.found.points);
+}
+
 }  // namespace polyplan

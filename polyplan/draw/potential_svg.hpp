@@ -5,6 +5,7 @@
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/reactive/critical_points.hpp>
+#include <polyplan/reactive/potential_study.hpp>
 
 #include <vector>
 
@@ -14,6 +15,10 @@ namespace polyplan {
 // its box.
 svg::Drawing draw_potential(const CSpace& cspace, const CellGrid& map, const ObstacleField& field, Vec2 goal,
                             const PotentialParameters& parameters, const std::vector<CriticalPoint>& points, std::size_t arrows_per_axis = 24);
+
+// The picture `polyplan potential --svg` draws of a study: its box's heat map at most 160 cells a
+// side (finer says nothing more to the eye and writes megabytes).
+svg::Drawing draw_potential_study(const CSpace& cspace, const ObstacleField& field, const PotentialStudy& study);
 
 // The contour lines of a grid of values at `level` (marching squares over the cell centres; cells
 // not free are left out): segments in world units.

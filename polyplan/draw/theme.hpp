@@ -62,6 +62,10 @@ inline constexpr const char* path_palette[] = {"#d62728", "#1f77b4", "#2ca02c", 
                                                "#8c564b", "#e377c2", "#17becf", "#bcbd22", "#7f7f7f"};
 inline constexpr std::size_t path_palette_size = sizeof path_palette / sizeof path_palette[0];
 inline const char* path_colour(std::size_t i) { return path_palette[i % path_palette_size]; }
+// What planners mark beside the path (plan/plan_report.hpp PlanMark), in turn: hit points, leave
+// points, the m-line, sensed regions, ...
+inline constexpr const char* mark_palette[] = {"#e6550d", "#3182bd", "#756bb1", "#31a354", "#636363"};
+inline constexpr std::size_t mark_palette_size = sizeof mark_palette / sizeof mark_palette[0];
 
 // Cars: forward driving blue, reverse orange, turning circles dashed grey.
 inline constexpr const char* car_forward = "#1f77b4";

@@ -173,15 +173,24 @@ svg::Box2 view_box(const World& world, const CSpace& cspace) {
     for (const ExactPoint& p : o.outer) extend(p);
   for (const PolygonWithHoles& c : cspace.cobstacles())
     for (const ExactPoint& p : c.outer) extend(p);
-  for (const Query& q : world.queries) {
-    extend(q.start);
-    extend(q.goal);
-  }
+  svg::BoxAround around_queries;
+  for (const Query& q : world.queries)
+    for (const ExactPoint& p : {q.start, q.goal}) {
+      extend(p);
+      around_queries.add(point(p).x, point(p).y);
+    }
   if (!world.queries.empty()) {
     for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start))
       for (const ExactPoint& p : part) extend(p);
   }
-  return box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
+  const svg::Box2 all = box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
+  if (world.queries.empty()) return all;
+  // Obstacles reaching far beyond the queries (seed 002's endless wall) would shrink what happens
+  // near them to a line: the view ends twice the queries' extent round them.
+  const svg::Box2 q = around_queries.box_or(all);
+  const double reach = 2 * std::max({q.xmax - q.xmin, q.ymax - q.ymin, 1.0});
+  return {std::max(all.xmin, q.xmin - reach), std::max(all.ymin, q.ymin - reach), std::min(all.xmax, q.xmax + reach),
+          std::min(all.ymax, q.ymax + reach)};
 }
 
 std::vector<std::vector<svg::Point2>> placed_robot(const Robot& robot, double x, double y, double radians) {

@@ -12,7 +12,8 @@
 namespace polyplan {
 
 // The world's bounds, or else the box around the obstacles, the C-obstacles, the starts and goals
-// and the robot at the first start ({0, 0, 1, 1} when there is nothing at all).
+// and the robot at the first start ({0, 0, 1, 1} when there is nothing at all), cut to twice the
+// queries' extent round them.
 svg::Box2 view_box(const World& world, const CSpace& cspace);
 
 // The bounds and the obstacles (with holes), a legend entry each: the world without its robot.

@@ -106,6 +106,19 @@ struct PlanDecomposition {
   std::vector<std::pair<Configuration, Configuration>> walls;
 };
 
+// What a planner marks on the picture beyond the path, under a legend word of its own: a reactive
+// planner's hit and leave points, its m-line, its sensor's regions, the walk of a robot that
+// stopped before the goal. Drawn by kind (points as rings, lines dashed, regions tinted), so that a
+// planner needs no drawing code to show them.
+template <class Configuration>
+struct PlanMark {
+  enum class Kind : std::uint8_t { points, lines, regions };
+  Kind kind;
+  std::string legend;
+  // points: one part, the points; lines: each part a polyline; regions: each part a ring.
+  std::vector<std::vector<Configuration>> parts;
+};
+
 // What became of a query, for a caller to branch on (OMPL's PlannerStatus is the model). Every
 // status but `solved` comes with a sentence in PlanReport::why_not.
 enum class PlanStatus : std::uint8_t {
@@ -154,6 +167,7 @@ struct PlanReport {
   // The C-space of the world the answer ends in, when the world changed on the way (a world
   // file's "changes"): the picture draws it instead of the problem's. Null: the problem's.
   std::shared_ptr<const CSpace> world_at_end;
+  std::vector<PlanMark<Configuration>> marks;
 
   // An answer without a path: why, as a status and as a sentence.
   void fail(PlanStatus failure, std::string why) {

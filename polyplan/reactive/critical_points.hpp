@@ -6,8 +6,8 @@
 // where it began, in the free space by the exact C-space) are kept once each and classified by
 // the Hessian's eigenvalues. A zero of the gradient where it is not smooth (on the ridge where an
 // obstacle's nearest point jumps) is not found this way; neither is the goal of a conic
-// attraction, where the cone's point leaves the gradient undefined (it is reported apart, as the
-// global minimum it is).
+// attraction, where the cone's point leaves the gradient undefined (the global minimum, not among
+// the points returned).
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/reactive/obstacle_field.hpp>
 #include <polyplan/reactive/potential_map.hpp>

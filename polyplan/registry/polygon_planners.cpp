@@ -4,6 +4,7 @@
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/incremental/replanning_planner.hpp>
 #include <polyplan/reactive/bug_planner.hpp>
+#include <polyplan/reactive/tangent_bug_planner.hpp>
 #include <polyplan/reactive/navigation_function_planner.hpp>
 #include <polyplan/reactive/potential_field_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
@@ -36,6 +37,7 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       navigation_function_planner_entry(),
       bug_planner_entry(BugKind::bug1),
       bug_planner_entry(BugKind::bug2),
+      tangent_bug_planner_entry(),
       prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
       lazy_prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
       rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),

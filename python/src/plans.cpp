@@ -46,8 +46,6 @@ nlohmann::json json_of(const PlanResult& r) {
   return std::visit([&](const auto& report) { return plan_json(report, r.query); }, r.report);
 }
 
-py::object from_json(const nlohmann::json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
-
 template <class F>
 decltype(auto) visit(const PlanResult& r, F&& f) {
   return std::visit([&](const auto& report) -> decltype(auto) { return f(report); }, r.report);
@@ -125,6 +123,8 @@ std::string svg_of(py::handle problem, const std::vector<const PlanResult*>& pla
 }
 
 }  // namespace
+
+py::object from_json(const nlohmann::json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
 
 void bind_plans(py::module_& m) {
   py::class_<PlanResult>(m, "Plan", R"(One query's answer from a Planner: what `polyplan plan --json -` prints, as Python values.

@@ -7,6 +7,7 @@
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/plan/plan_report.hpp>
 
+#include <nlohmann/json_fwd.hpp>
 #include <pybind11/pybind11.h>
 
 #include <memory>
@@ -47,5 +48,9 @@ std::unique_ptr<PlannerHandle> make_planner(const std::string& name, pybind11::h
 void bind_plans(pybind11::module_& m);
 void bind_planners(pybind11::module_& m);
 void bind_replan(pybind11::module_& m);
+void bind_potential(pybind11::module_& m);
+
+// A JSON value as Python's json.loads reads it (dicts, lists, numbers, strings).
+pybind11::object from_json(const nlohmann::json& value);
 
 }  // namespace polyplan::python

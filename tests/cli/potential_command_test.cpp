@@ -40,7 +40,7 @@ TEST(Potential, MistakesAreOneLineAndExitTwo) {
            {"--box=1,2,3", "--box 1,2,3: expected XMIN,YMIN,XMAX,YMAX"},
            {"--box=3,0,1,1", "--box 3,0,1,1: expected XMIN < XMAX and YMIN < YMAX"},
            {"--box=0,0,x,1", "\"x\" is not a finite number"},
-           {"--eta -1", "--eta -1.000000: expected a finite number of at least 0"},
+           {"--eta -1", "--eta -1: expected a finite number of at least 0"},
            {"--cells 0", "--cells 0: expected 1 to 4096"}}) {
     SCOPED_TRACE(arguments);
     const CliRun run = run_polyplan("potential " + world("u_trap.json") + " " + arguments);
