@@ -265,6 +265,13 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
     if (!reports[i].found) continue;
     const std::string label = i < labels.size() ? labels[i] : reports.size() == 1 ? "path" : "path " + std::to_string(i);
     draw_path(drawing, reports[i].path, label, theme::path_colour(i));
+    // A planner's further answers (the next homotopy classes), each in a colour of its own.
+    for (std::size_t k = 1; k < reports[i].paths.size(); ++k) {
+      const auto& more = reports[i].paths[k];
+      const auto word = more.facts.find("word");
+      const std::string name = label + " #" + std::to_string(k + 1) + (word ? " (" + more.facts.text("word") + ")" : "");
+      draw_path(drawing, more.path, name, theme::path_colour(i + k));
+    }
   }
   return drawing;
 }

@@ -83,6 +83,16 @@ json report_json(const PlanReport<Configuration>& report, const std::string& que
     out["bottleneck"] = {{"x", report.bottleneck->x}, {"y", report.bottleneck->y}};
   }
   out.update(facts_json(report.facts));
+  if (!report.paths.empty()) {
+    json paths = json::array();
+    for (const PlanPath<Configuration>& p : report.paths) {
+      json one = {{"found", true}, {"length", p.length}};
+      add_path(one, p.path);
+      one.update(facts_json(p.facts));
+      paths.push_back(std::move(one));
+    }
+    out["paths"] = std::move(paths);
+  }
   return out;
 }
 

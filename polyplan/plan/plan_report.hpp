@@ -119,6 +119,16 @@ struct PlanMark {
   std::vector<std::vector<Configuration>> parts;
 };
 
+// One of several answers a planner gives to one query (the shortest path of each of K homotopy
+// classes): its path, its length and its own facts (its class's word). JSON: "paths", each
+// {found, length, path, path_exact, facts...}; the picture draws each.
+template <class Configuration>
+struct PlanPath {
+  std::vector<Configuration> path;
+  double length = 0;
+  Facts facts;
+};
+
 // What became of a query, for a caller to branch on (OMPL's PlannerStatus is the model). Every
 // status but `solved` comes with a sentence in PlanReport::why_not.
 enum class PlanStatus : std::uint8_t {
@@ -168,6 +178,8 @@ struct PlanReport {
   // file's "changes"): the picture draws it instead of the problem's. Null: the problem's.
   std::shared_ptr<const CSpace> world_at_end;
   std::vector<PlanMark<Configuration>> marks;
+  // Several answers, for a planner that gives several: paths[0] is `path`; empty for the others.
+  std::vector<PlanPath<Configuration>> paths;
 
   // An answer without a path: why, as a status and as a sentence.
   void fail(PlanStatus failure, std::string why) {

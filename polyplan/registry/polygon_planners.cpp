@@ -5,6 +5,8 @@
 #include <polyplan/incremental/replanning_planner.hpp>
 #include <polyplan/reactive/bug_planner.hpp>
 #include <polyplan/reactive/tangent_bug_planner.hpp>
+#include <polyplan/homotopy/homotopy_planner.hpp>
+#include <polyplan/homotopy/tether_planner.hpp>
 #include <polyplan/reactive/navigation_function_planner.hpp>
 #include <polyplan/reactive/potential_field_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
@@ -38,6 +40,8 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       bug_planner_entry(BugKind::bug1),
       bug_planner_entry(BugKind::bug2),
       tangent_bug_planner_entry(),
+      homotopy_planner_entry(),
+      tether_planner_entry(),
       prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
       lazy_prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
       rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),

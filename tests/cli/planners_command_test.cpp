@@ -26,7 +26,7 @@ TEST(Planners, ListsEveryPlannerOfEverySpaceWithOptionsAndDefaults) {
   std::vector<std::string> names;
   for (const auto& p : spaces[0]["planners"]) names.push_back(p["name"]);
   EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid", "dstar-lite",
-                                             "lpastar", "repeated-astar", "potential-field", "navigation-function", "bug1", "bug2", "tangent-bug", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));
+                                             "lpastar", "repeated-astar", "potential-field", "navigation-function", "bug1", "bug2", "tangent-bug", "homotopy", "tether", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));
   std::vector<std::string> arm_names;
   for (const auto& p : spaces[3]["planners"]) arm_names.push_back(p["name"]);
   EXPECT_EQ(arm_names, (std::vector<std::string>{"grid", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));

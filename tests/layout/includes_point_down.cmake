@@ -2,8 +2,8 @@
 # only itself and the folders listed for it here (all below it), so no include runs upwards and
 # no two folders include each other. A family folder never includes registry/, draw/ or another
 # family, except arm/ → sampling/ and car/ → sampling/ (their sampling spaces) and car/ →
-# roadmaps/ (the visibility graph under hybrid A*'s 2D heuristic) and incremental/ → grids/ (the
-# raster its world planners drive), and holds planning only: no JSON (nlohmann) and no
+# roadmaps/ (the visibility graph under hybrid A*'s 2D heuristic), incremental/ → grids/ (the
+# raster its world planners drive) and homotopy/ → roadmaps/ (the visibility graph it lifts), and holds planning only: no JSON (nlohmann) and no
 # command line (CLI11). Run with cmake -DSOURCE_DIR=... -P.
 cmake_minimum_required(VERSION 3.20)  # IN_LIST
 set(below_geometry "")
@@ -15,15 +15,16 @@ set(below_roadmaps plan free_space geometry io search)
 set(below_grids plan geometry io search)
 set(below_incremental plan grids geometry io search)
 set(below_reactive plan geometry search)
+set(below_homotopy plan roadmaps free_space geometry search)
 set(below_rotation plan free_space geometry search)
 set(below_sampling plan free_space geometry search)
 set(below_arm plan sampling geometry search)
 set(below_car plan roadmaps sampling geometry search)
-set(below_registry plan roadmaps grids incremental reactive rotation sampling arm car geometry search)
+set(below_registry plan roadmaps grids incremental reactive homotopy rotation sampling arm car geometry search)
 set(below_draw plan arm car incremental reactive io sampling geometry search)
 
 file(GLOB folders RELATIVE ${SOURCE_DIR}/polyplan ${SOURCE_DIR}/polyplan/*)
-set(families free_space roadmaps grids incremental reactive rotation sampling arm car)
+set(families free_space roadmaps grids incremental reactive homotopy rotation sampling arm car)
 set(wrong "")
 foreach(folder ${folders})
   if(NOT IS_DIRECTORY ${SOURCE_DIR}/polyplan/${folder})

@@ -193,7 +193,7 @@ TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
     EXPECT_EQ(entry->description.find('\n'), std::string::npos) << "one line";
   }
   EXPECT_EQ(registry.find("teleport"), nullptr);
-  EXPECT_EQ(registry.names(), "visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, potential-field, navigation-function, bug1, bug2, tangent-bug, prm, lazyprm, rrt, rrtstar, rrtconnect");
+  EXPECT_EQ(registry.names(), "visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, potential-field, navigation-function, bug1, bug2, tangent-bug, homotopy, tether, prm, lazyprm, rrt, rrtstar, rrtconnect");
   EXPECT_EQ(planners<RotatingRobot>().names(), "rotation");
   const auto* raster = registry.find("raster");
   ASSERT_EQ(raster->options.size(), 4u);

@@ -1,0 +1,92 @@
+#pragma once
+// The graph the homotopy searches run over: the C-space's reduced visibility graph (whose paths
+// hold the shortest path of every homotopy class: a taut path bends only round corners, along
+// tangents) plus the points a query adds, each directed arc with its exact length's double and its
+// word (homotopy/h_signature.hpp); and a Dijkstra over (vertex, reduced word) — the graph's lift
+// to the classes, where the first time a (vertex, word) is settled is the shortest path to the
+// vertex in that class.
+#include <polyplan/homotopy/h_signature.hpp>
+
+#include <cstddef>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <queue>
+#include <utility>
+#include <vector>
+
+namespace polyplan {
+
+class ClassGraph {
+ public:
+  struct Arc {
+    std::size_t to;
+    double length;
+    Word word;
+  };
+
+  // `cspace` must outlive the graph.
+  explicit ClassGraph(const CSpace& cspace);
+  ~ClassGraph();
+
+  // Adds p as a vertex joined to every corner and every added point it sees (exact segment
+  // checks); returns its id.
+  std::size_t add_point(const ExactPoint& p);
+
+  const CSpace& cspace() const { return *cspace_; }
+  const HSignature& signature() const { return signature_; }
+  std::size_t size() const { return positions_.size(); }
+  const ExactPoint& position(std::size_t v) const { return positions_[v]; }
+  const std::vector<Arc>& arcs(std::size_t v) const { return arcs_[v]; }
+
+ private:
+  void join(std::size_t a, std::size_t b);
+  const CSpace* cspace_;
+  HSignature signature_;
+  std::size_t corners_ = 0;
+  std::vector<ExactPoint> positions_;
+  std::vector<std::vector<Arc>> arcs_;
+};
+
+// Dijkstra over (vertex, reduced word) from one vertex and starting word, settling states in order
+// of distance: next() gives the next settled state. `admit(vertex, word, distance)` may refuse a
+// state (the tether's bound); states beyond `max_length` or past `max_states` are not made.
+class ClassSearch {
+ public:
+  struct State {
+    std::size_t vertex;
+    Word word;
+    double distance;
+    std::optional<std::size_t> parent;
+  };
+  using Admit = std::function<bool(std::size_t vertex, const Word& word, double distance)>;
+
+  ClassSearch(const ClassGraph& graph, std::size_t source, Word word, double max_length, std::size_t max_states, Admit admit = {});
+
+  // The next state settled (its id), or nullopt when none is left.
+  std::optional<std::size_t> next();
+  const State& state(std::size_t id) const { return states_[id]; }
+  // The states from the source to the state, and their vertices' positions.
+  std::vector<std::size_t> chain_to(std::size_t id) const;
+  std::vector<ExactPoint> path_to(std::size_t id) const;
+  // The state (vertex, word), if it was made.
+  std::optional<std::size_t> find(std::size_t vertex, const Word& word) const;
+  std::size_t states() const { return states_.size(); }
+  // Whether max_states stopped states from being made.
+  bool truncated() const { return truncated_; }
+
+ private:
+  void offer(std::size_t vertex, Word word, double distance, std::optional<std::size_t> parent);
+  const ClassGraph* graph_;
+  double max_length_;
+  std::size_t max_states_;
+  Admit admit_;
+  bool truncated_ = false;
+  std::vector<State> states_;
+  std::vector<bool> settled_;
+  std::map<std::pair<std::size_t, Word>, std::size_t> ids_;
+  std::priority_queue<std::pair<double, std::size_t>, std::vector<std::pair<double, std::size_t>>, std::greater<>> open_;
+};
+
+}  // namespace polyplan

@@ -1,0 +1,97 @@
+#include <polyplan/homotopy/homotopy_planner.hpp>
+
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/geometry/shared_component.hpp>
+#include <polyplan/homotopy/class_graph.hpp>
+#include <polyplan/plan/stopwatch.hpp>
+
+#include <limits>
+#include <set>
+#include <stdexcept>
+
+namespace polyplan {
+
+struct HomotopyPlanner::Impl {
+  const CSpace* cspace;
+  HomotopyOptions options;
+  ClassGraph graph;
+};
+
+HomotopyPlanner::HomotopyPlanner(const CSpace& cspace, HomotopyOptions options)
+    : impl_(std::make_unique<Impl>(Impl{&cspace, options, ClassGraph(cspace)})) {
+  if (options.classes == 0) throw std::invalid_argument("option classes=0: expected at least 1");
+  if (!(options.max_length >= 0)) throw std::invalid_argument("option max-length: expected a number >= 0 (0: no bound)");
+}
+
+HomotopyPlanner::~HomotopyPlanner() = default;
+
+PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions& query_options) {
+  Impl& r = *impl_;
+  const Stopwatch querying;
+  PlanReport<ExactPoint> report;
+  Facts& facts = report.facts;
+  facts.set("roadmap.kind", "homotopy");
+  facts.set("homotopy.rays", r.graph.signature().rays().size());
+  const auto finish = [&] {
+    facts.set("homotopy.classes", report.paths.size());
+    facts.set("query_seconds", querying.seconds());
+    return std::move(report);
+  };
+  if (auto why = r.cspace->query_not_free(q)) {
+    report.fail(PlanStatus::invalid_query, *why);
+    return finish();
+  }
+  if (!share_a_component(*r.cspace, q.start, q.goal)) {
+    report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
+    return finish();
+  }
+  // The query's points join a copy of the graph, so that queries never see each other's.
+  ClassGraph graph = r.graph;
+  const std::size_t start = graph.add_point(q.start), goal = graph.add_point(q.goal);
+  const double bound = r.options.max_length > 0 ? r.options.max_length : std::numeric_limits<double>::infinity();
+  ClassSearch search(graph, start, {}, bound, r.options.max_states);
+  std::set<Word> met;
+  while (report.paths.size() < r.options.classes) {
+    const auto id = search.next();
+    if (!id) break;
+    const auto& s = search.state(*id);
+    if (s.vertex != goal || !met.insert(s.word).second) continue;
+    PlanPath<ExactPoint> found{search.path_to(*id), 0, {}};
+    if (found.path.size() == 1) found.path.push_back(q.goal);
+    found.length = euclidean_length(found.path);
+    found.facts.set("word", word_text(s.word));
+    report.paths.push_back(std::move(found));
+  }
+  facts.set("homotopy.states", search.states());
+  if (search.truncated()) facts.set("stopped_by", "state limit");
+  if (report.paths.empty()) {
+    if (search.truncated()) report.fail(PlanStatus::limit, "max-states (" + std::to_string(r.options.max_states) + ") ended the search before the goal");
+    else report.fail(PlanStatus::not_found, "no path within max-length (" + detail::show_number(r.options.max_length) + ")");
+    return finish();
+  }
+  for (const auto& p : report.paths)
+    if (const PathCheck check = check_path(*r.cspace, p.path); !check.valid)
+      throw std::logic_error("homotopy: a path of class " + p.facts.text("word") + " is not valid: " + check.reason);
+  report.succeed();
+  report.path = report.paths.front().path;
+  report.length = report.paths.front().length;
+  report.certificate = {true, "exact path check (arrangement zone walk) of visibility-graph segments"};
+  facts.set("homotopy.word", report.paths.front().facts.text("word"));
+  if (query_options.record) report.marks.push_back({PlanMark<ExactPoint>::Kind::lines, "h-signature rays (t1, t2, ...)", r.graph.signature().ray_segments()});
+  if (report.paths.size() < r.options.classes)
+    facts.set("note", std::to_string(report.paths.size()) + " of the " + std::to_string(r.options.classes) + " classes asked for exist within the bounds");
+  return finish();
+}
+
+PlannerEntry<TranslatingRobot> homotopy_planner_entry() {
+  OptionTable<HomotopyOptions> table;
+  table.add("classes", &HomotopyOptions::classes, "how many homotopy classes: the shortest path of each, in order of length");
+  table.add("max-length", &HomotopyOptions::max_length, "no path longer than this (0: no bound)");
+  table.add("max-states", &HomotopyOptions::max_states, "(vertex, word) states the search may make");
+  return make_planner_entry<TranslatingRobot, HomotopyOptions>(
+      "homotopy", "the shortest path of each of the K shortest homotopy classes (h-signature words over the visibility graph)", std::move(table),
+      [](const CSpace& cspace, const HomotopyOptions& o) { return std::make_unique<HomotopyPlanner>(cspace, o); });
+}
+
+}  // namespace polyplan

@@ -1,0 +1,113 @@
+// The tethered robot of seed 003 in tether_pillar.json (a pillar [3, 9] × [−4, 6], the base at
+// (0, 0)): from behind the pillar with its tether round the bottom (16 long), to a goal above the
+// pillar, it goes straight up the near side when L allows the 24.6 that winds the tether round two
+// sides, and unwinds back under the pillar when L = 20 does not; the class of length exactly 16 is
+// allowed at L = 16 and not at 15.99; L below the start's tether is no_path. Every path is
+// re-checked exactly and its word recomputed from the polylines.
+#include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/polyline.hpp>
+#include <polyplan/homotopy/h_signature.hpp>
+#include <polyplan/io/world_reader.hpp>
+#include <polyplan/registry/registry.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace polyplan {
+namespace {
+
+World pillar() { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/tether_pillar.json"); }
+
+PlanReport<ExactPoint> tethered(const CSpace& cspace, const Query& q, const std::string& length) {
+  return planners<TranslatingRobot>()
+      .find("tether")
+      ->make(cspace, {{"tether-base", "0,0"}, {"tether-length", length}, {"list-classes", "true"}})
+      ->plan(q);
+}
+
+// "[0, 0] [3, -4] ..." back to points.
+std::vector<ExactPoint> points(const std::string& text) {
+  std::vector<ExactPoint> out;
+  std::istringstream in(text);
+  char bracket = 0;
+  std::string x, y;
+  while (in >> bracket >> x >> y) {
+    x.pop_back(), y.pop_back();  // the comma after x, the bracket after y
+    out.push_back({*parse_rational(x), *parse_rational(y)});
+  }
+  return out;
+}
+
+// The tether at the goal is the taut tether of the robot's class: its word is the word of the
+// start's tether followed by the robot's path, and its length the fact's.
+void expect_consistent_tether(const CSpace& cspace, const PlanReport<ExactPoint>& report, const std::vector<ExactPoint>& start_tether) {
+  const HSignature h(cspace);
+  const auto at_goal = points(report.facts.text("tether.at_goal"));
+  ASSERT_GE(at_goal.size(), 2u);
+  EXPECT_TRUE(check_path(cspace, at_goal).valid);
+  std::vector<ExactPoint> dragged = start_tether;
+  dragged.insert(dragged.end(), report.path.begin() + 1, report.path.end());
+  EXPECT_EQ(word_text(h.polyline(dragged)), report.facts.text("tether.word"));
+  EXPECT_EQ(word_text(h.polyline(at_goal)), report.facts.text("tether.word"));
+  EXPECT_NEAR(euclidean_length(at_goal), report.facts.number("tether.length"), 1e-12);
+  EXPECT_LE(report.facts.number("tether.length"), report.facts.number("tether.largest"));
+}
+
+TEST(TetherPlanner, UnwindsRoundThePillarWhenTheTetherIsTooShortForTheNearSide) {
+  const World world = pillar();
+  const CSpace cspace(world);
+  const Query& q = world.queries[0];  // (12, 0) behind the pillar to (6, 8) above it
+  const std::vector<ExactPoint> start_tether{{0, 0}, {3, -4}, {9, -4}, {12, 0}};  // the shortest: below, 16
+  const auto free = tethered(cspace, q, "25");
+  ASSERT_TRUE(free.found) << free.why_not;
+  EXPECT_EQ(free.path, (std::vector<ExactPoint>{{12, 0}, {9, 6}, {6, 8}}));
+  EXPECT_NEAR(free.facts.number("tether.length"), 5 + 6 + 10 + std::sqrt(13.0), 1e-12);  // round the bottom and the right side
+  expect_consistent_tether(cspace, free, start_tether);
+  const auto unwound = tethered(cspace, q, "20");
+  ASSERT_TRUE(unwound.found) << unwound.why_not;
+  EXPECT_EQ(unwound.path, (std::vector<ExactPoint>{{12, 0}, {9, -4}, {3, -4}, {3, 6}, {6, 8}}));
+  EXPECT_NEAR(unwound.length, 5 + 6 + 10 + std::sqrt(13.0), 1e-12);
+  EXPECT_NEAR(unwound.facts.number("tether.length"), std::sqrt(45.0) + std::sqrt(13.0), 1e-12);  // straight past the left side
+  EXPECT_LE(unwound.facts.number("tether.largest"), 20);
+  EXPECT_TRUE(check_path(cspace, unwound.path).valid);
+  expect_consistent_tether(cspace, unwound, start_tether);
+}
+
+TEST(TetherPlanner, ATetherExactlyLongEnoughIsAllowed) {
+  const World world = pillar();
+  const CSpace cspace(world);
+  const Query& q = world.queries[1];  // (0, 0), the base, to (12, 0): round the bottom, 5 + 6 + 5
+  const auto exact = tethered(cspace, q, "16");
+  ASSERT_TRUE(exact.found) << exact.why_not;
+  EXPECT_EQ(exact.facts.number("tether.length"), 16);
+  EXPECT_EQ(exact.facts.number("tether.largest"), 16);
+  EXPECT_EQ(exact.facts.text("tether.classes"), "[] 16");
+  expect_consistent_tether(cspace, exact, {{0, 0}});
+  const auto shorter = tethered(cspace, q, "15.99");
+  EXPECT_EQ(shorter.status, PlanStatus::no_path) << shorter.why_not;
+  EXPECT_FALSE(shorter.found);
+}
+
+TEST(TetherPlanner, ATetherShorterThanEveryClassIsNoPath) {
+  const World world = pillar();
+  const CSpace cspace(world);
+  const auto report = tethered(cspace, world.queries[0], "10");
+  EXPECT_EQ(report.status, PlanStatus::no_path) << report.why_not;
+  EXPECT_NE(report.why_not.find("the tether at the start is 16 long"), std::string::npos) << report.why_not;
+}
+
+TEST(TetherPlanner, ABadBaseIsNamed) {
+  const World world = pillar();
+  const CSpace cspace(world);
+  EXPECT_THROW(planners<TranslatingRobot>().find("tether")->make(cspace, {{"tether-base", "1;2"}}), InputError);
+  const auto inside = planners<TranslatingRobot>().find("tether")->make(cspace, {{"tether-base", "5,0"}})->plan(world.queries[0]);
+  EXPECT_EQ(inside.status, PlanStatus::invalid_query);
+  EXPECT_NE(inside.why_not.find("the tether base [5, 0] is not free"), std::string::npos) << inside.why_not;
+}
+
+}  // namespace
+}  // namespace polyplan
