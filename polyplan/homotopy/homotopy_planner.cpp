@@ -79,8 +79,11 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
   report.certificate = {true, "exact path check (arrangement zone walk) of visibility-graph segments"};
   facts.set("homotopy.word", report.paths.front().facts.text("word"));
   if (query_options.record) report.marks.push_back({PlanMark<ExactPoint>::Kind::lines, "h-signature rays (t1, t2, ...)", r.graph.signature().ray_segments()});
-  if (report.paths.size() < r.options.classes)
-    facts.set("note", std::to_string(report.paths.size()) + " of the " + std::to_string(r.options.classes) + " classes asked for exist within the bounds");
+  // What the program prints after its summary line: every class, by length.
+  std::string note = std::to_string(report.paths.size()) + " class(es) by length:";
+  for (const auto& p : report.paths) note += " " + std::to_string(p.length) + " [" + p.facts.text("word") + "]";
+  if (report.paths.size() < r.options.classes) note += " (" + std::to_string(r.options.classes) + " asked for: no more within the bounds)";
+  facts.set("note", note);
   return finish();
 }
 

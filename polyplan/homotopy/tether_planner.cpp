@@ -147,13 +147,17 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   facts.set("tether.largest", largest);
   facts.set("tether.at_goal", points_text(shapes.back()));
   facts.set("tether.reachable", tether->search.states());
+  std::string note = "tether [" + word_text(end.word) + "] " + std::to_string(*tether->length(g, end.word)) + " long at the goal, at most " +
+                     std::to_string(largest) + " on the way";
   if (r.options.list_classes) {
     std::string classes;
     for (std::size_t id = 0; id < tether->search.states(); ++id)
       if (tether->search.state(id).vertex == g)
         classes += (classes.empty() ? "[" : "; [") + word_text(tether->search.state(id).word) + "] " + detail::show_number(tether->search.state(id).distance);
     facts.set("tether.classes", classes);
+    note += "; the goal within L in the classes " + classes;
   }
+  facts.set("note", note);
   if (query_options.record) {
     using Kind = PlanMark<ExactPoint>::Kind;
     report.marks.push_back({Kind::lines, "taut tether at the path's corners", shapes});
