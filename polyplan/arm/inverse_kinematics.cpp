@@ -1,0 +1,184 @@
+#include <polyplan/arm/inverse_kinematics.hpp>
+
+#include <polyplan/geometry/rational.hpp>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+namespace polyplan {
+namespace {
+
+double wrap(double a) {
+  a = std::remainder(a, 2 * M_PI);
+  return a <= -M_PI ? a + 2 * M_PI : a;
+}
+
+Eigen::Vector2d hand(const Arm& arm, const JointAngles& q) { return joint_positions(arm, q).back(); }
+
+IkSolution solution(const Arm& arm, JointAngles q, Eigen::Vector2d target) {
+  for (double& a : q) a = wrap(a);
+  const double error = (hand(arm, q) - target).norm();
+  return {std::move(q), error};
+}
+
+bool distinct(const std::vector<IkSolution>& found, const JointAngles& q) {
+  for (const IkSolution& s : found) {
+    double apart = 0;
+    for (std::size_t i = 0; i < q.size(); ++i) apart = std::max(apart, std::abs(wrap(q[i] - s.angles[i])));
+    if (apart <= 1e-6) return false;
+  }
+  return true;
+}
+
+void require_links(const Arm& arm, std::size_t n, const char* what) {
+  if (arm.joints() != n) throw std::invalid_argument(std::string(what) + ": the arm has " + std::to_string(arm.joints()) + " links");
+}
+
+}  // namespace
+
+double end_orientation(const JointAngles& angles) {
+  double sum = 0;
+  for (const double a : angles) sum += a;
+  return wrap(sum);
+}
+
+IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target) {
+  require_links(arm, 2, "two_link_ik");
+  // The annulus, exactly: every double is a rational.
+  const Rational l1(arm.links[0]), l2(arm.links[1]), x(target.x()), y(target.y());
+  const Rational d2 = x * x + y * y, outer = (l1 + l2) * (l1 + l2), inner = (l1 - l2) * (l1 - l2);
+  const double toward = std::atan2(target.y(), target.x());
+  const bool longer_first = arm.links[0] >= arm.links[1];
+  const JointAngles stretched{toward, 0}, folded{longer_first ? toward : toward + M_PI, M_PI};
+  IkAnswer answer;
+  if (d2 > outer || d2 < inner) {
+    answer.solutions.push_back(solution(arm, d2 > outer ? stretched : folded, target));
+    answer.why_not = d2 > outer ? "the target is farther from the base than the two links reach (l1 + l2)"
+                                : "the target is nearer the base than the links' difference |l1 - l2|";
+    return answer;
+  }
+  answer.found = true;
+  if (d2 == outer || d2 == inner) {  // on the annulus's boundary: one elbow
+    answer.solutions.push_back(solution(arm, d2 == outer ? stretched : (d2 == 0 ? JointAngles{0, M_PI} : folded), target));
+    return answer;
+  }
+  // The elbow's half-angle formula, tan²(θ2 / 2) = ((l1 + l2)² − d²) / (d² − (l1 − l2)²): stable
+  // near both boundaries, where acos of the cosine rule loses half the digits.
+  const double elbow = 2 * std::atan(std::sqrt(to_double(Rational(outer - d2)) / to_double(Rational(d2 - inner))));
+  for (const double t2 : {elbow, -elbow}) {
+    const double t1 = toward - std::atan2(arm.links[1] * std::sin(t2), arm.links[0] + arm.links[1] * std::cos(t2));
+    answer.solutions.push_back(solution(arm, {t1, t2}, target));
+  }
+  return answer;
+}
+
+IkAnswer three_link_ik(const Arm& arm, Eigen::Vector2d target, double orientation) {
+  require_links(arm, 3, "three_link_ik");
+  const Eigen::Vector2d wrist = target - arm.links[2] * Eigen::Vector2d(std::cos(orientation), std::sin(orientation));
+  Arm two = arm;
+  two.links.pop_back();
+  IkAnswer wrist_answer = two_link_ik(two, wrist);
+  IkAnswer answer;
+  answer.found = wrist_answer.found;
+  answer.why_not = wrist_answer.why_not.empty() ? "" : "the wrist point: " + wrist_answer.why_not;
+  for (const IkSolution& s : wrist_answer.solutions)
+    answer.solutions.push_back(solution(arm, {s.angles[0], s.angles[1], orientation - s.angles[0] - s.angles[1]}, target));
+  return answer;
+}
+
+IkSolution fabrik(const Arm& arm, Eigen::Vector2d target, const JointAngles& start, std::size_t iterations, double tolerance) {
+  std::vector<Eigen::Vector2d> p = joint_positions(arm, start);
+  const std::size_t n = arm.joints();
+  const auto place = [&](std::size_t from, std::size_t to, double length) {  // p[to] at `length` from p[from], on its line
+    Eigen::Vector2d d = p[to] - p[from];
+    const double norm = d.norm();
+    p[to] = p[from] + length * (norm > 0 ? Eigen::Vector2d(d / norm) : Eigen::Vector2d(1, 0));
+  };
+  double total = 0;
+  for (const double l : arm.links) total += l;
+  if (target.norm() >= total) {  // out of reach: stretched straight towards it
+    for (std::size_t i = 0; i < n; ++i) p[i + 1] = p[i] + arm.links[i] * target.normalized();
+  } else {
+    for (std::size_t k = 0; k < iterations && (p[n] - target).norm() > tolerance; ++k) {
+      p[n] = target;
+      for (std::size_t i = n; i-- > 0;) place(i + 1, i, arm.links[i]);
+      p[0] = Eigen::Vector2d::Zero();
+      for (std::size_t i = 0; i < n; ++i) place(i, i + 1, arm.links[i]);
+    }
+  }
+  JointAngles q(n);
+  double previous = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double absolute = std::atan2(p[i + 1].y() - p[i].y(), p[i + 1].x() - p[i].x());
+    q[i] = absolute - previous;
+    previous = absolute;
+  }
+  return solution(arm, std::move(q), target);
+}
+
+IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) {
+  const std::size_t n = arm.joints();
+  if (!o.limits.empty() && o.limits.size() != n) throw std::invalid_argument("numeric_ik: " + std::to_string(o.limits.size()) + " joint limits for " + std::to_string(n) + " links");
+  const std::size_t rows = o.orientation ? 3 : 2;
+  const auto clamp = [&](JointAngles& q) {
+    for (std::size_t i = 0; i < o.limits.size(); ++i) q[i] = std::clamp(q[i], o.limits[i].first, o.limits[i].second);
+  };
+  const auto task_error = [&](const JointAngles& q) {
+    Eigen::VectorXd e(rows);
+    e.head<2>() = target - hand(arm, q);
+    if (o.orientation) e[2] = wrap(*o.orientation - end_orientation(q));
+    return e;
+  };
+  std::mt19937_64 random(o.seed);
+  IkAnswer answer;
+  std::optional<IkSolution> closest;
+  for (std::size_t s = 0; s < o.seeds && (o.all || !answer.found); ++s) {
+    JointAngles q(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const double lo = o.limits.empty() ? -M_PI : o.limits[i].first, hi = o.limits.empty() ? M_PI : o.limits[i].second;
+      q[i] = s == 0 && lo <= 0.3 && 0.3 <= hi ? 0.3 : std::uniform_real_distribution<double>(lo, hi)(random);  // seed 0: a gentle curl
+    }
+    // Damped least squares, Levenberg–Marquardt's damping: halved after a step that helps,
+    // quadrupled (and the step refused) after one that does not.
+    Eigen::VectorXd e = task_error(q);
+    double damping = 1e-2 * arm.reach();
+    for (std::size_t k = 0; k < o.iterations && e.norm() > o.tolerance; ++k) {
+      const std::vector<Eigen::Vector2d> joints = joint_positions(arm, q);
+      Eigen::MatrixXd J(rows, n);
+      for (std::size_t i = 0; i < n; ++i) {
+        const Eigen::Vector2d r = joints[n] - joints[i];
+        J(0, i) = -r.y(), J(1, i) = r.x();
+        if (o.orientation) J(2, i) = 1;
+      }
+      const Eigen::MatrixXd JJt = J * J.transpose() + damping * damping * Eigen::MatrixXd::Identity(rows, rows);
+      const Eigen::VectorXd step = J.transpose() * JJt.ldlt().solve(e);
+      JointAngles next = q;
+      for (std::size_t i = 0; i < n; ++i) next[i] += step[i];
+      clamp(next);
+      const Eigen::VectorXd e_next = task_error(next);
+      if (e_next.norm() < e.norm()) q = std::move(next), e = e_next, damping *= 0.5;
+      else damping *= 4;
+    }
+    IkSolution found = solution(arm, q, target);
+    const bool reached = e.norm() <= o.tolerance;
+    if (reached && distinct(answer.solutions, found.angles)) answer.solutions.push_back(found), answer.found = true;
+    if (!closest || found.error < closest->error) closest = found;
+  }
+  if (!answer.found && !o.orientation && o.limits.empty()) {  // FABRIK: no orientation, no limits
+    IkSolution pulled = fabrik(arm, target, JointAngles(n, 0.3));
+    if (pulled.error <= o.tolerance) answer.found = true, answer.solutions.push_back(pulled);
+    else if (!closest || pulled.error < closest->error) closest = pulled;
+  }
+  if (!answer.found) {
+    answer.solutions.push_back(*closest);
+    answer.why_not = "no configuration within " + std::to_string(o.tolerance) + " of the target from " + std::to_string(o.seeds) + " seeds (the closest: " +
+                     std::to_string(closest->error) + " away)";
+  }
+  return answer;
+}
+
+}  // namespace polyplan
