@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <stdexcept>
 
@@ -175,8 +176,9 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
   }
   if (!answer.found) {
     answer.solutions.push_back(*closest);
-    answer.why_not = "no configuration within " + std::to_string(o.tolerance) + " of the target from " + std::to_string(o.seeds) + " seeds (the closest: " +
-                     std::to_string(closest->error) + " away)";
+    char why[160];
+    std::snprintf(why, sizeof why, "no configuration within %g of the target from %zu seeds (the closest: %.6g away)", o.tolerance, o.seeds, closest->error);
+    answer.why_not = why;
   }
   return answer;
 }
