@@ -69,9 +69,16 @@ int run_ik(const IkCommandOptions& o) {
   if (!o.svg.empty()) {
     ArmPlanPicture picture;
     picture.problem = &problem;
-    for (const IkSolution& s : answer.solutions) picture.motion.push_back(s.angles);
-    picture.title = "inverse kinematics: " + std::to_string(answer.solutions.size()) + " configuration(s) for the hand at " + o.target;
-    write_arm_strobe_svg(o.svg, picture, 1);
+    std::vector<std::string> labels;
+    for (std::size_t i = 0; i < answer.solutions.size(); ++i) {
+      picture.motion.push_back(answer.solutions[i].angles);
+      char label[96];
+      std::snprintf(label, sizeof label, "%s %zu, error %.2g%s", answer.found ? "solution" : "closest", i + 1, answer.solutions[i].error,
+                    free[i] ? "" : ", collides");
+      labels.push_back(label);
+    }
+    picture.title = "inverse kinematics: the hand at " + o.target;
+    draw_arm_configurations(picture, labels).write(o.svg);
   }
   if (o.json != "-") {
     std::cout << (answer.found ? std::to_string(answer.solutions.size()) + " solution(s)" : "no solution (" + answer.why_not + "); the closest")

@@ -901,6 +901,25 @@ CellGrid checked_cspace(const ArmProblem& problem, std::size_t n) {
 
 }  // namespace
 
+svg::Drawing draw_arm_configurations(const ArmPlanPicture& picture, const std::vector<std::string>& labels) {
+  check_picture(picture);
+  const Arm& arm = picture.problem->arm;
+  const Layout l = layout(picture);
+  svg::Drawing d(l.whole, l.width_px);
+  draw_titles(d, l, picture);
+  draw_surroundings(d, *picture.problem);
+  constexpr std::size_t named = 8;  // legend entries; the others are counted in one
+  for (std::size_t i = 0; i < picture.motion.size(); ++i) {
+    const LinkLook look = link_look(arm, theme::path_colour(i), theme::path_colour(i), 0.8);
+    draw_configuration(d, arm, picture.motion[i], look, true);
+    if (i < named) d.legend(i < labels.size() ? labels[i] : "configuration " + std::to_string(i + 1), look.body);
+  }
+  if (picture.motion.size() > named)
+    d.legend("and " + std::to_string(picture.motion.size() - named) + " more", link_look(arm, theme::trace, theme::trace, 0.8).body);
+  draw_base(d);
+  return d;
+}
+
 std::string arm_animation_svg(const ArmPlanPicture& picture) { return animation_drawing(picture).str(); }
 
 std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth) {

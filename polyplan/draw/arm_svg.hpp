@@ -66,6 +66,10 @@ std::string arm_animation_svg(const ArmPlanPicture& picture);
 // Throws std::invalid_argument as arm_animation_svg does, and when every_kth is 0.
 std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth);
 
+// Configurations that are not a motion (inverse kinematics' solutions) drawn at once, each in a
+// colour of its own with its label (the first eight in the legend); the workspace only.
+svg::Drawing draw_arm_configurations(const ArmPlanPicture& picture, const std::vector<std::string>& labels);
+
 // Any arm planner's report as a picture: the path's motions drawn densely (every joint at most
 // `degrees_per_frame` between frames, as the planners interpolate: each joint the short way), the
 // report's cells as the C-space panel (two joints), the panel labelled a torus unless the cells do
