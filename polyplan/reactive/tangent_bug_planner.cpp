@@ -47,9 +47,12 @@ struct Candidate {
   double heuristic;  // d(x, n) + d(n, goal)
 };
 
-void keep_better(std::optional<Candidate>& best, const Point& from, const Point& to, const Point& goal) {
-  const double h = distance(from, to) + distance(to, goal);
-  if (!best || h < best->heuristic) best = Candidate{to, h};
+// The candidate of least heuristic (the first of equals), if any.
+std::optional<Candidate> best_of(const std::vector<Candidate>& candidates) {
+  std::optional<Candidate> best;
+  for (const Candidate& c : candidates)
+    if (!best || c.heuristic < best->heuristic) best = c;
+  return best;
 }
 
 }  // namespace
@@ -67,11 +70,11 @@ struct TangentBugPlanner::Impl {
     return std::isinf(range) || squared(x, p) <= Rational(range) * Rational(range);
   }
 
-  // Where the robot at x goes on straight for the goal: the goal when the way is free; the point
-  // at the range short of the obstacle blocking it when that is out of range (the obstacle itself
-  // for a touch sensor); nullopt when the blocking obstacle is sensed.
-  std::optional<Point> straight_on(const Point& x, const Point& goal) const {
-    const auto hit = boundary.first_hit(x, goal);
+  // Where the robot at x goes on straight for the goal, given where its straight way is first
+  // blocked (`hit`, boundary.first_hit): the goal when the way is free; the point at the range
+  // short of the obstacle when that is out of range (the obstacle itself for a touch sensor);
+  // nullopt when the blocking obstacle is sensed.
+  std::optional<Point> straight_on(const Point& x, const Point& goal, const std::optional<Point>& hit) const {
     if (!hit) return goal;
     if (*hit == x || senses(x, *hit)) return std::nullopt;
     if (range == 0) return *hit;
@@ -87,31 +90,29 @@ struct TangentBugPlanner::Impl {
     return along(x, end, Rational(range / distance(x, end)));
   }
 
-  // The discontinuities the robot at x senses and can head for, with d(x, O) + d(O, goal): those
-  // nearer the goal than x when `nearer`, else all.
-  std::vector<Candidate> discontinuities(const Point& x, const Point& goal, const std::vector<Point>& region, bool nearer) const {
+  // The discontinuities the robot at x senses and can head for, with d(x, O) + d(O, goal).
+  std::vector<Candidate> discontinuities(const Point& x, const Point& goal, const std::vector<Point>& region) const {
     std::vector<Candidate> out;
-    for (const auto& [near, far] : windows(boundary, x, region)) {
-      if (!senses(x, near) || (nearer && !(squared(near, goal) < squared(x, goal)))) continue;
-      if (check_segment(boundary.cspace(), x, near).valid) out.push_back({near, distance(x, near) + distance(near, goal)});
-    }
+    for (const auto& [near, far] : windows(boundary, x, region))
+      if (senses(x, near) && check_segment(boundary.cspace(), x, near).valid) out.push_back({near, distance(x, near) + distance(near, goal)});
     return out;
   }
 
-  std::optional<Candidate> best_discontinuity(const Point& x, const Point& goal, const std::vector<Point>& region) const {
-    std::optional<Candidate> best;
-    for (const Candidate& c : discontinuities(x, goal, region, true))
-      if (!best || c.heuristic < best->heuristic) best = c;
-    return best;
+  // Those of `sensed` nearer the goal than x: the ones motion to the goal may head for.
+  static std::vector<Candidate> nearer_goal(const std::vector<Candidate>& sensed, const Point& x, const Point& goal) {
+    std::vector<Candidate> out;
+    for (const Candidate& c : sensed)
+      if (squared(c.to, goal) < squared(x, goal)) out.push_back(c);
+    return out;
   }
 
   // Whether boundary following from x goes forwards along the cycle (the obstacle on the right):
   // yes, unless a discontinuity on the backward side (the end its direction is nearer) is strictly
   // better than every one on the forward side. `ends` = {backward end, forward end}.
-  bool follow_forwards(const Point& x, const Point& goal, const std::vector<Point>& region, const std::vector<Point>& ends) const {
+  static bool follow_forwards(const Point& x, const std::vector<Candidate>& sensed, const std::vector<Point>& ends) {
     const auto cosine = [&](const Point& end, const Point& o) { return to_double(dot(x, end, o)) / distance(x, end) / distance(x, o); };
     double best[2] = {infinity, infinity};  // backward, forward
-    for (const Candidate& c : discontinuities(x, goal, region, false)) {
+    for (const Candidate& c : sensed) {
       const int side = cosine(ends[1], c.to) >= cosine(ends[0], c.to) ? 1 : 0;
       best[side] = std::min(best[side], c.heuristic);
     }
@@ -127,14 +128,14 @@ struct TangentBugPlanner::Impl {
 
   // Sliding along an edge through x towards the goal: as far as it brings the robot nearer.
   std::optional<Candidate> best_slide(const Point& x, const Point& goal) const {
-    std::optional<Candidate> best;
+    std::vector<Candidate> slides;
     if (const auto edge = boundary.edge_at(x))
       for (const Point& end : edge_ends(x, *edge)) {
         if (!(dot(x, end, goal) > 0)) continue;
-        const Rational t = std::min(Rational(dot(x, goal, end) / squared(x, end)), Rational(1));
-        keep_better(best, x, along(x, end, t), goal);
+        const Point to = along(x, end, std::min(Rational(dot(x, goal, end) / squared(x, end)), Rational(1)));
+        slides.push_back({to, distance(x, to) + distance(to, goal)});
       }
-    return best;
+    return best_of(slides);
   }
 
   // On the way a-b, the first point nearer the goal than d_followed (squared: `record`); nullopt
@@ -211,19 +212,18 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
       return finish(false);
     }
     // Motion to the goal.
-    if (const auto on = r.straight_on(at, q.goal)) {
+    const std::optional<Point> hit = r.boundary.first_hit(at, q.goal);
+    if (const auto on = r.straight_on(at, q.goal, hit)) {
       if (!go(*on)) return out_of_distance(" heading for the goal");
       if (at == q.goal) return finish(true);
       continue;
     }
     const std::vector<Point> region = r.regions.visible_from(at);
     if (query_options.record && r.range > 0 && sensed.size() < regions_drawn) sensed.push_back(within_range(region, at, r.range));
-    std::optional<Candidate> move = r.best_discontinuity(at, q.goal, region);
+    const std::vector<Candidate> sensed_ends = r.discontinuities(at, q.goal, region);  // sensed once per stop
+    std::optional<Candidate> move = best_of(Impl::nearer_goal(sensed_ends, at, q.goal));
     if (const auto slide = r.best_slide(at, q.goal); slide && (!move || slide->heuristic < move->heuristic)) move = slide;
-    if (!move) {
-      const Point hit = *r.boundary.first_hit(at, q.goal);
-      if (!(hit == at)) move = Candidate{hit, 0};  // no discontinuity to head for: up to the obstacle
-    }
+    if (!move && !(*hit == at)) move = Candidate{*hit, 0};  // no discontinuity to head for: up to the obstacle
     if (move) {
       if (!go(move->to)) return out_of_distance(" heading for the goal");
       continue;
@@ -238,7 +238,7 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
     walk.hits.push_back(at);
     const std::size_t c = edge->cycle, n = r.boundary.cycles()[c].size();
     const std::vector<Point> ends = r.edge_ends(at, *edge);  // {backwards, forwards}
-    const bool forwards = r.follow_forwards(at, q.goal, region, ends);
+    const bool forwards = Impl::follow_forwards(at, sensed_ends, ends);
     const bool corner = at == r.boundary.vertex(c, edge->index);
     std::size_t k = forwards ? edge->index + 1 : corner ? edge->index + n - 1 : edge->index;  // the next corner
     // Walk the cycle from corner to corner until d_reach < d_followed.
