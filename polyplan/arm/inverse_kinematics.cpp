@@ -128,11 +128,21 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
   const auto clamp = [&](JointAngles& q) {
     for (std::size_t i = 0; i < o.limits.size(); ++i) q[i] = std::clamp(q[i], o.limits[i].first, o.limits[i].second);
   };
-  const auto task_error = [&](const JointAngles& q) {
+  // The task's error and Jacobian at q, from q's joint positions.
+  const auto task_error = [&](const JointAngles& q, const std::vector<Eigen::Vector2d>& joints) {
     Eigen::VectorXd e(rows);
-    e.head<2>() = target - hand(arm, q);
+    e.head<2>() = target - joints[n];
     if (o.orientation) e[2] = wrap(*o.orientation - end_orientation(q));
     return e;
+  };
+  const auto jacobian = [&](const std::vector<Eigen::Vector2d>& joints) {
+    Eigen::MatrixXd J(rows, n);
+    for (std::size_t i = 0; i < n; ++i) {
+      const Eigen::Vector2d r = joints[n] - joints[i];
+      J(0, i) = -r.y(), J(1, i) = r.x();
+      if (o.orientation) J(2, i) = 1;
+    }
+    return J;
   };
   std::mt19937_64 random(o.seed);
   IkAnswer answer;
@@ -144,25 +154,25 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
       q[i] = s == 0 && lo <= 0.3 && 0.3 <= hi ? 0.3 : std::uniform_real_distribution<double>(lo, hi)(random);  // seed 0: a gentle curl
     }
     // Damped least squares, Levenberg–Marquardt's damping: halved after a step that helps,
-    // quadrupled (and the step refused) after one that does not.
-    Eigen::VectorXd e = task_error(q);
+    // quadrupled (and the step refused) after one that does not. Forward kinematics once per
+    // step tried; the Jacobian only where q moves.
+    std::vector<Eigen::Vector2d> joints = joint_positions(arm, q), tried;
+    Eigen::VectorXd e = task_error(q, joints);
+    Eigen::MatrixXd J = jacobian(joints);
     double damping = 1e-2 * arm.reach();
     for (std::size_t k = 0; k < o.iterations && e.norm() > o.tolerance; ++k) {
-      const std::vector<Eigen::Vector2d> joints = joint_positions(arm, q);
-      Eigen::MatrixXd J(rows, n);
-      for (std::size_t i = 0; i < n; ++i) {
-        const Eigen::Vector2d r = joints[n] - joints[i];
-        J(0, i) = -r.y(), J(1, i) = r.x();
-        if (o.orientation) J(2, i) = 1;
-      }
       const Eigen::MatrixXd JJt = J * J.transpose() + damping * damping * Eigen::MatrixXd::Identity(rows, rows);
       const Eigen::VectorXd step = J.transpose() * JJt.ldlt().solve(e);
       JointAngles next = q;
       for (std::size_t i = 0; i < n; ++i) next[i] += step[i];
       clamp(next);
-      const Eigen::VectorXd e_next = task_error(next);
-      if (e_next.norm() < e.norm()) q = std::move(next), e = e_next, damping *= 0.5;
-      else damping *= 4;
+      joint_positions_into(arm, next, tried);
+      const Eigen::VectorXd e_next = task_error(next, tried);
+      if (e_next.norm() < e.norm()) {
+        q = std::move(next), joints.swap(tried), e = e_next, J = jacobian(joints), damping *= 0.5;
+      } else {
+        damping *= 4;
+      }
     }
     IkSolution found = solution(arm, q, target);
     const bool reached = e.norm() <= o.tolerance;
