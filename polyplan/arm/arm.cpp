@@ -6,18 +6,25 @@
 
 namespace polyplan {
 
-void joint_positions_into(const Arm& arm, const JointAngles& angles, std::vector<Eigen::Vector2d>& out) {
-  if (angles.size() != arm.links.size())
+void joint_positions_into(const Arm& arm, const JointAngles& angles, std::vector<Eigen::Vector2d>& out,
+                          std::vector<double>* headings, std::vector<Eigen::Vector2d>* directions) {
+  const std::size_t n = arm.links.size();
+  if (angles.size() != n)
     throw std::invalid_argument("joint_positions: " + std::to_string(angles.size()) + " angles for an arm of " +
-                                std::to_string(arm.links.size()) + " links");
-  out.resize(arm.links.size() + 1);
+                                std::to_string(n) + " links");
+  out.resize(n + 1);
   out[0] = Eigen::Vector2d::Zero();
+  if (headings) headings->resize(n);
+  if (directions) directions->resize(n);
   // Relative angles: link k points along the sum of the first k+1 angles.
   double heading = 0;
-  for (std::size_t k = 0; k < arm.links.size(); ++k) {
+  for (std::size_t k = 0; k < n; ++k) {
     if (!std::isfinite(angles[k])) throw std::invalid_argument("joint_positions: angle " + std::to_string(k) + " is not finite");
     heading += angles[k];
-    out[k + 1] = out[k] + arm.links[k] * Eigen::Vector2d(std::cos(heading), std::sin(heading));
+    const Eigen::Vector2d direction(std::cos(heading), std::sin(heading));
+    out[k + 1] = out[k] + arm.links[k] * direction;
+    if (headings) (*headings)[k] = heading;
+    if (directions) (*directions)[k] = direction;
   }
 }
 

@@ -17,8 +17,12 @@ namespace polyplan {
 // joints()+1 points: [0] = base (0, 0), [k+1] = the end of links[k]. Throws std::invalid_argument
 // when the angle count differs from the link count or an angle is not finite.
 std::vector<Eigen::Vector2d> joint_positions(const Arm&, const JointAngles&);
-// The same into `out` (resized; no allocation once it has the size), for hot loops.
-void joint_positions_into(const Arm&, const JointAngles&, std::vector<Eigen::Vector2d>& out);
+// The same into `out` (resized; no allocation once it has the size), for hot loops. When given,
+// `headings` and `directions` receive, for each link k, the heading as computed (the sum of the
+// first k+1 angles, in doubles) and its direction (cos, sin of that heading, as libm computes
+// them): what arm/detail/true_arm_bounds.hpp encloses the true arm with.
+void joint_positions_into(const Arm&, const JointAngles&, std::vector<Eigen::Vector2d>& out,
+                          std::vector<double>* headings = nullptr, std::vector<Eigen::Vector2d>* directions = nullptr);
 
 // The outline of links[link] for the given joint positions: its 2 end points (a segment, width 0)
 // or the 4 corners of its rectangle, counter-clockwise, starting at the corner to the right of

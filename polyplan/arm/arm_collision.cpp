@@ -1,5 +1,7 @@
 #include <polyplan/arm/arm_collision.hpp>
 
+#include <polyplan/arm/detail/outward_rounding.hpp>
+#include <polyplan/arm/detail/true_arm_bounds.hpp>
 #include <polyplan/geometry/rational.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -45,54 +47,68 @@ struct Box {
 
 constexpr double infinity = std::numeric_limits<double>::infinity();
 
-// The squared distance between two boxes (0 when they overlap), as computed in doubles. Used
-// only to skip what cannot matter, always after subtracting the safety margin (see
-// safety_margin); squared, because that test runs for every obstacle near every link.
+using detail::above;
+using detail::below;
+using detail::Interval;
+using detail::RoundingUpward;
+
+// The box grown by d (≥ 0, +infinity for no limit) on every side, rounded outward: what lies
+// outside it lies farther than d from the box, on one axis and so in distance.
+Box grown(const Box& b, double d) {
+  if (!std::isfinite(d)) {
+    Box all;
+    all.xmin = all.ymin = -std::numeric_limits<double>::infinity();
+    all.xmax = all.ymax = std::numeric_limits<double>::infinity();
+    return all;
+  }
+  Box g;
+  g.xmin = below(b.xmin - d), g.ymin = below(b.ymin - d);
+  g.xmax = above(b.xmax + d), g.ymax = above(b.ymax + d);
+  return g;
+}
+
+// The squared gap between two boxes (0 when they overlap), rounded as it may be.
 double squared_gap(const Box& a, const Box& b) {
   const double dx = std::max({0.0, b.xmin - a.xmax, a.xmin - b.xmax});
   const double dy = std::max({0.0, b.ymin - a.ymax, a.ymin - b.ymax});
   return dx * dx + dy * dy;
 }
 
-// The safety margin subtracted from every double-computed distance, for shapes whose coordinates
-// are at most `extent` in absolute value, on an arm of n links and the given reach:
-// 1e-12 · max(1, (n/10)²) · (reach + 1 + extent). What it absorbs, in units u = 2^-53 ≈ 1.1e-16:
-//  - the distance formulas below: a few u times the coordinates involved;
-//  - the kinematic coordinates against the true arm at the same angles: the heading of link k is
-//    a sum of k angles in [0, 2π) (up to 2πk, rounded k times), so a link turns by up to
-//    n · 2πn · u, which moves it by up to that times the reach (7e-14 · reach for n = 10, growing
-//    as n², hence the factor); cos, sin and the sums of link vectors add a few u · reach;
-//  - the interpolated angles of a motion (each rounded by about 2 · 2π · u, so the headings by up
-//    to n times that: 1.4e-14 · reach for n = 10) and the rounding of its step sizes, a few u · reach.
-// Together about 1e-13 · reach for n = 10: the margin is 10 times that, and still far below any
-// clearance worth planning with.
-double safety_margin(std::size_t links, double reach, double extent) {
-  const double n = static_cast<double>(links);
-  return 1e-12 * std::max(1.0, n * n / 100) * (reach + 1 + extent);
+// A lower bound of the squared gap between two boxes (0 when they overlap). RoundingUpward must
+// be in force: each difference rounded up and negated is a lower bound of the gap on its axis,
+// and −(−dx·dx − dy·dy), each operation rounded up, one of the sum of squares. Plain doubles,
+// not intervals: this runs for every obstacle and edge near every link.
+inline double squared_gap_below(const Box& a, const Box& b) {
+  const double dx = std::max({0.0, -(a.xmax - b.xmin), -(b.xmax - a.xmin)});
+  const double dy = std::max({0.0, -(a.ymax - b.ymin), -(b.ymax - a.ymin)});
+  return -((-dx) * dx - dy * dy);
 }
 
-// A clearance: the computed distance minus the margin, never below 0.
-double clearance_of(double distance, double margin) { return std::max(0.0, distance - margin); }
-
-// Whether something whose box lies `squared_box_gap` (squared) from the link's can be skipped:
-// it lies apart from the link (box gap − margin > 0, so it cannot meet it) and cannot bring the
-// clearance below `enough` (box gap − margin ≥ enough).
-bool cannot_matter(double squared_box_gap, double margin, double enough) {
-  const double reach = enough + margin;
-  return squared_box_gap > margin * margin && squared_box_gap >= reach * reach;
+// Whether something whose box lies a squared gap of at least `squared_box_gap` from the link's
+// can be skipped, when `radius` bounds how far the true shapes may lie from the computed ones: it
+// lies apart from the link (gap > radius, so the computed shapes do not meet either) and its
+// clearance cannot come below `enough` (gap − radius ≥ enough). RoundingUpward must be in force
+// (the squares of the radius and of enough + radius round up).
+inline bool cannot_matter(double squared_box_gap, double radius, double enough) {
+  if (!std::isfinite(enough)) return false;
+  const double reach = enough + radius;
+  return squared_box_gap > radius * radius && squared_box_gap >= reach * reach;
 }
 
-// The squared distance from p to the segment ab (a == b allowed), in doubles. Clamping the
-// projection keeps the nearest point on the segment, so rounding moves the result by a few ulps of
-// the coordinates only (see safety_margin). Squared: the square root is taken once, of the
-// smallest (sqrt is monotone and correctly rounded, so that is the smallest distance).
-double squared_point_segment_distance(const Point& p, const Point& a, const Point& b) {
-  const double vx = b.x() - a.x(), vy = b.y() - a.y();
-  const double wx = p.x() - a.x(), wy = p.y() - a.y();
-  const double vv = vx * vx + vy * vy;
-  const double t = vv > 0 ? std::clamp((wx * vx + wy * vy) / vv, 0.0, 1.0) : 0.0;
-  const double dx = wx - t * vx, dy = wy - t * vy;
-  return dx * dx + dy * dy;
+// A clearance: a lower bound of the distance between the computed shapes less the radius that
+// bounds how far the true shapes lie from them, never below 0. RoundingUpward must be in force.
+double clearance_below(double distance, double radius) { return std::max(0.0, -(radius - distance)); }
+
+// A lower bound of the squared distance from p to the segment ab (a == b allowed), in real
+// arithmetic on the doubles' values. RoundingUpward must be in force.
+double squared_distance_below(const Point& p, const Point& a, const Point& b) {
+  const Interval vx = Interval(b.x()) - Interval(a.x()), vy = Interval(b.y()) - Interval(a.y());
+  const Interval wx = Interval(p.x()) - Interval(a.x()), wy = Interval(p.y()) - Interval(a.y());
+  if ((vx * wx + vy * wy).sup() <= 0) return (CGAL::square(wx) + CGAL::square(wy)).inf();  // nearest: a
+  const Interval ux = Interval(p.x()) - Interval(b.x()), uy = Interval(p.y()) - Interval(b.y());
+  if ((vx * ux + vy * uy).inf() >= 0) return (CGAL::square(ux) + CGAL::square(uy)).inf();  // nearest: b
+  // Between the ends, or too near one to tell: no point of the segment is nearer than its line.
+  return (CGAL::square(vx * wy - vy * wx) / (CGAL::square(vx) + CGAL::square(vy))).inf();
 }
 
 // A closed convex shape given by 1 vertex (a point), 2 (a segment) or 4 (a strictly convex
@@ -148,28 +164,49 @@ bool meets(const Convex& a, const Convex& b) {
   return contains(b, a.v[0]) || contains(a, b.v[0]);
 }
 
-// The squared distance from p to the boundary of s, which is its distance to s when p lies outside s.
-double squared_distance_to_boundary(const Point& p, const Convex& s) {
-  if (s.n == 1) return squared_point_segment_distance(p, s.v[0], s.v[0]);
-  double best = infinity;
-  for (int i = 0; i < edge_count(s); ++i) best = std::min(best, squared_point_segment_distance(p, s.v[i], s.v[(i + 1) % s.n]));
+// A lower bound of the squared distance from p to the segment ab's box. RoundingUpward must be in
+// force. Cheaper than the distance itself, which it bounds from below.
+inline double squared_gap_to_box_below(const Point& p, const Point& a, const Point& b) {
+  const double x0 = std::min(a.x(), b.x()), x1 = std::max(a.x(), b.x());
+  const double y0 = std::min(a.y(), b.y()), y1 = std::max(a.y(), b.y());
+  const double dx = std::max({0.0, -(p.x() - x0), -(x1 - p.x())});
+  const double dy = std::max({0.0, -(p.y() - y0), -(y1 - p.y())});
+  return -((-dx) * dx - dy * dy);
+}
+
+// The smaller of `best` and a lower bound of the squared distance from p to the boundary of s,
+// which is its distance to s when p lies outside s: edges whose box lies at least `best` away are
+// not measured. RoundingUpward must be in force.
+double squared_distance_to_boundary_below(const Point& p, const Convex& s, double best = infinity) {
+  if (s.n == 1) return std::min(best, squared_distance_below(p, s.v[0], s.v[0]));
+  for (int i = 0; i < edge_count(s); ++i) {
+    const Point &a = s.v[i], &b = s.v[(i + 1) % s.n];
+    if (squared_gap_to_box_below(p, a, b) >= best) continue;
+    best = std::min(best, squared_distance_below(p, a, b));
+  }
   return best;
 }
-double distance_to_boundary(const Point& p, const Convex& s) { return std::sqrt(squared_distance_to_boundary(p, s)); }
 
-// The distance between two closed convex shapes that do not meet: the nearest pair of points of
-// two disjoint convex polygons (or segments, or points) always has a vertex of one of them.
-double distance_apart(const Convex& a, const Convex& b) {
+// A lower bound of the square root of a lower bound (with RoundingUpward in force the root rounds
+// up; the double below it does not exceed the real root).
+double root_below(double squared) { return squared > 0 ? below(std::sqrt(squared)) : 0.0; }
+
+// A lower bound of the distance between two closed convex shapes that do not meet: the nearest
+// pair of points of two disjoint convex polygons (or segments, or points) always has a vertex of
+// one of them. RoundingUpward must be in force.
+double distance_apart_below(const Convex& a, const Convex& b) {
   double best = infinity;
-  for (int i = 0; i < a.n; ++i) best = std::min(best, squared_distance_to_boundary(a.v[i], b));
-  for (int i = 0; i < b.n; ++i) best = std::min(best, squared_distance_to_boundary(b.v[i], a));
-  return std::sqrt(best);
+  for (int i = 0; i < a.n; ++i) best = squared_distance_to_boundary_below(a.v[i], b, best);
+  for (int i = 0; i < b.n; ++i) best = squared_distance_to_boundary_below(b.v[i], a, best);
+  return root_below(best);
 }
 
 struct Obstacle {
   std::size_t index = 0;  // in the problem's obstacles
   Box box;
-  double margin = 0;  // safety_margin for its coordinates
+  // How far the file's exact vertices may lie from their nearest doubles (an ulp in each
+  // coordinate, rounded up): the exact polygon lies within this of the one measured.
+  double rounding = 0;
   std::vector<Convex> edges;  // of the outer boundary and of the holes
   std::vector<Point> outer;
   std::vector<std::vector<Point>> holes;
@@ -194,13 +231,18 @@ bool link_meets(const Convex& link, const Obstacle& o) {
 }
 
 struct PointObstacle {
-  Point p;
+  Point p;                // the file's point is a double (arm files round their numbers once)
   std::size_t index = 0;  // in the problem's points
   Box box;                // p alone
-  double margin = 0;      // safety_margin for its coordinates
 };
 
-double largest_coordinate(const Box& b) { return std::max({std::fabs(b.xmin), std::fabs(b.xmax), std::fabs(b.ymin), std::fabs(b.ymax)}); }
+// An upper bound of the distance between a rational coordinate pair and its nearest doubles
+// (to_double rounds to nearest: within half an ulp per coordinate; a whole ulp is allowed).
+double rounding_of(const Point& rounded) {
+  const RoundingUpward upward;
+  const auto ulp = [](double x) { return above(std::fabs(x)) - std::fabs(x); };
+  return ulp(rounded.x()) + ulp(rounded.y());
+}
 
 std::vector<Point> to_points(const Ring& ring) {
   std::vector<Point> out;
@@ -227,15 +269,28 @@ struct ArmCollisionChecker::Impl {
   std::vector<Obstacle> obstacles;  // only those the arm can reach
   std::vector<PointObstacle> points;
   Box everything;  // of the kept obstacles and points
-  double everything_margin = 0;  // the largest margin of the kept obstacles and points
-  double link_pair_margin = 0;   // safety_margin between two links
+  double everything_rounding = 0;  // the largest rounding of the kept obstacles
   // Scratch for one check, kept to avoid allocating per call.
-  mutable std::vector<Eigen::Vector2d> joints;
+  mutable std::vector<Eigen::Vector2d> joints, directions;
+  mutable std::vector<double> headings;
   mutable std::vector<Convex> links;
+  // After place_enclosed: links[k] lies within link_radius[k] of the true link k, at every
+  // configuration the spread covers.
+  mutable detail::TrueArmBounds true_arm;
+  mutable std::vector<double> link_radius;
+  // obstacle_clearance's candidates: edges near a link (with their obstacle's rounding), points.
+  struct NearEdge {
+    double gap;  // squared, in the default rounding: only the order of the distances' work
+    const Convex* edge;
+    double rounding;  // its obstacle's
+  };
+  mutable std::vector<NearEdge> near_edges;
+  mutable std::vector<const PointObstacle*> near_points;
   mutable ArmClearances split;
   mutable std::size_t checks = 0;
 
-  Impl(const Arm& a, const std::vector<PolygonWithHoles>& polygons, const std::vector<Eigen::Vector2d>& point_list) : arm(a) {
+  Impl(const Arm& a, const std::vector<PolygonWithHoles>& polygons, const std::vector<Eigen::Vector2d>& point_list)
+      : arm(a), true_arm(arm) {
     if (arm.links.empty()) throw std::invalid_argument("ArmCollisionChecker: the arm has no links");
     for (double l : arm.links)
       if (!(l > 0) || !std::isfinite(l)) throw std::invalid_argument("ArmCollisionChecker: a link length is not positive and finite");
@@ -243,9 +298,9 @@ struct ArmCollisionChecker::Impl {
       throw std::invalid_argument("ArmCollisionChecker: the link width is negative or not finite");
     const double reach = arm.reach();
     if (!std::isfinite(reach)) throw std::invalid_argument("ArmCollisionChecker: the arm's length is not finite");
-    link_pair_margin = safety_margin(arm.joints(), reach, reach);
     // Whatever lies outside the disc of radius reach can never be touched. The box around it is
-    // widened far beyond the rounding of the computed coordinates, so dropping is always safe.
+    // widened far beyond the rounding of the computed coordinates and of the reach, and of the
+    // obstacles' vertices, so dropping is always safe.
     Box reachable;
     const double r = reach * (1 + 1e-6);
     reachable.add(Point(-r, -r));
@@ -260,15 +315,13 @@ struct ArmCollisionChecker::Impl {
       for (const Point& p : o.outer) o.box.add(p);
       if (!o.box.overlaps(reachable)) continue;
       add_edges(o.outer, o.edges);
-      Box every_vertex = o.box;  // holes too, should one stray outside the outer boundary
       for (const Ring& hole : polygon.holes) {
         o.holes.push_back(to_points(hole));
         add_edges(o.holes.back(), o.edges);
-        for (const Point& p : o.holes.back()) every_vertex.add(p);
       }
-      o.margin = safety_margin(arm.joints(), reach, largest_coordinate(every_vertex));
+      for (const Convex& e : o.edges) o.rounding = std::max(o.rounding, rounding_of(e.v[0]));
       everything.add(o.box);
-      everything_margin = std::max(everything_margin, o.margin);
+      everything_rounding = std::max(everything_rounding, o.rounding);
       obstacles.push_back(std::move(o));
     }
     for (std::size_t i = 0; i < point_list.size(); ++i) {
@@ -276,11 +329,9 @@ struct ArmCollisionChecker::Impl {
       if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw std::invalid_argument("ArmCollisionChecker: a point is not finite");
       const Point q(p.x(), p.y());
       if (!reachable.contains(q)) continue;
-      PointObstacle kept{q, i, {}, 0};
+      PointObstacle kept{q, i, {}};
       kept.box.add(q);
-      kept.margin = safety_margin(arm.joints(), reach, largest_coordinate(kept.box));
       everything.add(q);
-      everything_margin = std::max(everything_margin, kept.margin);
       points.push_back(kept);
     }
   }
@@ -311,79 +362,124 @@ struct ArmCollisionChecker::Impl {
     for (std::size_t k = 0; k < n; ++k) shape_link(k, links[k]);
   }
 
+  // place, and for the clearances: link_radius[k] bounds how far the computed links[k] may lie
+  // from the true link k at every configuration within spread[j] of q in each joint (empty: q).
+  void place_enclosed(const JointAngles& q, std::span<const double> spread) const {
+    const std::size_t n = arm.joints();
+    if (!spread.empty() && spread.size() != n)
+      throw std::invalid_argument("ArmCollisionChecker: " + std::to_string(spread.size()) + " spreads for an arm of " +
+                                  std::to_string(n) + " links");
+    if (!std::all_of(spread.begin(), spread.end(), [](double s) { return s >= 0 && std::isfinite(s); }))
+      throw std::invalid_argument("ArmCollisionChecker: a spread is negative or not finite");
+    joint_positions_into(arm, q, joints, &headings, &directions);  // validates the angles
+    ++checks;
+    links.resize(n);
+    for (std::size_t k = 0; k < n; ++k) shape_link(k, links[k]);  // exact convexity tests: to nearest
+    link_radius.resize(n);
+    const RoundingUpward upward;
+    true_arm.enclose(q, spread, headings, directions, joints);
+    for (std::size_t k = 0; k < n; ++k) {
+      const Convex& link = links[k];
+      std::array<Eigen::Vector2d, 4> corners;
+      if (link.n == 4)
+        for (int i = 0; i < 4; ++i) corners[static_cast<std::size_t>(i)] = {link.v[i].x(), link.v[i].y()};
+      else
+        corners[0] = joints[k], corners[1] = joints[k + 1];
+      link_radius[k] = true_arm.link_radius(k, std::span(corners.data(), link.n == 4 ? 4 : 2));
+    }
+  }
+
   std::optional<ArmContact> contact(const JointAngles& angles) const {
     place(angles);
     const std::size_t n = arm.joints();
     for (std::size_t k = 0; k < n; ++k) {
-      const Convex& link = links[k];
-      if (link.box.overlaps(everything)) {
-        for (const Obstacle& o : obstacles)
-          if (link_meets(link, o)) return ArmContact{k, ArmContact::With::polygon, o.index};
-        for (const PointObstacle& p : points)
-          if (link.box.contains(p.p) && contains(link, p.p)) return ArmContact{k, ArmContact::With::point, p.index};
-      }
+      if (const auto met = obstacle_contact(k)) return met;
       if (arm.self_collision)
         for (std::size_t j = k + 2; j < n; ++j)
-          if (meets(link, links[j])) return ArmContact{k, ArmContact::With::link, j};
+          if (meets(links[k], links[j])) return ArmContact{k, ArmContact::With::link, j};
     }
     return std::nullopt;
   }
 
-  // The clearance of the placed links[k] to the obstacle polygons and points: the smallest one
-  // below `enough` or, when none is below it, a value of at least `enough` (+infinity when nothing
-  // was measured). What cannot matter (cannot_matter) is skipped, which never skips anything the
-  // link may meet: meeting is decided exactly for every obstacle whose box overlaps the link's.
-  // The first obstacle or point met, in first_contact's order, goes into `contact` unless it already
-  // holds one; with stop_at_contact the search ends there.
-  double obstacle_clearance(std::size_t k, double enough, bool stop_at_contact, std::optional<ArmContact>& contact) const {
+  // The first obstacle or point the placed links[k] meets, in first_contact's order: only what its
+  // box overlaps can meet it.
+  std::optional<ArmContact> obstacle_contact(std::size_t k) const {
     const Convex& link = links[k];
-    double best = infinity;
-    if (cannot_matter(squared_gap(link.box, everything), everything_margin, enough)) return best;
-    const auto found = [&](ArmContact c) {
+    if (!link.box.overlaps(everything)) return std::nullopt;
+    for (const Obstacle& o : obstacles)
+      if (link_meets(link, o)) return ArmContact{k, ArmContact::With::polygon, o.index};
+    for (const PointObstacle& p : points)
+      if (link.box.contains(p.p) && contains(link, p.p)) return ArmContact{k, ArmContact::With::point, p.index};
+    return std::nullopt;
+  }
+
+  // The clearance of the true link k (after place_enclosed) to the obstacle polygons and points:
+  // 0 when the computed link meets one (then `contact` is set unless it already holds one);
+  // otherwise the smallest lower bound below `enough` or, when none is below it, a value of at
+  // least `enough` (+infinity when nothing was measured).
+  //  - First, rounding to nearest: contact, exactly, and the edges and points near enough to
+  //    matter: those whose boxes reach into the link's box grown by enough + the radii (outward).
+  //  - Then the distances of those, all at once with the processor rounding upward (switching the
+  //    rounding costs more than a distance), skipping (cannot_matter) what lies apart from the
+  //    link and at least the clearance still needed beyond its radius.
+  double obstacle_clearance(std::size_t k, double enough, std::optional<ArmContact>& contact) const {
+    const Convex& link = links[k];
+    const double r = link_radius[k];
+    const Box near = grown(link.box, above(above(enough + r) + everything_rounding));
+    const auto met = [&](ArmContact c) {
       if (!contact) contact = c;
-      best = 0;
-      return stop_at_contact;
+      return 0.0;
     };
-    for (const Obstacle& o : obstacles) {
-      if (cannot_matter(squared_gap(link.box, o.box), o.margin, std::min(best, enough))) continue;
-      if (link_meets(link, o)) {
-        if (found({k, ArmContact::With::polygon, o.index})) return best;
-        continue;
+    near_edges.clear();
+    if (near.overlaps(everything))
+      for (const Obstacle& o : obstacles) {
+        if (!near.overlaps(o.box)) continue;
+        if (link_meets(link, o)) return met({k, ArmContact::With::polygon, o.index});
+        for (const Convex& e : o.edges)
+          if (near.overlaps(e.box)) near_edges.push_back({squared_gap(link.box, e.box), &e, o.rounding});
       }
-      // Apart from the closed region, the link is nearest to its boundary: one of the edges.
-      for (const Convex& e : o.edges) {
-        if (best == 0) break;
-        if (cannot_matter(squared_gap(link.box, e.box), o.margin, std::min(best, enough))) continue;
-        best = std::min(best, clearance_of(distance_apart(link, e), o.margin));
-      }
-    }
+    near_points.clear();
     for (const PointObstacle& p : points) {
-      if (cannot_matter(squared_gap(link.box, p.box), p.margin, std::min(best, enough))) continue;
-      if (contains(link, p.p)) {
-        if (found({k, ArmContact::With::point, p.index})) return best;
-        continue;
-      }
-      best = std::min(best, clearance_of(distance_to_boundary(p.p, link), p.margin));
+      if (!near.contains(p.p)) continue;
+      if (link.box.contains(p.p) && contains(link, p.p)) return met({k, ArmContact::With::point, p.index});
+      near_points.push_back(&p);
+    }
+    // Nearest boxes first: the clearance falls soonest, and the farther edges are skipped.
+    std::sort(near_edges.begin(), near_edges.end(), [](const NearEdge& x, const NearEdge& y) { return x.gap < y.gap; });
+
+    double best = infinity;
+    const RoundingUpward upward;  // from here on only interval code: each sum below rounds up
+    for (const auto& [gap, e, rounding] : near_edges) {
+      // Apart from an obstacle's closed region, the link is nearest to its boundary: one of the edges.
+      const double radius = r + rounding;
+      if (cannot_matter(squared_gap_below(link.box, e->box), radius, std::min(best, enough))) continue;
+      best = std::min(best, clearance_below(distance_apart_below(link, *e), radius));
+    }
+    for (const PointObstacle* p : near_points) {
+      if (cannot_matter(squared_gap_below(link.box, p->box), r, std::min(best, enough))) continue;
+      best = std::min(best, clearance_below(root_below(squared_distance_to_boundary_below(p->p, link)), r));
     }
     return best;
   }
 
-  // The clearance between the placed links[k] and links[m] (self-collision, |k − m| ≥ 2), as
-  // obstacle_clearance measures it: +infinity when it cannot be below `enough`, 0 when they meet
-  // (then `contact` is set unless it already holds one).
+  // The clearance between the true links k and m (self-collision, |k − m| ≥ 2), as
+  // obstacle_clearance measures it: +infinity when it cannot be below `enough`, 0 when the
+  // computed links meet (then `contact` is set unless it already holds one).
   double pair_clearance(std::size_t k, std::size_t m, double enough, std::optional<ArmContact>& contact) const {
     const Convex& a = links[k];
     const Convex& b = links[m];
-    if (cannot_matter(squared_gap(a.box, b.box), link_pair_margin, enough)) return infinity;
     if (meets(a, b)) {
       if (!contact) contact = ArmContact{std::min(k, m), ArmContact::With::link, std::max(k, m)};
       return 0;
     }
-    return clearance_of(distance_apart(a, b), link_pair_margin);
+    const RoundingUpward upward;
+    const double radius = link_radius[k] + link_radius[m];
+    if (cannot_matter(squared_gap_below(a.box, b.box), radius, enough)) return infinity;
+    return clearance_below(distance_apart_below(a, b), radius);
   }
 
   void clearances(const JointAngles& q, ArmClearances& out, double enough) const {
-    place(q);
+    place_enclosed(q, {});
     const std::size_t n = arm.joints();
     out.links.assign(n, infinity);
     if (arm.self_collision) out.pairs.assign(n * n, infinity);
@@ -391,14 +487,14 @@ struct ArmCollisionChecker::Impl {
     out.contact.reset();
     // In first_contact's order, so that the first contact recorded is the one it reports.
     for (std::size_t k = 0; k < n; ++k) {
-      out.links[k] = obstacle_clearance(k, enough, false, out.contact);
+      out.links[k] = obstacle_clearance(k, enough, out.contact);
       if (arm.self_collision)
         for (std::size_t m = k + 2; m < n; ++m) out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, enough, out.contact);
     }
   }
 
   ArmSafeStep safe_step(const JointAngles& q, std::span<const double> link_speed, std::span<const double> pair_speed,
-                        double horizon) const {
+                        double horizon, std::span<const double> spread) const {
     const std::size_t n = arm.joints();
     if (link_speed.size() != n || pair_speed.size() != (arm.self_collision ? n * n : 0))
       throw std::invalid_argument("ArmCollisionChecker::safe_step: " + std::to_string(link_speed.size()) + " link speeds and " +
@@ -408,26 +504,23 @@ struct ArmCollisionChecker::Impl {
     if (!(horizon >= 0) || !std::all_of(link_speed.begin(), link_speed.end(), valid) ||
         !std::all_of(pair_speed.begin(), pair_speed.end(), valid))
       throw std::invalid_argument("ArmCollisionChecker::safe_step: speeds must be finite and not negative, the horizon not negative");
-    place(q);
-    // How long a clearance c lasts at speed v: c / v, forever for a positive c that does not move,
-    // and not at all for c = 0 (which may be a contact within the margin).
-    const auto lasts = [](double c, double v) { return c == 0 ? 0.0 : v > 0 ? c / v : infinity; };
-    // The distance covered at speed v in the time `step` (0 · ∞ would be NaN for an endless horizon).
-    const auto covered = [](double v, double step) { return v > 0 ? v * step : 0.0; };
+    place_enclosed(q, spread);
+    using detail::covered_above;
+    using detail::lasts_below;
     ArmSafeStep result;
     double step = horizon;
     // In first_contact's order, so that the contact reported is the one it reports. A clearance
     // above speed · step cannot lower the step: that is what "enough" tells the measurements.
     for (std::size_t k = 0; k < n; ++k) {
-      const double c = obstacle_clearance(k, covered(link_speed[k], step), true, result.contact);
+      const double c = obstacle_clearance(k, covered_above(link_speed[k], step), result.contact);
       if (result.contact) return result;
-      step = std::min(step, lasts(c, link_speed[k]));
+      step = std::min(step, lasts_below(c, link_speed[k]));
       if (arm.self_collision)
         for (std::size_t m = k + 2; m < n; ++m) {
           const double v = pair_speed[k * n + m];
-          const double cm = pair_clearance(k, m, covered(v, step), result.contact);
+          const double cm = pair_clearance(k, m, covered_above(v, step), result.contact);
           if (result.contact) return result;
-          step = std::min(step, lasts(cm, v));
+          step = std::min(step, lasts_below(cm, v));
         }
     }
     result.step = step;
@@ -465,8 +558,8 @@ void ArmCollisionChecker::clearances(const JointAngles& q, std::vector<double>& 
 }
 
 ArmSafeStep ArmCollisionChecker::safe_step(const JointAngles& q, std::span<const double> link_speed,
-                                           std::span<const double> pair_speed, double horizon) const {
-  return impl_->safe_step(q, link_speed, pair_speed, horizon);
+                                           std::span<const double> pair_speed, double horizon, std::span<const double> spread) const {
+  return impl_->safe_step(q, link_speed, pair_speed, horizon, spread);
 }
 
 std::size_t ArmCollisionChecker::checks() const { return impl_->checks; }

@@ -15,15 +15,15 @@
 // rounded to the nearest double (geometry/rational.hpp to_double) once, at construction. A
 // rectangle so thin that its double corners are not strictly convex is checked as its segment.
 //
-// Clearances (for certified motions, arm_motion.hpp) are lower bounds of distances between the
-// same closed shapes: 0 when they meet (decided by the exact test above, never by a tolerance),
-// otherwise the double-computed Euclidean distance minus a safety margin, clamped at 0. The margin,
-// 1e-12 · (reach + 1 + the largest coordinate of the obstacle or point measured to) for arms of up
-// to 10 links (times (n/10)² for n links beyond), is about 10 times what double rounding can
-// move a distance here: the rounding of the distance formulas, of the kinematic coordinates
-// against the true (real-number) arm at the same angles, and of the interpolated angles and step
-// sizes of a motion (the budget is in arm_collision.cpp). So a clearance never exceeds the true
-// distance between the true arm and the obstacles (taken as their nearest doubles).
+// Clearances (for certified motions, arm_motion.hpp) are lower bounds of distances from the true
+// arm — the same link lengths and width, placed with the real cos and sin of the real sums of the
+// angles — to the file's obstacles — polygons with their exact rational vertices, points as the
+// doubles the file's numbers round to: 0 when the computed shapes meet (decided by the exact test
+// above, never by a tolerance); otherwise the distance between the computed shapes, bounded from
+// below in interval arithmetic rounded outward (CGAL's Interval_nt), less a radius that encloses
+// the true arm around the computed one (arm/detail/true_arm_bounds.hpp, also interval arithmetic)
+// and the obstacles' vertices around their doubles, clamped at 0. No ad-hoc margin: each clearance
+// is a proof. docs/certification.md gives the argument.
 //
 // Not thread-safe: a checker keeps scratch buffers and a counter (mutable, for speed: no
 // allocation per check). Use one checker per thread; construction is cheap.
@@ -90,8 +90,8 @@ class ArmCollisionChecker {
   // polygons in order, then the points in order, then (self-collision) the later links.
   std::optional<ArmContact> first_contact(const JointAngles&) const;
 
-  // Lower bounds of each link's distance to what it may collide with (0 when it touches or meets
-  // something), for the configuration q; out[k] for links[k] (resized to the link count): the
+  // Lower bounds of each true link's distance to what it may collide with (0 when it touches or
+  // meets something, or may come within the rounding of it), for the configuration q; out[k] for links[k] (resized to the link count): the
   // minimum over the obstacle polygons, the points and, with self-collision, the links it shares
   // no joint with. +infinity when nothing is within reach. Throws like is_free.
   void clearances(const JointAngles& q, std::vector<double>& out) const;
@@ -100,18 +100,21 @@ class ArmCollisionChecker {
   // not measured (a grid planner needs clearances only up to a step's sweep).
   void clearances(const JointAngles& q, ArmClearances& out, double enough = std::numeric_limits<double>::infinity()) const;
 
-  // Conservative advancement's step (arm_motion.hpp), for the configuration q. When q collides:
-  // step 0 and its first contact. Otherwise a lower bound of how long q stays free, at most
+  // Conservative advancement's step (arm_motion.hpp), for the configuration q, or for every
+  // configuration within spread[j] radians of q in each joint j (spread empty: q alone; a motion's
+  // computed configuration lies that close to the true one). When q collides: step 0 and its
+  // first contact. Otherwise a lower bound h of how long the true arm stays free, at most
   // `horizon`, when every point of links[k] moves at most link_speed[k] per unit of time and,
   // with self-collision, every point of links[m] relative to links[k] (in the frame of links[k])
-  // at most pair_speed[k * n + m] for m ≥ k + 2:
+  // at most pair_speed[k * n + m] for m ≥ k + 2 (speeds: upper bounds):
   //   min(horizon, min_k c_k / link_speed[k], min_{k, m} c_km / pair_speed[k * n + m]),
-  // with c / 0 = +infinity for c > 0 and 0 for c = 0 (a clearance of 0 proves nothing, even for
-  // something that does not move). Only what can lower the minimum is measured: obstacles whose
-  // bounding box is farther away are skipped. Throws std::invalid_argument like is_free, and for
-  // speed lists of the wrong size (pair_speed: n * n entries, or none without self-collision).
+  // each quotient rounded down, with c / 0 = +infinity for c > 0 and 0 for c = 0 (a clearance of
+  // 0 proves nothing, even for something that does not move). Every configuration reached within
+  // a time below h is free. Only what can lower the minimum is measured: obstacles whose bounding
+  // box is farther away are skipped. Throws std::invalid_argument like is_free, and for speed or
+  // spread lists of the wrong size (pair_speed: n * n entries, or none without self-collision).
   ArmSafeStep safe_step(const JointAngles& q, std::span<const double> link_speed, std::span<const double> pair_speed,
-                        double horizon) const;
+                        double horizon, std::span<const double> spread = {}) const;
 
   // Configurations checked so far (is_free, first_contact, clearances and safe_step calls), for the
   // planners' counts.

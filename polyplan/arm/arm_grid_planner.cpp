@@ -163,9 +163,9 @@ struct Planning {
   std::size_t cells_evaluated = 0, expanded = 0, generated = 0, moves_by_clearance = 0;
   double peak_mb = 0;
 
-  // The query stopped at its memory budget after `what`.
-  void stop_at_budget(const std::string& what) {
-    report.fail(PlanStatus::limit, "stopped after " + what + ": the memory budget of one query is " +
+  // The query stopped at its memory budget after `what` (`context`: what came before, if anything).
+  void stop_at_budget(const std::string& what, const std::string& context = "") {
+    report.fail(PlanStatus::limit, context + "stopped after " + what + ": the memory budget of one query is " +
                                        number_text(options.memory_mb) + " MB (option memory_mb: raise it with --memory_mb N)");
     report.facts.set("stopped_by", "memory limit");
   }
@@ -422,6 +422,18 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
     if (proved || result.over_budget || rounds > options.widenings) break;
     radius *= 2;
   }
+  // A corridor that holds no path proves nothing about the grid (the guide may have missed a
+  // passage only the fine grid has): the whole grid is searched then, reusing every cell measured,
+  // and only the memory budget may stop it — with status limit, never a claim that no path exists.
+  const bool corridor_failed = corridor && !result.found && !result.over_budget &&
+                               result.outside_bound_steps != std::numeric_limits<std::int64_t>::max();
+  if (corridor_failed) {
+    search.set_corridor({});
+    result = search.run();
+    ++rounds;
+    p.peak_mb = std::max(p.peak_mb, static_cast<double>(result.peak_bytes) / 1e6);
+    p.report.facts.set("grid.whole_grid", true);
+  }
   count(p, result);
   p.expanded = result.expanded;
   p.generated = result.generated;
@@ -432,14 +444,14 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   for (const auto& c : result.expanded_order) p.report.expanded.push_back(grid.configuration(c));
   p.keep_cells([&](GridCoordinate x, GridCoordinate y) { return search.state(std::array{x, y}); });
   if (result.over_budget) {
-    p.stop_at_budget("evaluating " + std::to_string(result.cells_evaluated) + " cells");
+    p.stop_at_budget("evaluating " + std::to_string(result.cells_evaluated) + " cells",
+                     corridor_failed ? "no path within " + std::to_string(radius) + " coarse cells of the " +
+                                           number_text(options.coarse_degrees) + "-degree path; the whole grid's search "
+                                     : "");
     return;
   }
   if (!result.found) {
-    p.report.fail(PlanStatus::not_found, corridor && result.outside_bound_steps != std::numeric_limits<std::int64_t>::max()
-                           ? p.not_connected() + " within " + std::to_string(radius) + " coarse cells of the " +
-                                 number_text(options.coarse_degrees) + "-degree path (option corridor widens it)"
-                           : p.not_connected());
+    p.report.fail(PlanStatus::not_found, p.not_connected());
     return;
   }
   p.keep_path(query, result.path);

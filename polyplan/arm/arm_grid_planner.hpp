@@ -31,8 +31,9 @@ struct ArmGridOptions {
   // exact_cells cells (predicted: the coarse search's cells times the fine cells per coarse cell),
   // only a corridor of `corridor` coarse cells around the coarse path is searched, doubled up to
   // `widenings` times while it cannot prove its path the grid's shortest. coarse_degrees 0: always
-  // the whole grid. A* and Dijkstra with lazy evaluation only (the other searches always search
-  // the whole grid).
+  // the whole grid. When the corridor holds no path, the whole grid is searched after all (within
+  // memory_mb; at the budget the answer is status limit, never a claim that no path exists). A*
+  // and Dijkstra with lazy evaluation only (the other searches always search the whole grid).
   double coarse_degrees = 5;
   std::size_t exact_cells = 4'000'000;
   int corridor = 2;
@@ -58,7 +59,8 @@ class ArmGridPlanner final : public Planner<PlanarArm> {
   // grid.shortest ("proved": no grid path between the joined cells is shorter; "corridor": the
   // shortest within the corridor, grid.lower_bound then bounds the grid's shortest from below),
   // search.algorithm, search.expanded, search.generated; coarse to fine also grid.coarse_degrees,
-  // grid.corridor (the final half-width in coarse cells), grid.rounds.
+  // grid.corridor (the final half-width in coarse cells), grid.rounds, grid.whole_grid (true when
+  // the corridor held no path and the whole grid was searched).
   // A start or goal in collision is an answer (found = false, why_not names the contact); so is
   // a query of the wrong size. With options.record and two joints, report.cells is the C-space
   // grid (angle k·step is the centre of cell k).

@@ -1,6 +1,7 @@
 #include <polyplan/arm/arm_grid_search.hpp>
 
 #include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/arm/detail/outward_rounding.hpp>
 
 #include <algorithm>
 #include <array>
@@ -20,19 +21,25 @@ constexpr std::size_t max_joints = 12;
 // A cell's flags: its state (ArmCellState) in the low two bits, and whether this run closed it.
 constexpr std::uint8_t state_mask = 3, closed_bit = 4;
 
-// The safe angle of a joint at a cell, in 1/255 of a step, rounded down: 255 means a whole step
-// or more.
-std::uint8_t quantized(double safe, double step) {
-  const double units = std::floor(safe / step * 255);
-  return units >= 255 ? 255 : units <= 0 ? 0 : static_cast<std::uint8_t>(units);
-}
+// The longest turn a move of one step makes, as a real number: cells k and k + 1 sit at the
+// doubles nearest k·step and (k + 1)·step, each within half an ulp of 2π (2^-51) of those, and
+// the move across 0 turns 2π − (n − 1)·step, where n·step lies within 2^-53·2π of two_pi and
+// two_pi within 2^-51 of 2π. So no move turns more than step + 2^-49 (rounded up).
+double longest_move(double step) { return detail::above(step + 0x1p-49); }
 
-// A move between two free cells whose safe angles along its joint are a and b (in 1/255 steps):
-// free when one end alone reaches the other, or the two free stretches overlap (strictly: both are
-// open at their far ends).
-bool stretches_cover(std::uint8_t a, std::uint8_t b) { return a == 255 || b == 255 || int{a} + int{b} > 255; }
+
+// A move between two free cells whose safe angles along its joint are a and b units: free when
+// the two ends' free stretches, [from, from + a) and (to − b, to], cover it — a + b > 255 units,
+// which exceed the longest move. (An end that alone reaches the other, 255, still needs the
+// other's clearance above 0, b ≥ 1: contact at the far end is not free.)
+bool stretches_cover(std::uint8_t a, std::uint8_t b) { return int{a} + int{b} > 255; }
 
 }  // namespace
+
+std::uint8_t safe_angle_units(double safe, double unit) {
+  const double units = std::floor(detail::below(safe / unit));  // safe / unit rounded down, then its whole part
+  return units >= 255 ? 255 : units <= 0 ? 0 : static_cast<std::uint8_t>(units);
+}
 
 struct ArmGridSearch::Impl {
   using Coordinates = std::array<std::int32_t, max_joints>;
@@ -52,6 +59,8 @@ struct ArmGridSearch::Impl {
   std::size_t joints;
   std::int64_t n;
   double step;
+  double move;  // longest_move(step): what a safe angle must reach to cover a move alone
+  double unit;  // of the stored safe angles: move / 255, rounded up
   int side_bits;
   std::int64_t blocks_per_axis;
   std::size_t cells_per_block;
@@ -85,6 +94,8 @@ struct ArmGridSearch::Impl {
         if (x < 0 || x >= n) throw std::invalid_argument("ArmGridSearch: coordinate " + std::to_string(x) + " outside [0, n)");
     }
     step = two_pi / static_cast<double>(n);
+    move = longest_move(step);
+    unit = detail::above(move / 255);
     side_bits = std::max(1, 12 / static_cast<int>(joints));
     while (side_bits > 1 && (std::int64_t{1} << (side_bits - 1)) >= n) --side_bits;  // no block much wider than the grid
     blocks_per_axis = (n + (std::int64_t{1} << side_bits) - 1) >> side_bits;
@@ -148,11 +159,11 @@ struct ArmGridSearch::Impl {
   void evaluate(Block& b, std::size_t offset, const Coordinates& x) {
     configuration(x, configuration_a);
     ++result.cells_evaluated;
-    const bool free = safe_angles.measure(configuration_a, step, safe_scratch);
+    const bool free = safe_angles.measure(configuration_a, move, safe_scratch);
     b.flags[offset] = static_cast<std::uint8_t>((b.flags[offset] & ~state_mask) |
                                                 static_cast<std::uint8_t>(free ? ArmCellState::free : ArmCellState::blocked));
     if (free)
-      for (std::size_t j = 0; j < joints; ++j) b.safe[offset * joints + j] = quantized(safe_scratch[j], step);
+      for (std::size_t j = 0; j < joints; ++j) b.safe[offset * joints + j] = safe_angle_units(safe_scratch[j], unit);
   }
 
   std::int64_t heuristic(const Coordinates& x) const {

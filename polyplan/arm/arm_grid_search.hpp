@@ -10,7 +10,8 @@
 // a bucket queue of cell numbers (costs and the heuristic are whole steps), and a move costs
 // nothing to store:
 //  - each cell is measured once (JointSafeAngles): free or not, exactly, and how far each joint
-//    may turn from it with every configuration on the way free (a lower bound, in 1/255 steps);
+//    may turn from it with every configuration on the way free (a lower bound, in 1/255 of the
+//    longest move, rounded down: safe_angle_units);
 //  - a move a → b along joint j is free when the two ends' free stretches overlap (see
 //    JointSafeAngles); only when they do not is the motion certified (certify_motion), near
 //    contact. Either way every intermediate configuration is proved free.
@@ -57,6 +58,12 @@ struct ArmGridSearchResult {
   std::size_t peak_bytes = 0;          // the tables' memory at its largest
   std::vector<std::vector<std::int32_t>> expanded_order;  // with record_expanded
 };
+
+// How the search stores a joint's safe angle at a cell (JointSafeAngles::measure): in units of
+// `unit` — the longest move of one step over 255, rounded up — rounded down, at most 255. The
+// units stored never exceed the angle measured (units · unit ≤ safe as real numbers), which the
+// moves proved by their two ends' safe angles rely on: a + b > 255 units cover any move.
+std::uint8_t safe_angle_units(double safe, double unit);
 
 // A cell's state as the search left it, for pictures of a 2-joint C-space.
 enum class ArmCellState : std::uint8_t { unknown, free, blocked };

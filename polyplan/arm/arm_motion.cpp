@@ -1,5 +1,7 @@
 #include <polyplan/arm/arm_motion.hpp>
 
+#include <polyplan/arm/detail/outward_rounding.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -10,10 +12,17 @@ namespace polyplan {
 
 namespace {
 
-// The speeds of arm_motion.hpp's motion bound for the joint rotations `turn` (Δ): link_speed[k]
-// bounds how fast any point of links[k] moves, pair_speed[k * n + m] (k + 2 ≤ m, self-collision
-// only) how fast any point of links[m] moves relative to links[k].
+using detail::above;
+using detail::below;
+using detail::Interval;
+using detail::RoundingUpward;
+
+// The speeds of arm_motion.hpp's motion bound for joint rotations of at most |turn[j]| (upper
+// bounds of the real turns): link_speed[k] bounds how fast any point of links[k] moves,
+// pair_speed[k * n + m] (k + 2 ≤ m, self-collision only) how fast any point of links[m] moves
+// relative to links[k]. Sums and products of non-negative numbers rounded up: upper bounds.
 void motion_speeds(const Arm& arm, const JointAngles& turn, std::vector<double>& link_speed, std::vector<double>& pair_speed) {
+  const RoundingUpward upward;
   const std::size_t n = arm.joints();
   // R_{j,k} = links[j] + … + links[k] + w/2: no point of links[k] is farther from joint j.
   const auto radius = [&](std::size_t j, std::size_t k) {
@@ -37,14 +46,39 @@ void require_arm_size(const ArmCollisionChecker& checker, const JointAngles& q, 
                                 " angles for an arm of " + std::to_string(checker.arm().joints()) + " links");
 }
 
+// The motion's turns as reals: joint j turns D_j = to_j − from_j + k_j·2π between the normalised
+// ends, k_j ∈ {−1, 0, 1} as signed_angle_difference chose it (the double `turn[j]`, which differs
+// from to_j − from_j in doubles exactly when it shifted that by two_pi). Enclosed with 2π between
+// the doubles around it.
+std::vector<Interval> real_turns(const JointAngles& from, const JointAngles& to, const JointAngles& turn) {
+  const std::size_t n = from.size();
+  std::vector<int> shift(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    const double between = to[j] - from[j];  // rounded to nearest, as signed_angle_difference computed it
+    shift[j] = turn[j] < between ? -1 : turn[j] > between ? 1 : 0;
+  }
+  std::vector<Interval> turns(n);
+  const RoundingUpward upward;
+  const Interval full_turn(below(two_pi), above(two_pi));
+  for (std::size_t j = 0; j < n; ++j) {
+    const Interval d = Interval(to[j]) - Interval(from[j]);
+    turns[j] = shift[j] < 0 ? d - full_turn : shift[j] > 0 ? d + full_turn : d;
+  }
+  return turns;
+}
+
 }  // namespace
 
-MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to) {
-  require_arm_size(checker, from, "from");
-  require_arm_size(checker, to, "to");
-  const std::size_t n = from.size();
-  JointAngles turn(n);
-  for (std::size_t j = 0; j < n; ++j) turn[j] = signed_angle_difference(from[j], to[j]);  // throws for non-finite angles
+MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from_given, const JointAngles& to_given) {
+  require_arm_size(checker, from_given, "from");
+  require_arm_size(checker, to_given, "to");
+  const std::size_t n = from_given.size();
+  JointAngles from(n), to(n), turn(n);
+  for (std::size_t j = 0; j < n; ++j) {
+    from[j] = normalize_angle(from_given[j]);  // throws for non-finite angles
+    to[j] = normalize_angle(to_given[j]);
+    turn[j] = signed_angle_difference(from[j], to[j]);
+  }
 
   MotionCertificate certificate;
   const auto collides = [&](double at, const ArmContact& contact) {
@@ -55,35 +89,54 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
   };
   // The goal first, bit for bit: the path a planner returns ends at exactly this value, and a
   // motion into a collision needs no clearance measured.
-  if (const auto contact = checker.first_contact(to)) return collides(1, *contact);
+  if (const auto contact = checker.first_contact(to_given)) return collides(1, *contact);
 
   if (std::all_of(turn.begin(), turn.end(), [](double d) { return d == 0; })) {
-    // Nothing turns: every interpolated configuration is the normalised `from`, bit for bit.
-    if (const auto contact = checker.first_contact(from)) return collides(0, *contact);
-    const JointAngles still = interpolate_angles(from, to, 0.5);
-    if (still != from && still != to)
-      if (const auto contact = checker.first_contact(still)) return collides(0.5, *contact);
+    // Nothing turns: every configuration of the motion is the normalised `from` (= `to`).
+    if (const auto contact = checker.first_contact(from_given)) return collides(0, *contact);
+    if (from != from_given && from != to_given)
+      if (const auto contact = checker.first_contact(from)) return collides(0.5, *contact);
     certificate.verdict = MotionCertificate::Verdict::free;
     return certificate;
   }
 
+  const std::vector<Interval> real = real_turns(from, to, turn);
+  JointAngles largest_turn(n);
+  {
+    const RoundingUpward upward;
+    for (std::size_t j = 0; j < n; ++j) largest_turn[j] = std::max(-real[j].inf(), real[j].sup());
+  }
   std::vector<double> link_speed, pair_speed;
-  motion_speeds(checker.arm(), turn, link_speed, pair_speed);
-  JointAngles q = from;  // t = 0 is `from` itself, bit for bit
+  motion_speeds(checker.arm(), largest_turn, link_speed, pair_speed);
+  // The configuration measured at t: from + t·turn in doubles (not normalised: cos and sin do not
+  // mind), within spread[j] of the true motion's from_j + t·D_j in each joint.
+  JointAngles q = from;
+  std::vector<double> spread(n, 0.0);  // t = 0 is `from` itself
   double t = 0;
   while (certificate.steps < motion_max_steps) {
-    const double remaining = 1 - t;
-    const ArmSafeStep step = checker.safe_step(q, link_speed, pair_speed, remaining);
+    // A step of at least `horizon` (above 1 − t) reaches past the end of the motion.
+    const double horizon = above(1 - t);
+    const ArmSafeStep step = checker.safe_step(q, link_speed, pair_speed, horizon, spread);
     ++certificate.steps;
     if (step.contact) return collides(t, *step.contact);
-    // [t, t + step.step) is free; the goal was tested exactly above.
-    if (step.step >= remaining) {
+    if (step.step >= horizon) {
       certificate.verdict = MotionCertificate::Verdict::free;
       return certificate;
     }
     if (step.step < motion_min_step) break;  // near contact: the steps would not end
-    t += step.step;
-    interpolate_angles_into(from, to, t, q);
+    // Every configuration before t + step is free; the next one measured is at or before it.
+    const double next = below(t + step.step);
+    if (next >= 1) {  // then t + step > 1: the whole motion is covered
+      certificate.verdict = MotionCertificate::Verdict::free;
+      return certificate;
+    }
+    t = next;
+    for (std::size_t j = 0; j < n; ++j) q[j] = from[j] + t * turn[j];
+    const RoundingUpward upward;
+    for (std::size_t j = 0; j < n; ++j) {
+      const Interval truth = Interval(from[j]) + Interval(t) * real[j];
+      spread[j] = detail::farthest_from(q[j], truth.inf(), truth.sup());
+    }
   }
   // Advancement approaches a first contact from below and never lands on it: every step ends where
   // the bound allows the arm to touch, and the true motion is slower than the bound. So at a stall,
@@ -119,15 +172,16 @@ JointSafeAngles::JointSafeAngles(const ArmCollisionChecker& checker) : checker_(
 
 bool JointSafeAngles::measure(const JointAngles& q, double enough, std::span<double> out) const {
   const std::size_t n = q.size();
-  checker_->clearances(q, clearances_, enough * fastest_);
+  checker_->clearances(q, clearances_, detail::covered_above(fastest_, enough));
   if (clearances_.contact) return false;
-  // As safe_step: a clearance c lasts c / v, forever when nothing moves, and not at all when c = 0.
-  const auto lasts = [](double c, double v) { return c == 0 ? 0.0 : v > 0 ? c / v : std::numeric_limits<double>::infinity(); };
+  // As safe_step: a clearance c lasts c / v rounded down, forever when nothing moves, and not at
+  // all when c = 0.
   const std::size_t pairs = clearances_.pairs.size();
   for (std::size_t j = 0; j < n; ++j) {
     double step = enough;
-    for (std::size_t k = 0; k < n; ++k) step = std::min(step, lasts(clearances_.links[k], link_speed_[j * n + k]));
-    for (std::size_t p = 0; p < pairs; ++p) step = std::min(step, lasts(clearances_.pairs[p], pair_speed_[j * pairs + p]));
+    for (std::size_t k = 0; k < n; ++k) step = std::min(step, detail::lasts_below(clearances_.links[k], link_speed_[j * n + k]));
+    for (std::size_t p = 0; p < pairs; ++p)
+      step = std::min(step, detail::lasts_below(clearances_.pairs[p], pair_speed_[j * pairs + p]));
     out[j] = step;
   }
   return true;

@@ -6,20 +6,25 @@
 // different half circles.
 //
 // certify_motion proves a motion free for every t, not only at samples (DESIGN.md: motions are
-// certified, never sampled), by conservative advancement:
+// certified, never sampled), by conservative advancement. The motion proved is the true one: the
+// true arm (arm_collision.hpp) along θ_j(t) = from_j + t·D_j between the normalised ends, D_j the
+// real turn (to_j − from_j, shifted by 2π where signed_angle_difference shifts it):
 //  - Motion bound. Over [t, t + h] every point of links[k] moves at most h · speed_k,
-//    speed_k = Σ_{j ≤ k} R_{j,k} |Δ_j|, where R_{j,k} = (links[j] + … + links[k]) + w/2 bounds the
+//    speed_k = Σ_{j ≤ k} R_{j,k} |D_j|, where R_{j,k} = (links[j] + … + links[k]) + w/2 bounds the
 //    distance from joint j to any point of links[k] in every configuration (a point's velocity is
 //    Σ_j θ_j' · (p − J_j) turned by 90°). For self-collision, links[m] moves relative to links[k]
 //    (k < m) only through joints k+1 … m (joints 0 … k turn both rigidly, which keeps their
-//    distance), so at most h · Σ_{k < j ≤ m} R_{j,m} |Δ_j|.
-//  - Clearance. ArmCollisionChecker::safe_step measures lower bounds c of the distances at q(t)
-//    (exact contact test first; distances minus a safety margin, see arm_collision.hpp) and returns
-//    h = the smallest c / speed: every configuration in [t, t + h) is free.
+//    distance), so at most h · Σ_{k < j ≤ m} R_{j,m} |D_j|. Sums and products rounded up, |D_j|
+//    from an interval enclosing it.
+//  - Clearance. ArmCollisionChecker::safe_step measures lower bounds c of the true arm's distances
+//    at every configuration within `spread` of the computed q(t) = from + t·Δ (doubles, Δ the
+//    double turn), the spread enclosing the true θ(t) in interval arithmetic, and returns
+//    h = the smallest c / speed rounded down: every configuration in [t, t + h) is free.
 //  - Advancement. The goal `to` itself (bit for bit) is tested exactly first. Then from t = 0
-//    (`from` itself, bit for bit) the motion advances t += h; it is free once t + h ≥ 1 and
-//    collides when q(t) collides (exactly). Near contact the steps become tiny: when h falls below
-//    motion_min_step or after motion_max_steps clearance computations, advancement stops.
+//    (the normalised `from`) the motion advances to t ← t + h rounded down; it is free once h
+//    exceeds 1 − t, and collides when q(t) collides (exactly). Near contact the steps become tiny:
+//    when h falls below motion_min_step or after motion_max_steps clearance computations,
+//    advancement stops.
 //  - Probing. Advancement approaches a first contact from below and never lands on it, so after a
 //    stop the configurations at t + 2·motion_min_step, t + 4·motion_min_step, … (doubling, up to
 //    the end) are tested exactly: one that collides proves the motion collides. Otherwise the
@@ -27,9 +32,10 @@
 //    crossing into it (a zero-width link sweeping over a point crosses it in a single instant), or
 //    slides along something at a small clearance for long, cannot be decided this way.
 //
-// Angles are normalised before interpolating (geometry/angles.hpp), so a motion runs between the
-// normalised angles; for |angle| far beyond 10^3 radians normalisation itself moves the arm by
-// more than the safety margin, and `from`/`to` should be given normalised.
+// Angles are normalised before interpolating (geometry/angles.hpp), with the double two_pi: an
+// angle a far from [0, 2π) and normalize_angle(a) are different real angles (by a multiple of
+// 2π − two_pi ≈ 2.4e-16), and the certificate is about the normalised ones. Planners return
+// normalised configurations.
 //
 // motion_samples gives `from`, k−1 interpolated configurations and `to` itself, with
 // k = max(1, ceil(max_i angular_distance(from_i, to_i) / resolution)), so consecutive samples differ
@@ -73,15 +79,16 @@ bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from,
 
 // How far each joint alone may turn from a configuration q, either way, with every configuration
 // on the way free: the same motion bound and clearances as certify_motion's first step, for the
-// motion that turns joint j only (links before j stand still). A grid planner measures this once
-// per cell: a move of one step δ along joint j between cells a and b is then free when
-// safe(a)[j] + safe(b)[j] > δ (the two ends' free stretches overlap), or when either end alone
-// reaches the other (safe ≥ δ, the other end being free), with no motion certified.
+// motion that turns joint j only (links before j stand still); a turn below safe[j] keeps the
+// true arm free. A grid planner measures this once per cell: a move of δ (a real turn) along
+// joint j between cells a and b is then free when safe(a)[j] + safe(b)[j] > δ (the two ends'
+// free stretches cover it), with no motion certified.
 class JointSafeAngles {
  public:
   explicit JointSafeAngles(const ArmCollisionChecker& checker);
-  // out[j] (out.size() == joints): a lower bound, in radians, of how far joint j may turn; a
-  // value of at least `enough` may be reported as `enough`. False (and out untouched) when q collides.
+  // out[j] (out.size() == joints): a lower bound, in radians, of how far joint j may turn (every
+  // turn below it free); a value of at least `enough` may be reported as `enough`. False (and out
+  // untouched) when q collides.
   bool measure(const JointAngles& q, double enough, std::span<double> out) const;
 
  private:

@@ -218,8 +218,8 @@ TEST(Clearance, ZeroWhenTouchingAndTheExactTestDecidesContact) {
   EXPECT_EQ(split.links[0], 0.0);
   ASSERT_TRUE(split.contact);
   EXPECT_EQ(split.contact->describe(), "link 1 meets obstacles[0]");
-  // One ulp above the side: free, and its clearance still 0 (closer than the safety margin proves
-  // nothing). A zero clearance is a lower bound, not a contact.
+  // One ulp above the side: free, and its clearance still 0 (closer than the true arm's radius
+  // around the computed one proves nothing). A zero clearance is a lower bound, not a contact.
   const double y = up(0.25);
   const ArmCollisionChecker above(arm, {{ring({{0.5, y}, {1, y}, {1, 0.75}, {0.5, 0.75}}), {}}}, {});
   above.clearances({0}, split);

@@ -4,6 +4,7 @@
 #include <polyplan/arm/arm_grid_planner.hpp>
 
 #include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_grid_search.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/io/arm_reader.hpp>
 
@@ -11,6 +12,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <random>
 #include <stdexcept>
 #include <string>
 
@@ -322,6 +325,68 @@ TEST(ArmGridPlanner, CollidingStartIsAnAnswerAndBadOptionsAreRefused) {
   bad.resolution_degrees = 5;
   bad.lazy = false;  // 72^4 = 2.7e7 cells eagerly
   EXPECT_THROW(ArmGridPlanner(p, bad), std::invalid_argument);
+}
+
+// A stored safe angle never exceeds the angle measured: units · unit ≤ safe as real numbers
+// (fma's one rounding keeps the sign of units · unit − safe). Rounding safe / unit to nearest
+// first, then down to a whole unit, would break that where the quotient rounds up onto a whole
+// number: such cases are found here, and must lose their unit.
+TEST(ArmGridSearch, SafeAnglesAreStoredRoundedDown) {
+  std::mt19937_64 random(255);
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  int quotient_rounded_up = 0;
+  for (int i = 0; i < 200000; ++i) {
+    const double step = two_pi / std::ldexp(1.0 + uniform(random), 6 + static_cast<int>(uniform(random) * 6));
+    const double unit = std::nextafter(step / 255, 1.0);
+    // Angles at and near whole numbers of units, where rounding decides.
+    const double whole = std::floor(uniform(random) * 300);
+    const double safe = i % 2 ? whole * unit : uniform(random) * 300 * unit;
+    const std::uint8_t units = safe_angle_units(safe, unit);
+    ASSERT_LE(std::fma(static_cast<double>(units), unit, -safe), 0.0) << safe << " / " << unit << " stored as " << int(units);
+    const double naive = std::floor(safe / unit);
+    if (naive < 255 && std::fma(naive, unit, -safe) > 0) {
+      ++quotient_rounded_up;
+      EXPECT_EQ(units, naive - 1);
+    }
+    if (safe >= 255 * unit) {
+      EXPECT_GE(units, 254) << "at most one unit is lost";
+    }
+  }
+  EXPECT_GT(quotient_rounded_up, 100) << "the test must meet the case it guards against";
+  EXPECT_EQ(safe_angle_units(0, 1e-3), 0);
+  EXPECT_EQ(safe_angle_units(std::numeric_limits<double>::infinity(), 1e-3), 255);
+}
+
+// Coarse to fine must not turn a miss into a claim. Among these points the 5-degree guide finds a
+// path, but the 1-degree cells within its corridor (0 coarse cells wide, and a corridor asked for
+// on any grid: exact_cells 1) hold none: the earlier release answered "not connected". The whole
+// grid has a path, found after the corridor's; at a memory budget too small for the whole grid
+// the answer is status limit, never no_path or not_found.
+TEST(ArmGridPlanner, ACorridorWithoutAPathGivesWayToTheWholeGrid) {
+  const ArmProblem p = parse_arm_problem(R"({"links": [1, 1], "link_width": 0.05,
+    "points": [[-1.65, 0.983], [-1.894, -0.139], [0.238, 0.498], [0.251, -0.637], [0.366, 0.164],
+               [0.415, -0.974], [0.378, 0.556], [-0.511, -1.742], [-0.939, 0.133]],
+    "start": [4.599, 5.839], "goal": [3.843, 2.965]})",
+                                         "corridor_miss");
+  ArmGridOptions options;
+  options.resolution_degrees = 1;
+  options.exact_cells = 1;
+  options.corridor = 0;
+  const auto whole = plan_once(p, p.queries[0], options);
+  expect_valid(p, p.queries[0], whole, true);
+  EXPECT_TRUE(whole.facts.flag("grid.whole_grid"));
+  EXPECT_EQ(whole.facts.count("grid.rounds"), 2);
+  EXPECT_EQ(whole.facts.text("grid.shortest"), "proved");
+  options.coarse_degrees = 0;  // the whole grid from the start: the same shortest length
+  EXPECT_NEAR(plan_once(p, p.queries[0], options).length, whole.length, 1e-12);
+
+  options.coarse_degrees = 5;
+  options.memory_mb = 0.08;  // the corridor's search fits, the whole grid's does not
+  const auto stopped = plan_once(p, p.queries[0], options);
+  EXPECT_FALSE(stopped.found);
+  EXPECT_EQ(stopped.status, PlanStatus::limit);
+  EXPECT_NE(stopped.why_not.find("no path within 0 coarse cells of the 5-degree path"), std::string::npos) << stopped.why_not;
+  EXPECT_EQ(stopped.facts.text("stopped_by"), "memory limit");
 }
 
 }  // namespace

@@ -230,7 +230,8 @@ TEST(CertifiedMotion, SlidingAtATinyClearanceIsRefusedAtTheStepCap) {
   EXPECT_GT(slide.at, 0.0);
   EXPECT_LT(slide.at, 0.01);
   EXPECT_FALSE(motion_is_free(behind, {-1.0}, {1.0}));
-  // 1e-13 behind the base is closer than the safety margin: the clearance is 0 and proves nothing.
+  // 1e-13 behind the base: the clearance, about 1e-13 less the true arm's radius of a few 1e-16,
+  // proves steps of 5e-14 only, below motion_min_step: refused at once.
   const ArmCollisionChecker touching(arm_of({1}), {}, {Eigen::Vector2d(-1e-13, 0)});
   ASSERT_TRUE(touching.is_free({-1.0}));
   const MotionCertificate stuck = certify_motion(touching, {-1.0}, {1.0});
@@ -462,7 +463,7 @@ TEST(ArmData, ForestsAreSeed001sArmsAndTheirStartAndGoalAreFree) {
 // One unit segment link at angle 0 and a point at distance 0.5 in direction 0.3 rad: the link
 // first touches it after turning 0.3 rad counter-clockwise. The safe angle is the clearance
 // (0.5·sin 0.3, the point's distance to the link) over the tip's speed (1 per radian): a lower
-// bound of 0.3, and exactly that value up to the safety margin.
+// bound of 0.3, and that value up to the enclosure of the true arm (a few ulps).
 TEST(JointSafeAngles, OneLinkAndAPoint) {
   ArmProblem p;
   p.arm.links = {1};
