@@ -42,16 +42,22 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
     return true;
   }
 
-  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+  Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
+                bool record) override {
     auto& space = this->space();
-    const std::size_t start = add_milestone(space.start(query)), goal = add_milestone(space.goal(query));
+    const std::size_t start = add_milestone(space.start(query));
+    std::vector<std::size_t> goal_milestones;
+    for (const Configuration& goal : goals) goal_milestones.push_back(add_milestone(goal));
     std::vector<double> at(space.dimension());
 
     std::size_t searches = 0, removed = 0;
     std::vector<std::size_t> path;
     while (path.empty() && !budget.spent()) {
-      ++searches;
-      const auto result = roadmap_.search(start, goal, SearchOptions{Search::astar});
+      searches += goal_milestones.size();
+      // The cheapest path to any goal over the edges there are: certified, it is the answer.
+      const auto result = roadmap_.cheapest(start, goal_milestones, [&](std::size_t from, std::size_t to) {
+        return roadmap_.search(from, to, SearchOptions{Search::astar});
+      });
       if (result.found) {
         if (certify(result.path, removed)) path = result.path;
         continue;

@@ -1,7 +1,8 @@
 #pragma once
 // Lazy PRM (Bohlin & Kavraki 2000) over any sampling space: milestones are free samples joined to
 // their k nearest without checking the motions; a query searches the roadmap for the shortest
-// path and certifies only that path's unchecked edges, from the start on. An edge that is not
+// path (to each of its goals, when it has several, keeping the cheapest) and certifies only that
+// path's unchecked edges, from the start on. An edge that is not
 // free is removed and the search runs again; when no path is left, the roadmap grows by half its
 // size (at least 50 samples). Certified edges are remembered from query to query. Registered as
 // `lazyprm` for polygon worlds and arms.

@@ -38,11 +38,22 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     });
   }
 
-  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+  // The milestones of `goals` in the component of `start`.
+  std::vector<std::size_t> joined_to(std::size_t start, const std::vector<std::size_t>& goals) {
+    std::vector<std::size_t> joined;
+    for (std::size_t goal : goals)
+      if (component(goal) == component(start)) joined.push_back(goal);
+    return joined;
+  }
+
+  Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
+                bool record) override {
     auto& space = this->space();
-    const std::size_t start = add_milestone(space.start(query)), goal = add_milestone(space.goal(query));
+    const std::size_t start = add_milestone(space.start(query));
+    std::vector<std::size_t> goal_milestones;
+    for (const Configuration& goal : goals) goal_milestones.push_back(add_milestone(goal));
     std::vector<double> at(space.dimension());
-    while (component(start) != component(goal) && budget.next()) {
+    while (joined_to(start, goal_milestones).empty() && budget.next()) {
       const Configuration sample = this->draw(at);
       if (this->state_free(sample)) add_milestone(sample, at);
     }
@@ -54,11 +65,14 @@ class PrmPlanner final : public SamplingPlanner<Space> {
       if (record) attempt.graph = roadmap_.picture();
       return std::move(attempt);
     };
-    if (component(start) != component(goal)) {
+    const std::vector<std::size_t> joined = joined_to(start, goal_milestones);
+    if (joined.empty()) {
       attempt.why_not = "start and goal were not joined in the roadmap within " + budget.limit_reached();
       return finish();
     }
-    const auto result = options_.bidirectional ? roadmap_.search_both_ways(start, goal) : roadmap_.search(start, goal, options_.search);
+    const auto result = roadmap_.cheapest(start, joined, [&](std::size_t from, std::size_t to) {
+      return options_.bidirectional ? roadmap_.search_both_ways(from, to) : roadmap_.search(from, to, options_.search);
+    });
     facts.set("search.algorithm", options_.bidirectional ? std::string("bidirectional dijkstra") : std::string(to_string(options_.search.algorithm)));
     facts.set("search.expanded", result.expanded);
     for (std::size_t v : result.path) attempt.path.push_back(roadmap_.nodes()[v]);

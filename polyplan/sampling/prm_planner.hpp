@@ -3,8 +3,9 @@
 // to its k nearest milestones by certified motions; the roadmap is kept from query to query (a
 // multiple-query planner). A query joins its start and goal the same way and samples until they
 // are in one component (union-find), then searches the roadmap (A* by default, or bidirectional
-// Dijkstra, the course's extra). k is fixed (the
-// course's K values; 10 is OMPL's) or, with k = 0, PRM*'s k = ⌈e·(1 + 1/d)·log n⌉. Registered as
+// Dijkstra, the course's extra). With several goals it joins each, samples until one shares the
+// start's component, and keeps the cheapest path to those that do. k is fixed (the course's K
+// values; 10 is OMPL's) or, with k = 0, PRM*'s k = ⌈e·(1 + 1/d)·log n⌉. Registered as
 // `prm` for polygon worlds and arms.
 #include <polyplan/sampling/sampling_planner.hpp>
 #include <polyplan/search/search_result.hpp>
@@ -18,7 +19,8 @@ struct PrmOptions : SamplingLimits {
 };
 
 // The registry's `prm` for a space: options k, search, weight, bidirectional and the sampling limits
-// (iterations: samples per query). Facts: roadmap.vertices, roadmap.edges, search.algorithm, search.expanded.
+// (iterations: samples per query). Facts: roadmap.vertices, roadmap.edges, search.algorithm,
+// search.expanded (with several goals, every goal's search together).
 template <class Space>
 PlannerEntry<Space> prm_planner_entry(SamplingSpaceFactory<Space> make_space);
 

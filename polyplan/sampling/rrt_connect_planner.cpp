@@ -35,16 +35,19 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
     return step.reaches_target ? Grown::reached : Grown::advanced;
   }
 
-  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+  Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
+                bool record) override {
     auto& space = this->space();
     const std::size_t d = space.dimension();
-    SamplingTree<Space> from_start(space, space.start(query)), from_goal(space, space.goal(query), Toward::placed);
+    // The goal tree is a forest rooted at every goal (root i at goals[i]): whichever it meets the
+    // start tree from is the goal reached.
+    SamplingTree<Space> from_start(space, space.start(query)), from_goal(space, goals, Toward::placed);
     SamplingTree<Space>*grow = &from_start, *other = &from_goal;
     std::vector<double> sample_at(d), new_at(d), step_at(d);
 
     Attempt attempt;
     std::optional<std::pair<std::size_t, std::size_t>> meeting;  // (start tree node, goal tree node)
-    if (space.start(query) == space.goal(query)) meeting.emplace(SamplingTree<Space>::root, SamplingTree<Space>::root);
+    if (const auto start_goal = this->goal_index(goals, space.start(query))) meeting.emplace(SamplingTree<Space>::root, *start_goal);
     while (!meeting && budget.next()) {
       const Configuration sample = this->draw(sample_at);
       std::size_t added = 0;
@@ -68,7 +71,7 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
       return attempt;
     }
     // The start tree's path to the meeting node, then the goal tree's from there (the same
-    // configuration, taken once) back to its root, the goal.
+    // configuration, taken once) back to the root of its tree, a goal.
     attempt.path = from_start.path_from_root(meeting->first);
     std::vector<Configuration> rest = from_goal.path_from_root(meeting->second);
     attempt.path.insert(attempt.path.end(), rest.rbegin() + 1, rest.rend());

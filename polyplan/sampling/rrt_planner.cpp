@@ -26,23 +26,23 @@ class RrtPlanner final : public SamplingPlanner<Space> {
       : Base("rrt", std::move(space), options), options_(options), step_(extension_step(options, this->space().extent())) {}
 
  private:
-  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+  Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
+                bool record) override {
     auto& space = this->space();
-    const Configuration& goal = space.goal(query);
     const std::size_t d = space.dimension();
-    std::vector<double> goal_at(d), sample_at(d), new_at(d);
-    space.coordinates(goal, goal_at);
+    const auto goals_at = this->coordinates_of(goals);
+    std::vector<double> sample_at(d), new_at(d);
     SamplingTree<Space> tree(space, space.start(query));
 
     Attempt attempt;
     std::size_t reached = SamplingTree<Space>::root;
-    bool found = space.start(query) == goal;
+    bool found = this->goal_index(goals, space.start(query)).has_value();
     while (!found && budget.next()) {
-      const auto sample = this->goal_biased(goal, goal_at, options_.goal_bias, sample_at);
+      const auto sample = this->goal_biased(goals, goals_at, options_.goal_bias, sample_at);
       auto step = this->step_toward(tree, sample.configuration, sample.at, step_, new_at);
       if (step.stays || !this->motion_free(tree.nodes()[step.from], step.to)) continue;
       reached = tree.add(std::move(step.to), new_at, step.from);
-      found = sample.is_goal && step.reaches_target;
+      found = sample.goal && step.reaches_target;  // at that goal exactly: step_toward gave the target itself
     }
     facts.set("tree_size", tree.size());
     if (record) attempt.graph = SamplingTree<Space>::picture({&tree});

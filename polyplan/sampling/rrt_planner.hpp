@@ -2,7 +2,8 @@
 // RRT (LaValle 1998) over any sampling space: a tree from the start; each iteration draws a
 // sample (the goal itself with probability goal_bias), finds the nearest node and extends toward
 // the sample — E1: to the sample itself, E2: a step of at most `step` — when that motion is
-// certified free. The query is answered when an extension reaches the goal exactly. Registered
+// certified free. The query is answered when an extension reaches the goal exactly (with several
+// goals, the bias draws one of them uniformly, and reaching any one answers). Registered
 // as `rrt` for polygon worlds and arms.
 #include <polyplan/sampling/sampling_planner.hpp>
 

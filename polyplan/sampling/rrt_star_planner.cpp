@@ -68,39 +68,50 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     }
   }
 
-  Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) override {
+  // The goal node the tree reaches most cheaply (the first of equals), if any goal is in the tree.
+  static std::optional<std::size_t> cheapest_goal_node(const std::vector<std::optional<std::size_t>>& goal_nodes,
+                                                       const std::vector<Node>& nodes) {
+    std::optional<std::size_t> cheapest;
+    for (const auto& node : goal_nodes)
+      if (node && (!cheapest || nodes[*node].cost < nodes[*cheapest].cost)) cheapest = node;
+    return cheapest;
+  }
+
+  Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
+                bool record) override {
     auto& space = this->space();
-    const Configuration& goal = space.goal(query);
     const std::size_t d = space.dimension();
-    std::vector<double> goal_at(d), sample_at(d), new_at(d);
-    space.coordinates(goal, goal_at);
+    const auto goals_at = this->coordinates_of(goals);
+    std::vector<double> sample_at(d), new_at(d);
     SamplingTree<Space> tree(space, space.start(query));
     std::vector<Node> nodes(1);
-    std::optional<std::size_t> goal_node;
-    if (space.start(query) == goal) goal_node = SamplingTree<Space>::root;
-    double best = goal_node ? 0 : std::numeric_limits<double>::infinity();
+    std::vector<std::optional<std::size_t>> goal_nodes(goals.size());  // goal i's node, once the tree reaches it
+    if (const auto start_goal = this->goal_index(goals, space.start(query))) goal_nodes[*start_goal] = SamplingTree<Space>::root;
+    double best = cheapest_goal_node(goal_nodes, nodes) ? 0 : std::numeric_limits<double>::infinity();
     std::size_t solutions = 0, rewired = 0;
     std::vector<std::size_t> near;
     std::vector<std::pair<double, std::size_t>> by_cost;  // (cost through the neighbour, neighbour)
 
-    while (!(goal_node && best == 0) && budget.next()) {
-      const auto sample = this->goal_biased(goal, goal_at, options_.goal_bias, sample_at);
+    while (best != 0 && budget.next()) {
+      const auto sample = this->goal_biased(goals, goals_at, options_.goal_bias, sample_at);
       auto step = this->step_toward(tree, sample.configuration, sample.at, step_, new_at);
       if (step.stays) continue;
-      const bool is_goal = sample.is_goal && step.reaches_target;
+      const bool is_goal = sample.goal && step.reaches_target;
       const std::size_t nearest = step.from;
       Configuration& next = step.to;
-      if (is_goal && goal_node) {
+      if (is_goal && goal_nodes[*sample.goal]) {
         // The goal is in the tree already: a cheaper parent for it, if a neighbour offers one.
+        const std::size_t goal_node = *goal_nodes[*sample.goal];
+        const auto goal_at = std::span<const double>(goals_at[*sample.goal]);
         neighbours_of(tree, goal_at, near);
         by_cost.clear();
         for (std::size_t n : near)
-          if (n != *goal_node) by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), goal_at), n);
+          if (n != goal_node) by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), goal_at), n);
         std::sort(by_cost.begin(), by_cost.end());
         for (const auto& [cost, n] : by_cost) {
-          if (cost >= nodes[*goal_node].cost) break;
-          if (this->motion_free(tree.nodes()[n], goal)) {
-            reparent(tree, nodes, *goal_node, n, cost);
+          if (cost >= nodes[goal_node].cost) break;
+          if (this->motion_free(tree.nodes()[n], goals[*sample.goal])) {
+            reparent(tree, nodes, goal_node, n, cost);
             ++rewired;
             break;
           }
@@ -124,7 +135,7 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         const std::size_t id = tree.add(std::move(next), new_at, parent);
         nodes.push_back({cost, {}});
         nodes[parent].children.push_back(id);
-        if (is_goal) goal_node = id;
+        if (is_goal) goal_nodes[*sample.goal] = id;
         // Rewiring: each neighbour the new node reaches more cheaply takes it as its parent.
         for (const auto& [through, n] : by_cost) {
           if (n == parent || n == SamplingTree<Space>::root) continue;
@@ -135,8 +146,8 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
           }
         }
       }
-      if (goal_node && nodes[*goal_node].cost < best) {
-        best = nodes[*goal_node].cost;
+      if (const auto cheapest = cheapest_goal_node(goal_nodes, nodes); cheapest && nodes[*cheapest].cost < best) {
+        best = nodes[*cheapest].cost;
         ++solutions;
         this->found(budget, best);
       }
@@ -147,11 +158,12 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     facts.set("rewire", options_.rewire == Rewiring::k_nearest ? "k-nearest" : "radius");
     Attempt attempt;
     if (record) attempt.graph = SamplingTree<Space>::picture({&tree});
-    if (!goal_node) {
+    const auto cheapest = cheapest_goal_node(goal_nodes, nodes);
+    if (!cheapest) {
       attempt.why_not = "the tree did not reach the goal within " + budget.limit_reached();
       return attempt;
     }
-    attempt.path = tree.path_from_root(*goal_node);
+    attempt.path = tree.path_from_root(*cheapest);
     return attempt;
   }
 

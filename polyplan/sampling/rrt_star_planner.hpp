@@ -4,8 +4,9 @@
 // neighbour it reaches more cheaply (rewiring); every such motion certified. Neighbours are the
 // k nearest within one step, k = ⌈e·(1 + 1/d)·log n⌉, or those within r = min(step, γ·(log n / n)^(1/d)) with
 // γ = 2·((1 + 1/d)·volume / unit ball)^(1/d). Anytime: it goes on improving the path until the
-// time or iteration limit, so with the defaults it always runs to a limit. Registered as
-// `rrtstar` for polygon worlds and arms.
+// time or iteration limit, so with the defaults it always runs to a limit. With several goals
+// (SamplingSpace::goals) the bias draws any one, each may join the tree, and the solution is the
+// cheapest path to any of them. Registered as `rrtstar` for polygon worlds and arms.
 #include <polyplan/sampling/rrt_planner.hpp>
 
 namespace polyplan {

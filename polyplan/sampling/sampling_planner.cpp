@@ -29,6 +29,26 @@ auto SamplingPlanner<Space>::draw(std::span<double> coordinates) -> Configuratio
 }
 
 template <class Space>
+std::vector<std::vector<double>> SamplingPlanner<Space>::coordinates_of(const std::vector<Configuration>& configurations) const {
+  std::vector<std::vector<double>> out(configurations.size(), std::vector<double>(space_->dimension()));
+  for (std::size_t i = 0; i < configurations.size(); ++i) space_->coordinates(configurations[i], out[i]);
+  return out;
+}
+
+template <class Space>
+auto SamplingPlanner<Space>::goal_biased(const std::vector<Configuration>& goals, const std::vector<std::vector<double>>& goals_at,
+                                         double goal_bias, std::span<double> drawn_at) -> Sample {
+  if (uniform01(random_) < goal_bias) {
+    // A single goal draws no number to be chosen, so that its random stream (and every seed's
+    // path) is what it was before goal sets. The remainder's bias, below 2^-60, does not matter.
+    const std::size_t goal = goals.size() > 1 ? static_cast<std::size_t>(random_() % goals.size()) : 0;
+    return {goals[goal], goals_at[goal], goal};
+  }
+  Configuration drawn = draw(drawn_at);
+  return {std::move(drawn), drawn_at, std::nullopt};
+}
+
+template <class Space>
 double SamplingPlanner<Space>::length(const std::vector<Configuration>& path) const {
   const std::size_t d = space_->dimension();
   std::vector<double> a(d), b(d);
@@ -132,7 +152,11 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
     return finish();
   }
 
-  Attempt attempt = solve(query, budget, facts, options.record);
+  const std::vector<Configuration> goals = space_->goals(query);
+  if (goals.empty()) throw std::logic_error("a sampling space gave a query it accepted no goal to reach");
+  if (goals.size() > 1) facts.set("goal.candidates", goals.size());
+
+  Attempt attempt = solve(query, goals, budget, facts, options.record);
   facts.set("iterations", budget.used());
   facts.set("stopped_by", budget.stopped_by());
   report.graph = std::move(attempt.graph);
@@ -140,9 +164,11 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
     report.fail(PlanStatus::limit, std::move(attempt.why_not));
     return finish();
   }
-  if (attempt.path.size() == 1) attempt.path.push_back(space_->goal(query));  // start == goal: one motion of length 0
-  if (!(attempt.path.front() == space_->start(query)) || !(attempt.path.back() == space_->goal(query)))
-    throw std::logic_error("a sampling planner's path does not run from the query's start to its goal");
+  const std::optional<std::size_t> reached = goal_index(goals, attempt.path.back());
+  if (!(attempt.path.front() == space_->start(query)) || !reached)
+    throw std::logic_error("a sampling planner's path does not run from the query's start to one of its goals");
+  if (attempt.path.size() == 1) attempt.path.push_back(goals[*reached]);  // the start is a goal: one motion of length 0
+  if (goals.size() > 1) facts.set("goal.reached", *reached);
   facts.set("first_solution_seconds", improvements_.empty() ? budget.seconds() : improvements_.front().seconds);
   facts.set("raw_length", length(attempt.path));
   std::vector<Configuration> path = limits_.shortcut ? shortcut(std::move(attempt.path)) : std::move(attempt.path);

@@ -2,8 +2,9 @@
 // What the sampling planners (prm, lazyprm, rrt, rrtstar, rrtconnect) share, over any
 // SamplingSpace (sampling/sampling_space.hpp): the limits every one takes (seed, time, iterations,
 // shortcutting), the configurations they place with their nearest-neighbour index, and one plan()
-// that checks the query, runs the planner's own search within the limits, shortcuts the path with
-// certified motions, certifies the path once more and reports the shared facts:
+// that checks the query, asks the space for the query's goals (SamplingSpace::goals: one, or a set
+// of which the path must reach any one), runs the planner's own search within the limits, shortcuts
+// the path with certified motions, certifies the path once more and reports the shared facts:
 //   samples                 configurations drawn (free or not)
 //   motions_checked         motions the space certified or refused
 //   iterations              the planner's own steps (samples for the roadmaps, extensions for trees)
@@ -11,6 +12,9 @@
 //   first_solution_seconds  when the first path was found (the query's clock)
 //   raw_length              the first path's length before shortcutting (length: the one returned)
 //   roadmap.kind (the planner's name), seed, query_seconds
+//   goal.candidates         how many goals, where there are several (never with one goal, so that a
+//                           query's answer is what it was before goal sets)
+//   goal.reached            which of them the path ends at: its 0-based index in goals()
 // A planner derives from SamplingPlanner<Space>, writes solve(), and registers one entry per space
 // (registry/polygon_planners.cpp, registry/arm_planners.cpp) with the space's factory.
 #include <polyplan/plan/planner.hpp>
@@ -176,21 +180,28 @@ void SampledConfigurations<Space>::within(std::span<const double> at, double rad
   for (const auto& [d, id] : ranked_) out.push_back(id);
 }
 
-// A tree of configurations (rrt, rrtconnect, rrtstar): each node but the root joined to its
+// A tree of configurations (rrt, rrtconnect, rrtstar): each node but a root joined to its
 // parent by a certified motion — from the parent to the node when the tree grows from its root
 // (Toward::asked: distances run from nodes to what the tree extends toward), from the node to its
-// parent when it grows toward its root (Toward::placed: RRT-Connect's goal tree).
+// parent when it grows toward its root (Toward::placed: RRT-Connect's goal tree). It may be a
+// forest of several roots (RRT-Connect's goal tree, rooted at every goal): a root is the node that
+// is its own parent.
 template <class Space>
 class SamplingTree {
  public:
   using Configuration = typename Space::Configuration;
-  static constexpr std::size_t root = 0;
+  static constexpr std::size_t root = 0;  // the first root
 
   SamplingTree(const SamplingSpace<Space>& space, const Configuration& root_configuration, Toward growth = Toward::asked)
+      : SamplingTree(space, std::vector<Configuration>{root_configuration}, growth) {}
+  // Roots i = 0, 1, ... at roots[i], in that order.
+  SamplingTree(const SamplingSpace<Space>& space, const std::vector<Configuration>& roots, Toward growth = Toward::asked)
       : nodes_(space), growth_(growth) {
     std::vector<double> coordinates(space.dimension());
-    space.coordinates(root_configuration, coordinates);
-    add(root_configuration, coordinates, root);
+    for (const Configuration& root_configuration : roots) {
+      space.coordinates(root_configuration, coordinates);
+      add(root_configuration, coordinates, size());
+    }
   }
 
   std::size_t add(Configuration configuration, std::span<const double> coordinates, std::size_t parent) {
@@ -203,10 +214,12 @@ class SamplingTree {
   std::size_t parent(std::size_t id) const { return parents_[id]; }
   void set_parent(std::size_t id, std::size_t parent) { parents_[id] = parent; }
 
-  // The configurations from the root to `id`.
+  bool is_root(std::size_t id) const { return parents_[id] == id; }
+
+  // The configurations from the root of `id`'s tree to `id`.
   std::vector<Configuration> path_from_root(std::size_t id) const {
     std::vector<Configuration> path{nodes_[id]};
-    for (; id != root; id = parents_[id]) path.push_back(nodes_[parents_[id]]);
+    for (; !is_root(id); id = parents_[id]) path.push_back(nodes_[parents_[id]]);
     return {path.rbegin(), path.rend()};
   }
   // The picture of trees: their nodes, and an edge for each node's motion, from where it starts
@@ -217,7 +230,8 @@ class SamplingTree {
     for (const SamplingTree* tree : trees) {
       const std::size_t offset = graph->vertices.size();
       graph->vertices.insert(graph->vertices.end(), tree->nodes_.all().begin(), tree->nodes_.all().end());
-      for (std::size_t id = 1; id < tree->size(); ++id) {
+      for (std::size_t id = 0; id < tree->size(); ++id) {
+        if (tree->is_root(id)) continue;
         const std::size_t parent = offset + tree->parents_[id], node = offset + id;
         if (tree->growth_ == Toward::asked) graph->edges.emplace_back(parent, node);
         else graph->edges.emplace_back(node, parent);
@@ -289,17 +303,20 @@ class SamplingPlanner : public Planner<Space> {
   // `name`: the registry's, reported as roadmap.kind.
   SamplingPlanner(std::string name, std::unique_ptr<SamplingSpace<Space>> space, SamplingLimits limits);
 
-  // What solve() returns: a path from the query's start to its goal (exactly those
-  // configurations; the start alone when it is the goal) whose consecutive configurations are
+  // What solve() returns: a path from the query's start to one of its goals (exactly those
+  // configurations; the start alone when it is a goal) whose consecutive configurations are
   // joined by certified motions, or why there is none; the picture's graph when `record`.
   struct Attempt {
     std::vector<Configuration> path;
     std::string why_not;
     std::shared_ptr<const PlanGraph<Configuration>> graph;
   };
-  // The planner's own search within the budget. Facts particular to it go in `facts`; a solution
-  // is announced with found() as soon as it exists (found() times the first and every better one).
-  virtual Attempt solve(const Query& query, SamplingBudget& budget, Facts& facts, bool record) = 0;
+  // The planner's own search within the budget, from the query's start to any one of `goals` (the
+  // space's goals(query), never empty; the nearest one the planner can reach). Facts particular to
+  // it go in `facts`; a solution is announced with found() as soon as it exists (found() times the
+  // first and every better one).
+  virtual Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
+                        bool record) = 0;
 
   // For solve(): the counted operations and the space.
   SamplingSpace<Space>& space() { return *space_; }
@@ -313,18 +330,23 @@ class SamplingPlanner : public Planner<Space> {
     return space_->motion_is_free(from, to);
   }
   double distance(std::span<const double> a, std::span<const double> b) const { return space_->distance(a, b); }
-  // What a tree grows toward: the goal itself with probability `goal_bias`, otherwise a drawn
-  // configuration (its coordinates into `drawn_at`).
+  // Which of `goals` `configuration` is (the first equal to it), if any.
+  static std::optional<std::size_t> goal_index(const std::vector<Configuration>& goals, const Configuration& configuration) {
+    const auto found = std::find(goals.begin(), goals.end(), configuration);
+    if (found == goals.end()) return std::nullopt;
+    return static_cast<std::size_t>(found - goals.begin());
+  }
+  // The coordinates of each configuration (a query's goals, for goal_biased).
+  std::vector<std::vector<double>> coordinates_of(const std::vector<Configuration>& configurations) const;
+  // What a tree grows toward: with probability `goal_bias` one of the goals (uniformly; `goals_at`:
+  // their coordinates), otherwise a drawn configuration (its coordinates into `drawn_at`).
   struct Sample {
     Configuration configuration;
     std::span<const double> at;
-    bool is_goal = false;
+    std::optional<std::size_t> goal;  // which goal it is, if it is one
   };
-  Sample goal_biased(const Configuration& goal, std::span<const double> goal_at, double goal_bias, std::span<double> drawn_at) {
-    if (uniform01(random_) < goal_bias) return {goal, goal_at, true};
-    Configuration drawn = draw(drawn_at);
-    return {std::move(drawn), drawn_at, false};
-  }
+  Sample goal_biased(const std::vector<Configuration>& goals, const std::vector<std::vector<double>>& goals_at, double goal_bias,
+                     std::span<double> drawn_at);
   // One extension of `tree` toward `target`: from its nearest node, `target` itself when it is
   // within `step` (or step is 0: all the way), otherwise the configuration `step` along the way
   // (in a tree grown toward its root: `step` before the node on the motion from `target` to it);

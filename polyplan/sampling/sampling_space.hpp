@@ -122,6 +122,10 @@ class SamplingSpace {
   // The query's start and goal as the path gives them (an arm's angles normalised).
   virtual Configuration start(const Query&) const = 0;
   virtual Configuration goal(const Query&) const = 0;
+  // The configurations a path may end at, in a fixed order: the query's goal alone by default; several
+  // where the goal is a set (an arm's hand at a point: its collision-free IK solutions). Called once per
+  // query, after query_not_free has accepted the query; never empty then.
+  virtual std::vector<Configuration> goals(const Query& query) { return {goal(query)}; }
   // The certificate's words for a path of certified motions.
   virtual std::string certificate_method() const = 0;
   // The path of certified motions as the report gives it, and the space's own facts about it (a

@@ -3,7 +3,8 @@
 // with a nearest-neighbour index) and a Boost graph whose edges join each new milestone to its k
 // nearest, k fixed or k = ⌈e·(1 + 1/d)·log n⌉ (PRM*'s), searched with search/graph_search.hpp.
 // prm certifies an edge before adding it; lazyprm adds it unchecked and certifies it when a search
-// wants it (`certified`). Private to the two planners' sources (it includes the BGL algorithms).
+// wants it (`certified`). A query's goals are milestones each; its path goes to the one the
+// roadmap reaches most cheaply. Private to the two planners' sources (it includes the BGL algorithms).
 #include <polyplan/sampling/sampling_planner.hpp>
 #include <polyplan/search/bidirectional_search.hpp>
 #include <polyplan/search/graph_search.hpp>
@@ -69,6 +70,21 @@ class SampledRoadmap {
 
   SearchResult<Vertex> search_both_ways(std::size_t start, std::size_t goal) {
     return bidirectional_dijkstra(graph_, start, goal, [&](const typename Graph::edge_descriptor& e) { return graph_[e].length; });
+  }
+
+  // The cheapest of the paths that `search_one(start, goal)` (search or search_both_ways) finds to
+  // each of `goals`, the first of equals; its counts are all the searches'. Not found when none is.
+  template <class SearchOne>
+  static SearchResult<Vertex> cheapest(std::size_t start, const std::vector<std::size_t>& goals, SearchOne search_one) {
+    SearchResult<Vertex> best;
+    std::size_t expanded = 0, generated = 0;
+    for (std::size_t goal : goals) {
+      SearchResult<Vertex> result = search_one(start, goal);
+      expanded += result.expanded, generated += result.generated;
+      if (result.found && (!best.found || result.cost < best.cost)) best = std::move(result);
+    }
+    best.expanded = expanded, best.generated = generated;
+    return best;
   }
 
   const SampledConfigurations<Space>& nodes() const { return nodes_; }
