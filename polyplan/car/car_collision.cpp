@@ -242,6 +242,17 @@ bool CarCollision::reverse() const { return impl_->reverse; }
 bool CarCollision::body_holds_reference_point() const { return impl_->holds_reference; }
 std::size_t CarCollision::enclosures_tested() const { return impl_->enclosures; }
 
+// The segment's enclosure holds every exact point of the sweep grown by δ − 2⁻⁴⁷·S − 2⁻⁵²·S >
+// 2⁻⁴¹·S (the analysis above); the computed `end` lies within 2⁻⁴⁷·S of the exact end. A body
+// point moves by at most |Δ position| + ρ·|Δ heading| between `end` and `to`; up to 2⁻⁴³·S, with
+// the end's own rounding, that stays within 2⁻⁴¹·S of the exact end pose's body: inside.
+bool CarCollision::arrival_is_covered(const CarPose& start, const SteeringSegment& segment, const CarPose& end,
+                                      const CarPose& to) const {
+  const double room = std::ldexp(impl_->margin(start, segment.length), -3) * (1 - 1e-9);  // 2⁻⁴³·S, rounded down
+  const double moved = std::hypot(to.x - end.x, to.y - end.y) + impl_->body_radius * std::abs(std::remainder(to.theta - end.theta, 2 * pi));
+  return moved * (1 + 1e-9) <= room;
+}
+
 bool CarCollision::pose_is_free(const CarPose& pose) const { return !impl_->pose_blocked(pose); }
 
 std::optional<std::string> CarCollision::pose_blocked_by(const CarPose& pose) const {

@@ -38,7 +38,13 @@ std::optional<std::vector<CarState>> certified_states(const CarCollision& car, c
                                                       const CarPose& to) {
   std::vector<CarState> states = states_along(from, path, to, car.turning_radius());
   for (std::size_t i = 0; i < states.size(); ++i) {
-    if (!car.segment_is_free(i == 0 ? from : states[i - 1].pose, states[i].arrival)) return std::nullopt;
+    const CarPose& start = i == 0 ? from : states[i - 1].pose;
+    if (!car.segment_is_free(start, states[i].arrival)) return std::nullopt;
+    // The last state was moved from the curve's computed end onto `to`: that step must stay within
+    // what the last segment's certificate encloses.
+    if (i + 1 == states.size() &&
+        !car.arrival_is_covered(start, states[i].arrival, drive(start, states[i].arrival, car.turning_radius(), states[i].arrival.length), to))
+      return std::nullopt;
   }
   return states;
 }

@@ -93,7 +93,8 @@ bool answered_before_descent(const CSpace& cspace, const Query& query, PlanRepor
   return false;
 }
 
-void report_descent(Descent descent, const std::string& prefix, bool record, const std::string& why_suffix, PlanReport<ExactPoint>& report) {
+void report_descent(const CSpace& cspace, Descent descent, const std::string& prefix, bool record, const std::string& why_suffix,
+                    PlanReport<ExactPoint>& report) {
   if (record) report.expanded = descent.path;  // the picture shows the descent, wherever it stopped
   report.facts.set(prefix + ".steps", descent.path.size() - 1);
   report.facts.set(prefix + ".stopped_at", point_text(approximate(descent.path.back())));
@@ -102,10 +103,14 @@ void report_descent(Descent descent, const std::string& prefix, bool record, con
     report.fail(descent.status, descent.why + why_suffix);
     return;
   }
+  if (const PathCheck whole = check_path(cspace, descent.path); !whole.valid) {
+    report.fail(PlanStatus::not_found, "the descent's path is not a valid motion: " + whole.reason);
+    return;
+  }
   report.succeed();
   report.path = std::move(descent.path);
   report.length = euclidean_length(report.path);
-  report.certificate = {true, "exact segment test of every step as it was taken (arrangement zone walk)"};
+  report.certificate = {true, "exact segment test of every step as it was taken, and of the whole path (arrangement zone walk)"};
 }
 
 }  // namespace polyplan

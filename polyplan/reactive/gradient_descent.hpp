@@ -57,9 +57,11 @@ bool answered_before_descent(const CSpace& cspace, const Query& query, PlanRepor
 
 // The descent as a planner's answer: the facts PREFIX.steps and PREFIX.stopped_at, its steps as
 // the expanded configurations when `record`, and the path (certified: every step was checked
-// exactly) when solved, or the status and `why` (followed by `why_suffix`) otherwise — stopped_by
-// "step limit" for a limit.
-void report_descent(Descent descent, const std::string& prefix, bool record, const std::string& why_suffix, PlanReport<ExactPoint>& report);
+// exactly as it was taken, and the whole path again, whose bends the steps alone cannot judge at
+// a pinch point) when solved, or the status and `why` (followed by `why_suffix`) otherwise —
+// stopped_by "step limit" for a limit.
+void report_descent(const CSpace& cspace, Descent descent, const std::string& prefix, bool record, const std::string& why_suffix,
+                    PlanReport<ExactPoint>& report);
 
 // "(x, y)" with six decimals.
 std::string point_text(Vec2 p);

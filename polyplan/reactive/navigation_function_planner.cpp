@@ -131,7 +131,7 @@ PlanReport<ExactPoint> NavigationFunctionPlanner::plan(const Query& query, const
     if (descent.status == PlanStatus::solved || descent.status == PlanStatus::not_found) break;
   }
   facts.set("navigation.kappa", kappa);
-  report_descent(std::move(descent), "navigation", options.record, " (kappa " + std::to_string(kappa) + ")", report);
+  report_descent(*r.cspace, std::move(descent), "navigation", options.record, " (kappa " + std::to_string(kappa) + ")", report);
   return finish();
 }
 

@@ -82,7 +82,7 @@ PlanReport<ExactPoint> PotentialFieldPlanner::plan(const Query& query, const Que
   Descent descent = r.descend(query);
   facts.set("potential.gradient", std::hypot(descent.last.gradient.x, descent.last.gradient.y));
   facts.set("potential.value", descent.last.value);
-  report_descent(std::move(descent), "potential", options.record, "", report);
+  report_descent(*r.cspace, std::move(descent), "potential", options.record, "", report);
   return finish();
 }
 

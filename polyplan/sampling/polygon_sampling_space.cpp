@@ -82,7 +82,11 @@ class PolygonSamplingSpace final : public SamplingSpace<TranslatingRobot> {
   }
   ExactPoint start(const Query& query) const override { return query.start; }
   ExactPoint goal(const Query& query) const override { return query.goal; }
-  std::string certificate_method() const override { return "exact segment test (triangulation walk)"; }
+  std::string certificate_method() const override { return "exact segment test (triangulation walk), the whole path checked exactly"; }
+  std::optional<std::string> why_path_invalid(const std::vector<ExactPoint>& path) override {
+    const PathCheck check = check_path(*cspace_, path);
+    return check.valid ? std::nullopt : std::optional<std::string>(check.reason);
+  }
 
  private:
   const CSpace* cspace_;

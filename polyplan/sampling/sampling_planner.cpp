@@ -178,6 +178,12 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
     if (!space_->motion_is_free(path[i], path[i + 1]))
       throw std::logic_error("a sampling planner's path has a motion that is not certified free");
+  // A planner that joins certified motions at a pinch point finds no path there, whatever its
+  // motions say: an honest not_found, never a path that crosses a zero-width place.
+  if (auto why = space_->why_path_invalid(path)) {
+    report.fail(PlanStatus::not_found, "the path found is not a valid motion: " + *why);
+    return finish();
+  }
   report.succeed();
   report.length = length(path);
   report.path = space_->reported_path(std::move(path), facts);

@@ -128,6 +128,11 @@ class SamplingSpace {
   virtual std::vector<Configuration> goals(const Query& query) { return {goal(query)}; }
   // The certificate's words for a path of certified motions.
   virtual std::string certificate_method() const = 0;
+  // Why a path of certified motions is still not a valid motion as a whole, or nullopt (the
+  // default): in a polygon world a path may touch a pinch point, where C-obstacles meet at a
+  // point, but must leave it into the free wedge it arrived from — which no motion alone can tell
+  // (a roadmap keeps earlier queries' ends as milestones, and one may sit on a pinch point).
+  virtual std::optional<std::string> why_path_invalid(const std::vector<Configuration>&) { return std::nullopt; }
   // The path of certified motions as the report gives it, and the space's own facts about it (a
   // car's curves cut at their segments' joints, its gear changes). The path itself by default.
   virtual std::vector<Configuration> reported_path(std::vector<Configuration> path, Facts&) const { return path; }

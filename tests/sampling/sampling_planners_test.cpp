@@ -289,5 +289,31 @@ TEST(SamplingPlanners, LazyPrmChecksFewerMotionsThanPrm) {
   EXPECT_LT(lazy.facts.count("motions_checked"), eager.facts.count("motions_checked"));
 }
 
+// touching_corners: two free squares that meet only at the pinch point (2, 2). A roadmap kept
+// across queries holds the earlier queries' ends, so after (1,1)→(2,2) and (3,3)→(2,2) the pinch
+// point is a milestone of both squares; each motion onto it and off it is certified, but the path
+// (1,1)→(2,2)→(3,3) crosses a zero-width place. Every planner must answer that query without a
+// path (the open free spaces of the two squares are not joined), and every path it does return
+// must pass the exact whole-path check.
+TEST(SamplingPlanners, NoPathThroughAPinchPointMilestone) {
+  const CSpace cspace(shipped_world("touching_corners"));
+  const Query into_a{{1, 1}, {2, 2}, "into the pinch from below"}, into_b{{3, 3}, {2, 2}, "into the pinch from above"};
+  const Query across{{1, 1}, {3, 3}, "across the pinch"};
+  for (const char* name : sampling_planners) {
+    SCOPED_TRACE(name);
+    auto planner = make(name, cspace, {{"seed", "1"}, {"iterations", "3000"}, {"time", "20"}});
+    for (const Query* q : {&into_a, &into_b, &across}) {
+      const auto report = planner->plan(*q);
+      if (report.found) {
+        EXPECT_TRUE(check_path(cspace, report.path).valid) << q->name;
+      }
+      if (q == &across) {
+        EXPECT_FALSE(report.found);
+        EXPECT_NE(report.status, PlanStatus::solved);
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace polyplan
