@@ -67,13 +67,6 @@ Box grown(const Box& b, double d) {
   return g;
 }
 
-// The squared gap between two boxes (0 when they overlap), rounded as it may be.
-double squared_gap(const Box& a, const Box& b) {
-  const double dx = std::max({0.0, b.xmin - a.xmax, a.xmin - b.xmax});
-  const double dy = std::max({0.0, b.ymin - a.ymax, a.ymin - b.ymax});
-  return dx * dx + dy * dy;
-}
-
 // A lower bound of the squared gap between two boxes (0 when they overlap). RoundingUpward must
 // be in force: each difference rounded up and negated is a lower bound of the gap on its axis,
 // and −(−dx·dx − dy·dy), each operation rounded up, one of the sum of squares. Plain doubles,
@@ -187,6 +180,42 @@ double squared_distance_to_boundary_below(const Point& p, const Convex& s, doubl
   return best;
 }
 
+// The distances again in plain doubles, fast, with an error bound: they only choose which
+// candidates the interval bounds are computed for (obstacle_clearance), never a clearance's value.
+//
+// Error bound. In any rounding mode each operation errs by less than 2^-52 relative. With every
+// coordinate at most M in magnitude, the differences are at most 2M and err by at most 2^-51·M;
+// whatever t the clamped quotient gives, a + t·v lies on the segment, so a wrong t only moves the
+// point measured along it, by |Δt|·|v| ≤ 2^-47·M; the squared distance then errs by at most
+// 2^8·2^-52·M² = 2^-44·M² (a dozen operations on values up to 16·M²), and the distance, since
+// |√x − √y| ≤ √|x − y|, by at most 2^-22·M. gather allows 2^-20·M, 4 times that; the minimum
+// over vertex–edge pairs keeps the bound.
+double squared_point_segment_distance(const Point& p, const Point& a, const Point& b) {
+  const double vx = b.x() - a.x(), vy = b.y() - a.y();
+  const double wx = p.x() - a.x(), wy = p.y() - a.y();
+  const double vv = vx * vx + vy * vy;
+  const double t = vv > 0 ? std::clamp((wx * vx + wy * vy) / vv, 0.0, 1.0) : 0.0;
+  const double dx = wx - t * vx, dy = wy - t * vy;
+  return dx * dx + dy * dy;
+}
+double squared_distance_to_boundary(const Point& p, const Convex& s) {
+  if (s.n == 1) return squared_point_segment_distance(p, s.v[0], s.v[0]);
+  double best = infinity;
+  for (int i = 0; i < edge_count(s); ++i) best = std::min(best, squared_point_segment_distance(p, s.v[i], s.v[(i + 1) % s.n]));
+  return best;
+}
+double distance_apart(const Convex& a, const Convex& b) {
+  double best = infinity;
+  for (int i = 0; i < a.n; ++i) best = std::min(best, squared_distance_to_boundary(a.v[i], b));
+  for (int i = 0; i < b.n; ++i) best = std::min(best, squared_distance_to_boundary(b.v[i], a));
+  return std::sqrt(best);
+}
+// The largest coordinate, in magnitude, of two boxes: M of the fast distances' error bound.
+double largest_coordinate(const Box& a, const Box& b) {
+  return std::max({std::fabs(a.xmin), std::fabs(a.xmax), std::fabs(a.ymin), std::fabs(a.ymax), std::fabs(b.xmin),
+                   std::fabs(b.xmax), std::fabs(b.ymin), std::fabs(b.ymax)});
+}
+
 // A lower bound of the square root of a lower bound (with RoundingUpward in force the root rounds
 // up; the double below it does not exceed the real root).
 double root_below(double squared) { return squared > 0 ? below(std::sqrt(squared)) : 0.0; }
@@ -279,13 +308,18 @@ struct ArmCollisionChecker::Impl {
   mutable detail::TrueArmBounds true_arm;
   mutable std::vector<double> link_radius;
   // obstacle_clearance's candidates: edges near a link (with their obstacle's rounding), points.
-  struct NearEdge {
-    double gap;  // squared, in the default rounding: only the order of the distances' work
+  // gather's candidates: an edge or a point with a lower bound of its clearance from the fast
+  // distance, and the radius (the link's and the obstacle's rounding) its interval bound subtracts.
+  struct Measured {
+    double fast_below;
     const Convex* edge;
-    double rounding;  // its obstacle's
+    const PointObstacle* point;
+    double radius;
   };
-  mutable std::vector<NearEdge> near_edges;
-  mutable std::vector<const PointObstacle*> near_points;
+  mutable std::vector<Measured> measured;
+  mutable std::vector<std::size_t> candidate_begin;  // [k]: link k's first candidate
+  mutable std::vector<double> nearest;  // [k]: the smaller of reach[k] and every candidate's upper bound
+  mutable std::vector<bool> link_hit, pair_hit;
   mutable ArmClearances split;
   mutable std::size_t checks = 0;
 
@@ -413,66 +447,95 @@ struct ArmCollisionChecker::Impl {
     return std::nullopt;
   }
 
-  // The clearance of the true link k (after place_enclosed) to the obstacle polygons and points:
-  // 0 when the computed link meets one (then `contact` is set unless it already holds one);
-  // otherwise the smallest lower bound below `enough` or, when none is below it, a value of at
-  // least `enough` (+infinity when nothing was measured).
-  //  - First, rounding to nearest: contact, exactly, and the edges and points near enough to
-  //    matter: those whose boxes reach into the link's box grown by enough + the radii (outward).
-  //  - Then the distances of those, all at once with the processor rounding upward (switching the
-  //    rounding costs more than a distance), skipping (cannot_matter) what lies apart from the
-  //    link and at least the clearance still needed beyond its radius.
-  double obstacle_clearance(std::size_t k, double enough, std::optional<ArmContact>& contact) const {
-    const Convex& link = links[k];
-    const double r = link_radius[k];
-    const Box near = grown(link.box, above(above(enough + r) + everything_rounding));
+  // After place_enclosed, rounding to nearest: what each link meets, exactly, and which obstacles
+  // may hold its clearance. For each link k in first_contact's order: link_hit[k] when it meets an
+  // obstacle or a point, pair_hit[k·n + m] when (self-collision) it meets a later link m ≥ k + 2,
+  // the first such contact into `contact` unless it holds one. Otherwise every edge and point
+  // within reach of it, as their boxes tell (the link's box grown outward by the reach, its radius
+  // and the obstacles' rounding), gets a fast distance (plain doubles, with an error bound) as a
+  // candidate: measured[candidate_begin[k] .. candidate_begin[k + 1]). Each fast distance, plus its
+  // error, bounds some true clearance from above and shrinks the reach for those after it, as the
+  // single pass of a collision checker does in doubles. The reach: `enough` for every link when
+  // link_speed is empty (clearances); otherwise (safe_step) what link k covers at its speed in
+  // the largest step still possible: `enough` (the horizon) at first, then no more than any
+  // link's clearance so far over its speed.
+  void gather(std::span<const double> link_speed, double enough, std::optional<ArmContact>& contact) const {
+    const std::size_t n = arm.joints();
     const auto met = [&](ArmContact c) {
       if (!contact) contact = c;
-      return 0.0;
     };
-    near_edges.clear();
-    if (near.overlaps(everything))
-      for (const Obstacle& o : obstacles) {
-        if (!near.overlaps(o.box)) continue;
-        if (link_meets(link, o)) return met({k, ArmContact::With::polygon, o.index});
-        for (const Convex& e : o.edges)
-          if (near.overlaps(e.box)) near_edges.push_back({squared_gap(link.box, e.box), &e, o.rounding});
+    link_hit.assign(n, false);
+    pair_hit.assign(arm.self_collision ? n * n : 0, false);
+    measured.clear();
+    candidate_begin.assign(1, 0);
+    nearest.assign(n, 0.0);
+    double step = enough;  // safe_step: above the step it will find
+    for (std::size_t k = 0; k < n; ++k) {
+      const Convex& link = links[k];
+      const double r = link_radius[k];
+      double& within = nearest[k];
+      within = link_speed.empty() ? enough : detail::covered_above(link_speed[k], step);
+      Box near = grown(link.box, above(above(within + r) + everything_rounding));
+      // A candidate's fast clearance: lower and upper bounds of some true clearance.
+      const auto candidate = [&](double fast, double radius, const Box& box, const Convex* edge, const PointObstacle* point) {
+        const double error = above(0x1p-20 * largest_coordinate(link.box, box));
+        measured.push_back({below(below(fast - radius) - error), edge, point, radius});
+        const double upper = above(above(fast - radius) + error);
+        if (upper < within) within = upper, near = grown(link.box, above(above(within + r) + everything_rounding));
+      };
+      if (near.overlaps(everything))
+        for (const Obstacle& o : obstacles) {
+          if (!near.overlaps(o.box)) continue;
+          if (link_meets(link, o)) {
+            met({k, ArmContact::With::polygon, o.index}), link_hit[k] = true;
+            break;
+          }
+          // Apart from an obstacle's closed region, the link is nearest to its boundary: one of the edges.
+          for (const Convex& e : o.edges)
+            if (near.overlaps(e.box)) candidate(distance_apart(link, e), above(r + o.rounding), e.box, &e, nullptr);
+        }
+      for (const PointObstacle& p : points) {
+        if (link_hit[k] || !near.contains(p.p)) continue;
+        if (link.box.contains(p.p) && contains(link, p.p)) met({k, ArmContact::With::point, p.index}), link_hit[k] = true;
+        else candidate(std::sqrt(squared_distance_to_boundary(p.p, link)), r, p.box, nullptr, &p);
       }
-    near_points.clear();
-    for (const PointObstacle& p : points) {
-      if (!near.contains(p.p)) continue;
-      if (link.box.contains(p.p) && contains(link, p.p)) return met({k, ArmContact::With::point, p.index});
-      near_points.push_back(&p);
+      if (link_hit[k]) measured.resize(candidate_begin.back());
+      candidate_begin.push_back(measured.size());
+      if (!link_speed.empty() && link_speed[k] > 0) step = std::min(step, above(within / link_speed[k]));
+      if (arm.self_collision)
+        for (std::size_t m = k + 2; m < n; ++m)
+          if (meets(link, links[m])) met({k, ArmContact::With::link, m}), pair_hit[k * n + m] = true;
     }
-    // Nearest boxes first: the clearance falls soonest, and the farther edges are skipped.
-    std::sort(near_edges.begin(), near_edges.end(), [](const NearEdge& x, const NearEdge& y) { return x.gap < y.gap; });
+  }
 
+  // The clearance of the true link k to the obstacle polygons and points, after gather: 0 when it
+  // meets one, otherwise the smallest lower bound below `enough` or, when none is below it, a value
+  // of at least `enough` (+infinity when nothing was measured). Interval bounds are computed only
+  // for the candidates whose fast clearance may be the smallest: a candidate whose lower bound
+  // exceeds what another's upper bound (gather's nearest) or `enough` allows is farther for sure.
+  // RoundingUpward must be in force (one guard for every link: switching the rounding costs more
+  // than a distance).
+  double obstacle_clearance(std::size_t k, double enough) const {
+    if (link_hit[k]) return 0;
+    const Convex& link = links[k];
+    const double limit = std::min(nearest[k], enough);
     double best = infinity;
-    const RoundingUpward upward;  // from here on only interval code: each sum below rounds up
-    for (const auto& [gap, e, rounding] : near_edges) {
-      // Apart from an obstacle's closed region, the link is nearest to its boundary: one of the edges.
-      const double radius = r + rounding;
-      if (cannot_matter(squared_gap_below(link.box, e->box), radius, std::min(best, enough))) continue;
-      best = std::min(best, clearance_below(distance_apart_below(link, *e), radius));
-    }
-    for (const PointObstacle* p : near_points) {
-      if (cannot_matter(squared_gap_below(link.box, p->box), r, std::min(best, enough))) continue;
-      best = std::min(best, clearance_below(root_below(squared_distance_to_boundary_below(p->p, link)), r));
+    for (std::size_t i = candidate_begin[k]; i < candidate_begin[k + 1]; ++i) {
+      const Measured& m = measured[i];
+      if (m.fast_below > limit) continue;
+      const double d = m.edge ? distance_apart_below(link, *m.edge) : root_below(squared_distance_to_boundary_below(m.point->p, link));
+      best = std::min(best, clearance_below(d, m.radius));
     }
     return best;
   }
 
-  // The clearance between the true links k and m (self-collision, |k − m| ≥ 2), as
-  // obstacle_clearance measures it: +infinity when it cannot be below `enough`, 0 when the
-  // computed links meet (then `contact` is set unless it already holds one).
-  double pair_clearance(std::size_t k, std::size_t m, double enough, std::optional<ArmContact>& contact) const {
+  // The clearance between the true links k and m (self-collision, |k − m| ≥ 2) after gather, as
+  // obstacle_clearance measures it: 0 when the computed links meet, +infinity when it cannot be
+  // below `enough`. RoundingUpward must be in force.
+  double pair_clearance(std::size_t k, std::size_t m, double enough) const {
+    if (pair_hit[k * arm.joints() + m]) return 0;
     const Convex& a = links[k];
     const Convex& b = links[m];
-    if (meets(a, b)) {
-      if (!contact) contact = ArmContact{std::min(k, m), ArmContact::With::link, std::max(k, m)};
-      return 0;
-    }
-    const RoundingUpward upward;
     const double radius = link_radius[k] + link_radius[m];
     if (cannot_matter(squared_gap_below(a.box, b.box), radius, enough)) return infinity;
     return clearance_below(distance_apart_below(a, b), radius);
@@ -481,15 +544,16 @@ struct ArmCollisionChecker::Impl {
   void clearances(const JointAngles& q, ArmClearances& out, double enough) const {
     place_enclosed(q, {});
     const std::size_t n = arm.joints();
+    out.contact.reset();
+    gather({}, enough, out.contact);
     out.links.assign(n, infinity);
     if (arm.self_collision) out.pairs.assign(n * n, infinity);
     else out.pairs.clear();
-    out.contact.reset();
-    // In first_contact's order, so that the first contact recorded is the one it reports.
+    const RoundingUpward upward;
     for (std::size_t k = 0; k < n; ++k) {
-      out.links[k] = obstacle_clearance(k, enough, out.contact);
+      out.links[k] = obstacle_clearance(k, enough);
       if (arm.self_collision)
-        for (std::size_t m = k + 2; m < n; ++m) out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, enough, out.contact);
+        for (std::size_t m = k + 2; m < n; ++m) out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, enough);
     }
   }
 
@@ -507,20 +571,18 @@ struct ArmCollisionChecker::Impl {
     place_enclosed(q, spread);
     using detail::covered_above;
     using detail::lasts_below;
+    // A clearance above speed · step cannot lower the step: nothing farther is gathered.
     ArmSafeStep result;
+    gather(link_speed, horizon, result.contact);
+    if (result.contact) return result;
     double step = horizon;
-    // In first_contact's order, so that the contact reported is the one it reports. A clearance
-    // above speed · step cannot lower the step: that is what "enough" tells the measurements.
+    const RoundingUpward upward;  // covered_above and lasts_below bound in any rounding
     for (std::size_t k = 0; k < n; ++k) {
-      const double c = obstacle_clearance(k, covered_above(link_speed[k], step), result.contact);
-      if (result.contact) return result;
-      step = std::min(step, lasts_below(c, link_speed[k]));
+      step = std::min(step, lasts_below(obstacle_clearance(k, covered_above(link_speed[k], step)), link_speed[k]));
       if (arm.self_collision)
         for (std::size_t m = k + 2; m < n; ++m) {
           const double v = pair_speed[k * n + m];
-          const double cm = pair_clearance(k, m, covered_above(v, step), result.contact);
-          if (result.contact) return result;
-          step = std::min(step, lasts_below(cm, v));
+          step = std::min(step, lasts_below(pair_clearance(k, m, covered_above(v, step)), v));
         }
     }
     result.step = step;

@@ -3,6 +3,7 @@
 #include <polyplan/arm/detail/outward_rounding.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -14,30 +15,31 @@ namespace {
 
 using detail::above;
 using detail::below;
-using detail::Interval;
-using detail::RoundingUpward;
 
 // The speeds of arm_motion.hpp's motion bound for joint rotations of at most |turn[j]| (upper
 // bounds of the real turns): link_speed[k] bounds how fast any point of links[k] moves,
 // pair_speed[k * n + m] (k + 2 ≤ m, self-collision only) how fast any point of links[m] moves
-// relative to links[k]. Sums and products of non-negative numbers rounded up: upper bounds.
+// relative to links[k]. Sums and products of non-negative numbers, each rounded and then moved
+// up to the next double: upper bounds.
 void motion_speeds(const Arm& arm, const JointAngles& turn, std::vector<double>& link_speed, std::vector<double>& pair_speed) {
-  const RoundingUpward upward;
   const std::size_t n = arm.joints();
   // R_{j,k} = links[j] + … + links[k] + w/2: no point of links[k] is farther from joint j.
   const auto radius = [&](std::size_t j, std::size_t k) {
     double sum = arm.link_width / 2;
-    for (std::size_t i = j; i <= k; ++i) sum += arm.links[i];
+    for (std::size_t i = j; i <= k; ++i) sum = above(sum + arm.links[i]);
     return sum;
   };
+  const auto add = [](double& speed, double r, double t) { speed = above(speed + above(r * std::fabs(t))); };
   link_speed.assign(n, 0.0);
   for (std::size_t k = 0; k < n; ++k)
-    for (std::size_t j = 0; j <= k; ++j) link_speed[k] += radius(j, k) * std::fabs(turn[j]);
+    for (std::size_t j = 0; j <= k; ++j)
+      if (turn[j] != 0) add(link_speed[k], radius(j, k), turn[j]);
   pair_speed.assign(arm.self_collision ? n * n : 0, 0.0);
   if (arm.self_collision)
     for (std::size_t k = 0; k < n; ++k)
       for (std::size_t m = k + 2; m < n; ++m)
-        for (std::size_t j = k + 1; j <= m; ++j) pair_speed[k * n + m] += radius(j, m) * std::fabs(turn[j]);
+        for (std::size_t j = k + 1; j <= m; ++j)
+          if (turn[j] != 0) add(pair_speed[k * n + m], radius(j, m), turn[j]);
 }
 
 void require_arm_size(const ArmCollisionChecker& checker, const JointAngles& q, const char* which) {
@@ -48,23 +50,25 @@ void require_arm_size(const ArmCollisionChecker& checker, const JointAngles& q, 
 
 // The motion's turns as reals: joint j turns D_j = to_j − from_j + k_j·2π between the normalised
 // ends, k_j ∈ {−1, 0, 1} as signed_angle_difference chose it (the double `turn[j]`, which differs
-// from to_j − from_j in doubles exactly when it shifted that by two_pi). Enclosed with 2π between
-// the doubles around it.
-std::vector<Interval> real_turns(const JointAngles& from, const JointAngles& to, const JointAngles& turn) {
-  const std::size_t n = from.size();
-  std::vector<int> shift(n);
-  for (std::size_t j = 0; j < n; ++j) {
+// from to_j − from_j in doubles exactly when it shifted that by two_pi). Enclosed in [lo, hi]: 2π
+// between the doubles around two_pi, each sum rounded and moved outward to the next double.
+using Range = std::array<double, 2>;
+void real_turns(const JointAngles& from, const JointAngles& to, const JointAngles& turn, std::vector<Range>& out) {
+  out.resize(from.size());
+  for (std::size_t j = 0; j < from.size(); ++j) {
     const double between = to[j] - from[j];  // rounded to nearest, as signed_angle_difference computed it
-    shift[j] = turn[j] < between ? -1 : turn[j] > between ? 1 : 0;
+    Range d{below(between), above(between)};
+    if (turn[j] < between) d = {below(d[0] - above(two_pi)), above(d[1] - below(two_pi))};
+    else if (turn[j] > between) d = {below(d[0] + below(two_pi)), above(d[1] + above(two_pi))};
+    out[j] = d;
   }
-  std::vector<Interval> turns(n);
-  const RoundingUpward upward;
-  const Interval full_turn(below(two_pi), above(two_pi));
-  for (std::size_t j = 0; j < n; ++j) {
-    const Interval d = Interval(to[j]) - Interval(from[j]);
-    turns[j] = shift[j] < 0 ? d - full_turn : shift[j] > 0 ? d + full_turn : d;
-  }
-  return turns;
+}
+
+// The largest distance from q to the true angle from + t·D, D in `turn` and t ≥ 0 (a double),
+// rounded up.
+double spread_of(double q, double from, double t, const Range& turn) {
+  const double lo = below(from + below(t * turn[0])), hi = above(from + above(t * turn[1]));
+  return std::max(above(std::fabs(q - lo)), above(std::fabs(q - hi)));
 }
 
 }  // namespace
@@ -100,12 +104,10 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
     return certificate;
   }
 
-  const std::vector<Interval> real = real_turns(from, to, turn);
+  std::vector<Range> real;
+  real_turns(from, to, turn, real);
   JointAngles largest_turn(n);
-  {
-    const RoundingUpward upward;
-    for (std::size_t j = 0; j < n; ++j) largest_turn[j] = std::max(-real[j].inf(), real[j].sup());
-  }
+  for (std::size_t j = 0; j < n; ++j) largest_turn[j] = std::max(-real[j][0], real[j][1]);
   std::vector<double> link_speed, pair_speed;
   motion_speeds(checker.arm(), largest_turn, link_speed, pair_speed);
   // The configuration measured at t: from + t·turn in doubles (not normalised: cos and sin do not
@@ -131,11 +133,9 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
       return certificate;
     }
     t = next;
-    for (std::size_t j = 0; j < n; ++j) q[j] = from[j] + t * turn[j];
-    const RoundingUpward upward;
     for (std::size_t j = 0; j < n; ++j) {
-      const Interval truth = Interval(from[j]) + Interval(t) * real[j];
-      spread[j] = detail::farthest_from(q[j], truth.inf(), truth.sup());
+      q[j] = from[j] + t * turn[j];
+      spread[j] = spread_of(q[j], from[j], t, real[j]);
     }
   }
   // Advancement approaches a first contact from below and never lands on it: every step ends where
