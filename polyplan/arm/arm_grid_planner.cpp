@@ -355,16 +355,16 @@ std::optional<Corridor> corridor_for(const Planning& p, const std::optional<Guid
   return Corridor(guide->path, guide->n, n, p.options.torus);
 }
 
-// The path at `degrees`: its whole grid searched, or, when that is predicted too costly, only a
-// corridor around the path at twice the step (which is found the same way, up to 45 degrees).
-// Only a guide: whether it is the shortest does not matter, only that it finds the way.
-std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, double degrees) {
+// The path at `degrees`: its whole grid searched, or, when `guided` and that is predicted too
+// costly, only a corridor around the path at twice the step (which is found the same way, up to
+// 45 degrees). Only a guide: whether it is the shortest does not matter, only that it finds the way.
+std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, double degrees, bool guided) {
   const std::int64_t n = cells_per_axis(degrees);
   bool start_joined = false;
   auto level = level_problem(p, query, n, start_joined);
   if (!level) return std::nullopt;
   std::optional<GuidePath> coarser;
-  if (2 * degrees <= 45 && cells_on_the_circle(2 * degrees)) coarser = guide_path(p, query, 2 * degrees);
+  if (guided && 2 * degrees <= 45 && cells_on_the_circle(2 * degrees)) coarser = guide_path(p, query, 2 * degrees, true);
   double predicted = 0;
   std::optional<Corridor> corridor = corridor_for(p, coarser, n, predicted);
   if (corridor) {
@@ -392,11 +392,17 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   searching->record_expanded = p.record.record;
 
   // Coarse to fine: the coarse grid's path, when there is one, and only when the whole fine grid
-  // is predicted too costly.
+  // is predicted too costly. A guide without a path may have missed a passage narrower than its
+  // cells: finer guides are tried, each searched whole (the step halved while it divides 360 and
+  // stays coarser than the grid), before the whole fine grid.
   std::optional<Corridor> corridor;
+  double guide_degrees = options.coarse_degrees;
   if (options.coarse_degrees > options.resolution_degrees) {
-    p.report.facts.set("grid.coarse_degrees", options.coarse_degrees);
-    if (const auto coarse = guide_path(p, query, options.coarse_degrees)) {
+    std::optional<GuidePath> coarse = guide_path(p, query, guide_degrees, true);
+    while (!coarse && guide_degrees / 2 > options.resolution_degrees && cells_on_the_circle(guide_degrees / 2))
+      coarse = guide_path(p, query, guide_degrees /= 2, false);
+    p.report.facts.set("grid.coarse_degrees", guide_degrees);
+    if (coarse) {
       double predicted = 0;
       corridor = corridor_for(p, coarse, grid.n, predicted);
       p.report.facts.set("grid.predicted_cells", predicted);
@@ -446,7 +452,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
   if (result.over_budget) {
     p.stop_at_budget("evaluating " + std::to_string(result.cells_evaluated) + " cells",
                      corridor_failed ? "no path within " + std::to_string(radius) + " coarse cells of the " +
-                                           number_text(options.coarse_degrees) + "-degree path; the whole grid's search "
+                                           number_text(guide_degrees) + "-degree path; the whole grid's search "
                                      : "");
     return;
   }
@@ -464,7 +470,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
     std::snprintf(note, sizeof note,
                   "the shortest within %d coarse cells of the %s-degree path; the grid's shortest, not proved, is at least %.6f "
                   "rad between the same cells (option coarse 0 searches the whole grid)",
-                  radius, number_text(options.coarse_degrees).c_str(), bound);
+                  radius, number_text(guide_degrees).c_str(), bound);
     p.report.facts.set("note", note);
   }
 }

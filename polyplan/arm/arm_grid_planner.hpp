@@ -31,7 +31,10 @@ struct ArmGridOptions {
   // exact_cells cells (predicted: the coarse search's cells times the fine cells per coarse cell),
   // only a corridor of `corridor` coarse cells around the coarse path is searched, doubled up to
   // `widenings` times while it cannot prove its path the grid's shortest. coarse_degrees 0: always
-  // the whole grid. When the corridor holds no path, the whole grid is searched after all (within
+  // the whole grid. A coarse grid without a path may have missed a passage narrower than its
+  // cells: guides at half its step, a quarter, … (while they divide 360 and stay coarser than the
+  // grid) are tried, each searched whole, before the whole fine grid; grid.coarse_degrees says
+  // which guided the answer. When the corridor holds no path, the whole grid is searched after all (within
   // memory_mb; at the budget the answer is status limit, never a claim that no path exists). A*
   // and Dijkstra with lazy evaluation only (the other searches always search the whole grid).
   double coarse_degrees = 5;

@@ -389,5 +389,29 @@ TEST(ArmGridPlanner, ACorridorWithoutAPathGivesWayToTheWholeGrid) {
   EXPECT_EQ(stopped.facts.text("stopped_by"), "memory limit");
 }
 
+// A narrow passage that the 5-degree guide misses and the 1-degree grid has: among these points
+// the 5-degree grid holds no path (searched whole), the 2-degree one does. The planner then tries
+// a 2.5-degree guide and plans the 1-degree grid in its corridor (the whole 1-degree grid finds
+// the same length, 10.1175 rad, evaluating 21 M cells instead of 2 M).
+TEST(ArmGridPlanner, AGuideThatMissesAPassageGivesWayToAFinerGuide) {
+  const ArmProblem p = parse_arm_problem(R"({"links": [1, 1, 1], "link_width": 0.1,
+    "points": [[-1.27, 0.812], [1.509, 2.25], [0.479, -0.178], [2.603, -0.215], [1.467, -0.475], [0.476, 2.684],
+               [1.186, -1.958], [-2.076, -0.249], [-0.646, 1.004], [0.952, 0.434]],
+    "start": [3.697, 1.802, 5.088], "goal": [0.283, 5.675, 4.356]})",
+                                         "passage");
+  ArmGridOptions coarse;
+  coarse.coarse_degrees = 0;
+  const auto missed = plan_once(p, p.queries[0], coarse);
+  EXPECT_FALSE(missed.found);
+  EXPECT_EQ(missed.status, PlanStatus::not_found) << "a grid without a path is not a proof about the arm";
+
+  ArmGridOptions fine;
+  fine.resolution_degrees = 1;
+  const auto found = plan_once(p, p.queries[0], fine);
+  expect_valid(p, p.queries[0], found, true);
+  EXPECT_EQ(found.facts.number("grid.coarse_degrees"), 2.5);
+  EXPECT_NEAR(found.length, 10.117523757709614, 1e-9);
+}
+
 }  // namespace
 }  // namespace polyplan
