@@ -1,7 +1,9 @@
 // polyplan arm ARM.json [--method NAME] [--option NAME=VALUE]... [--NAME VALUE]... [--query NAME]
 //                       [--json FILE|-] [--svg OUT.svg] [--strobe OUT.svg [--every K]]
 // An n-link arm's queries answered by one arm planner of the registry, built once; every query of
-// the file, or the one --query names.
+// the file, or the one --query names. A query whose goal is a point for the hand is planned to its
+// goal set (arm/arm_goal_set.hpp); the summary line says which IK solution the path reaches, and
+// the pictures mark the point.
 #include "cli/command.hpp"
 #include "cli/planner_choice.hpp"
 #include "cli/report_output.hpp"
@@ -63,11 +65,10 @@ int run_arm(const ArmCommand& command) {
     for (const auto& [name, value] : command.planner->values()) title += " · " + name + " " + value;
     try {
       using Kind = ArmPictureOptions::Kind;
-      if (!command.svg.empty())
-        draw_plan(problem, report, {Kind::animation, title}).write(picture_path(command.svg, query->name, queries.size()));
-      if (!command.strobe.empty())
-        draw_plan(problem, report, {Kind::strobe, title, command.every})
-            .write(picture_path(command.strobe, query->name, queries.size()));
+      const ArmPictureOptions animation{Kind::animation, title, 0, 1, query->goal_point};
+      const ArmPictureOptions strobe{Kind::strobe, title, command.every, 1, query->goal_point};
+      if (!command.svg.empty()) draw_plan(problem, report, animation).write(picture_path(command.svg, query->name, queries.size()));
+      if (!command.strobe.empty()) draw_plan(problem, report, strobe).write(picture_path(command.strobe, query->name, queries.size()));
     } catch (const std::runtime_error& e) {  // a picture that cannot be written
       throw InputError(e.what());
     }

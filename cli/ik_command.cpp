@@ -1,8 +1,8 @@
 // polyplan ik ARM.json --target X,Y [--orientation DEG] [--all] [--collision-free] [--json FILE|-]
 // [--svg OUT.svg]: joint angles that put the arm's hand at the target (arm/inverse_kinematics.hpp:
 // closed form for two links, and for three with an orientation; damped least squares and FABRIK
-// otherwise), each with its end-effector error, optionally only those free of the obstacles; the
-// picture draws every solution at once.
+// otherwise; within the arm file's joint limits), each with its end-effector error, optionally only
+// those free of the obstacles; the picture draws every solution at once.
 #include "cli/command.hpp"
 
 #include <polyplan/arm/arm_collision.hpp>
@@ -25,16 +25,13 @@ struct IkCommandOptions {
   std::string json, svg;
 };
 
-IkAnswer solve(const Arm& arm, Eigen::Vector2d target, const IkCommandOptions& o) {
-  const bool oriented = !std::isnan(o.orientation);
-  const double radians = o.orientation * M_PI / 180;
-  if (arm.joints() == 2 && !oriented) return two_link_ik(arm, target);
-  if (arm.joints() == 3 && oriented) return three_link_ik(arm, target, radians);
+IkOptions ik_options(const Arm& arm, const IkCommandOptions& o) {
   IkOptions options;
-  if (oriented) options.orientation = radians;
+  if (!std::isnan(o.orientation)) options.orientation = o.orientation * M_PI / 180;
+  options.limits = arm.limits;
   options.all = o.all;
   options.seeds = o.all ? 32 : 8;
-  return numeric_ik(arm, target, options);
+  return options;
 }
 
 int run_ik(const IkCommandOptions& o) {
@@ -44,7 +41,8 @@ int run_ik(const IkCommandOptions& o) {
   const std::vector<double> t = comma_numbers(o.target, "--target");
   if (t.size() != 2) throw InputError("--target " + o.target + ": expected X,Y");
   const Eigen::Vector2d target(t[0], t[1]);
-  IkAnswer answer = solve(problem.arm, target, o);
+  const IkOptions options = ik_options(problem.arm, o);
+  IkAnswer answer = inverse_kinematics(problem.arm, target, options);
   std::vector<bool> free;
   const ArmCollisionChecker checker(problem);
   for (const IkSolution& s : answer.solutions) free.push_back(checker.is_free(s.angles));
@@ -69,6 +67,7 @@ int run_ik(const IkCommandOptions& o) {
   if (!o.svg.empty()) {
     ArmPlanPicture picture;
     picture.problem = &problem;
+    picture.target = WorkspaceGoal{target, options.orientation};
     std::vector<std::string> labels;
     for (std::size_t i = 0; i < answer.solutions.size(); ++i) {
       picture.motion.push_back(answer.solutions[i].angles);

@@ -25,6 +25,13 @@ std::string report_line(const std::string& query, const PlanReport<Configuration
     line += ", roadmap " + std::to_string(facts.count("roadmap.vertices")) + " vertices " +
             std::to_string(facts.count("roadmap.edges")) + " edges";
   if (facts.contains("gear_changes")) line += ", " + std::to_string(facts.count("gear_changes")) + " gear change(s)";
+  if (facts.contains("goal.error") && facts.contains("goal.reached") && facts.contains("goal.candidates")) {
+    char goal[160];
+    std::snprintf(goal, sizeof goal, ", ends at IK solution %lld of %lld (goal.reached %lld), the hand %.2g from the goal point",
+                  static_cast<long long>(facts.count("goal.reached") + 1), static_cast<long long>(facts.count("goal.candidates")),
+                  static_cast<long long>(facts.count("goal.reached")), facts.number("goal.error"));
+    line += goal;
+  }
   if (facts.contains("note")) line += "; " + facts.text("note");
   return line;
 }

@@ -628,12 +628,23 @@ std::size_t ArmCollisionChecker::checks() const { return impl_->checks; }
 
 std::optional<std::string> query_not_free(const ArmCollisionChecker& checker, const ArmQuery& query) {
   const std::size_t joints = checker.arm().joints();
-  if (query.start.size() != joints || query.goal.size() != joints)
+  // A goal in the workspace has no configuration to test here: its goal set (arm/arm_goal_set.hpp)
+  // holds only free configurations.
+  const bool workspace = query.goal_point.has_value();
+  if (workspace && !query.goal.empty())
+    return "the query " + query.name + " has both goal angles and a goal point: its goal is one or the other";
+  if (workspace && query.start.size() != joints)
+    return "the query " + query.name + " has " + std::to_string(query.start.size()) + " start angles for an arm of " +
+           std::to_string(joints) + " joints";
+  if (!workspace && (query.start.size() != joints || query.goal.size() != joints))
     return "the query " + query.name + " has " + std::to_string(query.start.size()) + " start and " +
            std::to_string(query.goal.size()) + " goal angles for an arm of " + std::to_string(joints) + " joints";
-  for (const auto* end : {&query.start, &query.goal})
-    if (const auto contact = checker.first_contact(*end))
-      return std::string(end == &query.start ? "the start" : "the goal") + " collides: " + contact->describe();
+  if (workspace && !(std::isfinite(query.goal_point->point.x()) && std::isfinite(query.goal_point->point.y()) &&
+                     std::isfinite(query.goal_point->orientation.value_or(0))))
+    return "the query " + query.name + "'s goal point (or orientation) is not a finite number";
+  if (const auto contact = checker.first_contact(query.start)) return "the start collides: " + contact->describe();
+  if (workspace) return std::nullopt;
+  if (const auto contact = checker.first_contact(query.goal)) return "the goal collides: " + contact->describe();
   return std::nullopt;
 }
 

@@ -127,7 +127,10 @@ class ArmCollisionChecker {
 
 // Why the query cannot be planned for the checker's arm: angles of the wrong count ("the query
 // easy has 2 start and 3 goal angles for an arm of 3 joints") or a start or goal that collides
-// ("the start collides: link 2 meets obstacles[0]"); nullopt when both are free. Planners' why_not.
+// ("the start collides: link 2 meets obstacles[0]"); nullopt when both are free. A goal in the
+// workspace (goal_point) is not tested here — its goal set holds free configurations only — but a
+// query with both goal angles and a goal point, or a goal point that is not finite, is refused.
+// Planners' why_not.
 std::optional<std::string> query_not_free(const ArmCollisionChecker&, const ArmQuery&);
 
 }  // namespace polyplan

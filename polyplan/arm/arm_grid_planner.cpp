@@ -1,5 +1,6 @@
 #include <polyplan/arm/arm_grid_planner.hpp>
 
+#include <polyplan/arm/arm_goal_set.hpp>
 #include <polyplan/arm/arm_grid_search.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/plan/stopwatch.hpp>
@@ -91,12 +92,6 @@ std::optional<std::vector<GridCoordinate>> join_to_grid(const AngleGrid& grid, c
   return std::nullopt;
 }
 
-JointAngles normalized(const JointAngles& q) {
-  JointAngles out(q.size());
-  std::transform(q.begin(), q.end(), out.begin(), [](double a) { return normalize_angle(a); });
-  return out;
-}
-
 std::string number_text(double x) {
   char text[32];
   std::snprintf(text, sizeof text, "%g", x);
@@ -151,6 +146,32 @@ ArmGridPlanner::ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options
 
 namespace {
 
+// What a query asks of the grid: a path from its start to any one of its goal configurations (its
+// goal set, normalised), which the path then ends at exactly.
+struct GridQuery {
+  const JointAngles& start;
+  const std::vector<JointAngles>& goals;
+};
+
+// The cells a level's goals join: the search's goals, and which of the query's goals each joins.
+struct GoalCells {
+  std::vector<std::vector<GridCoordinate>> cells;
+  std::vector<std::size_t> goal_of;
+};
+
+// Each goal joined to the grid as the start is (join_to_grid), in order; a goal that joins no cell
+// is left out.
+GoalCells join_goals(const AngleGrid& grid, const ArmCollisionChecker& checker, const std::vector<JointAngles>& goals,
+                     MotionTally& motions) {
+  GoalCells joined;
+  for (std::size_t i = 0; i < goals.size(); ++i)
+    if (auto cell = join_to_grid(grid, checker, goals[i], motions)) {
+      joined.cells.push_back(std::move(*cell));
+      joined.goal_of.push_back(i);
+    }
+  return joined;
+}
+
 // What every way of searching the grid shares: the query's report and its counts.
 struct Planning {
   const ArmCollisionChecker& checker;
@@ -162,6 +183,7 @@ struct Planning {
   MotionTally& motions;
   std::size_t cells_evaluated = 0, expanded = 0, generated = 0, moves_by_clearance = 0;
   double peak_mb = 0;
+  std::size_t goal_reached = 0;  // which of the query's goals the path ends at
 
   // The query stopped at its memory budget after `what` (`context`: what came before, if anything).
   void stop_at_budget(const std::string& what, const std::string& context = "") {
@@ -169,9 +191,9 @@ struct Planning {
                                        number_text(options.memory_mb) + " MB (option memory_mb: raise it with --memory_mb N)");
     report.facts.set("stopped_by", "memory limit");
   }
-  std::string no_join(bool start_joined) const {
-    return std::string("no grid cell next to the ") + (start_joined ? "goal" : "start") +
-           " is reached from it by a certified free motion; try a finer resolution";
+  std::string no_join(bool start_joined, std::size_t goals) const {
+    const std::string end = start_joined ? (goals == 1 ? "goal" : "any of the " + std::to_string(goals) + " goals") : "start";
+    return "no grid cell next to the " + end + " is reached from it by a certified free motion; try a finer resolution";
   }
   // With options.record and two joints, the C-space grid as the search left it (cell k centred on
   // the angle k·step), for the picture.
@@ -188,15 +210,16 @@ struct Planning {
       for (GridCoordinate x = 0; x < grid.n; ++x) cells->states.push_back(static_cast<std::uint8_t>(state_of(x, y)));
     report.cells = std::move(cells);
   }
-  std::string not_connected() const {
-    return std::string("start and goal are not connected on the ") + (options.torus ? "torus" : "interval") + " grid at " +
-           number_text(options.resolution_degrees) + " degrees";
+  std::string not_connected(std::size_t goals) const {
+    const std::string ends = goals == 1 ? "start and goal are not connected" : "the start is connected to none of its " + std::to_string(goals) + " goals";
+    return ends + " on the " + (options.torus ? "torus" : "interval") + " grid at " + number_text(options.resolution_degrees) + " degrees";
   }
-  void keep_path(const ArmQuery& query, const std::vector<std::vector<GridCoordinate>>& cells) {
+  void keep_path(const GridQuery& query, const std::vector<std::vector<GridCoordinate>>& cells, std::size_t goal) {
     report.succeed();
-    report.path.push_back(normalized(query.start));
+    goal_reached = goal;
+    report.path.push_back(normalize_angles(query.start));
     for (const auto& c : cells) report.path.push_back(grid.configuration(c));
-    report.path.push_back(normalized(query.goal));
+    report.path.push_back(query.goals[goal]);
     // A start or goal exactly on its cell would repeat it.
     report.path.erase(std::unique(report.path.begin(), report.path.end()), report.path.end());
     report.length = arm_path_length(report.path, options.torus);
@@ -204,9 +227,10 @@ struct Planning {
   }
 };
 
-// search/'s shortest_path on GridGraph, with a move test that certifies each motion: every search
-// algorithm, and eager evaluation. Its hash maps cost about 330 bytes a cell.
-void plan_on_grid_graph(Planning& p, const ArmQuery& query) {
+// search/'s shortest_path_to_any on GridGraph, with a move test that certifies each motion: every
+// search algorithm, and eager evaluation. Its hash maps cost about 330 bytes a cell. A*'s heuristic
+// is the distance to the nearest goal cell.
+void plan_on_grid_graph(Planning& p, const GridQuery& query) {
   constexpr double bytes_per_cell = 330;
   const auto max_cells = static_cast<std::size_t>(p.options.memory_mb * 1e6 / bytes_per_cell);
   const AngleGrid& grid = p.grid;
@@ -231,17 +255,28 @@ void plan_on_grid_graph(Planning& p, const ArmQuery& query) {
     p.peak_mb = static_cast<double>(p.cells_evaluated) * bytes_per_cell / 1e6;
     p.keep_cells([&](GridCoordinate x, GridCoordinate y) { return g.state(g.cell({x, y})); });
   };
-  std::optional<std::vector<GridCoordinate>> start, goal;
+  std::optional<std::vector<GridCoordinate>> start;
+  GoalCells goals;
+  std::vector<GridCell> goal_cells;
   SearchResult<GridCell> result;
   try {
     if (!p.options.lazy) g.evaluate_all();
     start = join_to_grid(grid, p.checker, query.start, p.motions);
-    goal = join_to_grid(grid, p.checker, query.goal, p.motions);
-    if (start && goal) {
+    goals = join_goals(grid, p.checker, query.goals, p.motions);
+    if (start && !goals.cells.empty()) {
       SearchOptions searching = p.options.search;
       searching.record_expanded = p.record.record;
-      const GridCell to = g.cell(*goal);
-      result = shortest_path(g, g.cell(*start), to, searching, GridDistanceTo(g, to, GridMetric::sum_of_axes), GridMoveCost{&g});
+      std::vector<GridDistanceTo> distances;
+      for (const auto& cell : goals.cells) {
+        goal_cells.push_back(g.cell(cell));
+        distances.emplace_back(g, goal_cells.back(), GridMetric::sum_of_axes);
+      }
+      const auto nearest_goal = [&](GridCell c) {
+        double nearest = distances.front()(c);
+        for (std::size_t k = 1; k < distances.size(); ++k) nearest = std::min(nearest, distances[k](c));
+        return nearest;
+      };
+      result = shortest_path_to_any(g, g.cell(*start), goal_cells, searching, nearest_goal, GridMoveCost{&g});
     }
   } catch (const BudgetReached&) {
     p.stop_at_budget("evaluating " + std::to_string(max_cells) + " cells (about 330 bytes each)");
@@ -249,20 +284,21 @@ void plan_on_grid_graph(Planning& p, const ArmQuery& query) {
     return;
   }
   keep_cells();
-  if (!start || !goal) {
-    p.report.fail(PlanStatus::not_found, p.no_join(start.has_value()));
+  if (!start || goals.cells.empty()) {
+    p.report.fail(PlanStatus::not_found, p.no_join(start.has_value(), query.goals.size()));
     return;
   }
   p.expanded = result.expanded;
   p.generated = result.generated;
   for (const GridCell c : result.expanded_order) p.report.expanded.push_back(grid.configuration(g, c));
   if (!result.found) {
-    p.report.fail(PlanStatus::not_found, p.not_connected());
+    p.report.fail(PlanStatus::not_found, p.not_connected(query.goals.size()));
     return;
   }
   std::vector<std::vector<GridCoordinate>> cells;
   for (const GridCell c : result.path) cells.push_back(g.coordinates(c));
-  p.keep_path(query, cells);
+  const auto reached = static_cast<std::size_t>(std::find(goal_cells.begin(), goal_cells.end(), result.path.back()) - goal_cells.begin());
+  p.keep_path(query, cells, goals.goal_of[reached]);
   p.report.facts.set("grid.shortest", p.options.search.algorithm == Search::astar || p.options.search.algorithm == Search::dijkstra
                                           ? "proved" : "not claimed");
 }
@@ -327,21 +363,26 @@ struct GuidePath {
   double predicted_cells = 0;
 };
 
-// The search of one level's grid (n cells per joint) between the cells the start and goal join,
-// or nothing when one of them joins no cell.
-std::optional<ArmGridSearchProblem> level_problem(Planning& p, const ArmQuery& query, std::int64_t n, bool& start_joined) {
+// The search of one level's grid (n cells per joint) from the cell the start joins to the cells the
+// goals join, and which goal each of those is; nothing when the start or every goal joins no cell.
+struct LevelProblem {
+  ArmGridSearchProblem search;
+  std::vector<std::size_t> goal_of;
+};
+std::optional<LevelProblem> level_problem(Planning& p, const GridQuery& query, std::int64_t n, bool& start_joined) {
   const AngleGrid grid{n, two_pi / static_cast<double>(n), p.options.torus};
   const auto start = join_to_grid(grid, p.checker, query.start, p.motions);
   start_joined = start.has_value();
-  const auto goal = join_to_grid(grid, p.checker, query.goal, p.motions);
-  if (!start || !goal) return std::nullopt;
-  ArmGridSearchProblem level;
-  level.cells_per_axis = n;
-  level.torus = p.options.torus;
-  level.start = *start;
-  level.goal = *goal;
-  level.use_heuristic = p.options.search.algorithm == Search::astar;
-  level.memory_bytes = static_cast<std::size_t>(p.options.memory_mb * 1e6);
+  GoalCells goals = join_goals(grid, p.checker, query.goals, p.motions);
+  if (!start || goals.cells.empty()) return std::nullopt;
+  LevelProblem level;
+  level.search.cells_per_axis = n;
+  level.search.torus = p.options.torus;
+  level.search.start = *start;
+  level.search.goals = std::move(goals.cells);
+  level.search.use_heuristic = p.options.search.algorithm == Search::astar;
+  level.search.memory_bytes = static_cast<std::size_t>(p.options.memory_mb * 1e6);
+  level.goal_of = std::move(goals.goal_of);
   return level;
 }
 
@@ -358,7 +399,7 @@ std::optional<Corridor> corridor_for(const Planning& p, const std::optional<Guid
 // The path at `degrees`: its whole grid searched, or, when `guided` and that is predicted too
 // costly, only a corridor around the path at twice the step (which is found the same way, up to
 // 45 degrees). Only a guide: whether it is the shortest does not matter, only that it finds the way.
-std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, double degrees, bool guided) {
+std::optional<GuidePath> guide_path(Planning& p, const GridQuery& query, double degrees, bool guided) {
   const std::int64_t n = cells_per_axis(degrees);
   bool start_joined = false;
   auto level = level_problem(p, query, n, start_joined);
@@ -369,9 +410,9 @@ std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, double d
   std::optional<Corridor> corridor = corridor_for(p, coarser, n, predicted);
   if (corridor) {
     corridor->set_radius(p.options.corridor);
-    level->in_corridor = [&](std::span<const std::int32_t> x) { return corridor->contains(x); };
+    level->search.in_corridor = [&](std::span<const std::int32_t> x) { return corridor->contains(x); };
   }
-  ArmGridSearch search(p.checker, *level);
+  ArmGridSearch search(p.checker, level->search);
   const ArmGridSearchResult found = search.run();
   count(p, found);
   if (!found.found) return std::nullopt;
@@ -380,16 +421,17 @@ std::optional<GuidePath> guide_path(Planning& p, const ArmQuery& query, double d
 
 // The compact lazy search (arm_grid_search.hpp), coarse to fine when the grid is finer than
 // options.coarse_degrees.
-void plan_compactly(Planning& p, const ArmQuery& query) {
+void plan_compactly(Planning& p, const GridQuery& query) {
   const ArmGridOptions& options = p.options;
   const AngleGrid& grid = p.grid;
   bool start_joined = false;
-  auto searching = level_problem(p, query, grid.n, start_joined);
-  if (!searching) {
-    p.report.fail(PlanStatus::not_found, p.no_join(start_joined));
+  auto level = level_problem(p, query, grid.n, start_joined);
+  if (!level) {
+    p.report.fail(PlanStatus::not_found, p.no_join(start_joined, query.goals.size()));
     return;
   }
-  searching->record_expanded = p.record.record;
+  ArmGridSearchProblem& searching = level->search;
+  searching.record_expanded = p.record.record;
 
   // Coarse to fine: the coarse grid's path, when there is one, and only when the whole fine grid
   // is predicted too costly. A guide without a path may have missed a passage narrower than its
@@ -409,7 +451,7 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
     }
   }
 
-  ArmGridSearch search(p.checker, *searching);
+  ArmGridSearch search(p.checker, searching);
   ArmGridSearchResult result;
   int radius = options.corridor, rounds = 0;
   for (;;) {
@@ -457,10 +499,10 @@ void plan_compactly(Planning& p, const ArmQuery& query) {
     return;
   }
   if (!result.found) {
-    p.report.fail(PlanStatus::not_found, p.not_connected());
+    p.report.fail(PlanStatus::not_found, p.not_connected(query.goals.size()));
     return;
   }
-  p.keep_path(query, result.path);
+  p.keep_path(query, result.path, level->goal_of[result.goal_reached]);
   const bool proved = result.cost_steps <= result.outside_bound_steps;
   p.report.facts.set("grid.shortest", proved ? "proved" : "corridor");
   if (!proved) {
@@ -494,12 +536,18 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
   Planning p{checker_, options_, grid, record, joints, report, motions};
   if (auto why = query_not_free(checker_, query)) {
     report.fail(PlanStatus::invalid_query, *why);
+  } else if (const ArmGoalSet goal_set = arm_goal_set(checker_, query); goal_set.goals.empty()) {
+    report.fail(goal_set.status, goal_set.why_none);
   } else {
+    if (goal_set.goals.size() > 1) facts.set("goal.candidates", goal_set.goals.size());
+    const std::vector<JointAngles> goals = goal_set.configurations();
+    const GridQuery grid_query{query.start, goals};
     const bool compact = options_.lazy && (options_.search.algorithm == Search::astar || options_.search.algorithm == Search::dijkstra);
     if (compact)
-      plan_compactly(p, query);
+      plan_compactly(p, grid_query);
     else
-      plan_on_grid_graph(p, query);
+      plan_on_grid_graph(p, grid_query);
+    if (report.found) set_goal_facts(goal_set, p.goal_reached, facts);
   }
   facts.set("cells_evaluated", p.cells_evaluated);
   facts.set("moves_checked", motions.checked);

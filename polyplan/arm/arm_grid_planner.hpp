@@ -9,7 +9,9 @@
 // Registered as the arm planner `grid`.
 //
 // The returned path begins exactly at the start and ends exactly at the goal; they are joined to a
-// nearby free grid cell by a motion certified like every other.
+// nearby free grid cell by a motion certified like every other. A goal in the workspace (the hand at
+// a point) is its goal set (arm/arm_goal_set.hpp): every goal configuration is joined to its cell,
+// and the path ends at the nearest one the grid reaches (fewest grid steps).
 #include <polyplan/arm/arm_collision.hpp>
 #include <polyplan/geometry/angles.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
@@ -64,8 +66,12 @@ class ArmGridPlanner final : public Planner<PlanarArm> {
   // search.algorithm, search.expanded, search.generated; coarse to fine also grid.coarse_degrees,
   // grid.corridor (the final half-width in coarse cells), grid.rounds, grid.whole_grid (true when
   // the corridor held no path and the whole grid was searched).
+  // With several goal configurations (a workspace goal's) also goal.candidates, and on success
+  // goal.reached and the other facts of set_goal_facts (arm/arm_goal_set.hpp), as the sampling
+  // planners give them.
   // A start or goal in collision is an answer (found = false, why_not names the contact); so is
-  // a query of the wrong size. With options.record and two joints, report.cells is the C-space
+  // a query of the wrong size, and a goal point with no goal configuration (status no_path when it
+  // is out of reach, not_found otherwise). With options.record and two joints, report.cells is the C-space
   // grid (angle k·step is the centre of cell k).
   PlanReport<JointAngles> plan(const ArmQuery& query, const QueryOptions& options = {}) override;
 

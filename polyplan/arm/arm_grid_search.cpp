@@ -86,13 +86,9 @@ struct ArmGridSearch::Impl {
     // Cells are numbered in 64 bits.
     if (static_cast<double>(joints) * std::log2(static_cast<double>(n)) >= 63)
       throw std::invalid_argument("ArmGridSearch: " + std::to_string(n) + "^" + std::to_string(joints) + " cells cannot be numbered in 63 bits");
-    for (const auto* cell : {&problem.start, &problem.goal}) {
-      if (cell->size() != joints)
-        throw std::invalid_argument("ArmGridSearch: " + std::to_string(cell->size()) + " coordinates for " +
-                                    std::to_string(joints) + " joints");
-      for (const std::int32_t x : *cell)
-        if (x < 0 || x >= n) throw std::invalid_argument("ArmGridSearch: coordinate " + std::to_string(x) + " outside [0, n)");
-    }
+    if (problem.goals.empty()) throw std::invalid_argument("ArmGridSearch: no goal cell");
+    require_cell(problem.start);
+    for (const auto& goal : problem.goals) require_cell(goal);
     step = two_pi / static_cast<double>(n);
     move = longest_move(step);
     unit = detail::above(move / 255);
@@ -104,6 +100,13 @@ struct ArmGridSearch::Impl {
     configuration_a.resize(joints);
     configuration_b.resize(joints);
     safe_scratch.resize(joints);
+  }
+
+  void require_cell(const std::vector<std::int32_t>& cell) const {
+    if (cell.size() != joints)
+      throw std::invalid_argument("ArmGridSearch: " + std::to_string(cell.size()) + " coordinates for " + std::to_string(joints) + " joints");
+    for (const std::int32_t x : cell)
+      if (x < 0 || x >= n) throw std::invalid_argument("ArmGridSearch: coordinate " + std::to_string(x) + " outside [0, n)");
   }
 
   std::size_t bytes() const { return blocks.size() * block_bytes + block_index.size() * 32 + queue_bytes; }
@@ -168,13 +171,17 @@ struct ArmGridSearch::Impl {
 
   std::int64_t heuristic(const Coordinates& x) const {
     if (!problem.use_heuristic) return 0;
-    std::int64_t h = 0;
-    for (std::size_t i = 0; i < joints; ++i) {
-      std::int64_t d = std::abs(std::int64_t{x[i]} - problem.goal[i]);
-      if (problem.torus) d = std::min(d, n - d);
-      h += d;
+    std::int64_t nearest = std::numeric_limits<std::int64_t>::max();
+    for (const auto& goal : problem.goals) {
+      std::int64_t h = 0;
+      for (std::size_t i = 0; i < joints; ++i) {
+        std::int64_t d = std::abs(std::int64_t{x[i]} - goal[i]);
+        if (problem.torus) d = std::min(d, n - d);
+        h += d;
+      }
+      nearest = std::min(nearest, h);
     }
-    return h;
+    return nearest;
   }
 
   // False, pushing nothing, when the bucket would grow beyond the budget.
@@ -220,9 +227,8 @@ struct ArmGridSearch::Impl {
 
   ArmGridSearchResult run() {
     begin_run();
-    Coordinates x{}, y{}, goal{};
+    Coordinates x{}, y{};
     std::copy(problem.start.begin(), problem.start.end(), x.begin());
-    std::copy(problem.goal.begin(), problem.goal.end(), goal.begin());
     std::size_t offset = 0;
     Block* b = locate(x, offset, true);
     if (!b) return finish();
@@ -231,7 +237,12 @@ struct ArmGridSearch::Impl {
     b->g[offset] = 0;
     ++result.generated;
     if (!push(id(x), heuristic(x))) return finish();
-    const std::uint64_t goal_id = id(goal);
+    std::vector<std::uint64_t> goal_ids;
+    for (const auto& goal : problem.goals) {
+      Coordinates g{};
+      std::copy(goal.begin(), goal.end(), g.begin());
+      goal_ids.push_back(id(g));
+    }
 
     for (std::size_t f = 0; f < buckets.size(); ++f) {
       while (!buckets[f].empty()) {
@@ -244,8 +255,9 @@ struct ArmGridSearch::Impl {
         b->flags[offset] |= closed_bit;
         ++result.expanded;
         if (problem.record_expanded) result.expanded_order.emplace_back(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(joints));
-        if (cell == goal_id) {
-          trace_path(goal);
+        if (const auto reached = std::find(goal_ids.begin(), goal_ids.end(), cell); reached != goal_ids.end()) {
+          result.goal_reached = static_cast<std::size_t>(reached - goal_ids.begin());
+          trace_path(x);
           return finish();
         }
         std::array<std::uint8_t, max_joints> here_safe;

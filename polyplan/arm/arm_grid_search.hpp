@@ -34,8 +34,12 @@ namespace polyplan {
 struct ArmGridSearchProblem {
   std::int64_t cells_per_axis = 72;  // n: the angles k · 2π/n, k in [0, n)
   bool torus = true;                 // false: an axis ends at 0 and n − 1
-  std::vector<std::int32_t> start, goal;  // cell coordinates
-  bool use_heuristic = true;         // A* with the grid distance ignoring obstacles; false: Dijkstra
+  std::vector<std::int32_t> start;  // cell coordinates
+  // The cells the path may end at (at least one): the search stops at the first it expands, the
+  // nearest. A*'s heuristic is the grid distance to the nearest of them, ignoring obstacles (a minimum
+  // of consistent heuristics, so consistent itself).
+  std::vector<std::vector<std::int32_t>> goals;
+  bool use_heuristic = true;         // A*; false: Dijkstra
   std::size_t memory_bytes = std::size_t{1} << 30;  // the search stops when its tables would exceed it
   bool record_expanded = false;
   // Cells the search may enter (coarse-to-fine): empty for every cell.
@@ -46,6 +50,7 @@ struct ArmGridSearchResult {
   bool found = false;
   bool over_budget = false;  // stopped at memory_bytes
   std::vector<std::vector<std::int32_t>> path;  // start … goal, cell coordinates
+  std::size_t goal_reached = 0;                 // which of the problem's goals the path ends at (the first equal)
   std::int64_t cost_steps = 0;                  // path.size() − 1 when found
   // A lower bound, in steps, on the cost of any path that enters a cell outside the corridor
   // (infinity, as max(), when the search never stepped out of it): the corridor's path is the
@@ -70,8 +75,8 @@ enum class ArmCellState : std::uint8_t { unknown, free, blocked };
 
 class ArmGridSearch {
  public:
-  // `checker` must outlive the search. Throws std::invalid_argument for start or goal coordinates
-  // of the wrong count or outside [0, n).
+  // `checker` must outlive the search. Throws std::invalid_argument for no goal, and for start or
+  // goal coordinates of the wrong count or outside [0, n).
   ArmGridSearch(const ArmCollisionChecker& checker, ArmGridSearchProblem problem);
   ~ArmGridSearch();
   ArmGridSearch(const ArmGridSearch&) = delete;

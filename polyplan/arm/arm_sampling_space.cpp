@@ -1,17 +1,14 @@
 #include <polyplan/arm/arm_sampling_space.hpp>
 
 #include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_goal_set.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 
 #include <numbers>
+#include <optional>
 
 namespace polyplan {
 namespace {
-
-JointAngles normalized(JointAngles q) {
-  for (double& angle : q) angle = normalize_angle(angle);
-  return q;
-}
 
 class ArmSamplingSpace final : public SamplingSpace<PlanarArm> {
  public:
@@ -33,12 +30,37 @@ class ArmSamplingSpace final : public SamplingSpace<PlanarArm> {
   bool is_free(const JointAngles& q) override { return checker_.is_free(q); }
   bool motion_is_free(const JointAngles& from, const JointAngles& to) override { return polyplan::motion_is_free(checker_, from, to); }
   std::optional<std::string> query_not_free(const ArmQuery& query) override { return polyplan::query_not_free(checker_, query); }
-  JointAngles start(const ArmQuery& query) const override { return normalized(query.start); }
-  JointAngles goal(const ArmQuery& query) const override { return normalized(query.goal); }
+  std::optional<std::string> no_path(const ArmQuery& query) override { return why_none(query, PlanStatus::no_path); }
+  std::optional<std::string> no_goal_found(const ArmQuery& query) override { return why_none(query, PlanStatus::not_found); }
+  JointAngles start(const ArmQuery& query) const override { return normalize_angles(query.start); }
+  // A goal in the workspace has no one configuration: goals() gives its set.
+  JointAngles goal(const ArmQuery& query) const override { return normalize_angles(query.goal); }
+  std::vector<JointAngles> goals(const ArmQuery& query) override { return goal_set(query).configurations(); }
   std::string certificate_method() const override { return "conservative advancement (arm/arm_motion.hpp)"; }
+  std::vector<JointAngles> reported_path(std::vector<JointAngles> path, Facts& facts) const override {
+    if (goal_set_ && !path.empty()) set_goal_facts(goal_set_->set, goal_set_->set.index_of(path.back()), facts);
+    return path;
+  }
 
  private:
+  // The last query's goal set, made once for the questions plan() asks of one query in turn.
+  struct GoalSetOf {
+    ArmQuery query;
+    ArmGoalSet set;
+  };
+  const ArmGoalSet& goal_set(const ArmQuery& query) {
+    if (!goal_set_ || goal_set_->query.goal != query.goal || goal_set_->query.goal_point != query.goal_point)
+      goal_set_ = GoalSetOf{query, arm_goal_set(checker_, query)};
+    return goal_set_->set;
+  }
+  std::optional<std::string> why_none(const ArmQuery& query, PlanStatus status) {
+    const ArmGoalSet& set = goal_set(query);
+    if (set.goals.empty() && set.status == status) return set.why_none;
+    return std::nullopt;
+  }
+
   ArmCollisionChecker checker_;
+  std::optional<GoalSetOf> goal_set_;
 };
 
 }  // namespace

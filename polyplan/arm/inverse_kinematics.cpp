@@ -47,29 +47,43 @@ double end_orientation(const JointAngles& angles) {
   return wrap(sum);
 }
 
+HandReach hand_reach(const std::vector<double>& links, Eigen::Vector2d target) {
+  // Every double is a rational: the sums, the squares and the comparisons are exact.
+  Rational sum(0), longest(0);
+  for (const double l : links) {
+    sum += Rational(l);
+    longest = std::max(longest, Rational(l));
+  }
+  Rational inner = 2 * longest - sum;
+  if (inner < 0) inner = 0;
+  const Rational x(target.x()), y(target.y());
+  const Rational d2 = x * x + y * y, outer_margin = sum * sum - d2, inner_margin = d2 - inner * inner;
+  return {to_double(inner), to_double(sum), sgn(outer_margin), sgn(inner_margin), to_double(outer_margin), to_double(inner_margin)};
+}
+
 IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target) {
   require_links(arm, 2, "two_link_ik");
-  // The annulus, exactly: every double is a rational.
-  const Rational l1(arm.links[0]), l2(arm.links[1]), x(target.x()), y(target.y());
-  const Rational d2 = x * x + y * y, outer = (l1 + l2) * (l1 + l2), inner = (l1 - l2) * (l1 - l2);
+  const HandReach reach = hand_reach(arm.links, target);
   const double toward = std::atan2(target.y(), target.x());
   const bool longer_first = arm.links[0] >= arm.links[1];
   const JointAngles stretched{toward, 0}, folded{longer_first ? toward : toward + M_PI, M_PI};
   IkAnswer answer;
-  if (d2 > outer || d2 < inner) {
-    answer.solutions.push_back(solution(arm, d2 > outer ? stretched : folded, target));
-    answer.why_not = d2 > outer ? "the target is farther from the base than the two links reach (l1 + l2)"
-                                : "the target is nearer the base than the links' difference |l1 - l2|";
+  if (!reach.reachable()) {
+    const bool beyond = reach.outer_side < 0;
+    answer.solutions.push_back(solution(arm, beyond ? stretched : folded, target));
+    answer.why_not = beyond ? "the target is farther from the base than the two links reach (l1 + l2)"
+                            : "the target is nearer the base than the links' difference |l1 - l2|";
     return answer;
   }
-  answer.found = true;
-  if (d2 == outer || d2 == inner) {  // on the annulus's boundary: one elbow
-    answer.solutions.push_back(solution(arm, d2 == outer ? stretched : (d2 == 0 ? JointAngles{0, M_PI} : folded), target));
+  answer.found = answer.every_solution = true;
+  if (reach.outer_side == 0 || reach.inner_side == 0) {  // on the annulus's boundary: one elbow
+    const bool at_base = target.x() == 0 && target.y() == 0;
+    answer.solutions.push_back(solution(arm, reach.outer_side == 0 ? stretched : (at_base ? JointAngles{0, M_PI} : folded), target));
     return answer;
   }
   // The elbow's half-angle formula, tan²(θ2 / 2) = ((l1 + l2)² − d²) / (d² − (l1 − l2)²): stable
   // near both boundaries, where acos of the cosine rule loses half the digits.
-  const double elbow = 2 * std::atan(std::sqrt(to_double(Rational(outer - d2)) / to_double(Rational(d2 - inner))));
+  const double elbow = 2 * std::atan(std::sqrt(reach.outer_margin / reach.inner_margin));
   for (const double t2 : {elbow, -elbow}) {
     const double t1 = toward - std::atan2(arm.links[1] * std::sin(t2), arm.links[0] + arm.links[1] * std::cos(t2));
     answer.solutions.push_back(solution(arm, {t1, t2}, target));
@@ -84,7 +98,7 @@ IkAnswer three_link_ik(const Arm& arm, Eigen::Vector2d target, double orientatio
   two.links.pop_back();
   IkAnswer wrist_answer = two_link_ik(two, wrist);
   IkAnswer answer;
-  answer.found = wrist_answer.found;
+  answer.found = answer.every_solution = wrist_answer.found;
   answer.why_not = wrist_answer.why_not.empty() ? "" : "the wrist point: " + wrist_answer.why_not;
   for (const IkSolution& s : wrist_answer.solutions)
     answer.solutions.push_back(solution(arm, {s.angles[0], s.angles[1], orientation - s.angles[0] - s.angles[1]}, target));
@@ -125,6 +139,7 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
   const std::size_t n = arm.joints();
   if (!o.limits.empty() && o.limits.size() != n) throw std::invalid_argument("numeric_ik: " + std::to_string(o.limits.size()) + " joint limits for " + std::to_string(n) + " links");
   const std::size_t rows = o.orientation ? 3 : 2;
+  const double aim = o.refine_to > 0 ? std::min(o.refine_to, o.tolerance) : o.tolerance;
   const auto clamp = [&](JointAngles& q) {
     for (std::size_t i = 0; i < o.limits.size(); ++i) q[i] = std::clamp(q[i], o.limits[i].first, o.limits[i].second);
   };
@@ -160,9 +175,21 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
     Eigen::VectorXd e = task_error(q, joints);
     Eigen::MatrixXd J = jacobian(joints);
     double damping = 1e-2 * arm.reach();
-    for (std::size_t k = 0; k < o.iterations && e.norm() > o.tolerance; ++k) {
-      const Eigen::MatrixXd JJt = J * J.transpose() + damping * damping * Eigen::MatrixXd::Identity(rows, rows);
-      const Eigen::VectorXd step = J.transpose() * JJt.ldlt().solve(e);
+    const auto damped_step = [&](const Eigen::MatrixXd& jacobian_used) -> Eigen::VectorXd {
+      const Eigen::MatrixXd JJt = jacobian_used * jacobian_used.transpose() + damping * damping * Eigen::MatrixXd::Identity(rows, rows);
+      return jacobian_used.transpose() * JJt.ldlt().solve(e);
+    };
+    for (std::size_t k = 0; k < o.iterations && e.norm() > aim; ++k) {
+      Eigen::VectorXd step = damped_step(J);
+      // A joint held at a limit that the step pushes further takes no part in it: the others then
+      // make the whole step, instead of a clamp cutting it short every time.
+      if (!o.limits.empty()) {
+        Eigen::MatrixXd held = J;
+        bool holds = false;
+        for (std::size_t i = 0; i < n; ++i)
+          if ((q[i] <= o.limits[i].first && step[i] < 0) || (q[i] >= o.limits[i].second && step[i] > 0)) held.col(i).setZero(), holds = true;
+        if (holds) step = damped_step(held);
+      }
       JointAngles next = q;
       for (std::size_t i = 0; i < n; ++i) next[i] += step[i];
       clamp(next);
@@ -172,6 +199,8 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
         q = std::move(next), joints.swap(tried), e = e_next, J = jacobian(joints), damping *= 0.5;
       } else {
         damping *= 4;
+        // Steps this damped no longer move q (and many more would overflow it): this seed is done.
+        if (damping > 1e6 * arm.reach()) break;
       }
     }
     IkSolution found = solution(arm, q, target);
@@ -190,6 +219,37 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
     std::snprintf(why, sizeof why, "no configuration within %g of the target from %zu seeds (the closest: %.6g away)", o.tolerance, o.seeds, closest->error);
     answer.why_not = why;
   }
+  return answer;
+}
+
+bool within_joint_limits(const JointAngles& angles, const std::vector<std::pair<double, double>>& limits) {
+  constexpr double slack = 1e-12;
+  for (std::size_t i = 0; i < limits.size() && i < angles.size(); ++i) {
+    const auto [lo, hi] = limits[i];
+    if (hi - lo >= 2 * M_PI) continue;
+    // The first of a + 2πk at or above lo; beyond hi it is outside, and so is every other.
+    const double shifted = angles[i] + 2 * M_PI * std::ceil((lo - slack - angles[i]) / (2 * M_PI));
+    if (shifted > hi + slack) return false;
+  }
+  return true;
+}
+
+IkAnswer inverse_kinematics(const Arm& arm, Eigen::Vector2d target, const IkOptions& options) {
+  const bool oriented = options.orientation.has_value();
+  IkAnswer answer = arm.joints() == 2 && !oriented  ? two_link_ik(arm, target)
+                    : arm.joints() == 3 && oriented ? three_link_ik(arm, target, *options.orientation)
+                                                    : numeric_ik(arm, target, options);
+  if (!answer.found || options.limits.empty()) return answer;
+  std::vector<IkSolution> within;
+  for (IkSolution& s : answer.solutions)
+    if (within_joint_limits(s.angles, options.limits)) within.push_back(std::move(s));
+    else ++answer.outside_limits;
+  if (within.empty()) {  // the closest stay, as when nothing is found
+    answer.found = false;
+    answer.why_not = "every solution (" + std::to_string(answer.outside_limits) + ") lies outside the joint limits";
+    return answer;
+  }
+  answer.solutions = std::move(within);
   return answer;
 }
 

@@ -10,6 +10,9 @@
 //   three_link_ik   closed form with an end orientation: the wrist by two_link_ik
 //   numeric_ik      n links, damped least squares from several seeds, then FABRIK where that
 //                   fails; joint limits when given; distinct solutions (angles apart by > 1e-6)
+//   inverse_kinematics  any arm: the closed form where one applies, numeric_ik otherwise, and the
+//                   joint limits kept by every solution
+//   hand_reach      whether a point lies in the annulus an n-link arm's hand reaches, decided exactly
 //
 // Every solution carries its end-effector error |f(θ) − target|, measured by forward kinematics.
 #include <polyplan/arm/arm.hpp>
@@ -34,7 +37,22 @@ struct IkAnswer {
   bool found = false;
   std::vector<IkSolution> solutions;  // when not found: the closest the arm gets (stretched towards the target)
   std::string why_not;
+  std::size_t outside_limits = 0;  // solutions inverse_kinematics dropped for the joint limits
+  bool every_solution = false;     // a closed form's: the solutions are all there are
 };
+
+// Where a target lies against the annulus an arm's hand reaches about its base,
+// r_min ≤ |target| ≤ r_max with r_max = Σ l and r_min = max(0, 2·max l − Σ l) (the longest link
+// folded back over all the others): decided exactly on the rational values of the lengths and the
+// target (a double is a rational: no epsilon). The squared margins are exact, then rounded once.
+struct HandReach {
+  double inner = 0, outer = 0;  // r_min and r_max, rounded to nearest
+  int outer_side = 0;           // sign of r_max² − d²: 1 strictly within the outer circle, 0 on it, −1 beyond
+  int inner_side = 0;           // sign of d² − r_min²: 1 strictly beyond the inner circle, 0 on it, −1 within
+  double outer_margin = 0, inner_margin = 0;  // r_max² − d² and d² − r_min²
+  bool reachable() const { return outer_side >= 0 && inner_side >= 0; }
+};
+HandReach hand_reach(const std::vector<double>& links, Eigen::Vector2d target);
 
 IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target);
 IkAnswer three_link_ik(const Arm& arm, Eigen::Vector2d target, double orientation);
@@ -45,11 +63,22 @@ struct IkOptions {
   std::size_t seeds = 8;                                  // starting configurations tried
   std::size_t iterations = 100;                           // per seed, damped least squares
   double tolerance = 1e-9;                                // end-effector error accepted
+  double refine_to = 0;  // above 0: iterate on towards this smaller error while the steps still reduce it
   bool all = false;                                       // every distinct solution the seeds find, not only the first
   std::uint64_t seed = 1;
 };
 
 IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& options = {});
+
+// Any arm: two_link_ik for two links without an orientation, three_link_ik for three with one (every
+// solution of the closed forms, whatever options.all says), numeric_ik otherwise; then only the
+// solutions within options.limits are kept (within_joint_limits), the others counted in
+// outside_limits — found is false, and why_not says so, when none is left.
+IkAnswer inverse_kinematics(const Arm& arm, Eigen::Vector2d target, const IkOptions& options = {});
+
+// Whether every angle lies within its joint's [lo, hi] read round the circle (some a + 2πk in it),
+// to 1e-12 rad: the rounding of a whole-turn shift. No limits (empty) holds every configuration.
+bool within_joint_limits(const JointAngles& angles, const std::vector<std::pair<double, double>>& limits);
 
 // FABRIK (Aristidou & Lasenby) from `start`: the joints' positions pulled to the target and back
 // to the base until the hand is within the tolerance; link lengths kept to 1e-12. An unreachable

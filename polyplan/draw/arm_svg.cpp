@@ -127,6 +127,9 @@ void check_picture(const ArmPlanPicture& picture) {
       }
     }
   }
+  if (picture.target && !(picture.target->point.allFinite() && std::isfinite(picture.target->orientation.value_or(0)))) {
+    throw std::invalid_argument("arm picture: the goal point (or its orientation) is not finite");
+  }
   if (picture.cspace) {
     if (arm.joints() != 2) {
       throw std::invalid_argument("arm picture: a C-space image needs an arm of 2 joints, this one has " +
@@ -245,19 +248,21 @@ struct Layout {
   }
 };
 
-svg::Box2 workspace_box(const ArmProblem& problem) {
+svg::Box2 workspace_box(const ArmPlanPicture& picture) {
+  const ArmProblem& problem = *picture.problem;
   double r = problem.arm.reach();
   if (!(r > 0) || !std::isfinite(r)) r = 1;
   svg::BoxAround box({-r, -r, r, r});
   for (const PolygonWithHoles& o : problem.obstacles)
     for (const ExactPoint& p : o.outer) box.add(to_double(p.x), to_double(p.y));
   for (const Eigen::Vector2d& p : problem.points) box.add(p.x(), p.y());
+  if (picture.target) box.add(picture.target->point.x(), picture.target->point.y());  // an unreachable one too
   return box.box_or({});
 }
 
 Layout layout(const ArmPlanPicture& picture) {
   Layout l;
-  l.workspace = workspace_box(*picture.problem);
+  l.workspace = workspace_box(picture);
   const svg::Box2& w = l.workspace;
   const double larger = std::max(w.xmax - w.xmin, w.ymax - w.ymin);
   l.px = larger / kPanelPx;
@@ -331,6 +336,29 @@ void draw_surroundings(svg::Drawing& d, const ArmProblem& problem) {
     d.polygon({circle}, s);
     d.legend("reach", s, svg::Swatch::line);
   }
+}
+
+// Where the hand should go: a ring with a cross on the point, and an arrow along the last link's
+// orientation there when the goal has one (as long as the last link, or 30 px at least).
+void draw_target(svg::Drawing& d, const Layout& l, const Arm& arm, const std::optional<WorkspaceGoal>& target) {
+  if (!target) return;
+  const svg::Point2 at = point(target->point);
+  const double arm_px = 7 * l.px;
+  const svg::Style line = stroked(theme::arm_goal_edge, 1.8);
+  d.begin_group("class=\"goal-point\"");
+  d.points({at}, 7, stroked(theme::arm_goal_edge, 1.8));
+  d.segments({{{at.x - arm_px, at.y}, {at.x + arm_px, at.y}}, {{at.x, at.y - arm_px}, {at.x, at.y + arm_px}}}, line);
+  if (target->orientation) {
+    const double length = std::max(arm.links.back(), 30 * l.px), head = 8 * l.px, a = *target->orientation;
+    const svg::Point2 tip{at.x + length * std::cos(a), at.y + length * std::sin(a)};
+    const auto barb = [&](double turn) {
+      return svg::Point2{tip.x - head * std::cos(a + turn), tip.y - head * std::sin(a + turn)};
+    };
+    d.segments({{at, tip}, {tip, barb(0.45)}, {tip, barb(-0.45)}}, line);
+  }
+  d.end_group();
+  d.legend(target->orientation ? "goal point and orientation (the hand's target)" : "goal point (the hand's target)", line,
+           svg::Swatch::line);
 }
 
 void draw_base(svg::Drawing& d) {
@@ -813,6 +841,7 @@ svg::Drawing animation_drawing(const ArmPlanPicture& picture) {
     d.legend("start (ghost)", start.body);
     d.legend("goal (ghost)", goal.body);
   }
+  draw_target(d, l, problem.arm, picture.target);
   draw_base(d);
 
   const Timeline t = timeline(cumulative_turn(continuous), picture.seconds, picture.max_keyframes);
@@ -872,6 +901,7 @@ svg::Drawing strobe_drawing(const ArmPlanPicture& picture, std::size_t every_kth
                link_look(arm, theme::start_to_goal(0.5), theme::start_to_goal(0.5), 0.45).body);
     }
   }
+  draw_target(d, l, arm, picture.target);
   draw_base(d);
   if (picture.cspace) {
     draw_panel(d, l, *picture.cspace, shows_graph(picture) ? picture.graph.get() : nullptr, unwrapped(motion), nullptr);
@@ -916,6 +946,7 @@ svg::Drawing draw_arm_configurations(const ArmPlanPicture& picture, const std::v
   }
   if (picture.motion.size() > named)
     d.legend("and " + std::to_string(picture.motion.size() - named) + " more", link_look(arm, theme::trace, theme::trace, 0.8).body);
+  draw_target(d, l, arm, picture.target);
   draw_base(d);
   return d;
 }
@@ -930,6 +961,7 @@ svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>&
   ArmPlanPicture picture;
   picture.problem = &problem;
   picture.title = options.title;
+  picture.target = options.target;
   const double step = options.degrees_per_frame * two_pi / 360;
   for (std::size_t k = 0; k + 1 < report.path.size(); ++k) {
     const auto samples = motion_samples(report.path[k], report.path[k + 1], step);

@@ -49,6 +49,9 @@ struct ArmPlanPicture {
   // vertices drawn on each, evenly spread over the graph's lists; the legend says "tree edges (N)",
   // or "(3000 of N)" when not all are drawn. Vertices may be any finite angles.
   std::shared_ptr<const PlanGraph<JointAngles>> graph;
+  // Optional: a goal in the workspace (the query's goal_point), marked where the hand should go — a
+  // ring with a cross, and an arrow along the orientation when it has one — in the goal's colour.
+  std::optional<WorkspaceGoal> target = std::nullopt;
 };
 
 // The workspace (obstacles, obstacle points, the reach circle, the base, the end effector's path,
@@ -57,7 +60,8 @@ struct ArmPlanPicture {
 // with the arm. Without animation (rsvg-convert, print) the arm stands at the start.
 // Throws std::invalid_argument when the picture is inconsistent (no problem, a configuration or
 // graph vertex with the wrong number of joints or a non-finite angle, a graph edge naming no
-// vertex, a C-space image for an arm that has not two joints or whose state is not n·n).
+// vertex, a C-space image for an arm that has not two joints or whose state is not n·n, a target
+// that is not finite).
 std::string arm_animation_svg(const ArmPlanPicture& picture);
 
 // The workspace with configurations 0, k, 2k, … of the motion (and the goal) drawn at once, the
@@ -83,6 +87,7 @@ struct ArmPictureOptions {
   std::string title;
   std::size_t every_kth = 0;
   double degrees_per_frame = 1;
+  std::optional<WorkspaceGoal> target = std::nullopt;  // the query's goal point, when it has one: marked (ArmPlanPicture::target)
 };
 svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>& report, const ArmPictureOptions& options);
 

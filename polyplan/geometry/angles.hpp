@@ -43,6 +43,12 @@ inline double normalize_angle(double a) {
   return r;
 }
 
+// Every angle into [0, 2π): a configuration as the arm planners give it in their paths.
+inline JointAngles normalize_angles(JointAngles angles) {
+  for (double& a : angles) a = normalize_angle(a);
+  return angles;
+}
+
 // The short way from → to, in (−π, π]; a half turn counts as +π. Computed from the normalised
 // angles so that huge inputs cannot overflow; both shifts by 2π are exact (Sterbenz).
 inline double signed_angle_difference(double from, double to) {

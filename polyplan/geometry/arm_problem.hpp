@@ -7,7 +7,9 @@
 #include <Eigen/Core>
 
 #include <cstddef>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace polyplan {
@@ -23,6 +25,10 @@ struct Arm {
   // false: links at different heights never collide with each other (seed 001). true: two links
   // that share no joint collide when they meet; adjacent links never do.
   bool self_collision = false;
+  // Per joint [lo, hi], radians, lo <= hi: the angles a joint may take, read round the circle (an
+  // angle a is within them when a + 2πk lies in [lo, hi] for some whole k). Empty: no limits. Inverse
+  // kinematics keeps to them (a workspace goal's configurations); the planners' paths do not.
+  std::vector<std::pair<double, double>> limits{};
 
   std::size_t joints() const { return links.size(); }
   // The sum of the links plus w/2: every point of the arm, in every configuration, lies within
@@ -34,9 +40,23 @@ struct Arm {
   }
 };
 
+// A goal in the workspace rather than in joint angles: the end effector (the end of the last link)
+// at `point`, and where `orientation` is given the last link's absolute angle θ1 + … + θn there
+// (radians). The query then ends at any of the configurations that put it there.
+struct WorkspaceGoal {
+  Eigen::Vector2d point = Eigen::Vector2d::Zero();
+  std::optional<double> orientation;
+
+  friend bool operator==(const WorkspaceGoal& a, const WorkspaceGoal& b) {
+    return a.point.x() == b.point.x() && a.point.y() == b.point.y() && a.orientation == b.orientation;
+  }
+};
+
 struct ArmQuery {
   std::string name;  // "start/goal" (the top-level pair), the query's "name", or "queries[2]"
-  JointAngles start, goal;
+  JointAngles start;
+  JointAngles goal;  // empty when the goal is in the workspace (goal_point)
+  std::optional<WorkspaceGoal> goal_point = std::nullopt;
 };
 
 struct ArmProblem {

@@ -48,10 +48,32 @@ class ArmFileReader : public detail::JsonFileReader {
     return a;
   }
 
+  Eigen::Vector2d point(const json& p, const std::string& object) const {
+    if (!p.is_array() || p.size() != 2) fail(object, "expected a point [x, y], got " + abbreviated(p));
+    return {number(p[0], object + "[0]"), number(p[1], object + "[1]")};
+  }
+
   // A number as the file wrote it (floating-point literals arrive as their text).
   static std::string text(const json& v) { return detail::abbreviated_text(v.is_string() ? v.get<std::string>() : v.dump()); }
 
 };
+
+// "limits": [[lo, hi], ...], one pair per joint, radians.
+std::vector<std::pair<double, double>> read_limits(const ArmFileReader& r, const json& v, std::size_t joints) {
+  const std::string expected = std::to_string(joints) + " joint limits [lo, hi] (one per link, radians)";
+  if (!v.is_array()) r.fail("limits", "expected a list of " + expected + ", got " + ArmFileReader::abbreviated(v));
+  if (v.size() != joints) r.fail("limits", "expected " + expected + ", got " + std::to_string(v.size()));
+  std::vector<std::pair<double, double>> limits;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const std::string object = "limits[" + std::to_string(i) + "]";
+    const std::vector<double> pair = r.numbers(v[i], object, "[lo, hi] (radians)");
+    if (pair.size() != 2) r.fail(object, "expected [lo, hi] (radians), got " + ArmFileReader::abbreviated(v[i]));
+    if (pair[0] > pair[1])
+      r.fail(object, "lo " + ArmFileReader::text(v[i][0]) + " is above hi " + ArmFileReader::text(v[i][1]) + " (radians, [lo, hi])");
+    limits.emplace_back(pair[0], pair[1]);
+  }
+  return limits;
+}
 
 Arm read_arm(const ArmFileReader& r, const json& root) {
   Arm arm;
@@ -72,6 +94,7 @@ Arm read_arm(const ArmFileReader& r, const json& root) {
       r.fail("self_collision", "expected true or false, got " + ArmFileReader::abbreviated(root["self_collision"]));
     arm.self_collision = root["self_collision"].get<bool>();
   }
+  if (root.contains("limits")) arm.limits = read_limits(r, root["limits"], arm.joints());
   return arm;
 }
 
@@ -89,20 +112,42 @@ void read_points(const ArmFileReader& r, const json& root, ArmProblem& problem) 
   if (!root.contains("points")) return;
   const json& points = root["points"];
   if (!points.is_array()) r.fail("points", "expected a list of points [[x, y], ...], got " + ArmFileReader::abbreviated(points));
-  for (std::size_t i = 0; i < points.size(); ++i) {
-    const std::string object = "points[" + std::to_string(i) + "]";
-    const json& p = points[i];
-    if (!p.is_array() || p.size() != 2) r.fail(object, "expected a point [x, y], got " + ArmFileReader::abbreviated(p));
-    problem.points.emplace_back(r.number(p[0], object + "[0]"), r.number(p[1], object + "[1]"));
+  for (std::size_t i = 0; i < points.size(); ++i) problem.points.push_back(r.point(points[i], "points[" + std::to_string(i) + "]"));
+}
+
+// A query's goal in `q` (the file's top level, or one of its queries): joint angles ("goal") or the
+// hand at a point ("goal_point", with "goal_orientation" optionally), exactly one of them. `where`
+// names the query ("arm" at the top level), `prefix` its fields ("" or "queries[2].").
+void read_goal(const ArmFileReader& r, const json& q, const std::string& where, const std::string& prefix, std::size_t joints,
+               ArmQuery& query) {
+  const bool angles = q.contains("goal"), point = q.contains("goal_point");
+  if (angles && point)
+    r.fail(where, "both \"goal\" and \"goal_point\" given: a query's goal is joint angles or the hand at a point, not both");
+  if (!angles && !point) r.fail(where, "missing field \"goal\" (or \"goal_point\")");
+  if (q.contains("goal_orientation") && !point)
+    r.fail(prefix + "goal_orientation", "given without \"goal_point\" (it is the hand's orientation at that point)");
+  if (angles) {
+    query.goal = r.angles(q["goal"], prefix + "goal", joints);
+    return;
   }
+  WorkspaceGoal goal{r.point(q["goal_point"], prefix + "goal_point"), std::nullopt};
+  if (q.contains("goal_orientation")) goal.orientation = r.number(q["goal_orientation"], prefix + "goal_orientation");
+  query.goal_point = goal;
 }
 
 void read_queries(const ArmFileReader& r, const json& root, ArmProblem& problem, std::vector<std::string>& warnings) {
   const std::size_t n = problem.arm.joints();
-  if (root.contains("start") != root.contains("goal"))
-    r.fail("arm", root.contains("start") ? "missing field \"goal\" (start is given)" : "missing field \"start\" (goal is given)");
-  if (root.contains("start"))
-    problem.queries.push_back({"start/goal", r.angles(root["start"], "start", n), r.angles(root["goal"], "goal", n)});
+  const bool goal_given = root.contains("goal") || root.contains("goal_point");
+  if (root.contains("start") != goal_given)
+    r.fail("arm", root.contains("start") ? "missing field \"goal\" or \"goal_point\" (start is given)"
+                                         : std::string("missing field \"start\" (") + (root.contains("goal") ? "goal" : "goal_point") + " is given)");
+  if (root.contains("start")) {
+    ArmQuery query{"start/goal", r.angles(root["start"], "start", n), {}};
+    read_goal(r, root, "arm", "", n, query);
+    problem.queries.push_back(std::move(query));
+  } else if (root.contains("goal_orientation")) {
+    r.fail("goal_orientation", "given without \"goal_point\" (it is the hand's orientation at that point)");
+  }
   if (!root.contains("queries")) return;
   const json& queries = root["queries"];
   if (!queries.is_array()) r.fail("queries", "expected a list of {\"name\", \"start\", \"goal\"}");
@@ -110,7 +155,7 @@ void read_queries(const ArmFileReader& r, const json& root, ArmProblem& problem,
     const std::string object = "queries[" + std::to_string(i) + "]";
     const json& q = queries[i];
     if (!q.is_object()) r.fail(object, "expected {\"name\": \"...\", \"start\": [θ1, ...], \"goal\": [θ1, ...]}");
-    r.warn_unknown(q, object, {"name", "start", "goal"}, &warnings);
+    r.warn_unknown(q, object, {"name", "start", "goal", "goal_point", "goal_orientation"}, &warnings);
     ArmQuery query;
     query.name = object;
     if (q.contains("name")) {
@@ -118,10 +163,9 @@ void read_queries(const ArmFileReader& r, const json& root, ArmProblem& problem,
         r.fail(object + ".name", "expected a non-empty string, got " + ArmFileReader::abbreviated(q["name"]));
       query.name = q["name"].get<std::string>();
     }
-    for (const char* key : {"start", "goal"})
-      if (!q.contains(key)) r.fail(object, std::string("missing field \"") + key + "\"");
+    if (!q.contains("start")) r.fail(object, "missing field \"start\"");
     query.start = r.angles(q["start"], object + ".start", n);
-    query.goal = r.angles(q["goal"], object + ".goal", n);
+    read_goal(r, q, object, object + ".", n, query);
     // Programs select queries by name: a repeated name would make the choice silent.
     for (const ArmQuery& earlier : problem.queries)
       if (earlier.name == query.name) r.fail(object + ".name", "the query name \"" + query.name + "\" is used twice");
@@ -137,7 +181,8 @@ ArmProblem parse_arm_problem(const std::string& text, const std::string& name, s
   if (!root.is_object()) r.fail("arm", "expected a JSON object at the top level");
 
   std::vector<std::string> found_warnings;
-  r.warn_unknown(root, "arm", {"links", "link_width", "self_collision", "obstacles", "points", "start", "goal", "queries"},
+  r.warn_unknown(root, "arm", {"links", "link_width", "self_collision", "limits", "obstacles", "points", "start", "goal", "goal_point",
+                                  "goal_orientation", "queries"},
                  &found_warnings);
 
   ArmProblem problem;

@@ -2,13 +2,19 @@
 // Reading arm files (DESIGN.md "Arm file"):
 //
 //   {"links": [5, 5], "link_width": 0.5, "self_collision": false,
+//    "limits": [[lo, hi], [lo, hi]],
 //    "obstacles": [ ...polygons, the same forms as a world file's... ],
 //    "points": [[x, y], ...],
 //    "start": [θ1, θ2], "goal": [θ1, θ2],
-//    "queries": [{"name": "easy", "start": [...], "goal": [...]}, ...]}
+//    "queries": [{"name": "easy", "start": [...], "goal": [...]},
+//                {"name": "reach", "start": [...], "goal_point": [x, y], "goal_orientation": φ}, ...]}
 //
 // Angles are radians, any finite value (planners normalise them). `links` is required; every
-// other field is optional. Obstacle polygons are read exactly and validated by the world reader
+// other field is optional. A query's goal is either joint angles (`goal`) or a point for the end
+// effector (`goal_point` [x, y]; with `goal_orientation`, the last link's absolute angle there,
+// θ1 + … + θn, in radians), never both: the planners then plan to the collision-free inverse-kinematics
+// solutions (arm/arm_goal_set.hpp). `limits` gives each joint's [lo, hi] in radians, lo <= hi (read
+// round the circle), which inverse kinematics keeps to. Obstacle polygons are read exactly and validated by the world reader
 // (io/world_reader.hpp), so their messages are the world file's. Every problem throws
 // InputError with one line "<file>: <object>: <what is wrong>".
 #include <polyplan/geometry/arm_problem.hpp>

@@ -151,6 +151,10 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
     report.fail(PlanStatus::no_path, *why);
     return finish();
   }
+  if (auto why = space_->no_goal_found(query)) {
+    report.fail(PlanStatus::not_found, *why);
+    return finish();
+  }
 
   const std::vector<Configuration> goals = space_->goals(query);
   if (goals.empty()) throw std::logic_error("a sampling space gave a query it accepted no goal to reach");

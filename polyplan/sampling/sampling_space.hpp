@@ -119,12 +119,16 @@ class SamplingSpace {
   // start and goal lie in different components of its reference point's free space); nullopt when
   // it cannot, and by default.
   virtual std::optional<std::string> no_path(const Query&) { return std::nullopt; }
+  // Why the query has no configuration to end at although a path might exist (an arm's hand at a
+  // point whose every inverse-kinematics solution found collides): the query is then not_found.
+  // Asked after no_path; nullopt, and by default, when goals() has one.
+  virtual std::optional<std::string> no_goal_found(const Query&) { return std::nullopt; }
   // The query's start and goal as the path gives them (an arm's angles normalised).
   virtual Configuration start(const Query&) const = 0;
   virtual Configuration goal(const Query&) const = 0;
   // The configurations a path may end at, in a fixed order: the query's goal alone by default; several
   // where the goal is a set (an arm's hand at a point: its collision-free IK solutions). Called once per
-  // query, after query_not_free has accepted the query; never empty then.
+  // query, after query_not_free, no_path and no_goal_found have accepted the query; never empty then.
   virtual std::vector<Configuration> goals(const Query& query) { return {goal(query)}; }
   // The certificate's words for a path of certified motions.
   virtual std::string certificate_method() const = 0;

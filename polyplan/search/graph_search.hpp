@@ -174,6 +174,26 @@ struct ScaledHeuristic {
 
 struct FoundGoal {};  // thrown through the BGL algorithm; never leaves shortest_path
 
+// Which vertices end the search: one goal, or any of several (shortest_path_to_any). The first one
+// the search takes out of its open list (DFS: discovers) is recorded in `reached`.
+template <class Vertex>
+class GoalTest {
+ public:
+  GoalTest(const Vertex* goals, std::size_t count, Vertex& reached) : goals_(goals), count_(count), reached_(&reached) {}
+  void stop_if_goal(const Vertex& u) const {
+    for (std::size_t i = 0; i < count_; ++i)
+      if (u == goals_[i]) {
+        *reached_ = u;
+        throw FoundGoal{};
+      }
+  }
+
+ private:
+  const Vertex* goals_;
+  std::size_t count_;
+  Vertex* reached_;
+};
+
 struct SearchCounts {
   std::size_t expanded = 0, generated = 0;
   std::size_t reopened = 0;  // closed vertices given a shorter distance (weighted A*, inconsistent h)
@@ -182,7 +202,7 @@ struct SearchCounts {
 template <class Vertex>
 class AStarGoalVisitor : public boost::default_astar_visitor {
  public:
-  AStarGoalVisitor(const Vertex& goal, SearchCounts& counts, std::vector<Vertex>* trace)
+  AStarGoalVisitor(const GoalTest<Vertex>& goal, SearchCounts& counts, std::vector<Vertex>* trace)
       : goal_(goal), counts_(&counts), trace_(trace) {}
   template <class Graph>
   void discover_vertex(const Vertex&, const Graph&) { ++counts_->generated; }
@@ -190,14 +210,14 @@ class AStarGoalVisitor : public boost::default_astar_visitor {
   void examine_vertex(const Vertex& u, const Graph&) {
     ++counts_->expanded;
     if (trace_) trace_->push_back(u);
-    if (u == goal_) throw FoundGoal{};
+    goal_.stop_if_goal(u);
   }
   // BGL calls it only when the relaxation re-opened a closed vertex.
   template <class Edge, class Graph>
   void black_target(const Edge&, const Graph&) { ++counts_->reopened; }
 
  private:
-  Vertex goal_;
+  GoalTest<Vertex> goal_;
   SearchCounts* counts_;
   std::vector<Vertex>* trace_;  // expansion order, when recorded
 };
@@ -205,7 +225,7 @@ class AStarGoalVisitor : public boost::default_astar_visitor {
 template <class Vertex, class PredecessorMap>
 class BfsGoalVisitor : public boost::default_bfs_visitor {
  public:
-  BfsGoalVisitor(const Vertex& goal, SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace)
+  BfsGoalVisitor(const GoalTest<Vertex>& goal, SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace)
       : goal_(goal), counts_(&counts), predecessor_(predecessor), trace_(trace) {}
   template <class Graph>
   void discover_vertex(const Vertex&, const Graph&) { ++counts_->generated; }
@@ -213,13 +233,13 @@ class BfsGoalVisitor : public boost::default_bfs_visitor {
   void examine_vertex(const Vertex& u, const Graph&) {
     ++counts_->expanded;
     if (trace_) trace_->push_back(u);
-    if (u == goal_) throw FoundGoal{};
+    goal_.stop_if_goal(u);
   }
   template <class Edge, class Graph>
   void tree_edge(const Edge& e, const Graph& g) { put(predecessor_, target(e, g), source(e, g)); }
 
  private:
-  Vertex goal_;
+  GoalTest<Vertex> goal_;
   SearchCounts* counts_;
   PredecessorMap predecessor_;
   std::vector<Vertex>* trace_;
@@ -249,10 +269,10 @@ class DfsCountingVisitor : public boost::default_dfs_visitor {
 // test of DFS.
 template <class Vertex>
 struct StopAtGoal {
-  Vertex goal;
+  GoalTest<Vertex> goal;
   template <class Graph>
   bool operator()(const Vertex& u, const Graph&) const {
-    if (u == goal) throw FoundGoal{};
+    goal.stop_if_goal(u);
     return false;
   }
 };
@@ -275,10 +295,12 @@ double path_cost(const Graph& g, const std::vector<Vertex>& path, const WeightFn
 template <class Graph, class Table, class Heuristic, class WeightFn>
 SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with_table(
     const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
-    typename boost::graph_traits<Graph>::vertex_descriptor goal, const SearchOptions& options,
+    const std::vector<typename boost::graph_traits<Graph>::vertex_descriptor>& goals, const SearchOptions& options,
     const Heuristic& heuristic, const WeightFn& weight, Table& table,
     FifoBuffer<typename boost::graph_traits<Graph>::vertex_descriptor>& fifo) {
   using Vertex = typename boost::graph_traits<Graph>::vertex_descriptor;
+  Vertex goal = start;  // the goal the search reaches
+  const GoalTest<Vertex> is_goal(goals.data(), goals.size(), goal);
   using Edge = typename boost::graph_traits<Graph>::edge_descriptor;
   const RecordMap<Table, Vertex, DistanceField> distance(table);
   const RecordMap<Table, Vertex, RankField> rank(table);
@@ -293,7 +315,7 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with
   const auto best_first = [&](auto h, auto edge_weights) {
     put(distance, start, 0.0);
     put(rank, start, h(start));
-    boost::astar_search_no_init(g, start, h, AStarGoalVisitor<Vertex>(goal, counts, trace), predecessor, rank, distance,
+    boost::astar_search_no_init(g, start, h, AStarGoalVisitor<Vertex>(is_goal, counts, trace), predecessor, rank, distance,
                                 edge_weights, color, slots, std::less<double>(), std::plus<double>(), unreached, 0.0);
   };
 
@@ -305,12 +327,12 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with
       case Search::greedy: best_first(heuristic, ZeroWeightMap<Edge>{}); break;
       case Search::bfs:
         fifo.clear();
-        boost::breadth_first_visit(g, start, fifo, BfsGoalVisitor<Vertex, decltype(predecessor)>(goal, counts, predecessor, trace),
+        boost::breadth_first_visit(g, start, fifo, BfsGoalVisitor<Vertex, decltype(predecessor)>(is_goal, counts, predecessor, trace),
                                    color);
         break;
       case Search::dfs:
         boost::depth_first_visit(g, start, DfsCountingVisitor<Vertex, decltype(predecessor)>(counts, predecessor, trace), color,
-                                 StopAtGoal<Vertex>{goal});
+                                 StopAtGoal<Vertex>{is_goal});
         break;
     }
   } catch (const FoundGoal&) {
@@ -350,6 +372,42 @@ inline void check_options(const SearchOptions& options) {
 
 }  // namespace detail
 
+// shortest_path (below) to any one of `goals` (at least one): the search stops at the first goal it takes out of
+// its open list (DFS: discovers), which for A* with a heuristic admissible to every goal (the
+// minimum over them, say) and for Dijkstra is a nearest one; the path ends there (path.back()).
+// Throws std::invalid_argument when `goals` is empty, and as shortest_path does.
+template <class Graph, class Heuristic, class WeightFn, class Hash>
+SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_path_to_any(
+    const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
+    const std::vector<typename boost::graph_traits<Graph>::vertex_descriptor>& goals, const SearchOptions& options,
+    Heuristic heuristic, WeightFn weight, SearchWorkspace<typename boost::graph_traits<Graph>::vertex_descriptor, Hash>& workspace) {
+  detail::check_options(options);
+  if (goals.empty()) throw std::invalid_argument("shortest_path_to_any: no goal");
+  const auto began = std::chrono::steady_clock::now();
+  auto& fifo = detail::WorkspaceAccess::fifo(workspace);
+  auto result = [&] {
+    if constexpr (has_dense_vertex_ids<Graph>::value) {
+      const std::size_t n = num_vertices(g);
+      const auto outside = [&](auto v) { return static_cast<std::size_t>(v) >= n; };
+      if (outside(start) || std::any_of(goals.begin(), goals.end(), outside))
+        throw std::out_of_range("shortest_path: start or goal is not a vertex of the graph");
+      if (workspace.storage() == VertexStorage::automatic && dense_vertex_table_fits(g)) {
+        auto& table = detail::WorkspaceAccess::dense(workspace);
+        detail::WorkspaceAccess::set_used_dense(workspace, true);
+        table.begin_query(n);
+        return detail::search_with_table(g, start, goals, options, heuristic, weight, table, fifo);
+      }
+    }
+    auto& table = detail::WorkspaceAccess::hashed(workspace);
+    detail::WorkspaceAccess::set_used_dense(workspace, false);
+    table.begin_query();
+    return detail::search_with_table(g, start, goals, options, heuristic, weight, table, fifo);
+  }();
+  result.algorithm = options.algorithm;
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  return result;
+}
+
 // Searches g from start to goal with options.algorithm.
 //   heuristic: double(const Vertex&), an estimate of the cost to the goal (admissible for A* to be
 //              optimal); ignored by dijkstra, bfs and dfs.
@@ -363,40 +421,25 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_pa
     const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
     typename boost::graph_traits<Graph>::vertex_descriptor goal, const SearchOptions& options, Heuristic heuristic,
     WeightFn weight, SearchWorkspace<typename boost::graph_traits<Graph>::vertex_descriptor, Hash>& workspace) {
-  detail::check_options(options);
-  const auto began = std::chrono::steady_clock::now();
-  auto& fifo = detail::WorkspaceAccess::fifo(workspace);
-  auto result = [&] {
-    if constexpr (has_dense_vertex_ids<Graph>::value) {
-      const std::size_t n = num_vertices(g);
-      if (static_cast<std::size_t>(start) >= n || static_cast<std::size_t>(goal) >= n)
-        throw std::out_of_range("shortest_path: start or goal is not a vertex of the graph");
-      if (workspace.storage() == VertexStorage::automatic && dense_vertex_table_fits(g)) {
-        auto& table = detail::WorkspaceAccess::dense(workspace);
-        detail::WorkspaceAccess::set_used_dense(workspace, true);
-        table.begin_query(n);
-        return detail::search_with_table(g, start, goal, options, heuristic, weight, table, fifo);
-      }
-    }
-    auto& table = detail::WorkspaceAccess::hashed(workspace);
-    detail::WorkspaceAccess::set_used_dense(workspace, false);
-    table.begin_query();
-    return detail::search_with_table(g, start, goal, options, heuristic, weight, table, fifo);
-  }();
-  result.algorithm = options.algorithm;
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
-  return result;
+  return shortest_path_to_any(g, start, {goal}, options, heuristic, weight, workspace);
 }
 
 // One query with a fresh hash-storage workspace: cost proportional to what the search touches.
 // For many queries on one graph, keep a SearchWorkspace and pass it.
 template <class Graph, class Heuristic, class WeightFn>
+SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_path_to_any(
+    const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
+    const std::vector<typename boost::graph_traits<Graph>::vertex_descriptor>& goals, const SearchOptions& options,
+    Heuristic heuristic, WeightFn weight) {
+  SearchWorkspace<typename boost::graph_traits<Graph>::vertex_descriptor> workspace(VertexStorage::hashed);
+  return shortest_path_to_any(g, start, goals, options, heuristic, weight, workspace);
+}
+template <class Graph, class Heuristic, class WeightFn>
 SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_path(
     const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
     typename boost::graph_traits<Graph>::vertex_descriptor goal, const SearchOptions& options, Heuristic heuristic,
     WeightFn weight) {
-  SearchWorkspace<typename boost::graph_traits<Graph>::vertex_descriptor> workspace(VertexStorage::hashed);
-  return shortest_path(g, start, goal, options, heuristic, weight, workspace);
+  return shortest_path_to_any(g, start, {goal}, options, heuristic, weight);
 }
 
 }  // namespace polyplan

@@ -90,13 +90,30 @@ struct PythonSpace<PlanarArm> {
   using Handle = ArmHandle;
   static const ArmProblem& problem(ArmHandle& arm) { return arm.problem(); }
   static const std::vector<ArmQuery>& queries(const ArmHandle& arm) { return arm.problem().queries; }
-  static ArmQuery query(py::handle start, py::handle goal, const ArmHandle& arm) {
-    ArmQuery q{"start/goal", finite_numbers(start, "start"), finite_numbers(goal, "goal")};
+  // The goal as joint angles, or as the hand at a point (goal_point, and goal_orientation there,
+  // radians), as an arm file gives it.
+  static ArmQuery query(py::handle start, const PlannerHandle::Goal& goal, const ArmHandle& arm) {
+    const bool point = !goal.point.is_none();
+    if (point && !goal.angles.is_none())
+      throw InputError("plan: give goal or goal_point, not both: a query's goal is joint angles or the hand at a point");
+    if (!goal.orientation.is_none() && !point)
+      throw InputError("plan: goal_orientation given without goal_point (it is the hand's orientation at that point)");
+    ArmQuery q{"start/goal", angles(start, "start", arm), {}};
+    if (!point) {
+      q.goal = angles(goal.angles, "goal", arm);
+      return q;
+    }
+    const std::vector<double> at = finite_numbers(goal.point, "goal_point");
+    if (at.size() != 2) throw InputError("goal_point: expected (x, y), got " + std::to_string(at.size()) + " number(s)");
+    q.goal_point = WorkspaceGoal{{at[0], at[1]}, std::nullopt};
+    if (!goal.orientation.is_none()) q.goal_point->orientation = finite_number(goal.orientation, "goal_orientation");
+    return q;
+  }
+  static JointAngles angles(py::handle value, const std::string& what, const ArmHandle& arm) {
+    JointAngles q = finite_numbers(value, what);
     const std::size_t joints = arm.problem().arm.joints();
-    for (const auto& [what, angles] : {std::pair{"start", &q.start}, std::pair{"goal", &q.goal}})
-      if (angles->size() != joints)
-        throw InputError(std::string(what) + ": expected " + std::to_string(joints) + " joint angles (radians), got " +
-                         std::to_string(angles->size()));
+    if (q.size() != joints)
+      throw InputError(what + ": expected " + std::to_string(joints) + " joint angles (radians), got " + std::to_string(q.size()));
     return q;
   }
   static void require_fits(const ArmHandle&, const std::string&) {}
@@ -138,9 +155,9 @@ class PlannerOf final : public PlannerHandle {
     planner_ = locked(handle_->lock(), [&] { return entry.make(PythonSpace<Space>::problem(*handle_), options); });
   }
 
-  PlanResult plan(const py::object& start, const py::object& goal, const py::object& query, bool record) override {
+  PlanResult plan(const py::object& start, const Goal& goal, const py::object& query, bool record) override {
     const auto q = chosen_query(start, goal, query);
-    return result(locked(handle_->lock(), [&] { return planner_->plan(q, QueryOptions{record}); }), q.name);
+    return result(locked(handle_->lock(), [&] { return planner_->plan(q, QueryOptions{record}); }), q);
   }
 
   std::vector<PlanResult> plan_all(bool record) override {
@@ -151,19 +168,24 @@ class PlannerOf final : public PlannerHandle {
       return all;
     });
     std::vector<PlanResult> results;
-    for (std::size_t i = 0; i < reports.size(); ++i)
-      results.push_back(result(std::move(reports[i]), PythonSpace<Space>::queries(*handle_)[i].name));
+    for (std::size_t i = 0; i < reports.size(); ++i) results.push_back(result(std::move(reports[i]), PythonSpace<Space>::queries(*handle_)[i]));
     return results;
   }
 
   std::string space() const override { return std::string(Space::description); }
 
  private:
-  typename Space::Query chosen_query(py::handle start, py::handle goal, py::handle query) const {
-    if (!start.is_none() || !goal.is_none()) {
-      if (start.is_none() || goal.is_none()) throw InputError("plan: give both start and goal, or neither (the problem's own query)");
+  typename Space::Query chosen_query(py::handle start, const Goal& goal, py::handle query) const {
+    constexpr bool arm = std::is_same_v<Handle, ArmHandle>;
+    const bool point = !goal.point.is_none() || !goal.orientation.is_none();
+    if (point && !arm) throw InputError("plan: goal_point and goal_orientation are an arm's (its hand at a point), not a World's");
+    if (!start.is_none() || !goal.angles.is_none() || point) {
+      if (start.is_none() || (goal.angles.is_none() && goal.point.is_none()))
+        throw InputError(arm ? "plan: give both start and goal (or goal_point), or neither (the problem's own query)"
+                             : "plan: give both start and goal, or neither (the problem's own query)");
       if (!query.is_none()) throw InputError("plan: give start and goal, or query, not both");
-      return PythonSpace<Space>::query(start, goal, *handle_);
+      if constexpr (arm) return PythonSpace<Space>::query(start, goal, *handle_);
+      else return PythonSpace<Space>::query(start, goal.angles, *handle_);
     }
     const auto& queries = PythonSpace<Space>::queries(*handle_);
     if (queries.empty()) throw InputError("plan: " + source() + " has no query: give start and goal");
@@ -186,8 +208,10 @@ class PlannerOf final : public PlannerHandle {
     else return handle_->problem().source;
   }
 
-  PlanResult result(PlanReport<typename Space::Configuration> report, const std::string& query) const {
-    return PlanResult{std::move(report), query, name, handle_};
+  PlanResult result(PlanReport<typename Space::Configuration> report, const typename Space::Query& query) const {
+    PlanResult r{std::move(report), query.name, name, handle_};
+    if constexpr (std::is_same_v<Handle, ArmHandle>) r.goal_point = query.goal_point;
+    return r;
   }
 
   std::shared_ptr<Handle> handle_;
@@ -259,18 +283,23 @@ different threads (the GIL is released while planning).)")
       .def_readonly("name", &PlannerHandle::name, "The planner's name in the registry.")
       .def_property_readonly("space", &PlannerHandle::space, "The configuration space it plans in.")
       .def("plan",
-           [](PlannerHandle& p, const py::object& start, const py::object& goal, const py::object& query, const py::object& record) {
-             return p.plan(start, goal, query, flag_of(record, "plan: record"));
+           [](PlannerHandle& p, const py::object& start, const py::object& goal, const py::object& query, const py::object& record,
+              const py::object& goal_point, const py::object& goal_orientation) {
+             return p.plan(start, {goal, goal_point, goal_orientation}, query, flag_of(record, "plan: record"));
            },
            py::arg("start") = py::none(), py::arg("goal") = py::none(), py::arg("query") = py::none(),
-           py::arg("record") = true,
+           py::arg("record") = true, py::arg("goal_point") = py::none(), py::arg("goal_orientation") = py::none(),
            R"(One query answered: a Plan.
 
 start, goal: (x, y) for a translating robot, (x, y) or (x, y, theta) (degrees) for the rotation
 planner, a sequence of joint angles (radians) for an arm; exact numbers as in World. Omitted: the
 problem's own query, the first one or the one `query` names (its name or index). A start or goal
 that is not free is an answer (status "invalid_query"), not an error. record: keep the roadmap
-or tree, the expanded configurations and the cells for polyplan.plot and polyplan.svg.)")
+or tree, the expanded configurations and the cells for polyplan.plot and polyplan.svg.
+goal_point=(x, y), goal_orientation=radians (an arm only, instead of goal): the hand at that
+point (with the last link at that absolute angle); the planner plans to the collision-free
+inverse-kinematics solutions, and the Plan's facts["goal"] says which it reached (an unreachable
+point is an answer: status "no_path").)")
       .def("plan_all", [](PlannerHandle& p, const py::object& record) { return p.plan_all(flag_of(record, "plan_all: record")); },
            py::arg("record") = true,
            "Every query of the problem (checked as `polyplan plan` checks them: InputError for one that is not free): a list of Plan.")

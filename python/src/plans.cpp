@@ -100,7 +100,7 @@ std::string svg_of(py::handle problem, const std::vector<const PlanResult*>& pla
     const auto* report = std::get_if<PlanReport<JointAngles>>(&plans[0]->report);
     if (!report) throw InputError("svg: the plan is not an arm's (it was planned in a World)");
     const ArmPictureOptions options{strobe ? ArmPictureOptions::Kind::strobe : ArmPictureOptions::Kind::animation,
-                                    arm_title(arm->problem(), *plans[0])};
+                                    arm_title(arm->problem(), *plans[0]), 0, 1, plans[0]->goal_point};
     return locked(arm->lock(), [&] { return draw_plan(arm->problem(), *report, options).str(); });
   }
   if (!py::isinstance<WorldHandle>(problem)) throw InputError("svg: expected a polyplan.World or a polyplan.Arm, got " + type_name(problem));

@@ -11,6 +11,7 @@
 #include <pybind11/pybind11.h>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -25,15 +26,20 @@ struct PlanResult {
   std::string query;
   std::string planner;
   AnyProblem problem;
+  std::optional<WorkspaceGoal> goal_point = std::nullopt;  // an arm query's goal in the workspace: the picture marks it
 };
 
 // What Python's Planner holds: one registry planner built for one problem.
 class PlannerHandle {
  public:
   virtual ~PlannerHandle() = default;
-  // One query: start and goal given (Python objects, converted for the space), or the problem's
-  // query named or numbered by `query` (None: its first).
-  virtual PlanResult plan(const pybind11::object& start, const pybind11::object& goal, const pybind11::object& query, bool record) = 0;
+  // One query: start and goal given (Python objects, converted for the space) — for an arm the goal
+  // may be a point for the hand instead (goal_point, goal_orientation) —, or the problem's query
+  // named or numbered by `query` (None: its first).
+  struct Goal {
+    pybind11::object angles, point, orientation;
+  };
+  virtual PlanResult plan(const pybind11::object& start, const Goal& goal, const pybind11::object& query, bool record) = 0;
   // Every query of the problem, checked first as `polyplan plan` checks them.
   virtual std::vector<PlanResult> plan_all(bool record) = 0;
   virtual std::string space() const = 0;

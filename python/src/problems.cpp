@@ -171,13 +171,32 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
           },
           "The point obstacles, an (N, 2) float64 array.")
       .def_property_readonly(
+          "limits",
+          [](const ArmHandle& a) -> py::object {
+            if (a.problem().arm.limits.empty()) return py::none();
+            py::list out;
+            for (const auto& [lo, hi] : a.problem().arm.limits) out.append(py::make_tuple(lo, hi));
+            return out;
+          },
+          "Each joint's limits (lo, hi) in radians, read round the circle, which inverse kinematics keeps to; None without.")
+      .def_property_readonly(
           "queries",
           [](const ArmHandle& a) {
             py::list out;
-            for (const ArmQuery& q : a.problem().queries) out.append(py::make_tuple(q.name, q.start, q.goal));
+            for (const ArmQuery& q : a.problem().queries) {
+              if (!q.goal_point) {
+                out.append(py::make_tuple(q.name, q.start, q.goal));
+                continue;
+              }
+              py::dict goal;
+              goal["point"] = py::make_tuple(q.goal_point->point.x(), q.goal_point->point.y());
+              goal["orientation"] = q.goal_point->orientation ? py::object(py::float_(*q.goal_point->orientation)) : py::none();
+              out.append(py::make_tuple(q.name, q.start, goal));
+            }
             return out;
           },
-          "The arm's queries as (name, start angles, goal angles).")
+          "The arm's queries as (name, start angles, goal): the goal angles, or for a goal in the workspace\n"
+          "{\"point\": (x, y), \"orientation\": radians or None} (the hand at that point).")
       .def(
           "joint_positions",
           [](const ArmHandle& a, const py::object& angles) {

@@ -4,9 +4,11 @@
 #include <polyplan/arm/arm_grid_planner.hpp>
 
 #include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_goal_set.hpp>
 #include <polyplan/arm/arm_grid_search.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/io/arm_reader.hpp>
+#include "arm/arm_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
@@ -411,6 +413,89 @@ TEST(ArmGridPlanner, AGuideThatMissesAPassageGivesWayToAFinerGuide) {
   expect_valid(p, p.queries[0], found, true);
   EXPECT_EQ(found.facts.number("grid.coarse_degrees"), 2.5);
   EXPECT_NEAR(found.length, 10.117523757709614, 1e-9);
+}
+
+// How many of a path's motions are grid moves (both ends on cells of n per joint): the steps the
+// search counted, the joins of start and goal left out.
+std::size_t grid_moves(const std::vector<JointAngles>& path, std::int64_t n) {
+  const double step = two_pi / static_cast<double>(n);
+  const auto on_grid = [&](const JointAngles& q) {
+    return std::all_of(q.begin(), q.end(), [&](double a) { return static_cast<double>(std::llround(a / step)) * step == a; });
+  };
+  std::size_t moves = 0;
+  for (std::size_t k = 0; k + 1 < path.size(); ++k) moves += on_grid(path[k]) && on_grid(path[k + 1]);
+  return moves;
+}
+
+// A goal in the workspace is a set of goal configurations: the grid reaches the nearest in grid
+// moves, which is the fewest moves of the grid planned to each goal alone; every way of searching
+// agrees (the compact A* and Dijkstra, the generic graph's A* eagerly and breadth first). The path
+// ends exactly at the goal the facts name, with the hand at the point.
+TEST(ArmGridPlanner, AGoalPointEndsAtTheNearestGoalOfItsSet) {
+  struct Case {
+    std::string file, query;
+    double resolution;
+    bool eager;
+  };
+  for (const Case& c : {Case{"two_link_reach.json", "two_elbows", 10, true}, Case{"four_link_reach.json", "near_the_base", 10, false},
+                        Case{"four_link_reach.json", "oriented", 10, false}}) {
+    SCOPED_TRACE(c.file + " " + c.query);
+    const ArmProblem p = read_arm_problem(arms + c.file);
+    const ArmQuery& q = query_named(p, c.query);
+    const ArmCollisionChecker checker(p);
+    const ArmGoalSet set = arm_goal_set(checker, q);
+    ASSERT_GE(set.goals.size(), 2u);
+    ArmGridOptions options;
+    options.resolution_degrees = c.resolution;
+    const std::int64_t n = 360 / static_cast<std::int64_t>(c.resolution);
+    std::size_t fewest = SIZE_MAX;
+    std::vector<std::size_t> moves_to;
+    for (const ArmGoal& goal : set.goals) {
+      const auto alone = plan_once(p, {"alone", q.start, goal.angles}, options);
+      moves_to.push_back(alone.found ? grid_moves(alone.path, n) : SIZE_MAX);
+      fewest = std::min(fewest, moves_to.back());
+    }
+    ASSERT_NE(fewest, SIZE_MAX);
+    std::vector<ArmGridOptions> searches(4, options);
+    searches[1].search.algorithm = Search::dijkstra;
+    searches[2].lazy = !c.eager;
+    searches[3].search.algorithm = Search::bfs;
+    for (const ArmGridOptions& o : searches) {
+      SCOPED_TRACE(std::string(to_string(o.search.algorithm)) + (o.lazy ? " lazy" : " eager"));
+      const auto plan = plan_once(p, q, o);
+      ASSERT_TRUE(plan.found) << plan.why_not;
+      test::expect_arm_path_free(checker, q, plan.path);
+      const std::size_t reached = test::expect_goal_facts(plan, set);
+      EXPECT_EQ(grid_moves(plan.path, n), fewest);
+      EXPECT_EQ(moves_to[reached], fewest);
+      EXPECT_EQ(plan.facts.text("grid.shortest"), o.search.algorithm == Search::bfs ? "not claimed" : "proved");
+    }
+  }
+}
+
+// Coarse to fine with goals: every level joins them, and the corridor's path ends at one.
+TEST(ArmGridPlanner, AGoalPointPlansCoarseToFine) {
+  const ArmProblem p = read_arm_problem(arms + "four_link_reach.json");
+  const ArmQuery& q = query_named(p, "near_the_base");
+  ArmGridOptions options;
+  options.resolution_degrees = 2.5;
+  options.exact_cells = 0;  // always the corridor
+  const auto plan = plan_once(p, q, options);
+  ASSERT_TRUE(plan.found) << plan.why_not;
+  EXPECT_EQ(plan.facts.count("grid.rounds"), 1);
+  const ArmCollisionChecker checker(p);
+  test::expect_arm_path_free(checker, q, plan.path);
+  test::expect_goal_facts(plan, arm_goal_set(checker, q));
+}
+
+// With one goal the grid's answer is what it was before goal sets: no goal facts at all.
+TEST(ArmGridPlanner, OneGoalInJointAnglesHasNoGoalFacts) {
+  const ArmProblem p = read_arm_problem(arms + "two_link_points.json");
+  for (const ArmQuery& q : p.queries) {
+    const PlanReport<JointAngles> plan = plan_once(p, q);
+    ASSERT_TRUE(plan.found);
+    for (const auto& [name, value] : plan.facts.entries()) EXPECT_NE(name.rfind("goal.", 0), 0u) << name;
+  }
 }
 
 }  // namespace

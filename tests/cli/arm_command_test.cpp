@@ -9,6 +9,8 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <regex>
 
 namespace {
 
@@ -152,6 +154,70 @@ TEST(ArmCommand, PathsAreCertifiedAndCheckResolutionIsRefused) {
   const CliRun both = run_polyplan("arm " + arm_file("two_link_points.json") + " --evaluation eager --eager");
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_NE(both.err.find("given twice"), std::string::npos) << both.err;
+}
+
+}  // namespace
+
+namespace {
+
+// Goals in the workspace: the JSON names the IK solution reached and the hand's error there, the
+// summary line says it, an unreachable point is an answer (no_path, why), the picture marks the
+// point; a query with both goal and goal_point is bad input.
+TEST(ArmCommand, AGoalPointIsPlannedToItsIkSolutions) {
+  const CliRun run = run_polyplan("arm " + arm_file("two_link_reach.json") + " --json -");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  const auto all = nlohmann::json::parse(run.out);
+  ASSERT_EQ(all.size(), 5u);
+  std::map<std::string, nlohmann::json> by_name;
+  for (const auto& answer : all) by_name[answer["query"].get<std::string>()] = answer;
+  const std::map<std::string, int> candidates{{"outer_boundary", 1}, {"inner_boundary", 1}, {"two_elbows", 2}, {"one_elbow_free", 1}};
+  for (const auto& [name, count] : candidates) {
+    SCOPED_TRACE(name);
+    const auto& j = by_name.at(name);
+    ASSERT_TRUE(j["found"].get<bool>()) << j.dump();
+    EXPECT_EQ(j["goal"]["candidates"], count);
+    EXPECT_LT(j["goal"]["reached"].get<int>(), count);
+    EXPECT_LE(j["goal"]["error"].get<double>(), 1e-12);
+    EXPECT_EQ(j["goal"]["solutions"], name == "one_elbow_free" ? 2 : count);
+  }
+  const auto& beyond = by_name.at("one_ulp_beyond");
+  EXPECT_FALSE(beyond["found"].get<bool>());
+  EXPECT_EQ(beyond["status"], "no_path");
+  EXPECT_EQ(beyond["why_not"], "the point (0, 5.000000000000001) is out of reach: the arm reaches distances 1 to 5 from its base");
+  EXPECT_FALSE(beyond.contains("goal"));
+
+  const CliRun text = run_polyplan("arm " + arm_file("two_link_reach.json") + " --query two_elbows --method rrtconnect");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("two_elbows: length "), std::string::npos) << text.out;
+  EXPECT_TRUE(std::regex_search(text.out, std::regex(R"(, ends at IK solution ([12]) of 2 \(goal\.reached [01]\), the hand \S+ from the goal point\n)")))
+      << text.out;
+}
+
+TEST(ArmCommand, APictureMarksTheGoalPoint) {
+  const fs::path dir = fs::temp_directory_path() / ("polyplan_arm_goal_cli_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  const CliRun run = run_polyplan("arm " + arm_file("four_link_reach.json") + " --method rrtconnect --svg '" + (dir / "reach.svg").string() +
+                                  "' --strobe '" + (dir / "strobe.svg").string() + "'");
+  ASSERT_EQ(run.exit_code, 0) << run.err;
+  for (const char* picture : {"reach-oriented.svg", "strobe-near_the_base.svg", "reach-out_of_reach.svg"}) {
+    const std::string svg = slurp(dir / picture);
+    EXPECT_NE(svg.find("class=\"goal-point\""), std::string::npos) << picture;
+  }
+  EXPECT_NE(slurp(dir / "reach-oriented.svg").find("goal point and orientation (the hand&apos;s target)"), std::string::npos);
+  EXPECT_NE(slurp(dir / "reach-near_the_base.svg").find("goal point (the hand&apos;s target)"), std::string::npos);
+  EXPECT_EQ(slurp(dir / "reach-near_the_base.svg").find("goal point and orientation"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+TEST(ArmCommand, BothGoalAndGoalPointIsBadInput) {
+  const fs::path file = fs::temp_directory_path() / ("polyplan_arm_both_" + std::to_string(::getpid()) + ".json");
+  std::ofstream(file) << R"({"links": [1, 1], "queries": [{"name": "q", "start": [0, 0], "goal": [1, 1], "goal_point": [1, 1]}]})";
+  const CliRun run = run_polyplan("arm '" + file.string() + "'");
+  EXPECT_EQ(run.exit_code, 2);
+  EXPECT_EQ(lines(run.err), 1u) << run.err;
+  EXPECT_NE(run.err.find(file.string() + ": queries[0]: both \"goal\" and \"goal_point\" given"), std::string::npos) << run.err;
+  EXPECT_TRUE(run.out.empty()) << run.out;
+  fs::remove(file);
 }
 
 }  // namespace

@@ -74,6 +74,26 @@ TEST_F(ArmFiles, ReadsEveryField) {
   EXPECT_NE(warnings[1].find("queries[1]: unknown field \"speed\" ignored"), std::string::npos) << warnings[1];
 }
 
+TEST_F(ArmFiles, ReadsGoalPointsAndJointLimits) {
+  std::vector<std::string> warnings;
+  const ArmProblem p = read_arm_problem(write("reach.json", R"({
+    "links": [1, 1, 1], "limits": [[-1.5, 1.5], ["-1/2", 3], [0, 0]],
+    "start": [0, 0, 0], "goal_point": [1.5, "1/3"], "goal_orientation": 0.1,
+    "queries": [{"name": "point", "start": [1, 1, 1], "goal_point": [-2, 0.5]},
+                {"name": "angles", "start": [1, 1, 1], "goal": [0, 0, 0]}]
+  })"), &warnings);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(p.arm.limits, (std::vector<std::pair<double, double>>{{-1.5, 1.5}, {-0.5, 3}, {0, 0}}));
+  ASSERT_EQ(p.queries.size(), 3u);
+  ASSERT_TRUE(p.queries[0].goal_point.has_value());
+  EXPECT_TRUE(p.queries[0].goal.empty());
+  EXPECT_EQ(p.queries[0].goal_point->point, Eigen::Vector2d(1.5, 1.0 / 3));  // the double nearest 1/3
+  EXPECT_EQ(p.queries[0].goal_point->orientation, 0.1);
+  EXPECT_EQ(p.queries[1].goal_point, (WorkspaceGoal{{-2, 0.5}, std::nullopt}));
+  EXPECT_FALSE(p.queries[2].goal_point.has_value());
+  EXPECT_EQ(p.queries[2].goal, (JointAngles{0, 0, 0}));
+}
+
 TEST_F(ArmFiles, WarningsGoToStderrWhenNotCollected) {
   const std::string path = write("arm.json", R"({"links": [1], "colour": "red"})");
   ::testing::internal::CaptureStderr();
@@ -105,7 +125,33 @@ TEST_F(ArmFiles, EachBadFileNamesTheFileTheObjectAndTheProblem) {
        "queries[0].goal: expected 1 joint angles (one per link, radians), got 2"},
       {"angle_not_finite", R"({"links": [1, 1], "start": [0, "-1e999"], "goal": [0, 0]})", "start[1]: overflows the supported range (0 or a magnitude from 1e-100 to 1e100): \"-1e999\""},
       {"angle_not_a_number", R"({"links": [1], "start": ["abc"], "goal": [0]})", "start[0]: not a number: \"abc\""},
-      {"goal_missing", R"({"links": [1], "start": [0]})", "arm: missing field \"goal\" (start is given)"},
+      {"goal_missing", R"({"links": [1], "start": [0]})", "arm: missing field \"goal\" or \"goal_point\" (start is given)"},
+      {"start_missing", R"({"links": [1], "goal_point": [0, 1]})", "arm: missing field \"start\" (goal_point is given)"},
+      {"goal_and_goal_point", R"({"links": [1, 1], "start": [0, 0], "goal": [1, 1], "goal_point": [1, 1]})",
+       "arm: both \"goal\" and \"goal_point\" given: a query's goal is joint angles or the hand at a point, not both"},
+      {"query_goal_and_goal_point", R"({"links": [1], "queries": [{"start": [0], "goal": [1], "goal_point": [0, 1]}]})",
+       "queries[0]: both \"goal\" and \"goal_point\" given: a query's goal is joint angles or the hand at a point, not both"},
+      {"query_goal_missing", R"({"links": [1], "queries": [{"name": "q", "start": [0]}]})", "queries[0]: missing field \"goal\" (or \"goal_point\")"},
+      {"orientation_alone", R"({"links": [1, 1], "start": [0, 0], "goal": [1, 1], "goal_orientation": 1})",
+       "goal_orientation: given without \"goal_point\" (it is the hand's orientation at that point)"},
+      {"orientation_without_query", R"({"links": [1], "goal_orientation": 1})",
+       "goal_orientation: given without \"goal_point\" (it is the hand's orientation at that point)"},
+      {"query_orientation_alone", R"({"links": [1], "queries": [{"start": [0], "goal": [0], "goal_orientation": 1}]})",
+       "queries[0].goal_orientation: given without \"goal_point\" (it is the hand's orientation at that point)"},
+      {"goal_point_three_numbers", R"({"links": [1], "start": [0], "goal_point": [1, 2, 3]})", "goal_point: expected a point [x, y], got [1,2,3]"},
+      {"goal_point_text", R"({"links": [1], "queries": [{"start": [0], "goal_point": [1, "far"]}]})",
+       "queries[0].goal_point[1]: not a number: \"far\""},
+      {"goal_point_overflows", R"({"links": [1], "start": [0], "goal_point": [1, "1e999"]})",
+       "goal_point[1]: overflows the supported range (0 or a magnitude from 1e-100 to 1e100): \"1e999\""},
+      {"goal_orientation_text", R"({"links": [1], "start": [0], "goal_point": [1, 0], "goal_orientation": "up"})",
+       "goal_orientation: not a number: \"up\""},
+      {"limits_too_few", R"({"links": [1, 1], "limits": [[0, 1]]})", "limits: expected 2 joint limits [lo, hi] (one per link, radians), got 1"},
+      {"limits_not_a_list", R"({"links": [1], "limits": 3})", "limits: expected a list of 1 joint limits [lo, hi] (one per link, radians), got 3"},
+      {"limit_three_numbers", R"({"links": [1], "limits": [[0, 1, 2]]})", "limits[0]: expected [lo, hi] (radians), got [0,1,2]"},
+      {"limit_not_a_pair", R"({"links": [1], "limits": [1]})", "limits[0]: expected [lo, hi] (radians), got 1"},
+      {"limit_inverted", R"({"links": [1, 1], "limits": [[0, 1], [2, 1.5]]})", "limits[1]: lo 2 is above hi 1.5 (radians, [lo, hi])"},
+      {"limit_infinite", R"({"links": [1], "limits": [["-1e999", 0]]})",
+       "limits[0][0]: overflows the supported range (0 or a magnitude from 1e-100 to 1e100): \"-1e999\""},
       {"query_start_missing", R"({"links": [1], "queries": [{"goal": [0]}]})", "queries[0]: missing field \"start\""},
       {"query_name_twice", R"({"links": [1], "queries": [{"name": "a", "start": [0], "goal": [0]}, {"name": "a", "start": [0], "goal": [0]}]})",
        "queries[1].name: the query name \"a\" is used twice"},
