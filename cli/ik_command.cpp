@@ -25,6 +25,16 @@ struct IkCommandOptions {
   std::string json, svg;
 };
 
+// The target as written ("0.3,0.4" is (3/10, 2/5)), which decides a two-link arm's boundary
+// exactly; nothing when a part is not an exact number (a hexadecimal double: its double is exact).
+std::optional<ExactPoint> exact_target(const std::string& text) {
+  const auto comma = text.find(',');
+  if (comma == std::string::npos) return std::nullopt;
+  const auto x = parse_rational(text.substr(0, comma)), y = parse_rational(text.substr(comma + 1));
+  if (!x || !y) return std::nullopt;
+  return ExactPoint{*x, *y};
+}
+
 IkOptions ik_options(const Arm& arm, const IkCommandOptions& o) {
   IkOptions options;
   if (!std::isnan(o.orientation)) options.orientation = o.orientation * M_PI / 180;
@@ -41,7 +51,8 @@ int run_ik(const IkCommandOptions& o) {
   const std::vector<double> t = comma_numbers(o.target, "--target");
   if (t.size() != 2) throw InputError("--target " + o.target + ": expected X,Y");
   const Eigen::Vector2d target(t[0], t[1]);
-  const IkOptions options = ik_options(problem.arm, o);
+  IkOptions options = ik_options(problem.arm, o);
+  options.exact_target = exact_target(o.target);
   IkAnswer answer = inverse_kinematics(problem.arm, target, options);
   std::vector<bool> free;
   const ArmCollisionChecker checker(problem);

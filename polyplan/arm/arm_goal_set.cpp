@@ -30,6 +30,7 @@ std::string goal_text(const WorkspaceGoal& goal) {
 IkOptions ik_options(const Arm& arm, const WorkspaceGoal& goal, std::size_t seeds) {
   IkOptions options;
   options.orientation = goal.orientation;
+  options.exact_target = goal.exact_point;
   options.limits = arm.limits;
   options.seeds = seeds;
   options.all = true;
@@ -54,7 +55,7 @@ ArmGoalSet workspace_goal_set(const ArmCollisionChecker& checker, const Workspac
   const Arm& arm = checker.arm();
   ArmGoalSet set;
   set.workspace = true;
-  const HandReach reach = hand_reach(arm.links, goal.point);
+  const HandReach reach = hand_reach(arm, goal.point, goal.exact_point);
   if (!reach.reachable()) {
     set.status = PlanStatus::no_path;
     set.why_none = "the point " + point_text(goal.point) + " is out of reach: the arm reaches distances " +

@@ -47,23 +47,33 @@ double end_orientation(const JointAngles& angles) {
   return wrap(sum);
 }
 
-HandReach hand_reach(const std::vector<double>& links, Eigen::Vector2d target) {
-  // Every double is a rational: the sums, the squares and the comparisons are exact.
+HandReach exact_hand_reach(const std::vector<Rational>& links, const ExactPoint& target) {
+  // The sums, the squares and the comparisons are exact.
   Rational sum(0), longest(0);
-  for (const double l : links) {
-    sum += Rational(l);
-    longest = std::max(longest, Rational(l));
+  for (const Rational& l : links) {
+    sum += l;
+    longest = std::max(longest, l);
   }
   Rational inner = 2 * longest - sum;
   if (inner < 0) inner = 0;
-  const Rational x(target.x()), y(target.y());
-  const Rational d2 = x * x + y * y, outer_margin = sum * sum - d2, inner_margin = d2 - inner * inner;
+  const Rational d2 = target.x * target.x + target.y * target.y, outer_margin = sum * sum - d2, inner_margin = d2 - inner * inner;
   return {to_double(inner), to_double(sum), sgn(outer_margin), sgn(inner_margin), to_double(outer_margin), to_double(inner_margin)};
 }
 
-IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target) {
+HandReach hand_reach(const std::vector<double>& links, Eigen::Vector2d target) {
+  // Every double is a rational.
+  return exact_hand_reach(std::vector<Rational>(links.begin(), links.end()), ExactPoint{Rational(target.x()), Rational(target.y())});
+}
+
+HandReach hand_reach(const Arm& arm, Eigen::Vector2d target, const std::optional<ExactPoint>& exact_target) {
+  const std::vector<Rational> links =
+      arm.exact_links.size() == arm.links.size() ? arm.exact_links : std::vector<Rational>(arm.links.begin(), arm.links.end());
+  return exact_hand_reach(links, exact_target.value_or(ExactPoint{Rational(target.x()), Rational(target.y())}));
+}
+
+IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target, const std::optional<ExactPoint>& exact_target) {
   require_links(arm, 2, "two_link_ik");
-  const HandReach reach = hand_reach(arm.links, target);
+  const HandReach reach = hand_reach(arm, target, exact_target);
   const double toward = std::atan2(target.y(), target.x());
   const bool longer_first = arm.links[0] >= arm.links[1];
   const JointAngles stretched{toward, 0}, folded{longer_first ? toward : toward + M_PI, M_PI};
@@ -96,6 +106,7 @@ IkAnswer three_link_ik(const Arm& arm, Eigen::Vector2d target, double orientatio
   const Eigen::Vector2d wrist = target - arm.links[2] * Eigen::Vector2d(std::cos(orientation), std::sin(orientation));
   Arm two = arm;
   two.links.pop_back();
+  if (!two.exact_links.empty()) two.exact_links.pop_back();
   IkAnswer wrist_answer = two_link_ik(two, wrist);
   IkAnswer answer;
   answer.found = answer.every_solution = wrist_answer.found;
@@ -236,7 +247,7 @@ bool within_joint_limits(const JointAngles& angles, const std::vector<std::pair<
 
 IkAnswer inverse_kinematics(const Arm& arm, Eigen::Vector2d target, const IkOptions& options) {
   const bool oriented = options.orientation.has_value();
-  IkAnswer answer = arm.joints() == 2 && !oriented  ? two_link_ik(arm, target)
+  IkAnswer answer = arm.joints() == 2 && !oriented  ? two_link_ik(arm, target, options.exact_target)
                     : arm.joints() == 3 && oriented ? three_link_ik(arm, target, *options.orientation)
                                                     : numeric_ik(arm, target, options);
   if (!answer.found || options.limits.empty()) return answer;

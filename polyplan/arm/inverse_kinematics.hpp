@@ -13,6 +13,7 @@
 //   inverse_kinematics  any arm: the closed form where one applies, numeric_ik otherwise, and the
 //                   joint limits kept by every solution
 //   hand_reach      whether a point lies in the annulus an n-link arm's hand reaches, decided exactly
+//                   (on the lengths and the point as a file or the command line wrote them, when known)
 //
 // Every solution carries its end-effector error |f(θ) − target|, measured by forward kinematics.
 #include <polyplan/arm/arm.hpp>
@@ -52,9 +53,16 @@ struct HandReach {
   double outer_margin = 0, inner_margin = 0;  // r_max² − d² and d² − r_min²
   bool reachable() const { return outer_side >= 0 && inner_side >= 0; }
 };
+HandReach exact_hand_reach(const std::vector<Rational>& links, const ExactPoint& target);
+// On the doubles' values.
 HandReach hand_reach(const std::vector<double>& links, Eigen::Vector2d target);
+// On the values as written where they are known: arm.exact_links, and exact_target (the target as
+// written; its double is `target`), each falling back to the doubles.
+HandReach hand_reach(const Arm& arm, Eigen::Vector2d target, const std::optional<ExactPoint>& exact_target);
 
-IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target);
+// exact_target: the target as written (a decimal 0.3 is 3/10), whose double is `target`; with the
+// arm's exact_links it decides the annulus's boundary on the values the user wrote.
+IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target, const std::optional<ExactPoint>& exact_target = std::nullopt);
 IkAnswer three_link_ik(const Arm& arm, Eigen::Vector2d target, double orientation);
 
 struct IkOptions {
@@ -65,6 +73,7 @@ struct IkOptions {
   double tolerance = 1e-9;                                // end-effector error accepted
   double refine_to = 0;  // above 0: iterate on towards this smaller error while the steps still reduce it
   bool all = false;                                       // every distinct solution the seeds find, not only the first
+  std::optional<ExactPoint> exact_target;                 // the target as written (two_link_ik's boundary)
   std::uint64_t seed = 1;
 };
 

@@ -19,6 +19,10 @@ using JointAngles = std::vector<double>;
 
 struct Arm {
   std::vector<double> links;  // lengths > 0; base at the origin
+  // The lengths as the file wrote them, exactly (a decimal 0.1 is 1/10), one per link; empty for an
+  // arm built in code (the doubles' values are then exact). They decide, exactly, whether a point
+  // lies on the boundary of the annulus the hand reaches (inverse_kinematics.hpp's hand_reach).
+  std::vector<Rational> exact_links{};
   // 0: links are segments; w > 0: each link is the w-wide rectangle on its segment (no end caps:
   // the rectangle ends at the joints).
   double link_width = 0;
@@ -46,9 +50,12 @@ struct Arm {
 struct WorkspaceGoal {
   Eigen::Vector2d point = Eigen::Vector2d::Zero();
   std::optional<double> orientation;
+  // The point as the file wrote it, exactly, when it was read from one (see Arm::exact_links).
+  std::optional<ExactPoint> exact_point{};
 
   friend bool operator==(const WorkspaceGoal& a, const WorkspaceGoal& b) {
-    return a.point.x() == b.point.x() && a.point.y() == b.point.y() && a.orientation == b.orientation;
+    return a.point.x() == b.point.x() && a.point.y() == b.point.y() && a.orientation == b.orientation &&
+           a.exact_point == b.exact_point;
   }
 };
 

@@ -48,6 +48,9 @@ class ArmFileReader : public detail::JsonFileReader {
     return a;
   }
 
+  // The number exactly as written; number() has accepted it.
+  static Rational exact(const json& v) { return *parse_rational(v.is_string() ? v.get<std::string>() : v.dump()); }
+
   Eigen::Vector2d point(const json& p, const std::string& object) const {
     if (!p.is_array() || p.size() != 2) fail(object, "expected a point [x, y], got " + abbreviated(p));
     return {number(p[0], object + "[0]"), number(p[1], object + "[1]")};
@@ -80,6 +83,7 @@ Arm read_arm(const ArmFileReader& r, const json& root) {
   if (!root.contains("links")) r.fail("arm", "missing field \"links\" (the link lengths, e.g. [1, 1])");
   arm.links = r.numbers(root["links"], "links", "a list of link lengths");
   if (arm.links.empty()) r.fail("links", "expected at least one link length, got []");
+  for (const json& l : root["links"]) arm.exact_links.push_back(ArmFileReader::exact(l));
   for (std::size_t i = 0; i < arm.links.size(); ++i)
     if (!(arm.links[i] > 0))
       r.fail("links[" + std::to_string(i) + "]", "a link length must be positive, got " + ArmFileReader::text(root["links"][i]));
@@ -130,7 +134,8 @@ void read_goal(const ArmFileReader& r, const json& q, const std::string& where, 
     query.goal = r.angles(q["goal"], prefix + "goal", joints);
     return;
   }
-  WorkspaceGoal goal{r.point(q["goal_point"], prefix + "goal_point"), std::nullopt};
+  const json& p = q["goal_point"];
+  WorkspaceGoal goal{r.point(p, prefix + "goal_point"), std::nullopt, ExactPoint{ArmFileReader::exact(p[0]), ArmFileReader::exact(p[1])}};
   if (q.contains("goal_orientation")) goal.orientation = r.number(q["goal_orientation"], prefix + "goal_orientation");
   query.goal_point = goal;
 }

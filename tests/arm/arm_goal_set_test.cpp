@@ -7,6 +7,7 @@
 // certify_motion).
 #include <polyplan/arm/arm_goal_set.hpp>
 #include <polyplan/arm/inverse_kinematics.hpp>
+#include <polyplan/io/arm_reader.hpp>
 #include <polyplan/registry/registry.hpp>
 #include "arm/arm_fixtures.hpp"
 
@@ -210,6 +211,18 @@ TEST(ArmGoalSet, TheReachOfNLinksIsDecidedExactly) {
   const ArmGoalSet set = goal_set_of(problem_of(arm_of({5, 1, 1})), to_point({0, 0, 0}, {0, test::down(3)}));
   EXPECT_EQ(set.status, PlanStatus::no_path);
   EXPECT_EQ(set.why_none, "the point (0, 2.9999999999999996) is out of reach: the arm reaches distances 3 to 7 from its base");
+}
+
+// An arm file's decimals are the values written: links 0.2 and 0.3 reach (0.3, 0.4) only stretched
+// out, one goal, though the doubles of the three numbers would put it out of reach.
+TEST(ArmGoalSet, AFilesDecimalGoalOnTheBoundaryHasOneGoal) {
+  const ArmProblem p = parse_arm_problem(R"({"links": [0.2, 0.3], "start": [1, 1], "goal_point": [0.3, 0.4]})", "decimal");
+  EXPECT_EQ(p.arm.exact_links, (std::vector<Rational>{Rational(1, 5), Rational(3, 10)}));
+  ASSERT_TRUE(p.queries[0].goal_point && p.queries[0].goal_point->exact_point);
+  EXPECT_EQ(*p.queries[0].goal_point->exact_point, (ExactPoint{Rational(3, 10), Rational(2, 5)}));
+  const ArmGoalSet set = goal_set_of(p, p.queries[0]);
+  ASSERT_EQ(set.goals.size(), 1u) << set.why_none;
+  EXPECT_LT(set.goals[0].error, 1e-15);
 }
 
 TEST(ArmGoalSet, AGoalInJointAnglesIsItselfNormalisedAndHasNoFacts) {

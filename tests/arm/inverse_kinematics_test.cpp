@@ -62,6 +62,27 @@ TEST(InverseKinematics, TwoLinksOnTheAnnulusHaveOneSolutionAndBeyondItNone) {
   EXPECT_FALSE(two_link_ik(arm, grazing).found);
 }
 
+// Lengths 0.2 and 0.3 and the target (0.3, 0.4) as written: |target| = 1/2 = l1 + l2 exactly, one
+// solution; their doubles put the target beyond the doubles' sum. (0.06, 0.08) lies exactly on the
+// inner circle, 1/10 = l2 − l1. Arm files and `polyplan ik --target` keep the values as written.
+TEST(InverseKinematics, DecimalLengthsAndTargetsAreDecidedOnTheValuesWritten) {
+  Arm arm = arm_of({0.2, 0.3});
+  EXPECT_FALSE(two_link_ik(arm, {0.3, 0.4}).found) << "the doubles alone";
+  arm.exact_links = {Rational(1, 5), Rational(3, 10)};
+  const IkAnswer outer = two_link_ik(arm, {0.3, 0.4}, ExactPoint{Rational(3, 10), Rational(2, 5)});
+  ASSERT_TRUE(outer.found) << outer.why_not;
+  ASSERT_EQ(outer.solutions.size(), 1u);
+  EXPECT_EQ(outer.solutions[0].angles[1], 0);
+  EXPECT_LT(outer.solutions[0].error, 1e-15);
+  IkOptions options;
+  options.exact_target = ExactPoint{Rational(3, 50), Rational(2, 25)};
+  const IkAnswer inner = inverse_kinematics(arm, {0.06, 0.08}, options);
+  ASSERT_TRUE(inner.found) << inner.why_not;
+  ASSERT_EQ(inner.solutions.size(), 1u);
+  EXPECT_NEAR(std::abs(inner.solutions[0].angles[1]), M_PI, 1e-15);
+  EXPECT_LT(inner.solutions[0].error, 1e-15);
+}
+
 TEST(InverseKinematics, ThreeLinksReachAPointWithAnOrientation) {
   const Arm arm = arm_of({1, 0.8, 0.3});
   for (const double orientation : {0.0, 1.0, -2.5}) {

@@ -89,7 +89,8 @@ TEST_F(ArmFiles, ReadsGoalPointsAndJointLimits) {
   EXPECT_TRUE(p.queries[0].goal.empty());
   EXPECT_EQ(p.queries[0].goal_point->point, Eigen::Vector2d(1.5, 1.0 / 3));  // the double nearest 1/3
   EXPECT_EQ(p.queries[0].goal_point->orientation, 0.1);
-  EXPECT_EQ(p.queries[1].goal_point, (WorkspaceGoal{{-2, 0.5}, std::nullopt}));
+  EXPECT_EQ(p.queries[0].goal_point->exact_point, (ExactPoint{Rational(3, 2), Rational(1, 3)}));  // as written
+  EXPECT_EQ(p.queries[1].goal_point, (WorkspaceGoal{{-2, 0.5}, std::nullopt, ExactPoint{Rational(-2), Rational(1, 2)}}));
   EXPECT_FALSE(p.queries[2].goal_point.has_value());
   EXPECT_EQ(p.queries[2].goal, (JointAngles{0, 0, 0}));
 }
