@@ -13,6 +13,18 @@ ARM_PLANNERS = [p.name for p in polyplan.planners() if "arm" in p.space]
 WORLD_PLANNERS = [p.name for p in polyplan.planners() if "polygon world" in p.space]
 
 
+def clockless(planner):
+    """Options that stop `planner` by its iteration limit, never by the clock, so that the program's
+    run and Python's give one answer however loaded the machine (prm on decimal.json's sliver
+    passage runs until a limit): for a planner with both limits, 20000 iterations and a time limit
+    it never reaches. As (program arguments, Python keyword arguments)."""
+    names = {o.name for p in polyplan.planners() if p.name == planner for o in p.options}
+    if not {"time", "iterations"} <= names:
+        return [], {}
+    options = {"iterations": 20000, "time": 1000}
+    return [a for k, v in options.items() for a in (f"--{k}", str(v))], options
+
+
 def without_times(value):
     """The JSON with every measured time taken out (keys naming seconds), which no two runs share."""
     if isinstance(value, dict):

@@ -5,7 +5,7 @@ lists what `polyplan planners` lists."""
 import pytest
 
 import polyplan
-from cli_agreement import WORLD_PLANNERS, as_list, agree, compare
+from cli_agreement import WORLD_PLANNERS, as_list, agree, clockless, compare
 from conftest import cli_json, data, shipped
 
 
@@ -18,7 +18,9 @@ CAR_WORLDS = [w for w in shipped("worlds") if polyplan.read_world(data("worlds",
 def test_world_plans_match_the_program(world, planner):
     """A car's world is refused alike by the planners that do not steer."""
     path = data("worlds", world)
-    compare(["plan", path, "--planner", planner], lambda: polyplan.plan(polyplan.read_world(path), planner=planner))
+    arguments, options = clockless(planner)
+    compare(["plan", path, "--planner", planner, *arguments],
+            lambda: polyplan.plan(polyplan.read_world(path), planner=planner, **options))
 
 
 @pytest.mark.parametrize("planner", CAR_PLANNERS)
