@@ -2,6 +2,7 @@
 
 #include <polyplan/draw/theme.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <map>
@@ -27,19 +28,29 @@ std::string number(double value) {
   return text;
 }
 
-std::string label_text(const Label& label) {
-  return "g=" + number(label.g) + " h=" + number(label.h) + " f=" + number(label.f);
-}
-
-svg::Box2 graph_box(const WeightedDigraph& graph) {
-  svg::BoxAround box;
-  for (DigraphVertexId v = 0; v < num_vertices(graph); ++v) box.add(graph[v].x, graph[v].y);
-  return box.box_or({0, 0, 1, 1});
+// The graph's box, with room above it for the title and the step's caption, and to the right of
+// it for the labels of the rightmost vertices.
+svg::Box2 graph_box(const WeightedDigraph& graph, const SearchPictureOptions& options) {
+  svg::BoxAround around;
+  for (DigraphVertexId v = 0; v < num_vertices(graph); ++v) around.add(graph[v].x, graph[v].y);
+  svg::Box2 box = around.box_or({0, 0, 1, 1});
+  const double width = box.xmax - box.xmin, height = box.ymax - box.ymin, side = std::max({width, height, 1e-9});
+  box.ymax += 0.12 * side;
+  if (options.labels) box.xmax += 0.1 * side;
+  return box;
 }
 
 // A world point `dx`, `dy` screen pixels away from p (dy up).
 svg::Point2 nudged(const svg::Drawing& drawing, svg::Point2 p, double dx, double dy) {
   return {p.x + dx / drawing.scale(), p.y + dy / drawing.scale()};
+}
+
+// g, h and f on three short lines right of the vertex, as Graph.plot writes them: on a grid one line
+// would run into the next vertex's.
+void draw_label(svg::Drawing& drawing, svg::Point2 p, const Label& label) {
+  drawing.text(nudged(drawing, p, 6, 12), "g=" + number(label.g), kTextPx);
+  drawing.text(nudged(drawing, p, 6, 2), "h=" + number(label.h), kTextPx);
+  drawing.text(nudged(drawing, p, 6, -8), "f=" + number(label.f), kTextPx);
 }
 
 // What the picture and the animation share: styles, and how each piece is drawn.
@@ -80,9 +91,9 @@ void draw_graph(svg::Drawing& drawing, const WeightedDigraph& graph, DigraphVert
   for (DigraphVertexId v = 0; v < num_vertices(graph); ++v) vertices.push_back(at(graph, v));
   drawing.points(vertices, kVertexPx, styles.vertex);
   for (DigraphVertexId v = 0; v < num_vertices(graph); ++v) {
-    if (options.indices) drawing.text(nudged(drawing, at(graph, v), -14, 6), std::to_string(v), kTextPx);
+    if (options.indices) drawing.text(nudged(drawing, at(graph, v), -18, 6), std::to_string(v), kTextPx);
     if (options.heuristic)
-      drawing.text(nudged(drawing, at(graph, v), 6, -14), "h=" + number(euclidean_distance(graph, v, goal)), kTextPx);
+      drawing.text(nudged(drawing, at(graph, v), 6, -18), "h=" + number(euclidean_distance(graph, v, goal)), kTextPx);
   }
 }
 
@@ -166,7 +177,7 @@ std::string search_title(const std::string& file, const Result& result, DigraphV
 
 svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, DigraphVertexId goal, const Result& result,
                          const SearchPictureOptions& options, const std::string& title) {
-  svg::Drawing drawing(graph_box(graph));
+  svg::Drawing drawing(graph_box(graph, options));
   const SearchStyles styles;
   drawing.raw(arrow_defs());
   draw_graph(drawing, graph, goal, options, styles);
@@ -184,7 +195,7 @@ svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, Di
     if (history[v].labels.empty()) continue;
     const Label& last = *history[v].labels.back();
     if (options.backpointers && last.backpointer) drawing.raw(arrow(drawing, graph, v, *last.backpointer));
-    if (options.labels) drawing.text(nudged(drawing, at(graph, v), 6, 6), label_text(last), kTextPx);
+    if (options.labels) draw_label(drawing, at(graph, v), last);
   }
   if (options.backpointers) drawing.legend("backpointer", styles.arrow, svg::Swatch::line);
   if (result.found) {
@@ -198,7 +209,7 @@ svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, Di
 
 svg::Drawing draw_search_animation(const WeightedDigraph& graph, DigraphVertexId start, DigraphVertexId goal,
                                    const Result& result, const SearchPictureOptions& options, const std::string& title) {
-  svg::Drawing drawing(graph_box(graph));
+  svg::Drawing drawing(graph_box(graph, options));
   const SearchStyles styles;
   drawing.raw(arrow_defs());
   draw_graph(drawing, graph, goal, options, styles);
@@ -227,7 +238,7 @@ svg::Drawing draw_search_animation(const WeightedDigraph& graph, DigraphVertexId
       if (options.backpointers && l.backpointer) drawing.raw(arrow(drawing, graph, v, *l.backpointer, shown));
       if (options.labels) {
         drawing.begin_group("class=\"label\" opacity=\"0\"", shown);
-        drawing.text(nudged(drawing, at(graph, v), 6, 6), label_text(l), kTextPx);
+        draw_label(drawing, at(graph, v), l);
         drawing.end_group();
       }
     }

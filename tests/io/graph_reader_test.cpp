@@ -53,9 +53,11 @@ TEST(GraphReader, ReadsTheSeedsVertexList) {
 // Python's json writes float("inf") and float("nan") as Infinity and NaN: leftovers in g and
 // backpointer are ignored, a cost that is one is refused.
 TEST(GraphReader, ReadsPythonsInfinityAndNaNAsNull) {
+  std::vector<std::string> warnings;
   const GraphFile graph = parse_graph(R"([{"x": [0, 0], "neighbors": [], "neighbors_cost": [], "g": Infinity, "backpointer": NaN,
-    "note": "NaN stays text"}])", "graph.json", nullptr);
+    "note": "NaN stays text"}])", "graph.json", &warnings);
   EXPECT_EQ(graph.vertices.size(), 1u);
+  EXPECT_EQ(warnings.size(), 1u);  // the note, its text untouched
   EXPECT_EQ(error_for(R"([{"x": [0, 0], "neighbors": [0], "neighbors_cost": [-Infinity]}])"),
             "graph.json: vertices[0].neighbors_cost[0]: not a number: null");
 }

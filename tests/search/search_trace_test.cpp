@@ -167,8 +167,11 @@ void expect_consistent_trace(const GraphFile& graph, std::size_t start, std::siz
     EXPECT_EQ(e.f, expected_key(algorithm, e.g, e.h)) << what;
     // Without reopening (weighted A* may reopen) the open list is what was discovered and not yet
     // expanded; DFS's is its stack of unfinished vertices, expanded before this one.
-    if (algorithm == Search::dfs) EXPECT_LE(e.open, k) << what;
-    else if (algorithm != Search::wastar) EXPECT_EQ(e.open, discovered - (k + 1)) << what << " step " << e.step;
+    if (algorithm == Search::dfs) {
+      EXPECT_LE(e.open, k) << what;
+    } else if (algorithm != Search::wastar) {
+      EXPECT_EQ(e.open, discovered - (k + 1)) << what << " step " << e.step;
+    }
   }
   // The path follows the backpointers from the goal, and its cost is their sum.
   if (r.found) {
@@ -178,7 +181,9 @@ void expect_consistent_trace(const GraphFile& graph, std::size_t start, std::siz
     for (std::size_t i = 0; i + 1 < r.path.size(); ++i) cost += cheapest_edge(graph, r.path[i], r.path[i + 1]);
     EXPECT_NEAR(r.cost, cost, 1e-12) << what;
     EXPECT_EQ(expansions.back().vertex, goal) << what;
-    if (algorithm != Search::dfs) EXPECT_DOUBLE_EQ(expansions.back().g, r.cost) << what;
+    if (algorithm != Search::dfs) {
+      EXPECT_DOUBLE_EQ(expansions.back().g, r.cost) << what;
+    }
   }
 }
 
@@ -227,8 +232,12 @@ TEST(SearchTrace, EveryAlgorithmsTraceIsConsistent) {
         const auto r = run_search(graph, q.start, q.goal, algorithm, seed_ties);
         ASSERT_TRUE(r.found) << q.file << " " << to_string(algorithm);
         expect_consistent_trace(graph, q.start, q.goal, algorithm, r);
-        if (algorithm == Search::astar || algorithm == Search::dijkstra) EXPECT_DOUBLE_EQ(r.cost, optimal) << to_string(algorithm);
-        if (algorithm == Search::wastar) EXPECT_LE(r.cost, 2 * optimal + 1e-12);
+        if (algorithm == Search::astar || algorithm == Search::dijkstra) {
+          EXPECT_DOUBLE_EQ(r.cost, optimal) << to_string(algorithm);
+        }
+        if (algorithm == Search::wastar) {
+          EXPECT_LE(r.cost, 2 * optimal + 1e-12);
+        }
         EXPECT_GE(r.cost, optimal - 1e-12) << to_string(algorithm);
       }
   }
