@@ -1,8 +1,10 @@
 // polyplan replan MAP.map --start X,Y --goal X,Y --sensor R [--algorithm dstar-lite|lpastar|astar]
-// [--json FILE|-] [--svg OUT.svg [--animate]] [--trace FILE|-]: a robot that discovers the MovingAI map as it
-// drives (x = column, y = row), replanning with D* Lite, LPA* or A* from scratch; the trace is
-// seed 002's g/rhs tables for every pass of every replan.
+// [--json FILE|-] [--svg OUT.svg [--animate]] [--trace FILE|-] [--rhs-trace FILE|-]: a robot that discovers the
+// MovingAI map as it drives (x = column, y = row), replanning with D* Lite, LPA* or A* from scratch.
+// --trace writes one JSON line per expansion of every replan, with the keys of search's and plan's
+// --trace; --rhs-trace (what --trace wrote before) seed 002's g/rhs tables for every pass.
 #include "cli/command.hpp"
+#include "cli/trace_output.hpp"
 
 #include <polyplan/draw/replan_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
@@ -23,7 +25,7 @@ struct ReplanCommandOptions {
   std::string map, start, goal;
   double sensor = 1.5;
   std::string algorithm{to_string(ReplanAlgorithm::dstar_lite)};
-  std::string json, svg, trace;
+  std::string json, svg, trace, rhs_trace;
   bool animate = false;
 };
 
@@ -73,7 +75,47 @@ nlohmann::json result_json(const ReplanResult& r, double sensor) {
   return out;
 }
 
-// The trace as JSON lines (one per replan's start, one per pass) or as the seed's tables.
+// Every pass of every replan as an expansion line (cli/trace_output.hpp): the popped cell, its g after
+// the pass (null when raised to ∞), h, f = the key's first part (with D* Lite's k_m), the cell its
+// rhs reads (the backpointer), the open list's size after the pass; then the replan's number and
+// the pass's kind ("over", "under", "stale key").
+class ExpansionTraceWriter : public ReplanTrace {
+ public:
+  explicit ExpansionTraceWriter(const std::string& target) : out_(target) {}
+  void replan_begins(std::size_t, GridPoint, std::size_t) override {}
+  void pass(const ReplanTracePass& p) override {
+    const auto cell = [](GridPoint c) { return nlohmann::ordered_json::array({c.x, c.y}); };
+    auto line = expansion_line(p.pass, cell(p.popped), p.g_after.to_double(), p.h.to_double(), p.key_first.to_double(),
+                               p.backpointer ? cell(*p.backpointer) : nlohmann::ordered_json(nullptr), p.open.size());
+    line["replan"] = p.replan;
+    line["kind"] = p.kind;
+    out_.line(line);
+  }
+  void finish() { out_.finish(); }
+
+ private:
+  TraceOutput out_;
+};
+
+// Both traces when both are asked for.
+class BothTraces : public ReplanTrace {
+ public:
+  BothTraces(ReplanTrace& a, ReplanTrace& b) : a_(&a), b_(&b) {}
+  void replan_begins(std::size_t replan, GridPoint at, std::size_t changed) override {
+    a_->replan_begins(replan, at, changed);
+    b_->replan_begins(replan, at, changed);
+  }
+  void pass(const ReplanTracePass& p) override {
+    a_->pass(p);
+    b_->pass(p);
+  }
+
+ private:
+  ReplanTrace *a_, *b_;
+};
+
+// --rhs-trace: seed 002's g/rhs tables as JSON lines (one per replan's start, one per pass) or as
+// the seed's tables.
 class TraceWriter : public ReplanTrace {
  public:
   TraceWriter(std::ostream& out, bool tables) : out_(&out), tables_(tables) {}
@@ -150,26 +192,34 @@ int run_replan(const ReplanCommandOptions& o) {
   options.algorithm = parse_replan_algorithm(o.algorithm, "--algorithm");
   options.sensor_radius = o.sensor;
   if (o.animate && o.svg.empty()) throw InputError("--animate: give --svg OUT.svg for the animation");
-  if (o.json == "-" && o.trace == "-") throw InputError("--json - and --trace -: only one of them can go to standard output");
+  if ((o.json == "-") + (o.trace == "-") + (o.rhs_trace == "-") > 1)
+    throw InputError("--json -, --trace - and --rhs-trace -: only one of them can go to standard output");
   const GridPoint start = cell_option(o.start, "--start"), goal = cell_option(o.goal, "--goal");
   GridMap map = read_movingai_map(o.map);
 
   std::ofstream trace_file;
-  std::unique_ptr<TraceWriter> trace;
-  if (o.trace == "-") {
-    trace = std::make_unique<TraceWriter>(std::cout, true);
-  } else if (!o.trace.empty()) {
-    trace_file.open(o.trace);
-    if (!trace_file) throw InputError(o.trace + ": cannot write the trace");
-    trace = std::make_unique<TraceWriter>(trace_file, false);
+  std::unique_ptr<TraceWriter> tables;
+  if (o.rhs_trace == "-") {
+    tables = std::make_unique<TraceWriter>(std::cout, true);
+  } else if (!o.rhs_trace.empty()) {
+    trace_file.open(o.rhs_trace);
+    if (!trace_file) throw InputError(o.rhs_trace + ": cannot write the trace");
+    tables = std::make_unique<TraceWriter>(trace_file, false);
   }
-  options.trace = trace.get();
+  std::unique_ptr<ExpansionTraceWriter> expansions;
+  if (!o.trace.empty()) expansions = std::make_unique<ExpansionTraceWriter>(o.trace);
+  std::unique_ptr<BothTraces> both;
+  if (tables && expansions) both = std::make_unique<BothTraces>(*tables, *expansions);
+  options.trace = both ? static_cast<ReplanTrace*>(both.get())
+                  : tables ? static_cast<ReplanTrace*>(tables.get())
+                           : static_cast<ReplanTrace*>(expansions.get());
   const ReplanResult r = drive_through_unknown_map(std::move(map), start, goal, options);
-  if (trace_file && !trace_file.flush()) throw InputError(o.trace + ": cannot write the trace");
+  if (trace_file && !trace_file.flush()) throw InputError(o.rhs_trace + ": cannot write the trace");
+  if (expansions) expansions->finish();
 
   if (!o.json.empty()) write_json(result_json(r, o.sensor), o.json);
   if (!o.svg.empty()) (o.animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).write(o.svg);
-  if (o.json != "-") {
+  if (o.json != "-" && o.trace != "-" && o.rhs_trace != "-") {
     std::printf("%s: %s after %zu moves, cost %s (%.6g), %zu replans, %zu expanded, %.3g ms replanning\n",
                 o.algorithm.c_str(), std::string(to_string(r.status)).c_str(), r.moves, r.traversed_cost.to_string().c_str(),
                 r.traversed_cost.to_double(), r.replans, r.expanded, r.seconds * 1e3);
@@ -190,7 +240,12 @@ void add_replan_command(CLI::App& app, Action& run) {
   command->add_option("--json", options->json, "Write the drive as JSON to this file ('-' for standard output)");
   command->add_option("--svg", options->svg, "Draw the map, what the robot knew and its path (SVG)");
   command->add_flag("--animate", options->animate, "Make the --svg picture an animation, one frame per move");
-  command->add_option("--trace", options->trace, "Every pass of every replan: JSON lines to this file, or tables with '-'");
+  command->add_option("--trace", options->trace,
+                      "Every expansion of every replan as a JSON line {step, vertex, g, h, f, backpointer, open, replan, kind} "
+                      "to this file ('-' for standard output), as search and plan write them. Changed: seed 002's g/rhs "
+                      "tables, which --trace wrote before, are now --rhs-trace");
+  command->add_option("--rhs-trace", options->rhs_trace,
+                      "Seed 002's g/rhs tables for every pass of every replan: JSON lines to this file, or tables with '-'");
   command->callback([options, &run] { run = [options] { return run_replan(*options); }; });
 }
 

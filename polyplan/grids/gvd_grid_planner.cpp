@@ -116,6 +116,7 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
     };
     SearchOptions searching = r.options.search;
     searching.record_expanded = options.record;
+    searching.record_trace = options.trace;
     search = search_between(r.gvd_graph, searching);
     if (!search.found) {
       // Expected only between two free components of the grid; a second search over all free

@@ -2,6 +2,7 @@
 
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/plan/plan_trace.hpp>
 
 #include <utility>
 
@@ -109,10 +110,12 @@ void report_search(const Raster& r, const SearchResult<GridCell>& search, PlanRe
   report.facts.set("search.generated", search.generated);
   report.facts.set("search.path_edges", search.path_edges());
   report.facts.set("search.seconds", search.seconds);
-  for (const GridCell c : search.expanded_order) {
+  const auto centre = [&r](GridCell c) {
     const auto [x, y] = xy_of(r, c);
-    report.expanded.push_back(r.cell_center(x, y));
-  }
+    return r.cell_center(x, y);
+  };
+  for (const GridCell c : search.expanded_order) report.expanded.push_back(centre(c));
+  report.trace = plan_trace<ExactPoint>(search.trace, centre);
 }
 
 CellGrid raster_cell_grid(const Raster& r) {

@@ -42,7 +42,7 @@ std::string cell_text(std::size_t x, std::size_t y);
 std::string cell_text(const Raster& raster, GridCell cell);
 
 // The counts of a grid search as the facts every planner reports (search.expanded, ...), and the
-// centres of the cells it expanded (for the picture).
+// centres of the cells it expanded (for the picture) and its trace (when recorded).
 void report_search(const Raster& raster, const SearchResult<GridCell>& search, PlanReport<ExactPoint>& report);
 
 // A grid planner's query: `answer(report, search)` plans (and may return early with why_not

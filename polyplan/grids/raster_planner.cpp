@@ -65,6 +65,7 @@ PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOption
     const GridGraph& g = r.graph;
     SearchOptions searching = r.options.search;
     searching.record_expanded = options.record;
+    searching.record_trace = options.trace;
     search = shortest_path(g, from, to, searching, GridDistanceTo(g, to, raster_metric(r.raster, g.connectivity())), GridMoveCost{&g});
     if (!search.found) {
       const std::string n = std::to_string(r.raster.cells_per_axis);

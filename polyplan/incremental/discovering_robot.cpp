@@ -54,6 +54,8 @@ class TraceAdapter : public IncrementalObserver<Search> {
     pass.g_before = s.g_before;
     pass.g_after = s.g_after;
     pass.rhs = s.rhs;
+    pass.h = search.heuristic(s.popped);
+    if (const auto parent = search.backpointer(s.popped)) pass.backpointer = point(*parent);
     pass.kind = s.kind == Kind::overconsistent ? "over" : s.kind == Kind::underconsistent ? "under" : "stale key";
     for (const auto& u : s.updated) pass.updated.push_back({point(u.vertex), u.g, u.rhs, action_word(u.action)});
     for (const auto& e : search.open_list())

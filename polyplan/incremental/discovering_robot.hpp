@@ -55,6 +55,8 @@ struct ReplanTracePass {
   std::size_t replan = 0, pass = 0;  // replan counts from 1, pass from 1 within it
   GridPoint popped;
   OctileLength key_first, key_second, g_before, g_after, rhs;
+  OctileLength h;                       // the popped cell's heuristic (without k_m)
+  std::optional<GridPoint> backpointer;  // the neighbour its rhs reads, after the pass (none: the goal, or rhs ∞)
   std::string kind;            // "over" (g := rhs), "under" (g := ∞), "stale key" (put back)
   std::vector<Cell> updated;   // the rhs values it recomputed, in order
   std::vector<Open> open;      // the open list after the pass, by key

@@ -152,6 +152,19 @@ struct Bottleneck {
   double clearance = 0;
 };
 
+// One expansion of a planner's graph search (search/search_trace.hpp's ExpansionRecord) with where
+// its vertex is: for watching the search. `vertex` and `backpointer` are indices in the graph the
+// planner searched (its roadmap with the query's start and goal joined to it).
+template <class Configuration>
+struct PlanExpansion {
+  std::size_t step = 0;  // from 1
+  std::size_t vertex = 0;
+  Configuration at{};
+  double g = 0, h = 0, f = 0;
+  std::optional<std::size_t> backpointer;
+  std::size_t open = 0;
+};
+
 template <class Configuration>
 struct PlanReport {
   bool found = false;
@@ -172,6 +185,9 @@ struct PlanReport {
   // The graph, the cells and the decomposition are the planner's, shared by the reports of its queries.
   std::shared_ptr<const PlanGraph<Configuration>> graph;
   std::vector<Configuration> expanded;  // where the search expanded, in order
+  // Every expansion of the graph search, kept when the query asks for it (QueryOptions::trace) by
+  // the planners that search a graph with search/'s shortest_path; empty for the others.
+  std::vector<PlanExpansion<Configuration>> trace;
   std::shared_ptr<const CellGrid> cells;
   std::shared_ptr<const PlanDecomposition<Configuration>> decomposition;
   // The C-space of the world the answer ends in, when the world changed on the way (a world

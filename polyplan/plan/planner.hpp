@@ -64,6 +64,9 @@ struct SteeredCar {
 struct QueryOptions {
   // Keep what a picture shows: the roadmap or tree, the expanded configurations, the cells.
   bool record = false;
+  // Keep every expansion of the graph search with its g, h, f, backpointer and open-list size
+  // (PlanReport::trace): the planners that search a graph (roadmaps, grids) do.
+  bool trace = false;
 };
 
 template <class Space>

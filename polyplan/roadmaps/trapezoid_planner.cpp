@@ -4,6 +4,7 @@
 #include <polyplan/free_space/query_frame.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
@@ -52,19 +53,23 @@ struct TrapezoidPlanner::Impl {
   const TrapezoidWall& wall_of(RoadmapVertexId v) const { return decomposition.walls()[v - cell_count()]; }
 
   // The roadmap searched from the query's start, joined to the cells `from` around it, to its
-  // goal, joined to the cells `to`; the expanded vertices added to `expanded` when recording.
+  // goal, joined to the cells `to`; the expanded vertices and the trace added to `report` when
+  // `recording` asks for them.
   SearchResult<RoadmapVertexId> search(const Query& query, const std::vector<std::size_t>& from,
-                                       const std::vector<std::size_t>& to, bool record, std::vector<ExactPoint>& expanded) {
+                                       const std::vector<std::size_t>& to, const QueryOptions& recording,
+                                       PlanReport<ExactPoint>& report) {
     place(start_slot, query.start);
     place(goal_slot, query.goal);
     for (std::size_t c : from) add_edge(roadmap, start_slot, c);
     for (std::size_t c : to) add_edge(roadmap, c, goal_slot);
     SearchOptions searching = options.search;
-    searching.record_expanded = record;
+    searching.record_expanded = recording.record;
+    searching.record_trace = recording.trace;
     auto result = shortest_path(roadmap, start_slot, goal_slot, searching, workspace);
     boost::clear_vertex(start_slot, roadmap);
     boost::clear_vertex(goal_slot, roadmap);
-    for (RoadmapVertexId v : result.expanded_order) expanded.push_back(roadmap[v].exact);
+    for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(roadmap[v].exact);
+    report.trace = plan_trace<ExactPoint>(result.trace, [this](RoadmapVertexId v) { return roadmap[v].exact; });
     return result;
   }
 
@@ -149,7 +154,7 @@ PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOpt
     if (share_a_cell(from, to)) {  // one convex cell holds both: the segment
       zigzag = funnel = {query.start, query.goal};
     } else {
-      const auto result = g.search(query, from, to, options.record, report.expanded);
+      const auto result = g.search(query, from, to, options, report);
       tally.count(result);
       if (!result.found)  // the cells of a free component are joined by walls: another component
         return report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");

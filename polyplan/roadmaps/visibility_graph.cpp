@@ -4,6 +4,7 @@
 #include <polyplan/free_space/query_frame.hpp>
 #include <polyplan/geometry/detail/cspace_impl.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/shortest_path.hpp>
@@ -188,7 +189,9 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, SearchOptions s
       report.path = {query.start, query.goal};
     } else {
       search.record_expanded = options.record;
+      search.record_trace = options.trace;
       const auto result = g.search_corners(query, search, report.expanded);
+      report.trace = plan_trace<ExactPoint>(result.trace, [&g](RoadmapVertexId v) { return g.roadmap[v].exact; });
       tally.count(result);
       if (!result.found)  // cannot happen: one component means one path through its corners
         return report.fail(PlanStatus::no_path, "no path in the visibility graph between start and goal");

@@ -4,6 +4,7 @@
 #include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
@@ -261,8 +262,10 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
     const PieceGraph clear = g.pieces_at_least(pieces, *bottleneck, query, *from, *to);
     SearchOptions searching = g.options.search;
     searching.record_expanded = options.record;
+    searching.record_trace = options.trace;
     const auto result = shortest_path(clear.roadmap, g.start_vertex(), g.goal_vertex(), searching);
     for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(clear.roadmap[v].exact);
+    report.trace = plan_trace<ExactPoint>(result.trace, [&clear](RoadmapVertexId v) { return clear.roadmap[v].exact; });
     tally.count(result);
     if (!result.found)  // cannot happen: the bottleneck joined them
       return report.fail(PlanStatus::not_found, "no path on the Voronoi diagram at the bottleneck clearance");

@@ -5,7 +5,9 @@
 //   bfs                              boost::breadth_first_visit (FIFO)
 //   dfs                              boost::depth_first_visit (non-recursive, with a terminator)
 // The per-vertex state lives in a SearchWorkspace reused across queries; a visitor counts what a
-// course compares and stops the search at the goal by throwing (the BGL idiom).
+// course compares and stops the search at the goal by throwing (the BGL idiom), and on request
+// records the search's trace for watching it (SearchOptions::record_trace, search/search_trace.hpp)
+// and breaks ties of f as seed 000's queue does (SearchOptions::ties_first_discovered).
 //
 // Requirements on the graph: boost::graph_traits<Graph> describes an IncidenceGraph (out_edges,
 // source, target) whose vertex_descriptor is copyable, equality-comparable and hashable by the
@@ -27,9 +29,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <type_traits>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -132,6 +137,46 @@ class SlotMap {
   Table* table_;
 };
 
+// The open-list key with ties_first_discovered: the rank, then the order of first touch, which for
+// a best-first search is the order in which vertices entered the open list (a vertex is first
+// touched when its distance is first set).
+struct RankThenSlot {
+  double rank = 0;
+  std::uint32_t slot = 0;
+  RankThenSlot() = default;
+  // Implicit: Boost keeps its zero (a plain 0.0) as a value of the rank map's type.
+  RankThenSlot(double r, std::uint32_t s = 0) : rank(r), slot(s) {}
+};
+
+struct RankThenSlotLess {
+  // Distances (relax) are compared as plain numbers; a weight with Boost's zero (the negative-weight
+  // check) as RankThenSlot of slot 0, which is the same.
+  bool operator()(double a, double b) const { return a < b; }
+  bool operator()(const RankThenSlot& a, const RankThenSlot& b) const {
+    return a.rank < b.rank || (a.rank == b.rank && a.slot < b.slot);
+  }
+};
+
+// The rank map the heap reads as RankThenSlot; Boost writes plain ranks into it.
+template <class Table, class Vertex>
+class RankThenSlotMap {
+ public:
+  using key_type = Vertex;
+  using value_type = RankThenSlot;
+  using reference = RankThenSlot;
+  using category = boost::read_write_property_map_tag;
+
+  explicit RankThenSlotMap(Table& table) : table_(&table) {}
+  friend RankThenSlot get(const RankThenSlotMap& m, const key_type& v) {
+    if (const auto* r = m.table_->find(v)) return {r->rank, r->slot};
+    return {unreached, static_cast<std::uint32_t>(-1)};
+  }
+  friend void put(const RankThenSlotMap& m, const key_type& v, double rank) { m.table_->touch(v).rank = rank; }
+
+ private:
+  Table* table_;
+};
+
 template <class Edge, class WeightFn>
 class FunctionWeightMap {
  public:
@@ -199,70 +244,182 @@ struct SearchCounts {
   std::size_t reopened = 0;  // closed vertices given a shorter distance (weighted A*, inconsistent h)
 };
 
-template <class Vertex>
+// Records SearchOptions::record_trace (search/search_trace.hpp) from the visitors' events. It keeps
+// its own g and backpointer per vertex, summed with the real weights, so that greedy (searched on
+// zero weights), bfs and dfs report the cost of their backpointer paths too; for astar, wastar and
+// dijkstra its g is Boost's distance, summed in the same order.
+template <class Vertex, class Hash, class Heuristic, class WeightFn, class PredecessorMap>
+class TraceRecorder {
+ public:
+  TraceRecorder(SearchTrace<Vertex>& out, const SearchOptions& options, const Heuristic& heuristic, const WeightFn& weight,
+                PredecessorMap predecessor)
+      : out_(&out), algorithm_(options.algorithm), weighting_(options.weight), heuristic_(&heuristic), weight_(&weight),
+        predecessor_(predecessor) {}
+
+  // A vertex enters the open list. Only the start arrives without a tree edge labelling it first.
+  void discovered(const Vertex& v) {
+    if (!labels_.count(v)) set_label(v, 0.0, std::nullopt);
+    ++open_;
+  }
+  // A closed vertex given a shorter distance goes back into the open list (weighted A*).
+  void reopened() { ++open_; }
+  // A vertex taken out of the open list (best-first searches, bfs).
+  void examined(const Vertex& u) {
+    --open_;
+    expand(u);
+  }
+  // DFS expands a vertex as it discovers it; its "open list" is the stack of unfinished vertices.
+  void discovered_depth_first(const Vertex& u) {
+    if (!labels_.count(u)) set_label(u, 0.0, std::nullopt);
+    expand(u);
+    ++open_;
+  }
+  void finished_depth_first() { --open_; }
+  // Boost's relax lowered a distance. On an undirected graph it may have lowered the edge's source
+  // from its target: the predecessor map says which end moved.
+  template <class Edge, class Graph>
+  void relaxed(const Edge& e, const Graph& g) {
+    const Vertex s = source(e, g), t = target(e, g);
+    if (get(predecessor_, t) == s) label_through(t, s, e);
+    else if (get(predecessor_, s) == t) label_through(s, t, e);
+  }
+  // bfs and dfs: the edge that discovered its target.
+  template <class Edge, class Graph>
+  void tree_edge(const Edge& e, const Graph& g) { label_through(target(e, g), source(e, g), e); }
+
+ private:
+  struct Label {
+    double g;
+    std::optional<Vertex> backpointer;
+  };
+  template <class Edge>
+  void label_through(const Vertex& v, const Vertex& from, const Edge& e) {
+    set_label(v, labels_.at(from).g + static_cast<double>((*weight_)(e)), from);
+  }
+  void set_label(const Vertex& v, double g, std::optional<Vertex> backpointer) {
+    const bool discovered = labels_.insert_or_assign(v, Label{g, backpointer}).second;
+    const double h = static_cast<double>((*heuristic_)(v));
+    out_->labels.push_back({out_->expansions.size(), v, g, h, key(g, h), backpointer, discovered});
+  }
+  double key(double g, double h) const {
+    switch (algorithm_) {
+      case Search::wastar: return g + weighting_ * h;
+      case Search::dijkstra: return g;
+      case Search::greedy: return h;
+      default: return g + h;
+    }
+  }
+  void expand(const Vertex& u) {
+    const Label& label = labels_.at(u);
+    const double h = static_cast<double>((*heuristic_)(u));
+    out_->expansions.push_back({out_->expansions.size() + 1, u, label.g, h, key(label.g, h), label.backpointer, open_});
+  }
+
+  SearchTrace<Vertex>* out_;
+  Search algorithm_;
+  double weighting_;
+  const Heuristic* heuristic_;
+  const WeightFn* weight_;
+  PredecessorMap predecessor_;
+  std::unordered_map<Vertex, Label, Hash> labels_;
+  std::size_t open_ = 0;
+};
+
+// The visitors take a recorder pointer, null when no trace is recorded.
+template <class Vertex, class Recorder>
 class AStarGoalVisitor : public boost::default_astar_visitor {
  public:
-  AStarGoalVisitor(const GoalTest<Vertex>& goal, SearchCounts& counts, std::vector<Vertex>* trace)
-      : goal_(goal), counts_(&counts), trace_(trace) {}
+  AStarGoalVisitor(const GoalTest<Vertex>& goal, SearchCounts& counts, std::vector<Vertex>* trace, Recorder* recorder)
+      : goal_(goal), counts_(&counts), trace_(trace), recorder_(recorder) {}
   template <class Graph>
-  void discover_vertex(const Vertex&, const Graph&) { ++counts_->generated; }
+  void discover_vertex(const Vertex& v, const Graph&) {
+    ++counts_->generated;
+    if (recorder_) recorder_->discovered(v);
+  }
   template <class Graph>
   void examine_vertex(const Vertex& u, const Graph&) {
     ++counts_->expanded;
     if (trace_) trace_->push_back(u);
+    if (recorder_) recorder_->examined(u);
     goal_.stop_if_goal(u);
+  }
+  template <class Edge, class Graph>
+  void edge_relaxed(const Edge& e, const Graph& g) {
+    if (recorder_) recorder_->relaxed(e, g);
   }
   // BGL calls it only when the relaxation re-opened a closed vertex.
   template <class Edge, class Graph>
-  void black_target(const Edge&, const Graph&) { ++counts_->reopened; }
+  void black_target(const Edge&, const Graph&) {
+    ++counts_->reopened;
+    if (recorder_) recorder_->reopened();
+  }
 
  private:
   GoalTest<Vertex> goal_;
   SearchCounts* counts_;
   std::vector<Vertex>* trace_;  // expansion order, when recorded
+  Recorder* recorder_;
 };
 
-template <class Vertex, class PredecessorMap>
+template <class Vertex, class PredecessorMap, class Recorder>
 class BfsGoalVisitor : public boost::default_bfs_visitor {
  public:
-  BfsGoalVisitor(const GoalTest<Vertex>& goal, SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace)
-      : goal_(goal), counts_(&counts), predecessor_(predecessor), trace_(trace) {}
+  BfsGoalVisitor(const GoalTest<Vertex>& goal, SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace,
+                 Recorder* recorder)
+      : goal_(goal), counts_(&counts), predecessor_(predecessor), trace_(trace), recorder_(recorder) {}
   template <class Graph>
-  void discover_vertex(const Vertex&, const Graph&) { ++counts_->generated; }
+  void discover_vertex(const Vertex& v, const Graph&) {
+    ++counts_->generated;
+    if (recorder_) recorder_->discovered(v);
+  }
   template <class Graph>
   void examine_vertex(const Vertex& u, const Graph&) {
     ++counts_->expanded;
     if (trace_) trace_->push_back(u);
+    if (recorder_) recorder_->examined(u);
     goal_.stop_if_goal(u);
   }
   template <class Edge, class Graph>
-  void tree_edge(const Edge& e, const Graph& g) { put(predecessor_, target(e, g), source(e, g)); }
+  void tree_edge(const Edge& e, const Graph& g) {
+    put(predecessor_, target(e, g), source(e, g));
+    if (recorder_) recorder_->tree_edge(e, g);
+  }
 
  private:
   GoalTest<Vertex> goal_;
   SearchCounts* counts_;
   PredecessorMap predecessor_;
   std::vector<Vertex>* trace_;
+  Recorder* recorder_;
 };
 
-template <class Vertex, class PredecessorMap>
+template <class Vertex, class PredecessorMap, class Recorder>
 class DfsCountingVisitor : public boost::default_dfs_visitor {
  public:
-  DfsCountingVisitor(SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace)
-      : counts_(&counts), predecessor_(predecessor), trace_(trace) {}
+  DfsCountingVisitor(SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace, Recorder* recorder)
+      : counts_(&counts), predecessor_(predecessor), trace_(trace), recorder_(recorder) {}
   template <class Graph>
   void discover_vertex(const Vertex& u, const Graph&) {
     ++counts_->generated;
     ++counts_->expanded;
     if (trace_) trace_->push_back(u);
+    if (recorder_) recorder_->discovered_depth_first(u);
+  }
+  template <class Graph>
+  void finish_vertex(const Vertex&, const Graph&) {
+    if (recorder_) recorder_->finished_depth_first();
   }
   template <class Edge, class Graph>
-  void tree_edge(const Edge& e, const Graph& g) { put(predecessor_, target(e, g), source(e, g)); }
+  void tree_edge(const Edge& e, const Graph& g) {
+    put(predecessor_, target(e, g), source(e, g));
+    if (recorder_) recorder_->tree_edge(e, g);
+  }
 
  private:
   SearchCounts* counts_;
   PredecessorMap predecessor_;
   std::vector<Vertex>* trace_;
+  Recorder* recorder_;
 };
 
 // depth_first_visit asks its terminator about every vertex right after discovering it: the goal
@@ -292,7 +449,8 @@ double path_cost(const Graph& g, const std::vector<Vertex>& path, const WeightFn
   return cost;
 }
 
-template <class Graph, class Table, class Heuristic, class WeightFn>
+// Hash: the workspace's, for the trace recorder's labels.
+template <class Hash, class Graph, class Table, class Heuristic, class WeightFn>
 SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with_table(
     const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
     const std::vector<typename boost::graph_traits<Graph>::vertex_descriptor>& goals, const SearchOptions& options,
@@ -312,11 +470,20 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with
   SearchCounts counts;
   SearchResult<Vertex> result;
   std::vector<Vertex>* trace = options.record_expanded ? &result.expanded_order : nullptr;
+  using Recorder = TraceRecorder<Vertex, Hash, Heuristic, WeightFn, decltype(predecessor)>;
+  std::optional<Recorder> recording;
+  if (options.record_trace) recording.emplace(result.trace, options, heuristic, weight, predecessor);
+  Recorder* recorder = recording ? &*recording : nullptr;
   const auto best_first = [&](auto h, auto edge_weights) {
     put(distance, start, 0.0);
     put(rank, start, h(start));
-    boost::astar_search_no_init(g, start, h, AStarGoalVisitor<Vertex>(is_goal, counts, trace), predecessor, rank, distance,
-                                edge_weights, color, slots, std::less<double>(), std::plus<double>(), unreached, 0.0);
+    const AStarGoalVisitor<Vertex, Recorder> visitor(is_goal, counts, trace, recorder);
+    if (options.ties_first_discovered)
+      boost::astar_search_no_init(g, start, h, visitor, predecessor, RankThenSlotMap<Table, Vertex>(table), distance,
+                                  edge_weights, color, slots, RankThenSlotLess{}, std::plus<double>(), unreached, 0.0);
+    else
+      boost::astar_search_no_init(g, start, h, visitor, predecessor, rank, distance, edge_weights, color, slots,
+                                  std::less<double>(), std::plus<double>(), unreached, 0.0);
   };
 
   try {
@@ -327,12 +494,14 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with
       case Search::greedy: best_first(heuristic, ZeroWeightMap<Edge>{}); break;
       case Search::bfs:
         fifo.clear();
-        boost::breadth_first_visit(g, start, fifo, BfsGoalVisitor<Vertex, decltype(predecessor)>(is_goal, counts, predecessor, trace),
-                                   color);
+        boost::breadth_first_visit(
+            g, start, fifo, BfsGoalVisitor<Vertex, decltype(predecessor), Recorder>(is_goal, counts, predecessor, trace, recorder),
+            color);
         break;
       case Search::dfs:
-        boost::depth_first_visit(g, start, DfsCountingVisitor<Vertex, decltype(predecessor)>(counts, predecessor, trace), color,
-                                 StopAtGoal<Vertex>{is_goal});
+        boost::depth_first_visit(g, start,
+                                 DfsCountingVisitor<Vertex, decltype(predecessor), Recorder>(counts, predecessor, trace, recorder),
+                                 color, StopAtGoal<Vertex>{is_goal});
         break;
     }
   } catch (const FoundGoal&) {
@@ -395,13 +564,13 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_pa
         auto& table = detail::WorkspaceAccess::dense(workspace);
         detail::WorkspaceAccess::set_used_dense(workspace, true);
         table.begin_query(n);
-        return detail::search_with_table(g, start, goals, options, heuristic, weight, table, fifo);
+        return detail::search_with_table<Hash>(g, start, goals, options, heuristic, weight, table, fifo);
       }
     }
     auto& table = detail::WorkspaceAccess::hashed(workspace);
     detail::WorkspaceAccess::set_used_dense(workspace, false);
     table.begin_query();
-    return detail::search_with_table(g, start, goals, options, heuristic, weight, table, fifo);
+    return detail::search_with_table<Hash>(g, start, goals, options, heuristic, weight, table, fifo);
   }();
   result.algorithm = options.algorithm;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();

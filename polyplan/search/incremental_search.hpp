@@ -41,6 +41,7 @@
 #include <compare>
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <utility>
 #include <vector>
@@ -278,6 +279,16 @@ class IncrementalSearch {
     return list;
   }
   Key key(vertex_type v) const { return key_of(v); }
+  // The heuristic between v and the vertex the search is aimed at (without k_m).
+  cost_type heuristic(vertex_type v) const { return h(v); }
+  // The neighbour v's rhs reads its value through (its backpointer, as a course draws it): none
+  // for the vertex the search grows from and while rhs(v) is infinite.
+  std::optional<vertex_type> backpointer(vertex_type v) const {
+    if (v == root_) return std::nullopt;
+    const auto [parent, through] = best_parent(v);
+    if (through == cost_type::infinity()) return std::nullopt;
+    return parent;
+  }
   cost_type key_modifier() const { return key_modifier_; }
 
   const IncrementalCounts& counts() const { return counts_; }

@@ -2,6 +2,8 @@
 // What a graph search is asked (the algorithm and its options) and what it reports (path, cost,
 // the counts a course compares, time). Shared by the roadmap search (search/shortest_path.hpp) and
 // the generic search on any Boost graph (search/graph_search.hpp). No Boost here.
+#include <polyplan/search/search_trace.hpp>
+
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -53,6 +55,15 @@ struct SearchOptions {
   // Keep the expanded vertices in expansion order (SearchResult::expanded_order), for pictures
   // and teaching; off by default, it costs a push per expansion.
   bool record_expanded = false;
+  // Keep every expansion with its g, h, f, backpointer and open-list size, and every label a vertex
+  // is given (SearchResult::trace, search/search_trace.hpp): for watching a search. Off by default.
+  bool record_trace = false;
+  // Which of several open vertices of equal f a best-first search (astar, wastar, dijkstra, greedy)
+  // expands first. false: whichever Boost's 4-ary heap yields (the fastest). true: the one that
+  // entered the open list first, as seed 000's priority queue does (a list searched for its first
+  // minimum, a vertex keeping its place when its f is lowered): an order any reimplementation can
+  // reproduce.
+  bool ties_first_discovered = false;
 };
 
 // How the counts are defined (identical for every graph and every property-map storage):
@@ -72,6 +83,7 @@ struct SearchResult {
   double cost = 0;           // sum of the edge weights along `path` (0 when not found)
   std::size_t expanded = 0, generated = 0;
   std::vector<Vertex> expanded_order;  // with SearchOptions::record_expanded
+  SearchTrace<Vertex> trace;           // with SearchOptions::record_trace
   std::size_t path_edges() const { return path.empty() ? 0 : path.size() - 1; }
   double seconds = 0;  // the whole query: search and path reconstruction (std::chrono::steady_clock)
   Search algorithm = Search::astar;

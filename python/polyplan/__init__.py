@@ -41,6 +41,7 @@ from ._polyplan import (  # noqa: F401 (the public names)
     read_arm,
     read_world,
     replan,
+    search_graph,
     svg,
 )
 from . import _polyplan
@@ -48,7 +49,7 @@ from . import _polyplan
 __all__ = [
     "Arm", "CSpace", "Cells", "Drive", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
     "PlannerInfo", "World", "check", "cspace", "plan", "planner", "planners", "plot", "potential", "read_arm",
-    "read_world", "replan", "svg",
+    "read_world", "replan", "search_graph", "svg",
 ]
 
 

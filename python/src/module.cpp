@@ -26,4 +26,5 @@ PYBIND11_MODULE(_polyplan, m) {
   polyplan::python::bind_planners(m);
   polyplan::python::bind_replan(m);
   polyplan::python::bind_potential(m);
+  polyplan::python::bind_search(m);
 }

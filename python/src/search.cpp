@@ -1,0 +1,96 @@
+// polyplan.search_graph: a search on seed 000's graph_vector (polyplan search), its path, cost,
+// counts and trace as a dict, and its picture.
+#include "plans.hpp"
+
+#include <polyplan/draw/search_svg.hpp>
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/io/graph_reader.hpp>
+#include <polyplan/search/weighted_digraph.hpp>
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cmath>
+#include <string>
+
+namespace py = pybind11;
+
+namespace polyplan::python {
+namespace {
+
+// A file's path, or the seed's list of dicts (written as JSON and read by the one reader, so that
+// its checks and messages are the file's, the graph named "graph").
+GraphFile graph_of(const py::object& graph) {
+  if (py::isinstance<py::str>(graph) || py::hasattr(graph, "__fspath__"))
+    return read_graph(py::str(py::module_::import("os").attr("fspath")(graph)).cast<std::string>());
+  const auto text = py::module_::import("json").attr("dumps")(graph).cast<std::string>();
+  return parse_graph(text, "graph");
+}
+
+py::object optional_vertex(const std::optional<DigraphVertexId>& v) {
+  return v ? py::object(py::int_(*v)) : py::object(py::none());
+}
+
+py::dict result_dict(const SearchResult<DigraphVertexId>& r, const WeightedDigraph& graph, DigraphVertexId start,
+                     DigraphVertexId goal) {
+  py::dict d;
+  d["found"] = r.found;
+  d["method"] = std::string(to_string(r.algorithm));
+  d["path"] = r.path;
+  d["cost"] = r.found ? py::object(py::float_(r.cost)) : py::object(py::none());
+  d["expanded"] = r.expanded;
+  d["generated"] = r.generated;
+  d["expansion_order"] = r.expanded_order;
+  py::list trace;
+  for (const auto& e : r.trace.expansions) {
+    py::dict line;
+    line["step"] = e.step;
+    line["vertex"] = e.vertex;
+    line["g"] = e.g;
+    line["h"] = e.h;
+    line["f"] = e.f;
+    line["backpointer"] = optional_vertex(e.backpointer);
+    line["open"] = e.open;
+    trace.append(line);
+  }
+  d["trace"] = trace;
+  d["svg"] = draw_search(graph, start, goal, r, {}, "polyplan.search_graph").str();
+  d["animation"] = draw_search_animation(graph, start, goal, r, {}, "polyplan.search_graph").str();
+  return d;
+}
+
+}  // namespace
+
+void bind_search(py::module_& m) {
+  m.def(
+      "search_graph",
+      [](const py::object& graph, long long start, long long goal, const std::string& method, double weight) {
+        const GraphFile file = graph_of(graph);
+        const auto n = static_cast<long long>(file.vertices.size());
+        for (const auto& [value, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}})
+          if (value < 0 || value >= n)
+            throw InputError(std::string(what) + " " + std::to_string(value) + ": not a vertex of " + file.source +
+                             " (0-based indices [0, " + std::to_string(n) + "))");
+        SearchOptions options;
+        const auto algorithm = search_from_string(method);
+        if (!algorithm) throw InputError("method " + method + ": unknown method (astar, dijkstra, bfs, dfs, greedy, wastar)");
+        options.algorithm = *algorithm;
+        if (options.algorithm == Search::wastar && !(std::isfinite(weight) && weight >= 1))
+          throw InputError("weight " + std::to_string(weight) + ": weighted A* needs a finite weight >= 1");
+        options.weight = weight;
+        options.record_expanded = options.record_trace = options.ties_first_discovered = true;
+        const WeightedDigraph g = make_weighted_digraph(file.vertices);
+        const auto from = static_cast<DigraphVertexId>(start), to = static_cast<DigraphVertexId>(goal);
+        return result_dict(shortest_path(g, from, to, options), g, from, to);
+      },
+      py::arg("graph"), py::arg("start"), py::arg("goal"), py::arg("method") = "astar", py::arg("weight") = 1.5,
+      R"(Searches a graph in seed 000's format, a file's path or the list of dicts itself ({"x": [x, y],
+"neighbors": [...], "neighbors_cost": [...]}, 0-based; "g" and "backpointer" ignored), from vertex
+`start` to `goal` with `method` (astar, dijkstra, bfs, dfs, greedy, wastar with `weight`) and the
+Euclidean heuristic, as `polyplan search` does. Returns a dict: found, method, path (indices), cost
+(None without a path), expanded, generated, expansion_order, trace (one dict per expansion: step,
+vertex, g, h, f, backpointer, open), svg and animation (the pictures as SVG text). Raises InputError
+for a bad graph (naming the vertex), vertex or method.)");
+}
+
+}  // namespace polyplan::python
