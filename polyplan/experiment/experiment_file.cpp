@@ -80,7 +80,7 @@ class ExperimentReader {
     for (std::size_t i = 0; i < non_empty_array(value, "cost_times").size(); ++i) {
       const std::string object = "cost_times[" + std::to_string(i) + "]";
       const double t = positive(value[i], object);
-      if (t > time_limit) fail(object, "after the time limit (" + value[i].dump() + " > " + json(time_limit).dump() + ")");
+      if (t > time_limit) fail(object, "after the time limit (" + detail::show_number(t) + " > " + detail::show_number(time_limit) + ")");
       if (!out.empty() && t <= out.back()) fail(object, "the times must increase");
       out.push_back(t);
     }
