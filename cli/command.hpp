@@ -27,6 +27,7 @@ void add_replan_command(CLI::App& app, Action& run);
 void add_potential_command(CLI::App& app, Action& run);
 void add_ik_command(CLI::App& app, Action& run);
 void add_search_command(CLI::App& app, Action& run);
+void add_benchmark_command(CLI::App& app, Action& run);
 
 // Writes `value` to `target` ("-" is standard output); throws InputError if it cannot.
 void write_json(const nlohmann::json& value, const std::string& target);

@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
   add_potential_command(app, run);
   add_ik_command(app, run);
   add_search_command(app, run);
+  add_benchmark_command(app, run);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

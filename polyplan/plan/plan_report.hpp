@@ -165,6 +165,13 @@ struct PlanExpansion {
   std::size_t open = 0;
 };
 
+// A solution's length when the planner had it: an anytime planner's progress (the first solution,
+// then each better one), read by cost-over-time curves (`polyplan benchmark`).
+struct SolutionImprovement {
+  double seconds = 0;  // on the query's clock
+  double length = 0;   // in the planner's metric, as PlanReport::length
+};
+
 template <class Configuration>
 struct PlanReport {
   bool found = false;
@@ -180,6 +187,10 @@ struct PlanReport {
   Certificate certificate;
   std::optional<Bottleneck> bottleneck;
   Facts facts;
+  // Each better solution as the planner found it, in order, the last one `length` (the sampling
+  // planners: the first path, RRT*'s improvements, the shortcut path); empty for a planner that
+  // answers once, when its whole query is its one solution.
+  std::vector<SolutionImprovement> improvements;
 
   // What a picture shows beyond the path, kept when the query asks for it (QueryOptions::record).
   // The graph, the cells and the decomposition are the planner's, shared by the reports of its queries.

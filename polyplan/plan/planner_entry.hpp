@@ -27,6 +27,9 @@ struct PlannerEntry {
   // Builds the planner for a problem (which must outlive it) with the options set from `values`.
   // Throws InputError naming the planner and the option for a value it refuses.
   Factory make;
+  // Whether it goes on improving its solution until its limit (RRT*): a benchmark samples its
+  // cost over time (PlanReport::improvements).
+  bool anytime = false;
 };
 
 // An entry from a plain options struct, its table, and a factory taking the parsed options. A
@@ -36,7 +39,7 @@ template <class Space, class Options>
 PlannerEntry<Space> make_planner_entry(
     std::string name, std::string description, OptionTable<Options> table,
     std::function<std::unique_ptr<Planner<Space>>(const typename Space::Problem&, const Options&)> factory) {
-  PlannerEntry<Space> entry{name, std::move(description), table.info(), false, {}};
+  PlannerEntry<Space> entry{name, std::move(description), table.info(), false, {}, false};
   entry.make = [name, table = std::move(table), factory = std::move(factory)](const typename Space::Problem& problem,
                                                                               const OptionValues& values) {
     const Options options = table.parse(values, name);

@@ -41,7 +41,8 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     if (options_.rewire == Rewiring::k_nearest) {
       // Only those within one extension (as OMPL's RRT* does): a farther one is rarely a cheaper
       // parent, and certifying a long motion costs the most.
-      tree.nodes().nearest(at, static_cast<std::size_t>(std::ceil(k_factor_ * std::log(n + 1))), out);
+      const std::size_t k = options_.k ? options_.k : static_cast<std::size_t>(std::ceil(k_factor_ * std::log(n + 1)));
+      tree.nodes().nearest(at, k, out);
       if (step_ > 0)
         out.erase(std::remove_if(out.begin(), out.end(), [&](std::size_t id) { return this->distance(tree.nodes().coordinates(id), at) > step_; }),
                   out.end());
@@ -179,13 +180,16 @@ PlannerEntry<Space> rrt_star_planner_entry(SamplingSpaceFactory<Space> make_spac
   OptionTable<RrtStarOptions> table;
   table.add("rewire", &RrtStarOptions::rewire, "the neighbours a new node may take as parent and rewire: k nearest or within a radius",
             std::vector<std::pair<std::string, Rewiring>>{{"k", Rewiring::k_nearest}, {"radius", Rewiring::radius}});
+  table.add("k", &RrtStarOptions::k, "rewire=k: the nearest neighbours a new node considers (0: ceil(e (1 + 1/d) log n), growing with the tree)");
   add_tree_options(table);
   add_sampling_options(table);
-  return make_sampling_entry<Space, RrtStarOptions>(
+  PlannerEntry<Space> entry = make_sampling_entry<Space, RrtStarOptions>(
       "rrtstar", "RRT* (asymptotically optimal, anytime: improves until its time or iteration limit), certified motions",
       std::move(table), std::move(make_space), [](std::unique_ptr<SamplingSpace<Space>> space, const RrtStarOptions& options) {
         return std::make_unique<RrtStarPlanner<Space>>(std::move(space), options);
       });
+  entry.anytime = true;
+  return entry;
 }
 
 template PlannerEntry<TranslatingRobot> rrt_star_planner_entry(SamplingSpaceFactory<TranslatingRobot>);

@@ -15,10 +15,13 @@ enum class Rewiring { k_nearest, radius };
 
 struct RrtStarOptions : RrtOptions {
   Rewiring rewire = Rewiring::k_nearest;
+  // rewire = k: the neighbours considered, a fixed number (the course's k = 3, 11, 47, 73) or, 0,
+  // ⌈e·(1 + 1/d)·log n⌉ (k grows with the tree: the rule that keeps RRT* asymptotically optimal).
+  std::size_t k = 0;
   RrtStarOptions() { iterations = 20000; }
 };
 
-// The registry's `rrtstar` for a space: options rewire (k|radius), goal-bias, step, extend and the
+// The registry's `rrtstar` for a space: options rewire (k|radius), k, goal-bias, step, extend and the
 // sampling limits (iterations 20000 by default). Facts: tree_size, solutions (how often the path
 // improved), rewired (motions that replaced a parent).
 template <class Space>

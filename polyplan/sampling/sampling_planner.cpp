@@ -190,6 +190,10 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   }
   report.succeed();
   report.length = length(path);
+  report.improvements = improvements_;
+  // The shortcut path is one more improvement, had when the query ends.
+  if (report.improvements.empty() || report.length < report.improvements.back().length)
+    report.improvements.push_back({budget.seconds(), report.length});
   report.path = space_->reported_path(std::move(path), facts);
   report.certificate = {true, space_->certificate_method() + ", every motion certified again on the returned path"};
   return finish();

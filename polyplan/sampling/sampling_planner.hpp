@@ -281,13 +281,6 @@ class SamplingBudget {
   bool timed_out_ = false, out_of_iterations_ = false;
 };
 
-// A solution's length when it was found: RRT*'s anytime progress (first, then each improvement),
-// read by the benchmarks' cost-versus-time curves.
-struct SolutionImprovement {
-  double seconds = 0;
-  double length = 0;
-};
-
 template <class Space>
 class SamplingPlanner : public Planner<Space> {
  public:
@@ -296,7 +289,8 @@ class SamplingPlanner : public Planner<Space> {
 
   PlanReport<Configuration> plan(const Query& query, const QueryOptions& options = {}) final;
 
-  // The last query's solutions, in the order found (empty when none).
+  // The last query's solutions, in the order found (empty when none), before shortcutting (the
+  // report's improvements add the shortcut path).
   const std::vector<SolutionImprovement>& improvements() const { return improvements_; }
 
  protected:

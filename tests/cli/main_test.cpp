@@ -33,7 +33,7 @@ TEST(Usage, EveryMistakeOnTheCommandLineIsOneLineAndExitTwo) {
     std::string arguments, expected;
   };
   const std::vector<Case> cases = {
-      {"teleport " + maze, "error: unknown command \"teleport\" (commands: cspace check plan scen grid arm planners steer replan potential ik search)"},
+      {"teleport " + maze, "error: unknown command \"teleport\" (commands: cspace check plan scen grid arm planners steer replan potential ik search benchmark)"},
       {"cspace " + maze + " --frobnicate", "--frobnicate"},
       {"plan", "world is required"},
       {"plan " + maze + " --svg " + dir.string(), dir.string() + ": cannot write the SVG file: Is a directory"},

@@ -150,6 +150,27 @@ TEST(SamplingPlanners, RrtStarImprovesAsItRuns) {
   EXPECT_EQ(improvements.front().seconds, report.facts.number("first_solution_seconds"));
 }
 
+// The report carries the solutions as found, the shortcut path last: what a benchmark's
+// cost-over-time curve reads (PlanReport::improvements).
+TEST(SamplingPlanners, ReportsItsImprovementsEndingAtTheReturnedLength) {
+  const World world = shipped_world("office");
+  const CSpace cspace(world);
+  const std::vector<std::pair<std::string, OptionValues>> runs{{"rrt", {}}, {"rrtstar", {{"iterations", "3000"}, {"k", "3"}}}};
+  for (const auto& [name, options] : runs) {
+    const auto report = make(name, cspace, options)->plan(world.queries[0]);
+    ASSERT_TRUE(report.found) << name;
+    ASSERT_FALSE(report.improvements.empty()) << name;
+    EXPECT_EQ(report.improvements.back().length, report.length) << name;  // the shortcut path, when shorter
+    EXPECT_EQ(report.improvements.front().seconds, report.facts.number("first_solution_seconds")) << name;
+    for (std::size_t i = 1; i < report.improvements.size(); ++i) {
+      EXPECT_LT(report.improvements[i].length, report.improvements[i - 1].length) << name;
+      EXPECT_GE(report.improvements[i].seconds, report.improvements[i - 1].seconds) << name;
+    }
+  }
+  EXPECT_TRUE(planners<TranslatingRobot>().find("rrtstar")->anytime);
+  EXPECT_FALSE(planners<TranslatingRobot>().find("rrt")->anytime);
+}
+
 // A goal walled in: every planner stops at its limit and says which.
 TEST(SamplingPlanners, AnUnreachableGoalEndsAtTheLimitWithTheReason) {
   // The goal in the hole of a square ring.
@@ -219,7 +240,7 @@ TEST(SamplingPlanners, TheirOptionsAreListedAndBadValuesNamed) {
     return own;
   };
   EXPECT_EQ(names("rrt"), with_limits({"goal-bias", "step", "extend"}));
-  EXPECT_EQ(names("rrtstar"), with_limits({"rewire", "goal-bias", "step", "extend"}));
+  EXPECT_EQ(names("rrtstar"), with_limits({"rewire", "k", "goal-bias", "step", "extend"}));
   EXPECT_EQ(names("rrtconnect"), with_limits({"step"}));
   EXPECT_EQ(names("prm"), with_limits({"k", "search", "weight", "bidirectional"}));
   EXPECT_EQ(names("lazyprm"), with_limits({"k"}));

@@ -1,0 +1,105 @@
+#include <polyplan/experiment/experiment_runner.hpp>
+
+#include <polyplan/experiment/experiment_problem.hpp>
+#include <polyplan/plan/stopwatch.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <ctime>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <thread>
+
+#include <unistd.h>
+
+namespace polyplan {
+namespace {
+
+std::string local_time_now() {
+  const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  std::tm local{};
+  localtime_r(&now, &local);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%S", &local);
+  return text;
+}
+
+std::string host_name() {
+  char name[256] = {};
+  if (gethostname(name, sizeof name - 1) != 0 || !name[0]) return "UNKNOWN";
+  return name;
+}
+
+// What a thread keeps between its runs: the problem files it has read.
+class Worker {
+ public:
+  explicit Worker(const Experiment& experiment) : experiment_(experiment), files_(experiment.problems.size()) {}
+
+  ExperimentRun run(std::size_t cell) {
+    const std::size_t seeds = experiment_.seeds.size(), entries = experiment_.planners.size();
+    ExperimentRun run;
+    run.problem = cell / (seeds * entries);
+    run.planner = cell / seeds % entries;
+    run.seed = experiment_.seeds[cell % seeds];
+    const ExperimentProblem& problem = experiment_.problems[run.problem];
+    const ExperimentPlanner& entry = experiment_.planners[run.planner];
+    try {
+      const ExperimentProblemFile& file = this->file(run.problem);
+      const auto* known = file.planner_options(entry.planner);
+      if (!known) throw std::logic_error("the planner " + entry.planner + " does not plan " + problem.name);
+      file.run(entry.planner, options_for_run(entry.options, *known, run.seed, experiment_.time_limit), problem.query, run);
+    } catch (const std::exception& e) {
+      run.status = PlanStatus::not_found;
+      run.solved = false;
+      run.improvements.clear();
+      run.why_not = std::string("the run failed: ") + e.what();
+    }
+    return run;
+  }
+
+ private:
+  const ExperimentProblemFile& file(std::size_t problem) {
+    if (!files_[problem]) files_[problem] = std::make_unique<ExperimentProblemFile>(experiment_.problems[problem]);
+    return *files_[problem];
+  }
+
+  const Experiment& experiment_;
+  std::vector<std::unique_ptr<ExperimentProblemFile>> files_;
+};
+
+}  // namespace
+
+ExperimentResults run_experiment(const Experiment& experiment, unsigned threads, const ExperimentProgress& progress) {
+  ExperimentResults results;
+  results.started_at = local_time_now();
+  results.host = host_name();
+  const std::size_t total = experiment.cells();
+  results.threads = static_cast<unsigned>(std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(total, 1)));
+  results.runs.resize(total);
+  const Stopwatch whole;
+
+  std::atomic<std::size_t> next{0};
+  std::size_t done = 0;
+  std::mutex reporting;
+  const auto work = [&] {
+    Worker worker(experiment);
+    for (std::size_t cell = next++; cell < total; cell = next++) {
+      ExperimentRun run = worker.run(cell);
+      const std::lock_guard lock(reporting);
+      results.runs[cell] = std::move(run);
+      ++done;
+      if (progress) progress(done, total);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < results.threads; ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& thread : pool) thread.join();
+  results.total_seconds = whole.seconds();
+  return results;
+}
+
+}  // namespace polyplan
