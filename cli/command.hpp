@@ -31,6 +31,8 @@ void add_benchmark_command(CLI::App& app, Action& run);
 
 // Writes `value` to `target` ("-" is standard output); throws InputError if it cannot.
 void write_json(const nlohmann::json& value, const std::string& target);
+// The same for JSON already written out (an ordered_json's dump, whose keys keep their order).
+void write_json_text(const std::string& text, const std::string& target);
 
 // "1,2.5,-3" as numbers; throws InputError "OPTION TEXT: "PART" is not a finite number".
 std::vector<double> comma_numbers(const std::string& text, const std::string& option);

@@ -8,18 +8,20 @@
 
 namespace polyplan::cli {
 
-void write_json(const nlohmann::json& value, const std::string& target) {
+void write_json_text(const std::string& text, const std::string& target) {
   // Checked after flushing: a full disk (or /dev/full) fails only when the buffer is written.
   if (target == "-") {
-    std::cout << value.dump(2) << '\n' << std::flush;
+    std::cout << text << '\n' << std::flush;
     if (!std::cout) throw InputError("standard output: cannot write the JSON output");
     return;
   }
   std::ofstream out(target);
-  if (out) out << value.dump(2) << '\n';
+  if (out) out << text << '\n';
   if (out) out.close();
   if (!out) throw InputError(target + ": cannot write the JSON output");
 }
+
+void write_json(const nlohmann::json& value, const std::string& target) { write_json_text(value.dump(2), target); }
 
 void print_warnings(const std::vector<std::string>& warnings) {
   for (const auto& w : warnings) std::cerr << "warning: " << w << '\n';

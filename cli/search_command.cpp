@@ -80,18 +80,8 @@ nlohmann::ordered_json result_json(const SearchResult<DigraphVertexId>& r, const
   return out;
 }
 
-void write_result(const nlohmann::ordered_json& value, const std::string& target) {
-  // write_json takes nlohmann::json, which would sort the keys: written here in their order.
-  if (target == "-") {
-    std::cout << value.dump(2) << '\n' << std::flush;
-    if (!std::cout) throw InputError("standard output: cannot write the JSON output");
-    return;
-  }
-  std::ofstream out(target);
-  if (out) out << value.dump(2) << '\n';
-  if (out) out.close();
-  if (!out) throw InputError(target + ": cannot write the JSON output");
-}
+// nlohmann::json would sort the keys: written in their order.
+void write_result(const nlohmann::ordered_json& value, const std::string& target) { write_json_text(value.dump(2), target); }
 
 std::string summary_line(const SearchResult<DigraphVertexId>& r) {
   std::string line = std::string(to_string(r.algorithm)) + ": ";
