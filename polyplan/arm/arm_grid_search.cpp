@@ -75,6 +75,10 @@ struct ArmGridSearch::Impl {
   // Scratch.
   JointAngles configuration_a, configuration_b;
   std::vector<double> safe_scratch;
+  // The problem's goals as the search reads them (the heuristic runs for every cell pushed and
+  // popped): fixed-size coordinates, and their ids, in the problem's order.
+  std::vector<Coordinates> goal_cells;
+  std::vector<std::uint64_t> goal_ids;
   std::uint64_t cached_key = ~std::uint64_t{0};
   Block* cached_block = nullptr;
   ArmGridSearchResult result;
@@ -100,6 +104,12 @@ struct ArmGridSearch::Impl {
     configuration_a.resize(joints);
     configuration_b.resize(joints);
     safe_scratch.resize(joints);
+    for (const auto& goal : problem.goals) {
+      Coordinates g{};
+      std::copy(goal.begin(), goal.end(), g.begin());
+      goal_cells.push_back(g);
+      goal_ids.push_back(id(g));
+    }
   }
 
   void require_cell(const std::vector<std::int32_t>& cell) const {
@@ -172,7 +182,7 @@ struct ArmGridSearch::Impl {
   std::int64_t heuristic(const Coordinates& x) const {
     if (!problem.use_heuristic) return 0;
     std::int64_t nearest = std::numeric_limits<std::int64_t>::max();
-    for (const auto& goal : problem.goals) {
+    for (const Coordinates& goal : goal_cells) {
       std::int64_t h = 0;
       for (std::size_t i = 0; i < joints; ++i) {
         std::int64_t d = std::abs(std::int64_t{x[i]} - goal[i]);
@@ -237,12 +247,6 @@ struct ArmGridSearch::Impl {
     b->g[offset] = 0;
     ++result.generated;
     if (!push(id(x), heuristic(x))) return finish();
-    std::vector<std::uint64_t> goal_ids;
-    for (const auto& goal : problem.goals) {
-      Coordinates g{};
-      std::copy(goal.begin(), goal.end(), g.begin());
-      goal_ids.push_back(id(g));
-    }
 
     for (std::size_t f = 0; f < buckets.size(); ++f) {
       while (!buckets[f].empty()) {
