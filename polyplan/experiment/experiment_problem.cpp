@@ -57,17 +57,6 @@ void run_in(const typename Space::Problem& problem, const typename Space::Query&
   record(std::move(report), run);
 }
 
-template <class Space>
-const std::vector<OptionInfo>* options_in(const std::string& name) {
-  const PlannerEntry<Space>* entry = planners<Space>().find(name);
-  return entry ? &entry->options : nullptr;
-}
-
-template <class Space>
-bool anytime_in(const std::string& name) {
-  const PlannerEntry<Space>* entry = planners<Space>().find(name);
-  return entry && entry->anytime;
-}
 
 }  // namespace
 
@@ -106,18 +95,22 @@ std::vector<std::string> ExperimentProblemFile::query_names() const {
   return names;
 }
 
+// `read` applied to the registry entry named `name` in this problem's space (a world's translating
+// planners first, then its rotating ones), or to null when there is none.
+template <class Read>
+auto ExperimentProblemFile::read_entry(const std::string& name, Read read) const {
+  if (std::holds_alternative<ArmProblem>(loaded_->problem)) return read(planners<PlanarArm>().find(name));
+  if (loaded_->is_car()) return read(planners<SteeredCar>().find(name));
+  if (const auto* entry = planners<TranslatingRobot>().find(name)) return read(entry);
+  return read(planners<RotatingRobot>().find(name));
+}
+
 const std::vector<OptionInfo>* ExperimentProblemFile::planner_options(const std::string& name) const {
-  if (std::holds_alternative<ArmProblem>(loaded_->problem)) return options_in<PlanarArm>(name);
-  if (loaded_->is_car()) return options_in<SteeredCar>(name);
-  if (const auto* options = options_in<TranslatingRobot>(name)) return options;
-  return options_in<RotatingRobot>(name);
+  return read_entry(name, [](const auto* entry) -> const std::vector<OptionInfo>* { return entry ? &entry->options : nullptr; });
 }
 
 bool ExperimentProblemFile::planner_anytime(const std::string& name) const {
-  if (std::holds_alternative<ArmProblem>(loaded_->problem)) return anytime_in<PlanarArm>(name);
-  if (loaded_->is_car()) return anytime_in<SteeredCar>(name);
-  if (planners<TranslatingRobot>().find(name)) return anytime_in<TranslatingRobot>(name);
-  return anytime_in<RotatingRobot>(name);
+  return read_entry(name, [](const auto* entry) { return entry && entry->anytime; });
 }
 
 std::string ExperimentProblemFile::planner_names() const {

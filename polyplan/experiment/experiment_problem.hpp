@@ -45,6 +45,8 @@ class ExperimentProblemFile {
 
  private:
   struct Loaded;
+  template <class Read>
+  auto read_entry(const std::string& name, Read read) const;
   std::unique_ptr<Loaded> loaded_;
 };
 
