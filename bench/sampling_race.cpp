@@ -1010,6 +1010,30 @@ int main(int argc, char** argv) {
     }
     std::cout << '\n';
   }
+
+  // Against what OMPL's users run: its default discrete check, which is faster and unsafe.
+  std::cout << "\n## Against OMPL with its default discrete check\n\n"
+               "Each cell: polyplan's median time / OMPL's (discrete check), and how many of OMPL's returned paths collide "
+               "(a configuration on a motion of it collides: found by polyplan's certified test) of those it returned.\n\n| problem |";
+  for (std::size_t k : planners_run) std::cout << ' ' << planner_kinds[k].label << " |";
+  std::cout << "\n|---|";
+  for (std::size_t k = 0; k < planners_run.size(); ++k) std::cout << "---|";
+  std::cout << '\n';
+  for (std::size_t pi = 0; pi < loaded.problems.size(); ++pi) {
+    std::cout << "| " << loaded.problems[pi]->name() << " |";
+    for (std::size_t i = 0; i < planners_run.size(); ++i) {
+      const auto& entries = results.runs[pi][i];
+      std::size_t returned = 0, collide = 0;
+      for (const Run& r : entries[ompl_discrete]) {
+        if (r.clip == Clip::not_checked) continue;
+        ++returned;
+        collide += r.clip == Clip::collides;
+      }
+      std::cout << ' ' << ratio_text(median_seconds(entries[polyplan_entry]), median_seconds(entries[ompl_discrete])) << "; "
+                << collide << " of " << returned << " collide |";
+    }
+    std::cout << '\n';
+  }
   std::cout << "\nTotal wall time " << std::lround(since(began)) << " s.\n";
   return 0;
 }

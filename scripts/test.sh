@@ -5,7 +5,7 @@
 #   scripts/test.sh          the Release build and every test (a newcomer's command)
 #   scripts/test.sh --deep   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer instead
 #                            (Release then runs only the Python and example tests), and each
-#                            reader's libFuzzer target for FUZZ_SECONDS (30) s (.ci/run asks for this)
+#                            reader's libFuzzer target for FUZZ_SECONDS (15) s (.ci/run asks for this)
 #
 # SANITIZE=1|0 and FUZZ=1|0 turn either deep step on or off whatever the flag says; JOBS (2) is
 # the build's parallelism.
@@ -32,12 +32,16 @@ step() {  # step NAME COMMAND...: runs the command and keeps its time for the su
 }
 
 step setup scripts/setup.sh
-step build bash -c "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null && cmake --build build -j$jobs"
 if [ "$sanitize" = 1 ]; then
-  # The sanitized build below runs every C++ test again; here only what it does not build: the
-  # Python module's tests and the examples (some five minutes of the deep run saved).
+  # The sanitized build below builds and runs every C++ test; the Release tree builds and runs only
+  # what that one does not: the program, the Python module and the examples, and their tests
+  # (the C++ test programs' Release build and run, some eight minutes of the deep run, saved).
+  step build bash -c "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null && \
+    cmake --build build -j$jobs --target polyplan_cli polyplan_examples \
+      \$(cmake --build build --target help | grep -qw _polyplan && echo _polyplan)"
   step tests ctest --test-dir build --output-on-failure -j"$jobs" -R '^(python_|example_)'
 else
+  step build bash -c "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null && cmake --build build -j$jobs"
   step tests ctest --test-dir build --output-on-failure -j"$jobs"
 fi
 if [ "$sanitize" = 1 ]; then
@@ -47,7 +51,7 @@ if [ "$sanitize" = 1 ]; then
     ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
 fi
 if [ "$fuzz" = 1 ]; then
-  step fuzz scripts/fuzz.sh "${FUZZ_SECONDS:-30}"
+  step fuzz scripts/fuzz.sh "${FUZZ_SECONDS:-15}"
 fi
 summary=$(IFS=,; echo "${timings[*]}")
 echo "test: passed in $((SECONDS - began)) s (${summary//,/, })"

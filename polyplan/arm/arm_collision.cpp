@@ -310,9 +310,6 @@ struct ArmCollisionChecker::Impl {
   // obstacle_clearance's candidates: edges near a link (with their obstacle's rounding), points.
   // gather's candidates: an edge or a point with a lower bound of its clearance from the fast
   // distance, and the radius (the link's and the obstacle's rounding) its interval bound subtracts.
-  // What a clearance is for: a value the caller reads (tight: the interval bound, within a few
-  // ulps of the distance) or the length of a safe step (the fast bound will do far from contact).
-  enum class Tightness { tight, for_a_step };
   struct Measured {
     double fast_below;
     const Convex* edge;
@@ -519,7 +516,7 @@ struct ArmCollisionChecker::Impl {
   // exceeds what another's upper bound (gather's nearest) or `enough` allows is farther for sure.
   // RoundingUpward must be in force (one guard for every link: switching the rounding costs more
   // than a distance).
-  double obstacle_clearance(std::size_t k, double enough, Tightness tightness) const {
+  double obstacle_clearance(std::size_t k, double enough, ClearanceUse use) const {
     if (link_hit[k]) return 0;
     const Convex& link = links[k];
     const double limit = std::min(nearest[k], enough);
@@ -531,7 +528,7 @@ struct ArmCollisionChecker::Impl {
       // falls short of the interval bound by at most twice the error, which costs a clearance of
       // 2^10 errors or more at most 2^-9 of the step it allows. Nearer contact, where that would
       // refuse or shorten steps, the interval bound is computed.
-      if (tightness == Tightness::for_a_step && m.fast_below >= 1024 * m.error) {
+      if (use == ClearanceUse::stepping && m.fast_below >= 1024 * m.error) {
         best = std::min(best, m.fast_below);
         continue;
       }
@@ -553,7 +550,7 @@ struct ArmCollisionChecker::Impl {
     return clearance_below(distance_apart_below(a, b), radius);
   }
 
-  void clearances(const JointAngles& q, ArmClearances& out, double enough) const {
+  void clearances(const JointAngles& q, ArmClearances& out, double enough, ClearanceUse use) const {
     place_enclosed(q, {});
     const std::size_t n = arm.joints();
     out.contact.reset();
@@ -563,7 +560,7 @@ struct ArmCollisionChecker::Impl {
     else out.pairs.clear();
     const RoundingUpward upward;
     for (std::size_t k = 0; k < n; ++k) {
-      out.links[k] = obstacle_clearance(k, enough, Tightness::tight);
+      out.links[k] = obstacle_clearance(k, enough, use);
       if (arm.self_collision)
         for (std::size_t m = k + 2; m < n; ++m) out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, enough);
     }
@@ -590,7 +587,7 @@ struct ArmCollisionChecker::Impl {
     double step = horizon;
     const RoundingUpward upward;  // covered_above and lasts_below bound in any rounding
     for (std::size_t k = 0; k < n; ++k) {
-      step = std::min(step, lasts_below(obstacle_clearance(k, covered_above(link_speed[k], step), Tightness::for_a_step), link_speed[k]));
+      step = std::min(step, lasts_below(obstacle_clearance(k, covered_above(link_speed[k], step), ClearanceUse::stepping), link_speed[k]));
       if (arm.self_collision)
         for (std::size_t m = k + 2; m < n; ++m) {
           const double v = pair_speed[k * n + m];
@@ -617,13 +614,13 @@ const Arm& ArmCollisionChecker::arm() const { return impl_->arm; }
 bool ArmCollisionChecker::is_free(const JointAngles& angles) const { return !impl_->contact(angles); }
 std::optional<ArmContact> ArmCollisionChecker::first_contact(const JointAngles& angles) const { return impl_->contact(angles); }
 
-void ArmCollisionChecker::clearances(const JointAngles& q, ArmClearances& out, double enough) const {
-  impl_->clearances(q, out, enough);
+void ArmCollisionChecker::clearances(const JointAngles& q, ArmClearances& out, double enough, ClearanceUse use) const {
+  impl_->clearances(q, out, enough, use);
 }
 
 void ArmCollisionChecker::clearances(const JointAngles& q, std::vector<double>& out) const {
   ArmClearances& split = impl_->split;
-  impl_->clearances(q, split, infinity);
+  impl_->clearances(q, split, infinity, ClearanceUse::reading);
   out = split.links;
   const std::size_t n = out.size();
   if (!split.pairs.empty())

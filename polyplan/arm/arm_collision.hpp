@@ -64,6 +64,13 @@ struct ArmClearances {
   std::optional<ArmContact> contact;  // the configuration's first contact (as first_contact), if any
 };
 
+// What clearances are for. `reading`: values a caller reads, each the interval bound (within a
+// few ulps of the true distance). `stepping`: the lengths of safe steps (arm_motion.hpp), for which
+// far from contact the fast distance less its written error bound will do (docs/certification.md:
+// it falls short of the interval bound by at most 2^-9 of the clearance); nearer contact the
+// interval bound is computed all the same. Both are proofs.
+enum class ClearanceUse { reading, stepping };
+
 // The result of ArmCollisionChecker::safe_step.
 struct ArmSafeStep {
   double step = 0;                    // 0 when the configuration collides
@@ -98,7 +105,8 @@ class ArmCollisionChecker {
   // The same split into obstacle and link-pair clearances, with the first contact. A clearance of
   // at least `enough` may be reported as any value of at least `enough`: what lies farther away is
   // not measured (a grid planner needs clearances only up to a step's sweep).
-  void clearances(const JointAngles& q, ArmClearances& out, double enough = std::numeric_limits<double>::infinity()) const;
+  void clearances(const JointAngles& q, ArmClearances& out, double enough = std::numeric_limits<double>::infinity(),
+                  ClearanceUse use = ClearanceUse::reading) const;
 
   // Conservative advancement's step (arm_motion.hpp), for the configuration q, or for every
   // configuration within spread[j] radians of q in each joint j (spread empty: q alone; a motion's

@@ -71,9 +71,27 @@ double spread_of(double q, double from, double t, const Range& turn) {
   return std::max(above(std::fabs(q - lo)), above(std::fabs(q - hi)));
 }
 
+// How long a configuration's clearances keep a motion with these speeds free, from that end:
+// safe_step's minimum, without measuring anything (lasts_below rounds down in any rounding mode).
+double lasts_at(const ArmClearances& clearances, const std::vector<double>& link_speed, const std::vector<double>& pair_speed) {
+  double h = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < link_speed.size(); ++k) h = std::min(h, detail::lasts_below(clearances.links[k], link_speed[k]));
+  for (std::size_t i = 0; i < pair_speed.size(); ++i) h = std::min(h, detail::lasts_below(clearances.pairs[i], pair_speed[i]));
+  return h;
+}
+
 }  // namespace
 
+void measure_end_clearances(const ArmCollisionChecker& checker, const JointAngles& q, ArmClearances& out) {
+  checker.clearances(q, out, std::numeric_limits<double>::infinity(), ClearanceUse::stepping);
+}
+
 MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from_given, const JointAngles& to_given) {
+  return certify_motion(checker, from_given, to_given, nullptr, nullptr);
+}
+
+MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from_given, const JointAngles& to_given,
+                                 const ArmClearances* from_clearances, const ArmClearances* to_clearances) {
   require_arm_size(checker, from_given, "from");
   require_arm_size(checker, to_given, "to");
   const std::size_t n = from_given.size();
@@ -83,6 +101,9 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
     to[j] = normalize_angle(to_given[j]);
     turn[j] = signed_angle_difference(from[j], to[j]);
   }
+  // Clearances are about the configuration measured; the motion's ends are the normalised angles.
+  if (from != from_given) from_clearances = nullptr;
+  if (to != to_given) to_clearances = nullptr;
 
   MotionCertificate certificate;
   const auto collides = [&](double at, const ArmContact& contact) {
@@ -93,7 +114,12 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
   };
   // The goal first, bit for bit: the path a planner returns ends at exactly this value, and a
   // motion into a collision needs no clearance measured.
-  if (const auto contact = checker.first_contact(to_given)) return collides(1, *contact);
+  if (to_clearances) {
+    if (to_clearances->contact) return collides(1, *to_clearances->contact);
+  } else if (const auto contact = checker.first_contact(to_given)) {
+    return collides(1, *contact);
+  }
+  if (from_clearances && from_clearances->contact) return collides(0, *from_clearances->contact);
 
   if (std::all_of(turn.begin(), turn.end(), [](double d) { return d == 0; })) {
     // Nothing turns: every configuration of the motion is the normalised `from` (= `to`).
@@ -110,14 +136,33 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
   for (std::size_t j = 0; j < n; ++j) largest_turn[j] = std::max(-real[j][0], real[j][1]);
   std::vector<double> link_speed, pair_speed;
   motion_speeds(checker.arm(), largest_turn, link_speed, pair_speed);
+  // The known ends: [0, t) is free by `from`'s clearances, (1 − tail, 1] by `to`'s. What is left
+  // to cover is [t, end] — up to the tail, or to 1 without one — with end above 1 − tail by at
+  // least an ulp (so reaching end covers the tail's open boundary), and end = 1 without a tail
+  // (reaching beyond 1 is asked, as before).
+  double t = from_clearances ? lasts_at(*from_clearances, link_speed, pair_speed) : 0;
+  const double tail = to_clearances ? lasts_at(*to_clearances, link_speed, pair_speed) : 0;
+  const double end = tail > 0 ? above(1 - tail) : 1.0;
+  const auto covered = [&](double reached) { return tail > 0 ? reached >= end : reached > 1; };
+  if (covered(t)) {
+    certificate.verdict = MotionCertificate::Verdict::free;
+    return certificate;
+  }
   // The configuration measured at t: from + t·turn in doubles (not normalised: cos and sin do not
   // mind), within spread[j] of the true motion's from_j + t·D_j in each joint.
   JointAngles q = from;
   std::vector<double> spread(n, 0.0);  // t = 0 is `from` itself
-  double t = 0;
+  const auto move_to = [&](double at) {
+    t = at;
+    for (std::size_t j = 0; j < n; ++j) {
+      q[j] = from[j] + t * turn[j];
+      spread[j] = spread_of(q[j], from[j], t, real[j]);
+    }
+  };
+  if (t > 0) move_to(t);
   while (certificate.steps < motion_max_steps) {
-    // A step of at least `horizon` (above 1 − t) reaches past the end of the motion.
-    const double horizon = above(1 - t);
+    // A step of at least `horizon` (above end − t) reaches past what is left.
+    const double horizon = above(end - t);
     const ArmSafeStep step = checker.safe_step(q, link_speed, pair_speed, horizon, spread);
     ++certificate.steps;
     if (step.contact) return collides(t, *step.contact);
@@ -128,15 +173,11 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
     if (step.step < motion_min_step) break;  // near contact: the steps would not end
     // Every configuration before t + step is free; the next one measured is at or before it.
     const double next = below(t + step.step);
-    if (next >= 1) {  // then t + step > 1: the whole motion is covered
+    if (next >= end) {  // then t + step > end (≥ 1 without a tail): all is covered
       certificate.verdict = MotionCertificate::Verdict::free;
       return certificate;
     }
-    t = next;
-    for (std::size_t j = 0; j < n; ++j) {
-      q[j] = from[j] + t * turn[j];
-      spread[j] = spread_of(q[j], from[j], t, real[j]);
-    }
+    move_to(next);
   }
   // Advancement approaches a first contact from below and never lands on it: every step ends where
   // the bound allows the arm to touch, and the true motion is slower than the bound. So at a stall,

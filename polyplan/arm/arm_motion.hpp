@@ -77,6 +77,24 @@ MotionCertificate certify_motion(const ArmCollisionChecker& checker, const Joint
 // certify_motion(checker, from, to).free(): false for colliding and for uncertified motions.
 bool motion_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to);
 
+// Reused clearances (issue 31; docs/certification.md, "Reused clearances"). A configuration's
+// clearances, measured once (measure_end_clearances), prove every motion that leaves it free for a
+// while: over [0, h) with h = min_k c_k / speed_k and likewise for the link pairs — the first step
+// of conservative advancement, for any motion, since the speeds are the motion's own. By symmetry
+// a motion that arrives at a configuration is free over its last h of time: the true motion run
+// backwards leaves it with the same speeds. So the motion from → to is free when h_from + h_to > 1
+// (the two ends' free stretches cover it, nothing measured), and otherwise only the stretch
+// between them is advanced over. A planner keeps each node's clearances and passes them here.
+//
+// The clearances of q for that use (ClearanceUse::stepping, nothing left unmeasured): `contact` is
+// set when q collides.
+void measure_end_clearances(const ArmCollisionChecker& checker, const JointAngles& q, ArmClearances& out);
+// certify_motion with the ends' clearances, each measured by measure_end_clearances at that very
+// configuration (bit for bit) or null when not known. Clearances of an end that is not normalised
+// are not used (the motion's end is its normalised angle, a slightly different real angle).
+MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to,
+                                 const ArmClearances* from_clearances, const ArmClearances* to_clearances);
+
 // How far each joint alone may turn from a configuration q, either way, with every configuration
 // on the way free: the same motion bound and clearances as certify_motion's first step, for the
 // motion that turns joint j only (links before j stand still); a turn below safe[j] keeps the

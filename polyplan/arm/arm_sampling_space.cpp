@@ -10,6 +10,16 @@
 namespace polyplan {
 namespace {
 
+// A configuration's clearances (arm_motion.hpp, measure_end_clearances): what a tree node or a
+// milestone proves about the motions that leave it or reach it.
+struct ArmFreeRegion final : FreeRegion {
+  ArmClearances clearances;
+};
+
+const ArmClearances* clearances_of(const FreeRegion* region) {
+  return region ? &static_cast<const ArmFreeRegion*>(region)->clearances : nullptr;  // this space made it
+}
+
 class ArmSamplingSpace final : public SamplingSpace<PlanarArm> {
  public:
   explicit ArmSamplingSpace(const ArmProblem& problem) : checker_(problem) {}
@@ -29,6 +39,17 @@ class ArmSamplingSpace final : public SamplingSpace<PlanarArm> {
 
   bool is_free(const JointAngles& q) override { return checker_.is_free(q); }
   bool motion_is_free(const JointAngles& from, const JointAngles& to) override { return polyplan::motion_is_free(checker_, from, to); }
+  bool keeps_free_regions() const override { return true; }
+  std::shared_ptr<const FreeRegion> free_region(const JointAngles& q) override {
+    auto region = std::make_shared<ArmFreeRegion>();
+    measure_end_clearances(checker_, q, region->clearances);
+    if (region->clearances.contact) return nullptr;
+    return region;
+  }
+  bool motion_is_free_between(const JointAngles& from, const JointAngles& to, const FreeRegion* from_region,
+                              const FreeRegion* to_region) override {
+    return certify_motion(checker_, from, to, clearances_of(from_region), clearances_of(to_region)).free();
+  }
   std::optional<std::string> query_not_free(const ArmQuery& query) override { return polyplan::query_not_free(checker_, query); }
   std::optional<std::string> no_path(const ArmQuery& query) override { return why_none(query, PlanStatus::no_path); }
   std::optional<std::string> no_goal_found(const ArmQuery& query) override { return why_none(query, PlanStatus::not_found); }

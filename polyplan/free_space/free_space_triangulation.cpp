@@ -118,12 +118,14 @@ struct FreeSpaceTriangulation::Impl {
 
   // The triangles whose closure contains p (one, two on an edge, the fan at a vertex, then
   // stored in *vertex).
-  std::vector<Face> faces_at(const Point& p, VertexHandle* vertex = nullptr) const {
+  // `found`: the face the location ended in (a hint for locating p again).
+  std::vector<Face> faces_at(const Point& p, VertexHandle* vertex = nullptr, Face* found = nullptr) const {
     std::vector<Face> faces;
     if (cdt.dimension() < 2) return faces;
     CDT::Locate_type type;
     int li = 0;
     const Face located = cdt.locate(p, type, li);
+    if (found) *found = located;
     switch (type) {
       case CDT::FACE:
         faces.push_back(located);
@@ -326,7 +328,22 @@ std::vector<int> FreeSpaceTriangulation::components_at(const Point& p) const {
 // Walks the segment a-b through the triangulation: across unconstrained edges, along edges, and
 // through vertices, where DESIGN.md's pinch rule decides (arrive and leave in one free wedge).
 // Entering a blocked triangle or crossing a constrained edge is entering a C-obstacle.
+struct FreeSpaceTriangulation::Place {
+  Face face;
+};
+
+std::shared_ptr<const FreeSpaceTriangulation::Place> FreeSpaceTriangulation::place(const Point& p, bool& free) const {
+  auto place = std::make_shared<Place>();
+  const std::vector<Face> faces = impl_->faces_at(p, nullptr, &place->face);
+  free = std::any_of(faces.begin(), faces.end(), [](Face f) { return f->info().free; });
+  return place;
+}
+
 std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, const Point& b) const {
+  return why_blocked(a, b, nullptr);
+}
+
+std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, const Point& b, const Place* a_place) const {
   const Impl& t = *impl_;
   if (a == b) {
     const std::vector<Face> faces = t.faces_at(a);
@@ -347,7 +364,7 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
   CDT::Locate_type type;
   int li = 0;
   if (t.cdt.dimension() < 2) return std::string("no free space");
-  const Face start = t.cdt.locate(a, type, li);
+  const Face start = t.cdt.locate(a, type, li, a_place ? a_place->face : Face());
   switch (type) {
     case CDT::FACE:
       face = start;

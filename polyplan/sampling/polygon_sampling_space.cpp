@@ -45,6 +45,19 @@ std::vector<ExactPoint> corners(const Box& box) {
   return {{Rational(box.xmin), Rational(box.ymin)}, {Rational(box.xmax), Rational(box.ymax)}};
 }
 
+// What a milestone or tree node keeps (SamplingSpace::free_region): its point in the kernel's type,
+// converted from the exact rationals once, and the triangle it lies in, located once; beyond the
+// triangulation's frame only the point. Motions from it walk from there: the same exact walk, none
+// of the conversion and location it would repeat.
+struct PolygonFreeRegion final : FreeRegion {
+  detail::Point point;
+  std::shared_ptr<const detail::FreeSpaceTriangulation::Place> place;  // null beyond the frame
+};
+
+const PolygonFreeRegion* polygon_region(const FreeRegion* region) {
+  return static_cast<const PolygonFreeRegion*>(region);  // this space made it, or it is null
+}
+
 // Tests run on the free space's constrained triangulation (a walk with exact orientation
 // predicates, microseconds), and on the C-space's arrangement (geometry/path_check.hpp, the same
 // verdicts, much slower) for a configuration beyond the triangulation's frame.
@@ -75,6 +88,28 @@ class PolygonSamplingSpace final : public SamplingSpace<TranslatingRobot> {
   bool motion_is_free(const ExactPoint& a, const ExactPoint& b) override {
     if (!triangulation_.in_frame(a) || !triangulation_.in_frame(b)) return check_segment(*cspace_, a, b).valid;
     return !triangulation_.why_blocked(detail::to_point(a), detail::to_point(b));
+  }
+  bool keeps_free_regions() const override { return true; }
+  std::shared_ptr<const FreeRegion> free_region(const ExactPoint& p) override {
+    auto region = std::make_shared<PolygonFreeRegion>();
+    if (!triangulation_.in_frame(p)) {
+      if (!is_free(p)) return nullptr;
+      region->point = detail::to_point(p);
+      return region;
+    }
+    region->point = detail::to_point(p);
+    bool free = false;
+    region->place = triangulation_.place(region->point, free);
+    if (!free) return nullptr;
+    return region;
+  }
+  bool motion_is_free_between(const ExactPoint& a, const ExactPoint& b, const FreeRegion* a_region,
+                              const FreeRegion* b_region) override {
+    const PolygonFreeRegion *from = polygon_region(a_region), *to = polygon_region(b_region);
+    const bool beyond_frame = from ? !from->place : !triangulation_.in_frame(a);
+    if (beyond_frame || (to ? !to->place : !triangulation_.in_frame(b))) return check_segment(*cspace_, a, b).valid;
+    return !triangulation_.why_blocked(from ? from->point : detail::to_point(a), to ? to->point : detail::to_point(b),
+                                       from ? from->place.get() : nullptr);
   }
   std::optional<std::string> query_not_free(const Query& query) override {
     if (box_.empty()) return "the robot does not fit in the bounds";

@@ -31,8 +31,8 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     const std::size_t id = roadmap_.size();
     components_.push_back(id);
     return roadmap_.add(configuration, at, [&](std::size_t n) {
-      if (!this->motion_free(roadmap_.nodes()[n], configuration)) return detail::Join::none;
-      if (!this->space().symmetric() && !this->motion_free(configuration, roadmap_.nodes()[n])) return detail::Join::none;
+      if (!this->motion_free(roadmap_.nodes(), n, id)) return detail::Join::none;
+      if (!this->space().symmetric() && !this->motion_free(roadmap_.nodes(), id, n)) return detail::Join::none;
       components_[component(n)] = component(id);
       return detail::Join::certified;
     });

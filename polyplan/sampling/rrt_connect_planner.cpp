@@ -30,8 +30,9 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
       added = step.from;
       return Grown::reached;  // the target is a node already
     }
-    if (!this->motion_free(tree, step.from, step.to)) return Grown::trapped;
-    added = tree.add(std::move(step.to), at, step.from);
+    std::shared_ptr<const FreeRegion> region;
+    if (!this->motion_free(tree, step.from, step.to, region)) return Grown::trapped;
+    added = tree.add(std::move(step.to), at, step.from, std::move(region));
     return step.reaches_target ? Grown::reached : Grown::advanced;
   }
 

@@ -40,8 +40,9 @@ class RrtPlanner final : public SamplingPlanner<Space> {
     while (!found && budget.next()) {
       const auto sample = this->goal_biased(goals, goals_at, options_.goal_bias, sample_at);
       auto step = this->step_toward(tree, sample.configuration, sample.at, step_, new_at);
-      if (step.stays || !this->motion_free(tree.nodes()[step.from], step.to)) continue;
-      reached = tree.add(std::move(step.to), new_at, step.from);
+      std::shared_ptr<const FreeRegion> region;
+      if (step.stays || !this->motion_free(tree, step.from, step.to, region)) continue;
+      reached = tree.add(std::move(step.to), new_at, step.from, std::move(region));
       found = sample.goal && step.reaches_target;  // at that goal exactly: step_toward gave the target itself
     }
     facts.set("tree_size", tree.size());

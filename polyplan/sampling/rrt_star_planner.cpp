@@ -69,6 +69,16 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     }
   }
 
+  // Whether the motion from the new node `id` to its neighbour `n` is free: the reversed verdict on
+  // n → id when the choice of parent decided it and the space is symmetric, otherwise certified.
+  bool rewire_free(const SamplingTree<Space>& tree, const std::vector<std::pair<std::size_t, bool>>& verdicts, std::size_t id,
+                   std::size_t n) {
+    if (this->space().symmetric())
+      for (const auto& [decided, free] : verdicts)
+        if (decided == n) return free;
+    return this->motion_free(tree.nodes(), id, n);
+  }
+
   // The goal node the tree reaches most cheaply (the first of equals), if any goal is in the tree.
   static std::optional<std::size_t> cheapest_goal_node(const std::vector<std::optional<std::size_t>>& goal_nodes,
                                                        const std::vector<Node>& nodes) {
@@ -92,6 +102,7 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     std::size_t solutions = 0, rewired = 0;
     std::vector<std::size_t> near;
     std::vector<std::pair<double, std::size_t>> by_cost;  // (cost through the neighbour, neighbour)
+    std::vector<std::pair<std::size_t, bool>> verdicts;   // (neighbour, whether neighbour → new node is free)
 
     while (best != 0 && budget.next()) {
       const auto sample = this->goal_biased(goals, goals_at, options_.goal_bias, sample_at);
@@ -111,14 +122,15 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         std::sort(by_cost.begin(), by_cost.end());
         for (const auto& [cost, n] : by_cost) {
           if (cost >= nodes[goal_node].cost) break;
-          if (this->motion_free(tree.nodes()[n], goals[*sample.goal])) {
+          if (this->motion_free(tree.nodes(), n, goal_node)) {
             reparent(tree, nodes, goal_node, n, cost);
             ++rewired;
             break;
           }
         }
       } else {
-        if (!this->motion_free(tree.nodes()[nearest], next)) continue;
+        std::shared_ptr<const FreeRegion> region;
+        if (!this->motion_free(tree, nearest, next, region)) continue;
         // The cheapest certified parent among the neighbours (the nearest one is certified already).
         neighbours_of(tree, new_at, near);
         by_cost.clear();
@@ -126,14 +138,19 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         std::sort(by_cost.begin(), by_cost.end());
         std::size_t parent = nearest;
         double cost = nodes[nearest].cost + this->distance(tree.nodes().coordinates(nearest), new_at);
+        // The verdicts on the motions neighbour → new node decided here: rewiring's motions are
+        // these reversed, and in a symmetric space they are not certified again (as OMPL's RRT*).
+        verdicts.assign(1, {nearest, true});
         for (const auto& [through, n] : by_cost) {
           if (through >= cost) break;
-          if (this->motion_free(tree.nodes()[n], next)) {
+          const bool free = this->motion_free(tree.nodes(), n, next, region);
+          verdicts.emplace_back(n, free);
+          if (free) {
             parent = n, cost = through;
             break;
           }
         }
-        const std::size_t id = tree.add(std::move(next), new_at, parent);
+        const std::size_t id = tree.add(std::move(next), new_at, parent, std::move(region));
         nodes.push_back({cost, {}});
         nodes[parent].children.push_back(id);
         if (is_goal) goal_nodes[*sample.goal] = id;
@@ -141,7 +158,7 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         for (const auto& [through, n] : by_cost) {
           if (n == parent || n == SamplingTree<Space>::root) continue;
           const double via = cost + this->distance(new_at, tree.nodes().coordinates(n));
-          if (via < nodes[n].cost && this->motion_free(tree.nodes()[id], tree.nodes()[n])) {
+          if (via < nodes[n].cost && rewire_free(tree, verdicts, id, n)) {
             reparent(tree, nodes, n, id, via);
             ++rewired;
           }
@@ -150,7 +167,9 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
       if (const auto cheapest = cheapest_goal_node(goal_nodes, nodes); cheapest && nodes[*cheapest].cost < best) {
         best = nodes[*cheapest].cost;
         ++solutions;
-        this->found(budget, best);
+        // The path's length as the report measures it (the tree's costs, updated by subtraction
+        // as nodes are rewired, may differ from it in the last bits).
+        this->found(budget, this->length(tree.path_from_root(*cheapest)));
       }
     }
     facts.set("tree_size", tree.size());

@@ -120,15 +120,16 @@ auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::v
 
 template <class Space>
 auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& options) -> PlanReport<Configuration> {
-  // Each query draws from its own random stream, fixed by the seed and the query's ordinal (the
-  // first query's by the seed alone): carried over from the query before, the stream would depend
-  // on where a time limit cut that query, and the same input would not give the same answer.
-  if (queries_asked_ == 0) random_.seed(limits_.seed);
-  else {
-    std::seed_seq stream{static_cast<std::uint32_t>(limits_.seed), static_cast<std::uint32_t>(limits_.seed >> 32),
-                         static_cast<std::uint32_t>(queries_asked_), static_cast<std::uint32_t>(queries_asked_ >> 32)};
-    random_.seed(stream);
-  }
+  // Each query draws from its own random stream, fixed by the seed, the planner's name and the
+  // query's ordinal: carried over from the query before, the stream would depend on where a time
+  // limit cut that query, and the same input would not give the same answer; and without the name,
+  // planners given one seed draw the same first samples and fail together (rrt and rrtstar did on
+  // six_link_forest's seeds 3 and 4). std::seed_seq is specified bit for bit: one stream everywhere.
+  std::vector<std::uint32_t> words{static_cast<std::uint32_t>(limits_.seed), static_cast<std::uint32_t>(limits_.seed >> 32),
+                                   static_cast<std::uint32_t>(queries_asked_), static_cast<std::uint32_t>(queries_asked_ >> 32)};
+  for (const char c : name_) words.push_back(static_cast<unsigned char>(c));
+  std::seed_seq stream(words.begin(), words.end());
+  random_.seed(stream);
   ++queries_asked_;
   SamplingBudget budget(limits_);
   PlanReport<Configuration> report;

@@ -78,8 +78,10 @@ class SampledConfigurations {
   explicit SampledConfigurations(const SamplingSpace<Space>& space)
       : space_(&space), dimension_(space.dimension()), index_(space.index_dimension(), space.metric()) {}
 
-  std::size_t add(Configuration configuration, std::span<const double> coordinates) {
+  // `region`: what its clearance proves, when measured already (otherwise measured when first asked).
+  std::size_t add(Configuration configuration, std::span<const double> coordinates, std::shared_ptr<const FreeRegion> region = nullptr) {
     configurations_.push_back(std::move(configuration));
+    regions_.push_back(std::move(region));
     coordinates_.insert(coordinates_.end(), coordinates.begin(), coordinates.begin() + static_cast<std::ptrdiff_t>(dimension_));
     return index_.add(coordinates.first(index_.dimension()));
   }
@@ -87,6 +89,9 @@ class SampledConfigurations {
   const Configuration& operator[](std::size_t id) const { return configurations_[id]; }
   std::span<const double> coordinates(std::size_t id) const { return std::span(coordinates_).subspan(id * dimension_, dimension_); }
   const std::vector<Configuration>& all() const { return configurations_; }
+  // Configuration `id`'s free region (SamplingSpace::free_region), kept once measured: the
+  // planner's memory of what the node's clearance proves, filled in as motions ask for it.
+  std::shared_ptr<const FreeRegion>& region(std::size_t id) const { return regions_[id]; }
 
   // The space's distance between configuration `id` and `at`, the way `toward` says.
   double distance(std::size_t id, std::span<const double> at, Toward toward = Toward::asked) const {
@@ -109,6 +114,7 @@ class SampledConfigurations {
   std::size_t dimension_;
   std::vector<Configuration> configurations_;
   std::vector<double> coordinates_;  // configuration i's at [i·dimension, (i + 1)·dimension)
+  mutable std::vector<std::shared_ptr<const FreeRegion>> regions_;
   NearestNeighbours index_;
   mutable std::vector<std::size_t> candidates_;
   mutable std::vector<std::pair<double, std::size_t>> ranked_;
@@ -204,9 +210,10 @@ class SamplingTree {
     }
   }
 
-  std::size_t add(Configuration configuration, std::span<const double> coordinates, std::size_t parent) {
+  std::size_t add(Configuration configuration, std::span<const double> coordinates, std::size_t parent,
+                  std::shared_ptr<const FreeRegion> region = nullptr) {
     parents_.push_back(parent);
-    return nodes_.add(std::move(configuration), coordinates);
+    return nodes_.add(std::move(configuration), coordinates, std::move(region));
   }
   std::size_t size() const { return nodes_.size(); }
   const SampledConfigurations<Space>& nodes() const { return nodes_; }
@@ -365,10 +372,28 @@ class SamplingPlanner : public Planner<Space> {
     else space_->interpolate(target_at, from_at, 1 - step / d, out);
     return {from, space_->configuration(out), false, tree.nodes().distance(from, out, toward) == 0};
   }
+  // The motion between placed configurations a → b of `nodes`, with what their free regions
+  // prove (each measured when first asked and kept with the node). Certified and counted.
+  bool motion_free(const SampledConfigurations<Space>& nodes, std::size_t a, std::size_t b) {
+    ++motions_checked_;
+    return space_->motion_is_free_between(nodes[a], nodes[b], region_of(nodes, a), region_of(nodes, b));
+  }
+  // The motion between placed `a` and `c`, not placed yet: a → c, or c → a when `reverse`. c's free
+  // region is measured into `c_region` unless it holds it already, to be placed with c; when the
+  // space keeps regions and c is not free, the motion is refused with nothing more measured.
+  // Certified and counted.
+  bool motion_free(const SampledConfigurations<Space>& nodes, std::size_t a, const Configuration& c,
+                   std::shared_ptr<const FreeRegion>& c_region, bool reverse = false) {
+    ++motions_checked_;
+    if (space_->keeps_free_regions() && !c_region && !(c_region = space_->free_region(c))) return false;
+    const FreeRegion* a_region = region_of(nodes, a);
+    return reverse ? space_->motion_is_free_between(c, nodes[a], c_region.get(), a_region)
+                   : space_->motion_is_free_between(nodes[a], c, a_region, c_region.get());
+  }
   // The motion that joins a tree's node `from` and a configuration `to` grown from it: from → to,
-  // or to → from in a tree grown toward its root. Certified and counted.
-  bool motion_free(const SamplingTree<Space>& tree, std::size_t from, const Configuration& to) {
-    return tree.growth() == Toward::asked ? motion_free(tree.nodes()[from], to) : motion_free(to, tree.nodes()[from]);
+  // or to → from in a tree grown toward its root; `to_region` as above. Certified and counted.
+  bool motion_free(const SamplingTree<Space>& tree, std::size_t from, const Configuration& to, std::shared_ptr<const FreeRegion>& to_region) {
+    return motion_free(tree.nodes(), from, to, to_region, tree.growth() == Toward::placed);
   }
   // The length of a path of configurations in the space's metric.
   double length(const std::vector<Configuration>& path) const;
@@ -377,6 +402,14 @@ class SamplingPlanner : public Planner<Space> {
  private:
   // Shortcuts between random points of the path, each new motion certified (the .cpp says how).
   std::vector<Configuration> shortcut(std::vector<Configuration> path);
+  // Placed configuration `id`'s free region, measured on first asking; null when the space keeps
+  // none.
+  const FreeRegion* region_of(const SampledConfigurations<Space>& nodes, std::size_t id) {
+    if (!space_->keeps_free_regions()) return nullptr;
+    std::shared_ptr<const FreeRegion>& region = nodes.region(id);
+    if (!region) region = space_->free_region(nodes[id]);
+    return region.get();
+  }
 
   std::string name_;
   std::unique_ptr<SamplingSpace<Space>> space_;

@@ -62,6 +62,14 @@ inline void sampling_interpolate(SamplingMetric metric, std::span<const double> 
 using SamplingRandom = std::mt19937_64;
 inline double uniform01(SamplingRandom& random) { return static_cast<double>(random() >> 11) * 0x1.0p-53; }  // [0, 1)
 
+// What a free configuration's clearance proves about the motions that leave or reach it: a region
+// around it that a motion may cross with no new check (arms: its clearances, arm_motion.hpp). Opaque
+// to the planners, which keep one per placed configuration (SampledConfigurations) and hand the
+// ends' back to SamplingSpace::motion_is_free_between. docs/certification.md, "Reused clearances".
+struct FreeRegion {
+  virtual ~FreeRegion() = default;
+};
+
 template <class Space>
 class SamplingSpace {
  public:
@@ -112,6 +120,16 @@ class SamplingSpace {
   // The motion from → to (sampling_interpolate's) proved free for every configuration on it;
   // false when it collides or cannot be proved free.
   virtual bool motion_is_free(const Configuration& from, const Configuration& to) = 0;
+  // Clearance reuse. A space that keeps free regions measures one with free_region(c), null
+  // exactly when c is not free; motion_is_free_between(from, to, …) then certifies what the ends'
+  // regions (each made by free_region for that very configuration, or null when not known) leave
+  // uncovered, and decides as motion_is_free does. By default a space keeps none.
+  virtual bool keeps_free_regions() const { return false; }
+  virtual std::shared_ptr<const FreeRegion> free_region(const Configuration&) { return nullptr; }
+  virtual bool motion_is_free_between(const Configuration& from, const Configuration& to, const FreeRegion* /*from_region*/,
+                                      const FreeRegion* /*to_region*/) {
+    return motion_is_free(from, to);
+  }
   // Why a query cannot be planned (a start or goal that is not free, angles of the wrong count),
   // in one sentence naming what it hits; nullopt when it can.
   virtual std::optional<std::string> query_not_free(const Query&) = 0;

@@ -261,7 +261,8 @@ class EveryArmPlannerToAPoint : public ::testing::TestWithParam<std::string> {};
 TEST_P(EveryArmPlannerToAPoint, EndsWithTheHandAtThePointOnCertifiedMotions) {
   const ArmProblem problem = problem_of(arm_of({1.2, 1, 0.6}, 0.1), {{1.5, 1.5}, {-1, 1.8}, {0.4, -1.6}, {-2.2, -0.5}});
   const ArmCollisionChecker checker(problem);
-  const auto planner = planners<PlanarArm>().find(GetParam())->make(problem, {});
+  const PlannerEntry<PlanarArm>& entry = *planners<PlanarArm>().find(GetParam());
+  const auto planner = entry.make(problem, entry.anytime ? OptionValues{{"iterations", "20000"}} : OptionValues{});  // RRT* ends soon
   for (const ArmQuery& query : {to_point({0.3, 0.2, 0.1}, {-1.4, 1.3}), to_point({0.3, 0.2, 0.1}, {0.5, 2.2}, 2.0),
                                 to_point({0.3, 0.2, 0.1}, {2.2, -0.7})}) {
     SCOPED_TRACE(query.goal_point->point.transpose());

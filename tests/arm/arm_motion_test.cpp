@@ -395,6 +395,68 @@ TEST(CertifiedMotion, NeverFreeWhereDenseSamplingCollidesWithSelfCollision) {
   EXPECT_GT(verdicts.collides, 100);
 }
 
+TEST(ReusedClearances, NeverFreeWhereDenseSamplingCollidesAndMeasureLess) {
+  // What a tree node keeps (its clearances) certifies the ends of every motion that leaves or
+  // reaches it: the verdicts are those of the plain certificate's kind — never free where dense
+  // sampling collides — with fewer clearances measured, none at all where the ends' free stretches
+  // meet.
+  std::mt19937 rng(2031);
+  std::size_t free = 0, refused = 0;
+  for (const char* file : {"three_link_forest.json", "four_link_dense.json", "six_link_forest.json"}) {
+    SCOPED_TRACE(file);
+    const ArmProblem p = read_arm_problem(arm_data_file(file));
+    const ArmCollisionChecker checker(p);
+    std::size_t plain_steps = 0, reused_steps = 0, both_free = 0, measured_nothing = 0, agree = 0, motions = 0;
+    ArmClearances from_clearances, to_clearances;
+    while (motions < 150) {
+      const JointAngles from = random_configuration(rng, p.arm.joints());
+      const JointAngles to = random_neighbour(rng, from, motions % 2 == 0 ? 0.6 : 0.1);
+      if (!checker.is_free(from) || !checker.is_free(to)) continue;
+      ++motions;
+      measure_end_clearances(checker, from, from_clearances);
+      measure_end_clearances(checker, to, to_clearances);
+      ASSERT_FALSE(from_clearances.contact);
+      const MotionCertificate plain = certify_motion(checker, from, to);
+      const MotionCertificate reused = certify_motion(checker, from, to, &from_clearances, &to_clearances);
+      if (reused.free()) {
+        ++free;
+        ASSERT_FALSE(dense_sampling_finds_a_collision(checker, from, to, 0.001)) << "certified a colliding motion";
+      } else {
+        ++refused;
+        if (reused.verdict == MotionCertificate::Verdict::collides) ASSERT_FALSE(checker.is_free(interpolate_angles(from, to, reused.at)));
+      }
+      agree += plain.free() == reused.free();
+      if (plain.free() && reused.free()) plain_steps += plain.steps, reused_steps += reused.steps, ++both_free;
+      measured_nothing += reused.free() && reused.steps == 0;
+    }
+    EXPECT_GE(agree, motions - 3);  // the same proofs, met at other points of the motion
+    // A free motion measures at least one clearance fewer (its first step; mostly its last too):
+    // the many steps of a long motion through clutter remain.
+    EXPECT_LE(reused_steps + both_free, plain_steps) << reused_steps << " against " << plain_steps;
+    EXPECT_GT(measured_nothing, 5u);
+  }
+  EXPECT_GT(free, 100u);  // both answers occur: the test can fail
+  EXPECT_GT(refused, 30u);
+}
+
+TEST(ReusedClearances, AnEndThatCollidesRefusesTheMotionAndUnnormalisedEndsAreMeasuredAgain) {
+  // A point at (0, 1) and a link [2] 0.2 wide (as above): π/2 holds the point.
+  const ArmCollisionChecker checker(arm_of({2}, 0.2), {}, {Eigen::Vector2d(0, 1)});
+  ArmClearances blocked, free_end;
+  measure_end_clearances(checker, {kPi / 2}, blocked);
+  ASSERT_TRUE(blocked.contact);
+  measure_end_clearances(checker, {kPi}, free_end);
+  ASSERT_FALSE(free_end.contact);
+  EXPECT_EQ(certify_motion(checker, {kPi / 2}, {kPi}, &blocked, &free_end).verdict, MotionCertificate::Verdict::collides);
+  EXPECT_EQ(certify_motion(checker, {kPi}, {kPi / 2}, &free_end, &blocked).at, 1.0);
+  // Clearances handed over for an unnormalised angle are not used (the motion starts at the
+  // normalised one): with the collision's clearances given for the free 2π + π, the motion is
+  // still certified, from scratch.
+  const MotionCertificate fresh = certify_motion(checker, {two_pi + kPi}, {kPi + 0.1}, &blocked, nullptr);
+  EXPECT_TRUE(fresh.free());
+  EXPECT_GE(fresh.steps, 1u);
+}
+
 // ---------------------------------------------------------------- shipped arms
 
 TEST(ArmData, TwoLinkPointsQueriesAreFreeAndTheStraightMotionsAreAsDesigned) {

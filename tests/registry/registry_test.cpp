@@ -72,6 +72,7 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
   bool seeded = false;
   for (const OptionInfo& o : entry->options) {
     if (o.name == "time") options.emplace_back("time", "1");
+    if (o.name == "iterations" && entry->anytime) options.emplace_back("iterations", "20000");  // repeatable, and ends soon
     seeded |= o.name == "seed";
   }
   std::unique_ptr<Planner<TranslatingRobot>> planner, again;

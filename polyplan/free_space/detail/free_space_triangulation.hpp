@@ -46,6 +46,15 @@ class FreeSpaceTriangulation {
   // cones: it is what checks every path the visibility graph returns.
   std::optional<std::string> why_blocked(const Point& a, const Point& b) const;
 
+  // Where a point lies (the triangle its location found), kept by a caller that walks from the
+  // same point again and again (a sampling planner's milestone): locating it is most of a short
+  // walk's cost. A hint only, opaque: the walk's answer is the same with it or without.
+  struct Place;
+  // p's place, and whether p is in the free space's closure (components_at(p) not empty).
+  std::shared_ptr<const Place> place(const Point& p, bool& free) const;
+  // why_blocked(a, b), located from a's place (made by place(a) for this very point) when given.
+  std::optional<std::string> why_blocked(const Point& a, const Point& b, const Place* a_place) const;
+
   // The same for a polyline, with the pinch rule at its turning points.
   std::optional<std::string> why_path_blocked(const std::vector<Point>& path) const;
 
