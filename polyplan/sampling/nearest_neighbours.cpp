@@ -1,6 +1,12 @@
-// Nearest neighbours on nanoflann's dynamic KD-tree: a family of static trees of 1, 2, 4, ...
-// points, two of which are merged and rebuilt as points arrive (amortised O(log² n) an add); a
-// query searches every tree.
+// Nearest neighbours by a linear scan while there are few points, then on nanoflann's dynamic
+// KD-tree: a family of static trees of 1, 2, 4, ... points, two of which are merged and rebuilt as
+// points arrive (amortised O(log² n) an add); a query searches every tree.
+//
+// The tree is built from every point at once when size() reaches scan_threshold(dimension): below
+// it a scan of contiguous coordinates is faster (bench/nearest_neighbours_race.cpp --marginal,
+// docs/nearest_neighbours.md), the more so in higher dimensions, where the tree prunes little,
+// least on the torus (see below). Scan and tree report the same distances, so answers do not
+// depend on which one gave them.
 //
 // A KD-tree cuts the torus coordinates [0, 2π) as if they were a line, so its pruning must be
 // redone for the circle. nanoflann prunes a subtree when the sum over coordinates of
@@ -17,10 +23,12 @@
 #include <nanoflann.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -45,6 +53,48 @@ struct Points {
   }
 };
 
+// The distance the scan compares, summed coordinate by coordinate in the order the tree's metrics
+// sum it, so that both give the same double: on the torus sampling_distance's sum (see
+// TorusDistance), in the plane the square of sampling_distance's Euclidean distance (nanoflann's
+// metric_L2_Simple). A nonzero fixed_dimension unrolls the loop for the planners' dimensions.
+template <SamplingMetric metric, std::size_t fixed_dimension = 0>
+double scan_distance(const double* a, const double* b, std::size_t dimension) {
+  const std::size_t n = fixed_dimension != 0 ? fixed_dimension : dimension;
+  double sum = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double e = std::fabs(b[i] - a[i]);
+    sum += metric == SamplingMetric::torus ? std::min(e, two_pi - e) : e * e;
+  }
+  return sum;
+}
+
+// Calls f with the scan distance for this metric, unrolled for dimensions 2, 3, 4 and 6 (the
+// planners' polygon worlds and arms), chosen once a query rather than once a coordinate.
+template <class F>
+void with_scan_distance(SamplingMetric metric, std::size_t dimension, F&& f) {
+  const auto for_metric = [&]<SamplingMetric m>() {
+    switch (dimension) {
+      case 2: return f(scan_distance<m, 2>);
+      case 3: return f(scan_distance<m, 3>);
+      case 4: return f(scan_distance<m, 4>);
+      case 6: return f(scan_distance<m, 6>);
+      default: return f(scan_distance<m>);
+    }
+  };
+  if (metric == SamplingMetric::torus) for_metric.template operator()<SamplingMetric::torus>();
+  else for_metric.template operator()<SamplingMetric::euclidean>();
+}
+
+// Below this many points the scan answers, from it on the tree. Measured for nearest(q) as the
+// cost of a (query + add) while the points grow from n to 2n (docs/nearest_neighbours.md), the two
+// cross at about 250 points in 2-D, 350 to 700 in 3-D, 2000 in 4-D and 5000 to 6000 in 6-D; for
+// nearest(q, k) and within(q, r) the scan stays ahead longer. 5-D, not measured, is put between
+// its neighbours, 1-D with 2-D, and above 6-D, where the tree can only prune less, with 6-D.
+std::size_t scan_threshold(std::size_t dimension) {
+  constexpr std::array<std::size_t, 7> by_dimension{0, 250, 250, 500, 2000, 4000, 6000};
+  return by_dimension[std::clamp<std::size_t>(dimension, 1, by_dimension.size() - 1)];
+}
+
 template <class T, class DataSource, class AccessorType>
 struct TorusDistance {
   using ElementType = T;
@@ -60,11 +110,7 @@ struct TorusDistance {
   // e = |b − a|, its shift by 2π being exact (Sterbenz). Debug builds assert it.
   DistanceType evalMetric(const T* a, AccessorType b, std::size_t size) const {
     const T* p = data_source.point(b);
-    DistanceType sum = 0;
-    for (std::size_t i = 0; i < size; ++i) {
-      const DistanceType e = std::fabs(p[i] - a[i]);
-      sum += std::min(e, two_pi - e);
-    }
+    const DistanceType sum = scan_distance<SamplingMetric::torus>(a, p, size);
     assert(sum == sampling_distance(SamplingMetric::torus, std::span(a, size), std::span(p, size)));
     return sum;
   }
@@ -155,12 +201,15 @@ double largest_square_within(double radius) {
   return limit;
 }
 
-AnyTree make_tree(SamplingMetric metric, const Points& points) {
+// A tree over every point so far: the dynamic index's constructor adds the points already in its
+// dataset, all in one pass.
+void build_tree(SamplingMetric metric, const Points& points, std::optional<AnyTree>& tree) {
   const nanoflann::KDTreeSingleIndexAdaptorParams params(leaf_size);
   const int dimension = static_cast<int>(points.dimension);
   if (metric == SamplingMetric::torus)
-    return AnyTree(std::in_place_type<Tree<metric_torus>>, dimension, points, params, maximum_hint);
-  return AnyTree(std::in_place_type<Tree<nanoflann::metric_L2_Simple>>, dimension, points, params, maximum_hint);
+    tree.emplace(std::in_place_type<Tree<metric_torus>>, dimension, points, params, maximum_hint);
+  else
+    tree.emplace(std::in_place_type<Tree<nanoflann::metric_L2_Simple>>, dimension, points, params, maximum_hint);
 }
 
 }  // namespace
@@ -169,14 +218,17 @@ struct NearestNeighbours::Impl {
   SamplingMetric metric;
   Points points;
   double slack;  // widened()'s absolute part
-  AnyTree tree;  // reads `points`; Impl stays where it was made (moves move the pointer)
+  std::size_t tree_from;  // scan_threshold(dimension)
+  // Empty until size() reaches tree_from. Reads `points`; Impl stays where it was made (moves move
+  // the pointer).
+  std::optional<AnyTree> tree;
 
   Impl(std::size_t dimension, SamplingMetric metric)
       : metric(metric),
         points{dimension, {}},
         slack(metric == SamplingMetric::torus ? 1e-9 * static_cast<double>(dimension)
                                               : std::numeric_limits<double>::min()),
-        tree(make_tree(metric, points)) {}
+        tree_from(scan_threshold(dimension)) {}
 
   std::size_t size() const { return points.coordinates.size() / points.dimension; }
 
@@ -195,8 +247,29 @@ struct NearestNeighbours::Impl {
     }
   }
 
+  void add_last_point() {
+    if (tree) {
+      const auto accessor = static_cast<std::uint32_t>(size() - 1);
+      std::visit([&](auto& forest) { forest.addPoints(accessor, accessor); }, *tree);
+    } else if (size() >= tree_from) {
+      build_tree(metric, points, tree);
+    }
+  }
+
+  // Results take every point offered and keep what they want (nearest, or within the radius), so
+  // the scan offers them all.
   template <class Results>
   void search(std::span<const double> query, Results& results) const {
+    if (tree) return search_trees(query, results);
+    with_scan_distance(metric, points.dimension, [&](auto distance) {
+      const double* p = points.coordinates.data();
+      for (std::size_t i = 0, n = size(); i < n; ++i, p += points.dimension)
+        results.addPoint(distance(query.data(), p, points.dimension), i);
+    });
+  }
+
+  template <class Results>
+  void search_trees(std::span<const double> query, Results& results) const {
     std::visit(
         [&](const auto& forest) {
           // Largest tree first: its points tighten the worst distance before the small trees are
@@ -206,7 +279,7 @@ struct NearestNeighbours::Impl {
           for (auto t = trees.rbegin(); t != trees.rend(); ++t)
             t->findNeighbors(results, query.data(), nanoflann::SearchParams());
         },
-        tree);
+        *tree);
   }
 };
 
@@ -234,8 +307,7 @@ std::size_t NearestNeighbours::add(std::span<const double> point) {
   const std::size_t index = size();
   if (index == capacity) throw std::length_error("NearestNeighbours::add: the tree is full");
   impl_->points.coordinates.insert(impl_->points.coordinates.end(), point.begin(), point.end());
-  const auto accessor = static_cast<std::uint32_t>(index);
-  std::visit([&](auto& tree) { tree.addPoints(accessor, accessor); }, impl_->tree);
+  impl_->add_last_point();
   return index;
 }
 

@@ -1,6 +1,7 @@
 // NearestNeighbours against brute force under sampling_distance: on the torus (points and queries
 // crowded at both sides of the 0 = 2π seam, where a tree that cuts the circle as a line prunes
-// wrongly) and in the plane, built all at once or interleaved with queries as RRT does.
+// wrongly) and in the plane, built all at once or interleaved with queries as RRT does, below the
+// size where the index turns from a linear scan to a KD-tree and above it.
 #include <polyplan/sampling/nearest_neighbours.hpp>
 
 #include <gtest/gtest.h>
@@ -77,7 +78,7 @@ void expect_distances(const std::vector<std::size_t>& indices, const std::vector
 }
 
 // nearest(q), nearest(q, k) for k = 1, 5, 20 and within(q, r) against brute force, r both the
-// distance of a point (which must be included) and a random one.
+// distance of a point (which must be included) and a random one. Fewer than 20 points: k is cut.
 void expect_brute_force(const NearestNeighbours& nn, SamplingMetric metric, const std::vector<Point>& points,
                         const Point& query, SamplingRandom& random) {
   const std::vector<double> distance = distances_to(metric, points, query);
@@ -88,10 +89,12 @@ void expect_brute_force(const NearestNeighbours& nn, SamplingMetric metric, cons
   std::vector<std::size_t> out;
   for (const std::size_t k : {1, 5, 20}) {
     nn.nearest(query, k, out);
-    expect_distances(out, distance, std::vector<double>(sorted.begin(), sorted.begin() + k),
+    const auto kth = sorted.begin() + static_cast<std::ptrdiff_t>(std::min(k, sorted.size()));
+    expect_distances(out, distance, std::vector<double>(sorted.begin(), kth),
                      "k = " + std::to_string(k));
   }
-  for (const double radius : {sorted[30], sorted[200] * uniform01(random)}) {
+  const auto at_most_last = [&](std::size_t rank) { return sorted[std::min(rank, sorted.size() - 1)]; };
+  for (const double radius : {at_most_last(30), at_most_last(200) * uniform01(random)}) {
     nn.within(query, radius, out);
     const auto end = std::upper_bound(sorted.begin(), sorted.end(), radius);
     expect_distances(out, distance, std::vector<double>(sorted.begin(), end), "radius " + std::to_string(radius));
@@ -125,6 +128,37 @@ TEST(NearestNeighbours, EuclideanMatchesBruteForceIn2D) {
   expect_brute_force_on_random_points(SamplingMetric::euclidean, 2, 4);
 }
 
+TEST(NearestNeighbours, BothRegimesMatchBruteForce) {
+  // The index scans its points until there are a few hundred to a few thousand of them, more in
+  // higher dimensions (scan_threshold in nearest_neighbours.cpp), then builds a KD-tree from them
+  // all and adds to it. These sizes straddle the switch in every dimension the planners use (2, 3,
+  // 4, 6) and in 1, 5 and 8 (where the scan's distance is not unrolled). The torus points crowd
+  // the seam.
+  const std::vector<std::size_t> checkpoints{1, 2, 15, 120, 249, 250, 251, 600, 1999, 2000, 2001, 4100, 8500};
+  for (const auto& [metric, dimension] : {std::pair{SamplingMetric::euclidean, 2}, {SamplingMetric::euclidean, 5},
+                                          {SamplingMetric::torus, 1}, {SamplingMetric::torus, 2},
+                                          {SamplingMetric::torus, 3}, {SamplingMetric::torus, 4},
+                                          {SamplingMetric::torus, 6}, {SamplingMetric::torus, 8}}) {
+    SamplingRandom random(8 + dimension);
+    const std::vector<Point> points = random_points(metric, dimension, checkpoints.back(), random);
+    NearestNeighbours nn(dimension, metric);
+    std::vector<Point> added;
+    for (const std::size_t size : checkpoints) {
+      while (added.size() < size) {
+        added.push_back(points[added.size()]);
+        nn.add(added.back());
+      }
+      for (int q = 0; q < 20; ++q) {
+        SCOPED_TRACE(std::string(metric == SamplingMetric::torus ? "torus" : "euclidean") + ", dimension " +
+                     std::to_string(dimension) + ", " + std::to_string(size) + " points, query " + std::to_string(q));
+        const Point query = q % 5 == 0 ? added[random() % size] : random_point(metric, dimension, random);
+        expect_brute_force(nn, metric, added, query, random);
+        if (::testing::Test::HasFatalFailure()) return;
+      }
+    }
+  }
+}
+
 TEST(NearestNeighbours, EuclideanTiesOnAGridMatchBruteForce) {
   // Integer points, each twice, queried at integers and half-integers: many exact ties.
   std::vector<Point> points;
@@ -141,10 +175,10 @@ TEST(NearestNeighbours, EuclideanTiesOnAGridMatchBruteForce) {
 }
 
 TEST(NearestNeighbours, TheNearestPointMayBeAcrossTheSeam) {
-  // One point 0.1 from the query the short way round, through 0 = 2π, and 300 points in
+  // One point 0.1 from the query the short way round, through 0 = 2π, and 1200 points in
   // [1, 2] ∪ [3.7, 4.2], at least 0.95 away: the trees split the far point from the query's side,
   // and a bound that is the distance on the line (6.18), or the short way to the split value
-  // (3.45 from 0.05 to 3.7), prunes it.
+  // (3.45 from 0.05 to 3.7), prunes it. (1200: past the size where the index stops scanning.)
   for (const bool query_at_zero : {false, true}) {
     for (const std::size_t dimension : {1, 2}) {
       SCOPED_TRACE("dimension " + std::to_string(dimension) +
@@ -156,7 +190,7 @@ TEST(NearestNeighbours, TheNearestPointMayBeAcrossTheSeam) {
       NearestNeighbours nn(dimension, SamplingMetric::torus);
       nn.add(across);
       SamplingRandom random(6);
-      for (int i = 0; i < 300; ++i) {
+      for (int i = 0; i < 1200; ++i) {
         Point p(dimension, 1.0);
         p[0] = i % 2 == 0 ? 1 + uniform01(random) : 3.7 + 0.5 * uniform01(random);
         nn.add(p);
@@ -174,7 +208,8 @@ TEST(NearestNeighbours, TheNearestPointMayBeAcrossTheSeam) {
 }
 
 TEST(NearestNeighbours, InterleavedAddsAndQueriesMatchBruteForce) {
-  // As RRT grows its tree: after every add the nearest point to a fresh sample is right.
+  // As RRT grows its tree: after every add the nearest points to a fresh sample are right, through
+  // the switch from scan to tree (at 500 points in 3-D).
   for (const SamplingMetric metric : {SamplingMetric::torus, SamplingMetric::euclidean}) {
     SCOPED_TRACE(metric == SamplingMetric::torus ? "torus" : "euclidean");
     SamplingRandom random(7);
@@ -184,8 +219,9 @@ TEST(NearestNeighbours, InterleavedAddsAndQueriesMatchBruteForce) {
       points.push_back(random_point(metric, 3, random));
       ASSERT_EQ(nn.add(points.back()), i);
       const Point query = random_point(metric, 3, random);
-      const std::vector<double> distance = distances_to(metric, points, query);
-      ASSERT_EQ(distance[nn.nearest(query)], *std::min_element(distance.begin(), distance.end())) << "after " << i + 1;
+      SCOPED_TRACE("after " + std::to_string(i + 1));
+      expect_brute_force(nn, metric, points, query, random);
+      if (::testing::Test::HasFatalFailure()) return;
     }
   }
 }
