@@ -38,7 +38,7 @@ if [ "$sanitize" = 1 ]; then
   # (the C++ test programs' Release build and run, some eight minutes of the deep run, saved).
   step build bash -c "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null && \
     cmake --build build -j$jobs --target polyplan_cli polyplan_examples \
-      \$(cmake --build build --target help | grep -qw _polyplan && echo _polyplan)"
+      \$(cmake --build build --target help | grep -w _polyplan >/dev/null && echo _polyplan)"
   step tests ctest --test-dir build --output-on-failure -j"$jobs" -R '^(python_|example_)'
 else
   step build bash -c "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null && cmake --build build -j$jobs"

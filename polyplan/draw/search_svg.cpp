@@ -47,9 +47,10 @@ svg::Point2 nudged(const svg::Drawing& drawing, svg::Point2 p, double dx, double
 
 // g, h and f on three short lines right of the vertex, as Graph.plot writes them: on a grid one line
 // would run into the next vertex's.
-void draw_label(svg::Drawing& drawing, svg::Point2 p, const Label& label) {
+// `with_h` false when the heuristic is drawn at every vertex already (options.heuristic): h once.
+void draw_label(svg::Drawing& drawing, svg::Point2 p, const Label& label, bool with_h) {
   drawing.text(nudged(drawing, p, 6, 12), "g=" + number(label.g), kTextPx);
-  drawing.text(nudged(drawing, p, 6, 2), "h=" + number(label.h), kTextPx);
+  if (with_h) drawing.text(nudged(drawing, p, 6, 2), "h=" + number(label.h), kTextPx);
   drawing.text(nudged(drawing, p, 6, -8), "f=" + number(label.f), kTextPx);
 }
 
@@ -195,7 +196,7 @@ svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, Di
     if (history[v].labels.empty()) continue;
     const Label& last = *history[v].labels.back();
     if (options.backpointers && last.backpointer) drawing.raw(arrow(drawing, graph, v, *last.backpointer));
-    if (options.labels) draw_label(drawing, at(graph, v), last);
+    if (options.labels) draw_label(drawing, at(graph, v), last, !options.heuristic);
   }
   if (options.backpointers) drawing.legend("backpointer", styles.arrow, svg::Swatch::line);
   if (result.found) {
@@ -238,7 +239,7 @@ svg::Drawing draw_search_animation(const WeightedDigraph& graph, DigraphVertexId
       if (options.backpointers && l.backpointer) drawing.raw(arrow(drawing, graph, v, *l.backpointer, shown));
       if (options.labels) {
         drawing.begin_group("class=\"label\" opacity=\"0\"", shown);
-        draw_label(drawing, at(graph, v), l);
+        draw_label(drawing, at(graph, v), l, !options.heuristic);
         drawing.end_group();
       }
     }

@@ -81,6 +81,11 @@ TEST(SearchSvg, DrawsTheFinalStateWithTheFlagsAsked) {
   EXPECT_NE(flagged.find(">2.2<"), std::string::npos) << "the one-way edge's weight";
   EXPECT_EQ(count(flagged, "<line class=\"backpointer\""), 6u) << "every vertex reached but the start";
   EXPECT_NE(flagged.find("h=4<"), std::string::npos) << "the start's heuristic";
+  EXPECT_EQ(count(flagged, ">h="), num_vertices(s.graph)) << "h once per vertex when labels and heuristic are both on";
+  SearchPictureOptions labels_only;
+  labels_only.labels = true;
+  EXPECT_NE(draw_search(s.graph, 0, 6, s.result, labels_only, "small").str().find(">h=3.162<"), std::string::npos)
+      << "without the heuristic flag the labels carry h";
 }
 
 TEST(SearchSvg, ASearchWithoutPathDrawsNoPath) {
