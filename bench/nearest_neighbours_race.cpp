@@ -11,6 +11,7 @@
 // --marginal times the growth from n to 2n points instead of from 1 to N: the cost at about n
 // points, where the two cross being the index's threshold between them. --no-check skips the
 // brute-force check (quadratic in N).
+#include <polyplan/sampling/detail/scan_distance.hpp>
 #include <polyplan/sampling/nearest_neighbours.hpp>
 
 #include <algorithm>
@@ -35,43 +36,7 @@ constexpr std::size_t k_nearest = 10;
 constexpr double points_within = 15;  // expected points in a within() ball
 constexpr double euclidean_side = 10;  // Euclidean points in [0, 10)²
 
-// The torus distance, or the Euclidean one squared, from p to q, summed in sampling_distance's
-// order (so the same double). Dimension is a template argument where the planners use it (2 to 6):
-// the loop unrolls and the metric is chosen once a query, not once a coordinate.
-template <SamplingMetric metric, std::size_t dimension>
-double scan_distance(const double* p, const double* q, std::size_t) {
-  double sum = 0;
-  for (std::size_t c = 0; c < dimension; ++c) {
-    const double e = std::fabs(p[c] - q[c]);
-    sum += metric == SamplingMetric::torus ? std::min(e, two_pi - e) : e * e;
-  }
-  return sum;
-}
-template <SamplingMetric metric>
-double scan_distance_any(const double* p, const double* q, std::size_t dimension) {
-  double sum = 0;
-  for (std::size_t c = 0; c < dimension; ++c) {
-    const double e = std::fabs(p[c] - q[c]);
-    sum += metric == SamplingMetric::torus ? std::min(e, two_pi - e) : e * e;
-  }
-  return sum;
-}
-
-// Calls f with the distance function for this metric and dimension.
-template <class F>
-decltype(auto) with_scan_distance(SamplingMetric metric, std::size_t dimension, F&& f) {
-  const auto for_metric = [&]<SamplingMetric m>() -> decltype(auto) {
-    switch (dimension) {
-      case 2: return f(scan_distance<m, 2>);
-      case 3: return f(scan_distance<m, 3>);
-      case 4: return f(scan_distance<m, 4>);
-      case 6: return f(scan_distance<m, 6>);
-      default: return f(scan_distance_any<m>);
-    }
-  };
-  return metric == SamplingMetric::torus ? for_metric.template operator()<SamplingMetric::torus>()
-                                         : for_metric.template operator()<SamplingMetric::euclidean>();
-}
+using detail::with_scan_distance;  // the index's own scan distance (sampling/detail/scan_distance.hpp)
 
 // A linear scan: the peer the index is raced against. Every distance is summed in full: stopping
 // once a partial sum exceeds the worst kept was measured 2 to 2.5 times slower in 4-D and 6-D

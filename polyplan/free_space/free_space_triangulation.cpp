@@ -325,9 +325,6 @@ std::vector<int> FreeSpaceTriangulation::components_at(const Point& p) const {
   return components;
 }
 
-// Walks the segment a-b through the triangulation: across unconstrained edges, along edges, and
-// through vertices, where DESIGN.md's pinch rule decides (arrive and leave in one free wedge).
-// Entering a blocked triangle or crossing a constrained edge is entering a C-obstacle.
 struct FreeSpaceTriangulation::Place {
   Face face;
 };
@@ -343,6 +340,9 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
   return why_blocked(a, b, nullptr);
 }
 
+// Walks the segment a-b through the triangulation: across unconstrained edges, along edges, and
+// through vertices, where DESIGN.md's pinch rule decides (arrive and leave in one free wedge).
+// Entering a blocked triangle or crossing a constrained edge is entering a C-obstacle.
 std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, const Point& b, const Place* a_place) const {
   const Impl& t = *impl_;
   if (a == b) {

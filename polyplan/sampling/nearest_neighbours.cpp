@@ -20,6 +20,8 @@
 // a point beyond the cut can be nearer across the seam.)
 #include <polyplan/sampling/nearest_neighbours.hpp>
 
+#include <polyplan/sampling/detail/scan_distance.hpp>
+
 #include <nanoflann.hpp>
 
 #include <algorithm>
@@ -53,38 +55,6 @@ struct Points {
   }
 };
 
-// The distance the scan compares, summed coordinate by coordinate in the order the tree's metrics
-// sum it, so that both give the same double: on the torus sampling_distance's sum (see
-// TorusDistance), in the plane the square of sampling_distance's Euclidean distance (nanoflann's
-// metric_L2_Simple). A nonzero fixed_dimension unrolls the loop for the planners' dimensions.
-template <SamplingMetric metric, std::size_t fixed_dimension = 0>
-double scan_distance(const double* a, const double* b, std::size_t dimension) {
-  const std::size_t n = fixed_dimension != 0 ? fixed_dimension : dimension;
-  double sum = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const double e = std::fabs(b[i] - a[i]);
-    sum += metric == SamplingMetric::torus ? std::min(e, two_pi - e) : e * e;
-  }
-  return sum;
-}
-
-// Calls f with the scan distance for this metric, unrolled for dimensions 2, 3, 4 and 6 (the
-// planners' polygon worlds and arms), chosen once a query rather than once a coordinate.
-template <class F>
-void with_scan_distance(SamplingMetric metric, std::size_t dimension, F&& f) {
-  const auto for_metric = [&]<SamplingMetric m>() {
-    switch (dimension) {
-      case 2: return f(scan_distance<m, 2>);
-      case 3: return f(scan_distance<m, 3>);
-      case 4: return f(scan_distance<m, 4>);
-      case 6: return f(scan_distance<m, 6>);
-      default: return f(scan_distance<m>);
-    }
-  };
-  if (metric == SamplingMetric::torus) for_metric.template operator()<SamplingMetric::torus>();
-  else for_metric.template operator()<SamplingMetric::euclidean>();
-}
-
 // Below this many points the scan answers, from it on the tree. Measured for nearest(q) as the
 // cost of a (query + add) while the points grow from n to 2n (docs/nearest_neighbours.md), the two
 // cross at about 250 points in 2-D, 350 to 700 in 3-D, 2000 in 4-D and 5000 to 6000 in 6-D; for
@@ -110,7 +80,7 @@ struct TorusDistance {
   // e = |b − a|, its shift by 2π being exact (Sterbenz). Debug builds assert it.
   DistanceType evalMetric(const T* a, AccessorType b, std::size_t size) const {
     const T* p = data_source.point(b);
-    const DistanceType sum = scan_distance<SamplingMetric::torus>(a, p, size);
+    const DistanceType sum = detail::scan_distance<SamplingMetric::torus>(a, p, size);
     assert(sum == sampling_distance(SamplingMetric::torus, std::span(a, size), std::span(p, size)));
     return sum;
   }
@@ -261,7 +231,7 @@ struct NearestNeighbours::Impl {
   template <class Results>
   void search(std::span<const double> query, Results& results) const {
     if (tree) return search_trees(query, results);
-    with_scan_distance(metric, points.dimension, [&](auto distance) {
+    detail::with_scan_distance(metric, points.dimension, [&](auto distance) {
       const double* p = points.coordinates.data();
       for (std::size_t i = 0, n = size(); i < n; ++i, p += points.dimension)
         results.addPoint(distance(query.data(), p, points.dimension), i);

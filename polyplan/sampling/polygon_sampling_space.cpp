@@ -85,23 +85,15 @@ class PolygonSamplingSpace final : public SamplingSpace<TranslatingRobot> {
     if (!triangulation_.in_frame(p)) return cspace_->locate(p).kind != Location::Kind::blocked;
     return !triangulation_.components_at(detail::to_point(p)).empty();
   }
-  bool motion_is_free(const ExactPoint& a, const ExactPoint& b) override {
-    if (!triangulation_.in_frame(a) || !triangulation_.in_frame(b)) return check_segment(*cspace_, a, b).valid;
-    return !triangulation_.why_blocked(detail::to_point(a), detail::to_point(b));
-  }
+  bool motion_is_free(const ExactPoint& a, const ExactPoint& b) override { return motion_is_free_between(a, b, nullptr, nullptr); }
   bool keeps_free_regions() const override { return true; }
   std::shared_ptr<const FreeRegion> free_region(const ExactPoint& p) override {
     auto region = std::make_shared<PolygonFreeRegion>();
-    if (!triangulation_.in_frame(p)) {
-      if (!is_free(p)) return nullptr;
-      region->point = detail::to_point(p);
-      return region;
-    }
     region->point = detail::to_point(p);
     bool free = false;
-    region->place = triangulation_.place(region->point, free);
-    if (!free) return nullptr;
-    return region;
+    if (triangulation_.in_frame(p)) region->place = triangulation_.place(region->point, free);
+    else free = is_free(p);
+    return free ? region : nullptr;
   }
   bool motion_is_free_between(const ExactPoint& a, const ExactPoint& b, const FreeRegion* a_region,
                               const FreeRegion* b_region) override {
