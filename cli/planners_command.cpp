@@ -1,7 +1,7 @@
 // polyplan planners [--json FILE|-]: every registered planner with its description and options.
 #include "cli/command.hpp"
 
-#include <polyplan/registry/registry.hpp>
+#include <polyplan/problem/any_planner.hpp>
 
 #include <cstdio>
 #include <iostream>
@@ -13,17 +13,22 @@ struct PlannersCommand {
   std::string json;
 };
 
-template <class Space>
-nlohmann::json space_json(const std::string& command) {
-  nlohmann::json list = nlohmann::json::array();
-  for (const auto& entry : planners<Space>().entries()) {
+nlohmann::json option_json(const OptionInfo& o) {
+  return {{"name", o.name}, {"description", o.description}, {"kind", o.kind}, {"default", o.default_value}, {"flag", o.flag}};
+}
+
+// The catalog by space, in its order: {space, command, planners [{name, description, options}]}.
+nlohmann::json spaces_json() {
+  nlohmann::json spaces = nlohmann::json::array();
+  for (const PlannerListing& planner : planner_catalog()) {
+    if (spaces.empty() || spaces.back()["space"] != planner.space)
+      spaces.push_back({{"space", planner.space}, {"command", "polyplan plan " + planner.file + " --planner NAME"},
+                        {"planners", nlohmann::json::array()}});
     nlohmann::json options = nlohmann::json::array();
-    for (const OptionInfo& o : entry.options)
-      options.push_back({{"name", o.name}, {"description", o.description}, {"kind", o.kind}, {"default", o.default_value},
-                         {"flag", o.flag}});
-    list.push_back({{"name", entry.name}, {"description", entry.description}, {"options", options}});
+    for (const OptionInfo& o : planner.options) options.push_back(option_json(o));
+    spaces.back()["planners"].push_back({{"name", planner.name}, {"description", planner.description}, {"options", options}});
   }
-  return {{"space", std::string(Space::description)}, {"command", command}, {"planners", list}};
+  return spaces;
 }
 
 void print_space(const nlohmann::json& space) {
@@ -40,10 +45,7 @@ void print_space(const nlohmann::json& space) {
 }
 
 int run_planners(const PlannersCommand& command) {
-  const nlohmann::json spaces = nlohmann::json::array({space_json<TranslatingRobot>("polyplan plan WORLD.json --planner NAME"),
-                                                       space_json<RotatingRobot>("polyplan plan WORLD.json --planner NAME"),
-                                                       space_json<SteeredCar>("polyplan plan CAR_WORLD.json --planner NAME"),
-                                                       space_json<PlanarArm>("polyplan arm ARM.json --method NAME")});
+  const nlohmann::json spaces = spaces_json();
   if (!command.json.empty()) write_json(spaces, command.json);
   if (command.json != "-") {
     for (std::size_t i = 0; i < spaces.size(); ++i) {

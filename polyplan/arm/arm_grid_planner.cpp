@@ -141,7 +141,7 @@ ArmGridPlanner::ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options
   if (options_.corridor < 0 || options_.widenings < 0)
     throw std::invalid_argument("the corridor's half-width and the number of widenings must not be negative");
   if (!(options_.memory_mb > 0) || !std::isfinite(options_.memory_mb))
-    throw std::invalid_argument("the memory budget memory_mb must be a positive number of megabytes");
+    throw std::invalid_argument("the memory budget memory-mb must be a positive number of megabytes");
 }
 
 namespace {
@@ -188,7 +188,7 @@ struct Planning {
   // The query stopped at its memory budget after `what` (`context`: what came before, if anything).
   void stop_at_budget(const std::string& what, const std::string& context = "") {
     report.fail(PlanStatus::limit, context + "stopped after " + what + ": the memory budget of one query is " +
-                                       number_text(options.memory_mb) + " MB (option memory_mb: raise it with --memory_mb N)");
+                                       number_text(options.memory_mb) + " MB (option memory-mb: raise it with --memory-mb N)");
     report.facts.set("stopped_by", "memory limit");
   }
   std::string no_join(bool start_joined, std::size_t goals) const {
@@ -571,10 +571,10 @@ PlannerEntry<PlanarArm> arm_grid_planner_entry() {
   table.add("coarse", &ArmGridOptions::coarse_degrees,
             "a finer grid is searched first at this resolution (degrees), then in a corridor around that path; 0: whole grid");
   table.add("corridor", &ArmGridOptions::corridor, "the corridor's half-width in coarse cells");
-  table.add("exact_cells", &ArmGridOptions::exact_cells,
+  table.add("exact-cells", &ArmGridOptions::exact_cells,
             "a finer grid is searched whole when the coarse search predicts at most this many cells");
   table.add("widenings", &ArmGridOptions::widenings, "times the corridor may double while it cannot prove its path shortest");
-  table.add("memory_mb", &ArmGridOptions::memory_mb, "the memory one query's tables may take before it stops, saying so");
+  table.add("memory-mb", &ArmGridOptions::memory_mb, "the memory one query's tables may take before it stops, saying so");
   return make_planner_entry<PlanarArm, ArmGridOptions>(
       "grid", "seed 000's grid over the joint angles (a torus), searched lazily; every move a certified motion",
       std::move(table), [](const ArmProblem& problem, const ArmGridOptions& o) {

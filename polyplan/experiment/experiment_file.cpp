@@ -2,15 +2,15 @@
 
 #include <polyplan/experiment/experiment_problem.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/io/detail/text_file.hpp>
+#include <polyplan/problem/any_planner.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 namespace polyplan {
 namespace {
@@ -103,30 +103,27 @@ class ExperimentReader {
     p.name = text(required(value, "name", object), object + ".name");
     const std::string file = text(required(value, "file", object), object + ".file");
     p.file = (fs::path(file).is_absolute() ? fs::path(file) : folder_ / file).lexically_normal().string();
-    p.kind = kind(value, object, p.file);
-    ExperimentProblemFile loaded = [&] {
+    Problem loaded = [&] {
       try {
-        return ExperimentProblemFile(p);
+        std::vector<std::string> warnings;  // unknown fields of a problem file are not the experiment's concern
+        return Problem::read(p.file, &warnings);
       } catch (const InputError& e) {
         fail(object + ".file", e.what());
       }
     }();
+    p.kind = loaded.arm() ? ProblemKind::arm : ProblemKind::world;
+    if (value.contains("kind")) check_kind(value["kind"], object, p.kind);
     p.query = query(value, object, loaded.query_names());
     loaded_.push_back(std::move(loaded));
     return p;
   }
 
-  ProblemKind kind(const json& value, const std::string& object, const std::string& file) const {
-    if (value.contains("kind")) {
-      const std::string kind = text(value["kind"], object + ".kind");
-      if (kind == "world") return ProblemKind::world;
-      if (kind == "arm") return ProblemKind::arm;
-      fail(object + ".kind", "expected \"world\" or \"arm\"");
-    }
-    std::ifstream in(file);
-    if (!in) fail(object + ".file", "cannot read " + file);
-    const json content = json::parse(in, nullptr, false);
-    return content.is_object() && content.contains("links") ? ProblemKind::arm : ProblemKind::world;
+  // A kind the experiment names is the file's own.
+  void check_kind(const json& value, const std::string& object, ProblemKind kind) const {
+    const std::string named = text(value, object + ".kind");
+    if (named != "world" && named != "arm") fail(object + ".kind", "expected \"world\" or \"arm\"");
+    const char* is = kind == ProblemKind::arm ? "arm" : "world";
+    if (named != is) fail(object + ".kind", "\"" + named + "\", but the file is " + (kind == ProblemKind::arm ? "an arm file" : "a world file"));
   }
 
   std::string query(const json& value, const std::string& object, const std::vector<std::string>& names) const {
@@ -187,21 +184,23 @@ class ExperimentReader {
       ExperimentPlanner& p = e.planners[i];
       const std::string object = "planners[" + std::to_string(i) + "]";
       for (std::size_t j = 0; j < e.problems.size(); ++j) {
-        const ExperimentProblemFile& problem = loaded_[j];
-        const std::vector<OptionInfo>* known = problem.planner_options(p.planner);
-        if (!known)
-          fail(object + ".planner", "no planner \"" + p.planner + "\" plans problems[" + std::to_string(j) + "] (" + e.problems[j].file +
-                                        "; its planners: " + problem.planner_names() + ")");
+        const Problem& problem = loaded_[j];
+        const std::vector<OptionInfo>* known = nullptr;
+        try {
+          known = &planner_for(p.planner, problem).options;
+        } catch (const InputError& error) {
+          fail(object + ".planner", "no planner \"" + p.planner + "\" plans problems[" + std::to_string(j) + "]: " + error.what());
+        }
         for (const auto& [key, value] : p.options)
           if (std::none_of(known->begin(), known->end(), [&](const OptionInfo& o) { return o.name == key; }))
             fail(object + ".options." + key, "unknown option for " + p.planner + " (options: " + option_names(*known) + ")");
         try {
-          problem.require_planner_for_robot(p.planner);
-          problem.build(p.planner, options_for_run(p.options, *known, e.seeds.front(), e.time_limit));
+          // Building is what checks the values; a planner built on a problem costs little beside a run.
+          make_planner(p.planner, problem, options_for_run(p.options, *known, e.seeds.front(), e.time_limit));
         } catch (const InputError& error) {
           fail(object, std::string(error.what()) + " (on problems[" + std::to_string(j) + "])");
         }
-        p.anytime = p.anytime || problem.planner_anytime(p.planner);
+        p.anytime = p.anytime || planner_for(p.planner, problem).anytime;
       }
     }
   }
@@ -215,7 +214,7 @@ class ExperimentReader {
 
   std::string file_;
   fs::path folder_;
-  std::vector<ExperimentProblemFile> loaded_;  // problems[i]'s file, read once for the checks
+  std::vector<Problem> loaded_;  // problems[i]'s file, read once for the checks
 };
 
 }  // namespace
@@ -230,12 +229,6 @@ Experiment parse_experiment(const std::string& text, const std::string& name) {
   return ExperimentReader(name, fs::path(name).parent_path()).read(root);
 }
 
-Experiment read_experiment(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw InputError(path + ": cannot read the experiment file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parse_experiment(text.str(), path);
-}
+Experiment read_experiment(const std::string& path) { return parse_experiment(detail::read_text_file(path), path); }
 
 }  // namespace polyplan

@@ -2,6 +2,7 @@
 
 #include <polyplan/experiment/experiment_problem.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/problem/any_planner.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -47,10 +48,9 @@ class Worker {
     const ExperimentProblem& problem = experiment_.problems[run.problem];
     const ExperimentPlanner& entry = experiment_.planners[run.planner];
     try {
-      const ExperimentProblemFile& file = this->file(run.problem);
-      const auto* known = file.planner_options(entry.planner);
-      if (!known) throw std::logic_error("the planner " + entry.planner + " does not plan " + problem.name);
-      file.run(entry.planner, options_for_run(entry.options, *known, run.seed, experiment_.time_limit), problem.query, run);
+      const Problem& file = this->file(run.problem);
+      const std::vector<OptionInfo>& known = planner_for(entry.planner, file).options;
+      run_once(file, entry.planner, options_for_run(entry.options, known, run.seed, experiment_.time_limit), problem.query, run);
     } catch (const std::exception& e) {
       run.status = PlanStatus::not_found;
       run.solved = false;
@@ -61,13 +61,17 @@ class Worker {
   }
 
  private:
-  const ExperimentProblemFile& file(std::size_t problem) {
-    if (!files_[problem]) files_[problem] = std::make_unique<ExperimentProblemFile>(experiment_.problems[problem]);
+  const Problem& file(std::size_t problem) {
+    if (!files_[problem]) {
+      std::vector<std::string> warnings;  // unknown fields of a problem file are not the experiment's concern
+      files_[problem] = std::make_unique<Problem>(Problem::read(experiment_.problems[problem].file, &warnings));
+      files_[problem]->prepare();
+    }
     return *files_[problem];
   }
 
   const Experiment& experiment_;
-  std::vector<std::unique_ptr<ExperimentProblemFile>> files_;
+  std::vector<std::unique_ptr<Problem>> files_;
 };
 
 }  // namespace

@@ -173,7 +173,12 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
 
 PlannerEntry<TranslatingRobot> tether_planner_entry() {
   OptionTable<TetherOptions> table;
-  table.add("tether-base", &TetherOptions::tether_base, "where the tether is anchored, X,Y (default: the start)");
+  table.add("tether-base", "where the tether is anchored, X,Y (default: the start)", "point X,Y",
+            [](const TetherOptions& o) { return o.tether_base; },
+            [](TetherOptions& o, std::string_view text) -> std::optional<std::string> {
+              o.tether_base = std::string(text);
+              return std::nullopt;
+            });
   table.add("tether-length", &TetherOptions::tether_length, "the tether's length L: its taut shape is never longer (0: no bound)");
   table.add("list-classes", &TetherOptions::list_classes, "list every class of tether the goal is reached in within L (fact tether.classes)");
   table.add("max-states", &TetherOptions::max_states, "(vertex, word) states each search may make");

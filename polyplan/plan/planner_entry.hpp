@@ -16,6 +16,7 @@ namespace polyplan {
 
 template <class Space>
 struct PlannerEntry {
+  using SpaceType = Space;
   using Factory = std::function<std::unique_ptr<Planner<Space>>(const typename Space::Problem&, const OptionValues&)>;
 
   std::string name;         // on the command line: --planner NAME

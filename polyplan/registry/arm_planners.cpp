@@ -14,13 +14,15 @@ namespace polyplan {
 template <>
 const PlannerRegistry<PlanarArm>& planners<PlanarArm>() {
   static const PlannerRegistry<PlanarArm> registry{
+      "grid",
+      {
       arm_grid_planner_entry(),
       prm_planner_entry<PlanarArm>(arm_sampling_space),
       lazy_prm_planner_entry<PlanarArm>(arm_sampling_space),
       rrt_planner_entry<PlanarArm>(arm_sampling_space),
       rrt_star_planner_entry<PlanarArm>(arm_sampling_space),
       rrt_connect_planner_entry<PlanarArm>(arm_sampling_space),
-  };
+  }};
   return registry;
 }
 

@@ -15,6 +15,8 @@ namespace polyplan {
 template <>
 const PlannerRegistry<SteeredCar>& planners<SteeredCar>() {
   static const PlannerRegistry<SteeredCar> registry{
+      "hybrid-astar",
+      {
       hybrid_astar_planner_entry(),
       car_rrt_planner_entry(),
       prm_planner_entry<SteeredCar>(car_sampling_space),
@@ -22,7 +24,7 @@ const PlannerRegistry<SteeredCar>& planners<SteeredCar>() {
       rrt_planner_entry<SteeredCar>(car_sampling_space),
       rrt_star_planner_entry<SteeredCar>(car_sampling_space),
       rrt_connect_planner_entry<SteeredCar>(car_sampling_space),
-  };
+  }};
   return registry;
 }
 

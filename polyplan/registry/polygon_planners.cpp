@@ -26,6 +26,8 @@ namespace polyplan {
 template <>
 const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
   static const PlannerRegistry<TranslatingRobot> registry{
+      "visibility",
+      {
       visibility_planner_entry(VisibilityKind::reduced),
       visibility_planner_entry(VisibilityKind::full),
       raster_planner_entry(),
@@ -47,7 +49,7 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
       rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),
       rrt_star_planner_entry<TranslatingRobot>(polygon_sampling_space),
       rrt_connect_planner_entry<TranslatingRobot>(polygon_sampling_space),
-  };
+  }};
   return registry;
 }
 
@@ -55,8 +57,10 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
 template <>
 const PlannerRegistry<RotatingRobot>& planners<RotatingRobot>() {
   static const PlannerRegistry<RotatingRobot> registry{
+      "rotation",
+      {
       rotation_planner_entry(),
-  };
+  }};
   return registry;
 }
 

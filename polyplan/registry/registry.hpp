@@ -18,13 +18,18 @@ namespace polyplan {
 template <class Space>
 class PlannerRegistry {
  public:
-  // Throws std::logic_error for two entries of one name.
-  PlannerRegistry(std::initializer_list<PlannerEntry<Space>> entries) {
+  // `default_planner` is the one a problem of this space gets when none is named. Throws
+  // std::logic_error for two entries of one name, or a default nobody registered.
+  PlannerRegistry(std::string default_planner, std::initializer_list<PlannerEntry<Space>> entries)
+      : default_(std::move(default_planner)) {
     for (const auto& e : entries) {
       if (find(e.name)) throw std::logic_error("two planners are registered as " + e.name);
       entries_.push_back(e);
     }
+    if (!find(default_)) throw std::logic_error("the default planner " + default_ + " is not registered");
   }
+
+  const std::string& default_planner() const { return default_; }
 
   const std::vector<PlannerEntry<Space>>& entries() const { return entries_; }
 
@@ -43,6 +48,7 @@ class PlannerRegistry {
   }
 
  private:
+  std::string default_;
   std::vector<PlannerEntry<Space>> entries_;
 };
 

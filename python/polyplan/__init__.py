@@ -119,12 +119,13 @@ def planners() -> List[PlannerInfo]:
 
 def planner(name: str, problem, **options) -> Planner:
     """The planner `name` built for `problem` (a World or an Arm), with its options as keyword
-    arguments: polyplan.planner("visibility", world, search="astar"). In a World whose robot is
-    a car, a name registered for the car too (rrt, rrtconnect, ...) plans the car.
+    arguments: polyplan.planner("visibility", world, search="astar"), polyplan.planner("rrt",
+    world, goal_bias=0.2) (an option's name with underscores for its hyphens). In a World whose
+    robot is a car, a name registered for the car too (rrt, rrtconnect, ...) plans the car.
 
     polyplan.planners() lists the names and each one's options. The planner builds its roadmap,
     diagram or grid here, once; each Planner.plan(start=..., goal=...) answers one query with it.
-    An option's value may be a number, a string, True or False. Raises InputError for an unknown
+    An option's value may be a number, a string, True or False, or a point (x, y). Raises InputError for an unknown
     planner, one that plans for the other kind of problem, an unknown option or a value the
     option refuses (the message the program prints)."""
     return _polyplan._planner(name, problem, options)
@@ -133,8 +134,9 @@ def planner(name: str, problem, **options) -> Planner:
 def plan(problem, planner: Optional[str] = None, *, record: bool = True, **options) -> List[Plan]:
     """Every query of `problem` (a World or an Arm) answered by one planner: a list of Plan.
 
-    planner: a name from polyplan.planners(); None: "visibility" for a World, "hybrid-astar" for a
-    World whose robot is a car, "grid" for an Arm (the program's defaults). options: the planner's options as keyword arguments, e.g.
+    planner: a name from polyplan.planners(); None: the problem's default, as the program picks it
+    ("visibility" for a World, "hybrid-astar" for a car's, "grid" for an Arm). options: the
+    planner's options as keyword arguments, spelt with underscores or hyphens, e.g.
     polyplan.plan(w, planner="rrtconnect", seed=3) or polyplan.plan(a, planner="grid",
     resolution=1). record: keep each plan's roadmap, tree, expanded configurations and cells for
     polyplan.plot and polyplan.svg.
@@ -142,9 +144,6 @@ def plan(problem, planner: Optional[str] = None, *, record: bool = True, **optio
     The queries are checked first as the program checks them: a start or goal that is not free
     raises InputError. To plan one query of your own, build the planner once with
     polyplan.planner(...) and call its plan(start=..., goal=...)."""
-    if planner is None:
-        car_default = next(p.name for p in planners() if "car" in p.space)  # the registry lists a space's default first
-        planner = "grid" if isinstance(problem, Arm) else car_default if getattr(problem, "car", None) else "visibility"
     return _polyplan._planner(planner, problem, options).plan_all(record)
 
 

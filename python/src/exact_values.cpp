@@ -93,14 +93,23 @@ std::vector<ExactPoint> exact_points(py::handle value, const std::string& what) 
   return points;
 }
 
-std::vector<double> finite_numbers(py::handle value, const std::string& what) {
+namespace {
+
+// Each element of a sequence or 1-d array of numbers read by `read`.
+template <class Read>
+auto numbers_of(py::handle value, const std::string& what, Read read) {
   if (py::isinstance<py::array>(value) && py::reinterpret_borrow<py::array>(value).ndim() != 1)
     throw InputError(what + ": expected a 1-d array of numbers, got shape " + std::string(py::str(value.attr("shape"))));
   const py::sequence numbers = sequence_of(value, what, "a sequence of numbers");
-  std::vector<double> out;
-  for (std::size_t i = 0; i < py::len(numbers); ++i) out.push_back(finite_number(numbers[i], what + "[" + std::to_string(i) + "]"));
+  std::vector<decltype(read(numbers[0], what))> out;
+  for (std::size_t i = 0; i < py::len(numbers); ++i) out.push_back(read(numbers[i], what + "[" + std::to_string(i) + "]"));
   return out;
 }
+
+}  // namespace
+
+std::vector<double> finite_numbers(py::handle value, const std::string& what) { return numbers_of(value, what, finite_number); }
+std::vector<Rational> exact_numbers(py::handle value, const std::string& what) { return numbers_of(value, what, exact_number); }
 
 std::string text_of(py::handle value, const std::string& what) {
   if (!py::isinstance<py::str>(value)) throw InputError(what + ": expected a str, got " + type_name(value));

@@ -27,6 +27,8 @@ ExactPoint exact_point(py::handle value, const std::string& what);
 std::vector<ExactPoint> exact_points(py::handle value, const std::string& what);
 // A sequence or 1-d array of finite numbers (joint angles).
 std::vector<double> finite_numbers(py::handle value, const std::string& what);
+// A sequence or 1-d array of exact numbers (a query's start or goal, whatever the problem).
+std::vector<Rational> exact_numbers(py::handle value, const std::string& what);
 
 // A str; a path may also be an os.PathLike (pathlib.Path). InputError for anything else.
 std::string text_of(py::handle value, const std::string& what);

@@ -78,6 +78,12 @@ py::object free_area(const CSpaceView& view) {
 
 }  // namespace
 
+std::shared_ptr<ProblemHandle> problem_of(py::handle value, const std::string& what) {
+  if (py::isinstance<WorldHandle>(value)) return value.cast<WorldPtr>();
+  if (py::isinstance<ArmHandle>(value)) return value.cast<ArmPtr>();
+  throw InputError(what + ": expected a polyplan.World or a polyplan.Arm, got " + type_name(value));
+}
+
 std::shared_ptr<WorldHandle> world_of(py::handle value, const std::string& what) {
   if (!py::isinstance<WorldHandle>(value)) throw InputError(what + ": expected a polyplan.World, got " + type_name(value));
   return value.cast<WorldPtr>();

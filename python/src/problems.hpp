@@ -7,6 +7,7 @@
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/world.hpp>
+#include <polyplan/problem/problem.hpp>
 
 #include <pybind11/pybind11.h>
 
@@ -16,32 +17,32 @@
 
 namespace polyplan::python {
 
-class WorldHandle {
+// What Python's World and Arm share: the problem as the front door takes it (problem/problem.hpp)
+// and its lock.
+class ProblemHandle {
  public:
-  explicit WorldHandle(World world) : world_(std::move(world)) {}
-  const World& world() const { return world_; }
-  // Built on first use; the caller holds lock().
-  const CSpace& cspace() {
-    if (!cspace_) cspace_ = std::make_unique<CSpace>(world_);
-    return *cspace_;
-  }
+  explicit ProblemHandle(Problem problem) : problem_(std::move(problem)) {}
+  virtual ~ProblemHandle() = default;
+  const Problem& door() const { return problem_; }
   std::mutex& lock() { return mutex_; }
 
  private:
-  World world_;
-  std::unique_ptr<CSpace> cspace_;
+  Problem problem_;
   std::mutex mutex_;
 };
 
-class ArmHandle {
+class WorldHandle final : public ProblemHandle {
  public:
-  explicit ArmHandle(ArmProblem problem) : problem_(std::move(problem)) {}
-  const ArmProblem& problem() const { return problem_; }
-  std::mutex& lock() { return mutex_; }
+  explicit WorldHandle(World world) : ProblemHandle(Problem(std::move(world))) {}
+  const World& world() const { return *door().world(); }
+  // Built on first use; the caller holds lock().
+  const CSpace& cspace() { return door().cspace(); }
+};
 
- private:
-  ArmProblem problem_;
-  std::mutex mutex_;
+class ArmHandle final : public ProblemHandle {
+ public:
+  explicit ArmHandle(ArmProblem problem) : ProblemHandle(Problem(std::move(problem))) {}
+  const ArmProblem& problem() const { return *door().arm(); }
 };
 
 // `work()` with the GIL released and `lock` held.
@@ -54,6 +55,8 @@ decltype(auto) locked(std::mutex& lock, Work&& work) {
 
 // The World a Python argument is; InputError naming `what` when it is something else.
 std::shared_ptr<WorldHandle> world_of(pybind11::handle value, const std::string& what);
+// The World or Arm a Python argument is, as the front door takes it; InputError naming `what`.
+std::shared_ptr<ProblemHandle> problem_of(pybind11::handle value, const std::string& what);
 
 void bind_problems(pybind11::module_& m);
 

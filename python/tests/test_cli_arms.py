@@ -12,5 +12,5 @@ from conftest import data, shipped
 def test_arm_plans_match_the_program(arm, planner):
     path = data("arms", arm)
     arguments, options = clockless(planner)
-    compare(["arm", path, "--planner", planner, *arguments],
+    compare(["plan", path, "--planner", planner, *arguments],
             lambda: polyplan.plan(polyplan.read_arm(path), planner=planner, **options))

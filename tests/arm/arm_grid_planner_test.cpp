@@ -126,14 +126,14 @@ TEST(ArmGridPlanner, AQueryStopsAtItsMemoryBudget) {
   const auto stopped = plan_once(p, hard, small);
   EXPECT_FALSE(stopped.found);
   EXPECT_EQ(stopped.why_not.rfind("stopped after evaluating ", 0), 0u) << stopped.why_not;
-  EXPECT_NE(stopped.why_not.find("the memory budget of one query is 0.05 MB (option memory_mb: raise it with --memory_mb N)"),
+  EXPECT_NE(stopped.why_not.find("the memory budget of one query is 0.05 MB (option memory-mb: raise it with --memory-mb N)"),
             std::string::npos)
       << stopped.why_not;
   EXPECT_LE(stopped.facts.number("memory_mb"), 0.05);
   small.lazy = false;  // eager evaluation meets the budget before searching
   const auto eager = plan_once(p, hard, small);
   EXPECT_FALSE(eager.found);
-  EXPECT_NE(eager.why_not.find("option memory_mb"), std::string::npos) << eager.why_not;
+  EXPECT_NE(eager.why_not.find("option memory-mb"), std::string::npos) << eager.why_not;
   const auto within = plan_once(p, hard);
   EXPECT_TRUE(within.found);
   EXPECT_GT(within.facts.number("memory_mb"), 0.05);

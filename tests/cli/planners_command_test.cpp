@@ -22,7 +22,7 @@ TEST(Planners, ListsEveryPlannerOfEverySpaceWithOptionsAndDefaults) {
   std::vector<std::string> car_names;
   for (const auto& p : spaces[2]["planners"]) car_names.push_back(p["name"]);
   EXPECT_EQ(car_names, (std::vector<std::string>{"hybrid-astar", "car-rrt", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));
-  EXPECT_EQ(spaces[3]["command"], "polyplan arm ARM.json --method NAME");
+  EXPECT_EQ(spaces[3]["command"], "polyplan plan ARM.json --planner NAME");
   std::vector<std::string> names;
   for (const auto& p : spaces[0]["planners"]) names.push_back(p["name"]);
   EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid", "dstar-lite",

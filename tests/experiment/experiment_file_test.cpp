@@ -92,7 +92,11 @@ TEST(ExperimentFile, ProblemsAreCheckedAgainstTheirFiles) {
             0u);
   EXPECT_EQ(error_of(with(R"([{"name": "o", "file": "../worlds/office.json", "query": 9}])", kRrt)).rfind(kName + ": problems[0].query: no query 9", 0),
             0u);
-  EXPECT_EQ(error_of(with(R"([{"name": "o", "file": "missing.json"}])", kRrt)).rfind(kName + ": problems[0].file: cannot read", 0), 0u);
+  const std::string missing = error_of(with(R"([{"name": "o", "file": "missing.json"}])", kRrt));
+  EXPECT_EQ(missing.rfind(kName + ": problems[0].file: ", 0), 0u) << missing;
+  EXPECT_NE(missing.find("missing.json: cannot open file"), std::string::npos) << missing;
+  EXPECT_EQ(error_of(with(R"([{"name": "o", "file": "../worlds/office.json", "kind": "arm"}])", kRrt)),
+            kName + ": problems[0].kind: \"arm\", but the file is a world file");
   EXPECT_EQ(error_of(with(R"([{"name": "o", "file": "../worlds/office.json", "kind": "car"}])", kRrt)),
             kName + ": problems[0].kind: expected \"world\" or \"arm\"");
 }

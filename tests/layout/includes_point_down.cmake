@@ -1,38 +1,41 @@
 # The house rule of docs/architecture.md, checked on every source of polyplan/: a folder includes
-# only itself and the folders listed for it here (all below it), so no include runs upwards and
-# no two folders include each other. A family folder never includes registry/, draw/ or another
-# family, except arm/ → sampling/ and car/ → sampling/ (their sampling spaces) and car/ →
-# roadmaps/ (the visibility graph under hybrid A*'s 2D heuristic), incremental/ → grids/ (the
-# raster its world planners drive) and homotopy/ → roadmaps/ (the visibility graph it lifts), and holds planning only: no JSON (nlohmann) and no
-# command line (CLI11). Run with cmake -DSOURCE_DIR=... -P.
+# only itself and the folders its line of the page's layout block names (the one picture of the
+# arrows, read here, so that the picture cannot drift from the code). A family folder holds
+# planning only: no JSON (nlohmann) and no command line (CLI11). Every folder must have its line,
+# and every folder the block names must exist. Run with cmake -DSOURCE_DIR=... -P.
 cmake_minimum_required(VERSION 3.20)  # IN_LIST
-set(below_geometry "")
-set(below_io geometry)
-set(below_search geometry)
-set(below_plan geometry search)
-set(below_free_space geometry io search)
-set(below_roadmaps plan free_space geometry io search)
-set(below_grids plan geometry io search)
-set(below_incremental plan grids geometry io search)
-set(below_reactive plan geometry search)
-set(below_homotopy plan roadmaps free_space geometry search)
-set(below_rotation plan free_space geometry search)
-set(below_sampling plan free_space geometry search)
-set(below_arm plan sampling geometry search)
-set(below_car plan roadmaps sampling geometry search)
-set(below_registry plan roadmaps grids incremental reactive homotopy rotation sampling arm car geometry search)
-set(below_experiment plan registry io geometry search)
-set(below_draw plan arm car incremental reactive io sampling geometry search experiment)
-
+file(READ ${SOURCE_DIR}/docs/architecture.md page)
+string(FIND "${page}" "<!-- layout: begin -->" begin)
+string(FIND "${page}" "<!-- layout: end -->" end)
+if(begin EQUAL -1 OR end EQUAL -1)
+  message(FATAL_ERROR "docs/architecture.md has no layout block (<!-- layout: begin --> ... <!-- layout: end -->)")
+endif()
+math(EXPR length "${end} - ${begin}")
+string(SUBSTRING "${page}" ${begin} ${length} block)
+string(REPLACE "\n" ";" block_lines "${block}")
+set(listed "")
+foreach(line ${block_lines})
+  if(line MATCHES "^([a-z_]+) +→ *(.*)$")
+    set(folder ${CMAKE_MATCH_1})
+    string(REGEX REPLACE " +" ";" below "${CMAKE_MATCH_2}")
+    set(below_${folder} ${below})
+    list(APPEND listed ${folder})
+  endif()
+endforeach()
 file(GLOB folders RELATIVE ${SOURCE_DIR}/polyplan ${SOURCE_DIR}/polyplan/*)
 set(families free_space roadmaps grids incremental reactive homotopy rotation sampling arm car)
 set(wrong "")
+foreach(folder ${listed})
+  if(NOT IS_DIRECTORY ${SOURCE_DIR}/polyplan/${folder})
+    string(APPEND wrong "\n  docs/architecture.md's layout block names polyplan/${folder}/, which does not exist")
+  endif()
+endforeach()
 foreach(folder ${folders})
   if(NOT IS_DIRECTORY ${SOURCE_DIR}/polyplan/${folder})
     continue()
   endif()
-  if(NOT DEFINED below_${folder})
-    string(APPEND wrong "\n  polyplan/${folder}/ is a folder this check does not know: add its line above")
+  if(NOT folder IN_LIST listed)
+    string(APPEND wrong "\n  polyplan/${folder}/ has no line in docs/architecture.md's layout block")
     continue()
   endif()
   file(GLOB_RECURSE sources ${SOURCE_DIR}/polyplan/${folder}/*.hpp ${SOURCE_DIR}/polyplan/${folder}/*.cpp)

@@ -226,9 +226,13 @@ TEST(Registry, OptionsAreSetByNameAndBadOnesNameThePlannerAndTheOption) {
 }
 
 TEST(Registry, TwoEntriesOfOneNameAreRefused) {
-  EXPECT_THROW((PlannerRegistry<TranslatingRobot>{visibility_planner_entry(VisibilityKind::reduced),
-                                                  visibility_planner_entry(VisibilityKind::reduced)}),
+  EXPECT_THROW((PlannerRegistry<TranslatingRobot>{"visibility", {visibility_planner_entry(VisibilityKind::reduced),
+                                                                 visibility_planner_entry(VisibilityKind::reduced)}}),
                std::logic_error);
+}
+
+TEST(Registry, ADefaultNobodyRegisteredIsRefused) {
+  EXPECT_THROW((PlannerRegistry<TranslatingRobot>{"raster", {visibility_planner_entry(VisibilityKind::reduced)}}), std::logic_error);
 }
 
 }  // namespace

@@ -1,5 +1,5 @@
-// polyplan arm, run as a user runs it: the seed 000 cases on the torus and the interval, the JSON
-// the issue fixes, the pictures, and one-line errors.
+// polyplan plan on arm files, run as a user runs it: the course's two-link cases on the torus and
+// the interval, the JSON, the pictures, one-line errors, and `polyplan arm`, the command's old name.
 #include "cli_runner.hpp"
 
 #include <nlohmann/json.hpp>
@@ -18,7 +18,7 @@ using namespace polyplan::test;
 namespace fs = std::filesystem;
 
 TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
-  const CliRun torus = run_polyplan("arm " + arm_file("two_link_points.json") + " --method grid --resolution 5 --query hard --json -");
+  const CliRun torus = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner grid --resolution 5 --query hard --json -");
   ASSERT_EQ(torus.exit_code, 0) << torus.err;
   const auto j = nlohmann::json::parse(torus.out);
   for (const char* key : {"found", "path", "length", "cells_evaluated", "expanded", "seconds"})
@@ -30,7 +30,7 @@ TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
   EXPECT_EQ(j["grid"]["torus"], true);
   EXPECT_EQ(j["grid"]["evaluation"], "lazy");
 
-  const CliRun interval = run_polyplan("arm " + arm_file("two_link_points.json") + " --resolution 5 --no-torus --query hard --json -");
+  const CliRun interval = run_polyplan("plan " + arm_file("two_link_points.json") + " --resolution 5 --no-torus --query hard --json -");
   ASSERT_EQ(interval.exit_code, 0) << "no path is an answer: " << interval.err;
   const auto k = nlohmann::json::parse(interval.out);
   EXPECT_FALSE(k["found"].get<bool>());
@@ -41,7 +41,7 @@ TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
 // The sampling planners' flags, as the issue writes them: one seed, one path, and the facts.
 TEST(ArmCommand, SamplingPlannersTakeTheirFlagsAndOneSeedGivesOnePath) {
   const std::string command = "arm " + arm_file("four_link_forest.json") +
-                              " --method rrt --seed 7 --time 20 --iterations 50000 --goal-bias 0.1 --step 1 --extend e2 --json -";
+                              " --planner rrt --seed 7 --time 20 --iterations 50000 --goal-bias 0.1 --step 1 --extend e2 --json -";
   const CliRun once = run_polyplan(command), again = run_polyplan(command);
   ASSERT_EQ(once.exit_code, 0) << once.err;
   const auto a = nlohmann::json::parse(once.out), b = nlohmann::json::parse(again.out);
@@ -54,21 +54,21 @@ TEST(ArmCommand, SamplingPlannersTakeTheirFlagsAndOneSeedGivesOnePath) {
   EXPECT_LE(a["length"].get<double>(), a["raw_length"].get<double>());
   EXPECT_EQ(a["path"].front(), nlohmann::json::parse("[0.1, 0.2, 0.3, 0.4]"));
 
-  const CliRun prm = run_polyplan("arm " + arm_file("two_link_points.json") + " --method prm --k 15 --bidirectional --query hard --json -");
+  const CliRun prm = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner prm --k 15 --bidirectional --query hard --json -");
   ASSERT_EQ(prm.exit_code, 0) << prm.err;
   const auto p = nlohmann::json::parse(prm.out);
   EXPECT_TRUE(p["found"].get<bool>());
   EXPECT_TRUE(p["roadmap"].contains("vertices"));
   EXPECT_EQ(p["search"]["algorithm"], "bidirectional dijkstra");
 
-  const CliRun bias = run_polyplan("arm " + arm_file("two_link_points.json") + " --method rrt --goal-bias 2");
+  const CliRun bias = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner rrt --goal-bias 2");
   EXPECT_EQ(bias.exit_code, 2);
   EXPECT_NE(bias.err.find("planner rrt: goal-bias must be a probability in [0, 1]"), std::string::npos) << bias.err;
 }
 
 TEST(ArmCommand, EveryQueryOfAFileGivesAnArrayAndEagerMatchesLazy) {
-  const CliRun lazy = run_polyplan("arm " + arm_file("two_link_points.json") + " --json -");
-  const CliRun eager = run_polyplan("arm " + arm_file("two_link_points.json") + " --eager --json -");
+  const CliRun lazy = run_polyplan("plan " + arm_file("two_link_points.json") + " --json -");
+  const CliRun eager = run_polyplan("plan " + arm_file("two_link_points.json") + " --eager --json -");
   ASSERT_EQ(lazy.exit_code, 0) << lazy.err;
   ASSERT_EQ(eager.exit_code, 0) << eager.err;
   const auto a = nlohmann::json::parse(lazy.out), b = nlohmann::json::parse(eager.out);
@@ -84,7 +84,7 @@ TEST(ArmCommand, EveryQueryOfAFileGivesAnArrayAndEagerMatchesLazy) {
 TEST(ArmCommand, WritesTheAnimationAndTheStrobe) {
   const fs::path dir = fs::temp_directory_path() / ("polyplan_arm_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const CliRun run = run_polyplan("arm " + arm_file("two_link_points.json") + " --query medium --svg '" +
+  const CliRun run = run_polyplan("plan " + arm_file("two_link_points.json") + " --query medium --svg '" +
                               (dir / "medium.svg").string() + "' --strobe '" + (dir / "strobe.svg").string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string animation = slurp(dir / "medium.svg"), strobe = slurp(dir / "strobe.svg");
@@ -95,24 +95,24 @@ TEST(ArmCommand, WritesTheAnimationAndTheStrobe) {
 }
 
 TEST(ArmCommand, BadInputIsOneLineNamingTheProblem) {
-  const CliRun resolution = run_polyplan("arm " + arm_file("two_link_points.json") + " --resolution 7");
+  const CliRun resolution = run_polyplan("plan " + arm_file("two_link_points.json") + " --resolution 7");
   EXPECT_EQ(resolution.exit_code, 2);
   EXPECT_EQ(lines(resolution.err), 1u) << resolution.err;
   EXPECT_NE(resolution.err.find("must divide 360"), std::string::npos) << resolution.err;
-  const CliRun query = run_polyplan("arm " + arm_file("two_link_points.json") + " --query nonsense");
+  const CliRun query = run_polyplan("plan " + arm_file("two_link_points.json") + " --query nonsense");
   EXPECT_EQ(query.exit_code, 2);
   EXPECT_NE(query.err.find("no query named nonsense"), std::string::npos) << query.err;
-  const CliRun method = run_polyplan("arm " + arm_file("two_link_points.json") + " --method teleport");
+  const CliRun method = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner teleport");
   EXPECT_EQ(method.exit_code, 2);
   EXPECT_EQ(lines(method.err), 1u) << method.err;
-  const CliRun missing = run_polyplan("arm /nonexistent/arm.json");
+  const CliRun missing = run_polyplan("plan /nonexistent/arm.json");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_NE(missing.err.find("/nonexistent/arm.json"), std::string::npos) << missing.err;
   // Thirteen joints exited 3 ("internal error") from the grid's axis limit.
   const std::filesystem::path thirteen = std::filesystem::temp_directory_path() / "polyplan_arm13.json";
   std::ofstream(thirteen) << R"({"links": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1], "start": [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0],
                                  "goal": [1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]})";
-  const CliRun joints = run_polyplan("arm '" + thirteen.string() + "'");
+  const CliRun joints = run_polyplan("plan '" + thirteen.string() + "'");
   EXPECT_EQ(joints.exit_code, 2) << joints.err;
   EXPECT_EQ(lines(joints.err), 1u) << joints.err;
   EXPECT_NE(joints.err.find("an arm of 13 joints needs a grid of as many axes; it has at most 12"), std::string::npos) << joints.err;
@@ -124,8 +124,8 @@ TEST(ArmCommand, BadInputIsOneLineNamingTheProblem) {
 namespace {
 
 TEST(ArmCommand, OptionsAndTheOldFlagsSetTheSamePlanner) {
-  const CliRun flags = run_polyplan("arm " + arm_file("two_link_points.json") + " --method grid --resolution 10 --no-torus --eager --json -");
-  const CliRun options = run_polyplan("arm " + arm_file("two_link_points.json") + " --planner grid --option resolution=10 "
+  const CliRun flags = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner grid --resolution 10 --no-torus --eager --json -");
+  const CliRun options = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner grid --option resolution=10 "
                                      "--option torus=false --option evaluation=eager --json -");
   ASSERT_EQ(flags.exit_code, 0) << flags.err;
   ASSERT_EQ(options.exit_code, 0) << options.err;
@@ -141,17 +141,17 @@ TEST(ArmCommand, OptionsAndTheOldFlagsSetTheSamePlanner) {
 }
 
 TEST(ArmCommand, PathsAreCertifiedAndCheckResolutionIsRefused) {
-  const CliRun refused = run_polyplan("arm " + arm_file("two_link_points.json") + " --query easy --check-resolution 0.5");
+  const CliRun refused = run_polyplan("plan " + arm_file("two_link_points.json") + " --query easy --check-resolution 0.5");
   EXPECT_EQ(refused.exit_code, 2);
   EXPECT_NE(refused.err.find("--check-resolution is gone: every motion is certified"), std::string::npos) << refused.err;
   EXPECT_TRUE(refused.out.empty()) << refused.out;
-  const CliRun run = run_polyplan("arm " + arm_file("two_link_points.json") + " --query easy --json -");
+  const CliRun run = run_polyplan("plan " + arm_file("two_link_points.json") + " --query easy --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto j = nlohmann::json::parse(run.out);
   EXPECT_EQ(j["certified"], true);
   EXPECT_NE(j["certified_by"].get<std::string>().find("conservative advancement"), std::string::npos);
   EXPECT_TRUE(j.contains("moves_uncertified"));
-  const CliRun both = run_polyplan("arm " + arm_file("two_link_points.json") + " --evaluation eager --eager");
+  const CliRun both = run_polyplan("plan " + arm_file("two_link_points.json") + " --evaluation eager --eager");
   EXPECT_EQ(both.exit_code, 2);
   EXPECT_NE(both.err.find("given twice"), std::string::npos) << both.err;
 }
@@ -164,7 +164,7 @@ namespace {
 // summary line says it, an unreachable point is an answer (no_path, why), the picture marks the
 // point; a query with both goal and goal_point is bad input.
 TEST(ArmCommand, AGoalPointIsPlannedToItsIkSolutions) {
-  const CliRun run = run_polyplan("arm " + arm_file("two_link_reach.json") + " --json -");
+  const CliRun run = run_polyplan("plan " + arm_file("two_link_reach.json") + " --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto all = nlohmann::json::parse(run.out);
   ASSERT_EQ(all.size(), 5u);
@@ -186,7 +186,7 @@ TEST(ArmCommand, AGoalPointIsPlannedToItsIkSolutions) {
   EXPECT_EQ(beyond["why_not"], "the point (0, 5.000000000000001) is out of reach: the arm reaches distances 1 to 5 from its base");
   EXPECT_FALSE(beyond.contains("goal"));
 
-  const CliRun text = run_polyplan("arm " + arm_file("two_link_reach.json") + " --query two_elbows --method rrtconnect");
+  const CliRun text = run_polyplan("plan " + arm_file("two_link_reach.json") + " --query two_elbows --planner rrtconnect");
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("two_elbows: length "), std::string::npos) << text.out;
   EXPECT_TRUE(std::regex_search(text.out, std::regex(R"(, ends at IK solution ([12]) of 2 \(goal\.reached [01]\), the hand \S+ from the goal point\n)")))
@@ -196,7 +196,7 @@ TEST(ArmCommand, AGoalPointIsPlannedToItsIkSolutions) {
 TEST(ArmCommand, APictureMarksTheGoalPoint) {
   const fs::path dir = fs::temp_directory_path() / ("polyplan_arm_goal_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const CliRun run = run_polyplan("arm " + arm_file("four_link_reach.json") + " --method rrtconnect --svg '" + (dir / "reach.svg").string() +
+  const CliRun run = run_polyplan("plan " + arm_file("four_link_reach.json") + " --planner rrtconnect --svg '" + (dir / "reach.svg").string() +
                                   "' --strobe '" + (dir / "strobe.svg").string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (const char* picture : {"reach-oriented.svg", "strobe-near_the_base.svg", "reach-out_of_reach.svg"}) {
@@ -212,12 +212,22 @@ TEST(ArmCommand, APictureMarksTheGoalPoint) {
 TEST(ArmCommand, BothGoalAndGoalPointIsBadInput) {
   const fs::path file = fs::temp_directory_path() / ("polyplan_arm_both_" + std::to_string(::getpid()) + ".json");
   std::ofstream(file) << R"({"links": [1, 1], "queries": [{"name": "q", "start": [0, 0], "goal": [1, 1], "goal_point": [1, 1]}]})";
-  const CliRun run = run_polyplan("arm '" + file.string() + "'");
+  const CliRun run = run_polyplan("plan '" + file.string() + "'");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(lines(run.err), 1u) << run.err;
   EXPECT_NE(run.err.find(file.string() + ": queries[0]: both \"goal\" and \"goal_point\" given"), std::string::npos) << run.err;
   EXPECT_TRUE(run.out.empty()) << run.out;
   fs::remove(file);
+}
+
+TEST(ArmCommand, TheOldNameRunsPlanAndSaysSo) {
+  const CliRun old = run_polyplan("arm " + arm_file("two_link_points.json") + " --method grid --query easy");
+  const CliRun now = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner grid --query easy");
+  ASSERT_EQ(old.exit_code, 0) << old.err;
+  ASSERT_EQ(now.exit_code, 0) << now.err;
+  EXPECT_EQ(old.out, now.out);
+  EXPECT_NE(old.err.find("note: polyplan arm is polyplan plan now"), std::string::npos) << old.err;
+  EXPECT_EQ(now.err, "");
 }
 
 }  // namespace

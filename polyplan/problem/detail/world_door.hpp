@@ -1,0 +1,40 @@
+#pragma once
+// What the doors of polygon worlds share (problem/translating_space.cpp, rotating_space.cpp,
+// car_space.cpp): the world's own queries, its checks, a caller's query read as (x, y) or
+// (x, y, θ) with θ in degrees. Not installed.
+#include <polyplan/geometry/world.hpp>
+#include <polyplan/problem/detail/space_door.hpp>
+#include <polyplan/registry/world_queries.hpp>
+
+#include <variant>
+
+namespace polyplan::detail {
+
+// A caller's query with each orientation it gave (none for (x, y)), checked as the world reader
+// checks a query's.
+Query world_query(const QuerySpec& spec);
+
+template <class Space>
+class WorldDoor : public SpaceDoor<Space> {
+ public:
+  std::string_view kind() const override { return "World"; }
+  std::string_view file() const override { return "WORLD.json"; }
+  Query own_query(const Problem& problem, std::size_t index) const override { return problem.world()->queries.at(index); }
+  void require_fits(const Problem& problem, std::string_view planner) const override {
+    require_planner_for_robot(*problem.world(), planner);
+  }
+  void require_plannable(const Problem& problem, std::string_view planner) const override {
+    require_plannable_queries(*problem.world(), nullptr, planner);
+  }
+  std::size_t columns(const Problem&) const override { return 3; }  // x, y, θ
+};
+
+// The reports' typed answers, all of one space's configuration C.
+template <class Configuration>
+std::vector<PlanReport<Configuration>> typed_reports(const std::vector<const Report*>& reports) {
+  std::vector<PlanReport<Configuration>> typed;
+  for (const Report* r : reports) typed.push_back(std::get<PlanReport<Configuration>>(r->typed()));
+  return typed;
+}
+
+}  // namespace polyplan::detail

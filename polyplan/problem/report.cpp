@@ -1,0 +1,141 @@
+#include <polyplan/problem/report.hpp>
+
+#include <polyplan/plan/plan_json.hpp>
+#include <polyplan/problem/detail/space_door.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+
+namespace polyplan {
+namespace {
+
+// The coordinates of a configuration as the JSON's "path" prints them.
+std::vector<double> coordinates(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
+std::vector<double> coordinates(const Pose& p) { return {to_double(p.position.x), to_double(p.position.y), p.degrees}; }
+std::vector<double> coordinates(const JointAngles& q) { return q; }
+std::vector<double> coordinates(const CarState& s) { return {s.pose.x, s.pose.y, heading_degrees(s.pose)}; }
+
+// Exact coordinates, for the configurations that are exact (none for joint angles and a car's poses).
+std::vector<Rational> exact_coordinates(const ExactPoint& p) { return {p.x, p.y}; }
+std::vector<Rational> exact_coordinates(const Pose& p) { return {p.position.x, p.position.y, p.rotation.sin, p.rotation.cos}; }
+
+template <class Configuration>
+Rows rows_of(const std::vector<Configuration>& configurations) {
+  Rows rows;
+  for (const Configuration& c : configurations) rows.push_back(coordinates(c));
+  return rows;
+}
+
+// ", astar expanded 9 of 26 generated, roadmap 58 vertices 108 edges": the shared facts a
+// report has (plan/plan_report.hpp).
+std::string facts_summary(const Facts& facts) {
+  std::string line;
+  if (facts.contains("search.algorithm") && facts.contains("search.expanded") && facts.contains("search.generated"))
+    line += ", " + facts.text("search.algorithm") + " expanded " + std::to_string(facts.count("search.expanded")) + " of " +
+            std::to_string(facts.count("search.generated")) + " generated";
+  if (facts.contains("roadmap.vertices") && facts.contains("roadmap.edges"))
+    line += ", roadmap " + std::to_string(facts.count("roadmap.vertices")) + " vertices " +
+            std::to_string(facts.count("roadmap.edges")) + " edges";
+  if (facts.contains("gear_changes")) line += ", " + std::to_string(facts.count("gear_changes")) + " gear change(s)";
+  if (facts.contains("goal.error") && facts.contains("goal.reached") && facts.contains("goal.candidates")) {
+    char goal[160];
+    std::snprintf(goal, sizeof goal, ", ends at IK solution %lld of %lld (goal.reached %lld), the hand %.2g from the goal point",
+                  static_cast<long long>(facts.count("goal.reached") + 1), static_cast<long long>(facts.count("goal.candidates")),
+                  static_cast<long long>(facts.count("goal.reached")), facts.number("goal.error"));
+    line += goal;
+  }
+  if (facts.contains("note")) line += "; " + facts.text("note");
+  return line;
+}
+
+}  // namespace
+
+Report::Report(Typed typed, std::string_view space, std::size_t columns, std::string query, std::string planner)
+    : typed_(std::move(typed)), space_(space), columns_(columns), query_(std::move(query)), planner_(std::move(planner)) {}
+
+bool Report::found() const {
+  return std::visit([](const auto& r) { return r.found; }, typed_);
+}
+PlanStatus Report::status() const {
+  return std::visit([](const auto& r) { return r.status; }, typed_);
+}
+const std::string& Report::why_not() const {
+  return std::visit([](const auto& r) -> const std::string& { return r.why_not; }, typed_);
+}
+double Report::length() const {
+  return std::visit([](const auto& r) { return r.found ? r.length : 0.0; }, typed_);
+}
+const Certificate& Report::certificate() const {
+  return std::visit([](const auto& r) -> const Certificate& { return r.certificate; }, typed_);
+}
+const Facts& Report::facts() const {
+  return std::visit([](const auto& r) -> const Facts& { return r.facts; }, typed_);
+}
+const std::vector<SolutionImprovement>& Report::improvements() const {
+  return std::visit([](const auto& r) -> const std::vector<SolutionImprovement>& { return r.improvements; }, typed_);
+}
+
+Rows Report::path() const {
+  return std::visit([](const auto& r) { return rows_of(r.path); }, typed_);
+}
+
+std::optional<std::vector<std::vector<Rational>>> Report::exact_path() const {
+  return std::visit([](const auto& r) -> std::optional<std::vector<std::vector<Rational>>> {
+    using Configuration = typename std::decay_t<decltype(r.path)>::value_type;
+    if constexpr (requires(const Configuration& c) { exact_coordinates(c); }) {
+      std::vector<std::vector<Rational>> rows;
+      for (const Configuration& c : r.path) rows.push_back(exact_coordinates(c));
+      return rows;
+    } else {
+      return std::nullopt;
+    }
+  }, typed_);
+}
+
+Recording Report::recording() const {
+  return std::visit([](const auto& r) {
+    Recording recorded;
+    if (r.graph) {
+      recorded.graph_kind = r.graph->kind;
+      recorded.graph_vertices = rows_of(r.graph->vertices);
+      recorded.graph_edges = r.graph->edges;
+    }
+    recorded.expanded = rows_of(r.expanded);
+    recorded.cells = r.cells;
+    if (r.decomposition)
+      for (const auto& cell : r.decomposition->cells) recorded.decomposition.push_back(rows_of(cell));
+    return recorded;
+  }, typed_);
+}
+
+std::vector<TracedExpansion> Report::trace() const {
+  return std::visit([](const auto& r) {
+    std::vector<TracedExpansion> expansions;
+    for (const auto& e : r.trace) expansions.push_back({e.step, e.vertex, coordinates(e.at), e.g, e.h, e.f, e.backpointer, e.open});
+    return expansions;
+  }, typed_);
+}
+
+nlohmann::json Report::to_json() const {
+  return std::visit([&](const auto& r) { return plan_json(r, query_); }, typed_);
+}
+
+std::string Report::summary() const {
+  if (!found()) return query_ + ": no path (" + why_not() + ")";
+  std::string_view steps = "segment", unit;
+  detail::any_space([&](auto tag) {
+    using Space = typename decltype(tag)::Space;
+    if (Space::description != space_) return false;
+    steps = detail::space_door<Space>().steps();
+    unit = detail::space_door<Space>().unit();
+    return true;
+  });
+  const std::size_t moves = std::visit([](const auto& r) { return r.path.size() - 1; }, typed_);
+  char text[128];
+  std::snprintf(text, sizeof text, "%s: length %.6f%.*s, %zu %.*s(s)", query_.c_str(), length(), static_cast<int>(unit.size()),
+                unit.data(), moves, static_cast<int>(steps.size()), steps.data());
+  return text + facts_summary(facts());
+}
+
+}  // namespace polyplan

@@ -1,0 +1,33 @@
+// The front door of a polygon robot that translates and turns.
+#include <polyplan/problem/detail/world_door.hpp>
+
+#include <polyplan/draw/pose_svg.hpp>
+#include <polyplan/registry/registry.hpp>
+
+namespace polyplan::detail {
+namespace {
+
+class RotatingDoor final : public WorldDoor<RotatingRobot> {
+ public:
+  bool plans(const Problem& problem) const override { return problem.world() && !problem.world()->robot.car; }
+  const World& built_from(const Problem& problem) const override { return *problem.world(); }
+  Query query(const Problem&, const QuerySpec& spec) const override { return world_query(spec); }
+
+  std::string default_planner(const Problem&) const override { return planners<RotatingRobot>().default_planner(); }
+
+  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports, const PictureOptions&) const override {
+    return {Picture{"", draw_plan(*problem.world(), typed_reports<Pose>(reports))}};
+  }
+
+  std::string_view steps() const override { return "motion"; }
+};
+
+}  // namespace
+
+template <>
+const SpaceDoor<RotatingRobot>& space_door<RotatingRobot>() {
+  static const RotatingDoor door;
+  return door;
+}
+
+}  // namespace polyplan::detail
