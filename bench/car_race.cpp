@@ -25,6 +25,7 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/sampling/sampling_planner.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/PlannerTerminationCondition.h>
@@ -256,7 +257,7 @@ Run run_polyplan(const CarProblem& p, const std::string& planner, std::uint64_t 
   Run run;
   if (!report.found) return run;
   run.solved = true;
-  run.seconds = report.facts.contains("first_solution_seconds") ? report.facts.number("first_solution_seconds") : since(t0);
+  run.seconds = report.facts.contains(SamplingFacts::first_solution_seconds) ? report.facts.at(SamplingFacts::first_solution_seconds) : since(t0);
   run.length = report.length;
   return run;
 }

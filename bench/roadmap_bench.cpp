@@ -9,6 +9,7 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include "bench_worlds.hpp"
 #include "heap_counter.hpp"
 
@@ -36,8 +37,8 @@ void Build(benchmark::State& state, const std::string& name, const CSpace* cspac
   if (!world.queries.empty()) {
     auto planner = entry->make(*cspace, {});
     const auto report = planner->plan(world.queries.front());
-    state.counters["nodes"] = static_cast<double>(report.facts.count("roadmap.vertices"));
-    state.counters["edges"] = static_cast<double>(report.facts.count("roadmap.edges"));
+    state.counters["nodes"] = static_cast<double>(report.facts.at(RoadmapFacts::vertices));
+    state.counters["edges"] = static_cast<double>(report.facts.at(RoadmapFacts::edges));
   }
   state.counters["n"] = obstacle_vertices;
   state.counters["heap_MB"] = static_cast<double>(peak_bytes) / 1e6;

@@ -9,6 +9,7 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/rotation/rotation_planner.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include "heap_counter.hpp"
 
 #include <benchmark/benchmark.h>
@@ -37,8 +38,8 @@ void Build(benchmark::State& state, const World* world) {
   const auto report = planner->plan(world->queries.front());
   state.counters["layers"] = static_cast<double>(count);
   state.counters["heap_MB"] = static_cast<double>(peak_bytes) / 1e6;
-  state.counters["vertices"] = static_cast<double>(report.facts.count("roadmap.vertices"));
-  state.counters["edges"] = static_cast<double>(report.facts.count("roadmap.edges"));
+  state.counters["vertices"] = static_cast<double>(report.facts.at(RoadmapFacts::vertices));
+  state.counters["edges"] = static_cast<double>(report.facts.at(RoadmapFacts::edges));
   state.counters["found"] = report.found;
 }
 
@@ -47,7 +48,7 @@ void Answer(benchmark::State& state, const World* world) {
   PlanReport<Pose> report;
   for (auto _ : state) report = planner.plan(world->queries.front());
   state.counters["layers"] = static_cast<double>(state.range(0));
-  state.counters["expanded"] = static_cast<double>(report.facts.count("search.expanded"));
+  state.counters["expanded"] = static_cast<double>(report.facts.at(SearchFacts::expanded));
   state.counters["found"] = report.found;
 }
 

@@ -34,6 +34,7 @@
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/sampling/polygon_sampling_space.hpp>
 #include <polyplan/sampling/sampling_planner.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/PlannerTerminationCondition.h>
@@ -338,14 +339,14 @@ class RaceProblemOf final : public RaceProblem {
     const PlanReport<Configuration> report = planner->plan(query_);
     const double wall = since(t0);
     Run run;
-    run.states = static_cast<std::size_t>(report.facts.count("samples"));
-    run.motions = static_cast<std::size_t>(report.facts.count("motions_checked"));
+    run.states = static_cast<std::size_t>(report.facts.at(SamplingFacts::samples));
+    run.motions = static_cast<std::size_t>(report.facts.at(SamplingFacts::motions_checked));
     if (!report.found) return run;
     run.solved = true;
     // The query's clock starts as plan() is entered: the start and goal checks are included.
-    run.seconds = report.facts.number("first_solution_seconds");
+    run.seconds = report.facts.at(SamplingFacts::first_solution_seconds);
     run.wall = wall;
-    run.length = report.facts.number("raw_length");
+    run.length = report.facts.at(SamplingFacts::raw_length);
     if (kind.anytime) {
       const auto& sampling = dynamic_cast<const SamplingPlanner<Space>&>(*planner);
       for (const SolutionImprovement& i : sampling.improvements()) run.improvements.emplace_back(i.seconds, i.length);

@@ -9,7 +9,7 @@
 
 namespace polyplan::cli {
 
-// DESIGN.md: 0 for answers (including "no path"), 1 for a path that is not free, 2 for bad input.
+// docs/design.md: 0 for answers (including "no path"), 1 for a path that is not free, 2 for bad input.
 enum Exit : int { ok = 0, invalid_path = 1, bad_input = 2, internal_error = 3 };
 
 // Each command registers itself on the app and leaves its action in `run`, called after parsing.

@@ -136,10 +136,7 @@ void add_command(CLI::App& app, Action& run, const std::string& name, const std:
   plan->add_option_function<double>(
           "--check-resolution", [command](double) { command->check_resolution = true; }, "refused: motions are certified, not sampled")
       ->group("");
-  command->planner = std::make_unique<PlannerChoice>(
-      *plan, "--planner", std::vector<std::string>{"--roadmap", "--method"},
-      std::set<std::string>{"--planner", "--roadmap", "--method", "--option", "--query", "--json", "--svg", "--strobe", "--every",
-                            "--trace", "--check-resolution", "--help", "--lazy", "--eager"});
+  command->planner = std::make_unique<PlannerChoice>(*plan, "--planner", std::vector<std::string>{"--roadmap", "--method"});
   // The arm grid's evaluation as the flags older scripts use.
   auto* lazy = command->planner->add_alias(*plan, "--lazy", "evaluation", "lazy", "grid: decide cells when the search reaches them (default)");
   command->planner->add_alias(*plan, "--eager", "evaluation", "eager", "grid: evaluate every cell before searching")->excludes(lazy);

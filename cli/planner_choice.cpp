@@ -17,8 +17,7 @@ std::string option_names(const std::vector<OptionInfo>& options) {
 
 }  // namespace
 
-PlannerChoice::PlannerChoice(CLI::App& command, const std::string& flag, const std::vector<std::string>& aliases,
-                             const std::set<std::string>& reserved)
+PlannerChoice::PlannerChoice(CLI::App& command, const std::string& flag, const std::vector<std::string>& aliases)
     : flag_(flag) {
   std::string flags = flag;
   for (const auto& a : aliases) flags += "," + a;
@@ -42,7 +41,8 @@ PlannerChoice::PlannerChoice(CLI::App& command, const std::string& flag, const s
   }
   for (const auto& [name, described] : options) {
     const auto& [info, owners] = described;
-    if (reserved.count("--" + name)) throw std::logic_error("the planner option " + name + " shadows a command flag");
+    if (command.get_option_no_throw("--" + name) || command.get_option_no_throw("--no-" + name))
+      throw std::logic_error("the planner option " + name + " shadows a flag of the command " + command.get_name());
     std::string help = info.description + " [" + info.kind + "] (";
     for (std::size_t i = 0; i < owners.size(); ++i) help += (i ? ", " : "") + owners[i];
     help += ")";
@@ -67,7 +67,9 @@ void PlannerChoice::choose_for(const Problem& problem) {
   try {
     planner = &planner_for(name_, problem);
   } catch (const InputError& e) {
-    throw InputError(flag_ + ": " + e.what());
+    // A name nobody registered is the flag's mistake; the door's other refusals name the file.
+    const std::string why = e.what();
+    throw InputError(why.rfind("unknown planner", 0) == 0 ? flag_ + ": " + why : why);
   }
   values_ = given(*planner);
 }

@@ -20,9 +20,9 @@ namespace polyplan::cli {
 class PlannerChoice {
  public:
   // `flag` is the primary flag ("--planner"); `aliases` name it too ("--roadmap", "--method").
-  // `reserved` are the command's own flags, which no option may shadow.
-  PlannerChoice(CLI::App& command, const std::string& flag, const std::vector<std::string>& aliases,
-                const std::set<std::string>& reserved);
+  // Made after the command's own flags: a planner option that would shadow one is a
+  // std::logic_error (a planner's option must be renamed, or the command's flag).
+  PlannerChoice(CLI::App& command, const std::string& flag, const std::vector<std::string>& aliases);
 
   // Another spelling of one option's value (`--eager` for evaluation=eager): a flag that sets it.
   CLI::Option* add_alias(CLI::App& command, const std::string& alias, const std::string& option, const std::string& value,

@@ -3,6 +3,7 @@
 
 #include <polyplan/problem/any_planner.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 
@@ -13,8 +14,16 @@ struct PlannersCommand {
   std::string json;
 };
 
+// An end of a range: null when unbounded.
+nlohmann::json range_end(double x) { return std::isinf(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
+
 nlohmann::json option_json(const OptionInfo& o) {
-  return {{"name", o.name}, {"description", o.description}, {"kind", o.kind}, {"default", o.default_value}, {"flag", o.flag}};
+  nlohmann::json option = {{"name", o.name}, {"description", o.description}, {"kind", o.kind}, {"default", o.default_value}, {"flag", o.flag}};
+  if (o.range)
+    option["range"] = {{"min", range_end(o.range->min)}, {"max", range_end(o.range->max)}, {"min_open", o.range->min_open},
+                       {"max_open", o.range->max_open}, {"text", o.range->text()}};
+  if (!o.choices.empty()) option["choices"] = o.choices;
+  return option;
 }
 
 // The catalog by space, in its order: {space, command, planners [{name, description, options}]}.

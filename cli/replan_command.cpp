@@ -2,7 +2,7 @@
 // [--json FILE|-] [--svg OUT.svg [--animate]] [--trace FILE|-] [--rhs-trace FILE|-]: a robot that discovers the
 // MovingAI map as it drives (x = column, y = row), replanning with D* Lite, LPA* or A* from scratch.
 // --trace writes one JSON line per expansion of every replan, with the keys of search's and plan's
-// --trace; --rhs-trace (what --trace wrote before) seed 002's g/rhs tables for every pass.
+// --trace; --rhs-trace (what --trace wrote before) the course's planning problem set's g/rhs tables for every pass.
 #include "cli/command.hpp"
 #include "cli/trace_output.hpp"
 
@@ -114,7 +114,7 @@ class BothTraces : public ReplanTrace {
   ReplanTrace *a_, *b_;
 };
 
-// --rhs-trace: seed 002's g/rhs tables as JSON lines (one per replan's start, one per pass) or as
+// --rhs-trace: the course's planning problem set's g/rhs tables as JSON lines (one per replan's start, one per pass) or as
 // the seed's tables.
 class TraceWriter : public ReplanTrace {
  public:
@@ -242,10 +242,10 @@ void add_replan_command(CLI::App& app, Action& run) {
   command->add_flag("--animate", options->animate, "Make the --svg picture an animation, one frame per move");
   command->add_option("--trace", options->trace,
                       "Every expansion of every replan as a JSON line {step, vertex, g, h, f, backpointer, open, replan, kind} "
-                      "to this file ('-' for standard output), as search and plan write them. Changed: seed 002's g/rhs "
+                      "to this file ('-' for standard output), as search and plan write them. Changed: the course's planning problem set's g/rhs "
                       "tables, which --trace wrote before, are now --rhs-trace");
   command->add_option("--rhs-trace", options->rhs_trace,
-                      "Seed 002's g/rhs tables for every pass of every replan: JSON lines to this file, or tables with '-'");
+                      "The course's planning problem set's g/rhs tables for every pass of every replan: JSON lines to this file, or tables with '-'");
   command->callback([options, &run] { run = [options] { return run_replan(*options); }; });
 }
 

@@ -1,6 +1,6 @@
 // polyplan search GRAPH.json --start I --goal J [--method astar|dijkstra|bfs|dfs|greedy|wastar]
 // [--weight W] [--json FILE|-] [--trace FILE|-] [--svg OUT.svg [--animate]] [--edge-weights]
-// [--labels] [--backpointers] [--heuristic] [--indices]: a graph search on seed 000's graph_vector
+// [--labels] [--backpointers] [--heuristic] [--indices]: a graph search on the course's graph-search homework's graph_vector
 // (io/graph_reader.hpp) with the Euclidean heuristic, to watch: every expansion as a JSON line,
 // the final state or the whole search as a picture.
 #include "cli/command.hpp"
@@ -56,7 +56,7 @@ SearchOptions search_options(const SearchCommandOptions& o) {
   }
   options.record_expanded = true;
   options.record_trace = true;  // the picture's open list, labels and arrows come from it
-  options.ties_first_discovered = true;  // seed 000's order: any A* that breaks ties so expands the same vertices
+  options.ties_first_discovered = true;  // the course's graph-search homework's order: any A* that breaks ties so expands the same vertices
   return options;
 }
 
@@ -131,7 +131,7 @@ int run_search(const SearchCommandOptions& o) {
 
 void add_search_command(CLI::App& app, Action& run) {
   auto o = std::make_shared<SearchCommandOptions>();
-  CLI::App* command = app.add_subcommand("search", "Search a graph given as seed 000's vertex list, and watch the search");
+  CLI::App* command = app.add_subcommand("search", "Search a graph given as the course's graph-search homework's vertex list, and watch the search");
   command->add_option("graph", o->graph, "Graph file (JSON): [{\"x\": [x, y], \"neighbors\": [...], \"neighbors_cost\": [...]}, ...]")
       ->required();
   command->add_option("--start", o->start, "Start vertex (0-based index)")->required();

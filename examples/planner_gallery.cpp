@@ -25,8 +25,9 @@ namespace {
 using namespace polyplan;
 
 // A count the report may have, for the table ("-" when the planner does not report it).
-std::string count_or_dash(const Facts& facts, const char* name) {
-  return facts.contains(name) ? std::to_string(facts.count(name)) : "-";
+std::string count_or_dash(const Facts& facts, FactKey<std::int64_t> key) {
+  const auto value = facts.find(key);
+  return value ? std::to_string(*value) : "-";
 }
 
 }  // namespace
@@ -59,8 +60,8 @@ int main(int argc, char** argv) {
       draw_plan(cspace, {report}, {entry.name + " path"}).write(picture.string());
       if (report.found)
         std::printf("%-16s %-6s %10.4f %8.4f %10s %10s %10.4f  -> %s\n", entry.name.c_str(), "yes", report.length,
-                    report.length / *shortest, count_or_dash(report.facts, "search.expanded").c_str(),
-                    count_or_dash(report.facts, "roadmap.vertices").c_str(), seconds, picture.string().c_str());
+                    report.length / *shortest, count_or_dash(report.facts, SearchFacts::expanded).c_str(),
+                    count_or_dash(report.facts, RoadmapFacts::vertices).c_str(), seconds, picture.string().c_str());
       else
         std::printf("%-16s %-6s %s\n", entry.name.c_str(), "no", report.why_not.c_str());
     }

@@ -1,4 +1,4 @@
-// Seed 000's report question 2.1 on the sphere world: the same world rasterised at three
+// The course's graph-search homework's report question 2.1 on the sphere world: the same world rasterised at three
 // resolutions — too coarse (obstacles fuse, a gap closes), just right (the topology of the free
 // space kept), too fine (the same routes for many more cells) — each query planned on the grid
 // (start and goal snapped to the nearest free cell) and compared with the exact shortest path of
@@ -12,6 +12,8 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <cstdio>
 #include <exception>
@@ -73,15 +75,15 @@ int main(int argc, char** argv) {
         const Query& q = world.queries[i];
         PlanReport<ExactPoint> plan = planner.plan(q, QueryOptions{true});
         plan.expanded.clear();  // ten searches' expansions would hide the cells
-        const std::string cells = plan.facts.contains("raster.start_cell")
-                                      ? plan.facts.text("raster.start_cell") + ">" + plan.facts.text("raster.goal_cell")
+        const std::string cells = plan.facts.contains(RasterFacts::start_cell)
+                                      ? plan.facts.at(RasterFacts::start_cell) + ">" + plan.facts.at(RasterFacts::goal_cell)
                                       : "-";
         if (!plan.found) {
           std::printf("  %-11s %-6s %-18s %s\n", q.name.c_str(), "no", cells.c_str(), plan.why_not.c_str());
         } else {
           std::printf("  %-11s %-6s %-18s %9.3f %9.3f %7.3f %9lld\n", q.name.c_str(), "yes", cells.c_str(), plan.length,
                       optimum[i], optimum[i] > 0 ? plan.length / optimum[i] : 0.0,
-                      static_cast<long long>(plan.facts.count("search.expanded")));
+                      static_cast<long long>(plan.facts.at(SearchFacts::expanded)));
         }
         labels.push_back("q" + std::to_string(i) + (plan.found ? " " + std::to_string(plan.length).substr(0, 6) : " refused"));
         reports.push_back(std::move(plan));

@@ -11,6 +11,7 @@
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <algorithm>
 #include <cstdio>
@@ -44,10 +45,11 @@ const std::vector<Contender> contenders{
     {"gvd-grid", "gvd-grid", {}},
 };
 
-std::string number_or_dash(const Facts& facts, const char* name, const char* format) {
-  if (!facts.contains(name)) return "-";
+std::string number_or_dash(const Facts& facts, FactKey<double> key, const char* format) {
+  const auto value = facts.find(key);
+  if (!value) return "-";
   char text[32];
-  std::snprintf(text, sizeof text, format, facts.number(name));
+  std::snprintf(text, sizeof text, format, *value);
   return text;
 }
 
@@ -88,10 +90,10 @@ void compare_on(const std::string& world_file, const fs::path& out) {
     }
     std::printf("%-17s %-5s %9.3f %7.4f %9.3f %9s %9s %8lld %8lld\n", contender.label.c_str(), "yes", report.length,
                 optimum ? report.length / *optimum : 0.0, path_clearance(cspace, report.path),
-                number_or_dash(report.facts, "roadmap.seconds", "%.4f").c_str(),
-                number_or_dash(report.facts, "query_seconds", "%.4f").c_str(),
-                static_cast<long long>(report.facts.count("roadmap.vertices")),
-                static_cast<long long>(report.facts.count("roadmap.edges")));
+                number_or_dash(report.facts, RoadmapFacts::seconds, "%.4f").c_str(),
+                number_or_dash(report.facts, QueryFacts::seconds, "%.4f").c_str(),
+                static_cast<long long>(report.facts.at(RoadmapFacts::vertices)),
+                static_cast<long long>(report.facts.at(RoadmapFacts::edges)));
   }
 }
 

@@ -1,4 +1,4 @@
-// Seed 004's Part 2 with certified turns: a rotating robot planned over layers of orientations at
+// The course's C-space and visibility-graph problem set's Part 2 with certified turns: a rotating robot planned over layers of orientations at
 // several steps, against the same robot that may not turn. A table on stdout (layers, turn
 // layers, found, length, degrees turned, motions, build and query times) and a strobe picture per
 // step.
@@ -9,6 +9,8 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/rotation/rotation_planner.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/rotation/rotation_facts.hpp>
 
 #include <cstdio>
 #include <exception>
@@ -59,8 +61,8 @@ int main(int argc, char** argv) {
       const PlanReport<Pose> report = planner.plan(query);
       std::printf("%5g° %7zu %11zu %6s %10.3f %8.1f° %8zu %9.2f %9.2f\n", step, planner.layers().layers().size(),
                   planner.layers().turns().size(), report.found ? "yes" : "no", report.found ? report.length : 0.0,
-                  report.facts.number("rotation"), report.path.empty() ? 0 : report.path.size() - 1, build_seconds,
-                  report.facts.number("query_seconds") * 1000);
+                  report.facts.at(RotationFacts::rotation), report.path.empty() ? 0 : report.path.size() - 1, build_seconds,
+                  report.facts.at(QueryFacts::seconds) * 1000);
       char name[64];
       std::snprintf(name, sizeof name, "_%g.svg", step);
       draw_plan(world, {report}, {"path, every " + std::to_string(static_cast<int>(step)) + "°"}).write(prefix + name);

@@ -1,4 +1,4 @@
-// The table of seed 004's report: on the seed 004 world, every search of a course over one
+// The table of the course's C-space and visibility-graph problem set's report: on the the course's C-space and visibility-graph problem set world, every search of a course over one
 // visibility graph — number of path segments, path cost, nodes explored — and all paths in one
 // picture. Usage: search_comparison [WORLD.json] [OUT.svg]
 #include <polyplan/draw/plan_svg.hpp>
@@ -7,6 +7,7 @@
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <cstdio>
 #include <iostream>
@@ -41,8 +42,8 @@ int main(int argc, char** argv) {
     draw_cspace(drawing, cspace);
     draw_graph(drawing, *first.graph);
     std::printf("%s: visibility graph with %lld vertices and %lld edges\n\n", world_file.c_str(),
-                static_cast<long long>(first.facts.count("roadmap.vertices")),
-                static_cast<long long>(first.facts.count("roadmap.edges")));
+                static_cast<long long>(first.facts.at(RoadmapFacts::vertices)),
+                static_cast<long long>(first.facts.at(RoadmapFacts::edges)));
     std::printf("%-22s %22s %12s %20s\n", "Algorithm", "# of segments in path", "path cost", "# of nodes explored");
     for (const Row& row : rows) {
       const PlanReport<ExactPoint> plan = graph.plan(query, row.options);
@@ -51,7 +52,7 @@ int main(int argc, char** argv) {
         continue;
       }
       std::printf("%-22s %22zu %12.2f %20lld\n", row.name, plan.path.size() - 1, plan.length,
-                  static_cast<long long>(plan.facts.count("search.expanded")));
+                  static_cast<long long>(plan.facts.at(SearchFacts::expanded)));
       draw_path(drawing, plan.path, row.name, theme::path_colour(row.colour));
     }
     drawing.write(picture);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The main job on a shipped world: installs what is missing, builds the polyplan program, plans
-# the exact shortest path of seed 004's two-part robot and draws it in seed004-plan.svg.
+# the exact shortest path of the course's C-space and visibility-graph problem set's two-part robot and draws it in seed004-plan.svg.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Writes grid_medium.json: seed 000's medium A* example rebuilt (a grid graph with obstacle cells
-removed, as its grid2graph makes one), in seed 000's graph_vector format.
+"""Writes grid_medium.json: the course's graph-search homework's medium A* example rebuilt (a grid graph with obstacle cells
+removed, as its grid2graph makes one), in the course's graph-search homework's graph_vector format.
 
 8 x 6 vertices one unit apart, 8-connected (a diagonal move only when both cells beside it are
 free, as grid2graph's neighbours), costs the Euclidean lengths 1 and sqrt(2), written with the

@@ -1,4 +1,4 @@
-"""Seed 004's table: every search of a course on one visibility graph of the seed 004 world —
+"""The course's C-space and visibility-graph problem set's table: every search of a course on one visibility graph of the the course's C-space and visibility-graph problem set world —
 segments in the path, its cost and the nodes explored — printed, and every path in one plot.
 
     python3 seed004_search_table.py [WORLD.json] [OUT.png]
@@ -41,6 +41,6 @@ for (name, _), r, colour in zip(rows, plans, ["grey", "tab:blue", "tab:green", "
         ax.plot(r.path[:, 0], r.path[:, 1], color=colour, lw=2, label=f"{name}: {len(r.path) - 1} segments, {r.length:.2f}")
 ax.add_collection(LineCollection(graph.vertices[graph.edges], colors="#7aa6d6", linewidths=0.3, zorder=0))
 ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1), fontsize="small")  # same paths overlap: UCS under A*, w = 3 under greedy
-ax.set_title("seed 004: searches on the visibility graph")
+ax.set_title("the course's C-space and visibility-graph problem set: searches on the visibility graph")
 fig.savefig(picture, dpi=100, bbox_inches="tight")
 print(f"\npicture: {picture}")

@@ -1,4 +1,4 @@
-"""Seed 000's two-link arm on its torus: the C-space grid of the two joint angles (every cell
+"""The course's graph-search homework's two-link arm on its torus: the C-space grid of the two joint angles (every cell
 decided, blocked ones grey) with the path drawn across it, and the arm moving in the workspace.
 
     python3 two_link_torus.py [ARM.json] [QUERY] [OUT.png]

@@ -4,6 +4,7 @@
 #include <polyplan/arm/inverse_kinematics.hpp>
 #include <polyplan/geometry/angles.hpp>
 #include <polyplan/plan/planner_options.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <algorithm>
 #include <stdexcept>
@@ -106,10 +107,10 @@ ArmGoalSet arm_goal_set(const ArmCollisionChecker& checker, const ArmQuery& quer
 
 void set_goal_facts(const ArmGoalSet& set, std::size_t reached, Facts& facts) {
   if (!set.workspace) return;
-  facts.set("goal.candidates", set.goals.size());
-  facts.set("goal.reached", reached);
-  facts.set("goal.error", set.goals.at(reached).error);
-  facts.set("goal.solutions", set.solutions);
+  facts.set(GoalFacts::candidates, set.goals.size());
+  facts.set(GoalFacts::reached, reached);
+  facts.set(GoalFacts::error, set.goals.at(reached).error);
+  facts.set(GoalFacts::solutions, set.solutions);
 }
 
 }  // namespace polyplan

@@ -6,6 +6,8 @@
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
 #include <polyplan/search/grid_graph.hpp>
+#include <polyplan/arm/arm_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <boost/container_hash/hash.hpp>
 
@@ -189,7 +191,7 @@ struct Planning {
   void stop_at_budget(const std::string& what, const std::string& context = "") {
     report.fail(PlanStatus::limit, context + "stopped after " + what + ": the memory budget of one query is " +
                                        number_text(options.memory_mb) + " MB (option memory-mb: raise it with --memory-mb N)");
-    report.facts.set("stopped_by", "memory limit");
+    report.facts.set(QueryFacts::stopped_by, "memory limit");
   }
   std::string no_join(bool start_joined, std::size_t goals) const {
     const std::string end = start_joined ? (goals == 1 ? "goal" : "any of the " + std::to_string(goals) + " goals") : "start";
@@ -299,7 +301,7 @@ void plan_on_grid_graph(Planning& p, const GridQuery& query) {
   for (const GridCell c : result.path) cells.push_back(g.coordinates(c));
   const auto reached = static_cast<std::size_t>(std::find(goal_cells.begin(), goal_cells.end(), result.path.back()) - goal_cells.begin());
   p.keep_path(query, cells, goals.goal_of[reached]);
-  p.report.facts.set("grid.shortest", p.options.search.algorithm == Search::astar || p.options.search.algorithm == Search::dijkstra
+  p.report.facts.set(ArmGridFacts::grid_shortest, p.options.search.algorithm == Search::astar || p.options.search.algorithm == Search::dijkstra
                                           ? "proved" : "not claimed");
 }
 
@@ -443,11 +445,11 @@ void plan_compactly(Planning& p, const GridQuery& query) {
     std::optional<GuidePath> coarse = guide_path(p, query, guide_degrees, true);
     while (!coarse && guide_degrees / 2 > options.resolution_degrees && cells_on_the_circle(guide_degrees / 2))
       coarse = guide_path(p, query, guide_degrees /= 2, false);
-    p.report.facts.set("grid.coarse_degrees", guide_degrees);
+    p.report.facts.set(ArmGridFacts::grid_coarse_degrees, guide_degrees);
     if (coarse) {
       double predicted = 0;
       corridor = corridor_for(p, coarse, grid.n, predicted);
-      p.report.facts.set("grid.predicted_cells", predicted);
+      p.report.facts.set(ArmGridFacts::grid_predicted_cells, predicted);
     }
   }
 
@@ -480,14 +482,14 @@ void plan_compactly(Planning& p, const GridQuery& query) {
     result = search.run();
     ++rounds;
     p.peak_mb = std::max(p.peak_mb, static_cast<double>(result.peak_bytes) / 1e6);
-    p.report.facts.set("grid.whole_grid", true);
+    p.report.facts.set(ArmGridFacts::grid_whole_grid, true);
   }
   count(p, result);
   p.expanded = result.expanded;
   p.generated = result.generated;
   if (corridor) {
-    p.report.facts.set("grid.corridor", radius);
-    p.report.facts.set("grid.rounds", rounds);
+    p.report.facts.set(ArmGridFacts::grid_corridor, radius);
+    p.report.facts.set(ArmGridFacts::grid_rounds, rounds);
   }
   for (const auto& c : result.expanded_order) p.report.expanded.push_back(grid.configuration(c));
   p.keep_cells([&](GridCoordinate x, GridCoordinate y) { return search.state(std::array{x, y}); });
@@ -504,16 +506,16 @@ void plan_compactly(Planning& p, const GridQuery& query) {
   }
   p.keep_path(query, result.path, level->goal_of[result.goal_reached]);
   const bool proved = result.cost_steps <= result.outside_bound_steps;
-  p.report.facts.set("grid.shortest", proved ? "proved" : "corridor");
+  p.report.facts.set(ArmGridFacts::grid_shortest, proved ? "proved" : "corridor");
   if (!proved) {
     const double bound = static_cast<double>(result.outside_bound_steps) * grid.step;
-    p.report.facts.set("grid.lower_bound", bound);
+    p.report.facts.set(ArmGridFacts::grid_lower_bound, bound);
     char note[200];
     std::snprintf(note, sizeof note,
                   "the shortest within %d coarse cells of the %s-degree path; the grid's shortest, not proved, is at least %.6f "
                   "rad between the same cells (option coarse 0 searches the whole grid)",
                   radius, number_text(guide_degrees).c_str(), bound);
-    p.report.facts.set("note", note);
+    p.report.facts.set(QueryFacts::note, note);
   }
 }
 
@@ -527,11 +529,11 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
 
   PlanReport<JointAngles> report;
   Facts& facts = report.facts;
-  facts.set("grid.resolution_degrees", options_.resolution_degrees);
-  facts.set("grid.cells_per_axis", n);
-  facts.set("grid.torus", options_.torus);
-  facts.set("grid.evaluation", options_.lazy ? "lazy" : "eager");
-  facts.set("search.algorithm", to_string(options_.search.algorithm));
+  facts.set(ArmGridFacts::grid_resolution_degrees, options_.resolution_degrees);
+  facts.set(ArmGridFacts::grid_cells_per_axis, n);
+  facts.set(ArmGridFacts::grid_torus, options_.torus);
+  facts.set(ArmGridFacts::grid_evaluation, options_.lazy ? "lazy" : "eager");
+  facts.set(SearchFacts::algorithm, to_string(options_.search.algorithm));
   MotionTally motions;
   Planning p{checker_, options_, grid, record, joints, report, motions};
   if (auto why = query_not_free(checker_, query)) {
@@ -539,7 +541,7 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
   } else if (const ArmGoalSet goal_set = arm_goal_set(checker_, query); goal_set.goals.empty()) {
     report.fail(goal_set.status, goal_set.why_none);
   } else {
-    if (goal_set.goals.size() > 1) facts.set("goal.candidates", goal_set.goals.size());
+    if (goal_set.goals.size() > 1) facts.set(GoalFacts::candidates, goal_set.goals.size());
     const std::vector<JointAngles> goals = goal_set.configurations();
     const GridQuery grid_query{query.start, goals};
     const bool compact = options_.lazy && (options_.search.algorithm == Search::astar || options_.search.algorithm == Search::dijkstra);
@@ -549,34 +551,34 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
       plan_on_grid_graph(p, grid_query);
     if (report.found) set_goal_facts(goal_set, p.goal_reached, facts);
   }
-  facts.set("cells_evaluated", p.cells_evaluated);
-  facts.set("moves_checked", motions.checked);
-  facts.set("moves_by_clearance", p.moves_by_clearance);
-  facts.set("moves_uncertified", motions.uncertified);
-  facts.set("expanded", p.expanded);
-  facts.set("search.expanded", p.expanded);
-  facts.set("search.generated", p.generated);
-  facts.set("memory_mb", p.peak_mb);
-  facts.set("seconds", planning.seconds());
+  facts.set(ArmGridFacts::cells_evaluated, p.cells_evaluated);
+  facts.set(ArmGridFacts::moves_checked, motions.checked);
+  facts.set(ArmGridFacts::moves_by_clearance, p.moves_by_clearance);
+  facts.set(ArmGridFacts::moves_uncertified, motions.uncertified);
+  facts.set(ArmGridFacts::expanded, p.expanded);
+  facts.set(SearchFacts::expanded, p.expanded);
+  facts.set(SearchFacts::generated, p.generated);
+  facts.set(ArmGridFacts::memory_mb, p.peak_mb);
+  facts.set(ArmGridFacts::seconds, planning.seconds());
   return report;
 }
 
 PlannerEntry<PlanarArm> arm_grid_planner_entry() {
   OptionTable<ArmGridOptions> table;
-  table.add("resolution", &ArmGridOptions::resolution_degrees, "grid step in degrees (must divide 360)");
+  table.add("resolution", &ArmGridOptions::resolution_degrees, "grid step in degrees (must divide 360)", above(0));
   table.add("torus", &ArmGridOptions::torus, "joint angles wrap round (false: each joint is the interval [0, 2pi))");
   table.add("evaluation", &ArmGridOptions::lazy, "lazy: decide cells when the search reaches them; eager: every cell first",
             std::vector<std::pair<std::string, bool>>{{"lazy", true}, {"eager", false}});
   add_search_options(table, &ArmGridOptions::search);
   table.add("coarse", &ArmGridOptions::coarse_degrees,
-            "a finer grid is searched first at this resolution (degrees), then in a corridor around that path; 0: whole grid");
-  table.add("corridor", &ArmGridOptions::corridor, "the corridor's half-width in coarse cells");
+            "a finer grid is searched first at this resolution (degrees), then in a corridor around that path; 0: whole grid", at_least(0));
+  table.add("corridor", &ArmGridOptions::corridor, "the corridor's half-width in coarse cells", at_least(0));
   table.add("exact-cells", &ArmGridOptions::exact_cells,
-            "a finer grid is searched whole when the coarse search predicts at most this many cells");
-  table.add("widenings", &ArmGridOptions::widenings, "times the corridor may double while it cannot prove its path shortest");
-  table.add("memory-mb", &ArmGridOptions::memory_mb, "the memory one query's tables may take before it stops, saying so");
+            "a finer grid is searched whole when the coarse search predicts at most this many cells", at_least(1));
+  table.add("widenings", &ArmGridOptions::widenings, "times the corridor may double while it cannot prove its path shortest", at_least(0));
+  table.add("memory-mb", &ArmGridOptions::memory_mb, "the memory one query's tables may take before it stops, saying so", above(0));
   return make_planner_entry<PlanarArm, ArmGridOptions>(
-      "grid", "seed 000's grid over the joint angles (a torus), searched lazily; every move a certified motion",
+      "grid", "the course's graph-search homework's grid over the joint angles (a torus), searched lazily; every move a certified motion",
       std::move(table), [](const ArmProblem& problem, const ArmGridOptions& o) {
         return std::make_unique<ArmGridPlanner>(problem, o);
       });

@@ -1,5 +1,5 @@
 #pragma once
-// An n-link arm planned on a grid over its C-space (seed 000 Problem 3): joint angles in steps of
+// An n-link arm planned on a grid over its C-space (the course's graph-search homework Problem 3): joint angles in steps of
 // `resolution_degrees`, each joint a circle (the torus, by default) or the interval [0, 2π).
 // A grid cell is free when the arm at that configuration is; a move between neighbouring cells
 // (one joint turns one step) is allowed when the motion is certified free (arm/arm_motion.hpp:

@@ -1,11 +1,11 @@
 #pragma once
 // Motions between two configurations: every joint turns the short way round at a constant rate
-// (seed 001's interpolation): θ_j(t) = from_j + t·Δ_j, Δ_j = signed_angle_difference(from_j, to_j),
+// (the course's arm and car planning report's interpolation): θ_j(t) = from_j + t·Δ_j, Δ_j = signed_angle_difference(from_j, to_j),
 // t ∈ [0, 1] (interpolate_angles_into). A joint exactly a half turn from its goal turns
 // counter-clockwise (signed_angle_difference's +π), so such a motion and its reverse sweep
 // different half circles.
 //
-// certify_motion proves a motion free for every t, not only at samples (DESIGN.md: motions are
+// certify_motion proves a motion free for every t, not only at samples (docs/design.md: motions are
 // certified, never sampled), by conservative advancement. The motion proved is the true one: the
 // true arm (arm_collision.hpp) along θ_j(t) = from_j + t·D_j between the normalised ends, D_j the
 // real turn (to_j − from_j, shifted by 2π where signed_angle_difference shifts it):

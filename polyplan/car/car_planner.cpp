@@ -1,6 +1,8 @@
 #include <polyplan/car/car_planner.hpp>
 
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/car/car_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <stdexcept>
 #include <utility>
@@ -19,8 +21,8 @@ PlanReport<CarState> CarPlanner::plan(const Query& query, const QueryOptions& op
   PlanReport<CarState> report;
   const CarPose start = start_pose(query), goal = goal_pose(query);
   const auto finish = [&] {
-    report.facts.set("certification.enclosures", collision_.enclosures_tested() - enclosures_before);
-    report.facts.set("query_seconds", clock.seconds());
+    report.facts.set(CarFacts::certification_enclosures, collision_.enclosures_tested() - enclosures_before);
+    report.facts.set(QueryFacts::seconds, clock.seconds());
     return report;
   };
   if (auto why = car_query_not_free(collision_, query)) {
@@ -58,7 +60,7 @@ PlanReport<CarState> CarPlanner::plan(const Query& query, const QueryOptions& op
   report.length = 0;
   for (const CarState& s : report.path) report.length += s.arrival.length;
   report.certificate = {true, CarCollision::method};
-  report.facts.set("gear_changes", gear_changes(report.path));
+  report.facts.set(CarFacts::gear_changes, gear_changes(report.path));
   report.succeed();
   return finish();
 }

@@ -4,6 +4,9 @@
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/sampling/sampling_space.hpp>
+#include <polyplan/car/car_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <cmath>
 #include <limits>
@@ -58,12 +61,12 @@ class CarRrtPlanner final : public CarPlanner {
     Attempt attempt;
     std::optional<std::vector<CarState>> connection;  // from the reached node to the goal exactly
     const auto tell = [&](std::optional<std::size_t> reached) {
-      facts.set("tree_size", nodes.size());
-      facts.set("iterations", iterations);
-      facts.set("controls_tried", controls_tried);
-      facts.set("connections_tried", connections_tried);
-      facts.set("seed", options_.seed);
-      facts.set("search.seconds", clock.seconds());
+      facts.set(SamplingFacts::tree_size, nodes.size());
+      facts.set(SamplingFacts::iterations, iterations);
+      facts.set(CarFacts::controls_tried, controls_tried);
+      facts.set(CarFacts::connections_tried, connections_tried);
+      facts.set(SamplingFacts::seed, options_.seed);
+      facts.set(SearchFacts::seconds, clock.seconds());
       if (reached) {
         std::vector<CarState> path;
         for (std::size_t id = *reached;; id = parents[id]) {
@@ -72,7 +75,7 @@ class CarRrtPlanner final : public CarPlanner {
         }
         attempt.path.assign(path.rbegin(), path.rend());
         if (connection) attempt.path.insert(attempt.path.end(), connection->begin(), connection->end());
-        else facts.set("goal_miss", miss(attempt.path.back().pose, goal));
+        else facts.set(CarFacts::goal_miss, miss(attempt.path.back().pose, goal));
       }
       if (record) {
         auto graph = std::make_shared<PlanGraph<CarState>>();
@@ -117,7 +120,7 @@ class CarRrtPlanner final : public CarPlanner {
       if (miss(chosen->pose, goal) <= options_.goal_tolerance) return tell(nodes.size() - 1);
     }
     const bool timed_out = iterations < options_.iterations;
-    facts.set("stopped_by", timed_out ? "time limit" : "iteration limit");
+    facts.set(QueryFacts::stopped_by, timed_out ? "time limit" : "iteration limit");
     attempt.failure = PlanStatus::limit;
     attempt.why_not = std::string("the ") + (timed_out ? "time limit (" + std::to_string(options_.time) + " s)"
                                                       : "iteration limit (" + std::to_string(options_.iterations) + ")") +
@@ -135,13 +138,13 @@ class CarRrtPlanner final : public CarPlanner {
 
 PlannerEntry<SteeredCar> car_rrt_planner_entry() {
   OptionTable<CarRrtOptions> table;
-  table.add("dt", &CarRrtOptions::dt, "length driven by one control at unit speed (0: a third of the turning radius)")
-      .add("goal-bias", &CarRrtOptions::goal_bias, "probability of sampling the goal")
+  table.add("dt", &CarRrtOptions::dt, "length driven by one control at unit speed (0: a third of the turning radius)", at_least(0))
+      .add("goal-bias", &CarRrtOptions::goal_bias, "probability of sampling the goal", in_range(0, 1))
       .add("goal-tolerance", &CarRrtOptions::goal_tolerance,
-           "how near the goal a node ends the search: position, and heading times the radius (negative: a tenth of the turning radius)")
+           "how near the goal a node ends the search: position, and heading times the radius (negative: a tenth of the turning radius)", at_least(0))
       .add("seed", &CarRrtOptions::seed, "the random numbers' seed: one seed, one path")
-      .add("time", &CarRrtOptions::time, "time limit per query, seconds")
-      .add("iterations", &CarRrtOptions::iterations, "iteration limit per query");
+      .add("time", &CarRrtOptions::time, "time limit per query, seconds", above(0))
+      .add("iterations", &CarRrtOptions::iterations, "iteration limit per query", at_least(1));
   return make_planner_entry<SteeredCar, CarRrtOptions>(
       "car-rrt", "RRT with controls: forward/backward at full lock or straight for dt, nearest by the steering distance",
       std::move(table), [](const World& world, const CarRrtOptions& options) -> std::unique_ptr<Planner<SteeredCar>> {

@@ -1,5 +1,5 @@
 #pragma once
-// Seed 001's RRT with controls for a steered car: a tree from the start; each iteration draws a
+// The course's arm and car planning report's RRT with controls for a steered car: a tree from the start; each iteration draws a
 // pose (the goal with probability `goal-bias`), finds the tree's nearest node by the steering
 // curve's length (Reeds–Shepp or Dubins: the car's own distance), and applies every control —
 // forward and (a Reeds–Shepp car) backward, each at full lock left, straight and at full lock

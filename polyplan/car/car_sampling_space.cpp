@@ -3,6 +3,7 @@
 #include <polyplan/car/car_motion.hpp>
 #include <polyplan/car/car_query.hpp>
 #include <polyplan/geometry/angles.hpp>
+#include <polyplan/car/car_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -79,7 +80,7 @@ class CarSamplingSpace final : public SamplingSpace<SteeredCar> {
       if (!states.empty()) states.back().pose = to;
       cut.insert(cut.end(), states.begin(), states.end());
     }
-    facts.set("gear_changes", gear_changes(cut));
+    facts.set(CarFacts::gear_changes, gear_changes(cut));
     return cut;
   }
 

@@ -3,6 +3,8 @@
 #include <polyplan/car/car_planner.hpp>
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/car/car_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -82,15 +84,15 @@ class HybridAStarPlanner final : public CarPlanner {
 
     Attempt attempt;
     const auto tell = [&] {
-      facts.set("search.algorithm", "hybrid A*");
-      facts.set("search.expanded", expanded);
-      facts.set("search.generated", nodes.size());
-      facts.set("search.analytic_tries", analytic_tries);
-      facts.set("search.seconds", clock.seconds());
-      facts.set("grid.cell", options_.cell);
-      facts.set("grid.headings", options_.headings);
-      facts.set("grid.step", options_.step);
-      facts.set("heuristic", holonomic() ? "max(steering curve, point among obstacles)" : "steering curve");
+      facts.set(SearchFacts::algorithm, "hybrid A*");
+      facts.set(SearchFacts::expanded, expanded);
+      facts.set(SearchFacts::generated, nodes.size());
+      facts.set(SearchFacts::analytic_tries, analytic_tries);
+      facts.set(SearchFacts::seconds, clock.seconds());
+      facts.set(CarFacts::grid_cell, options_.cell);
+      facts.set(CarFacts::grid_headings, options_.headings);
+      facts.set(CarFacts::grid_step, options_.step);
+      facts.set(CarFacts::heuristic, holonomic() ? "max(steering curve, point among obstacles)" : "steering curve");
       if (record) {
         auto graph = std::make_shared<PlanGraph<CarState>>();
         graph->kind = "search tree";
@@ -103,7 +105,7 @@ class HybridAStarPlanner final : public CarPlanner {
     while (!open.empty()) {
       if (expanded >= options_.iterations || clock.seconds() >= options_.time) {
         const bool timed_out = expanded < options_.iterations;
-        facts.set("stopped_by", timed_out ? "time limit" : "iteration limit");
+        facts.set(QueryFacts::stopped_by, timed_out ? "time limit" : "iteration limit");
         attempt.failure = PlanStatus::limit;
         attempt.why_not = timed_out ? "the time limit (" + std::to_string(options_.time) + " s) ended the search"
                                     : "the iteration limit (" + std::to_string(options_.iterations) + " expansions) ended the search";
@@ -120,7 +122,7 @@ class HybridAStarPlanner final : public CarPlanner {
         if (auto rest = certified_states(here.pose, steering_path(here.pose, goal), goal)) {
           attempt.path = path_to(nodes, id);
           attempt.path.insert(attempt.path.end(), rest->begin(), rest->end());
-          facts.set("cost", nodes[id].g + [&] {
+          facts.set(CarFacts::cost, nodes[id].g + [&] {
             double c = 0;
             SteeringSegment before = here.arrival;
             for (const CarState& s : *rest) c += cost(s.arrival, before), before = s.arrival;
@@ -155,14 +157,14 @@ class HybridAStarPlanner final : public CarPlanner {
 
 PlannerEntry<SteeredCar> hybrid_astar_planner_entry() {
   OptionTable<HybridAStarOptions> table;
-  table.add("headings", &HybridAStarOptions::headings, "heading bins of the closed set")
-      .add("cell", &HybridAStarOptions::cell, "width of the closed set's cells (0: a quarter of the turning radius)")
-      .add("step", &HybridAStarOptions::step, "length of a motion primitive (0: the larger of 1.41 cells and one heading bin's arc)")
-      .add("reverse-cost", &HybridAStarOptions::reverse_cost, "cost per unit driven backward (forward: 1)")
+  table.add("headings", &HybridAStarOptions::headings, "heading bins of the closed set", in_range(4, 3600))
+      .add("cell", &HybridAStarOptions::cell, "width of the closed set's cells (0: a quarter of the turning radius)", at_least(0))
+      .add("step", &HybridAStarOptions::step, "length of a motion primitive (0: the larger of 1.41 cells and one heading bin's arc)", at_least(0))
+      .add("reverse-cost", &HybridAStarOptions::reverse_cost, "cost per unit driven backward (forward: 1)", at_least(1))
       .add("switch-cost", &HybridAStarOptions::switch_cost, "cost of a gear change (negative: one turning radius)")
-      .add("analytic-every", &HybridAStarOptions::analytic_every, "try the steering curve to the goal every this many expansions")
-      .add("time", &HybridAStarOptions::time, "time limit per query, seconds")
-      .add("iterations", &HybridAStarOptions::iterations, "expansion limit per query");
+      .add("analytic-every", &HybridAStarOptions::analytic_every, "try the steering curve to the goal every this many expansions", at_least(1))
+      .add("time", &HybridAStarOptions::time, "time limit per query, seconds", above(0))
+      .add("iterations", &HybridAStarOptions::iterations, "expansion limit per query", at_least(1));
   return make_planner_entry<SteeredCar, HybridAStarOptions>(
       "hybrid-astar", "hybrid A*: heading-binned grid, arcs and straights, steering-curve heuristic and analytic expansion",
       std::move(table), [](const World& world, const HybridAStarOptions& options) -> std::unique_ptr<Planner<SteeredCar>> {

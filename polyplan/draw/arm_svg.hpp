@@ -2,8 +2,8 @@
 // Pictures of a planar arm's plan (draw/svg.hpp does the drawing, draw/theme.hpp gives the
 // colours): the arm moving along its path as an SVG animation (SMIL only, no script, so it plays
 // in any browser and a file viewer still shows a sensible picture), a "strobe" with every k-th
-// configuration drawn at once (seed 001's figure), and for two joints the torus C-space θ1 × θ2
-// beside the workspace with the path on it (seed 000's Figure 2); either with the planner's roadmap
+// configuration drawn at once (the course's arm and car planning report's figure), and for two joints the torus C-space θ1 × θ2
+// beside the workspace with the path on it (the course's graph-search homework's Figure 2); either with the planner's roadmap
 // or tree drawn faint under the path. draw_plan makes either from any arm planner's report.
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/arm_problem.hpp>

@@ -268,8 +268,7 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
     // A planner's further answers (the next homotopy classes), each in a colour of its own.
     for (std::size_t k = 1; k < reports[i].paths.size(); ++k) {
       const auto& more = reports[i].paths[k];
-      const auto word = more.facts.find("word");
-      const std::string name = label + " #" + std::to_string(k + 1) + (word ? " (" + more.facts.text("word") + ")" : "");
+      const std::string name = label + " #" + std::to_string(k + 1) + (more.label.empty() ? "" : " (" + more.label + ")");
       draw_path(drawing, more.path, name, theme::path_colour(i + k));
     }
   }

@@ -1,5 +1,5 @@
 #pragma once
-// The picture of a graph search on a weighted digraph (polyplan search), drawn as seed 000's
+// The picture of a graph search on a weighted digraph (polyplan search), drawn as the course's graph-search homework's
 // Graph.plot draws one: the graph's edges and vertices, the vertices the search expanded, its open
 // list (discovered, not yet expanded), arrows from each vertex to its backpointer, the labels
 // g / h / f, the path found, start and goal. Graph.plot's flags are the options below.

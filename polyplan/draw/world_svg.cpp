@@ -185,7 +185,7 @@ svg::Box2 view_box(const World& world, const CSpace& cspace) {
   }
   const svg::Box2 all = box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
   if (world.queries.empty()) return all;
-  // Obstacles reaching far beyond the queries (seed 002's endless wall) would shrink what happens
+  // Obstacles reaching far beyond the queries (the course's planning problem set's endless wall) would shrink what happens
   // near them to a line: the view ends twice the queries' extent round them.
   const svg::Box2 q = around_queries.box_or(all);
   const double reach = 2 * std::max({q.xmax - q.xmin, q.ymax - q.ymin, 1.0});

@@ -127,7 +127,7 @@ void write_experiment_results_csv(std::ostream& out, const Experiment& experimen
     for (double t : experiment.cost_times) out << ',' << csv_number(run.cost_at(t));
     for (const std::string& name : facts) {
       out << ',';
-      if (const FactValue* value = run.facts.find(name)) out << csv_fact(*value);
+      if (const FactValue* value = run.facts.value_named(name)) out << csv_fact(*value);
     }
     out << ',' << (run.solved ? "" : csv_field(run.why_not)) << '\n';
   }

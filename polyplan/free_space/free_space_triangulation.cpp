@@ -341,7 +341,7 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
 }
 
 // Walks the segment a-b through the triangulation: across unconstrained edges, along edges, and
-// through vertices, where DESIGN.md's pinch rule decides (arrive and leave in one free wedge).
+// through vertices, where docs/design.md's pinch rule decides (arrive and leave in one free wedge).
 // Entering a blocked triangle or crossing a constrained edge is entering a C-obstacle.
 std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, const Point& b, const Place* a_place) const {
   const Impl& t = *impl_;

@@ -7,7 +7,7 @@
 //
 // Cells touch only across walls. A pinch vertex (two C-obstacles touching at a point) sends no
 // wall through the contact, so the cells of its two free wedges share a point and no wall: they
-// are never joined there — DESIGN.md's semantics, where a path may touch a pinch point but not
+// are never joined there — docs/design.md's semantics, where a path may touch a pinch point but not
 // pass through it. A zero-width seam is inside the joined C-obstacles and makes no cell.
 //
 // Worlds without bounds have an unbounded free space: it is cut by a frame, a box that holds every

@@ -1,5 +1,5 @@
 #pragma once
-// What an arm file describes (DESIGN.md "Arm file"): a planar n-link arm with its base at the
+// What an arm file describes (docs/design.md "Arm file"): a planar n-link arm with its base at the
 // origin, the obstacles and obstacle points around it, and the queries — the arm's counterpart of
 // World. Plain data; kinematics and collision are in arm/, the reader in io/arm_reader.hpp.
 #include <polyplan/geometry/world.hpp>
@@ -26,7 +26,7 @@ struct Arm {
   // 0: links are segments; w > 0: each link is the w-wide rectangle on its segment (no end caps:
   // the rectangle ends at the joints).
   double link_width = 0;
-  // false: links at different heights never collide with each other (seed 001). true: two links
+  // false: links at different heights never collide with each other (the course's arm and car planning report). true: two links
   // that share no joint collide when they meet; adjacent links never do.
   bool self_collision = false;
   // Per joint [lo, hi], radians, lo <= hi: the angles a joint may take, read round the circle (an

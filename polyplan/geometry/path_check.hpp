@@ -1,5 +1,5 @@
 #pragma once
-// Exact check that a polyline is a valid motion under DESIGN.md's semantics: it may touch and
+// Exact check that a polyline is a valid motion under docs/design.md's semantics: it may touch and
 // slide along C-obstacle boundaries, it never enters their interior, and it never passes
 // through a zero-width passage (a pinch point where C-obstacles touch: the path must leave such
 // a point into the free wedge it arrived from). Exact-fit corridors and seams between touching

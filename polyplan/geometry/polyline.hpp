@@ -12,7 +12,7 @@ double euclidean_length(const std::vector<ExactPoint>& path);
 
 // The same motion without the corners it runs straight through (collinear and strictly between
 // their neighbours) and without repeated points: a path that grazes a corner lists it, the one
-// that reads better does not (DESIGN.md: "if start sees goal, the path is the segment"). Exact.
+// that reads better does not (docs/design.md: "if start sees goal, the path is the segment"). Exact.
 std::vector<ExactPoint> without_straight_corners(const std::vector<ExactPoint>& path);
 
 // The sign of the turn a -> b -> c: +1 counterclockwise (c left of the line a->b), -1 clockwise,

@@ -1,17 +1,17 @@
 #pragma once
-// A polygon world as an occupancy grid (seed 000's discretised sphere world), decided exactly:
+// A polygon world as an occupancy grid (the course's graph-search homework's discretised sphere world), decided exactly:
 // the world's bounds split into n × n equal cells, a cell blocked when its square meets the
 // interior of a C-obstacle (the obstacles' regularized union for a point robot) or reaches
 // where the robot's reference point cannot be because the bounds are walls.
 //
 // A closed square meets an open set iff the open square does, so a cell that only touches an
 // obstacle along its boundary (a shared edge or corner) stays free. Touching obstacles count as
-// one solid (DESIGN.md), so two free cells may meet at a pinch point between obstacles; the grid
+// one solid (docs/design.md), so two free cells may meet at a pinch point between obstacles; the grid
 // graph's diagonal moves need both side cells free, so a grid path never passes there.
 //
 // Cost: each C-obstacle edge visits the cells along it (exact rationals, no floating point);
 // every other cell whose centre lies in some C-obstacle's bounding box is decided by one exact
-// point location. Seed 000's sphere world at 200 × 200 takes about 0.05 s.
+// point location. The course's graph-search homework's sphere world at 200 × 200 takes about 0.05 s.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/geometry/world.hpp>

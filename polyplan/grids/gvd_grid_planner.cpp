@@ -4,6 +4,8 @@
 #include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -47,14 +49,14 @@ struct GvdGridPlanner::Impl {
   }
 
   void record_facts(Facts& facts) const {
-    facts.set("roadmap.kind", "gvd-grid");
-    facts.set("roadmap.vertices", field.gvd_cells);
-    facts.set("roadmap.edges", gvd_moves);
-    facts.set("roadmap.seconds", build_seconds);
-    facts.set("raster.cells_per_axis", raster.cells_per_axis);
-    facts.set("gvd.cells", field.gvd_cells);
-    facts.set("gvd.max_distance", field.max_distance);
-    facts.set("search.algorithm", to_string(options.search.algorithm));
+    facts.set(RoadmapFacts::kind, "gvd-grid");
+    facts.set(RoadmapFacts::vertices, field.gvd_cells);
+    facts.set(RoadmapFacts::edges, gvd_moves);
+    facts.set(RoadmapFacts::seconds, build_seconds);
+    facts.set(RasterFacts::cells_per_axis, raster.cells_per_axis);
+    facts.set(GvdFacts::cells, field.gvd_cells);
+    facts.set(GvdFacts::max_distance, field.max_distance);
+    facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));
   }
 
   // A lower bound on the distance from the centre of a cell at brushfire distance d to the
@@ -107,8 +109,8 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
                        ", a local maximum off the GVD (the brushfire's GVD failed to reach it: a bug to report)");
       return;
     }
-    report.facts.set("gvd.start_cell", cell_text(r.raster, up.back()));
-    report.facts.set("gvd.goal_cell", cell_text(r.raster, down.back()));
+    report.facts.set(GvdFacts::start_cell, cell_text(r.raster, up.back()));
+    report.facts.set(GvdFacts::goal_cell, cell_text(r.raster, down.back()));
 
     const auto search_between = [&](const GridGraph& g, const SearchOptions& searching) {
       return shortest_path(g, up.back(), down.back(), searching,
@@ -139,7 +141,7 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
     return_if_valid(*r.cspace, polyline_through_turns(r.raster, query.start, cells, query.goal),
                     "the GVD path joined to start and goal", report);
     if (report.found) {
-      report.facts.set("gvd.clearance_bound", r.clearance_of(nearest));
+      report.facts.set(GvdFacts::clearance_bound, r.clearance_of(nearest));
       // The shared word means the same for every planner: measured on the returned path.
       const PathBottleneck narrowest = path_bottleneck(*r.cspace, report.path);
       report.bottleneck = Bottleneck{narrowest.at.x, narrowest.at.y, narrowest.clearance};
@@ -149,7 +151,7 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
 
 PlannerEntry<TranslatingRobot> gvd_grid_planner_entry() {
   OptionTable<GvdGridOptions> table;
-  table.add("resolution", &GvdGridOptions::resolution, "cells per side of the bounds (n x n cells)");
+  table.add("resolution", &GvdGridOptions::resolution, "cells per side of the bounds (n x n cells)", in_range(1, static_cast<double>(max_cells_per_axis)));
   add_search_options(table, &GvdGridOptions::search);
   return make_planner_entry<TranslatingRobot, GvdGridOptions>(
       "gvd-grid", "brushfire GVD on the n x n occupancy grid: climb the distance field, follow the GVD, descend",

@@ -3,6 +3,8 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/plan/plan_trace.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <utility>
 
@@ -66,8 +68,8 @@ std::optional<std::pair<GridCell, GridCell>> snap_query(const CSpace& cspace, co
     report.fail(PlanStatus::not_found, "every cell of the raster is blocked");
     return std::nullopt;
   }
-  report.facts.set("raster.start_cell", cell_text(start_cell->first, start_cell->second));
-  report.facts.set("raster.goal_cell", cell_text(goal_cell->first, goal_cell->second));
+  report.facts.set(RasterFacts::start_cell, cell_text(start_cell->first, start_cell->second));
+  report.facts.set(RasterFacts::goal_cell, cell_text(goal_cell->first, goal_cell->second));
   const auto index = [&](std::pair<std::size_t, std::size_t> c) { return GridCell{c.first + c.second * r.cells_per_axis}; };
   return std::pair<GridCell, GridCell>(index(*start_cell), index(*goal_cell));
 }
@@ -106,10 +108,10 @@ void return_if_valid(const CSpace& cspace, std::vector<ExactPoint> path, std::st
 }
 
 void report_search(const Raster& r, const SearchResult<GridCell>& search, PlanReport<ExactPoint>& report) {
-  report.facts.set("search.expanded", search.expanded);
-  report.facts.set("search.generated", search.generated);
-  report.facts.set("search.path_edges", search.path_edges());
-  report.facts.set("search.seconds", search.seconds);
+  report.facts.set(SearchFacts::expanded, search.expanded);
+  report.facts.set(SearchFacts::generated, search.generated);
+  report.facts.set(SearchFacts::path_edges, search.path_edges());
+  report.facts.set(SearchFacts::seconds, search.seconds);
   const auto centre = [&r](GridCell c) {
     const auto [x, y] = xy_of(r, c);
     return r.cell_center(x, y);

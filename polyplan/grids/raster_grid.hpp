@@ -11,6 +11,7 @@
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/grid_graph.hpp>
 #include <polyplan/search/search_result.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -55,7 +56,7 @@ PlanReport<ExactPoint> grid_query(const Raster& raster, Answer&& answer) {
   SearchResult<GridCell> search;
   answer(report, search);
   report_search(raster, search, report);
-  report.facts.set("query_seconds", querying.seconds());
+  report.facts.set(QueryFacts::seconds, querying.seconds());
   return report;
 }
 

@@ -3,6 +3,8 @@
 #include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -32,13 +34,13 @@ struct RasterPlanner::Impl {
   }
 
   void record_facts(Facts& facts) const {
-    facts.set("roadmap.kind", "raster");
-    facts.set("roadmap.vertices", free_cells);
-    facts.set("roadmap.edges", moves);
-    facts.set("roadmap.seconds", build_seconds);
-    facts.set("raster.cells_per_axis", raster.cells_per_axis);
-    facts.set("raster.blocked_cells", raster.blocked_count());
-    facts.set("search.algorithm", to_string(options.search.algorithm));
+    facts.set(RoadmapFacts::kind, "raster");
+    facts.set(RoadmapFacts::vertices, free_cells);
+    facts.set(RoadmapFacts::edges, moves);
+    facts.set(RoadmapFacts::seconds, build_seconds);
+    facts.set(RasterFacts::cells_per_axis, raster.cells_per_axis);
+    facts.set(RasterFacts::blocked_cells, raster.blocked_count());
+    facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));
   }
 };
 
@@ -73,7 +75,7 @@ PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOption
                        cell_text(r.raster, to));
       return;
     }
-    report.facts.set("raster.grid_cost", search.cost);
+    report.facts.set(RasterFacts::grid_cost, search.cost);
 
     return_if_valid(*r.cspace, polyline_through_turns(r.raster, query.start, search.path, query.goal),
                     "the grid path joined to start and goal", report);
@@ -82,12 +84,12 @@ PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOption
 
 PlannerEntry<TranslatingRobot> raster_planner_entry() {
   OptionTable<RasterOptions> table;
-  table.add("resolution", &RasterOptions::resolution, "cells per side of the bounds (n x n cells)");
+  table.add("resolution", &RasterOptions::resolution, "cells per side of the bounds (n x n cells)", in_range(1, static_cast<double>(max_cells_per_axis)));
   table.add("connectivity", &RasterOptions::connectivity, "8: moves to all 8 neighbours without cutting corners; 4: axis moves only",
             std::vector<std::pair<std::string, Connectivity>>{{"8", Connectivity::full}, {"4", Connectivity::axis_aligned}});
   add_search_options(table, &RasterOptions::search);
   return make_planner_entry<TranslatingRobot, RasterOptions>(
-      "raster", "seed 000's occupancy grid: the bounds cut into n x n exact cells, searched 8-connected",
+      "raster", "the course's graph-search homework's occupancy grid: the bounds cut into n x n exact cells, searched 8-connected",
       std::move(table), [](const CSpace& cspace, const RasterOptions& o) {
         return std::make_unique<RasterPlanner>(cspace, o);
       });

@@ -1,5 +1,5 @@
 #pragma once
-// Planning on a rasterised world (geometry/rasterize.hpp), as seed 000's search_start_goal does:
+// Planning on a rasterised world (geometry/rasterize.hpp), as the course's graph-search homework's search_start_goal does:
 // the world's bounds cut into n × n cells, a cell blocked when it meets a C-obstacle's interior;
 // start and goal snap to the nearest free cell centre, the implicit grid graph
 // (search/grid_graph.hpp) is searched between those cells, and the path is

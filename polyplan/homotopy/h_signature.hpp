@@ -1,6 +1,6 @@
 #pragma once
 // Homotopy classes of paths in a translating robot's free space, as words (Bhattacharya, Kumar &
-// Likhachev's h-signature; seed 003): each hole of the free space (a C-obstacle the free space
+// Likhachev's h-signature; the course's sampling-planner homework): each hole of the free space (a C-obstacle the free space
 // goes round) gets a reference point strictly inside it and a ray from there straight up; a path
 // reads a letter each time it crosses a ray, t_i from left to right and t_i' from right to left,
 // and its word, reduced in the free group (adjacent t_i t_i' cancel), names its homotopy class

@@ -5,6 +5,8 @@
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/homotopy/class_graph.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/homotopy/homotopy_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <limits>
 #include <set>
@@ -31,11 +33,11 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
   const Stopwatch querying;
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
-  facts.set("roadmap.kind", "homotopy");
-  facts.set("homotopy.rays", r.graph.signature().rays().size());
+  facts.set(RoadmapFacts::kind, "homotopy");
+  facts.set(HomotopyFacts::rays, r.graph.signature().rays().size());
   const auto finish = [&] {
-    facts.set("homotopy.classes", report.paths.size());
-    facts.set("query_seconds", querying.seconds());
+    facts.set(HomotopyFacts::classes, report.paths.size());
+    facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
   if (auto why = r.cspace->query_not_free(q)) {
@@ -57,14 +59,15 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
     if (!id) break;
     const auto& s = search.state(*id);
     if (s.vertex != goal || !met.insert(s.word).second) continue;
-    PlanPath<ExactPoint> found{search.path_to(*id), 0, {}};
+    PlanPath<ExactPoint> found{search.path_to(*id), 0, {}, {}};
     if (found.path.size() == 1) found.path.push_back(q.goal);
     found.length = euclidean_length(found.path);
-    found.facts.set("word", word_text(s.word));
+    found.label = word_text(s.word);
+    found.facts.set(HomotopyFacts::path_word, found.label);
     report.paths.push_back(std::move(found));
   }
-  facts.set("homotopy.states", search.states());
-  if (search.truncated()) facts.set("stopped_by", "state limit");
+  facts.set(HomotopyFacts::states, search.states());
+  if (search.truncated()) facts.set(QueryFacts::stopped_by, "state limit");
   if (report.paths.empty()) {
     if (search.truncated()) report.fail(PlanStatus::limit, "max-states (" + std::to_string(r.options.max_states) + ") ended the search before the goal");
     else report.fail(PlanStatus::not_found, "no path within max-length (" + detail::show_number(r.options.max_length) + ")");
@@ -72,26 +75,26 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
   }
   for (const auto& p : report.paths)
     if (const PathCheck check = check_path(*r.cspace, p.path); !check.valid)
-      throw std::logic_error("homotopy: a path of class " + p.facts.text("word") + " is not valid: " + check.reason);
+      throw std::logic_error("homotopy: a path of class " + p.label + " is not valid: " + check.reason);
   report.succeed();
   report.path = report.paths.front().path;
   report.length = report.paths.front().length;
   report.certificate = {true, "exact path check (arrangement zone walk) of visibility-graph segments"};
-  facts.set("homotopy.word", report.paths.front().facts.text("word"));
+  facts.set(HomotopyFacts::word, report.paths.front().label);
   if (query_options.record) report.marks.push_back({PlanMark<ExactPoint>::Kind::lines, "h-signature rays (t1, t2, ...)", r.graph.signature().ray_segments()});
   // What the program prints after its summary line: every class, by length.
   std::string note = std::to_string(report.paths.size()) + " class(es) by length:";
-  for (const auto& p : report.paths) note += " " + std::to_string(p.length) + " [" + p.facts.text("word") + "]";
+  for (const auto& p : report.paths) note += " " + std::to_string(p.length) + " [" + p.label + "]";
   if (report.paths.size() < r.options.classes) note += " (" + std::to_string(r.options.classes) + " asked for: no more within the bounds)";
-  facts.set("note", note);
+  facts.set(QueryFacts::note, note);
   return finish();
 }
 
 PlannerEntry<TranslatingRobot> homotopy_planner_entry() {
   OptionTable<HomotopyOptions> table;
-  table.add("classes", &HomotopyOptions::classes, "how many homotopy classes: the shortest path of each, in order of length");
-  table.add("max-length", &HomotopyOptions::max_length, "no path longer than this (0: no bound)");
-  table.add("max-states", &HomotopyOptions::max_states, "(vertex, word) states the search may make");
+  table.add("classes", &HomotopyOptions::classes, "how many homotopy classes: the shortest path of each, in order of length", at_least(1));
+  table.add("max-length", &HomotopyOptions::max_length, "no path longer than this (0: no bound)", at_least(0));
+  table.add("max-states", &HomotopyOptions::max_states, "(vertex, word) states the search may make", at_least(1));
   return make_planner_entry<TranslatingRobot, HomotopyOptions>(
       "homotopy", "the shortest path of each of the K shortest homotopy classes (h-signature words over the visibility graph)", std::move(table),
       [](const CSpace& cspace, const HomotopyOptions& o) { return std::make_unique<HomotopyPlanner>(cspace, o); });

@@ -5,6 +5,8 @@
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/homotopy/class_graph.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/homotopy/homotopy_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -69,9 +71,9 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   const Stopwatch querying;
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
-  facts.set("roadmap.kind", "tether");
+  facts.set(RoadmapFacts::kind, "tether");
   const auto finish = [&] {
-    facts.set("query_seconds", querying.seconds());
+    facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
   const ExactPoint base = r.base.value_or(q.start);
@@ -118,9 +120,9 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   for (auto id = robot.next(); id && !arrived; id = robot.next())
     if (robot.state(*id).vertex == g) arrived = id;
   const bool truncated = robot.truncated() || (tether && tether->search.truncated());
-  if (truncated) facts.set("stopped_by", "state limit");
+  if (truncated) facts.set(QueryFacts::stopped_by, "state limit");
   if (!arrived) {
-    if (tether) facts.set("tether.reachable", tether->search.states());
+    if (tether) facts.set(TetherFacts::reachable, tether->search.states());
     report.fail(truncated ? PlanStatus::limit : PlanStatus::no_path,
                 truncated ? "max-states ended the search" : "no class of tether within tether-length (" + detail::show_number(L) + ") lets the robot reach the goal");
     return finish();
@@ -142,11 +144,11 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
     shapes.push_back(tether->search.path_to(*at));
   }
   const auto& end = robot.state(*arrived);
-  facts.set("tether.word", word_text(end.word));
-  facts.set("tether.length", *tether->length(g, end.word));
-  facts.set("tether.largest", largest);
-  facts.set("tether.at_goal", points_text(shapes.back()));
-  facts.set("tether.reachable", tether->search.states());
+  facts.set(TetherFacts::word, word_text(end.word));
+  facts.set(TetherFacts::length, *tether->length(g, end.word));
+  facts.set(TetherFacts::largest, largest);
+  facts.set(TetherFacts::at_goal, points_text(shapes.back()));
+  facts.set(TetherFacts::reachable, tether->search.states());
   std::string note = "tether [" + word_text(end.word) + "] " + std::to_string(*tether->length(g, end.word)) + " long at the goal, at most " +
                      std::to_string(largest) + " on the way";
   if (r.options.list_classes) {
@@ -154,10 +156,10 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
     for (std::size_t id = 0; id < tether->search.states(); ++id)
       if (tether->search.state(id).vertex == g)
         classes += (classes.empty() ? "[" : "; [") + word_text(tether->search.state(id).word) + "] " + detail::show_number(tether->search.state(id).distance);
-    facts.set("tether.classes", classes);
+    facts.set(TetherFacts::classes, classes);
     note += "; the goal within L in the classes " + classes;
   }
-  facts.set("note", note);
+  facts.set(QueryFacts::note, note);
   if (query_options.record) {
     using Kind = PlanMark<ExactPoint>::Kind;
     report.marks.push_back({Kind::lines, "taut tether at the path's corners", shapes});
@@ -179,9 +181,9 @@ PlannerEntry<TranslatingRobot> tether_planner_entry() {
               o.tether_base = std::string(text);
               return std::nullopt;
             });
-  table.add("tether-length", &TetherOptions::tether_length, "the tether's length L: its taut shape is never longer (0: no bound)");
+  table.add("tether-length", &TetherOptions::tether_length, "the tether's length L: its taut shape is never longer (0: no bound)", at_least(0));
   table.add("list-classes", &TetherOptions::list_classes, "list every class of tether the goal is reached in within L (fact tether.classes)");
-  table.add("max-states", &TetherOptions::max_states, "(vertex, word) states each search may make");
+  table.add("max-states", &TetherOptions::max_states, "(vertex, word) states each search may make", at_least(1));
   return make_planner_entry<TranslatingRobot, TetherOptions>(
       "tether", "a robot on a taut tether of bounded length from a base: the shortest path keeping the tether within L (h-signature classes)",
       std::move(table), [](const CSpace& cspace, const TetherOptions& o) { return std::make_unique<TetherPlanner>(cspace, o); });

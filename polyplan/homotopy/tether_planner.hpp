@@ -1,5 +1,5 @@
 #pragma once
-// A tethered robot (seed 003, part 3), registered as `tether`: a tether anchored at `tether-base`
+// A tethered robot (the course's sampling-planner homework, part 3), registered as `tether`: a tether anchored at `tether-base`
 // (X,Y; default the query's start) stays taut, so it is the shortest path from the base to the
 // robot in its homotopy class, and may never be longer than `tether-length` L (0: no bound). A
 // configuration is the robot's position and the tether's word (homotopy/h_signature.hpp).

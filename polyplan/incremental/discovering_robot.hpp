@@ -40,7 +40,7 @@ struct GridPoint {
 
 enum class CellKnowledge : std::uint8_t { unknown, free, blocked };
 
-// One pass of a replan's search, in cells, as seed 002 works it by hand.
+// One pass of a replan's search, in cells, as the course's planning problem set works it by hand.
 struct ReplanTracePass {
   struct Cell {
     GridPoint at;

@@ -5,6 +5,9 @@
 #include <polyplan/geometry/rasterize.hpp>
 #include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/incremental/replan_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -141,7 +144,7 @@ struct ReplanningPlanner::Impl {
     const std::string cell = cell_text(static_cast<std::size_t>(at.x), static_cast<std::size_t>(at.y));
     const std::string after = "after " + std::to_string(drive.moves) + " moves";
     if (drive.status == PlanStatus::limit) {
-      report.facts.set("stopped_by", "move limit");
+      report.facts.set(QueryFacts::stopped_by, "move limit");
       report.fail(PlanStatus::limit, after + ": the move limit ended the drive at cell " + cell);
     } else if (drive.truth.is_blocked(at.x, at.y)) {
       report.fail(PlanStatus::not_found, after + ", the world of " + made_text(last) + " blocks the robot's own cell " + cell);
@@ -153,14 +156,14 @@ struct ReplanningPlanner::Impl {
   }
 
   void record_facts(const ReplanResult& drive, std::size_t lived, Facts& facts) const {
-    facts.set("replan.moves", drive.moves);
-    facts.set("replan.replans", drive.replans);
-    facts.set("replan.changes_made", phases[lived - 1].made);
-    facts.set("replan.grid_cost", drive.traversed_cost.to_double());
-    facts.set("search.expanded", drive.expanded);
-    facts.set("search.generated", drive.generated);
-    facts.set("search.heap_operations", drive.heap_operations);
-    facts.set("search.seconds", drive.seconds);
+    facts.set(ReplanFacts::moves, drive.moves);
+    facts.set(ReplanFacts::replans, drive.replans);
+    facts.set(ReplanFacts::changes_made, phases[lived - 1].made);
+    facts.set(ReplanFacts::grid_cost, drive.traversed_cost.to_double());
+    facts.set(SearchFacts::expanded, drive.expanded);
+    facts.set(SearchFacts::generated, drive.generated);
+    facts.set(SearchFacts::heap_operations, drive.heap_operations);
+    facts.set(SearchFacts::seconds, drive.seconds);
   }
 };
 
@@ -175,13 +178,13 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
   const Raster& first = r.phases.front().raster;
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
-  facts.set("roadmap.kind", replanning_planner_name(r.algorithm));
-  facts.set("raster.cells_per_axis", first.cells_per_axis);
-  facts.set("raster.blocked_cells", first.blocked_count());
-  facts.set("replan.algorithm", std::string(to_string(r.algorithm)));
-  facts.set("replan.sensor_cells", r.options.sensor);  // 0: the whole raster
+  facts.set(RoadmapFacts::kind, replanning_planner_name(r.algorithm));
+  facts.set(RasterFacts::cells_per_axis, first.cells_per_axis);
+  facts.set(RasterFacts::blocked_cells, first.blocked_count());
+  facts.set(ReplanFacts::algorithm, std::string(to_string(r.algorithm)));
+  facts.set(ReplanFacts::sensor_cells, r.options.sensor);  // 0: the whole raster
   const auto finish = [&] {
-    facts.set("query_seconds", querying.seconds());
+    facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
   const auto snapped = snap_query(*r.cspace, first, query, report);
@@ -211,9 +214,9 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
 
 PlannerEntry<TranslatingRobot> replanning_planner_entry(ReplanAlgorithm algorithm) {
   OptionTable<ReplanningOptions> table;
-  table.add("resolution", &ReplanningOptions::resolution, "cells per side of the bounds (n x n cells)")
-      .add("sensor", &ReplanningOptions::sensor, "sensing radius in cells (at least 1.41421357), 0: the robot sees the whole raster")
-      .add("max-moves", &ReplanningOptions::max_moves, "moves before the drive stops with status limit (0: 4 x the cells)");
+  table.add("resolution", &ReplanningOptions::resolution, "cells per side of the bounds (n x n cells)", in_range(1, static_cast<double>(max_cells_per_axis)))
+      .add("sensor", &ReplanningOptions::sensor, "sensing radius in cells (at least 1.41421357), 0: the robot sees the whole raster", at_least(0))
+      .add("max-moves", &ReplanningOptions::max_moves, "moves before the drive stops with status limit (0: 4 x the cells)", at_least(1));
   static constexpr const char* how[] = {"D* Lite (Koenig & Likhachev), the start moving with the robot",
                                         "LPA*, re-keyed each time the robot has moved", "A* from scratch at every replan"};
   PlannerEntry<TranslatingRobot> entry = make_planner_entry<TranslatingRobot, ReplanningOptions>(

@@ -1,5 +1,5 @@
 #pragma once
-// Reading arm files (DESIGN.md "Arm file"):
+// Reading arm files (docs/design.md "Arm file"):
 //
 //   {"links": [5, 5], "link_width": 0.5, "self_collision": false,
 //    "limits": [[lo, hi], [lo, hi]],

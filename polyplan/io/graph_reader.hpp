@@ -1,5 +1,5 @@
 #pragma once
-// Reading graphs in seed 000's graph_vector format: a JSON list of vertices,
+// Reading graphs in the course's graph-search homework's graph_vector format: a JSON list of vertices,
 //
 //   [ {"x": [0, 0], "neighbors": [1, 2], "neighbors_cost": [1, 1.5]},
 //     {"x": [1, 0], "neighbors": [0],    "neighbors_cost": [1]}, ... ]

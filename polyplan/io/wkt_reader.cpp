@@ -19,7 +19,7 @@ namespace {
 //   ring     := "(" x y { "," x y } ")"
 //
 // Keywords in any case; no EMPTY, no Z or M coordinates. Numbers are read exactly, refused
-// outside the supported range, and then, as DESIGN.md says, rounded to the nearest double.
+// outside the supported range, and then, as docs/design.md says, rounded to the nearest double.
 class WktParser {
  public:
   WktParser(std::string_view text, std::string prefix) : text_(text), prefix_(std::move(prefix)) {}

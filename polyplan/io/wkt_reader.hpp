@@ -1,6 +1,6 @@
 #pragma once
 // POLYGON and MULTIPOLYGON obstacles from a WKT file (a world file's "obstacles_wkt"), keywords
-// in any case, a geometry on one line or several. As DESIGN.md says, numbers pass through double,
+// in any case, a geometry on one line or several. As docs/design.md says, numbers pass through double,
 // so WKT coordinates are exact only as the doubles they become; the JSON world format is the
 // exact one.
 #include <polyplan/geometry/world.hpp>

@@ -1,5 +1,5 @@
 #pragma once
-// Reading world and path files (DESIGN.md "World file"). Numbers are read exactly from their
+// Reading world and path files (docs/design.md "World file"). Numbers are read exactly from their
 // text. Every problem throws InputError with one line: file, object, what is wrong.
 #include <polyplan/geometry/world.hpp>
 

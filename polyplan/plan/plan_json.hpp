@@ -1,5 +1,5 @@
 #pragma once
-// The JSON object `polyplan plan` and `polyplan arm` print for one query (DESIGN.md "What the
+// The JSON object `polyplan plan` and `polyplan arm` print for one query (docs/design.md "What the
 // command-line program prints"), written from any planner's report:
 //
 //   {"query": "start/goal", "found": true, "length": 12.3456,

@@ -1,13 +1,17 @@
 #pragma once
 // What every planner answers for one query, whatever it plans over (a point in a polygon world,
 // a pose, the joint angles of an arm): its status, found or why not, the path and its length, how the
-// path was proved free, and the planner's facts as named values. One JSON writer
+// path was proved free, and the planner's facts, typed (plan/fact_key.hpp). One JSON writer
 // (plan/plan_json.hpp) prints any report and one draw_plan (draw/plan_svg.hpp) draws it,
 // neither knowing which planner made it.
+#include <polyplan/plan/fact_key.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -22,44 +26,66 @@ class CSpace;  // geometry/cspace.hpp
 // A fact's value: a flag, a count, a measure or a word.
 using FactValue = std::variant<bool, std::int64_t, double, std::string>;
 
-// The named values a planner reports beside its path: "roadmap.kind", "search.expanded",
-// "query_seconds", ... A dot nests: the JSON writer prints "roadmap.vertices" inside
-// {"roadmap": {...}}. Names keep the order in which they were first set.
-//
-// The words planners share (so that a reader finds them whatever the planner):
-//   roadmap.kind, roadmap.vertices, roadmap.edges, roadmap.seconds   the graph built once
-//   search.algorithm, search.expanded, search.generated, search.seconds   the graph search
-//   query_seconds   the whole query
-//   stopped_by   what ended a search that reached a limit: "time limit", "iteration limit", ...
-//   note   a remark on the answer that the command line prints after its summary line
+// The facts a planner reports beside its path, set and read through the keys its family declares
+// (plan/fact_key.hpp; the shared ones, search.expanded, roadmap.vertices, query_seconds,
+// stopped_by, note, ..., in plan/plan_facts.hpp). They keep the order in which they were first
+// set. A `note` is a remark on the answer that the command line prints after its summary line.
 class Facts {
  public:
-  // Integers become counts, floating point measures, text words. Replaces an earlier value.
-  template <class T>
-  void set(std::string_view name, const T& value) {
-    if constexpr (std::is_same_v<T, bool>) put(name, FactValue(value));
-    else if constexpr (std::is_integral_v<T>) put(name, FactValue(static_cast<std::int64_t>(value)));
-    else if constexpr (std::is_floating_point_v<T>) put(name, FactValue(static_cast<double>(value)));
-    else put(name, FactValue(std::string(value)));
+  // Sets a fact, replacing an earlier value: a flag from a bool, a count from any integer, a
+  // measure from any number, a word from text.
+  template <class T, class V>
+  void set(FactKey<T> key, const V& value) {
+    put(key.name, FactValue(converted<T>(value)));
   }
 
-  const FactValue* find(std::string_view name) const;
-  bool contains(std::string_view name) const { return find(name) != nullptr; }
-  // Typed reads; std::out_of_range naming the fact when it is missing or of another kind
-  // (number() reads counts too).
-  std::int64_t count(std::string_view name) const;
-  double number(std::string_view name) const;
-  const std::string& text(std::string_view name) const;
-  bool flag(std::string_view name) const;
+  // The fact's value; std::out_of_range naming it when the report has none.
+  template <class T>
+  const T& at(FactKey<T> key) const {
+    const FactValue* value = value_named(key.name);
+    if (!value) throw std::out_of_range("no fact \"" + std::string(key.name) + "\"");
+    return std::get<T>(*value);
+  }
+  // The same, or none.
+  template <class T>
+  std::optional<T> find(FactKey<T> key) const {
+    const FactValue* value = value_named(key.name);
+    return value ? std::optional<T>(std::get<T>(*value)) : std::nullopt;
+  }
+  template <class T>
+  bool contains(FactKey<T> key) const {
+    return value_named(key.name) != nullptr;
+  }
 
+  // Every fact in the order first set, for the writers that list them all (the JSON, a CSV's
+  // columns), and one by the name such a listing gave.
   const std::vector<std::pair<std::string, FactValue>>& entries() const { return entries_; }
+  const FactValue* value_named(std::string_view name) const;
 
  private:
+  template <class T, class V>
+  static T converted(const V& value) {
+    constexpr bool number = std::is_arithmetic_v<V> && !std::is_same_v<V, bool>;
+    if constexpr (std::is_same_v<T, bool>) {
+      static_assert(std::is_same_v<V, bool>, "a flag is set from a bool");
+      return value;
+    } else if constexpr (std::is_same_v<T, std::int64_t>) {
+      static_assert(number && std::is_integral_v<V>, "a count is set from an integer");
+      return static_cast<std::int64_t>(value);
+    } else if constexpr (std::is_same_v<T, double>) {
+      static_assert(number, "a measure is set from a number");
+      return static_cast<double>(value);
+    } else {
+      static_assert(std::is_convertible_v<const V&, std::string_view>, "a word is set from text");
+      return std::string(std::string_view(value));
+    }
+  }
+
   void put(std::string_view name, FactValue value);
   std::vector<std::pair<std::string, FactValue>> entries_;
 };
 
-// How a returned path was proved free for every configuration along it (DESIGN.md: motions are
+// How a returned path was proved free for every configuration along it (docs/design.md: motions are
 // certified, never sampled). Every polyplan planner certifies what it returns.
 struct Certificate {
   bool certified = false;
@@ -127,6 +153,7 @@ struct PlanPath {
   std::vector<Configuration> path;
   double length = 0;
   Facts facts;
+  std::string label;  // what the picture's legend calls it beside its number (a class's word)
 };
 
 // What became of a query, for a caller to branch on (OMPL's PlannerStatus is the model). Every

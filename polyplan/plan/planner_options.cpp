@@ -37,3 +37,14 @@ std::string show_number(double value) {
 }
 
 }  // namespace polyplan::detail
+
+namespace polyplan {
+
+std::string OptionRange::text() const {
+  const auto end = [](double x) {
+    return std::isinf(x) ? std::string(x < 0 ? "-inf" : "inf") : detail::show_number(x);
+  };
+  return (min_open ? "(" : "[") + end(min) + ", " + end(max) + (max_open ? ")" : "]");
+}
+
+}  // namespace polyplan

@@ -24,13 +24,31 @@
 
 namespace polyplan {
 
+// The values a number option may take: from min to max, either end open; an unbounded end is
+// infinite (and open).
+struct OptionRange {
+  double min = -std::numeric_limits<double>::infinity(), max = std::numeric_limits<double>::infinity();
+  bool min_open = true, max_open = true;
+
+  bool holds(double value) const {
+    return (min_open ? value > min : value >= min) && (max_open ? value < max : value <= max);
+  }
+  // "[0, 1]", "(0, inf)", "[4, 3600]": interval notation.
+  std::string text() const;
+};
+inline OptionRange in_range(double min, double max) { return {min, max, false, false}; }
+inline OptionRange at_least(double min) { return {min, std::numeric_limits<double>::infinity(), false, true}; }
+inline OptionRange above(double min) { return {min, std::numeric_limits<double>::infinity(), true, true}; }
+
 // What a listing says of one option.
 struct OptionInfo {
   std::string name;
   std::string description;
-  std::string kind;           // "whole number", "number", "true or false", "astar|dijkstra|..."
+  std::string kind;           // "whole number in [1, inf)", "number in [0, 1]", "true or false", "astar|dijkstra|..."
   std::string default_value;  // as text, from the options struct's defaults
   bool flag = false;          // true or false: the command line takes --NAME and --no-NAME
+  std::optional<OptionRange> range;  // a number's: every number option has one
+  std::vector<std::string> choices;  // an enumeration's names, in order
 };
 
 // NAME=VALUE pairs as the user gave them, in order.
@@ -58,15 +76,25 @@ std::string show_number(double value);                           // shortest tex
 template <class Options>
 class OptionTable {
  public:
-  // A member of type bool, an integer, a floating-point number, std::string or Search.
+  // A member of type bool, an integer, a floating-point number, std::string or Search. A number
+  // takes the values `range` allows (default: every value of its type); one outside is refused
+  // naming the option, the value and the range.
   template <class T>
-  OptionTable& add(std::string name, T Options::*member, std::string description) {
+  OptionTable& add(std::string name, T Options::*member, std::string description, std::optional<OptionRange> range = {}) {
     if constexpr (std::is_same_v<T, Search>) {
       return add(std::move(name), member, std::move(description), search_choices());
     } else {
-      Entry e{{std::move(name), std::move(description), kind_of<T>(), {}, std::is_same_v<T, bool>}, {}, {}};
+      if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+        if (!range) range = range_of<T>();
+      }
+      Entry e{{std::move(name), std::move(description), kind_of<T>(range), {}, std::is_same_v<T, bool>, range, {}}, {}, {}};
       e.show = [member](const Options& o) { return show(o.*member); };
-      e.set = [member](Options& o, std::string_view text) { return assign(o.*member, text); };
+      e.set = [member, range](Options& o, std::string_view text) -> std::optional<std::string> {
+        if (auto why = assign(o.*member, text)) return why;
+        if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>)
+          if (!range->holds(static_cast<double>(o.*member))) return "expected a " + kind_of<T>(range);
+        return std::nullopt;
+      };
       return push(std::move(e));
     }
   }
@@ -82,8 +110,12 @@ class OptionTable {
   template <class Field, class T>
   OptionTable& add_choice(std::string name, std::string description, Field field, Choices<T> names) {
     std::string kind;
-    for (const auto& [text, value] : names) kind += (kind.empty() ? "" : "|") + text;
-    Entry e{{std::move(name), std::move(description), kind, {}, false}, {}, {}};
+    std::vector<std::string> choices;
+    for (const auto& [text, value] : names) {
+      kind += (kind.empty() ? "" : "|") + text;
+      choices.push_back(text);
+    }
+    Entry e{{std::move(name), std::move(description), kind, {}, false, std::nullopt, std::move(choices)}, {}, {}};
     e.show = [field, names](const Options& o) {
       for (const auto& [text, value] : names)
         if (value == field(o)) return text;
@@ -100,11 +132,13 @@ class OptionTable {
     return push(std::move(e));
   }
 
-  // Any other option: how to show its value and how text sets it (nullopt: set; else why not).
+  // Any other option: how to show its value and how text sets it (nullopt: set; else why not);
+  // `range`, for a number, is what listings show (the setter checks it).
   OptionTable& add(std::string name, std::string description, std::string kind,
                    std::function<std::string(const Options&)> show,
-                   std::function<std::optional<std::string>(Options&, std::string_view)> set) {
-    return push(Entry{{std::move(name), std::move(description), std::move(kind), {}, false}, std::move(show), std::move(set)});
+                   std::function<std::optional<std::string>(Options&, std::string_view)> set,
+                   std::optional<OptionRange> range = {}) {
+    return push(Entry{{std::move(name), std::move(description), std::move(kind), {}, false, range, {}}, std::move(show), std::move(set)});
   }
 
   // Every option, its default read from a default-constructed Options.
@@ -153,11 +187,19 @@ class OptionTable {
   }
 
   template <class T>
-  static std::string kind_of() {
+  static std::string kind_of(const std::optional<OptionRange>& range) {
     if constexpr (std::is_same_v<T, bool>) return "true or false";
-    else if constexpr (std::is_integral_v<T>) return std::is_unsigned_v<T> ? "whole number >= 0" : "whole number";
-    else if constexpr (std::is_floating_point_v<T>) return "number";
+    else if constexpr (std::is_integral_v<T>) return "whole number in " + range->text();
+    else if constexpr (std::is_floating_point_v<T>) return "number in " + range->text();
     else return "text";
+  }
+
+  // Every value of the type: [0, inf) for an unsigned whole number (its own greatest value is
+  // refused as out of range when read), any finite number otherwise.
+  template <class T>
+  static OptionRange range_of() {
+    if constexpr (std::is_unsigned_v<T>) return at_least(0);
+    else return {};
   }
 
   template <class T>
@@ -200,14 +242,17 @@ template <class Options>
 OptionTable<Options>& add_search_options(OptionTable<Options>& table, SearchOptions Options::*member) {
   table.add_choice("search", "graph search: A*, Dijkstra, BFS, DFS, greedy best-first, weighted A*",
                    [member](auto& o) -> auto& { return (o.*member).algorithm; }, search_choices());
-  table.add("weight", "weighted A*: f = g + weight * h", std::string("number >= 1"),
-            [member](const Options& o) { return detail::show_number((o.*member).weight); },
-            [member](Options& o, std::string_view text) -> std::optional<std::string> {
-              const auto weight = detail::parse_real_number(text);
-              if (!weight || *weight < 1) return "expected a number of at least 1";
-              (o.*member).weight = *weight;
-              return std::nullopt;
-            });
+  const OptionRange weights = at_least(1);
+  table.add(
+      "weight", "weighted A*: f = g + weight * h", "number in " + weights.text(),
+      [member](const Options& o) { return detail::show_number((o.*member).weight); },
+      [member, weights](Options& o, std::string_view text) -> std::optional<std::string> {
+        const auto weight = detail::parse_real_number(text);
+        if (!weight || !weights.holds(*weight)) return "expected a number in " + weights.text();
+        (o.*member).weight = *weight;
+        return std::nullopt;
+      },
+      weights);
   return table;
 }
 

@@ -4,6 +4,7 @@
 // runs and written once, when the answer is known (tallied_query).
 #include <polyplan/plan/plan_report.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <cstddef>
 
@@ -21,10 +22,10 @@ class QueryTally {
 
   // The counts (0 when nothing was searched) and the time since the tally was made.
   void write(Facts& facts) const {
-    facts.set("search.expanded", expanded_);
-    facts.set("search.generated", generated_);
-    facts.set("search.seconds", search_seconds_);
-    facts.set("query_seconds", querying_.seconds());
+    facts.set(SearchFacts::expanded, expanded_);
+    facts.set(SearchFacts::generated, generated_);
+    facts.set(SearchFacts::seconds, search_seconds_);
+    facts.set(QueryFacts::seconds, querying_.seconds());
   }
 
  private:

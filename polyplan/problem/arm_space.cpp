@@ -5,6 +5,8 @@
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
 
+#include <cstdio>
+
 namespace polyplan::detail {
 namespace {
 
@@ -72,6 +74,17 @@ class ArmDoor final : public SpaceDoor<PlanarArm> {
   std::size_t columns(const Problem& problem) const override { return problem.arm()->arm.joints(); }
   std::string_view steps() const override { return "motion"; }
   std::string_view unit() const override { return " rad"; }
+
+  // A path to a goal point: which inverse-kinematics solution it reached, and how near the hand is.
+  std::string summary(const Facts& facts) const override {
+    const auto error = facts.find(GoalFacts::error);
+    const auto reached = facts.find(GoalFacts::reached), candidates = facts.find(GoalFacts::candidates);
+    if (!error || !reached || !candidates) return "";
+    char goal[160];
+    std::snprintf(goal, sizeof goal, ", ends at IK solution %lld of %lld (goal.reached %lld), the hand %.2g from the goal point",
+                  static_cast<long long>(*reached + 1), static_cast<long long>(*candidates), static_cast<long long>(*reached), *error);
+    return goal;
+  }
 };
 
 }  // namespace

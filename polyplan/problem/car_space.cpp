@@ -1,6 +1,7 @@
 // The front door of a car steering among polygons.
 #include <polyplan/problem/detail/world_door.hpp>
 
+#include <polyplan/car/car_facts.hpp>
 #include <polyplan/draw/car_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
@@ -11,6 +12,10 @@ namespace {
 class CarDoor final : public WorldDoor<SteeredCar> {
  public:
   std::string_view file() const override { return "CAR_WORLD.json"; }
+  std::string summary(const Facts& facts) const override {
+    const auto changes = facts.find(CarFacts::gear_changes);
+    return changes ? ", " + std::to_string(*changes) + " gear change(s)" : "";
+  }
   bool plans(const Problem& problem) const override { return problem.world() && problem.world()->robot.car; }
   const World& built_from(const Problem& problem) const override { return *problem.world(); }
 

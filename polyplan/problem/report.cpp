@@ -2,6 +2,7 @@
 
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/problem/detail/space_door.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -28,24 +29,15 @@ Rows rows_of(const std::vector<Configuration>& configurations) {
 }
 
 // ", astar expanded 9 of 26 generated, roadmap 58 vertices 108 edges": the shared facts a
-// report has (plan/plan_report.hpp).
+// report has (plan/plan_facts.hpp).
 std::string facts_summary(const Facts& facts) {
   std::string line;
-  if (facts.contains("search.algorithm") && facts.contains("search.expanded") && facts.contains("search.generated"))
-    line += ", " + facts.text("search.algorithm") + " expanded " + std::to_string(facts.count("search.expanded")) + " of " +
-            std::to_string(facts.count("search.generated")) + " generated";
-  if (facts.contains("roadmap.vertices") && facts.contains("roadmap.edges"))
-    line += ", roadmap " + std::to_string(facts.count("roadmap.vertices")) + " vertices " +
-            std::to_string(facts.count("roadmap.edges")) + " edges";
-  if (facts.contains("gear_changes")) line += ", " + std::to_string(facts.count("gear_changes")) + " gear change(s)";
-  if (facts.contains("goal.error") && facts.contains("goal.reached") && facts.contains("goal.candidates")) {
-    char goal[160];
-    std::snprintf(goal, sizeof goal, ", ends at IK solution %lld of %lld (goal.reached %lld), the hand %.2g from the goal point",
-                  static_cast<long long>(facts.count("goal.reached") + 1), static_cast<long long>(facts.count("goal.candidates")),
-                  static_cast<long long>(facts.count("goal.reached")), facts.number("goal.error"));
-    line += goal;
-  }
-  if (facts.contains("note")) line += "; " + facts.text("note");
+  const auto algorithm = facts.find(SearchFacts::algorithm);
+  const auto expanded = facts.find(SearchFacts::expanded), generated = facts.find(SearchFacts::generated);
+  if (algorithm && expanded && generated)
+    line += ", " + *algorithm + " expanded " + std::to_string(*expanded) + " of " + std::to_string(*generated) + " generated";
+  const auto vertices = facts.find(RoadmapFacts::vertices), edges = facts.find(RoadmapFacts::edges);
+  if (vertices && edges) line += ", roadmap " + std::to_string(*vertices) + " vertices " + std::to_string(*edges) + " edges";
   return line;
 }
 
@@ -121,21 +113,32 @@ nlohmann::json Report::to_json() const {
   return std::visit([&](const auto& r) { return plan_json(r, query_); }, typed_);
 }
 
+nlohmann::json Report::facts_json() const {
+  nlohmann::json all = to_json();
+  for (const char* answer : {"query", "found", "status", "length", "path", "path_exact", "segments", "why_not", "certified", "certified_by"})
+    all.erase(answer);
+  return all;
+}
+
 std::string Report::summary() const {
   if (!found()) return query_ + ": no path (" + why_not() + ")";
   std::string_view steps = "segment", unit;
+  std::string more;  // the space's own words
   detail::any_space([&](auto tag) {
     using Space = typename decltype(tag)::Space;
     if (Space::description != space_) return false;
     steps = detail::space_door<Space>().steps();
     unit = detail::space_door<Space>().unit();
+    more = detail::space_door<Space>().summary(facts());
     return true;
   });
   const std::size_t moves = std::visit([](const auto& r) { return r.path.size() - 1; }, typed_);
   char text[128];
   std::snprintf(text, sizeof text, "%s: length %.6f%.*s, %zu %.*s(s)", query_.c_str(), length(), static_cast<int>(unit.size()),
                 unit.data(), moves, static_cast<int>(steps.size()), steps.data());
-  return text + facts_summary(facts());
+  std::string line = text + facts_summary(facts()) + more;
+  if (const auto note = facts().find(QueryFacts::note)) line += "; " + *note;
+  return line;
 }
 
 }  // namespace polyplan

@@ -75,6 +75,10 @@ class Report {
   std::vector<TracedExpansion> trace() const;
   // The JSON object `polyplan plan --json` prints for this query (plan/plan_json.hpp).
   nlohmann::json to_json() const;
+  // That object without the answer's own keys (query, found, status, length, path, path_exact,
+  // segments, why_not, certified, certified_by): the facts, nested, the clearance and
+  // bottleneck, a planner's further paths.
+  nlohmann::json facts_json() const;
   // The program's line for people: "start/goal: length 12.345678, 3 segment(s), ...".
   std::string summary() const;
 

@@ -2,6 +2,8 @@
 
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/walk_report.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <algorithm>
 #include <optional>
@@ -93,7 +95,7 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
   const std::string name = r.kind == BugKind::bug1 ? "bug1" : "bug2";
-  facts.set("roadmap.kind", name);
+  facts.set(RoadmapFacts::kind, name);
   Walk walk(q.start);
   std::set<std::size_t> met;
   const auto finish = [&](bool arrived) {
@@ -102,8 +104,8 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
     for (const std::size_t c : met)
       bound += r.kind == BugKind::bug1 ? 1.5 * r.boundary.perimeter(c)
                                        : 0.5 * static_cast<double>(r.boundary.crossings(c, q.start, q.goal)) * r.boundary.perimeter(c);
-    facts.set("bug.bound", bound);
-    facts.set("query_seconds", querying.seconds());
+    facts.set(BugFacts::bound, bound);
+    facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
   if (auto why = r.boundary.cspace().query_not_free(q)) {
@@ -115,7 +117,7 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
     const auto hit = r.first_hit(at, q.goal);
     if (!hit) break;
     if (walk.hits.size() >= r.options.max_hits) {
-      facts.set("stopped_by", "hit limit");
+      facts.set(QueryFacts::stopped_by, "hit limit");
       report.fail(PlanStatus::limit, "the hit limit (" + std::to_string(r.options.max_hits) + ") ended the walk at " + text(at));
       return finish(false);
     }
@@ -147,7 +149,7 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
 
 PlannerEntry<TranslatingRobot> bug_planner_entry(BugKind kind) {
   OptionTable<BugOptions> table;
-  table.add("max-hits", &BugOptions::max_hits, "obstacles hit before the walk stops with status limit");
+  table.add("max-hits", &BugOptions::max_hits, "obstacles hit before the walk stops with status limit", at_least(1));
   const bool one = kind == BugKind::bug1;
   return make_planner_entry<TranslatingRobot, BugOptions>(
       one ? "bug1" : "bug2",

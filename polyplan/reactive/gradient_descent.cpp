@@ -3,6 +3,7 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/geometry/shared_component.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -93,13 +94,13 @@ bool answered_before_descent(const CSpace& cspace, const Query& query, PlanRepor
   return false;
 }
 
-void report_descent(const CSpace& cspace, Descent descent, const std::string& prefix, bool record, const std::string& why_suffix,
+void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record, const std::string& why_suffix,
                     PlanReport<ExactPoint>& report) {
   if (record) report.expanded = descent.path;  // the picture shows the descent, wherever it stopped
-  report.facts.set(prefix + ".steps", descent.path.size() - 1);
-  report.facts.set(prefix + ".stopped_at", point_text(approximate(descent.path.back())));
+  report.facts.set(keys.steps, descent.path.size() - 1);
+  report.facts.set(keys.stopped_at, point_text(approximate(descent.path.back())));
   if (descent.status != PlanStatus::solved) {
-    if (descent.status == PlanStatus::limit) report.facts.set("stopped_by", "step limit");
+    if (descent.status == PlanStatus::limit) report.facts.set(QueryFacts::stopped_by, "step limit");
     report.fail(descent.status, descent.why + why_suffix);
     return;
   }

@@ -13,6 +13,7 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/plan/plan_report.hpp>
 #include <polyplan/geometry/clearance.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <cstddef>
 #include <functional>
@@ -55,12 +56,12 @@ Descent descend(const CSpace& cspace, const Query& query, const SlopeFunction& s
 // proved).
 bool answered_before_descent(const CSpace& cspace, const Query& query, PlanReport<ExactPoint>& report);
 
-// The descent as a planner's answer: the facts PREFIX.steps and PREFIX.stopped_at, its steps as
+// The descent as a planner's answer: the facts `keys` (its steps and where it stopped), its steps as
 // the expanded configurations when `record`, and the path (certified: every step was checked
 // exactly as it was taken, and the whole path again, whose bends the steps alone cannot judge at
 // a pinch point) when solved, or the status and `why` (followed by `why_suffix`) otherwise —
 // stopped_by "step limit" for a limit.
-void report_descent(const CSpace& cspace, Descent descent, const std::string& prefix, bool record, const std::string& why_suffix,
+void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record, const std::string& why_suffix,
                     PlanReport<ExactPoint>& report);
 
 // "(x, y)" with six decimals.

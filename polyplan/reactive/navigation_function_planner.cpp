@@ -4,6 +4,8 @@
 #include <polyplan/reactive/gradient_descent.hpp>
 #include <polyplan/reactive/obstacle_field.hpp>
 #include <polyplan/reactive/potential_map.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <cmath>
 #include <optional>
@@ -112,10 +114,10 @@ PlanReport<ExactPoint> NavigationFunctionPlanner::plan(const Query& query, const
   const Stopwatch querying;
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
-  facts.set("roadmap.kind", "navigation-function");
-  facts.set("navigation.spheres", r.obstacles.size());
+  facts.set(RoadmapFacts::kind, "navigation-function");
+  facts.set(NavigationFacts::spheres, r.obstacles.size());
   const auto finish = [&] {
-    facts.set("query_seconds", querying.seconds());
+    facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
   if (answered_before_descent(*r.cspace, query, report)) return finish();
@@ -130,17 +132,17 @@ PlanReport<ExactPoint> NavigationFunctionPlanner::plan(const Query& query, const
     descent = r.descend(query, k);
     if (descent.status == PlanStatus::solved || descent.status == PlanStatus::not_found) break;
   }
-  facts.set("navigation.kappa", kappa);
-  report_descent(*r.cspace, std::move(descent), "navigation", options.record, " (kappa " + std::to_string(kappa) + ")", report);
+  facts.set(NavigationFacts::kappa, kappa);
+  report_descent(*r.cspace, std::move(descent), NavigationFacts::descent, options.record, " (kappa " + std::to_string(kappa) + ")", report);
   return finish();
 }
 
 PlannerEntry<TranslatingRobot> navigation_function_planner_entry() {
   OptionTable<NavigationFunctionOptions> table;
-  table.add("kappa", &NavigationFunctionOptions::kappa, "the navigation function's kappa (0: the smallest of 2, 4, ..., 64 that reaches the goal)")
-      .add("step", &NavigationFunctionOptions::step, "the longest step (0: 1/200 of the world's diagonal)")
-      .add("max-steps", &NavigationFunctionOptions::max_steps, "steps before the descent stops with status limit")
-      .add("patience", &NavigationFunctionOptions::patience, "steps without getting closer to the goal before it is a local minimum");
+  table.add("kappa", &NavigationFunctionOptions::kappa, "the navigation function's kappa (0: the smallest of 2, 4, ..., 64 that reaches the goal)", at_least(0))
+      .add("step", &NavigationFunctionOptions::step, "the longest step (0: 1/200 of the world's diagonal)", at_least(0))
+      .add("max-steps", &NavigationFunctionOptions::max_steps, "steps before the descent stops with status limit", at_least(1))
+      .add("patience", &NavigationFunctionOptions::patience, "steps without getting closer to the goal before it is a local minimum", at_least(1));
   return make_planner_entry<TranslatingRobot, NavigationFunctionOptions>(
       "navigation-function", "descent on Rimon and Koditschek's navigation function of the discs around the C-obstacles (sphere worlds)",
       std::move(table), [](const CSpace& cspace, const NavigationFunctionOptions& o) { return std::make_unique<NavigationFunctionPlanner>(cspace, o); });

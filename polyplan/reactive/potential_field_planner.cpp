@@ -4,6 +4,8 @@
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/gradient_descent.hpp>
 #include <polyplan/reactive/potential_map.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -71,31 +73,31 @@ PlanReport<ExactPoint> PotentialFieldPlanner::plan(const Query& query, const Que
   const Stopwatch querying;
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
-  facts.set("roadmap.kind", "potential-field");
-  facts.set("potential.step", r.step);
+  facts.set(RoadmapFacts::kind, "potential-field");
+  facts.set(PotentialFacts::step, r.step);
   const auto finish = [&] {
-    facts.set("query_seconds", querying.seconds());
+    facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
   if (options.record) report.cells = r.heat_map(query);
   if (answered_before_descent(*r.cspace, query, report)) return finish();
   Descent descent = r.descend(query);
-  facts.set("potential.gradient", std::hypot(descent.last.gradient.x, descent.last.gradient.y));
-  facts.set("potential.value", descent.last.value);
-  report_descent(*r.cspace, std::move(descent), "potential", options.record, "", report);
+  facts.set(PotentialFacts::gradient, std::hypot(descent.last.gradient.x, descent.last.gradient.y));
+  facts.set(PotentialFacts::value, descent.last.value);
+  report_descent(*r.cspace, std::move(descent), PotentialFacts::descent, options.record, "", report);
   return finish();
 }
 
 PlannerEntry<TranslatingRobot> potential_field_planner_entry() {
   OptionTable<PotentialFieldOptions> table;
-  table.add("zeta", &PotentialFieldOptions::zeta, "weight of the goal's attraction")
-      .add("d-star", &PotentialFieldOptions::d_star, "quadratic attraction within this distance of the goal, conic beyond (0: conic everywhere)")
-      .add("eta", &PotentialFieldOptions::eta, "weight of each obstacle's repulsion")
-      .add("q-star", &PotentialFieldOptions::q_star, "an obstacle farther than this does not repel")
-      .add("step", &PotentialFieldOptions::step, "the longest step (0: 1/200 of the world's diagonal)")
-      .add("goal-tolerance", &PotentialFieldOptions::goal_tolerance, "solved within this distance of the goal (0: the step)")
-      .add("max-steps", &PotentialFieldOptions::max_steps, "steps before the descent stops with status limit")
-      .add("patience", &PotentialFieldOptions::patience, "steps without getting closer to the goal before it is a local minimum");
+  table.add("zeta", &PotentialFieldOptions::zeta, "weight of the goal's attraction", above(0))
+      .add("d-star", &PotentialFieldOptions::d_star, "quadratic attraction within this distance of the goal, conic beyond (0: conic everywhere)", at_least(0))
+      .add("eta", &PotentialFieldOptions::eta, "weight of each obstacle's repulsion", at_least(0))
+      .add("q-star", &PotentialFieldOptions::q_star, "an obstacle farther than this does not repel", at_least(0))
+      .add("step", &PotentialFieldOptions::step, "the longest step (0: 1/200 of the world's diagonal)", at_least(0))
+      .add("goal-tolerance", &PotentialFieldOptions::goal_tolerance, "solved within this distance of the goal (0: the step)", at_least(0))
+      .add("max-steps", &PotentialFieldOptions::max_steps, "steps before the descent stops with status limit", at_least(1))
+      .add("patience", &PotentialFieldOptions::patience, "steps without getting closer to the goal before it is a local minimum", at_least(1));
   return make_planner_entry<TranslatingRobot, PotentialFieldOptions>(
       "potential-field", "gradient descent on the goal's attraction and each C-obstacle's repulsion (Choset et al. ch. 4)",
       std::move(table), [](const CSpace& cspace, const PotentialFieldOptions& o) { return std::make_unique<PotentialFieldPlanner>(cspace, o); });

@@ -4,6 +4,8 @@
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/visibility_region.hpp>
 #include <polyplan/reactive/walk_report.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -165,8 +167,8 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
   const Stopwatch querying;
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
-  facts.set("roadmap.kind", "tangent-bug");
-  facts.set("tangent_bug.sensor_range", range_text(r.range));
+  facts.set(RoadmapFacts::kind, "tangent-bug");
+  facts.set(TangentBugFacts::sensor_range, range_text(r.range));
   Walk walk(q.start);
   Point at = q.start;
   double travelled = 0;
@@ -174,16 +176,16 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
   std::size_t stops = 0;
   std::vector<std::vector<Point>> sensed;
   const auto finish = [&](bool arrived) {
-    if (record) facts.set("tangent_bug.d_followed", std::sqrt(to_double(*record)));
-    facts.set("tangent_bug.stops", stops);
+    if (record) facts.set(TangentBugFacts::d_followed, std::sqrt(to_double(*record)));
+    facts.set(TangentBugFacts::stops, stops);
     if (query_options.record && !sensed.empty())
       report.marks.push_back({PlanMark<ExactPoint>::Kind::regions, "sensed (visibility within range) at the first stops", sensed});
     report_walk(report, r.boundary.cspace(), walk, q, arrived, query_options.record, "tangent-bug");
-    facts.set("query_seconds", querying.seconds());
+    facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
   const auto out_of_distance = [&](const std::string& doing) {
-    facts.set("stopped_by", "distance limit");
+    facts.set(QueryFacts::stopped_by, "distance limit");
     const std::string followed = record ? ", d_followed " + detail::show_number(std::sqrt(to_double(*record))) : "";
     report.fail(PlanStatus::limit, "the walk reached max-distance (" + detail::show_number(r.options.max_distance) + ") at " + text(at) + doing + followed);
     return finish(false);
@@ -207,7 +209,7 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
   }
   for (;;) {
     if (++stops > r.options.max_stops) {
-      facts.set("stopped_by", "stop limit");
+      facts.set(QueryFacts::stopped_by, "stop limit");
       report.fail(PlanStatus::limit, "the stop limit (" + std::to_string(r.options.max_stops) + ") ended the walk at " + text(at));
       return finish(false);
     }
@@ -267,9 +269,18 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
 
 PlannerEntry<TranslatingRobot> tangent_bug_planner_entry() {
   OptionTable<TangentBugOptions> table;
-  table.add("sensor-range", &TangentBugOptions::sensor_range, "the range sensor's radius: a number >= 0 (0: touch only), or inf");
-  table.add("max-distance", &TangentBugOptions::max_distance, "the walk's length before it stops with status limit");
-  table.add("max-stops", &TangentBugOptions::max_stops, "stops (each one sensing) before the walk stops with status limit");
+  table.add(
+      "sensor-range", "the range sensor's radius: a number >= 0 (0: touch only), or inf", "number in [0, inf) or inf",
+      [](const TangentBugOptions& o) { return o.sensor_range; },
+      [](TangentBugOptions& o, std::string_view text) -> std::optional<std::string> {
+        const auto value = detail::parse_real_number(text);
+        if (text != "inf" && text != "infinity" && !(value && *value >= 0)) return "expected a number in [0, inf) or inf";
+        o.sensor_range = std::string(text);
+        return std::nullopt;
+      },
+      at_least(0));
+  table.add("max-distance", &TangentBugOptions::max_distance, "the walk's length before it stops with status limit", at_least(0));
+  table.add("max-stops", &TangentBugOptions::max_stops, "stops (each one sensing) before the walk stops with status limit", at_least(1));
   return make_planner_entry<TranslatingRobot, TangentBugOptions>(
       "tangent-bug", "TangentBug: to the goal or the best discontinuity its range sensor sees, following a boundary where that stops bringing it nearer (Kamon, Rivlin & Rimon)",
       std::move(table), [](const CSpace& cspace, const TangentBugOptions& o) { return std::make_unique<TangentBugPlanner>(cspace, o); });

@@ -14,7 +14,7 @@
 // free on its straight way to the goal within range: continuously for its own position along each
 // edge (exact: the rational point just past where its distance falls below d_followed), and at
 // each corner for the range. Going once round a boundary cycle without leaving proves the goal
-// unreachable (no_path). `max-distance` bounds the walk: seed 002's endless wall ends `limit`.
+// unreachable (no_path). `max-distance` bounds the walk: the course's planning problem set's endless wall ends `limit`.
 //
 // The robot senses at its stops (corners, hit and leave points), not continuously between them:
 // between stops it moves along one straight line, so every motion is a segment between rational

@@ -2,6 +2,7 @@
 
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 namespace polyplan::walk {
 namespace {
@@ -24,9 +25,9 @@ void mark(PlanReport<ExactPoint>& report, const Walk& walk, const Query& query, 
 
 void report_walk(PlanReport<ExactPoint>& report, const CSpace& cspace, const Walk& walk, const Query& query, bool arrived,
                  bool record, const std::string& name) {
-  report.facts.set("bug.hits", texts(walk.hits));
-  report.facts.set("bug.leaves", texts(walk.leaves));
-  report.facts.set("bug.distance", euclidean_length(walk.path));
+  report.facts.set(BugFacts::hits, texts(walk.hits));
+  report.facts.set(BugFacts::leaves, texts(walk.leaves));
+  report.facts.set(BugFacts::distance, euclidean_length(walk.path));
   if (record) mark(report, walk, query, arrived);
   if (!arrived) return;
   report.succeed();

@@ -7,6 +7,8 @@
 #include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/search/shortest_path.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/roadmaps/roadmap_facts.hpp>
 
 #include <algorithm>
 #include <stdexcept>
@@ -110,18 +112,18 @@ struct TrapezoidPlanner::Impl {
   }
 
   void record_facts(Facts& facts) const {
-    facts.set("roadmap.kind", "trapezoid");
-    facts.set("roadmap.vertices", start_slot);
-    facts.set("roadmap.edges", 2 * decomposition.walls().size());
-    facts.set("roadmap.seconds", build_seconds);
-    facts.set("trapezoid.cells", cell_count());
-    facts.set("trapezoid.walls", decomposition.walls().size());
+    facts.set(RoadmapFacts::kind, "trapezoid");
+    facts.set(RoadmapFacts::vertices, start_slot);
+    facts.set(RoadmapFacts::edges, 2 * decomposition.walls().size());
+    facts.set(RoadmapFacts::seconds, build_seconds);
+    facts.set(TrapezoidFacts::cells, cell_count());
+    facts.set(TrapezoidFacts::walls, decomposition.walls().size());
     const SweepCounts& sweep = decomposition.sweep();
-    facts.set("sweep.insertions", sweep.insertions);
-    facts.set("sweep.deletions", sweep.deletions);
-    facts.set("sweep.events", sweep.events());
-    facts.set("sweep.most_crossed", sweep.most_crossed);
-    facts.set("search.algorithm", to_string(options.search.algorithm));
+    facts.set(TrapezoidFacts::sweep_insertions, sweep.insertions);
+    facts.set(TrapezoidFacts::sweep_deletions, sweep.deletions);
+    facts.set(TrapezoidFacts::sweep_events, sweep.events());
+    facts.set(TrapezoidFacts::sweep_most_crossed, sweep.most_crossed);
+    facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));
   }
 };
 
@@ -173,10 +175,10 @@ PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOpt
     report.succeed();
     report.length = euclidean_length(report.path);
     report.certificate = {true, "exact path check (geometry/path_check)"};
-    report.facts.set("search.path_edges", report.path.size() - 1);
-    report.facts.set("trapezoid.channel_cells", channel_cells);
-    report.facts.set("trapezoid.zigzag_length", euclidean_length(zigzag));
-    report.facts.set("trapezoid.funnel_length", euclidean_length(funnel));
+    report.facts.set(SearchFacts::path_edges, report.path.size() - 1);
+    report.facts.set(TrapezoidFacts::channel_cells, channel_cells);
+    report.facts.set(TrapezoidFacts::zigzag_length, euclidean_length(zigzag));
+    report.facts.set(TrapezoidFacts::funnel_length, euclidean_length(funnel));
   });
 }
 

@@ -8,6 +8,7 @@
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/shortest_path.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -119,10 +120,10 @@ struct VisibilityGraph::Impl {
   }
 
   void record_facts(Facts& facts) const {
-    facts.set("roadmap.kind", kind_name());
-    facts.set("roadmap.vertices", corners);
-    facts.set("roadmap.edges", boost::num_edges(roadmap));
-    facts.set("roadmap.seconds", build_seconds);
+    facts.set(RoadmapFacts::kind, kind_name());
+    facts.set(RoadmapFacts::vertices, corners);
+    facts.set(RoadmapFacts::edges, boost::num_edges(roadmap));
+    facts.set(RoadmapFacts::seconds, build_seconds);
   }
 
   // Whether start and goal lie in one component of the free space (a blocked end lies in none).
@@ -181,7 +182,7 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, SearchOptions s
   Impl& g = *impl_;
   PlanReport<ExactPoint> answer = tallied_query<ExactPoint>([&](PlanReport<ExactPoint>& report, QueryTally& tally) {
     g.record_facts(report.facts);
-    report.facts.set("search.algorithm", to_string(search.algorithm));
+    report.facts.set(SearchFacts::algorithm, to_string(search.algorithm));
     if (options.record) report.graph = g.graph_picture();
     if (!g.share_a_component(query)) return g.refuse_unconnected(query, report);  // nothing to search
 
@@ -209,7 +210,7 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, SearchOptions s
     report.length = euclidean_length(report.path);
     report.certificate = {true, "exact path check (walk through the triangulated free space)"};
   });
-  answer.facts.set("search.path_edges", answer.path.empty() ? 0 : answer.path.size() - 1);
+  answer.facts.set(SearchFacts::path_edges, answer.path.empty() ? 0 : answer.path.size() - 1);
   return answer;
 }
 

@@ -9,6 +9,8 @@
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/search/shortest_path.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/roadmaps/roadmap_facts.hpp>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -61,13 +63,13 @@ struct VoronoiPlanner::Impl {
   }
 
   void record_facts(Facts& facts) const {
-    facts.set("roadmap.kind", "voronoi");
-    facts.set("roadmap.vertices", diagram.vertices().size());
-    facts.set("roadmap.edges", diagram.edges().size());
-    facts.set("roadmap.seconds", build_seconds);
-    facts.set("voronoi.sites", diagram.sites().size());
-    facts.set("voronoi.parabolic_edges", parabolic_edges);
-    facts.set("search.algorithm", to_string(options.search.algorithm));
+    facts.set(RoadmapFacts::kind, "voronoi");
+    facts.set(RoadmapFacts::vertices, diagram.vertices().size());
+    facts.set(RoadmapFacts::edges, diagram.edges().size());
+    facts.set(RoadmapFacts::seconds, build_seconds);
+    facts.set(VoronoiFacts::sites, diagram.sites().size());
+    facts.set(VoronoiFacts::parabolic_edges, parabolic_edges);
+    facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));
   }
 
   // The diagram, its parabolic arcs as the quadratic Bézier curves they are.
@@ -220,7 +222,7 @@ struct VoronoiPlanner::Impl {
     report.certificate = {true, "exact path check (geometry/path_check)"};
     const PathBottleneck narrowest = path_bottleneck(*cspace, report.path);
     report.bottleneck = Bottleneck{narrowest.at.x, narrowest.at.y, narrowest.clearance};
-    report.facts.set("search.path_edges", report.path.size() - 1);
+    report.facts.set(SearchFacts::path_edges, report.path.size() - 1);
   }
 };
 
@@ -254,7 +256,7 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
       // resolve (decimal.json's gap of 1e-17): the best clearance is below that resolution, and the
       // exact shortest path through the passage is as clear as any.
       report.path = g.exact_planner().plan(query).path;
-      report.facts.set("voronoi.narrows", true);
+      report.facts.set(VoronoiFacts::narrows, true);
       return g.certify(report);
     }
 
@@ -270,7 +272,7 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
     if (!result.found)  // cannot happen: the bottleneck joined them
       return report.fail(PlanStatus::not_found, "no path on the Voronoi diagram at the bottleneck clearance");
     report.path = g.path_along(result.path, pieces, clear, *bottleneck, query);
-    report.facts.set("voronoi.bottleneck", *bottleneck);
+    report.facts.set(VoronoiFacts::bottleneck, *bottleneck);
     g.certify(report);
   });
 }

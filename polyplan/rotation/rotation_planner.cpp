@@ -7,6 +7,8 @@
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/rotation/rotation_facts.hpp>
 
 #include <boost/graph/adjacency_list.hpp>
 
@@ -297,16 +299,16 @@ struct RotationPlanner::Impl {
   std::size_t fixed_vertices() const { return boost::num_vertices(graph) - query_pool.size(); }
 
   void record_facts(Facts& facts) const {
-    facts.set("roadmap.kind", "rotation-layers");
-    facts.set("roadmap.vertices", fixed_vertices());
-    facts.set("roadmap.edges", boost::num_edges(graph));
-    facts.set("roadmap.seconds", build_seconds);
-    facts.set("layers.count", layers.layers().size());
-    facts.set("layers.step", layers.orientations().step());
-    facts.set("layers.max_error_radians", max_error_radians);
-    facts.set("turn_layers.built", layers.turns().size());
-    facts.set("rotation_weight", weight);
-    facts.set("search.algorithm", to_string(options.search.algorithm));
+    facts.set(RoadmapFacts::kind, "rotation-layers");
+    facts.set(RoadmapFacts::vertices, fixed_vertices());
+    facts.set(RoadmapFacts::edges, boost::num_edges(graph));
+    facts.set(RoadmapFacts::seconds, build_seconds);
+    facts.set(RotationFacts::layers_count, layers.layers().size());
+    facts.set(RotationFacts::layers_step, layers.orientations().step());
+    facts.set(RotationFacts::layers_max_error_radians, max_error_radians);
+    facts.set(RotationFacts::turn_layers_built, layers.turns().size());
+    facts.set(RotationFacts::rotation_weight, weight);
+    facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));
   }
 
   // The pose angle of a node: its layer's, or a query end's own.
@@ -407,17 +409,17 @@ struct RotationPlanner::Impl {
   }
 
   void record_walk(WalkedPath& walked, Facts& facts) const {
-    facts.set("rotation", walked.turned);
-    facts.set("translation_length", walked.translated);
-    facts.set("layers.used", walked.layers_used.size());
+    facts.set(RotationFacts::rotation, walked.turned);
+    facts.set(RotationFacts::translation_length, walked.translated);
+    facts.set(RotationFacts::layers_used, walked.layers_used.size());
     // The actual angle of each layer the path uses (its exact rotation's), beside the nominal one.
     std::string actual;
     std::sort(walked.layers_used.begin(), walked.layers_used.end());
     for (std::size_t k : walked.layers_used)
       actual += (actual.empty() ? "" : ", ") + angle_text(layer(k).degrees) + " is " +
                 angle_text(layer(k).degrees + std::remainder(degrees_of(layer(k).rotation) - layer(k).degrees, 360.0));
-    facts.set("layers.actual", actual);
-    facts.set("turn_layers.used", walked.turns_used);
+    facts.set(RotationFacts::layers_actual, actual);
+    facts.set(RotationFacts::turn_layers_used, walked.turns_used);
   }
 };
 
@@ -487,7 +489,8 @@ PlannerEntry<RotatingRobot> rotation_planner_entry() {
               if (!step || *step <= 0) return "expected a number of degrees > 0";
               o.orientations.step = *step;
               return std::nullopt;
-            });
+            },
+            above(0));
   table.add("rotation-count", "number of orientations (0: one every rotation-step)", std::string("whole number >= 0"),
             [](const RotationOptions& o) { return std::to_string(o.orientations.count); },
             [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
@@ -495,7 +498,8 @@ PlannerEntry<RotatingRobot> rotation_planner_entry() {
               if (!count || *count < 0) return "expected a whole number >= 0";
               o.orientations.count = static_cast<std::size_t>(*count);
               return std::nullopt;
-            });
+            },
+            at_least(0));
   table.add("rotation-from", "first orientation, degrees", std::string("number"),
             [](const RotationOptions& o) { return detail::show_number(o.orientations.from); },
             [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
@@ -503,7 +507,8 @@ PlannerEntry<RotatingRobot> rotation_planner_entry() {
               if (!degrees) return "expected a number of degrees";
               o.orientations.from = *degrees;
               return std::nullopt;
-            });
+            },
+            OptionRange{});
   table.add("rotation-to", "last orientation, degrees (default and from + 360: the whole circle)", std::string("number"),
             [](const RotationOptions& o) {
               return o.orientations.to ? detail::show_number(*o.orientations.to) : std::string("from+360");
@@ -513,7 +518,8 @@ PlannerEntry<RotatingRobot> rotation_planner_entry() {
               if (!degrees) return "expected a number of degrees";
               o.orientations.to = *degrees;
               return std::nullopt;
-            });
+            },
+            OptionRange{});
   table.add("rotation-weight", "cost of turning per radian (default: the robot's radius)", std::string("number >= 0 or radius"),
             [](const RotationOptions& o) { return o.weight < 0 ? std::string("radius") : detail::show_number(o.weight); },
             [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
@@ -525,7 +531,8 @@ PlannerEntry<RotatingRobot> rotation_planner_entry() {
               if (!weight || *weight < 0) return "expected a number >= 0 or radius";
               o.weight = *weight;
               return std::nullopt;
-            });
+            },
+            at_least(0));
   add_search_options(table, &RotationOptions::search);
   return make_planner_entry<RotatingRobot, RotationOptions>(
       "rotation", "translations and certified turns over exact rotation layers (discretized rotation)", std::move(table),

@@ -1,6 +1,8 @@
 #include <polyplan/sampling/lazy_prm_planner.hpp>
 
 #include <polyplan/sampling/detail/sampled_roadmap.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <algorithm>
 
@@ -74,10 +76,10 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
     }
 
     Attempt attempt;
-    facts.set("roadmap.vertices", roadmap_.size());
-    facts.set("roadmap.edges", roadmap_.edges());
-    facts.set("searches", searches);
-    facts.set("edges_removed", removed);
+    facts.set(RoadmapFacts::vertices, roadmap_.size());
+    facts.set(RoadmapFacts::edges, roadmap_.edges());
+    facts.set(SamplingFacts::searches, searches);
+    facts.set(SamplingFacts::edges_removed, removed);
     if (record) attempt.graph = roadmap_.picture();
     if (path.empty()) {
       attempt.why_not = "no path of certified edges joined start and goal within " + budget.limit_reached();
@@ -96,7 +98,7 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
 template <class Space>
 PlannerEntry<Space> lazy_prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
   OptionTable<LazyPrmOptions> table;
-  table.add("k", &LazyPrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)");
+  table.add("k", &LazyPrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)", at_least(0));
   add_sampling_options(table);
   return make_sampling_entry<Space, LazyPrmOptions>(
       "lazyprm", "lazy PRM: edges certified only when the shortest path wants them, kept across queries", std::move(table),

@@ -1,6 +1,7 @@
 #include <polyplan/sampling/prm_planner.hpp>
 
 #include <polyplan/sampling/detail/sampled_roadmap.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <numeric>
 
@@ -60,8 +61,8 @@ class PrmPlanner final : public SamplingPlanner<Space> {
 
     Attempt attempt;
     const auto finish = [&] {
-      facts.set("roadmap.vertices", roadmap_.size());
-      facts.set("roadmap.edges", roadmap_.edges());
+      facts.set(RoadmapFacts::vertices, roadmap_.size());
+      facts.set(RoadmapFacts::edges, roadmap_.edges());
       if (record) attempt.graph = roadmap_.picture();
       return std::move(attempt);
     };
@@ -73,8 +74,8 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     const auto result = roadmap_.cheapest(start, joined, [&](std::size_t from, std::size_t to) {
       return options_.bidirectional ? roadmap_.search_both_ways(from, to) : roadmap_.search(from, to, options_.search);
     });
-    facts.set("search.algorithm", options_.bidirectional ? std::string("bidirectional dijkstra") : std::string(to_string(options_.search.algorithm)));
-    facts.set("search.expanded", result.expanded);
+    facts.set(SearchFacts::algorithm, options_.bidirectional ? std::string("bidirectional dijkstra") : std::string(to_string(options_.search.algorithm)));
+    facts.set(SearchFacts::expanded, result.expanded);
     for (std::size_t v : result.path) attempt.path.push_back(roadmap_.nodes()[v]);
     this->found(budget, this->length(attempt.path));
     return finish();
@@ -90,7 +91,7 @@ class PrmPlanner final : public SamplingPlanner<Space> {
 template <class Space>
 PlannerEntry<Space> prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
   OptionTable<PrmOptions> table;
-  table.add("k", &PrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)");
+  table.add("k", &PrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)", at_least(0));
   add_search_options(table, &PrmOptions::search);
   table.add("bidirectional", &PrmOptions::bidirectional, "search the roadmap with bidirectional Dijkstra instead");
   add_sampling_options(table);

@@ -1,4 +1,5 @@
 #include <polyplan/sampling/rrt_connect_planner.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <stdexcept>
 
@@ -63,9 +64,9 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
       }
       std::swap(grow, other);
     }
-    facts.set("tree_size", from_start.size() + from_goal.size());
-    facts.set("start_tree_size", from_start.size());
-    facts.set("goal_tree_size", from_goal.size());
+    facts.set(SamplingFacts::tree_size, from_start.size() + from_goal.size());
+    facts.set(SamplingFacts::start_tree_size, from_start.size());
+    facts.set(SamplingFacts::goal_tree_size, from_goal.size());
     if (record) attempt.graph = SamplingTree<Space>::picture({&from_start, &from_goal});
     if (!meeting) {
       attempt.why_not = "the trees did not meet within " + budget.limit_reached();
@@ -88,7 +89,7 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
 template <class Space>
 PlannerEntry<Space> rrt_connect_planner_entry(SamplingSpaceFactory<Space> make_space) {
   OptionTable<RrtConnectOptions> table;
-  table.add("step", &RrtConnectOptions::step, "the farthest one extension goes (0: a fifth of the space's extent)");
+  table.add("step", &RrtConnectOptions::step, "the farthest one extension goes (0: a fifth of the space's extent)", at_least(0));
   add_sampling_options(table);
   return make_sampling_entry<Space, RrtConnectOptions>(
       "rrtconnect", "two trees, from start and goal, that extend and connect, certified motions", std::move(table),

@@ -1,4 +1,5 @@
 #include <polyplan/sampling/rrt_planner.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -45,7 +46,7 @@ class RrtPlanner final : public SamplingPlanner<Space> {
       reached = tree.add(std::move(step.to), new_at, step.from, std::move(region));
       found = sample.goal && step.reaches_target;  // at that goal exactly: step_toward gave the target itself
     }
-    facts.set("tree_size", tree.size());
+    facts.set(SamplingFacts::tree_size, tree.size());
     if (record) attempt.graph = SamplingTree<Space>::picture({&tree});
     if (!found) {
       attempt.why_not = "the tree did not reach the goal within " + budget.limit_reached();

@@ -1,4 +1,5 @@
 #include <polyplan/sampling/rrt_star_planner.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -172,10 +173,10 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         this->found(budget, this->length(tree.path_from_root(*cheapest)));
       }
     }
-    facts.set("tree_size", tree.size());
-    facts.set("solutions", solutions);
-    facts.set("rewired", rewired);
-    facts.set("rewire", options_.rewire == Rewiring::k_nearest ? "k-nearest" : "radius");
+    facts.set(SamplingFacts::tree_size, tree.size());
+    facts.set(SamplingFacts::solutions, solutions);
+    facts.set(SamplingFacts::rewired, rewired);
+    facts.set(SamplingFacts::rewire, options_.rewire == Rewiring::k_nearest ? "k-nearest" : "radius");
     Attempt attempt;
     if (record) attempt.graph = SamplingTree<Space>::picture({&tree});
     const auto cheapest = cheapest_goal_node(goal_nodes, nodes);
@@ -199,7 +200,7 @@ PlannerEntry<Space> rrt_star_planner_entry(SamplingSpaceFactory<Space> make_spac
   OptionTable<RrtStarOptions> table;
   table.add("rewire", &RrtStarOptions::rewire, "the neighbours a new node may take as parent and rewire: k nearest or within a radius",
             std::vector<std::pair<std::string, Rewiring>>{{"k", Rewiring::k_nearest}, {"radius", Rewiring::radius}});
-  table.add("k", &RrtStarOptions::k, "rewire=k: the nearest neighbours a new node considers (0: ceil(e (1 + 1/d) log n), growing with the tree)");
+  table.add("k", &RrtStarOptions::k, "rewire=k: the nearest neighbours a new node considers (0: ceil(e (1 + 1/d) log n), growing with the tree)", at_least(0));
   add_tree_options(table);
   add_sampling_options(table);
   PlannerEntry<Space> entry = make_sampling_entry<Space, RrtStarOptions>(

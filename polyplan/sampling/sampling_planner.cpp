@@ -1,6 +1,8 @@
 #include <polyplan/sampling/sampling_planner.hpp>
 
 #include <polyplan/plan/planner_options.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -136,12 +138,12 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   samples_ = motions_checked_ = 0;
   improvements_.clear();
   Facts& facts = report.facts;
-  facts.set("roadmap.kind", name_);
-  facts.set("seed", limits_.seed);
+  facts.set(RoadmapFacts::kind, name_);
+  facts.set(SamplingFacts::seed, limits_.seed);
   const auto finish = [&] {
-    facts.set("samples", samples_);
-    facts.set("motions_checked", motions_checked_);
-    facts.set("query_seconds", budget.seconds());
+    facts.set(SamplingFacts::samples, samples_);
+    facts.set(SamplingFacts::motions_checked, motions_checked_);
+    facts.set(QueryFacts::seconds, budget.seconds());
     return std::move(report);
   };
   if (auto why = space_->query_not_free(query)) {
@@ -159,11 +161,11 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
 
   const std::vector<Configuration> goals = space_->goals(query);
   if (goals.empty()) throw std::logic_error("a sampling space gave a query it accepted no goal to reach");
-  if (goals.size() > 1) facts.set("goal.candidates", goals.size());
+  if (goals.size() > 1) facts.set(GoalFacts::candidates, goals.size());
 
   Attempt attempt = solve(query, goals, budget, facts, options.record);
-  facts.set("iterations", budget.used());
-  facts.set("stopped_by", budget.stopped_by());
+  facts.set(SamplingFacts::iterations, budget.used());
+  facts.set(QueryFacts::stopped_by, budget.stopped_by());
   report.graph = std::move(attempt.graph);
   if (attempt.path.empty()) {
     report.fail(PlanStatus::limit, std::move(attempt.why_not));
@@ -173,9 +175,9 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   if (!(attempt.path.front() == space_->start(query)) || !reached)
     throw std::logic_error("a sampling planner's path does not run from the query's start to one of its goals");
   if (attempt.path.size() == 1) attempt.path.push_back(goals[*reached]);  // the start is a goal: one motion of length 0
-  if (goals.size() > 1) facts.set("goal.reached", *reached);
-  facts.set("first_solution_seconds", improvements_.empty() ? budget.seconds() : improvements_.front().seconds);
-  facts.set("raw_length", length(attempt.path));
+  if (goals.size() > 1) facts.set(GoalFacts::reached, *reached);
+  facts.set(SamplingFacts::first_solution_seconds, improvements_.empty() ? budget.seconds() : improvements_.front().seconds);
+  facts.set(SamplingFacts::raw_length, length(attempt.path));
   std::vector<Configuration> path = limits_.shortcut ? shortcut(std::move(attempt.path)) : std::move(attempt.path);
 
   // Every motion was certified as the planner made it; certified once more as returned, so that

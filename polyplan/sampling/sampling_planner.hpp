@@ -53,9 +53,9 @@ template <class Options>
 OptionTable<Options>& add_sampling_options(OptionTable<Options>& table) {
   static_assert(std::is_base_of_v<SamplingLimits, Options>);
   return table.add("seed", static_cast<std::uint64_t Options::*>(&SamplingLimits::seed), "the random numbers' seed: one seed, one path")
-      .add("time", static_cast<double Options::*>(&SamplingLimits::time), "time limit per query, seconds")
+      .add("time", static_cast<double Options::*>(&SamplingLimits::time), "time limit per query, seconds", above(0))
       .add("iterations", static_cast<std::size_t Options::*>(&SamplingLimits::iterations),
-           "iteration limit per query: samples (prm, lazyprm) or extensions (trees)")
+           "iteration limit per query: samples (prm, lazyprm) or extensions (trees)", at_least(1))
       .add("shortcut", static_cast<bool Options::*>(&SamplingLimits::shortcut),
            "shorten the path with certified shortcuts (raw_length keeps the first path's length)");
 }

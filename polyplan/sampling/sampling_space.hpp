@@ -2,7 +2,7 @@
 // What the sampling planners (prm, lazyprm, rrt, rrtstar, rrtconnect) know of a configuration
 // space, and nothing more: how to sample it, how far apart two configurations are and how to steer
 // between them (on coordinates, by the space's metric), whether a configuration is free, and
-// whether the motion between two is free — certified, never sampled (DESIGN.md). Three spaces
+// whether the motion between two is free — certified, never sampled (docs/design.md). Three spaces
 // implement it: a translating robot in a polygon world (sampling/polygon_sampling_space.hpp: exact
 // positions, the exact segment test), a planar arm (arm/arm_sampling_space.hpp: joint angles on
 // the torus, conservative advancement) and a steered car (car/car_sampling_space.hpp: poses joined

@@ -7,7 +7,7 @@
 // The per-vertex state lives in a SearchWorkspace reused across queries; a visitor counts what a
 // course compares and stops the search at the goal by throwing (the BGL idiom), and on request
 // records the search's trace for watching it (SearchOptions::record_trace, search/search_trace.hpp)
-// and breaks ties of f as seed 000's queue does (SearchOptions::ties_first_discovered).
+// and breaks ties of f as the course's graph-search homework's queue does (SearchOptions::ties_first_discovered).
 //
 // Requirements on the graph: boost::graph_traits<Graph> describes an IncidenceGraph (out_edges,
 // source, target) whose vertex_descriptor is copyable, equality-comparable and hashable by the

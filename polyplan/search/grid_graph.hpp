@@ -1,7 +1,7 @@
 #pragma once
 // An implicit N-dimensional grid of cells as a Boost Graph IncidenceGraph, searched with the same
 // shortest_path as every roadmap (search/graph_search.hpp): MovingAI maps (2D, 8-connected), the
-// rasterised polygon worlds of seed 000, and the torus-shaped C-space of an n-link arm.
+// rasterised polygon worlds of the course's graph-search homework, and the torus-shaped C-space of an n-link arm.
 //
 // Nothing of the grid is stored but what it is given or what a search touched:
 // - axes are bounded ([0, n)) or wrapping (a circle: cell n-1 neighbours cell 0, e.g. a joint angle);

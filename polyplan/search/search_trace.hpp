@@ -1,5 +1,5 @@
 #pragma once
-// What a graph search did, step by step, for watching it (seed 000: "plots of the solution after
+// What a graph search did, step by step, for watching it (the course's graph-search homework: "plots of the solution after
 // every node expansion", g, h and f at each node, arrows for the backpointers). Recorded by every
 // algorithm of search/graph_search.hpp when SearchOptions::record_trace is set. No Boost here.
 //

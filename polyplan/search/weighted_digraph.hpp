@@ -1,7 +1,7 @@
 #pragma once
-// A directed graph given as seed 000's graph_vector: vertices at points of the plane, each with its
+// A directed graph given as the course's graph-search homework's graph_vector: vertices at points of the plane, each with its
 // out-neighbours and the cost of the move to each (costs need not be lengths, nor symmetric), and
-// the searches of search/graph_search.hpp on it with the Euclidean heuristic (seed 000's
+// the searches of search/graph_search.hpp on it with the Euclidean heuristic (the course's graph-search homework's
 // Graph.heuristic). Read one from a file with io/graph_reader.hpp.
 //
 //   const WeightedDigraph graph = make_weighted_digraph(read_graph("graph.json").vertices);
@@ -51,7 +51,7 @@ WeightedDigraph make_weighted_digraph(const VertexList& vertices) {
   return graph;
 }
 
-// Seed 000's heuristic: the Euclidean distance between the vertices' points, sqrt(dx² + dy²).
+// The course's graph-search homework's heuristic: the Euclidean distance between the vertices' points, sqrt(dx² + dy²).
 double euclidean_distance(const WeightedDigraph& graph, DigraphVertexId a, DigraphVertexId b);
 
 // options.algorithm from start to goal: weights the edges' costs, heuristic the Euclidean distance

@@ -54,12 +54,17 @@ __all__ = [
 
 
 class Option(NamedTuple):
-    """One option of a planner: polyplan.planner(name, problem, <name>=value)."""
+    """One option of a planner: polyplan.planner(name, problem, <name_with_underscores>=value).
+
+    range: for a number, (min, max, min_open, max_open) (an unbounded end is +-inf); a value
+    outside raises InputError before anything is built. choices: an enumeration's values."""
 
     name: str
-    kind: str       # "int", "number", "bool", "text" or a choice such as "astar|dijkstra|..."
+    kind: str       # "number in [0, 1]", "whole number in [1, inf)", "true or false", "astar|dijkstra|..."
     default: str    # the default as the program prints it
     help: str
+    range: Optional[tuple] = None
+    choices: List[str] = []
 
 
 class PlannerInfo(NamedTuple):
@@ -180,7 +185,7 @@ def _from_dict(cls, d, name):
 
 
 def _world_from_dict(d: dict, name: str = "<dict>") -> World:
-    """The world a dict describes, in the world file's format (DESIGN.md "World file").
+    """The world a dict describes, in the world file's format (docs/design.md "World file").
 
     Coordinates may be int, fractions.Fraction, decimal.Decimal, decimal strings ("0.1"), floats
     (the exact value of the double: 0.1 is 3602879701896397/36028797018963968) and numpy values
@@ -189,7 +194,7 @@ def _world_from_dict(d: dict, name: str = "<dict>") -> World:
 
 
 def _arm_from_dict(d: dict, name: str = "<dict>") -> Arm:
-    """The arm a dict describes, in the arm file's format (DESIGN.md "Arm file"); numbers as in
+    """The arm a dict describes, in the arm file's format (docs/design.md "Arm file"); numbers as in
     World.from_dict."""
     return _from_dict(Arm, d, name)
 

@@ -18,6 +18,8 @@ class Option(NamedTuple):
     kind: str
     default: str
     help: str
+    range: Optional[Tuple[float, float, bool, bool]] = ...
+    choices: List[str] = ...
 
 class PlannerInfo(NamedTuple):
     name: str

@@ -136,7 +136,10 @@ PlannerHandle make(const std::string& name, const py::object& problem, const py:
   return p;
 }
 
-py::tuple option_tuple(const OptionInfo& o) { return py::make_tuple(o.name, o.kind, o.default_value, o.description); }
+py::tuple option_tuple(const OptionInfo& o) {
+  const py::object range = o.range ? py::object(py::make_tuple(o.range->min, o.range->max, o.range->min_open, o.range->max_open)) : py::none();
+  return py::make_tuple(o.name, o.kind, o.default_value, o.description, range, o.choices);
+}
 
 }  // namespace
 

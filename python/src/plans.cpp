@@ -77,7 +77,26 @@ std::string svg_of(py::handle problem, const std::vector<const PlanResult*>& pla
 
 }  // namespace
 
-py::object from_json(const nlohmann::json& value) { return py::module_::import("json").attr("loads")(value.dump()); }
+py::object from_json(const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::object: {
+      py::dict out;
+      for (const auto& [key, item] : value.items()) out[py::str(key)] = from_json(item);
+      return out;
+    }
+    case nlohmann::json::value_t::array: {
+      py::list out;
+      for (const auto& item : value) out.append(from_json(item));
+      return out;
+    }
+    case nlohmann::json::value_t::string: return py::str(value.get_ref<const std::string&>());
+    case nlohmann::json::value_t::boolean: return py::bool_(value.get<bool>());
+    case nlohmann::json::value_t::number_integer: return py::int_(value.get<std::int64_t>());
+    case nlohmann::json::value_t::number_unsigned: return py::int_(value.get<std::uint64_t>());
+    case nlohmann::json::value_t::number_float: return py::float_(value.get<double>());
+    default: return py::none();
+  }
+}
 
 void bind_plans(py::module_& m) {
   py::class_<PlanResult>(m, "Plan", R"(One query's answer from a Planner: what `polyplan plan --json -` prints, as Python values.
@@ -119,8 +138,10 @@ the planner's counts and measures, nested as in the JSON.)")
             return c.certified ? py::object(py::str(c.method)) : py::object(py::none());
           },
           "How the path was proved free, e.g. \"exact path check (triangulation walk)\"; None when not certified.")
-      .def_property_readonly("facts", [](const PlanResult& r) { return from_json(facts_json(r.report.facts())); },
-                             "The planner's facts as a dict nested as in the JSON: facts[\"search\"][\"expanded\"], facts[\"roadmap\"][\"vertices\"], ...")
+      .def_property_readonly("facts", [](const PlanResult& r) { return from_json(r.report.facts_json()); },
+                             "Everything the JSON holds beside the answer, as a dict nested as there: the planner's facts "
+                             "(facts[\"search\"][\"expanded\"], facts[\"roadmap\"][\"vertices\"], ...), clearance and bottleneck, "
+                             "a planner's further paths")
       .def_property_readonly("query", [](const PlanResult& r) { return r.report.query(); }, "The query's name (\"start/goal\", \"queries[2]\", ...).")
       .def_property_readonly("planner", [](const PlanResult& r) { return r.report.planner(); }, "The planner's name.")
       .def_property_readonly(

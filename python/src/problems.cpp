@@ -93,7 +93,7 @@ void bind_problems(py::module_& m) {
   py::class_<WorldHandle, WorldPtr>(m, "World", R"(A polygon world: obstacles, bounds, a robot and queries, all exact.
 
 Read one with polyplan.read_world(path), World.from_json(text) or World.from_dict(d) (the
-world file's format, DESIGN.md "World file"). Coordinates are exact rationals: an int, a
+world file's format, docs/design.md "World file"). Coordinates are exact rationals: an int, a
 fractions.Fraction or a decimal string ("0.1" is exactly 1/10) is its exact value; a float is
 the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
       .def_static(
@@ -150,7 +150,7 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
                ", " + std::to_string(world.queries.size()) + " query(ies)>";
       });
 
-  py::class_<ArmHandle, ArmPtr>(m, "Arm", R"(A planar n-link arm among obstacle polygons and points (DESIGN.md "Arm file").
+  py::class_<ArmHandle, ArmPtr>(m, "Arm", R"(A planar n-link arm among obstacle polygons and points (docs/design.md "Arm file").
 
 Read one with polyplan.read_arm(path), Arm.from_json(text) or Arm.from_dict(d). Joint angles
 are radians, relative (theta1 from +x, theta_i from link i-1).)")

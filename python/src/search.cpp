@@ -1,4 +1,4 @@
-// polyplan.search_graph: a search on seed 000's graph_vector (polyplan search), its path, cost,
+// polyplan.search_graph: a search on the course's graph-search homework's graph_vector (polyplan search), its path, cost,
 // counts and trace as a dict, and its picture.
 #include "plans.hpp"
 
@@ -84,7 +84,7 @@ void bind_search(py::module_& m) {
         return result_dict(shortest_path(g, from, to, options), g, from, to);
       },
       py::arg("graph"), py::arg("start"), py::arg("goal"), py::arg("method") = "astar", py::arg("weight") = 1.5,
-      R"(Searches a graph in seed 000's format, a file's path or the list of dicts itself ({"x": [x, y],
+      R"(Searches a graph in the course's graph-search homework's format, a file's path or the list of dicts itself ({"x": [x, y],
 "neighbors": [...], "neighbors_cost": [...]}, 0-based; "g" and "backpointer" ignored), from vertex
 `start` to `goal` with `method` (astar, dijkstra, bfs, dfs, greedy, wastar with `weight`) and the
 Euclidean heuristic, as `polyplan search` does. Returns a dict: found, method, path (indices), cost

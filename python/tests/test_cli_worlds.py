@@ -2,6 +2,8 @@
 worlds (default options, so the same seed) and every car planner on the car's worlds, with options
 set either way, and polyplan.planners()
 lists what `polyplan planners` lists."""
+import math
+
 import pytest
 
 import polyplan
@@ -43,7 +45,12 @@ def test_options_reach_the_planner_as_on_the_command_line():
 
 def test_planners_lists_what_the_program_lists():
     expected, _ = cli_json("planners")
-    listed = [(g["space"], p["name"], p["description"], [(o["name"], o["kind"], o["default"], o["description"]) for o in p["options"]])
+    def option(o):
+        r = o.get("range")
+        bounds = None if r is None else (-math.inf if r["min"] is None else r["min"], math.inf if r["max"] is None else r["max"],
+                                         r["min_open"], r["max_open"])
+        return (o["name"], o["kind"], o["default"], o["description"], bounds, o.get("choices", []))
+    listed = [(g["space"], p["name"], p["description"], [option(o) for o in p["options"]])
               for g in expected for p in g["planners"]]
     got = [(p.space, p.name, p.description, [tuple(o) for o in p.options]) for p in polyplan.planners()]
     assert got == listed

@@ -7,7 +7,7 @@ from conftest import cli_json, data, run_cli
 
 WALL = data("worlds", "seed002_wall.json")
 TRAP = data("worlds", "u_trap.json")
-# seed 002's conic attraction against its wall, searched in [-3, 3] x [-3, 3].
+# the course's planning problem set's conic attraction against its wall, searched in [-3, 3] x [-3, 3].
 WALL_PARAMETERS = dict(zeta=1, d_star=0, eta=1, q_star=1, box=(-3, -3, 3, 3))
 
 

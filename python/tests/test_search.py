@@ -1,4 +1,4 @@
-"""polyplan.search_graph: seed 000's graphs from Python as from `polyplan search` — the same path,
+"""polyplan.search_graph: the course's graph-search homework's graphs from Python as from `polyplan search` — the same path,
 cost, counts and trace, from a file or from the list of dicts — and bad graphs refused."""
 import json
 

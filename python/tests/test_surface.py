@@ -23,7 +23,7 @@ def test_the_documented_session():
     assert r.path.shape[1] == 2 and r.path.dtype == np.float64
     assert tuple(r.path[0]) == (5, 5) and tuple(r.path[-1]) == (95, 80)
     assert r.path_exact[0] == (Fraction(5), Fraction(5))
-    # (2, 3) is too near the boundary for seed 004's robot: an answer, not an error.
+    # (2, 3) is too near the boundary for the course's C-space and visibility-graph problem set's robot: an answer, not an error.
     assert p.plan(start=(2, 3), goal=(95, 80)).status == "invalid_query"
     assert r.facts["search"]["expanded"] > 0 and r.facts["search"]["algorithm"] == "astar"
     assert json.loads(r.to_json())["length"] == r.length
@@ -44,7 +44,7 @@ def test_the_documented_session():
 
 
 def test_the_path_is_the_shortest():
-    # seed 004's shortest path, the report's table: 5 segments, cost 118.94.
+    # the course's C-space and visibility-graph problem set's shortest path, the report's table: 5 segments, cost 118.94.
     w = polyplan.read_world(data("worlds", "seed004.json"))
     r = polyplan.plan(w, planner="visibility", search="dijkstra")[0]
     assert len(r.path) - 1 == 5 and round(r.length, 2) == 118.94

@@ -9,6 +9,7 @@
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/world.hpp>
 #include <polyplan/plan/plan_report.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -128,14 +129,14 @@ inline double expect_arm_path_free(const ArmCollisionChecker& checker, const Arm
 // a goal of the set (goal.candidates its size) whose angles are the path's end and whose error
 // goal.error is. Returns which goal it is.
 inline std::size_t expect_goal_facts(const PlanReport<JointAngles>& report, const ArmGoalSet& set) {
-  const auto reached = static_cast<std::size_t>(report.facts.count("goal.reached"));
-  EXPECT_EQ(report.facts.count("goal.candidates"), static_cast<std::int64_t>(set.goals.size()));
+  const auto reached = static_cast<std::size_t>(report.facts.at(GoalFacts::reached));
+  EXPECT_EQ(report.facts.at(GoalFacts::candidates), static_cast<std::int64_t>(set.goals.size()));
   if (reached >= set.goals.size() || report.path.empty()) {
     ADD_FAILURE() << "goal.reached " << reached << " of " << set.goals.size() << " goals";
     return 0;
   }
   EXPECT_EQ(report.path.back(), set.goals[reached].angles);
-  EXPECT_EQ(report.facts.number("goal.error"), set.goals[reached].error);
+  EXPECT_EQ(report.facts.at(GoalFacts::error), set.goals[reached].error);
   return reached;
 }
 

@@ -9,6 +9,7 @@
 #include <polyplan/arm/inverse_kinematics.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include "arm/arm_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -237,10 +238,10 @@ TEST(ArmGoalSet, AGoalInJointAnglesIsItselfNormalisedAndHasNoFacts) {
 
   const ArmGoalSet reach = goal_set_of(problem, to_point({0, 0}, {1, 1}));
   set_goal_facts(reach, 1, facts);
-  EXPECT_EQ(facts.count("goal.candidates"), 2);
-  EXPECT_EQ(facts.count("goal.reached"), 1);
-  EXPECT_EQ(facts.number("goal.error"), reach.goals[1].error);
-  EXPECT_EQ(facts.count("goal.solutions"), 2);
+  EXPECT_EQ(facts.at(GoalFacts::candidates), 2);
+  EXPECT_EQ(facts.at(GoalFacts::reached), 1);
+  EXPECT_EQ(facts.at(GoalFacts::error), reach.goals[1].error);
+  EXPECT_EQ(facts.at(GoalFacts::solutions), 2);
 }
 
 TEST(ArmGoalSet, QueriesThatCannotBeAskedAreRefused) {

@@ -8,6 +8,8 @@
 #include <polyplan/arm/arm_grid_search.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/io/arm_reader.hpp>
+#include <polyplan/arm/arm_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include "arm/arm_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -65,7 +67,7 @@ void expect_valid(const ArmProblem& p, const ArmQuery& q, const PlanReport<Joint
   }
   const ArmCollisionChecker checker(p);
   const double dense = 0.01 * two_pi / 360;
-  const double cell = two_pi / static_cast<double>(plan.facts.count("grid.cells_per_axis"));
+  const double cell = two_pi / static_cast<double>(plan.facts.at(ArmGridFacts::grid_cells_per_axis));
   double length = 0;
   for (std::size_t k = 0; k + 1 < plan.path.size(); ++k) {
     for (const auto& c : motion_samples(plan.path[k], plan.path[k + 1], dense))
@@ -83,7 +85,7 @@ void expect_valid(const ArmProblem& p, const ArmQuery& q, const PlanReport<Joint
   EXPECT_NEAR(plan.length, length, 1e-9);
 }
 
-std::int64_t cells_evaluated(const PlanReport<JointAngles>& plan) { return plan.facts.count("cells_evaluated"); }
+std::int64_t cells_evaluated(const PlanReport<JointAngles>& plan) { return plan.facts.at(ArmGridFacts::cells_evaluated); }
 
 TEST(ArmGridPlanner, TorusKeepsTheEasyCaseShortAndTheIntervalUnwinds) {
   const ArmProblem p = read_arm_problem(arms + "two_link_points.json");
@@ -129,14 +131,14 @@ TEST(ArmGridPlanner, AQueryStopsAtItsMemoryBudget) {
   EXPECT_NE(stopped.why_not.find("the memory budget of one query is 0.05 MB (option memory-mb: raise it with --memory-mb N)"),
             std::string::npos)
       << stopped.why_not;
-  EXPECT_LE(stopped.facts.number("memory_mb"), 0.05);
+  EXPECT_LE(stopped.facts.at(ArmGridFacts::memory_mb), 0.05);
   small.lazy = false;  // eager evaluation meets the budget before searching
   const auto eager = plan_once(p, hard, small);
   EXPECT_FALSE(eager.found);
   EXPECT_NE(eager.why_not.find("option memory-mb"), std::string::npos) << eager.why_not;
   const auto within = plan_once(p, hard);
   EXPECT_TRUE(within.found);
-  EXPECT_GT(within.facts.number("memory_mb"), 0.05);
+  EXPECT_GT(within.facts.at(ArmGridFacts::memory_mb), 0.05);
 }
 
 // The compact search (A*, safe angles, bucket queue) and the generic one (search/'s breadth-first
@@ -162,8 +164,8 @@ TEST(ArmGridPlanner, CompactSearchFindsTheLengthsOfTheGenericSearch) {
       if (!a.found) continue;
       expect_valid(c.problem, q, a, true);
       EXPECT_NEAR(a.length, b.length, 1e-12) << c.problem.source << " " << q.name << " at " << c.resolution;
-      EXPECT_EQ(a.facts.text("grid.shortest"), "proved");
-      EXPECT_GT(a.facts.count("moves_by_clearance"), 0) << "most moves are proved by their ends' safe angles";
+      EXPECT_EQ(a.facts.at(ArmGridFacts::grid_shortest), "proved");
+      EXPECT_GT(a.facts.at(ArmGridFacts::moves_by_clearance), 0) << "most moves are proved by their ends' safe angles";
     }
 }
 
@@ -178,7 +180,7 @@ TEST(ArmGridPlanner, CorridorPathsAreValidAndTheirBoundsAreBounds) {
   whole.coarse_degrees = 0;
   const auto best = plan_once(p, q, whole);
   expect_valid(p, q, best, true);
-  EXPECT_EQ(best.facts.text("grid.shortest"), "proved");
+  EXPECT_EQ(best.facts.at(ArmGridFacts::grid_shortest), "proved");
   for (const int radius : {1, 2, 4}) {
     ArmGridOptions corridor = whole;
     corridor.coarse_degrees = 5;
@@ -187,16 +189,16 @@ TEST(ArmGridPlanner, CorridorPathsAreValidAndTheirBoundsAreBounds) {
     const auto plan = plan_once(p, q, corridor);
     ASSERT_TRUE(plan.found) << "radius " << radius << ": " << plan.why_not;
     expect_valid(p, q, plan, true);
-    EXPECT_EQ(plan.facts.number("grid.coarse_degrees"), 5);
+    EXPECT_EQ(plan.facts.at(ArmGridFacts::grid_coarse_degrees), 5);
     EXPECT_GE(plan.length, best.length - 1e-12) << "radius " << radius;
-    if (plan.facts.text("grid.shortest") == "proved") {
+    if (plan.facts.at(ArmGridFacts::grid_shortest) == "proved") {
       EXPECT_NEAR(plan.length, best.length, 1e-12) << "radius " << radius;
     } else {
-      EXPECT_EQ(plan.facts.text("grid.shortest"), "corridor");
+      EXPECT_EQ(plan.facts.at(ArmGridFacts::grid_shortest), "corridor");
       // The bound covers the grid part (the joins are the same cells at the same resolution).
-      EXPECT_LE(plan.facts.number("grid.lower_bound"), best.length) << "radius " << radius;
+      EXPECT_LE(plan.facts.at(ArmGridFacts::grid_lower_bound), best.length) << "radius " << radius;
     }
-    EXPECT_LT(plan.facts.count("cells_evaluated"), best.facts.count("cells_evaluated") + 30000) << "radius " << radius;
+    EXPECT_LT(plan.facts.at(ArmGridFacts::cells_evaluated), best.facts.at(ArmGridFacts::cells_evaluated) + 30000) << "radius " << radius;
   }
   // With a tiny exact_cells every coarse level is guided by the next coarser one too (40, 20, 10
   // and 5 degrees, each in a corridor): still a valid path, never shorter than the shortest.
@@ -206,14 +208,14 @@ TEST(ArmGridPlanner, CorridorPathsAreValidAndTheirBoundsAreBounds) {
   const auto guided = plan_once(p, q, cascade);
   expect_valid(p, q, guided, true);
   EXPECT_GE(guided.length, best.length - 1e-12);
-  EXPECT_LT(guided.facts.count("cells_evaluated"), best.facts.count("cells_evaluated"));
+  EXPECT_LT(guided.facts.at(ArmGridFacts::cells_evaluated), best.facts.at(ArmGridFacts::cells_evaluated));
   // A corridor wide enough holds every cell the whole search needed: the proof comes with it.
   ArmGridOptions wide = whole;
   wide.coarse_degrees = 5;
   wide.exact_cells = 0;
   wide.corridor = 36;
   const auto proved = plan_once(p, q, wide);
-  EXPECT_EQ(proved.facts.text("grid.shortest"), "proved");
+  EXPECT_EQ(proved.facts.at(ArmGridFacts::grid_shortest), "proved");
   EXPECT_NEAR(proved.length, best.length, 1e-12);
 }
 
@@ -226,9 +228,9 @@ TEST(ArmGridPlanner, FourLinkForestAtOneDegreeThroughACorridor) {
   fine.resolution_degrees = 1;
   const auto plan = plan_once(p, q, fine);
   expect_valid(p, q, plan, true);
-  EXPECT_EQ(plan.facts.text("grid.shortest"), "corridor");
+  EXPECT_EQ(plan.facts.at(ArmGridFacts::grid_shortest), "corridor");
   EXPECT_LT(plan.length, 8.0820061220085) << "the 5-degree grid's shortest";
-  EXPECT_LT(plan.facts.number("memory_mb"), 400);
+  EXPECT_LT(plan.facts.at(ArmGridFacts::memory_mb), 400);
 }
 
 TEST(ArmGridPlanner, LazyAndEagerFindPathsOfEqualCostAndLazyEvaluatesLess) {
@@ -376,9 +378,9 @@ TEST(ArmGridPlanner, ACorridorWithoutAPathGivesWayToTheWholeGrid) {
   options.corridor = 0;
   const auto whole = plan_once(p, p.queries[0], options);
   expect_valid(p, p.queries[0], whole, true);
-  EXPECT_TRUE(whole.facts.flag("grid.whole_grid"));
-  EXPECT_EQ(whole.facts.count("grid.rounds"), 2);
-  EXPECT_EQ(whole.facts.text("grid.shortest"), "proved");
+  EXPECT_TRUE(whole.facts.at(ArmGridFacts::grid_whole_grid));
+  EXPECT_EQ(whole.facts.at(ArmGridFacts::grid_rounds), 2);
+  EXPECT_EQ(whole.facts.at(ArmGridFacts::grid_shortest), "proved");
   options.coarse_degrees = 0;  // the whole grid from the start: the same shortest length
   EXPECT_NEAR(plan_once(p, p.queries[0], options).length, whole.length, 1e-12);
 
@@ -388,7 +390,7 @@ TEST(ArmGridPlanner, ACorridorWithoutAPathGivesWayToTheWholeGrid) {
   EXPECT_FALSE(stopped.found);
   EXPECT_EQ(stopped.status, PlanStatus::limit);
   EXPECT_NE(stopped.why_not.find("no path within 0 coarse cells of the 5-degree path"), std::string::npos) << stopped.why_not;
-  EXPECT_EQ(stopped.facts.text("stopped_by"), "memory limit");
+  EXPECT_EQ(stopped.facts.at(QueryFacts::stopped_by), "memory limit");
 }
 
 // A narrow passage that the 5-degree guide misses and the 1-degree grid has: among these points
@@ -411,7 +413,7 @@ TEST(ArmGridPlanner, AGuideThatMissesAPassageGivesWayToAFinerGuide) {
   fine.resolution_degrees = 1;
   const auto found = plan_once(p, p.queries[0], fine);
   expect_valid(p, p.queries[0], found, true);
-  EXPECT_EQ(found.facts.number("grid.coarse_degrees"), 2.5);
+  EXPECT_EQ(found.facts.at(ArmGridFacts::grid_coarse_degrees), 2.5);
   EXPECT_NEAR(found.length, 10.117523757709614, 1e-9);
 }
 
@@ -468,7 +470,7 @@ TEST(ArmGridPlanner, AGoalPointEndsAtTheNearestGoalOfItsSet) {
       const std::size_t reached = test::expect_goal_facts(plan, set);
       EXPECT_EQ(grid_moves(plan.path, n), fewest);
       EXPECT_EQ(moves_to[reached], fewest);
-      EXPECT_EQ(plan.facts.text("grid.shortest"), o.search.algorithm == Search::bfs ? "not claimed" : "proved");
+      EXPECT_EQ(plan.facts.at(ArmGridFacts::grid_shortest), o.search.algorithm == Search::bfs ? "not claimed" : "proved");
     }
   }
 }
@@ -482,7 +484,7 @@ TEST(ArmGridPlanner, AGoalPointPlansCoarseToFine) {
   options.exact_cells = 0;  // always the corridor
   const auto plan = plan_once(p, q, options);
   ASSERT_TRUE(plan.found) << plan.why_not;
-  EXPECT_EQ(plan.facts.count("grid.rounds"), 1);
+  EXPECT_EQ(plan.facts.at(ArmGridFacts::grid_rounds), 1);
   const ArmCollisionChecker checker(p);
   test::expect_arm_path_free(checker, q, plan.path);
   test::expect_goal_facts(plan, arm_goal_set(checker, q));

@@ -10,6 +10,7 @@
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/sampling/sampling_planner.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 #include "arm/arm_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -50,7 +51,7 @@ TEST_P(SamplingPlannerOnArm, ThreeSeedsGiveIndependentlyCheckedPathsAndOneSeedOn
       ASSERT_TRUE(report.found) << report.why_not;
       const double length = test::expect_arm_path_free(checker, q, report.path);
       EXPECT_NEAR(report.length, length, 1e-9 * length);
-      EXPECT_LE(report.length, report.facts.number("raw_length") * (1 + 1e-12));
+      EXPECT_LE(report.length, report.facts.at(SamplingFacts::raw_length) * (1 + 1e-12));
       // The same seed, a planner of its own, the same first query: the same path.
       if (&q == &problem.queries.front()) {  // braces: EXPECT_EQ is an if-else of its own
         EXPECT_EQ(make(planner, problem, options)->plan(q).path, report.path);

@@ -9,6 +9,9 @@
 #include <polyplan/car/reeds_shepp.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/car/car_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -31,7 +34,7 @@ TEST(CarPlanners, AReedsSheppCarTurnsRoundInACorridorNarrowerThanTwoRadiiADubins
     SCOPED_TRACE(planner);
     const auto turned = plan(planner, reeds_shepp);
     ASSERT_TRUE(turned.found) << turned.why_not;
-    EXPECT_GE(turned.facts.count("gear_changes"), 2) << "a three-point turn at least";
+    EXPECT_GE(turned.facts.at(CarFacts::gear_changes), 2) << "a three-point turn at least";
     if (auto why = test::sampled_car_overlap(reeds_shepp, turned.path)) ADD_FAILURE() << *why;
     const auto stuck = plan(planner, dubins, {{"time", "1"}, {"iterations", "2000"}});
     EXPECT_FALSE(stuck.found);
@@ -55,7 +58,7 @@ TEST(CarPlanners, InAnEmptyWorldHybridAStarDrivesTheShortestCurveAtOnce) {
     "car": {"turning_radius": 2, "reverse": true}}, "start": [0, 0, 0], "goal": [3, 4, 200]})");
   const auto report = plan("hybrid-astar", world);
   ASSERT_TRUE(report.found);
-  EXPECT_EQ(report.facts.count("search.expanded"), 1);
+  EXPECT_EQ(report.facts.at(SearchFacts::expanded), 1);
   EXPECT_NEAR(report.length, reeds_shepp_distance({0, 0, 0}, {3, 4, 200 * pi / 180}, 2), 1e-12);
 }
 
@@ -85,10 +88,10 @@ TEST(CarPlanners, BadOptionsNameThePlannerAndTheOption) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
     }
   };
-  refuses("hybrid-astar", {{"headings", "2"}}, "planner hybrid-astar: headings must lie in [4, 3600]");
-  refuses("hybrid-astar", {{"reverse-cost", "0.5"}}, "planner hybrid-astar: reverse-cost must be at least 1");
-  refuses("car-rrt", {{"goal-bias", "2"}}, "planner car-rrt: goal-bias must lie in [0, 1]");
-  refuses("car-rrt", {{"dt", "-1"}}, "planner car-rrt: dt must be positive");
+  refuses("hybrid-astar", {{"headings", "2"}}, "planner hybrid-astar: option headings=2: expected a whole number in [4, 3600]");
+  refuses("hybrid-astar", {{"reverse-cost", "0.5"}}, "planner hybrid-astar: option reverse-cost=0.5: expected a number in [1, inf)");
+  refuses("car-rrt", {{"goal-bias", "2"}}, "planner car-rrt: option goal-bias=2: expected a number in [0, 1]");
+  refuses("car-rrt", {{"dt", "-1"}}, "planner car-rrt: option dt=-1: expected a number in [0, inf)");
 }
 
 TEST(CarPlanners, CarRrtIsTheSameForOneSeedAndOtherForAnother) {
@@ -98,7 +101,7 @@ TEST(CarPlanners, CarRrtIsTheSameForOneSeedAndOtherForAnother) {
   ASSERT_TRUE(a.found && b.found && c.found);
   EXPECT_EQ(a.path, b.path);
   EXPECT_NE(a.path, c.path);
-  EXPECT_EQ(a.facts.count("seed"), 3);
+  EXPECT_EQ(a.facts.at(SamplingFacts::seed), 3);
 }
 
 }  // namespace

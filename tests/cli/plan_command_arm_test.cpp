@@ -63,7 +63,7 @@ TEST(ArmCommand, SamplingPlannersTakeTheirFlagsAndOneSeedGivesOnePath) {
 
   const CliRun bias = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner rrt --goal-bias 2");
   EXPECT_EQ(bias.exit_code, 2);
-  EXPECT_NE(bias.err.find("planner rrt: goal-bias must be a probability in [0, 1]"), std::string::npos) << bias.err;
+  EXPECT_NE(bias.err.find("planner rrt: option goal-bias=2: expected a number in [0, 1]"), std::string::npos) << bias.err;
 }
 
 TEST(ArmCommand, EveryQueryOfAFileGivesAnArrayAndEagerMatchesLazy) {

@@ -1,4 +1,4 @@
-// polyplan plan, run as a user runs it: DESIGN.md's JSON with exact paths, every search, every
+// polyplan plan, run as a user runs it: docs/design.md's JSON with exact paths, every search, every
 // registered planner by --planner (and --roadmap), options by --option and --NAME, the picture.
 #include "cli_runner.hpp"
 

@@ -1,4 +1,4 @@
-// polyplan search, run as a user runs it: seed 000's graphs searched with each method, the summary
+// polyplan search, run as a user runs it: the course's graph-search homework's graphs searched with each method, the summary
 // line, the JSON, the trace as JSON lines, the picture and its animation, and one-line errors for
 // bad graphs (naming the vertex) and bad options. Also plan's --trace for the graph planners.
 #include "cli_runner.hpp"

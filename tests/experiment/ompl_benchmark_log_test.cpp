@@ -4,6 +4,8 @@
 #include "experiment/ompl_log_parser.hpp"
 
 #include <polyplan/experiment/ompl_benchmark_log.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -46,17 +48,17 @@ std::pair<Experiment, ExperimentResults> tiny() {
   r.threads = 1;
   r.total_seconds = 4.5;
   r.runs.push_back(run(0, 1, PlanStatus::solved, 0.25, 0.125, 10.5, {{0.25, 10.5}}));
-  r.runs.back().facts.set("roadmap.kind", "rrt");  // a word: results.json's, not the log's
-  r.runs.back().facts.set("samples", 40);
-  r.runs.back().facts.set("seed", 1);  // the run's own "seed" property already has the column
-  r.runs.back().facts.set("raw_length", 12.75);
+  r.runs.back().facts.set(RoadmapFacts::kind, "rrt");  // a word: results.json's, not the log's
+  r.runs.back().facts.set(SamplingFacts::samples, 40);
+  r.runs.back().facts.set(SamplingFacts::seed, 1);  // the run's own "seed" property already has the column
+  r.runs.back().facts.set(SamplingFacts::raw_length, 12.75);
   r.runs.push_back(run(0, 2, PlanStatus::limit, 2, 0.125, 0, {}));
-  r.runs.back().facts.set("samples", 100);
+  r.runs.back().facts.set(SamplingFacts::samples, 100);
   r.runs.push_back(run(1, 1, PlanStatus::solved, 2, 0.5, 9, {{0.5, 11}, {1.5, 9.5}, {2, 9}}));
-  r.runs.back().facts.set("tree_size", 300);
+  r.runs.back().facts.set(SamplingFacts::tree_size, 300);
   r.runs.push_back(run(1, 2, PlanStatus::solved, 2, 0.5, 8.25, {{1.25, 8.25}}));
-  r.runs.back().facts.set("tree_size", 280);
-  r.runs.back().facts.set("order", 7);  // an SQL word: the script's ALTER TABLE would fail on it
+  r.runs.back().facts.set(SamplingFacts::tree_size, 280);
+  r.runs.back().facts.set(FactKey<std::int64_t>{"order"}, 7);  // an SQL word: the script's ALTER TABLE would fail on it
   return {e, r};
 }
 

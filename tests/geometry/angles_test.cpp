@@ -1,5 +1,5 @@
 // geometry/angles.hpp: normalisation, the short way between two angles, interpolation. Expected values
-// are worked out by hand in the comments or re-computed with seed 001's own formula.
+// are worked out by hand in the comments or re-computed with the course's arm and car planning report's own formula.
 #include <polyplan/geometry/angles.hpp>
 #include "arm/arm_fixtures.hpp"
 
@@ -16,7 +16,7 @@ using polyplan::test::kPi;
 
 namespace {
 
-// seed 001's angular_distance, written as the seed wrote it: an independent re-check.
+// the course's arm and car planning report's angular_distance, written as the seed wrote it: an independent re-check.
 double seed_angular_distance(double a, double b) {
   const double d = std::fmod(std::fabs(a - b), two_pi);
   return std::min(d, two_pi - d);
@@ -51,10 +51,10 @@ TEST(Angles, SignedDifferenceTakesTheShortWay) {
 }
 
 TEST(Angles, SeedFiguresForAngularDistance) {
-  // seed 001 prints angular_distance(1, 5) = 2.2831853071795862.
+  // the course's arm and car planning report prints angular_distance(1, 5) = 2.2831853071795862.
   EXPECT_EQ(angular_distance(1, 5), 2.2831853071795862);
   EXPECT_EQ(angular_distance(5, 1), 2.2831853071795862);
-  // seed 000's torus heuristic: between 2π − 0.1 and 0.1 the distance is 0.2.
+  // the course's graph-search homework's torus heuristic: between 2π − 0.1 and 0.1 the distance is 0.2.
   EXPECT_NEAR(angular_distance(two_pi - 0.1, 0.1), 0.2, 1e-15);
   EXPECT_EQ(angular_distance(0, kPi), kPi);
   // 0.2 + 0 + 0.2 + (0.4 − 6.2 + 2π) = 0.8831853071795865.

@@ -10,6 +10,8 @@
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/world_reader.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -59,15 +61,15 @@ TEST(GvdGridPlanner, AlongTheMiddleOfACorridorWithItsExactClearance) {
   ASSERT_TRUE(along.found) << along.why_not;
   EXPECT_EQ(along.path, (std::vector<ExactPoint>{pt("5.5", "10.5"), pt("14.5", "10.5")}));  // straight: no turn kept
   EXPECT_DOUBLE_EQ(along.length, 9.0);
-  EXPECT_DOUBLE_EQ(along.facts.number("gvd.clearance_bound"), 2.5);
+  EXPECT_DOUBLE_EQ(along.facts.at(GvdFacts::clearance_bound), 2.5);
   EXPECT_DOUBLE_EQ(along.bottleneck.value().clearance, 2.5);  // measured: 2.5 from both walls
-  EXPECT_EQ(along.facts.text("roadmap.kind"), "gvd-grid");
-  EXPECT_EQ(along.facts.count("raster.cells_per_axis"), 20);
-  EXPECT_EQ(along.facts.count("gvd.max_distance"), 3);
-  EXPECT_EQ(along.facts.count("gvd.cells"), along.facts.count("roadmap.vertices"));
-  EXPECT_GT(along.facts.count("roadmap.edges"), 0);
-  EXPECT_EQ(along.facts.text("gvd.start_cell"), "(5, 10)");
-  EXPECT_EQ(along.facts.count("search.path_edges"), 9);
+  EXPECT_EQ(along.facts.at(RoadmapFacts::kind), "gvd-grid");
+  EXPECT_EQ(along.facts.at(RasterFacts::cells_per_axis), 20);
+  EXPECT_EQ(along.facts.at(GvdFacts::max_distance), 3);
+  EXPECT_EQ(along.facts.at(GvdFacts::cells), along.facts.at(RoadmapFacts::vertices));
+  EXPECT_GT(along.facts.at(RoadmapFacts::edges), 0);
+  EXPECT_EQ(along.facts.at(GvdFacts::start_cell), "(5, 10)");
+  EXPECT_EQ(along.facts.at(SearchFacts::path_edges), 9);
   EXPECT_TRUE(check_path(cspace, along.path).valid);
 }
 
@@ -91,8 +93,8 @@ TEST(GvdGridPlanner, ClimbsToTheGvdFollowsItAndDescends) {
   EXPECT_EQ(plan.path.front(), query.start);
   EXPECT_EQ(plan.path.back(), query.goal);
   EXPECT_TRUE(check_path(cspace, plan.path).valid);
-  EXPECT_EQ(plan.facts.text("gvd.start_cell"), cell_name(up.back()));
-  EXPECT_EQ(plan.facts.text("gvd.goal_cell"), cell_name(down.back()));
+  EXPECT_EQ(plan.facts.at(GvdFacts::start_cell), cell_name(up.back()));
+  EXPECT_EQ(plan.facts.at(GvdFacts::goal_cell), cell_name(down.back()));
   // Every corner between start and goal is a cell centre of the start's climb, of the GVD, or of
   // the goal's climb, in that order: once on the GVD, the path leaves it only for the descent.
   const Raster& raster = planner.raster();
@@ -110,7 +112,7 @@ TEST(GvdGridPlanner, ClimbsToTheGvdFollowsItAndDescends) {
   }
   EXPECT_GE(stage, 1) << "no corner on the GVD";
   // The path's cells are at least 1 from the walls (rows 8 and 12): clearance (1 - 1/2) x 1.
-  EXPECT_DOUBLE_EQ(plan.facts.number("gvd.clearance_bound"), 0.5);
+  EXPECT_DOUBLE_EQ(plan.facts.at(GvdFacts::clearance_bound), 0.5);
 }
 
 TEST(GvdGridPlanner, StartInAnObstacleIsAnAnswerWithItsReason) {
@@ -202,7 +204,7 @@ TEST(GvdGridPlanner, EveryOfficeQueryWithinOneFreeComponentIsFound) {
     ++found;
     const PathCheck check = check_path(cspace, plan.path);
     EXPECT_TRUE(check.valid) << q.name << ": " << check.reason;
-    EXPECT_GT(plan.facts.number("gvd.clearance_bound"), 0) << q.name;
+    EXPECT_GT(plan.facts.at(GvdFacts::clearance_bound), 0) << q.name;
   }
   EXPECT_GT(together, 40);
   EXPECT_EQ(found, together);

@@ -1,4 +1,4 @@
-// RasterPlanner: seed 000's search_start_goal on the rasterised sphere world (routes at three
+// RasterPlanner: the course's graph-search homework's search_start_goal on the rasterised sphere world (routes at three
 // resolutions, lengths against the exact visibility-graph optimum, every path re-checked
 // independently), and on hand-made worlds where the answer is known exactly.
 #include <polyplan/geometry/path_check.hpp>
@@ -6,6 +6,8 @@
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -70,7 +72,7 @@ std::string cell(std::size_t x, std::size_t y) { return "(" + std::to_string(x) 
 }  // namespace
 
 TEST_F(SphereWorld, JustRightResolutionFindsCheckedPathsWithinTwentyPercentOfTheOptimum) {
-  ASSERT_EQ(world->queries.size(), 10u);  // 5 starts x 2 goals, as seed 000 runs them
+  ASSERT_EQ(world->queries.size(), 10u);  // 5 starts x 2 goals, as the course's graph-search homework runs them
   RasterPlanner planner(*cspace, RasterOptions{40});
   for (std::size_t i = 0; i < world->queries.size(); ++i) {
     const Query& q = world->queries[i];
@@ -97,8 +99,8 @@ TEST_F(SphereWorld, JustRightResolutionFindsCheckedPathsWithinTwentyPercentOfThe
     const auto start_cell = planner.nearest_free_cell(q.start), goal_cell = planner.nearest_free_cell(q.goal);
     ASSERT_TRUE(start_cell && goal_cell);
     EXPECT_FALSE(planner.raster().is_blocked(start_cell->first, start_cell->second));
-    EXPECT_EQ(plan.facts.text("raster.start_cell"), cell(start_cell->first, start_cell->second));
-    EXPECT_EQ(plan.facts.text("raster.goal_cell"), cell(goal_cell->first, goal_cell->second));
+    EXPECT_EQ(plan.facts.at(RasterFacts::start_cell), cell(start_cell->first, start_cell->second));
+    EXPECT_EQ(plan.facts.at(RasterFacts::goal_cell), cell(goal_cell->first, goal_cell->second));
   }
 }
 
@@ -149,7 +151,7 @@ TEST(RasterPlanner, JoinFromTheStartThroughAnObstacleIsRefusedWithTheReason) {
   const Report plan = plan_once(cspace, 2, query);
   EXPECT_FALSE(plan.found);
   EXPECT_TRUE(plan.path.empty());
-  EXPECT_EQ(plan.facts.text("raster.start_cell"), "(1, 0)");
+  EXPECT_EQ(plan.facts.at(RasterFacts::start_cell), "(1, 0)");
   // The refused polyline, checked here independently, is what the reason quotes.
   const PathCheck check = check_path(cspace, {pt("0.2", "0.2"), pt("3", "1"), pt("3", "3"), pt("3.5", "3.5")});
   ASSERT_FALSE(check.valid);
@@ -158,7 +160,7 @@ TEST(RasterPlanner, JoinFromTheStartThroughAnObstacleIsRefusedWithTheReason) {
   // Four times finer, the start's own cell (0, 0) = (0, 0.5)² is free: the join is short and free.
   const Report fine = plan_once(cspace, 8, query);
   EXPECT_TRUE(fine.found) << fine.why_not;
-  EXPECT_EQ(fine.facts.text("raster.start_cell"), "(0, 0)");
+  EXPECT_EQ(fine.facts.at(RasterFacts::start_cell), "(0, 0)");
 }
 
 TEST(RasterPlanner, StraightRunsKeepOnlyTheirEndsAndLengthsAreExactMultiples) {
@@ -167,17 +169,17 @@ TEST(RasterPlanner, StraightRunsKeepOnlyTheirEndsAndLengthsAreExactMultiples) {
   RasterPlanner planner(cspace, RasterOptions{10});
   const Report along = planner.plan({pt("0.5", "0.5"), pt("9.5", "0.5"), "q"});
   EXPECT_EQ(along.path, (std::vector<ExactPoint>{pt("0.5", "0.5"), pt("9.5", "0.5")}));  // start and goal are centres
-  EXPECT_EQ(along.facts.count("search.path_edges"), 9);
+  EXPECT_EQ(along.facts.at(SearchFacts::path_edges), 9);
   EXPECT_DOUBLE_EQ(along.length, 9.0);
-  EXPECT_DOUBLE_EQ(along.facts.number("raster.grid_cost"), 9.0);
+  EXPECT_DOUBLE_EQ(along.facts.at(RasterFacts::grid_cost), 9.0);
   const Report diagonal = planner.plan({pt("0.5", "0.5"), pt("9.5", "9.5"), "q"});
   EXPECT_EQ(diagonal.path, (std::vector<ExactPoint>{pt("0.5", "0.5"), pt("9.5", "9.5")}));
   EXPECT_NEAR(diagonal.length, 9 * std::sqrt(2.0), 1e-12);
   // 4-connected from cell (0, 0) to cell (3, 1): 4 unit moves in some order, each kept corner
   // joined to the next along an axis; the start joins its centre (0.5, 0.5), the goal is a centre.
   const Report four = plan_once(cspace, 10, {pt("0.2", "0.7"), pt("3.5", "1.5"), "q"}, Connectivity::axis_aligned);
-  EXPECT_EQ(four.facts.count("search.path_edges"), 4);
-  EXPECT_DOUBLE_EQ(four.facts.number("raster.grid_cost"), 4.0);
+  EXPECT_EQ(four.facts.at(SearchFacts::path_edges), 4);
+  EXPECT_DOUBLE_EQ(four.facts.at(RasterFacts::grid_cost), 4.0);
   ASSERT_GE(four.path.size(), 4u);  // start, (0.5, 0.5), at least one corner, goal
   EXPECT_EQ(four.path.front(), pt("0.2", "0.7"));
   EXPECT_EQ(four.path[1], pt("0.5", "0.5"));
@@ -258,6 +260,6 @@ TEST(RasterPlanner, RecordsTheCellsAndTheExpandedCentresForPictures) {
   EXPECT_EQ(recorded.cells->columns, 4u);
   EXPECT_EQ(recorded.cells->state(1, 1), CellGrid::blocked);
   EXPECT_EQ(recorded.cells->state(0, 0), CellGrid::free);
-  EXPECT_EQ(static_cast<std::int64_t>(recorded.expanded.size()), recorded.facts.count("search.expanded"));
+  EXPECT_EQ(static_cast<std::int64_t>(recorded.expanded.size()), recorded.facts.at(SearchFacts::expanded));
   EXPECT_EQ(recorded.path, plain.path);
 }

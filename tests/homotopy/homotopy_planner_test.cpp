@@ -5,6 +5,7 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/homotopy/h_signature.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/homotopy/homotopy_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -47,14 +48,14 @@ TEST(HomotopyPlanner, TheFirstFourClassesRoundOneSquare) {
   for (std::size_t i = 0; i < report.paths.size(); ++i) {
     const auto& p = report.paths[i];
     EXPECT_TRUE(check_path(cspace, p.path).valid);
-    EXPECT_EQ(word_text(h.polyline(p.path)), p.facts.text("word"));
-    words.insert(p.facts.text("word"));
+    EXPECT_EQ(word_text(h.polyline(p.path)), p.facts.at(HomotopyFacts::path_word));
+    words.insert(p.facts.at(HomotopyFacts::path_word));
     if (i > 0) {  // braces: EXPECT_LT is an if-else of its own
       EXPECT_LT(report.paths[i - 1].length, p.length);
     }
   }
   EXPECT_EQ(words.size(), 4u);
-  EXPECT_EQ(report.facts.count("homotopy.classes"), 4);
+  EXPECT_EQ(report.facts.at(HomotopyFacts::classes), 4);
 }
 
 TEST(HomotopyPlanner, FewerClassesWithinMaxLength) {

@@ -1,4 +1,4 @@
-// The tethered robot of seed 003 in tether_pillar.json (a pillar [3, 9] × [−4, 6], the base at
+// The tethered robot of the course's sampling-planner homework in tether_pillar.json (a pillar [3, 9] × [−4, 6], the base at
 // (0, 0)): from behind the pillar with its tether round the bottom (16 long), to a goal above the
 // pillar, it goes straight up the near side when L allows the 24.6 that winds the tether round two
 // sides, and unwinds back under the pillar when L = 20 does not; the class of length exactly 16 is
@@ -10,6 +10,7 @@
 #include <polyplan/homotopy/h_signature.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/homotopy/homotopy_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -46,15 +47,15 @@ std::vector<ExactPoint> points(const std::string& text) {
 // start's tether followed by the robot's path, and its length the fact's.
 void expect_consistent_tether(const CSpace& cspace, const PlanReport<ExactPoint>& report, const std::vector<ExactPoint>& start_tether) {
   const HSignature h(cspace);
-  const auto at_goal = points(report.facts.text("tether.at_goal"));
+  const auto at_goal = points(report.facts.at(TetherFacts::at_goal));
   ASSERT_GE(at_goal.size(), 2u);
   EXPECT_TRUE(check_path(cspace, at_goal).valid);
   std::vector<ExactPoint> dragged = start_tether;
   dragged.insert(dragged.end(), report.path.begin() + 1, report.path.end());
-  EXPECT_EQ(word_text(h.polyline(dragged)), report.facts.text("tether.word"));
-  EXPECT_EQ(word_text(h.polyline(at_goal)), report.facts.text("tether.word"));
-  EXPECT_NEAR(euclidean_length(at_goal), report.facts.number("tether.length"), 1e-12);
-  EXPECT_LE(report.facts.number("tether.length"), report.facts.number("tether.largest"));
+  EXPECT_EQ(word_text(h.polyline(dragged)), report.facts.at(TetherFacts::word));
+  EXPECT_EQ(word_text(h.polyline(at_goal)), report.facts.at(TetherFacts::word));
+  EXPECT_NEAR(euclidean_length(at_goal), report.facts.at(TetherFacts::length), 1e-12);
+  EXPECT_LE(report.facts.at(TetherFacts::length), report.facts.at(TetherFacts::largest));
 }
 
 TEST(TetherPlanner, UnwindsRoundThePillarWhenTheTetherIsTooShortForTheNearSide) {
@@ -65,14 +66,14 @@ TEST(TetherPlanner, UnwindsRoundThePillarWhenTheTetherIsTooShortForTheNearSide) 
   const auto free = tethered(cspace, q, "25");
   ASSERT_TRUE(free.found) << free.why_not;
   EXPECT_EQ(free.path, (std::vector<ExactPoint>{{12, 0}, {9, 6}, {6, 8}}));
-  EXPECT_NEAR(free.facts.number("tether.length"), 5 + 6 + 10 + std::sqrt(13.0), 1e-12);  // round the bottom and the right side
+  EXPECT_NEAR(free.facts.at(TetherFacts::length), 5 + 6 + 10 + std::sqrt(13.0), 1e-12);  // round the bottom and the right side
   expect_consistent_tether(cspace, free, start_tether);
   const auto unwound = tethered(cspace, q, "20");
   ASSERT_TRUE(unwound.found) << unwound.why_not;
   EXPECT_EQ(unwound.path, (std::vector<ExactPoint>{{12, 0}, {9, -4}, {3, -4}, {3, 6}, {6, 8}}));
   EXPECT_NEAR(unwound.length, 5 + 6 + 10 + std::sqrt(13.0), 1e-12);
-  EXPECT_NEAR(unwound.facts.number("tether.length"), std::sqrt(45.0) + std::sqrt(13.0), 1e-12);  // straight past the left side
-  EXPECT_LE(unwound.facts.number("tether.largest"), 20);
+  EXPECT_NEAR(unwound.facts.at(TetherFacts::length), std::sqrt(45.0) + std::sqrt(13.0), 1e-12);  // straight past the left side
+  EXPECT_LE(unwound.facts.at(TetherFacts::largest), 20);
   EXPECT_TRUE(check_path(cspace, unwound.path).valid);
   expect_consistent_tether(cspace, unwound, start_tether);
 }
@@ -83,9 +84,9 @@ TEST(TetherPlanner, ATetherExactlyLongEnoughIsAllowed) {
   const Query& q = world.queries[1];  // (0, 0), the base, to (12, 0): round the bottom, 5 + 6 + 5
   const auto exact = tethered(cspace, q, "16");
   ASSERT_TRUE(exact.found) << exact.why_not;
-  EXPECT_EQ(exact.facts.number("tether.length"), 16);
-  EXPECT_EQ(exact.facts.number("tether.largest"), 16);
-  EXPECT_EQ(exact.facts.text("tether.classes"), "[] 16");
+  EXPECT_EQ(exact.facts.at(TetherFacts::length), 16);
+  EXPECT_EQ(exact.facts.at(TetherFacts::largest), 16);
+  EXPECT_EQ(exact.facts.at(TetherFacts::classes), "[] 16");
   expect_consistent_tether(cspace, exact, {{0, 0}});
   const auto shorter = tethered(cspace, q, "15.99");
   EXPECT_EQ(shorter.status, PlanStatus::no_path) << shorter.why_not;

@@ -212,7 +212,7 @@ TEST(DiscoveringRobot, AnObstacleThatAppearsOnItsWayIsDrivenRound) {
   EXPECT_EQ(r.truth.is_blocked(6, 0), true);
 }
 
-// The trace: passes numbered within each replan, and every open-list entry labelled as seed 002
+// The trace: passes numbered within each replan, and every open-list entry labelled as the course's planning problem set
 // labels it.
 struct Recorder : ReplanTrace {
   std::size_t replans = 0, passes = 0, wrong = 0;

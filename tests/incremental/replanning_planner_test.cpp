@@ -9,6 +9,8 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/registry/world_queries.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/incremental/replan_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -63,8 +65,8 @@ TEST(ReplanningPlanners, DriveRoundTheChangesOfTheWorld) {
     EXPECT_EQ(report.path.back(), world.queries[0].goal);
     EXPECT_TRUE(check_path(last, report.path).valid) << check_path(last, report.path).reason;
     EXPECT_FALSE(check_path(first, report.path).valid);
-    EXPECT_EQ(report.facts.count("replan.changes_made"), 3);
-    EXPECT_GE(report.facts.count("replan.replans"), 3);  // the first plan, then one for each moment of change
+    EXPECT_EQ(report.facts.at(ReplanFacts::changes_made), 3);
+    EXPECT_GE(report.facts.at(ReplanFacts::replans), 3);  // the first plan, then one for each moment of change
     EXPECT_TRUE(report.certificate.certified);
   }
   // The picture's world is the one the drive ended in: obstacle 0 gone, the door and the late wall there.
@@ -83,8 +85,8 @@ TEST(ReplanningPlanners, ASensorOfThreeCellsLearnsOfTheDoorAtTheDoor) {
   const CSpace last(with_changes(world, 3));
   const auto seeing_all = plan_with("dstar-lite", cspace), seeing_near = plan_with("dstar-lite", cspace, {{"sensor", "3"}});
   ASSERT_TRUE(seeing_all.found && seeing_near.found) << seeing_near.why_not;
-  EXPECT_GT(seeing_near.facts.count("replan.moves"), seeing_all.facts.count("replan.moves"));
-  EXPECT_GT(seeing_near.facts.count("replan.replans"), seeing_all.facts.count("replan.replans"));
+  EXPECT_GT(seeing_near.facts.at(ReplanFacts::moves), seeing_all.facts.at(ReplanFacts::moves));
+  EXPECT_GT(seeing_near.facts.at(ReplanFacts::replans), seeing_all.facts.at(ReplanFacts::replans));
   EXPECT_TRUE(check_path(last, seeing_near.path).valid) << check_path(last, seeing_near.path).reason;
 }
 
@@ -99,8 +101,8 @@ TEST(ReplanningPlanners, AStillWorldCostsWhatTheRasterPlannerFinds) {
     SCOPED_TRACE(planner);
     const auto drive = plan_with(planner, cspace);
     ASSERT_TRUE(drive.found) << drive.why_not;
-    EXPECT_NEAR(drive.facts.number("replan.grid_cost") * 0.2, raster.facts.number("raster.grid_cost"), 1e-9);
-    EXPECT_EQ(drive.facts.count("replan.replans"), 1);
+    EXPECT_NEAR(drive.facts.at(ReplanFacts::grid_cost) * 0.2, raster.facts.at(RasterFacts::grid_cost), 1e-9);
+    EXPECT_EQ(drive.facts.at(ReplanFacts::replans), 1);
   }
 }
 

@@ -1,4 +1,4 @@
-// io/graph_reader: seed 000's graph_vector files, the forms the seed's Python writes, and every bad
+// io/graph_reader: the course's graph-search homework's graph_vector files, the forms the seed's Python writes, and every bad
 // graph with its one-line message naming the vertex.
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/graph_reader.hpp>

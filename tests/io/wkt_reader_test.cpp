@@ -1,5 +1,5 @@
 // read_wkt_obstacles (io/wkt_reader.cpp): the shipped WKT file ring by ring, coordinates as the
-// exact values of the nearest doubles (DESIGN.md), and every way a file can be wrong with its
+// exact values of the nearest doubles (docs/design.md), and every way a file can be wrong with its
 // exact message (naming the world file, the WKT file and the line).
 #include <polyplan/io/wkt_reader.hpp>
 #include "world_fixtures.hpp"

@@ -1,4 +1,4 @@
-// roadmaps/plan_json: the one writer of DESIGN.md's printed object, for reports over points and
+// plan/plan_json: the one writer of the object `polyplan plan --json` prints (docs/design.md), for reports over points and
 // over joint angles: the fixed keys, exact rationals for points, facts nested by their dots.
 #include <polyplan/plan/plan_json.hpp>
 
@@ -17,10 +17,10 @@ TEST(PlanJson, AFoundPointPathHasDoublesExactRationalsTheCertificateAndNestedFac
   report.path = {{Rational(7, 10), Rational(23, 10)}, {Rational(3), Rational(-1, 3)}};
   report.length = 2.5;
   report.certificate = {true, "exact path check"};
-  report.facts.set("roadmap.kind", "visibility");
-  report.facts.set("roadmap.vertices", 120);
-  report.facts.set("search.seconds", 0.001);
-  report.facts.set("query_seconds", 0.002);
+  report.facts.set(RoadmapFacts::kind, "visibility");
+  report.facts.set(RoadmapFacts::vertices, 120);
+  report.facts.set(SearchFacts::seconds, 0.001);
+  report.facts.set(QueryFacts::seconds, 0.002);
   const nlohmann::json j = plan_json(report, "start/goal");
   EXPECT_EQ(j["query"], "start/goal");
   EXPECT_EQ(j["found"], true);
@@ -55,8 +55,8 @@ TEST(PlanJson, JointAnglePathsAreListsOfAnglesWithoutExactCoordinates) {
   report.found = true;
   report.path = {{0.5, 1.0}, {0.6, 1.0}};
   report.length = 0.1;
-  report.facts.set("grid.torus", true);
-  report.facts.set("expanded", 12);
+  report.facts.set(FactKey<bool>{"grid.torus"}, true);
+  report.facts.set(FactKey<std::int64_t>{"expanded"}, 12);
   const nlohmann::json j = plan_json(report, "easy");
   EXPECT_EQ(j["path"], nlohmann::json::parse("[[0.5, 1.0], [0.6, 1.0]]"));
   EXPECT_FALSE(j.contains("path_exact"));
@@ -66,8 +66,8 @@ TEST(PlanJson, JointAnglePathsAreListsOfAnglesWithoutExactCoordinates) {
 
 TEST(PlanJson, AFactInsideAFactThatIsAValueIsRefused) {
   PlanReport<ExactPoint> report;
-  report.facts.set("search", "astar");
-  report.facts.set("search.expanded", 3);
+  report.facts.set(FactKey<std::string>{"search"}, "astar");
+  report.facts.set(SearchFacts::expanded, 3);
   EXPECT_THROW(plan_json(report), std::logic_error);
 }
 

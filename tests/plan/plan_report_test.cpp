@@ -1,5 +1,5 @@
-// roadmaps/plan_report: the named facts every planner reports — kinds kept, order of first
-// setting kept, typed reads that refuse a missing fact or one of another kind.
+// plan/plan_report: the facts every planner reports through typed keys — each key's type kept,
+// the order of first setting kept, a missing fact none or refused by name.
 #include <polyplan/plan/plan_report.hpp>
 
 #include <gtest/gtest.h>
@@ -10,52 +10,51 @@
 namespace polyplan {
 namespace {
 
-TEST(Facts, IntegersAreCountsFloatsAreMeasuresTextIsAWord) {
+constexpr FactKey<std::int64_t> offset{"offset"}, b{"b"}, a{"a"};
+constexpr FactKey<bool> torus{"grid.torus"};
+
+TEST(Facts, EachKeyKeepsItsTypeIntegersAreCountsNumbersAreMeasures) {
   Facts facts;
-  facts.set("roadmap.kind", "visibility");
-  facts.set("roadmap.vertices", std::size_t{58});
-  facts.set("roadmap.seconds", 0.25);
-  facts.set("grid.torus", true);
-  facts.set("offset", -3);
-  EXPECT_EQ(facts.text("roadmap.kind"), "visibility");
-  EXPECT_EQ(facts.count("roadmap.vertices"), 58);
-  EXPECT_EQ(facts.number("roadmap.vertices"), 58.0);  // a count reads as a number too
-  EXPECT_EQ(facts.number("roadmap.seconds"), 0.25);
-  EXPECT_TRUE(facts.flag("grid.torus"));
-  EXPECT_EQ(facts.count("offset"), -3);
-  EXPECT_TRUE(std::holds_alternative<std::string>(*facts.find("roadmap.kind")));
-  EXPECT_TRUE(std::holds_alternative<bool>(*facts.find("grid.torus")));
+  facts.set(RoadmapFacts::kind, "visibility");
+  facts.set(RoadmapFacts::vertices, std::size_t{58});
+  facts.set(RoadmapFacts::seconds, 0.25);
+  facts.set(QueryFacts::seconds, 2);  // a measure from an integer
+  facts.set(torus, true);
+  facts.set(offset, -3);
+  EXPECT_EQ(facts.at(RoadmapFacts::kind), "visibility");
+  EXPECT_EQ(facts.at(RoadmapFacts::vertices), 58);
+  EXPECT_EQ(facts.at(RoadmapFacts::seconds), 0.25);
+  EXPECT_EQ(facts.at(QueryFacts::seconds), 2.0);
+  EXPECT_TRUE(facts.at(torus));
+  EXPECT_EQ(facts.at(offset), -3);
+  EXPECT_TRUE(std::holds_alternative<std::string>(*facts.value_named("roadmap.kind")));
+  EXPECT_TRUE(std::holds_alternative<double>(*facts.value_named("query_seconds")));
+  EXPECT_TRUE(std::holds_alternative<bool>(*facts.value_named("grid.torus")));
 }
 
 TEST(Facts, NamesKeepTheOrderOfFirstSettingAndSettingAgainReplaces) {
   Facts facts;
-  facts.set("b", 1);
-  facts.set("a", 2);
-  facts.set("b", 3);
+  facts.set(b, 1);
+  facts.set(a, 2);
+  facts.set(b, 3);
   ASSERT_EQ(facts.entries().size(), 2u);
   EXPECT_EQ(facts.entries()[0].first, "b");
-  EXPECT_EQ(facts.count("b"), 3);
+  EXPECT_EQ(facts.at(b), 3);
   EXPECT_EQ(facts.entries()[1].first, "a");
 }
 
-TEST(Facts, MissingFactsAndOtherKindsAreRefusedByName) {
+TEST(Facts, AMissingFactIsNoneOrRefusedByName) {
   Facts facts;
-  facts.set("search.algorithm", "astar");
-  EXPECT_EQ(facts.find("search.expanded"), nullptr);
-  EXPECT_FALSE(facts.contains("search.expanded"));
+  facts.set(SearchFacts::algorithm, "astar");
+  EXPECT_EQ(facts.find(SearchFacts::expanded), std::nullopt);
+  EXPECT_FALSE(facts.contains(SearchFacts::expanded));
+  EXPECT_EQ(facts.find(SearchFacts::algorithm), "astar");
   try {
-    facts.count("search.expanded");
+    facts.at(SearchFacts::expanded);
     ADD_FAILURE() << "read a missing fact";
   } catch (const std::out_of_range& e) {
     EXPECT_STREQ(e.what(), "no fact \"search.expanded\"");
   }
-  try {
-    facts.number("search.algorithm");
-    ADD_FAILURE() << "read a word as a number";
-  } catch (const std::out_of_range& e) {
-    EXPECT_STREQ(e.what(), "the fact \"search.algorithm\" is not a number");
-  }
-  EXPECT_THROW(facts.flag("search.algorithm"), std::out_of_range);
 }
 
 TEST(CellGrid, StatesAreIndexedColumnFirst) {

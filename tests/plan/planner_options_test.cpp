@@ -47,14 +47,14 @@ TEST(OptionTable, ListsEveryOptionWithItsKindAndDefault) {
   const std::vector<OptionInfo> info = table().info();
   ASSERT_EQ(info.size(), 8u);
   const auto at = [&](std::size_t i) { return info[i].name + " [" + info[i].kind + "] = " + info[i].default_value; };
-  EXPECT_EQ(at(0), "cells [whole number >= 0] = 100");
-  EXPECT_EQ(at(1), "offset [whole number] = -2");
-  EXPECT_EQ(at(2), "step [number] = 0.5");
+  EXPECT_EQ(at(0), "cells [whole number in [0, inf)] = 100");
+  EXPECT_EQ(at(1), "offset [whole number in (-inf, inf)] = -2");
+  EXPECT_EQ(at(2), "step [number in (-inf, inf)] = 0.5");
   EXPECT_EQ(at(3), "wrap [true or false] = true");
   EXPECT_EQ(at(4), "label [text] = none");
   EXPECT_EQ(at(5), "shape [round|square] = round");
   EXPECT_EQ(at(6), "search [astar|dijkstra|bfs|dfs|greedy|wastar] = astar");
-  EXPECT_EQ(at(7), "weight [number >= 1] = 1");
+  EXPECT_EQ(at(7), "weight [number in [1, inf)] = 1");
   EXPECT_TRUE(info[3].flag);
   EXPECT_FALSE(info[0].flag);
   EXPECT_FALSE(info[5].flag);
@@ -90,7 +90,7 @@ TEST(OptionTable, RefusalsNameThePlannerTheOptionAndTheValue) {
   EXPECT_EQ(refusal({{"shape", "oval"}}), "planner demo: option shape=oval: expected one of round|square");
   EXPECT_EQ(refusal({{"search", "teleport"}}),
             "planner demo: option search=teleport: expected one of astar|dijkstra|bfs|dfs|greedy|wastar");
-  EXPECT_EQ(refusal({{"weight", "0.9"}}), "planner demo: option weight=0.9: expected a number of at least 1");
+  EXPECT_EQ(refusal({{"weight", "0.9"}}), "planner demo: option weight=0.9: expected a number in [1, inf)");
   EXPECT_EQ(refusal({{"colour", "red"}}),
             "planner demo: option colour=red: no such option (its options: cells, offset, step, wrap, label, shape, search, weight)");
   EXPECT_EQ(OptionTable<Options>().parse({}, "empty").cells, 100u);

@@ -11,7 +11,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 namespace polyplan {
@@ -34,6 +36,15 @@ std::string refusal(std::string_view planner, const Problem& problem) {
 }
 
 std::vector<Rational> numbers(std::initializer_list<int> values) { return {values.begin(), values.end()}; }
+
+// Whether the listed planner plans `problem` in the listing's space.
+bool planner_for_or_null(const PlannerListing& listing, const Problem& problem) {
+  try {
+    return planner_for(listing.name, problem).space == listing.space;
+  } catch (const InputError&) {
+    return false;
+  }
+}
 
 TEST(Problem, OneCallReadsAWorldOrAnArmByWhatTheFileHolds) {
   const Problem world = read("worlds/seed004.json"), arm = read("arms/two_link_points.json");
@@ -133,6 +144,42 @@ TEST(Report, PicturesAreDrawnForEveryKindOfProblem) {
   EXPECT_EQ(arm_pictures[1].query, "hard");
   EXPECT_NE(arm_pictures[0].drawing.str().find("two_link_points.json · easy · grid · resolution 5"), std::string::npos);
   EXPECT_THROW(draw_reports(world, {&plan, &easy}), InputError);  // reports of two spaces
+}
+
+// A value just outside an option's range, as text: below its least value, or above its greatest.
+std::optional<std::string> outside(const OptionRange& range) {
+  if (std::isfinite(range.min)) return detail::show_number(range.min_open ? range.min : range.min - 1);
+  if (std::isfinite(range.max)) return detail::show_number(range.max_open ? range.max : range.max + 1);
+  return std::nullopt;
+}
+
+TEST(Catalog, EveryNumberOrChoiceOptionIsDeclaredWithItsRangeAndRefusedOutsideItBeforeAnythingIsBuilt) {
+  const Problem problems[] = {read("worlds/seed004.json"), read("worlds/car_park.json"), read("arms/two_link_points.json")};
+  std::size_t refused = 0;
+  for (const PlannerListing& planner : planner_catalog()) {
+    const Problem* problem = nullptr;
+    for (const Problem& p : problems)
+      if (!problem && planner_for_or_null(planner, p)) problem = &p;
+    ASSERT_NE(problem, nullptr) << planner.name << " plans none of the test's problems";
+    for (const OptionInfo& option : planner.options) {
+      SCOPED_TRACE(planner.name + " " + option.name);
+      const bool number = option.kind.find("number") != std::string::npos;
+      EXPECT_TRUE(!number || option.range) << option.kind;
+      EXPECT_TRUE(option.kind.find('|') == std::string::npos || !option.choices.empty()) << option.kind;
+      if (!option.range) continue;
+      const auto value = outside(*option.range);
+      if (!value) continue;
+      const std::string assignment = "option " + option.name + "=" + *value + ": ";
+      try {
+        make_planner(planner.name, *problem, {{option.name, *value}});
+        ADD_FAILURE() << "accepted " << assignment;
+      } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(assignment), std::string::npos) << e.what();
+        ++refused;
+      }
+    }
+  }
+  EXPECT_GT(refused, 50u);
 }
 
 TEST(Catalog, ListsEverySpacesPlannersOnceEachInTheRegistriesOrder) {

@@ -1,10 +1,11 @@
-// Bug1 and Bug2 on the exact C-space: round seed 002's wall and out of the U-shaped trap, paths
+// Bug1 and Bug2 on the exact C-space: round the course's planning problem set's wall and out of the U-shaped trap, paths
 // checked exactly, hit and leave points where the geometry puts them, the distance within the
 // textbook's bound computed here from the obstacle's own perimeter; unreachable goals no_path.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -34,16 +35,16 @@ TEST(BugPlanners, GoRoundSeedTwosWallWithinTheirBounds) {
     EXPECT_EQ(report.path.front(), q.start);
     EXPECT_EQ(report.path.back(), q.goal);
     EXPECT_TRUE(check_path(cspace, report.path).valid);
-    EXPECT_EQ(report.facts.text("bug.hits"), "(0.000000, 0.200000)");
+    EXPECT_EQ(report.facts.at(BugFacts::hits), "(0.000000, 0.200000)");
     const double bound = std::string(bug) == "bug1" ? d + 1.5 * perimeter : d + 0.5 * 2 * perimeter;  // the m-line crosses the wall twice
-    EXPECT_NEAR(report.facts.number("bug.bound"), bound, 1e-9);
+    EXPECT_NEAR(report.facts.at(BugFacts::bound), bound, 1e-9);
     EXPECT_LE(report.length, bound);
     EXPECT_GT(report.length, 200);  // round an end of the wall
   }
   // Bug2 leaves where the m-line comes out of the wall's far side, x = 0.5: y = 0.5 − 0.1·3.5.
-  EXPECT_EQ(walk("bug2", cspace, q).facts.text("bug.leaves"), "(0.500000, 0.150000)");
+  EXPECT_EQ(walk("bug2", cspace, q).facts.at(BugFacts::leaves), "(0.500000, 0.150000)");
   // Bug1 leaves from the wall's point nearest the goal, the foot of the perpendicular on x = 0.5.
-  EXPECT_EQ(walk("bug1", cspace, q).facts.text("bug.leaves"), "(0.500000, 0.000000)");
+  EXPECT_EQ(walk("bug1", cspace, q).facts.at(BugFacts::leaves), "(0.500000, 0.000000)");
 }
 
 // Both Bugs reach the goal of the world's first query along an exactly valid path within their
@@ -54,8 +55,8 @@ void expect_both_walk_out(const CSpace& cspace, const Query& q, const std::strin
     const auto report = walk(bug, cspace, q);
     ASSERT_TRUE(report.found) << report.why_not;
     EXPECT_TRUE(check_path(cspace, report.path).valid);
-    EXPECT_LE(report.length, report.facts.number("bug.bound"));
-    EXPECT_EQ(report.facts.text("bug.hits").rfind(first_hit, 0), 0u) << report.facts.text("bug.hits");
+    EXPECT_LE(report.length, report.facts.at(BugFacts::bound));
+    EXPECT_EQ(report.facts.at(BugFacts::hits).rfind(first_hit, 0), 0u) << report.facts.at(BugFacts::hits);
   }
 }
 
@@ -64,7 +65,7 @@ TEST(BugPlanners, WalkOutOfTheTrap) {
   const CSpace cspace(world);
   expect_both_walk_out(cspace, world.queries[0], "(10.000000, 7.000000)");  // the inside of the U's bottom
   // Bug2 leaves where the m-line x = 10 meets the U's outside bottom, y = 6.
-  EXPECT_EQ(walk("bug2", cspace, world.queries[0]).facts.text("bug.leaves"), "(10.000000, 6.000000)");
+  EXPECT_EQ(walk("bug2", cspace, world.queries[0]).facts.at(BugFacts::leaves), "(10.000000, 6.000000)");
 }
 
 // Out of the spiral's heart (eight overlapping walls, one C-obstacle): both walk it out within

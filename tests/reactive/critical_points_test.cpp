@@ -1,4 +1,4 @@
-// The critical points of a potential: seed 002's infinite wall has exactly one, the minimum at
+// The critical points of a potential: the course's planning problem set's infinite wall has exactly one, the minimum at
 // x = −0.68233; between two squares the search finds the saddle and the minima that finite
 // differences of the value alone (no analytic gradient) find, each classified as the
 // finite-difference Hessian says.

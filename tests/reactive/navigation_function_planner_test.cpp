@@ -1,11 +1,12 @@
 // The navigation function of a sphere world: through the gap between two discs where the potential
-// field stops, and every query of seed 000's sphere world, paths checked exactly and the κ used
+// field stops, and every query of the course's graph-search homework's sphere world, paths checked exactly and the κ used
 // reported; worlds that are not sphere worlds said so; a bad κ named.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -30,12 +31,12 @@ TEST(NavigationFunctionPlanner, PassesTheGapWhereThePotentialFieldStops) {
   ASSERT_TRUE(navigation.found) << navigation.why_not;
   EXPECT_EQ(navigation.path.back(), q.goal);
   EXPECT_TRUE(check_path(cspace, navigation.path).valid);
-  EXPECT_GE(navigation.facts.number("navigation.kappa"), 2);
-  EXPECT_EQ(navigation.facts.count("navigation.spheres"), 2);
+  EXPECT_GE(navigation.facts.at(NavigationFacts::kappa), 2);
+  EXPECT_EQ(navigation.facts.at(NavigationFacts::spheres), 2);
   // A κ given is the κ used.
   const auto at_64 = plan_with("navigation-function", cspace, q, {{"kappa", "64"}});
   ASSERT_TRUE(at_64.found) << at_64.why_not;
-  EXPECT_EQ(at_64.facts.number("navigation.kappa"), 64);
+  EXPECT_EQ(at_64.facts.at(NavigationFacts::kappa), 64);
 }
 
 TEST(NavigationFunctionPlanner, SolvesEveryQueryOfTheSphereWorld) {

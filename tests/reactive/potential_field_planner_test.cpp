@@ -1,11 +1,13 @@
 // The potential-field planner on the exact C-space: solved where the field leads to the goal (the
-// path re-checked exactly), local_minimum in the U-shaped trap and at seed 002's minimum beside
+// path re-checked exactly), local_minimum in the U-shaped trap and at the course's planning problem set's minimum beside
 // the infinite wall, no_path proved between components, the step limit, bad options named.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -25,7 +27,7 @@ PlanReport<ExactPoint> descend(const CSpace& cspace, const Query& query, const O
 // "(x, y)" of the fact potential.stopped_at.
 std::pair<double, double> stopped_at(const PlanReport<ExactPoint>& report) {
   double x = 0, y = 0;
-  EXPECT_EQ(std::sscanf(report.facts.text("potential.stopped_at").c_str(), "(%lf, %lf)", &x, &y), 2);
+  EXPECT_EQ(std::sscanf(report.facts.at(PotentialFacts::descent.stopped_at).c_str(), "(%lf, %lf)", &x, &y), 2);
   return {x, y};
 }
 
@@ -41,7 +43,7 @@ TEST(PotentialFieldPlanner, DescendsToAGoalInTheOpenWithAnExactlyCheckedPath) {
     EXPECT_EQ(report.path.front(), q.start);
     EXPECT_EQ(report.path.back(), q.goal);
     EXPECT_TRUE(check_path(cspace, report.path).valid) << check_path(cspace, report.path).reason;
-    EXPECT_GT(report.facts.count("potential.steps"), 10);
+    EXPECT_GT(report.facts.at(PotentialFacts::descent.steps), 10);
   }
 }
 
@@ -51,13 +53,13 @@ TEST(PotentialFieldPlanner, TheUShapedTrapIsALocalMinimumAboveItsBottomWall) {
   EXPECT_EQ(report.status, PlanStatus::local_minimum) << report.why_not;
   EXPECT_NE(report.why_not.find("a local minimum at"), std::string::npos) << report.why_not;
   const auto [x, y] = stopped_at(report);
-  // Seed 002's minimum again, turned: 0.68233 above the wall's top y = 7, where the repulsion
+  // The course's planning problem set's minimum again, turned: 0.68233 above the wall's top y = 7, where the repulsion
   // (η = Q* = 1) balances the conic pull (ζ = 1).
   EXPECT_NEAR(x, 10, 1e-4);
   EXPECT_NEAR(y, 7.68233, 1e-4);
 }
 
-// Seed 002, problem 1: ζ = 1 conic (d* = 0), η = 1, Q* = 1; the descent ends at the seed's one
+// The course's planning problem set, problem 1: ζ = 1 conic (d* = 0), η = 1, Q* = 1; the descent ends at the seed's one
 // critical point, the minimum (−0.68233, 0).
 TEST(PotentialFieldPlanner, SeedTwosWallHoldsTheRobotAtItsMinimum) {
   const World world = shipped("seed002_wall");
@@ -74,8 +76,8 @@ TEST(PotentialFieldPlanner, NoPathIsProvedAndTheStepLimitIsALimit) {
   const World trap = shipped("u_trap");
   const auto cut = descend(CSpace(trap), trap.queries[0], {{"max-steps", "3"}});
   EXPECT_EQ(cut.status, PlanStatus::limit);
-  EXPECT_EQ(cut.facts.text("stopped_by"), "step limit");
-  EXPECT_EQ(cut.facts.count("potential.steps"), 3);
+  EXPECT_EQ(cut.facts.at(QueryFacts::stopped_by), "step limit");
+  EXPECT_EQ(cut.facts.at(PotentialFacts::descent.steps), 3);
 }
 
 TEST(PotentialFieldPlanner, BadOptionsAreNamed) {
@@ -87,7 +89,7 @@ TEST(PotentialFieldPlanner, BadOptionsAreNamed) {
       entry->make(cspace, {{name, value}});
       FAIL() << "accepted";
     } catch (const InputError& e) {
-      EXPECT_EQ(std::string(e.what()).rfind("planner potential-field: " + name, 0), 0u) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind("planner potential-field: option " + name + "=" + value + ": expected a ", 0), 0u) << e.what();
     }
   }
 }

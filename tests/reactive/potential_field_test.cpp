@@ -1,5 +1,5 @@
 // The potential of the potential-field planner: gradients and Hessians against finite
-// differences, continuity across d* and Q*, and seed 002's infinite wall — one critical point, a
+// differences, continuity across d* and Q*, and the course's planning problem set's infinite wall — one critical point, a
 // minimum at x ≈ −0.68233, whose Hessian is the seed's own formula.
 #include <polyplan/reactive/potential_field.hpp>
 
@@ -75,7 +75,7 @@ TEST(PotentialField, ValueAndGradientAreContinuousAcrossDStarAndQStar) {
               1e-12);
 }
 
-// Seed 002, problem 1: a point robot left of a wall at x = 0 (here a rectangle whose far ends lie
+// The course's planning problem set, problem 1: a point robot left of a wall at x = 0 (here a rectangle whose far ends lie
 // far beyond Q*), the goal at (2, 0), conic attraction ζ = 1, repulsion η = 1, Q* = 1.
 TEST(PotentialField, SeedTwosInfiniteWallHasOneMinimumAtMinus068233) {
   const std::vector<Vec2> wall{{0, -1000}, {1, -1000}, {1, 1000}, {0, 1000}};

@@ -1,4 +1,4 @@
-// TangentBug on seed 002's walls (the endless one: limit with d_followed = 2, never a hang; the one
+// TangentBug on the course's planning problem set's walls (the endless one: limit with d_followed = 2, never a hang; the one
 // open at the top: the touch-sensing robot leaves at (1, √3), the far-seeing one takes the corner),
 // out of the U-shaped trap, the spiral and the maze, an unreachable goal inside a closed ring; the
 // visibility polygon's windows where the geometry puts them; the sensed regions in the picture.
@@ -9,6 +9,8 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/reactive/visibility_region.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -25,7 +27,7 @@ PlanReport<ExactPoint> tangent_bug(const CSpace& cspace, const Query& q, const s
   return planners<TranslatingRobot>().find("tangent-bug")->make(cspace, {{"sensor-range", range}})->plan(q, QueryOptions{record});
 }
 
-// Seed 002 (b): the robot meets the wall at (0, 0), the wall's point nearest the goal, so
+// The course's planning problem set (b): the robot meets the wall at (0, 0), the wall's point nearest the goal, so
 // d_followed = 2, and follows it up for ever: here until max-distance, whatever it senses.
 TEST(TangentBug, FollowsTheEndlessWallUntilItsDistanceLimitWithDFollowedTwo) {
   const World world = shipped("seed002_endless_wall");
@@ -34,17 +36,17 @@ TEST(TangentBug, FollowsTheEndlessWallUntilItsDistanceLimitWithDFollowedTwo) {
     SCOPED_TRACE(range);
     const auto report = tangent_bug(cspace, world.queries[0], range);
     EXPECT_EQ(report.status, PlanStatus::limit) << report.why_not;
-    EXPECT_EQ(report.facts.text("stopped_by"), "distance limit");
-    EXPECT_EQ(report.facts.number("tangent_bug.d_followed"), 2);
-    EXPECT_EQ(report.facts.text("bug.hits"), "(0.000000, 0.000000)");
-    EXPECT_EQ(report.facts.text("bug.leaves"), "");
-    EXPECT_NEAR(report.facts.number("bug.distance"), 10000, 1e-6);
+    EXPECT_EQ(report.facts.at(QueryFacts::stopped_by), "distance limit");
+    EXPECT_EQ(report.facts.at(TangentBugFacts::d_followed), 2);
+    EXPECT_EQ(report.facts.at(BugFacts::hits), "(0.000000, 0.000000)");
+    EXPECT_EQ(report.facts.at(BugFacts::leaves), "");
+    EXPECT_NEAR(report.facts.at(BugFacts::distance), 10000, 1e-6);
     // Up, with the wall on its right: the wall's ends tie, so no discontinuity says otherwise.
     EXPECT_NE(report.why_not.find("at (0.000000, 9997.000000) following the boundary, d_followed 2"), std::string::npos) << report.why_not;
   }
 }
 
-// Seed 002 (c): the wall [0, 1] × [−10⁴, 3]. Touch only: up the wall's left side, over its top and
+// The course's planning problem set (c): the wall [0, 1] × [−10⁴, 3]. Touch only: up the wall's left side, over its top and
 // down its right side until the distance to (2, 0) falls below d_followed = 2, at (1, √3); then
 // straight to the goal: 3 + 3 + 1 + (3 − √3) + 2.
 TEST(TangentBug, LeavesTheHalfWallAtOneRootThreeTouchingIt) {
@@ -53,9 +55,9 @@ TEST(TangentBug, LeavesTheHalfWallAtOneRootThreeTouchingIt) {
   const auto report = tangent_bug(cspace, world.queries[0], "0");
   ASSERT_TRUE(report.found) << report.why_not;
   EXPECT_TRUE(check_path(cspace, report.path).valid);
-  EXPECT_EQ(report.facts.text("bug.hits"), "(0.000000, 0.000000)");
-  EXPECT_EQ(report.facts.number("tangent_bug.d_followed"), 2);
-  EXPECT_EQ(report.facts.text("bug.leaves"), "(1.000000, 1.732051)");
+  EXPECT_EQ(report.facts.at(BugFacts::hits), "(0.000000, 0.000000)");
+  EXPECT_EQ(report.facts.at(TangentBugFacts::d_followed), 2);
+  EXPECT_EQ(report.facts.at(BugFacts::leaves), "(1.000000, 1.732051)");
   ASSERT_EQ(report.path.size(), 6u);  // start, (0, 0), (0, 3), (1, 3), the leave point, the goal
   EXPECT_EQ(report.path[4].x, 1);
   EXPECT_NEAR(to_double(report.path[4].y), std::sqrt(3.0), 1e-14);
@@ -71,7 +73,7 @@ TEST(TangentBug, SeeingFarItHeadsForTheHalfWallsCorners) {
   ASSERT_TRUE(report.found) << report.why_not;
   const std::vector<ExactPoint> expected{{-3, 0}, {0, 3}, {1, 3}, {2, 0}};
   EXPECT_EQ(report.path, expected);
-  EXPECT_EQ(report.facts.text("bug.hits"), "");
+  EXPECT_EQ(report.facts.at(BugFacts::hits), "");
   EXPECT_NEAR(report.length, 3 * std::sqrt(2.0) + 1 + std::sqrt(10.0), 1e-12);
 }
 
@@ -100,8 +102,8 @@ TEST(TangentBug, WalksOutOfTheTrap) {
   const auto report = tangent_bug(cspace, world.queries[0], "inf");
   ASSERT_TRUE(report.found) << report.why_not;
   EXPECT_TRUE(check_path(cspace, report.path).valid);
-  EXPECT_EQ(report.facts.text("bug.hits"), "(10.000000, 7.000000)");
-  EXPECT_EQ(report.facts.text("bug.leaves"), "(14.000000, 6.000000)");
+  EXPECT_EQ(report.facts.at(BugFacts::hits), "(10.000000, 7.000000)");
+  EXPECT_EQ(report.facts.at(BugFacts::leaves), "(14.000000, 6.000000)");
   EXPECT_NEAR(report.length, 3 + 3 + 7 + 1 + 8 + std::sqrt(32.0), 1e-12);
 }
 
@@ -128,7 +130,7 @@ TEST(TangentBug, AGoalInsideAClosedRingIsNoPath) {
     const auto report = tangent_bug(cspace, world.queries[0], range);
     EXPECT_EQ(report.status, PlanStatus::no_path) << report.why_not;
     EXPECT_NE(report.why_not.find("the goal is unreachable"), std::string::npos) << report.why_not;
-    EXPECT_EQ(report.facts.number("tangent_bug.d_followed"), 5);
+    EXPECT_EQ(report.facts.at(TangentBugFacts::d_followed), 5);
   }
 }
 

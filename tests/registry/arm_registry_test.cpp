@@ -17,6 +17,7 @@
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/arm/arm_facts.hpp>
 #include "arm/arm_fixtures.hpp"
 #include "registry/registry_fixtures.hpp"
 
@@ -110,9 +111,9 @@ TEST(ArmRegistry, GridIsRegisteredWithItsOptions) {
   p.arm.links = {1, 1};
   p.queries = {{"q", {0, 0}, {1, 1}}};
   const auto interval = grid->make(p, {{"torus", "false"}, {"evaluation", "eager"}, {"resolution", "10"}})->plan(p.queries[0]);
-  EXPECT_EQ(interval.facts.flag("grid.torus"), false);
-  EXPECT_EQ(interval.facts.text("grid.evaluation"), "eager");
-  EXPECT_EQ(interval.facts.count("cells_evaluated"), 36 * 36);
+  EXPECT_EQ(interval.facts.at(ArmGridFacts::grid_torus), false);
+  EXPECT_EQ(interval.facts.at(ArmGridFacts::grid_evaluation), "eager");
+  EXPECT_EQ(interval.facts.at(ArmGridFacts::cells_evaluated), 36 * 36);
   try {
     grid->make(p, {{"resolution", "7"}});
     ADD_FAILURE() << "7 degrees do not divide 360";

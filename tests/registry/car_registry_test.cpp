@@ -15,6 +15,7 @@
 #include <polyplan/draw/car_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
+#include <polyplan/car/car_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -74,7 +75,7 @@ TEST_P(EveryCarPlannerOnEveryWorld, KeepsThePlannerPromises) {
     EXPECT_EQ(report.path.front().pose, start);
     const CarPose end = report.path.back().pose;
     const double miss = std::max(std::hypot(end.x - goal.x, end.y - goal.y), r * std::abs(std::remainder(end.theta - goal.theta, 2 * pi)));
-    if (report.facts.contains("goal_miss")) EXPECT_LE(miss, report.facts.number("goal_miss") + 1e-12);
+    if (report.facts.contains(CarFacts::goal_miss)) EXPECT_LE(miss, report.facts.at(CarFacts::goal_miss) + 1e-12);
     else EXPECT_LE(miss, 1e-9 * (1 + std::abs(goal.x) + std::abs(goal.y) + r));
     if (auto why = test::sampled_car_overlap(world, report.path)) ADD_FAILURE() << *why;
     double length = 0;

@@ -3,6 +3,7 @@
 // and the names a registry holds) and the promises every report keeps whatever its space.
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -52,7 +53,7 @@ void expect_consistent_answer(const PlanReport<Configuration>& report, const std
     EXPECT_TRUE(report.path.empty());
   }
   if (report.status == PlanStatus::limit) {  // braces: EXPECT_TRUE is an if-else of its own
-    EXPECT_TRUE(report.facts.contains("stopped_by"));
+    EXPECT_TRUE(report.facts.contains(QueryFacts::stopped_by));
   }
   const nlohmann::json json = plan_json(report, query);
   EXPECT_EQ(json["found"], report.found);
@@ -64,10 +65,10 @@ void expect_consistent_answer(const PlanReport<Configuration>& report, const std
 // A time limit cuts where the machine's speed says: such answers are not compared.
 template <class Configuration>
 bool cut_by_time(const PlanReport<Configuration>& report) {
-  return report.facts.contains("stopped_by") && report.facts.text("stopped_by") == "time limit";
+  return report.facts.contains(QueryFacts::stopped_by) && report.facts.at(QueryFacts::stopped_by) == "time limit";
 }
 
-// The same queries asked in turn of two planners built alike give the same answers (DESIGN.md:
+// The same queries asked in turn of two planners built alike give the same answers (docs/design.md:
 // the same input gives the same answer every time) until a time limit cuts a query of either:
 // where the machine's speed stopped it, a roadmap planner has grown a different roadmap, and the
 // queries after use it. (Each query draws its own random stream, so a tree planner's later

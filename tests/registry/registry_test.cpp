@@ -15,6 +15,9 @@
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/rotation/rotation_facts.hpp>
 #include "rotation/pose_motion_check.hpp"
 #include "registry/registry_fixtures.hpp"
 
@@ -163,7 +166,7 @@ TEST_P(EveryRotatingPlannerOnEveryWorld, KeepsThePlannerPromises) {
       EXPECT_EQ(report.path.back().position, q.goal);
       if (auto why = test::check_motions_are_single(report.path)) ADD_FAILURE() << *why;
       if (auto why = test::sampled_overlap(world, report.path, 0.05)) ADD_FAILURE() << *why;
-      if (!q.start_theta.value_or(0) && !q.goal_theta.value_or(0) && report.facts.number("rotation") == 0) {
+      if (!q.start_theta.value_or(0) && !q.goal_theta.value_or(0) && report.facts.at(RotationFacts::rotation) == 0) {
         const CSpace cspace(world);
         const auto translating = VisibilityGraph(cspace).plan(q);
         ASSERT_TRUE(translating.found);
@@ -206,8 +209,8 @@ TEST(Registry, OptionsAreSetByNameAndBadOnesNameThePlannerAndTheOption) {
   const ShippedWorld& w = shipped("sphere_world");
   const auto* raster = planners<TranslatingRobot>().find("raster");
   const auto coarse = raster->make(w.cspace, {{"resolution", "10"}, {"search", "dijkstra"}})->plan(w.world.queries[1]);
-  EXPECT_EQ(coarse.facts.count("raster.cells_per_axis"), 10);
-  EXPECT_EQ(coarse.facts.text("search.algorithm"), "dijkstra");
+  EXPECT_EQ(coarse.facts.at(RasterFacts::cells_per_axis), 10);
+  EXPECT_EQ(coarse.facts.at(SearchFacts::algorithm), "dijkstra");
   const auto message = [&](const OptionValues& values) {
     try {
       raster->make(w.cspace, values);
@@ -221,8 +224,8 @@ TEST(Registry, OptionsAreSetByNameAndBadOnesNameThePlannerAndTheOption) {
   EXPECT_EQ(message({{"colour", "red"}}),
             "planner raster: option colour=red: no such option (its options: resolution, connectivity, search, weight)");
   EXPECT_EQ(message({{"connectivity", "6"}}), "planner raster: option connectivity=6: expected one of 8|4");
-  EXPECT_EQ(message({{"weight", "0.5"}}), "planner raster: option weight=0.5: expected a number of at least 1");
-  EXPECT_NE(message({{"resolution", "0"}}).find("cells per axis must be between 1 and"), std::string::npos);
+  EXPECT_EQ(message({{"weight", "0.5"}}), "planner raster: option weight=0.5: expected a number in [1, inf)");
+  EXPECT_EQ(message({{"resolution", "0"}}), "planner raster: option resolution=0: expected a whole number in [1, 2048]");
 }
 
 TEST(Registry, TwoEntriesOfOneNameAreRefused) {

@@ -4,6 +4,8 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/roadmaps/roadmap_facts.hpp>
 #include "movingai_fixtures.hpp"
 #include "world_fixtures.hpp"
 
@@ -34,16 +36,16 @@ TEST(TrapezoidPlanner, FunnelPathAroundASquareIsTheShortest) {
   EXPECT_EQ(report.path[1].x, 4);
   EXPECT_EQ(report.path[2].x, 6);
   EXPECT_EQ(report.path[1].y, report.path[2].y);  // both below or both above
-  EXPECT_EQ(report.facts.count("trapezoid.cells"), 4);
-  EXPECT_EQ(report.facts.count("trapezoid.walls"), 4);
-  EXPECT_EQ(report.facts.count("roadmap.vertices"), 8);
-  EXPECT_EQ(report.facts.count("roadmap.edges"), 8);
-  EXPECT_EQ(report.facts.count("trapezoid.channel_cells"), 3);
-  EXPECT_EQ(report.facts.count("sweep.events"), 8);
-  EXPECT_EQ(report.facts.count("sweep.most_crossed"), 4);
+  EXPECT_EQ(report.facts.at(TrapezoidFacts::cells), 4);
+  EXPECT_EQ(report.facts.at(TrapezoidFacts::walls), 4);
+  EXPECT_EQ(report.facts.at(RoadmapFacts::vertices), 8);
+  EXPECT_EQ(report.facts.at(RoadmapFacts::edges), 8);
+  EXPECT_EQ(report.facts.at(TrapezoidFacts::channel_cells), 3);
+  EXPECT_EQ(report.facts.at(TrapezoidFacts::sweep_events), 8);
+  EXPECT_EQ(report.facts.at(TrapezoidFacts::sweep_most_crossed), 4);
   // The zig-zag: 1 + sqrt(13) + 1 + 1 + sqrt(13) + 1 through (2, 5), a wall midpoint, (5, 2 or 8), ...
-  EXPECT_NEAR(report.facts.number("trapezoid.zigzag_length"), 4 + 2 * std::sqrt(13.0), 1e-12);
-  EXPECT_NEAR(report.facts.number("trapezoid.funnel_length"), report.length, 1e-12);
+  EXPECT_NEAR(report.facts.at(TrapezoidFacts::zigzag_length), 4 + 2 * std::sqrt(13.0), 1e-12);
+  EXPECT_NEAR(report.facts.at(TrapezoidFacts::funnel_length), report.length, 1e-12);
   EXPECT_TRUE(report.certificate.certified);
 }
 
@@ -66,7 +68,7 @@ TEST(TrapezoidPlanner, StartAndGoalInOneTrapezoidAreJoinedDirectly) {
   const auto report = planner.plan(between(pt("0.5", "1"), pt("3.5", "9")));
   ASSERT_TRUE(report.found);
   EXPECT_EQ(report.path, (std::vector<ExactPoint>{pt("0.5", "1"), pt("3.5", "9")}));
-  EXPECT_EQ(report.facts.count("search.expanded"), 0);
+  EXPECT_EQ(report.facts.at(SearchFacts::expanded), 0);
 }
 
 // Two obstacles touching at (5, 5) close a band across the box.
@@ -164,11 +166,11 @@ TEST(TrapezoidPlanner, OnRandomWorldsTheChannelPathIsValidAndBetweenTheOptimumAn
       ++found;
       EXPECT_TRUE(check_path(c, report.path).valid);
       EXPECT_GE(report.length, best.length - 1e-9);
-      EXPECT_LE(report.length, report.facts.number("trapezoid.zigzag_length") + 1e-9);
+      EXPECT_LE(report.length, report.facts.at(TrapezoidFacts::zigzag_length) + 1e-9);
       // A* finds the shortest zig-zag on the roadmap, as Dijkstra does (an admissible heuristic
       // and true edge lengths from the query's own start and goal).
-      EXPECT_NEAR(report.facts.number("trapezoid.zigzag_length"),
-                  uniform_cost.plan(query).facts.number("trapezoid.zigzag_length"), 1e-9);
+      EXPECT_NEAR(report.facts.at(TrapezoidFacts::zigzag_length),
+                  uniform_cost.plan(query).facts.at(TrapezoidFacts::zigzag_length), 1e-9);
     }
   }
   EXPECT_GT(answered, 100);
@@ -230,9 +232,9 @@ TEST(TrapezoidPlanner, TheZigzagIsTheShortestPathOnTheRoadmapFromStartsOnWallsAn
       const auto report = planner.plan(between(start, goal));
       const double expected = shortest_zigzag(planner, start, goal);
       ASSERT_EQ(report.found, expected < INFINITY) << report.why_not;
-      if (!report.found || report.facts.count("search.expanded") == 0) continue;
+      if (!report.found || report.facts.at(SearchFacts::expanded) == 0) continue;
       ++compared;
-      EXPECT_NEAR(report.facts.number("trapezoid.zigzag_length"), expected, 1e-9);
+      EXPECT_NEAR(report.facts.at(TrapezoidFacts::zigzag_length), expected, 1e-9);
     }
   }
   EXPECT_GT(compared, 60);

@@ -6,6 +6,7 @@
 #include <polyplan/io/movingai_scenario.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -91,8 +92,8 @@ TEST(VisibilityGraph, AroundOneSquare) {
   const CSpace c(world_from(R"({"obstacles": [[[1, 1], [3, 1], [3, 3], [1, 3]]]})"));
   VisibilityGraph graph(c);
   const Report plan = graph.plan(between(pt("0", "0"), pt("4", "4")));
-  EXPECT_EQ(plan.facts.count("roadmap.vertices"), 4);
-  EXPECT_EQ(plan.facts.count("roadmap.edges"), 4);  // the sides; the diagonals cross the square
+  EXPECT_EQ(plan.facts.at(RoadmapFacts::vertices), 4);
+  EXPECT_EQ(plan.facts.at(RoadmapFacts::edges), 4);  // the sides; the diagonals cross the square
   ASSERT_TRUE(plan.found);
   EXPECT_NEAR(plan.length, 2 * std::hypot(1, 3), 1e-12);
   EXPECT_EQ(plan.path.size(), 3u);
@@ -219,7 +220,7 @@ TEST(VisibilityGraph, TwoPartRobotMatchesBruteForce) {
   // The full graph (every visible pair, as courses draw it) finds the same length with more edges.
   VisibilityGraph full(cspace, VisibilityKind::full);
   EXPECT_NEAR(full.plan(q).length, *expected, 1e-9);
-  EXPECT_GT(full.plan(q).facts.count("roadmap.edges"), plan.facts.count("roadmap.edges"));
+  EXPECT_GT(full.plan(q).facts.at(RoadmapFacts::edges), plan.facts.at(RoadmapFacts::edges));
 }
 
 TEST(VisibilityGraph, EverySearchFindsAValidPathAndTheOptimalOnesAgree) {

@@ -5,6 +5,7 @@
 #include <polyplan/geometry/detail/cgal_types.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/roadmaps/voronoi_planner.hpp>
+#include <polyplan/roadmaps/roadmap_facts.hpp>
 #include "movingai_fixtures.hpp"
 #include "world_fixtures.hpp"
 
@@ -115,7 +116,7 @@ TEST(VoronoiPlanner, AroundASquareTheWidestPassageIsHalfItsWidth) {
   const auto report = planner.plan(between(pt("2", "5"), pt("8", "5")));
   ASSERT_TRUE(report.found) << report.why_not;
   EXPECT_NEAR(report.bottleneck.value().clearance, 2, 1e-7);
-  EXPECT_NEAR(report.facts.number("voronoi.bottleneck"), 2, 1e-12);
+  EXPECT_NEAR(report.facts.at(VoronoiFacts::bottleneck), 2, 1e-12);
   EXPECT_TRUE(check_path(c, report.path).valid);
   // The bottleneck named is a point of the path that is that close to the boundary.
   const ExactPoint at{Rational(report.bottleneck.value().x), Rational(report.bottleneck.value().y)};
@@ -160,7 +161,7 @@ TEST(VoronoiPlanner, APassageNarrowerThanDoublesResolveIsTakenExactly) {
   VoronoiPlanner planner(c);
   const auto report = planner.plan(world.queries[1]);
   ASSERT_TRUE(report.found) << report.why_not;
-  EXPECT_TRUE(report.facts.flag("voronoi.narrows"));
+  EXPECT_TRUE(report.facts.at(VoronoiFacts::narrows));
   EXPECT_TRUE(check_path(c, report.path).valid);
   EXPECT_LT(report.bottleneck.value().clearance, 1e-15);
 }

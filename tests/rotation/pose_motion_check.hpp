@@ -1,7 +1,7 @@
 #pragma once
 // An independent re-check of a rotating robot's pose path, by dense sampling in doubles.
 //
-// The rotation planner certifies its motions exactly (DESIGN.md "Exactness"). A test that asked
+// The rotation planner certifies its motions exactly (docs/design.md "Exactness"). A test that asked
 // the same exact code whether the path is free would share its mistakes, so this check shares
 // none of it: no CGAL, no C-space, only the robot placed in doubles at closely spaced poses along
 // each motion and the area it shares with each obstacle. Sampling can miss an overlap thinner

@@ -8,6 +8,7 @@
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/rotation/rotation_planner.hpp>
+#include <polyplan/rotation/rotation_facts.hpp>
 #include "rotation/pose_motion_check.hpp"
 
 #include <gtest/gtest.h>
@@ -77,7 +78,7 @@ void expect_certified(const World& world, const Query& query, const PlanReport<P
     }
     run.push_back(report.path[i].position);
   }
-  EXPECT_NEAR(report.facts.number("rotation"), turned, 1e-9);
+  EXPECT_NEAR(report.facts.at(RotationFacts::rotation), turned, 1e-9);
   if (auto overlap = test::sampled_overlap(world, report.path, 0.01)) ADD_FAILURE() << *overlap;
 }
 
@@ -95,10 +96,10 @@ TEST(RotationPlanner, Seed004NeedsATurnAndGetsACertifiedOne) {
 
   const auto report = RotationPlanner(world, every(5)).plan(q);
   expect_certified(world, q, report);
-  EXPECT_GT(report.facts.number("rotation"), 20);
-  EXPECT_GT(report.facts.count("turn_layers.used"), 0);
-  EXPECT_LE(report.facts.number("layers.max_error_radians"), rotation_tolerance_radians);
-  EXPECT_EQ(report.facts.text("layers.actual").find("0° is 0°"), 0u) << report.facts.text("layers.actual");
+  EXPECT_GT(report.facts.at(RotationFacts::rotation), 20);
+  EXPECT_GT(report.facts.at(RotationFacts::turn_layers_used), 0);
+  EXPECT_LE(report.facts.at(RotationFacts::layers_max_error_radians), rotation_tolerance_radians);
+  EXPECT_EQ(report.facts.at(RotationFacts::layers_actual).find("0° is 0°"), 0u) << report.facts.at(RotationFacts::layers_actual);
 }
 
 TEST(RotationPlanner, ThePianoTurnsInTheCorner) {
@@ -112,15 +113,15 @@ TEST(RotationPlanner, ThePianoTurnsInTheCorner) {
 
   const auto report = RotationPlanner(world, every(5)).plan(q);
   expect_certified(world, q, report);
-  EXPECT_NEAR(report.facts.number("rotation"), 90, 1e-6);  // no more turning than the corner needs
+  EXPECT_NEAR(report.facts.at(RotationFacts::rotation), 90, 1e-6);  // no more turning than the corner needs
 
   // Over a range past 180° (where atan2 reads 270° as -90°) the layers are still within tolerance.
   RotationOptions range = every(10);
   range.orientations.to = 270.0;
   const auto ranged = RotationPlanner(world, range).plan(q);
   EXPECT_TRUE(ranged.found);
-  EXPECT_EQ(ranged.facts.count("layers.count"), 28);
-  EXPECT_LE(ranged.facts.number("layers.max_error_radians"), rotation_tolerance_radians);
+  EXPECT_EQ(ranged.facts.at(RotationFacts::layers_count), 28);
+  EXPECT_LE(ranged.facts.at(RotationFacts::layers_max_error_radians), rotation_tolerance_radians);
 }
 
 TEST(RotationPlanner, NeverTurnsInAnExactFitCorridor) {
@@ -128,10 +129,10 @@ TEST(RotationPlanner, NeverTurnsInAnExactFitCorridor) {
   RotationPlanner planner(world, every(5));
   const auto turn = planner.plan(world.queries[0]);  // only a turn would solve it
   EXPECT_FALSE(turn.found);
-  EXPECT_EQ(turn.facts.count("turn_layers.used"), 0);
+  EXPECT_EQ(turn.facts.at(RotationFacts::turn_layers_used), 0);
   const auto slide = planner.plan(world.queries[1]);  // along the corridor at 0°
   expect_certified(world, world.queries[1], slide);
-  EXPECT_EQ(slide.facts.number("rotation"), 0);
+  EXPECT_EQ(slide.facts.at(RotationFacts::rotation), 0);
   // Not a single turn layer lets the robot turn anywhere.
   for (const TurnLayer& t : planner.layers().turns()) EXPECT_TRUE(t.corners.empty());
 }
@@ -195,7 +196,7 @@ TEST(RotationPlanner, TurnsTheShortWayAcrossZeroAndSaysSoInItsAngles) {
   world.queries.push_back({{Rational(10), Rational(10)}, {Rational(10), Rational(10)}, "start/goal", 350.0, 10.0});
   const auto report = RotationPlanner(world, every(5)).plan(world.queries.front());
   expect_certified(world, world.queries.front(), report);
-  EXPECT_NEAR(report.facts.number("rotation"), 20, 1e-6);  // 350 → 360 → 370, not back through 180
+  EXPECT_NEAR(report.facts.at(RotationFacts::rotation), 20, 1e-6);  // 350 → 360 → 370, not back through 180
   EXPECT_EQ(report.path.front().degrees, 350);
   EXPECT_EQ(report.path.back().degrees, 370);
 }
@@ -217,8 +218,8 @@ TEST(RotationPlanner, TurningCostsTheWeightPerRadian) {
   options.weight = 10;
   const auto dear_turns = RotationPlanner(world, options).plan(world.queries.front());
   ASSERT_TRUE(free_turns.found && dear_turns.found);
-  EXPECT_NEAR(free_turns.length, free_turns.facts.number("translation_length"), 1e-9);
-  EXPECT_NEAR(dear_turns.length, dear_turns.facts.number("translation_length") + 10 * dear_turns.facts.number("rotation") * M_PI / 180,
+  EXPECT_NEAR(free_turns.length, free_turns.facts.at(RotationFacts::translation_length), 1e-9);
+  EXPECT_NEAR(dear_turns.length, dear_turns.facts.at(RotationFacts::translation_length) + 10 * dear_turns.facts.at(RotationFacts::rotation) * M_PI / 180,
               1e-9);
   EXPECT_EQ(RotationPlanner(world, every(5)).rotation_weight(), std::hypot(5.0, 0.5));  // the rod's radius
 }
@@ -264,8 +265,8 @@ TEST(RotationRegistry, OptionsReachThePlannerAndBadOnesAreNamed) {
   const auto* entry = planners<RotatingRobot>().find("rotation");
   ASSERT_NE(entry, nullptr);
   const auto report = entry->make(world, {{"rotation-step", "10"}, {"rotation-weight", "0"}})->plan(world.queries.front());
-  EXPECT_EQ(report.facts.count("layers.count"), 36);
-  EXPECT_EQ(report.facts.number("rotation_weight"), 0);
+  EXPECT_EQ(report.facts.at(RotationFacts::layers_count), 36);
+  EXPECT_EQ(report.facts.at(RotationFacts::rotation_weight), 0);
   const auto message = [&](const OptionValues& values) {
     try {
       entry->make(world, values);

@@ -11,6 +11,7 @@
 #include <polyplan/sampling/rrt_connect_planner.hpp>
 #include <polyplan/sampling/rrt_planner.hpp>
 #include <polyplan/sampling/rrt_star_planner.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -116,8 +117,8 @@ TEST_P(MultiGoalInWorld, EveryPlannerEndsAtAReachableGoalAndNamesIt) {
       const auto reached = std::find(goals.begin(), goals.end(), report.path.back());
       ASSERT_NE(reached, goals.end()) << to_string(report.path.back());
       EXPECT_NE(*reached, walled_in);
-      EXPECT_EQ(report.facts.count("goal.reached"), reached - goals.begin());
-      EXPECT_EQ(report.facts.count("goal.candidates"), 3);
+      EXPECT_EQ(report.facts.at(GoalFacts::reached), reached - goals.begin());
+      EXPECT_EQ(report.facts.at(GoalFacts::candidates), 3);
       for (std::size_t i = 0; i + 1 < report.path.size(); ++i)
         EXPECT_TRUE(checker->motion_is_free(report.path[i], report.path[i + 1])) << "motion " << i;
       const PathCheck check = check_path(cspace, report.path);
@@ -145,8 +146,8 @@ TEST(MultiGoalRrt, TheGoalBiasDrawsEachGoalOfTheSet) {
                                    {{"seed", std::to_string(seed)}, {"goal-bias", "1"}, {"extend", "e1"}})
                             ->plan(open.queries[0]);
     ASSERT_TRUE(report.found) << "seed " << seed << ": " << report.why_not;
-    EXPECT_EQ(report.path, (std::vector{start, goals[static_cast<std::size_t>(report.facts.count("goal.reached"))]}));
-    reached.insert(report.facts.count("goal.reached"));
+    EXPECT_EQ(report.path, (std::vector{start, goals[static_cast<std::size_t>(report.facts.at(GoalFacts::reached))]}));
+    reached.insert(report.facts.at(GoalFacts::reached));
   }
   EXPECT_EQ(reached, (std::set<std::int64_t>{1, 2}));
 }
@@ -169,8 +170,8 @@ TEST_F(MultiGoal, ASingleGoalReportsNeitherFact) {
     const auto not_found = planner_to(entry, cspace, {walled_in}, {{"iterations", "300"}})->plan(world.queries[0]);
     ASSERT_FALSE(not_found.found);
     for (const auto& report : {found, not_found}) {
-      EXPECT_FALSE(report.facts.contains("goal.candidates"));
-      EXPECT_FALSE(report.facts.contains("goal.reached"));
+      EXPECT_FALSE(report.facts.contains(GoalFacts::candidates));
+      EXPECT_FALSE(report.facts.contains(GoalFacts::reached));
     }
   }
 }
@@ -182,9 +183,9 @@ TEST_F(MultiGoal, AGoalSetOutOfReachEndsAtTheLimitCountingItsCandidates) {
     const auto report =
         planner_to(entry, cspace, {walled_in, test::pt("29/4", "31/4")}, {{"iterations", "300"}})->plan(world.queries[0]);
     EXPECT_FALSE(report.found);
-    EXPECT_EQ(report.facts.text("stopped_by"), "iteration limit");
-    EXPECT_EQ(report.facts.count("goal.candidates"), 2);
-    EXPECT_FALSE(report.facts.contains("goal.reached"));
+    EXPECT_EQ(report.facts.at(QueryFacts::stopped_by), "iteration limit");
+    EXPECT_EQ(report.facts.at(GoalFacts::candidates), 2);
+    EXPECT_FALSE(report.facts.contains(GoalFacts::reached));
   }
 }
 
@@ -196,7 +197,7 @@ TEST_F(MultiGoal, AStartAmongTheGoalsIsReachedAtOnce) {
     ASSERT_TRUE(report.found) << report.why_not;
     EXPECT_EQ(report.path, (std::vector{start, start}));
     EXPECT_EQ(report.length, 0);
-    EXPECT_EQ(report.facts.count("goal.reached"), 1);
+    EXPECT_EQ(report.facts.at(GoalFacts::reached), 1);
   }
 }
 

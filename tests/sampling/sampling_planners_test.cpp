@@ -9,6 +9,8 @@
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/sampling/sampling_planner.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/sampling/sampling_facts.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -68,10 +70,10 @@ TEST_P(SamplingPlannerOnWorld, ThreeSeedsGiveExactlyCheckedPathsAndOneSeedOnePat
       EXPECT_TRUE(check.valid) << check.reason;
       EXPECT_NEAR(report.length, euclidean_length(report.path), 1e-9 * report.length);
       EXPECT_GE(report.length, best.length * (1 - 1e-12));
-      EXPECT_LE(report.length, report.facts.number("raw_length") * (1 + 1e-12));  // shortcuts never lengthen
-      EXPECT_GT(report.facts.count("motions_checked"), 0);
-      EXPECT_EQ(report.facts.text("stopped_by"), planner == "rrtstar" ? "iteration limit" : "solution");  // RRT* is anytime
-      EXPECT_GE(report.facts.number("first_solution_seconds"), 0);
+      EXPECT_LE(report.length, report.facts.at(SamplingFacts::raw_length) * (1 + 1e-12));  // shortcuts never lengthen
+      EXPECT_GT(report.facts.at(SamplingFacts::motions_checked), 0);
+      EXPECT_EQ(report.facts.at(QueryFacts::stopped_by), planner == "rrtstar" ? "iteration limit" : "solution");  // RRT* is anytime
+      EXPECT_GE(report.facts.at(SamplingFacts::first_solution_seconds), 0);
       // The same seed, a planner of its own, the same first query: the same path.
       if (i == 0) {  // braces: EXPECT_EQ is an if-else of its own
         EXPECT_EQ(make(planner, cspace, options)->plan(q).path, report.path);
@@ -105,7 +107,7 @@ TEST(SamplingPlanners, EachQueryDrawsItsOwnRandomStream) {
     SCOPED_TRACE(name);
     const OptionValues options{{"shortcut", "false"}, {"time", "20"}};
     auto after_one = make(name, cspace, options), after_other = make(name, cspace, options);
-    ASSERT_NE(after_one->plan(world.queries[0]).facts.count("samples"), after_other->plan(world.queries[2]).facts.count("samples"));
+    ASSERT_NE(after_one->plan(world.queries[0]).facts.at(SamplingFacts::samples), after_other->plan(world.queries[2]).facts.at(SamplingFacts::samples));
     const auto second = after_one->plan(world.queries[1]), second_too = after_other->plan(world.queries[1]);
     ASSERT_TRUE(second.found);
     EXPECT_EQ(second.path, second_too.path);
@@ -129,7 +131,7 @@ TEST(SamplingPlanners, RrtStarConvergesTowardTheVisibilityGraphOptimum) {
     ASSERT_TRUE(report.found) << report.why_not;
     SCOPED_TRACE(iterations + " iterations: " + std::to_string(report.length) + " against " + std::to_string(optimum));
     EXPECT_LE(report.length, previous);
-    EXPECT_EQ(report.length, report.facts.number("raw_length"));
+    EXPECT_EQ(report.length, report.facts.at(SamplingFacts::raw_length));
     EXPECT_GE(report.length, optimum * (1 - 1e-12));
     previous = report.length;
   }
@@ -144,13 +146,13 @@ TEST(SamplingPlanners, RrtStarImprovesAsItRuns) {
   ASSERT_TRUE(report.found);
   const auto& improvements = dynamic_cast<const SamplingPlanner<TranslatingRobot>&>(*planner).improvements();
   ASSERT_GE(improvements.size(), 2u);
-  EXPECT_EQ(static_cast<std::int64_t>(improvements.size()), report.facts.count("solutions"));
+  EXPECT_EQ(static_cast<std::int64_t>(improvements.size()), report.facts.at(SamplingFacts::solutions));
   for (std::size_t i = 1; i < improvements.size(); ++i) {
     EXPECT_LT(improvements[i].length, improvements[i - 1].length);
     EXPECT_GE(improvements[i].seconds, improvements[i - 1].seconds);
   }
   EXPECT_EQ(improvements.back().length, report.length);
-  EXPECT_EQ(improvements.front().seconds, report.facts.number("first_solution_seconds"));
+  EXPECT_EQ(improvements.front().seconds, report.facts.at(SamplingFacts::first_solution_seconds));
 }
 
 // The report carries the solutions as found, the shortcut path last: what a benchmark's
@@ -164,7 +166,7 @@ TEST(SamplingPlanners, ReportsItsImprovementsEndingAtTheReturnedLength) {
     ASSERT_TRUE(report.found) << name;
     ASSERT_FALSE(report.improvements.empty()) << name;
     EXPECT_EQ(report.improvements.back().length, report.length) << name;  // the shortcut path, when shorter
-    EXPECT_EQ(report.improvements.front().seconds, report.facts.number("first_solution_seconds")) << name;
+    EXPECT_EQ(report.improvements.front().seconds, report.facts.at(SamplingFacts::first_solution_seconds)) << name;
     for (std::size_t i = 1; i < report.improvements.size(); ++i) {
       EXPECT_LT(report.improvements[i].length, report.improvements[i - 1].length) << name;
       EXPECT_GE(report.improvements[i].seconds, report.improvements[i - 1].seconds) << name;
@@ -186,12 +188,12 @@ TEST(SamplingPlanners, AnUnreachableGoalEndsAtTheLimitWithTheReason) {
     const auto by_count = make(name, cspace, {{"iterations", "300"}})->plan(walled.queries[0]);
     EXPECT_FALSE(by_count.found);
     EXPECT_NE(by_count.why_not.find("the iteration limit (300)"), std::string::npos) << by_count.why_not;
-    EXPECT_EQ(by_count.facts.text("stopped_by"), "iteration limit");
+    EXPECT_EQ(by_count.facts.at(QueryFacts::stopped_by), "iteration limit");
     EXPECT_TRUE(by_count.path.empty());
     const auto by_time = make(name, cspace, {{"iterations", "100000000"}, {"time", "0.2"}})->plan(walled.queries[0]);
     EXPECT_FALSE(by_time.found);
     EXPECT_NE(by_time.why_not.find("the time limit (0.2 s)"), std::string::npos) << by_time.why_not;
-    EXPECT_EQ(by_time.facts.text("stopped_by"), "time limit");
+    EXPECT_EQ(by_time.facts.at(QueryFacts::stopped_by), "time limit");
   }
 }
 
@@ -253,11 +255,11 @@ TEST(SamplingPlanners, TheirOptionsAreListedAndBadValuesNamed) {
   const auto error = [&](const char* planner, OptionValues options) {
     return test::input_error_of([&] { make(planner, cspace, options); });
   };
-  EXPECT_EQ(error("rrt", {{"goal-bias", "1.5"}}), "planner rrt: goal-bias must be a probability in [0, 1]");
+  EXPECT_EQ(error("rrt", {{"goal-bias", "1.5"}}), "planner rrt: option goal-bias=1.5: expected a number in [0, 1]");
   EXPECT_EQ(error("rrt", {{"extend", "e3"}}), "planner rrt: option extend=e3: expected one of e1|e2");
-  EXPECT_EQ(error("rrtconnect", {{"step", "-1"}}), "planner rrtconnect: step must be 0 (the default) or a positive distance");
-  EXPECT_EQ(error("prm", {{"time", "0"}}), "planner prm: time must be a number of seconds above 0");
-  EXPECT_EQ(error("lazyprm", {{"iterations", "0"}}), "planner lazyprm: iterations must be at least 1");
+  EXPECT_EQ(error("rrtconnect", {{"step", "-1"}}), "planner rrtconnect: option step=-1: expected a number in [0, inf)");
+  EXPECT_EQ(error("prm", {{"time", "0"}}), "planner prm: option time=0: expected a number in (0, inf)");
+  EXPECT_EQ(error("lazyprm", {{"iterations", "0"}}), "planner lazyprm: option iterations=0: expected a whole number in [1, inf)");
   EXPECT_EQ(error("rrtstar", {{"rewire", "all"}}), "planner rrtstar: option rewire=all: expected one of k|radius");
   EXPECT_EQ(error("rrt", {{"seed", "-1"}}), "planner rrt: option seed=-1: expected a whole number >= 0");
 }
@@ -276,7 +278,7 @@ TEST(SamplingPlanners, ExtensionE2StepsAtMostTheStepAndE1GoesToTheSample) {
   const auto e1 = make("rrt", cspace, {{"extend", "e1"}, {"shortcut", "false"}})->plan(q, QueryOptions{true});
   ASSERT_TRUE(e1.found) << e1.why_not;
   EXPECT_EQ(e1.graph->kind, "tree");
-  EXPECT_EQ(e1.graph->vertices.size(), static_cast<std::size_t>(e1.facts.count("tree_size")));
+  EXPECT_EQ(e1.graph->vertices.size(), static_cast<std::size_t>(e1.facts.at(SamplingFacts::tree_size)));
 }
 
 TEST(SamplingPlanners, PrmKeepsItsRoadmapAcrossQueries) {
@@ -286,9 +288,9 @@ TEST(SamplingPlanners, PrmKeepsItsRoadmapAcrossQueries) {
   const auto first = planner->plan(world.queries[0]);
   const auto again = planner->plan(world.queries[0]);
   ASSERT_TRUE(first.found && again.found);
-  EXPECT_GE(again.facts.count("roadmap.vertices"), first.facts.count("roadmap.vertices") + 2);
-  EXPECT_LT(again.facts.count("samples"), first.facts.count("samples"));
-  EXPECT_EQ(again.facts.count("samples"), 0);  // joined at once through the roadmap kept
+  EXPECT_GE(again.facts.at(RoadmapFacts::vertices), first.facts.at(RoadmapFacts::vertices) + 2);
+  EXPECT_LT(again.facts.at(SamplingFacts::samples), first.facts.at(SamplingFacts::samples));
+  EXPECT_EQ(again.facts.at(SamplingFacts::samples), 0);  // joined at once through the roadmap kept
 }
 
 // One seed, one roadmap: bidirectional Dijkstra finds the cost Dijkstra finds (in the maze it
@@ -300,8 +302,8 @@ TEST(SamplingPlanners, PrmSearchesBothWaysForTheSameCost) {
   const auto both_ways = make("prm", cspace, {{"bidirectional", "true"}, {"shortcut", "false"}})->plan(world.queries[0]);
   ASSERT_TRUE(one_way.found && both_ways.found);
   EXPECT_NEAR(both_ways.length, one_way.length, 1e-9 * one_way.length);
-  EXPECT_EQ(both_ways.facts.text("search.algorithm"), "bidirectional dijkstra");
-  EXPECT_GT(both_ways.facts.count("search.expanded"), 0);
+  EXPECT_EQ(both_ways.facts.at(SearchFacts::algorithm), "bidirectional dijkstra");
+  EXPECT_GT(both_ways.facts.at(SearchFacts::expanded), 0);
 }
 
 TEST(SamplingPlanners, LazyPrmChecksFewerMotionsThanPrm) {
@@ -310,7 +312,7 @@ TEST(SamplingPlanners, LazyPrmChecksFewerMotionsThanPrm) {
   const auto lazy = make("lazyprm", cspace, {})->plan(world.queries[0]);
   const auto eager = make("prm", cspace, {})->plan(world.queries[0]);
   ASSERT_TRUE(lazy.found && eager.found);
-  EXPECT_LT(lazy.facts.count("motions_checked"), eager.facts.count("motions_checked"));
+  EXPECT_LT(lazy.facts.at(SamplingFacts::motions_checked), eager.facts.at(SamplingFacts::motions_checked));
 }
 
 // touching_corners: two free squares that meet only at the pinch point (2, 2). A roadmap kept

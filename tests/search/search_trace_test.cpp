@@ -1,4 +1,4 @@
-// search/search_trace.hpp and search/weighted_digraph.hpp: seed 000's graphs searched by every
+// search/search_trace.hpp and search/weighted_digraph.hpp: the course's graph-search homework's graphs searched by every
 // algorithm, checked against an independent A* written as the seed's Algorithm 1 (an open list
 // searched for its first minimum, so ties go to the vertex that entered it first) and an independent
 // Dijkstra; and every trace checked for consistency: f from g and h as the algorithm orders, each
@@ -46,7 +46,7 @@ struct SeedAnswer {
   double cost = inf;
 };
 
-// Seed 000's Algorithm 1, Ver. 2, with its priority queue: a list in insertion order whose first
+// The course's graph-search homework's Algorithm 1, Ver. 2, with its priority queue: a list in insertion order whose first
 // minimum is extracted; an improved vertex keeps its place with its new f. Closed vertices are
 // never reopened.
 SeedAnswer seed_astar(const GraphFile& graph, std::size_t start, std::size_t goal) {

@@ -1,5 +1,5 @@
 #pragma once
-// Floating-point bounds that hold in real arithmetic, for the arm's certificates (DESIGN.md: "a
+// Floating-point bounds that hold in real arithmetic, for the arm's certificates (docs/design.md: "a
 // bound evaluated in floating point is a proof only with outward rounding"). Two tools:
 //  - CGAL's interval numbers, evaluated with the processor rounding upward (RoundingUpward: one
 //    guard around a stretch of interval code; CGAL derives every lower bound from upward rounding

@@ -4,7 +4,7 @@
 // expansion: walk from the viewpoint's triangles across unconstrained edges while a cone of
 // directions survives. Only orientation predicates on input points decide anything (exact, no
 // constructions), and cones are closed, so grazing a corner or sliding along an edge counts as
-// seeing — the closure semantics of DESIGN.md. Walls (constraints) are never crossed, so a sight
+// seeing — the closure semantics of docs/design.md. Walls (constraints) are never crossed, so a sight
 // line can touch a pinch point but never pass from one of its free wedges into another.
 // Include only from .cpp files (CGAL).
 #include <polyplan/geometry/detail/cspace_impl.hpp>
@@ -41,7 +41,7 @@ class FreeSpaceTriangulation {
   // blocked. Two at a pinch point between components.
   std::vector<int> components_at(const Point& p) const;
 
-  // nullopt when the segment a-b is a valid motion (DESIGN.md: in the closure of the free space,
+  // nullopt when the segment a-b is a valid motion (docs/design.md: in the closure of the free space,
   // through no zero-width place); else why not. Exact, and a different walk from the visibility
   // cones: it is what checks every path the visibility graph returns.
   std::optional<std::string> why_blocked(const Point& a, const Point& b) const;

@@ -113,7 +113,7 @@ class IntegerTriangulation {
   // The free components whose closure holds the point (two at a pinch between components).
   void components_at(const Location& where, std::vector<int>& out) const;
 
-  // Why a segment is not a valid motion (DESIGN.md): reason none when it is.
+  // Why a segment is not a valid motion (docs/design.md): reason none when it is.
   struct Blocked {
     enum Reason : std::uint8_t { none, point_blocked, start_outside, starts_inside, frame, enters, enters_at, pinch_at, crosses, lost };
     Reason reason = none;

@@ -47,6 +47,8 @@ class SpaceDoor {
   // The summary line's words: what a path's steps are ("segment"), the unit of its length (" rad").
   virtual std::string_view steps() const { return "segment"; }
   virtual std::string_view unit() const { return ""; }
+  // What the summary line adds for this space after the shared facts (", 2 gear change(s)").
+  virtual std::string summary(const Facts&) const { return ""; }
 };
 
 // Each space's door, defined in its file.

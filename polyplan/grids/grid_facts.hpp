@@ -1,0 +1,29 @@
+#pragma once
+// The facts the grids planners report, by key (plan/fact_key.hpp): each names the JSON key it
+// is printed as and fixes its value's type.
+#include <polyplan/plan/plan_report.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace polyplan {
+
+// A rasterised world's grid.
+struct RasterFacts {
+  static constexpr FactKey<std::int64_t> cells_per_axis{"raster.cells_per_axis"};
+  static constexpr FactKey<std::int64_t> blocked_cells{"raster.blocked_cells"};
+  static constexpr FactKey<std::string> start_cell{"raster.start_cell"};
+  static constexpr FactKey<std::string> goal_cell{"raster.goal_cell"};
+  static constexpr FactKey<double> grid_cost{"raster.grid_cost"};
+};
+
+// The grid GVD's distance field and ridge.
+struct GvdFacts {
+  static constexpr FactKey<std::int64_t> cells{"gvd.cells"};
+  static constexpr FactKey<double> max_distance{"gvd.max_distance"};
+  static constexpr FactKey<double> clearance_bound{"gvd.clearance_bound"};
+  static constexpr FactKey<std::string> start_cell{"gvd.start_cell"};
+  static constexpr FactKey<std::string> goal_cell{"gvd.goal_cell"};
+};
+
+}  // namespace polyplan
