@@ -1,7 +1,7 @@
-// Lazy against eager evaluation of the two-link arm's C-space grid (the course's graph-search homework optional 3.2): the
-// same A* on the same grid, the cells decided when the search reaches them or all up front. Both in
-// one run, for each query of data/arms/two_link_points.json at 5 and 1 degrees; the counters are
-// the cells evaluated (collision checks of grid configurations) and the moves checked.
+// Lazy against eager evaluation of the two-link arm's C-space grid (the course's graph-search homework optional 3.2):
+// the same A* on the same grid, the cells decided when the search reaches them or all up front. Both in one run, for
+// each query of data/arms/two_link_points.json at 5 and 1 degrees; the counters are the cells evaluated (collision
+// checks of grid configurations) and the moves checked.
 #include <polyplan/arm/arm_facts.hpp>
 #include <polyplan/arm/arm_grid_planner.hpp>
 #include <polyplan/io/arm_reader.hpp>
@@ -32,7 +32,8 @@ void plan(benchmark::State& state, bool lazy) {
     benchmark::DoNotOptimize(last.path.data());
   }
   state.SetLabel(q.name + (last.found ? "" : " (no path)"));
-  for (const FactKey<std::int64_t> count : {ArmGridFacts::cells_evaluated, ArmGridFacts::moves_checked, ArmGridFacts::expanded})
+  for (const FactKey<std::int64_t> count :
+       {ArmGridFacts::cells_evaluated, ArmGridFacts::moves_checked, ArmGridFacts::expanded})
     state.counters[std::string(count.name)] = static_cast<double>(last.facts.at(count));
   state.counters["length"] = last.length;
 }

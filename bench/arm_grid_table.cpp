@@ -151,7 +151,8 @@ int main(int argc, char** argv) {
       for (const double r : resolutions) {
         char degrees[32];
         std::snprintf(degrees, sizeof degrees, "%g", r);
-        std::vector<std::string> args{"arm", std::string(POLYPLAN_DATA_DIR) + "/arms/" + problem + ".json", "--method", "grid",
+        std::vector<std::string> args{"arm",          std::string(POLYPLAN_DATA_DIR) + "/arms/" + problem + ".json",
+                                      "--method",     "grid",
                                       "--resolution", degrees};
         args.insert(args.end(), program.extra.begin(), program.extra.end());
         std::printf(" %s |", cell(run(program.path, args, limit, memory_gb)).c_str());

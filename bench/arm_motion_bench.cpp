@@ -29,13 +29,15 @@ namespace {
 using namespace polyplan;
 
 constexpr double degree = two_pi / 360;
-constexpr std::array<const char*, 3> arm_files{"two_link_points.json", "three_link_forest.json", "four_link_forest.json"};
+constexpr std::array<const char*, 3> arm_files{"two_link_points.json", "three_link_forest.json",
+                                               "four_link_forest.json"};
 constexpr std::size_t grid_moves = 400, long_joins = 100;
 
 // The peer: the sampled check at 1° as polyplan had it (motion_is_free with a resolution), written
 // out here so that the comparison outlives that overload: `from`, the k − 1 interpolated samples
 // and `to`, each tested exactly, stopping at the first that collides.
-bool sampled_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to, double resolution) {
+bool sampled_is_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to,
+                     double resolution) {
   const std::size_t k = motion_step_count(from, to, resolution);
   if (!checker.is_free(from)) return false;
   JointAngles sample;
@@ -127,8 +129,8 @@ void BM_Certified(benchmark::State& state) {
   }
   label(state);
   state.counters["motions"] = static_cast<double>(motions.size());
-  state.counters["per_motion"] =
-      benchmark::Counter(static_cast<double>(motions.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["per_motion"] = benchmark::Counter(
+      static_cast<double>(motions.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   per_motion(state, "checks", static_cast<double>(checks), motions.size());
   per_motion(state, "steps", static_cast<double>(steps), motions.size());
   state.counters["free"] = static_cast<double>(free);
@@ -152,8 +154,8 @@ void BM_Sampled1Degree(benchmark::State& state) {
   }
   label(state);
   state.counters["motions"] = static_cast<double>(motions.size());
-  state.counters["per_motion"] =
-      benchmark::Counter(static_cast<double>(motions.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+  state.counters["per_motion"] = benchmark::Counter(
+      static_cast<double>(motions.size()), benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
   per_motion(state, "checks", static_cast<double>(checks), motions.size());
   state.counters["free"] = static_cast<double>(free);
 }

@@ -24,8 +24,8 @@
 #include <polyplan/car/car_sampling_space.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
-#include <polyplan/sampling/sampling_planner.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
+#include <polyplan/sampling/sampling_planner.hpp>
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/PlannerTerminationCondition.h>
@@ -53,8 +53,8 @@
 #include <iostream>
 #include <limits>
 #include <memory>
-#include <stdexcept>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -74,7 +74,7 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 struct Run {
-  bool aborted = false;       // the run's process stopped (OMPL on one of its own assertions: see in_child)
+  bool aborted = false;  // the run's process stopped (OMPL on one of its own assertions: see in_child)
   bool solved = false;
   double seconds = infinity;  // to the first solution
   double length = infinity;   // of the first solution, or at --length-seconds for RRT*
@@ -92,7 +92,8 @@ CarState state_of(const ob::State* s) {
 
 class SameValidity final : public ob::StateValidityChecker {
  public:
-  SameValidity(const ob::SpaceInformationPtr& si, SamplingSpace<SteeredCar>& space) : ob::StateValidityChecker(si), space_(&space) {}
+  SameValidity(const ob::SpaceInformationPtr& si, SamplingSpace<SteeredCar>& space)
+      : ob::StateValidityChecker(si), space_(&space) {}
   bool isValid(const ob::State* s) const override { return space_->is_free(state_of(s)); }
 
  private:
@@ -103,7 +104,8 @@ class SameValidity final : public ob::StateValidityChecker {
 // the only one known free without sampling.
 class SameMotion final : public ob::MotionValidator {
  public:
-  SameMotion(const ob::SpaceInformationPtr& si, SamplingSpace<SteeredCar>& space) : ob::MotionValidator(si), space_(&space) {}
+  SameMotion(const ob::SpaceInformationPtr& si, SamplingSpace<SteeredCar>& space)
+      : ob::MotionValidator(si), space_(&space) {}
   bool checkMotion(const ob::State* a, const ob::State* b) const override {
     const bool free = space_->motion_is_free(state_of(a), state_of(b));
     (free ? valid_ : invalid_)++;
@@ -188,16 +190,17 @@ Run run_ompl(CarProblem& p, bool rrtstar, Checker checker, double seconds) {
   Run run;
   Clock::time_point t0 = Clock::now();
   double first = infinity;
-  pdef->setIntermediateSolutionCallback([&](const ob::Planner*, const std::vector<const ob::State*>&, const ob::Cost cost) {
-    (void)cost;
-    if (first == infinity) first = since(t0);
-  });
+  pdef->setIntermediateSolutionCallback(
+      [&](const ob::Planner*, const std::vector<const ob::State*>&, const ob::Cost cost) {
+        (void)cost;
+        if (first == infinity) first = since(t0);
+      });
   t0 = Clock::now();
   // RRT* runs to its limit (its length at that time); RRT-Connect stops at its first solution.
   const ob::PlannerStatus status =
       rrtstar ? planner->solve(ob::timedPlannerTerminationCondition(seconds))
               : planner->solve(ob::plannerOrTerminationCondition(ob::timedPlannerTerminationCondition(seconds),
-                                                                ob::exactSolnPlannerTerminationCondition(pdef)));
+                                                                 ob::exactSolnPlannerTerminationCondition(pdef)));
   const double wall = since(t0);
   if (status != ob::PlannerStatus::EXACT_SOLUTION || !pdef->hasExactSolution()) return run;
   const auto* path = pdef->getSolutionPath()->as<og::PathGeometric>();
@@ -250,14 +253,17 @@ Run run_polyplan(const CarProblem& p, const std::string& planner, std::uint64_t 
   const PlannerEntry<SteeredCar>* entry = planners<SteeredCar>().find(planner);
   OptionValues options{{"time", std::to_string(seconds)}};
   if (planner != "hybrid-astar")
-    options.insert(options.end(), {{"seed", std::to_string(seed)}, {"shortcut", "false"}, {"step", std::to_string(p.step)}});
+    options.insert(options.end(),
+                   {{"seed", std::to_string(seed)}, {"shortcut", "false"}, {"step", std::to_string(p.step)}});
   const auto made = entry->make(p.world, options);
   const Clock::time_point t0 = Clock::now();
   const PlanReport<CarState> report = made->plan(p.world.queries.at(0));
   Run run;
   if (!report.found) return run;
   run.solved = true;
-  run.seconds = report.facts.contains(SamplingFacts::first_solution_seconds) ? report.facts.at(SamplingFacts::first_solution_seconds) : since(t0);
+  run.seconds = report.facts.contains(SamplingFacts::first_solution_seconds)
+                    ? report.facts.at(SamplingFacts::first_solution_seconds)
+                    : since(t0);
   run.length = report.length;
   return run;
 }
@@ -286,9 +292,10 @@ double median(std::vector<double> v) {
 }
 
 void print_table(const CarProblem& p, const std::vector<Row>& rows) {
-  std::cout << "\n### " << p.name << " (" << (p.steering().reverse ? "Reeds–Shepp" : "Dubins") << ", R " << p.steering().turning_radius
-            << ", step " << p.step << ")\n\n"
-            << "| planner | checker | solved | median first solution | median length | uncertified paths | colliding paths | aborted |\n"
+  std::cout << "\n### " << p.name << " (" << (p.steering().reverse ? "Reeds–Shepp" : "Dubins") << ", R "
+            << p.steering().turning_radius << ", step " << p.step << ")\n\n"
+            << "| planner | checker | solved | median first solution | median length | uncertified paths | colliding "
+               "paths | aborted |\n"
             << "| --- | --- | --- | --- | --- | --- | --- | --- |\n";
   for (const Row& row : rows) {
     std::size_t solved = 0, uncertified = 0, colliding = 0, aborted = 0;
@@ -305,7 +312,8 @@ void print_table(const CarProblem& p, const std::vector<Row>& rows) {
     char length[32] = "—";
     if (!lengths.empty()) std::snprintf(length, sizeof length, "%.3f", median(lengths));
     std::cout << "| " << row.planner << " | " << row.checker << " | " << solved << "/" << row.runs.size() << " | "
-              << seconds_text(median(times)) << " | " << length << " | " << uncertified << " | " << colliding << " | " << aborted << " |\n";
+              << seconds_text(median(times)) << " | " << length << " | " << uncertified << " | " << colliding << " | "
+              << aborted << " |\n";
   }
 }
 
@@ -327,8 +335,10 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   if (quick) seeds = 3, seconds = 1, length_seconds = 0.2;
 
-  std::cout << "# car_race: " << seeds << " seeds, first solutions within " << seconds << " s, RRT* lengths at " << length_seconds
-            << " s; polyplan shortcut=false; OMPL runs each in a child process seeded with the seed (ompl::RNG::setSeed)\n";
+  std::cout
+      << "# car_race: " << seeds << " seeds, first solutions within " << seconds << " s, RRT* lengths at "
+      << length_seconds
+      << " s; polyplan shortcut=false; OMPL runs each in a child process seeded with the seed (ompl::RNG::setSeed)\n";
   for (const std::string& name : worlds) {
     CarProblem p(data + "/worlds/" + name + ".json", name);
     std::vector<Row> rows;

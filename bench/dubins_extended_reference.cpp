@@ -52,18 +52,38 @@ constexpr mpfr_rnd_t rnd = MPFR_RNDN;
 // A 256-bit real, with the operators the formulas need (each rounds to nearest).
 class Real {
  public:
-  Real() { mpfr_init2(v_, bits); mpfr_set_zero(v_, 1); }
-  Real(double d) { mpfr_init2(v_, bits); mpfr_set_d(v_, d, rnd); }  // exact: 53 bits fit in 256
-  Real(const Real& o) { mpfr_init2(v_, bits); mpfr_set(v_, o.v_, rnd); }
-  Real& operator=(const Real& o) { mpfr_set(v_, o.v_, rnd); return *this; }
+  Real() {
+    mpfr_init2(v_, bits);
+    mpfr_set_zero(v_, 1);
+  }
+  Real(double d) {
+    mpfr_init2(v_, bits);
+    mpfr_set_d(v_, d, rnd);
+  }  // exact: 53 bits fit in 256
+  Real(const Real& o) {
+    mpfr_init2(v_, bits);
+    mpfr_set(v_, o.v_, rnd);
+  }
+  Real& operator=(const Real& o) {
+    mpfr_set(v_, o.v_, rnd);
+    return *this;
+  }
   ~Real() { mpfr_clear(v_); }
   mpfr_ptr get() { return v_; }
   mpfr_srcptr get() const { return v_; }
 
   template <int (*F)(mpfr_ptr, mpfr_srcptr, mpfr_srcptr, mpfr_rnd_t)>
-  static Real binary(const Real& a, const Real& b) { Real r; F(r.v_, a.v_, b.v_, rnd); return r; }
+  static Real binary(const Real& a, const Real& b) {
+    Real r;
+    F(r.v_, a.v_, b.v_, rnd);
+    return r;
+  }
   template <int (*F)(mpfr_ptr, mpfr_srcptr, mpfr_rnd_t)>
-  static Real unary(const Real& a) { Real r; F(r.v_, a.v_, rnd); return r; }
+  static Real unary(const Real& a) {
+    Real r;
+    F(r.v_, a.v_, rnd);
+    return r;
+  }
 
  private:
   mpfr_t v_;
@@ -84,10 +104,18 @@ Real atan2(const Real& y, const Real& x) { return Real::binary<mpfr_atan2>(y, x)
 Real hypot(const Real& a, const Real& b) { return Real::binary<mpfr_hypot>(a, b); }
 Real max(const Real& a, const Real& b) { return a < b ? b : a; }
 
-Real pi() { Real r; mpfr_const_pi(r.get(), rnd); return r; }
+Real pi() {
+  Real r;
+  mpfr_const_pi(r.get(), rnd);
+  return r;
+}
 Real two_pi() { return Real(2) * pi(); }
 
-Real parse(const char* text) { Real r; mpfr_set_str(r.get(), text, 10, rnd); return r; }
+Real parse(const char* text) {
+  Real r;
+  mpfr_set_str(r.get(), text, 10, rnd);
+  return r;
+}
 const Real rounding_zero = parse("1e-60");
 
 // x mod 2 pi in [0, 2 pi), an exact 0 that rounding put just below 2 pi or just above 0 being 0.
@@ -180,12 +208,14 @@ std::vector<Word> dubins_words(const Real& d, const Real& alpha, const Real& bet
 // Drives `length` turning radii of the letter from `pose`: an arc about the centre R to the left
 // (L) or right (R), or a straight (S).
 Pose drive(const Pose& pose, char letter, const Real& length, const Real& radius) {
-  if (letter == 'S') return {pose.x + radius * length * cos(pose.theta), pose.y + radius * length * sin(pose.theta), pose.theta};
+  if (letter == 'S')
+    return {pose.x + radius * length * cos(pose.theta), pose.y + radius * length * sin(pose.theta), pose.theta};
   const Real side = letter == 'L' ? Real(1) : Real(-1);
   const Real theta = pose.theta + side * length;
   // The centre is at pose + side * R * (-sin, cos); the car at centre + side * R * (sin, -cos) of
   // the new heading.
-  return {pose.x + side * radius * (sin(theta) - sin(pose.theta)), pose.y + side * radius * (cos(pose.theta) - cos(theta)), theta};
+  return {pose.x + side * radius * (sin(theta) - sin(pose.theta)),
+          pose.y + side * radius * (cos(pose.theta) - cos(theta)), theta};
 }
 
 // Whether the word, driven from `from`, ends on `to`.
@@ -231,7 +261,8 @@ std::vector<std::string> dubins_misses() {
   std::vector<std::string> names;
   for (const char* radius : {"r0.25", "r1", "r7.5"}) {
     for (const char* side : {"behind", "left", "right"})
-      for (const char* heading : {"h0", "h0.7"}) names.push_back(std::string("tiny_") + side + "_same_" + heading + "_" + radius);
+      for (const char* heading : {"h0", "h0.7"})
+        names.push_back(std::string("tiny_") + side + "_same_" + heading + "_" + radius);
     for (const char* turn : {"plus", "minus"}) names.push_back(std::string("tiny_turn_") + turn + "_" + radius);
     names.push_back(std::string("tiny_seam_turn_") + radius);
   }
@@ -286,12 +317,16 @@ int main(int argc, char** argv) try {
   const auto names = rows_by_name(dir + "steering_cases.txt");
   std::ofstream out(dir + "dubins_extended.csv");
   if (!out) throw std::runtime_error("cannot write " + dir + "dubins_extended.csv");
-  out << "# made by bench/dubins_extended_reference.cpp (g++ -std=c++20 -O2 bench/dubins_extended_reference.cpp -lmpfr -lgmp"
+  out << "# made by bench/dubins_extended_reference.cpp (g++ -std=c++20 -O2 bench/dubins_extended_reference.cpp -lmpfr "
+         "-lgmp"
          " -o dubins_extended_reference; dubins_extended_reference, run in the repository root) with MPFR "
       << mpfr_get_version() << " at " << bits
-      << " bits, independent of polyplan's code: the shortest Dubins path that reaches the goal (each of the six words driven"
-         " from the start in 256 bits; kept if it ends within 1e-30) for the rows of ompl_dubins.csv where OMPL's path misses"
-         " its goal, named as in steering_cases.txt; inputs the CSV's doubles exactly; length to 17 significant digits; word"
+      << " bits, independent of polyplan's code: the shortest Dubins path that reaches the goal (each of the six words "
+         "driven"
+         " from the start in 256 bits; kept if it ends within 1e-30) for the rows of ompl_dubins.csv where OMPL's path "
+         "misses"
+         " its goal, named as in steering_cases.txt; inputs the CSV's doubles exactly; length to 17 significant "
+         "digits; word"
          " the shortest word (tied words, equal to 1e-60, joined by /)\n";
   out << "name,x0,y0,theta0,x1,y1,theta1,radius,length,word\n";
   for (const std::string& name : dubins_misses()) {

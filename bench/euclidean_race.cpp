@@ -53,7 +53,8 @@ std::string polyanya_runner() {
   std::fprintf(stderr, "building Polyanya from %s into %s...\n", POLYPLAN_PEERS_DIR "/polyanya", build.c_str());
   fs::remove_all(build);
   fs::copy(fs::path(POLYPLAN_PEERS_DIR) / "polyanya", build, fs::copy_options::recursive);
-  const std::string command = "make -C '" + build.string() + "' fast -j2 > '" + (build / "build.log").string() + "' 2>&1";
+  const std::string command =
+      "make -C '" + build.string() + "' fast -j2 > '" + (build / "build.log").string() + "' 2>&1";
   if (std::system(command.c_str()) != 0 || !fs::exists(runner))
     throw std::runtime_error("building Polyanya failed: see " + (build / "build.log").string());
   return runner.string();
@@ -97,7 +98,8 @@ double batch_seconds(const EuclideanShortestPaths& paths, const Queries& queries
 
 // Mean µs per query on one thread, the file once in order (each query timed alone, as Polyanya's
 // runner times its own); the answers land in `answers` when given.
-double mean_query_us(const EuclideanShortestPaths& paths, const Queries& queries, std::vector<TimedPathAnswer>* answers = nullptr) {
+double mean_query_us(const EuclideanShortestPaths& paths, const Queries& queries,
+                     std::vector<TimedPathAnswer>* answers = nullptr) {
   std::vector<TimedPathAnswer> timed = answer_all(paths, queries, 1);
   double total = 0;
   for (const TimedPathAnswer& t : timed) total += t.us;
@@ -139,12 +141,14 @@ void tradeoff(const std::vector<std::string>& maps, const std::string& data) {
 
 int main(int argc, char** argv) {
   CLI::App app("polyplan scen's Euclidean shortest paths against Polyanya on the MovingAI maps");
-  std::vector<std::string> maps{"arena", "den312d", "lak303d", "brc202d", "orz103d", "hrt201n", "ost003d", "maze512-1-0", "random512-10-0"};
+  std::vector<std::string> maps{"arena",   "den312d", "lak303d",     "brc202d",       "orz103d",
+                                "hrt201n", "ost003d", "maze512-1-0", "random512-10-0"};
   int runs = 2;
   app.add_option("--maps", maps, "Maps of ../shared/benchmarks/movingai")->delimiter(',');
   app.add_option("--runs", runs, "Runs of each file; the minimum mean counts")->check(CLI::Range(1, 100));
   bool measure_tradeoff = false;
-  app.add_flag("--tradeoff", measure_tradeoff, "Measure each index (none, hub labels, table) instead of racing Polyanya");
+  app.add_flag("--tradeoff", measure_tradeoff,
+               "Measure each index (none, hub labels, table) instead of racing Polyanya");
   CLI11_PARSE(app, argc, argv);
 
   const std::string data = POLYPLAN_BENCHMARK_DIR, meshes = POLYPLAN_PEERS_DIR "/polyanya/meshes";
@@ -154,9 +158,11 @@ int main(int argc, char** argv) {
   }
   const std::string runner = polyanya_runner();
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
-  std::printf("| map | queries | Polyanya µs | polyplan µs | ratio | preprocess s | index MB | corner distances | %u-thread speed-up | "
-              "lengths equal | shorter (pinch) | longer |\n",
-              cores);
+  std::printf(
+      "| map | queries | Polyanya µs | polyplan µs | ratio | preprocess s | index MB | corner distances | %u-thread "
+      "speed-up | "
+      "lengths equal | shorter (pinch) | longer |\n",
+      cores);
   std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const std::string& name : maps) {
     const std::string scen = data + "/scenarios/" + name + ".map.scen";
@@ -183,9 +189,13 @@ int main(int argc, char** argv) {
       else if (ours < theirs - 1e-9 * std::max(1.0, theirs)) ++shorter;
       else ++equal;
     }
-    std::printf("| %s | %zu | %.1f | %.1f | %.2f | %.2f | %.1f | %s | %.2f | %zu | %zu | %zu |\n", name.c_str(), queries.size(),
-                peer.mean_us, best_mean, best_mean / peer.mean_us, preprocess, static_cast<double>(paths.memory_bytes()) / (1 << 20),
-                paths.has_table() ? "table" : paths.has_labels() ? "hub labels" : "A*", one / all, equal, shorter, longer);
+    std::printf("| %s | %zu | %.1f | %.1f | %.2f | %.2f | %.1f | %s | %.2f | %zu | %zu | %zu |\n", name.c_str(),
+                queries.size(), peer.mean_us, best_mean, best_mean / peer.mean_us, preprocess,
+                static_cast<double>(paths.memory_bytes()) / (1 << 20),
+                paths.has_table()    ? "table"
+                : paths.has_labels() ? "hub labels"
+                                     : "A*",
+                one / all, equal, shorter, longer);
     std::fflush(stdout);
   }
 }

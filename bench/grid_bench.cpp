@@ -15,12 +15,12 @@
 
 #include <benchmark/benchmark.h>
 
+#include <time.h>
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <string>
-#include <time.h>
 #include <vector>
 
 namespace {
@@ -43,8 +43,7 @@ class FlatOctileAStar {
     for (int y = 0; y < map.height; ++y)
       for (int x = 0; x < map.width; ++x) free_[index(x, y)] = !map.is_blocked(x, y);
     const int dx[8] = {1, -1, 0, 0, 1, 1, -1, -1}, dy[8] = {0, 0, 1, -1, 1, -1, 1, -1};
-    for (int d = 0; d < 8; ++d)
-      moves_[d] = {dx[d], dy[d], dy[d] * width_ + dx[d], d < 4 ? 1.0 : std::sqrt(2.0)};
+    for (int d = 0; d < 8; ++d) moves_[d] = {dx[d], dy[d], dy[d] * width_ + dx[d], d < 4 ? 1.0 : std::sqrt(2.0)};
   }
 
   Answer search(int sx, int sy, int gx, int gy) {
@@ -186,7 +185,8 @@ Totals run_flat(FlatOctileAStar& flat, const std::vector<ScenarioQuery>& queries
 }
 
 void report(benchmark::State& state, const Problem& p, std::size_t expanded, std::size_t rounds) {
-  state.counters["expansions_per_second"] = benchmark::Counter(static_cast<double>(expanded), benchmark::Counter::kIsRate);
+  state.counters["expansions_per_second"] =
+      benchmark::Counter(static_cast<double>(expanded), benchmark::Counter::kIsRate);
   state.counters["expanded_per_query"] = static_cast<double>(expanded) / static_cast<double>(rounds * p.queries.size());
   state.counters["queries"] = static_cast<double>(p.queries.size());
 }
@@ -237,14 +237,15 @@ void Ratio(benchmark::State& state, const std::string& name) {
   state.counters["bgl_expansions_per_second"] = bgl_rate;
   state.counters["flat_expansions_per_second"] = flat_rate;
   state.counters["ratio"] = bgl_rate / flat_rate;
-  state.counters["bgl_expanded_per_query"] = static_cast<double>(bgl.expanded) / static_cast<double>(state.iterations() * p.queries.size());
+  state.counters["bgl_expanded_per_query"] =
+      static_cast<double>(bgl.expanded) / static_cast<double>(state.iterations() * p.queries.size());
   state.counters["flat_expanded_per_query"] =
       static_cast<double>(peer.expanded) / static_cast<double>(state.iterations() * p.queries.size());
 }
 
 }  // namespace
 
-#define POLYPLAN_GRID_BENCH(map)                                                                   \
+#define POLYPLAN_GRID_BENCH(map)                                                                                \
   BENCHMARK_CAPTURE(Bgl, map, std::string(#map))->Name("GridAStar/bgl/" #map)->Unit(benchmark::kMillisecond);   \
   BENCHMARK_CAPTURE(Flat, map, std::string(#map))->Name("GridAStar/flat/" #map)->Unit(benchmark::kMillisecond); \
   BENCHMARK_CAPTURE(Ratio, map, std::string(#map))->Name("GridAStar/ratio/" #map)->Unit(benchmark::kMillisecond)

@@ -53,7 +53,9 @@ int main(int argc, char** argv) {
     else if (!std::strcmp(argv[i], "--seed")) seed = std::strtoull(argv[i + 1], nullptr, 10);
     else return std::fprintf(stderr, "usage: ik_race [--targets N] [--seed S]\n"), 2;
   }
-  std::printf("| links | numeric_ik solved | µs per solve | Jacobian transpose solved | µs per solve |\n| --- | --- | --- | --- | --- |\n");
+  std::printf(
+      "| links | numeric_ik solved | µs per solve | Jacobian transpose solved | µs per solve |\n| --- | --- | --- | "
+      "--- | --- |\n");
   for (std::size_t n = 3; n <= 10; ++n) {
     std::mt19937_64 random(seed * 100 + n);
     std::uniform_real_distribution<double> length(0.5, 1.5), angle(-M_PI, M_PI);
@@ -78,8 +80,11 @@ int main(int argc, char** argv) {
     std::mt19937_64 baseline(seed);
     for (std::size_t t = 0; t < targets; ++t) theirs += transpose_ik(arm, goals[t], options.seeds, baseline);
     const auto t2 = Clock::now();
-    const auto micro = [&](auto a, auto b) { return std::chrono::duration<double, std::micro>(b - a).count() / static_cast<double>(targets); };
-    std::printf("| %zu | %.2f %% | %.1f | %.2f %% | %.1f |\n", n, 100.0 * static_cast<double>(ours) / static_cast<double>(targets), micro(t0, t1),
+    const auto micro = [&](auto a, auto b) {
+      return std::chrono::duration<double, std::micro>(b - a).count() / static_cast<double>(targets);
+    };
+    std::printf("| %zu | %.2f %% | %.1f | %.2f %% | %.1f |\n", n,
+                100.0 * static_cast<double>(ours) / static_cast<double>(targets), micro(t0, t1),
                 100.0 * static_cast<double>(theirs) / static_cast<double>(targets), micro(t1, t2));
     std::fflush(stdout);
   }

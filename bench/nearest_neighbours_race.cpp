@@ -33,7 +33,7 @@ using namespace polyplan;
 namespace {
 
 constexpr std::size_t k_nearest = 10;
-constexpr double points_within = 15;  // expected points in a within() ball
+constexpr double points_within = 15;   // expected points in a within() ball
 constexpr double euclidean_side = 10;  // Euclidean points in [0, 10)²
 
 using detail::with_scan_distance;  // the index's own scan distance (sampling/detail/scan_distance.hpp)
@@ -159,15 +159,9 @@ Run race(const Space& space, Query query, const std::vector<Point>& points, cons
     const double start = thread_cpu_nanoseconds();
     for (std::size_t i = from; i < points.size(); ++i) {
       switch (query) {
-        case Query::nearest:
-          out.assign(1, index.nearest(queries[i]));
-          break;
-        case Query::k_nearest:
-          index.nearest(queries[i], k_nearest, out);
-          break;
-        case Query::within:
-          index.within(queries[i], within_radius(space, i), out);
-          break;
+        case Query::nearest: out.assign(1, index.nearest(queries[i])); break;
+        case Query::k_nearest: index.nearest(queries[i], k_nearest, out); break;
+        case Query::within: index.within(queries[i], within_radius(space, i), out); break;
       }
       if (r == 0) run.answers[i] = out;
       index.add(points[i]);
@@ -258,12 +252,12 @@ int print_race(const std::vector<std::size_t>& sizes, bool marginal, bool check)
       const std::vector<Point> queries = uniform_points(space, end, 2);
       for (const Query query : {Query::nearest, Query::k_nearest, Query::within}) {
         const int repetitions = repetitions_for(end);
-        const Run index = race<NearestNeighbours>(space, query, points, queries,
-                                                  [&] { return NearestNeighbours(space.dimension, space.metric); },
-                                                  repetitions, from);
-        const Run scan = race<LinearScan>(space, query, points, queries,
-                                          [&] { return LinearScan(space.dimension, space.metric); }, repetitions,
-                                          from);
+        const Run index = race<NearestNeighbours>(
+            space, query, points, queries, [&] { return NearestNeighbours(space.dimension, space.metric); },
+            repetitions, from);
+        const Run scan = race<LinearScan>(
+            space, query, points, queries, [&] { return LinearScan(space.dimension, space.metric); }, repetitions,
+            from);
         const char* names[] = {"nearest", "10 nearest", "within"};
         std::printf("| %s | %zu | %s | %.0f | %.0f |\n", space.name().c_str(), n, names[static_cast<int>(query)],
                     index.nanoseconds_per_pair, scan.nanoseconds_per_pair);

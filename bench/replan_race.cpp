@@ -30,7 +30,8 @@ namespace {
 
 using namespace polyplan;
 
-constexpr ReplanAlgorithm algorithms[] = {ReplanAlgorithm::dstar_lite, ReplanAlgorithm::lpastar, ReplanAlgorithm::astar};
+constexpr ReplanAlgorithm algorithms[] = {ReplanAlgorithm::dstar_lite, ReplanAlgorithm::lpastar,
+                                          ReplanAlgorithm::astar};
 
 struct Totals {
   std::size_t expanded = 0, heap_operations = 0, replans = 0, moves = 0, solved = 0;
@@ -39,10 +40,11 @@ struct Totals {
 
 void print_row(const std::string& name, double radius, const Totals (&t)[3]) {
   const auto ratio = [](double a, double b) { return b > 0 ? a / b : 0.0; };
-  std::printf("%-22s %5.1f %8zu %8zu | %12zu %12zu %12zu | %9.3f %9.3f %9.3f | %6.3f %6.3f | %6.3f %6.3f\n", name.c_str(),
-              radius, t[2].replans, t[2].solved, t[0].expanded, t[1].expanded, t[2].expanded, t[0].seconds, t[1].seconds,
-              t[2].seconds, ratio(t[0].expanded, t[2].expanded), ratio(t[1].expanded, t[2].expanded),
-              ratio(t[0].seconds, t[2].seconds), ratio(t[1].seconds, t[2].seconds));
+  std::printf("%-22s %5.1f %8zu %8zu | %12zu %12zu %12zu | %9.3f %9.3f %9.3f | %6.3f %6.3f | %6.3f %6.3f\n",
+              name.c_str(), radius, t[2].replans, t[2].solved, t[0].expanded, t[1].expanded, t[2].expanded,
+              t[0].seconds, t[1].seconds, t[2].seconds, ratio(t[0].expanded, t[2].expanded),
+              ratio(t[1].expanded, t[2].expanded), ratio(t[0].seconds, t[2].seconds),
+              ratio(t[1].seconds, t[2].seconds));
   std::fflush(stdout);
 }
 
@@ -56,7 +58,8 @@ void race_map(const std::filesystem::path& map_file, const std::filesystem::path
   const GridMap map = read_movingai_map(map_file.string());
   const std::vector<ScenarioQuery> all = read_scenarios(scenario_file.string());
   std::vector<ScenarioQuery> chosen;
-  for (std::size_t i = 0; i < queries && i < all.size(); ++i) chosen.push_back(all[i * all.size() / std::min(queries, all.size())]);
+  for (std::size_t i = 0; i < queries && i < all.size(); ++i)
+    chosen.push_back(all[i * all.size() / std::min(queries, all.size())]);
   for (const double radius : radii) {
     Totals t[3];
     for (const ScenarioQuery& q : chosen)
@@ -89,8 +92,8 @@ ChangingGrid maze(std::uint32_t seed) {
 }
 
 template <class Search>
-double episodes(std::size_t count, std::size_t toggles, std::uint32_t seed, bool from_scratch,
-                std::size_t& expanded, std::size_t& solved) {
+double episodes(std::size_t count, std::size_t toggles, std::uint32_t seed, bool from_scratch, std::size_t& expanded,
+                std::size_t& solved) {
   ChangingGrid grid = maze(seed);
   const GridCell start = grid.cell(0, 0), goal = grid.cell(grid.width() - 1, grid.height() - 1);
   Search search(grid.graph(), {&grid}, {&grid}, start, goal);

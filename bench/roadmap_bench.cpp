@@ -8,8 +8,8 @@
 //   build/bench/roadmap_bench --benchmark_counters_tabular=true
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/movingai_map.hpp>
-#include <polyplan/registry/registry.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/registry/registry.hpp>
 #include "bench_worlds.hpp"
 #include "heap_counter.hpp"
 
@@ -58,7 +58,8 @@ const CSpace* keep(World world) {
   if (world.queries.empty()) {  // corner to corner, for the size facts
     const Bounds& b = *world.bounds;
     world.queries.push_back({{b.xmin + Rational(1, 100), b.ymin + Rational(1, 100)},
-                             {b.xmax - Rational(1, 100), b.ymax - Rational(1, 100)}, "corners"});
+                             {b.xmax - Rational(1, 100), b.ymax - Rational(1, 100)},
+                             "corners"});
   }
   return new CSpace(world);
 }
@@ -73,13 +74,14 @@ int main(int argc, char** argv) {
     const CSpace* cspace = keep(world);
     for (const char* name : kRoadmaps)
       if (planners<TranslatingRobot>().find(name))
-        benchmark::RegisterBenchmark((std::string(name) + "/random/" + std::to_string(vertices)).c_str(), Build, name, cspace,
-                                     vertices)
+        benchmark::RegisterBenchmark((std::string(name) + "/random/" + std::to_string(vertices)).c_str(), Build, name,
+                                     cspace, vertices)
             ->Unit(benchmark::kMillisecond)
             ->Iterations(1);
   }
   for (const char* map : {"lak303d", "brc202d", "orz103d"}) {
-    const World world = world_from_grid(read_movingai_map(std::string(POLYPLAN_BENCHMARK_DIR) + "/maps/" + map + ".map"));
+    const World world =
+        world_from_grid(read_movingai_map(std::string(POLYPLAN_BENCHMARK_DIR) + "/maps/" + map + ".map"));
     const CSpace* cspace = keep(world);
     for (const char* name : kRoadmaps)
       if (planners<TranslatingRobot>().find(name))

@@ -7,9 +7,9 @@
 //   build/bench/rotation_bench --benchmark_counters_tabular=true
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/io/world_reader.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/rotation/rotation_planner.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 #include "heap_counter.hpp"
 
 #include <benchmark/benchmark.h>
@@ -76,11 +76,17 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark((std::string("visibility_one_layer/") + name).c_str(), OneTranslatingLayer, world)
         ->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark((std::string("rotation_build/") + name).c_str(), Build, world)
-        ->Arg(36)->Arg(72)->Arg(180)->Arg(360)
+        ->Arg(36)
+        ->Arg(72)
+        ->Arg(180)
+        ->Arg(360)
         ->Unit(benchmark::kMillisecond)
         ->Iterations(1);
     benchmark::RegisterBenchmark((std::string("rotation_query/") + name).c_str(), Answer, world)
-        ->Arg(36)->Arg(72)->Arg(180)->Arg(360)
+        ->Arg(36)
+        ->Arg(72)
+        ->Arg(180)
+        ->Arg(360)
         ->Unit(benchmark::kMillisecond);
   }
   benchmark::RunSpecifiedBenchmarks();

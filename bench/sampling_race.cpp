@@ -33,8 +33,8 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/sampling/polygon_sampling_space.hpp>
-#include <polyplan/sampling/sampling_planner.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
+#include <polyplan/sampling/sampling_planner.hpp>
 
 #include <ompl/base/MotionValidator.h>
 #include <ompl/base/PlannerTerminationCondition.h>
@@ -117,11 +117,11 @@ struct Run {
   double seconds = infinity;  // to the first solution (polyplan: its first_solution_seconds)
   double wall = infinity;     // polyplan: the whole plan() call, which certifies the path once more at its end
   double joined = infinity;   // OMPL's PRM: when its roadmap first joined start and goal (WatchedPrm)
-  std::size_t joined_states = 0, joined_motions = 0;  // OMPL's PRM: the checks made by then
-  double length = 0;          // of the first solution
+  std::size_t joined_states = 0, joined_motions = 0;    // OMPL's PRM: the checks made by then
+  double length = 0;                                    // of the first solution
   std::vector<std::pair<double, double>> improvements;  // (seconds, length): RRT*
-  std::size_t states = 0;     // polyplan: samples drawn; OMPL: state validity checks
-  std::size_t motions = 0;    // motions checked (certified or, for the discrete check, checkMotion calls)
+  std::size_t states = 0;                               // polyplan: samples drawn; OMPL: state validity checks
+  std::size_t motions = 0;  // motions checked (certified or, for the discrete check, checkMotion calls)
   Clip clip = Clip::not_checked;
 };
 
@@ -169,7 +169,8 @@ struct Bridge {
 template <class Space>
 class PolyplanValidity final : public ob::StateValidityChecker {
  public:
-  PolyplanValidity(const ob::SpaceInformationPtr& si, const Bridge<Space>& bridge) : ob::StateValidityChecker(si), bridge_(&bridge) {}
+  PolyplanValidity(const ob::SpaceInformationPtr& si, const Bridge<Space>& bridge)
+      : ob::StateValidityChecker(si), bridge_(&bridge) {}
   bool isValid(const ob::State* s) const override { return bridge_->is_free(s); }
 
  private:
@@ -182,7 +183,8 @@ class PolyplanValidity final : public ob::StateValidityChecker {
 template <class Space>
 class PolyplanMotion final : public ob::MotionValidator {
  public:
-  PolyplanMotion(const ob::SpaceInformationPtr& si, const Bridge<Space>& bridge) : ob::MotionValidator(si), bridge_(&bridge) {}
+  PolyplanMotion(const ob::SpaceInformationPtr& si, const Bridge<Space>& bridge)
+      : ob::MotionValidator(si), bridge_(&bridge) {}
   bool checkMotion(const ob::State* s1, const ob::State* s2) const override {
     const bool free = bridge_->motion_is_free(s1, s2);
     (free ? valid_ : invalid_)++;
@@ -226,7 +228,8 @@ class WatchedPrm final : public og::PRM {
              std::function<std::pair<std::size_t, std::size_t>()> counts)
       : og::PRM(si), t0_(t0), run_(run), counts_(std::move(counts)) {
     setConnectionFilter([this](const Vertex&, const Vertex&) {
-      if (!std::isfinite(run_->joined) && !startM_.empty() && !goalM_.empty() && sameComponent(startM_.front(), goalM_.front())) {
+      if (!std::isfinite(run_->joined) && !startM_.empty() && !goalM_.empty() &&
+          sameComponent(startM_.front(), goalM_.front())) {
         run_->joined = since(*t0_);
         std::tie(run_->joined_states, run_->joined_motions) = counts_();
       }
@@ -282,7 +285,8 @@ template <>
 struct SpaceTraits<PlanarArm> {
   static ob::StateSpacePtr ompl_space(const SamplingSpace<PlanarArm>& space, const ArmProblem&) {
     auto compound = std::make_shared<ob::CompoundStateSpace>();
-    for (std::size_t j = 0; j < space.dimension(); ++j) compound->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
+    for (std::size_t j = 0; j < space.dimension(); ++j)
+      compound->addSubspace(std::make_shared<ob::SO2StateSpace>(), 1.0);
     compound->lock();
     return compound;
   }
@@ -290,7 +294,8 @@ struct SpaceTraits<PlanarArm> {
   static JointAngles configuration(const SamplingSpace<PlanarArm>& space, const ob::State* s) {
     const auto* compound = s->as<ob::CompoundState>();
     std::vector<double> c(space.dimension());
-    for (std::size_t j = 0; j < c.size(); ++j) c[j] = normalize_angle(compound->as<ob::SO2StateSpace::StateType>(j)->value);
+    for (std::size_t j = 0; j < c.size(); ++j)
+      c[j] = normalize_angle(compound->as<ob::SO2StateSpace::StateType>(j)->value);
     return space.configuration(c);
   }
   static void set_state(const SamplingSpace<PlanarArm>& space, const JointAngles& q, ob::State* s) {
@@ -311,7 +316,8 @@ class RaceProblemOf final : public RaceProblem {
 
   // `problem` must outlive this. `clip` re-checks one motion of a returned path.
   RaceProblemOf(std::string name, std::string description, const Problem& problem, Query query,
-                std::unique_ptr<SamplingSpace<Space>> space, std::function<Clip(const Configuration&, const Configuration&)> clip)
+                std::unique_ptr<SamplingSpace<Space>> space,
+                std::function<Clip(const Configuration&, const Configuration&)> clip)
       : name_(std::move(name)), description_(std::move(description)), problem_(&problem), query_(std::move(query)),
         space_(std::move(space)), clip_(std::move(clip)) {
     ompl_space_ = SpaceTraits<Space>::ompl_space(*space_, problem);
@@ -354,8 +360,8 @@ class RaceProblemOf final : public RaceProblem {
     return run;
   }
 
-  ob::PlannerPtr make_ompl(const PlannerKind& kind, const ob::SpaceInformationPtr& si, const Clock::time_point* t0, Run* run,
-                           std::function<std::pair<std::size_t, std::size_t>()> counts) const {
+  ob::PlannerPtr make_ompl(const PlannerKind& kind, const ob::SpaceInformationPtr& si, const Clock::time_point* t0,
+                           Run* run, std::function<std::pair<std::size_t, std::size_t>()> counts) const {
     if (kind.name == "prm") {
       auto p = std::make_shared<WatchedPrm>(si, t0, run, std::move(counts));
       p->setMaxNearestNeighbors(k_nearest);
@@ -403,7 +409,8 @@ class RaceProblemOf final : public RaceProblem {
     const auto counts = [&bridge, &si, entry] {
       const ob::MotionValidator& v = *si->getMotionValidator();
       return std::pair<std::size_t, std::size_t>(
-          bridge.state_checks, entry == ompl_same ? bridge.motion_checks : v.getValidMotionCount() + v.getInvalidMotionCount());
+          bridge.state_checks,
+          entry == ompl_same ? bridge.motion_checks : v.getValidMotionCount() + v.getInvalidMotionCount());
     };
     const ob::PlannerPtr planner = make_ompl(kind, si, &t0, &run, counts);
     planner->setProblemDefinition(pdef);
@@ -471,7 +478,8 @@ struct Loaded {
   std::vector<std::unique_ptr<RaceProblem>> problems;
 };
 
-std::unique_ptr<RaceProblem> load_arm(Loaded& loaded, const std::string& data, const std::string& name, const std::string& query_name) {
+std::unique_ptr<RaceProblem> load_arm(Loaded& loaded, const std::string& data, const std::string& name,
+                                      const std::string& query_name) {
   auto holder = std::make_unique<ArmHolder>();
   holder->problem = read_arm_problem(data + "/arms/" + name + ".json");
   holder->checker = std::make_unique<ArmCollisionChecker>(holder->problem);
@@ -507,8 +515,8 @@ std::unique_ptr<RaceProblem> load_world(Loaded& loaded, const std::string& data,
   };
   std::ostringstream what;
   what << "polygon world, " << holder->world.obstacles.size() << " obstacles, first query";
-  auto problem = std::make_unique<RaceProblemOf<TranslatingRobot>>(name, what.str(), *holder->cspace, holder->world.queries.front(),
-                                                                   polygon_sampling_space(*holder->cspace), clip);
+  auto problem = std::make_unique<RaceProblemOf<TranslatingRobot>>(
+      name, what.str(), *holder->cspace, holder->world.queries.front(), polygon_sampling_space(*holder->cspace), clip);
   loaded.worlds.push_back(std::move(holder));
   return problem;
 }
@@ -603,8 +611,10 @@ struct Curve {
 
 class Panel {
  public:
-  Panel(double x, double y, double w, double h, std::string title, double t_max, double y_min, double y_max, std::string y_label)
-      : x_(x), y_(y), w_(w), h_(h), title_(std::move(title)), t_max_(t_max), y_min_(y_min), y_max_(y_max), y_label_(std::move(y_label)) {
+  Panel(double x, double y, double w, double h, std::string title, double t_max, double y_min, double y_max,
+        std::string y_label)
+      : x_(x), y_(y), w_(w), h_(h), title_(std::move(title)), t_max_(t_max), y_min_(y_min), y_max_(y_max),
+        y_label_(std::move(y_label)) {
     if (!(y_max_ > y_min_)) y_max_ = y_min_ + 1;
   }
 
@@ -617,22 +627,26 @@ class Panel {
   void draw(std::ostream& out, const std::vector<Curve>& curves, bool percent) const {
     out << "<rect x='" << x_ << "' y='" << y_ << "' width='" << w_ << "' height='" << h_
         << "' fill='#fff' stroke='#222' stroke-width='1'/>\n";
-    out << "<text x='" << x_ + w_ / 2 << "' y='" << y_ - 8 << "' text-anchor='middle' font-size='14' font-weight='bold'>"
-        << title_ << "</text>\n";
+    out << "<text x='" << x_ + w_ / 2 << "' y='" << y_ - 8
+        << "' text-anchor='middle' font-size='14' font-weight='bold'>" << title_ << "</text>\n";
     for (double t = t_min_; t <= t_max_ * 1.0001; t *= 10) {
       const double px = sx(t);
       out << "<line x1='" << px << "' y1='" << y_ << "' x2='" << px << "' y2='" << y_ + h_ << "' stroke='#ddd'/>\n";
-      out << "<text x='" << px << "' y='" << y_ + h_ + 15 << "' text-anchor='middle' font-size='11'>" << tick(t) << "</text>\n";
+      out << "<text x='" << px << "' y='" << y_ + h_ + 15 << "' text-anchor='middle' font-size='11'>" << tick(t)
+          << "</text>\n";
     }
     for (int i = 0; i <= 4; ++i) {
       const double v = y_min_ + (y_max_ - y_min_) * i / 4, py = sy(v);
       out << "<line x1='" << x_ << "' y1='" << py << "' x2='" << x_ + w_ << "' y2='" << py << "' stroke='#eee'/>\n";
       out << "<text x='" << x_ - 5 << "' y='" << py + 4 << "' text-anchor='end' font-size='11'>"
-          << (percent ? std::to_string(static_cast<int>(std::lround(v * 100))) + "%" : number_text(v, 2)) << "</text>\n";
+          << (percent ? std::to_string(static_cast<int>(std::lround(v * 100))) + "%" : number_text(v, 2))
+          << "</text>\n";
     }
-    out << "<text x='" << x_ + w_ / 2 << "' y='" << y_ + h_ + 30 << "' text-anchor='middle' font-size='11'>time (s, log)</text>\n";
-    out << "<text x='" << x_ - 42 << "' y='" << y_ + h_ / 2 << "' text-anchor='middle' font-size='11' transform='rotate(-90 "
-        << x_ - 42 << ' ' << y_ + h_ / 2 << ")'>" << y_label_ << "</text>\n";
+    out << "<text x='" << x_ + w_ / 2 << "' y='" << y_ + h_ + 30
+        << "' text-anchor='middle' font-size='11'>time (s, log)</text>\n";
+    out << "<text x='" << x_ - 42 << "' y='" << y_ + h_ / 2
+        << "' text-anchor='middle' font-size='11' transform='rotate(-90 " << x_ - 42 << ' ' << y_ + h_ / 2 << ")'>"
+        << y_label_ << "</text>\n";
     for (const Curve& c : curves) {
       if (c.points.empty()) continue;
       out << "<polyline fill='none' stroke='" << c.colour << "' stroke-width='2'"
@@ -700,8 +714,9 @@ std::vector<std::pair<double, double>> cost_curve(const std::vector<Run>& runs, 
   return points;
 }
 
-void write_svg(const std::string& path, const RaceProblem& problem, const std::vector<std::array<std::vector<Run>, 3>>& runs,
-               const std::vector<std::size_t>& planners_run, double seconds, double rrtstar_seconds) {
+void write_svg(const std::string& path, const RaceProblem& problem,
+               const std::vector<std::array<std::vector<Run>, 3>>& runs, const std::vector<std::size_t>& planners_run,
+               double seconds, double rrtstar_seconds) {
   const double pw = 300, ph = 190, gap_x = 80, gap_y = 85, left = 70, top = 95;
   const std::size_t columns = 3;
   const std::size_t panels = planners_run.size() + 1;
@@ -709,15 +724,16 @@ void write_svg(const std::string& path, const RaceProblem& problem, const std::v
   const double width = left + columns * (pw + gap_x), height = top + rows * (ph + gap_y);
   std::ofstream out(path);
   if (!out) throw std::runtime_error("cannot write " + path);
-  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='" << height << "' viewBox='0 0 " << width
-      << ' ' << height << "' font-family='sans-serif'>\n<rect width='100%' height='100%' fill='#fafafa'/>\n";
-  out << "<text x='" << left << "' y='28' font-size='18' font-weight='bold'>" << problem.name() << ": " << problem.description()
-      << "</text>\n";
+  out << "<svg xmlns='http://www.w3.org/2000/svg' width='" << width << "' height='" << height << "' viewBox='0 0 "
+      << width << ' ' << height << "' font-family='sans-serif'>\n<rect width='100%' height='100%' fill='#fafafa'/>\n";
+  out << "<text x='" << left << "' y='28' font-size='18' font-weight='bold'>" << problem.name() << ": "
+      << problem.description() << "</text>\n";
   // Legend.
   double lx = left;
   for (std::size_t e = 0; e < 3; ++e) {
-    out << "<line x1='" << lx << "' y1='46' x2='" << lx + 30 << "' y2='46' stroke='" << entry_colours[e] << "' stroke-width='2'"
-        << (*entry_dashes[e] ? std::string(" stroke-dasharray='") + entry_dashes[e] + "'" : "") << "/>";
+    out << "<line x1='" << lx << "' y1='46' x2='" << lx + 30 << "' y2='46' stroke='" << entry_colours[e]
+        << "' stroke-width='2'" << (*entry_dashes[e] ? std::string(" stroke-dasharray='") + entry_dashes[e] + "'" : "")
+        << "/>";
     out << "<text x='" << lx + 36 << "' y='50' font-size='13'>" << entry_labels[e] << "</text>\n";
     lx += 230;
   }
@@ -729,14 +745,16 @@ void write_svg(const std::string& path, const RaceProblem& problem, const std::v
     Panel p(left + (panel % columns) * (pw + gap_x), top + (panel / columns) * (ph + gap_y), pw, ph,
             kind.label + ": solved by time t", t_max, 0, 1, "runs solved");
     std::vector<Curve> curves;
-    for (std::size_t e = 0; e < 3; ++e) curves.push_back({entry_labels[e], entry_colours[e], entry_dashes[e], success_curve(runs[i][e], t_max)});
+    for (std::size_t e = 0; e < 3; ++e)
+      curves.push_back({entry_labels[e], entry_colours[e], entry_dashes[e], success_curve(runs[i][e], t_max)});
     p.draw(out, curves, true);
     if (kind.anytime)
       for (std::size_t e = 0; e < 3; ++e)
         for (const Run& r : runs[i][e])
           for (const auto& [t, l] : r.improvements) cost_min = std::min(cost_min, l), cost_max = std::max(cost_max, l);
   }
-  const auto star = std::find_if(planners_run.begin(), planners_run.end(), [](std::size_t k) { return planner_kinds[k].anytime; });
+  const auto star =
+      std::find_if(planners_run.begin(), planners_run.end(), [](std::size_t k) { return planner_kinds[k].anytime; });
   if (star != planners_run.end()) {
     const std::size_t i = static_cast<std::size_t>(star - planners_run.begin());
     std::vector<Curve> curves;
@@ -749,7 +767,8 @@ void write_svg(const std::string& path, const RaceProblem& problem, const std::v
     if (!std::isfinite(cost_min)) cost_min = 0, cost_max = 1;
     const double pad = (cost_max - cost_min) * 0.05 + 1e-9;
     Panel p(left + (panel % columns) * (pw + gap_x), top + (panel / columns) * (ph + gap_y), pw, ph,
-            "RRT*: median path length", rrtstar_seconds, cost_min - pad, cost_max + pad, "length (median of all seeds)");
+            "RRT*: median path length", rrtstar_seconds, cost_min - pad, cost_max + pad,
+            "length (median of all seeds)");
     p.draw(out, curves, false);
   }
   out << "</svg>\n";
@@ -777,10 +796,12 @@ int main(int argc, char** argv) {
   app.add_option("--seeds", seeds, "seeds per problem, planner and entry (polyplan seeds 1..N)");
   app.add_option("--seconds", seconds, "time limit of every run but RRT*'s, seconds");
   app.add_option("--rrtstar-seconds", rrtstar_seconds, "RRT*'s run time (it always runs to its limit), seconds");
-  app.add_option("--rrtstar-seeds", rrtstar_seeds,
-                 "seeds for RRT*, whose every run lasts --rrtstar-seconds (each seed adds 7 problems x 3 entries x that)");
-  app.add_option("--problems", problems_text, "comma-separated: two_link_points, three_link_forest, four_link_forest, "
-                                              "four_link_dense, six_link_forest, maze, office (default: all)");
+  app.add_option(
+      "--rrtstar-seeds", rrtstar_seeds,
+      "seeds for RRT*, whose every run lasts --rrtstar-seconds (each seed adds 7 problems x 3 entries x that)");
+  app.add_option("--problems", problems_text,
+                 "comma-separated: two_link_points, three_link_forest, four_link_forest, "
+                 "four_link_dense, six_link_forest, maze, office (default: all)");
   app.add_option("--planners", planners_text, "comma-separated: prm, lazyprm, rrt, rrtstar, rrtconnect (default: all)");
   app.add_option("--out", out_dir, "directory for the SVG curves (none: no pictures)");
   app.add_option("--csv", csv_path, "also write every run as a CSV line to this file");
@@ -788,7 +809,8 @@ int main(int argc, char** argv) {
   app.add_option("--ompl-seed", ompl_seed, "ompl::RNG::setSeed, once for the whole process");
   app.add_flag("--quick", quick, "smoke run: 3 seeds, 1 s limits");
   CLI11_PARSE(app, argc, argv);
-  if (quick) seeds = rrtstar_seeds = 3, seconds = std::min(seconds, 1.0), rrtstar_seconds = std::min(rrtstar_seconds, 1.0);
+  if (quick)
+    seeds = rrtstar_seeds = 3, seconds = std::min(seconds, 1.0), rrtstar_seconds = std::min(rrtstar_seconds, 1.0);
   if (seeds == 0 || rrtstar_seeds == 0 || !(seconds > 0) || !(rrtstar_seconds > 0)) {
     std::cerr << "sampling_race: seeds, seconds and rrtstar-seconds must be positive\n";
     return 2;
@@ -798,14 +820,18 @@ int main(int argc, char** argv) {
   ompl::RNG::setSeed(static_cast<std::uint_fast32_t>(ompl_seed));
   ompl::msg::setLogLevel(ompl::msg::LOG_WARN);
 
-  const std::vector<std::pair<std::string, std::string>> all_problems{{"two_link_points", "hard"}, {"three_link_forest", ""},
-                                                                      {"four_link_forest", ""},   {"four_link_dense", ""},
-                                                                      {"six_link_forest", ""},    {"maze", ""},
+  const std::vector<std::pair<std::string, std::string>> all_problems{{"two_link_points", "hard"},
+                                                                      {"three_link_forest", ""},
+                                                                      {"four_link_forest", ""},
+                                                                      {"four_link_dense", ""},
+                                                                      {"six_link_forest", ""},
+                                                                      {"maze", ""},
                                                                       {"office", ""}};
   std::vector<std::string> chosen = problems_text.empty() ? std::vector<std::string>{} : split(problems_text);
   std::vector<std::size_t> planners_run;
   for (const std::string& name : planners_text.empty() ? std::vector<std::string>{} : split(planners_text)) {
-    const auto k = std::find_if(planner_kinds.begin(), planner_kinds.end(), [&](const PlannerKind& p) { return p.name == name; });
+    const auto k =
+        std::find_if(planner_kinds.begin(), planner_kinds.end(), [&](const PlannerKind& p) { return p.name == name; });
     if (k == planner_kinds.end()) {
       std::cerr << "sampling_race: unknown planner " << name << '\n';
       return 2;
@@ -836,16 +862,19 @@ int main(int argc, char** argv) {
   // default range (0.2 · the state space's maximum extent); OMPL is given polyplan's explicitly.
   for (const auto& p : loaded.problems) {
     double step = 0, ompl_range = 0;
-    if (auto* arm = dynamic_cast<RaceProblemOf<PlanarArm>*>(p.get())) step = arm->step(), ompl_range = arm->ompl_default_range();
+    if (auto* arm = dynamic_cast<RaceProblemOf<PlanarArm>*>(p.get()))
+      step = arm->step(), ompl_range = arm->ompl_default_range();
     if (auto* world = dynamic_cast<RaceProblemOf<TranslatingRobot>*>(p.get()))
       step = world->step(), ompl_range = world->ompl_default_range();
     std::cerr << p->name() << ": " << p->description() << "; step " << step << " (OMPL's default range " << ompl_range
               << (std::abs(step - ompl_range) <= 1e-12 * step ? ", the same" : ", DIFFERENT") << ")\n";
   }
-  const bool star = std::any_of(planners_run.begin(), planners_run.end(), [](std::size_t k) { return planner_kinds[k].anytime; });
+  const bool star =
+      std::any_of(planners_run.begin(), planners_run.end(), [](std::size_t k) { return planner_kinds[k].anytime; });
   std::cerr << "sampling_race: " << seeds << " seeds, limit " << seconds << " s; RRT* " << rrtstar_seeds << " seeds of "
             << rrtstar_seconds << " s each, which alone take "
-            << (star ? static_cast<double>(loaded.problems.size() * rrtstar_seeds * 3) * rrtstar_seconds / 60 : 0) << " min\n";
+            << (star ? static_cast<double>(loaded.problems.size() * rrtstar_seeds * 3) * rrtstar_seconds / 60 : 0)
+            << " min\n";
 
   std::ofstream csv;
   if (!csv_path.empty()) {
@@ -854,7 +883,8 @@ int main(int argc, char** argv) {
       std::cerr << "sampling_race: cannot write " << csv_path << '\n';
       return 2;
     }
-    csv << "problem,planner,entry,seed,solved,seconds,plan_seconds,length,states,motions,clip,joined_seconds,joined_states,"
+    csv << "problem,planner,entry,seed,solved,seconds,plan_seconds,length,states,motions,clip,joined_seconds,joined_"
+           "states,"
            "joined_motions\n";
   }
   const auto began = Clock::now();
@@ -886,31 +916,35 @@ int main(int argc, char** argv) {
         line << ' ' << entry_labels[e] << ' ' << solved_within(runs, limit) << '/' << n << " in "
              << seconds_text(median_seconds(runs)) << (e < 2 ? ";" : "");
       }
-      std::cerr << line.str() << " (" << std::lround(since(t0)) << " s; " << std::lround(since(began)) << " s so far)\n";
+      std::cerr << line.str() << " (" << std::lround(since(t0)) << " s; " << std::lround(since(began))
+                << " s so far)\n";
     }
     if (!out_dir.empty()) {
       std::filesystem::create_directories(out_dir);
-      write_svg(out_dir + "/" + problem.name() + ".svg", problem, results.runs[pi], planners_run, seconds, rrtstar_seconds);
+      write_svg(out_dir + "/" + problem.name() + ".svg", problem, results.runs[pi], planners_run, seconds,
+                rrtstar_seconds);
     }
   }
 
   // The tables.
-  std::cout << "# Sampling race: polyplan against OMPL " << OMPL_MAJOR_VERSION << '.' << OMPL_MINOR_VERSION << '.'
-            << OMPL_PATCH_VERSION << "\n\n"
-            << seeds << " seeds per entry; time limit " << seconds << " s (RRT*: " << rrtstar_seeds << " seeds, each run "
-            << rrtstar_seconds << " s); polyplan with shortcut=false; OMPL seeded once per process (ompl::RNG::setSeed(" << ompl_seed
-            << ")).\n"
-            << "Time = to the first solution (median over all seeds, unsolved = ∞; polyplan: first_solution_seconds). "
-               "ratio = polyplan / OMPL (same check): the goal is ≤ 0.5. Other times: polyplan's whole plan() call (the "
-               "returned path certified once more) and its ratio; for OMPL's PRM, when its roadmap first joined start "
-               "and goal (its solve() notices that later, in a second thread) and polyplan's ratio to that.\n"
-            << "states: polyplan samples drawn, OMPL state validity checks; motions: motions checked. clip: OMPL's returned "
-               "paths with a motion polyplan does not certify (collides: a configuration on it collides).\n\n";
+  std::cout
+      << "# Sampling race: polyplan against OMPL " << OMPL_MAJOR_VERSION << '.' << OMPL_MINOR_VERSION << '.'
+      << OMPL_PATCH_VERSION << "\n\n"
+      << seeds << " seeds per entry; time limit " << seconds << " s (RRT*: " << rrtstar_seeds << " seeds, each run "
+      << rrtstar_seconds << " s); polyplan with shortcut=false; OMPL seeded once per process (ompl::RNG::setSeed("
+      << ompl_seed << ")).\n"
+      << "Time = to the first solution (median over all seeds, unsolved = ∞; polyplan: first_solution_seconds). "
+         "ratio = polyplan / OMPL (same check): the goal is ≤ 0.5. Other times: polyplan's whole plan() call (the "
+         "returned path certified once more) and its ratio; for OMPL's PRM, when its roadmap first joined start "
+         "and goal (its solve() notices that later, in a second thread) and polyplan's ratio to that.\n"
+      << "states: polyplan samples drawn, OMPL state validity checks; motions: motions checked. clip: OMPL's returned "
+         "paths with a motion polyplan does not certify (collides: a configuration on it collides).\n\n";
   const std::vector<double> marks{0.1, 1, 10};
   for (std::size_t pi = 0; pi < loaded.problems.size(); ++pi) {
     const RaceProblem& problem = *loaded.problems[pi];
     std::cout << "## " << problem.name() << " (" << problem.description() << ")\n\n"
-              << "| planner | entry | ≤ 0.1 s | ≤ 1 s | ≤ 10 s | median time | ratio | other times | states | motions | clip |\n"
+              << "| planner | entry | ≤ 0.1 s | ≤ 1 s | ≤ 10 s | median time | ratio | other times | states | motions "
+                 "| clip |\n"
               << "|---|---|---|---|---|---|---|---|---|---|---|\n";
     for (std::size_t i = 0; i < planners_run.size(); ++i) {
       const PlannerKind& kind = planner_kinds[planners_run[i]];
@@ -929,12 +963,14 @@ int main(int argc, char** argv) {
         if (e == polyplan_entry && !kind.anytime) {
           std::vector<double> w;
           for (const Run& r : runs) w.push_back(r.wall);
-          std::cout << "plan() " << seconds_text(median(w)) << " (ratio " << ratio_text(median(w), median_seconds(entries[ompl_same]))
-                    << ')';
+          std::cout << "plan() " << seconds_text(median(w)) << " (ratio "
+                    << ratio_text(median(w), median_seconds(entries[ompl_same])) << ')';
           if (kind.name == "prm")
-            std::cout << "; ratio to OMPL's roadmap joined " << ratio_text(median_seconds(runs), median_joined(entries[ompl_same]));
+            std::cout << "; ratio to OMPL's roadmap joined "
+                      << ratio_text(median_seconds(runs), median_joined(entries[ompl_same]));
         }
-        if (e != polyplan_entry && kind.name == "prm") std::cout << "roadmap joined " << seconds_text(median_joined(runs));
+        if (e != polyplan_entry && kind.name == "prm")
+          std::cout << "roadmap joined " << seconds_text(median_joined(runs));
         std::cout << " | " << count_text(median_of(runs, [](const Run& r) { return r.states; })) << " | "
                   << count_text(median_of(runs, [](const Run& r) { return r.motions; })) << " | ";
         if (e != polyplan_entry) {
@@ -952,7 +988,8 @@ int main(int argc, char** argv) {
       }
     }
     std::cout << '\n';
-    const auto star_it = std::find_if(planners_run.begin(), planners_run.end(), [](std::size_t k) { return planner_kinds[k].anytime; });
+    const auto star_it =
+        std::find_if(planners_run.begin(), planners_run.end(), [](std::size_t k) { return planner_kinds[k].anytime; });
     if (star_it != planners_run.end()) {
       const auto& entries = results.runs[pi][static_cast<std::size_t>(star_it - planners_run.begin())];
       std::cout << "RRT* length (median over the seeds solved by then, and how many):\n\n"
@@ -974,10 +1011,11 @@ int main(int argc, char** argv) {
   }
 
   // The goals, in one table.
-  std::cout << "## Goals: polyplan's median time ≤ ½ OMPL's (same check); RRT* length at 1 s ≤ OMPL's\n\n"
-               "Each cell: the ratio of the median times, whether ≤ 0.5, and in parentheses the ratio with polyplan's whole "
-               "plan() call (and for PRM, to the time OMPL's roadmap joined start and goal). RRT*: the median length at 1 s "
-               "(runs with a path by then).\n\n| problem |";
+  std::cout
+      << "## Goals: polyplan's median time ≤ ½ OMPL's (same check); RRT* length at 1 s ≤ OMPL's\n\n"
+         "Each cell: the ratio of the median times, whether ≤ 0.5, and in parentheses the ratio with polyplan's whole "
+         "plan() call (and for PRM, to the time OMPL's roadmap joined start and goal). RRT*: the median length at 1 s "
+         "(runs with a path by then).\n\n| problem |";
   for (std::size_t k : planners_run) std::cout << ' ' << planner_kinds[k].label << " |";
   if (star) std::cout << " RRT* length at 1 s (polyplan / OMPL) |";
   std::cout << "\n|---|";
@@ -994,28 +1032,36 @@ int main(int argc, char** argv) {
         std::vector<double> w;
         for (const Run& r : entries[polyplan_entry]) w.push_back(r.wall);
         std::cout << " (plan() " << ratio_text(median(w), theirs);
-        if (planner_kinds[planners_run[i]].name == "prm") std::cout << "; joined " << ratio_text(ours, median_joined(entries[ompl_same]));
+        if (planner_kinds[planners_run[i]].name == "prm")
+          std::cout << "; joined " << ratio_text(ours, median_joined(entries[ompl_same]));
         std::cout << ')';
       }
       std::cout << " |";
     }
     if (star) {
-      const auto star_it = std::find_if(planners_run.begin(), planners_run.end(), [](std::size_t k) { return planner_kinds[k].anytime; });
+      const auto star_it = std::find_if(planners_run.begin(), planners_run.end(),
+                                        [](std::size_t k) { return planner_kinds[k].anytime; });
       const auto& entries = results.runs[pi][static_cast<std::size_t>(star_it - planners_run.begin())];
       const auto [ours, n_ours] = cost_at(entries[polyplan_entry], 1);
       const auto [theirs, n_theirs] = cost_at(entries[ompl_same], 1);
       // Met when polyplan has a path in at least as many runs by 1 s, and its median is no longer.
       const bool met = std::isfinite(ours) && n_ours >= n_theirs && (!std::isfinite(theirs) || ours <= theirs);
-      std::cout << ' ' << number_text(ours) << " (" << n_ours << ") / " << number_text(theirs) << " (" << n_theirs << ")"
-                << (met ? " yes" : n_ours < n_theirs ? " **no** (fewer runs solved)" : " **no**") << " |";
+      std::cout << ' ' << number_text(ours) << " (" << n_ours << ") / " << number_text(theirs) << " (" << n_theirs
+                << ")"
+                << (met                 ? " yes"
+                    : n_ours < n_theirs ? " **no** (fewer runs solved)"
+                                        : " **no**")
+                << " |";
     }
     std::cout << '\n';
   }
 
   // Against what OMPL's users run: its default discrete check, which is faster and unsafe.
-  std::cout << "\n## Against OMPL with its default discrete check\n\n"
-               "Each cell: polyplan's median time / OMPL's (discrete check), and how many of OMPL's returned paths collide "
-               "(a configuration on a motion of it collides: found by polyplan's certified test) of those it returned.\n\n| problem |";
+  std::cout
+      << "\n## Against OMPL with its default discrete check\n\n"
+         "Each cell: polyplan's median time / OMPL's (discrete check), and how many of OMPL's returned paths collide "
+         "(a configuration on a motion of it collides: found by polyplan's certified test) of those it returned.\n\n| "
+         "problem |";
   for (std::size_t k : planners_run) std::cout << ' ' << planner_kinds[k].label << " |";
   std::cout << "\n|---|";
   for (std::size_t k = 0; k < planners_run.size(); ++k) std::cout << "---|";
@@ -1030,8 +1076,8 @@ int main(int argc, char** argv) {
         ++returned;
         collide += r.clip == Clip::collides;
       }
-      std::cout << ' ' << ratio_text(median_seconds(entries[polyplan_entry]), median_seconds(entries[ompl_discrete])) << "; "
-                << collide << " of " << returned << " collide |";
+      std::cout << ' ' << ratio_text(median_seconds(entries[polyplan_entry]), median_seconds(entries[ompl_discrete]))
+                << "; " << collide << " of " << returned << " collide |";
     }
     std::cout << '\n';
   }

@@ -102,7 +102,8 @@ void search(benchmark::State& state) {
   }
   state.counters["queries_per_s"] =
       benchmark::Counter(static_cast<double>(q.size()), benchmark::Counter::kIsIterationInvariantRate);
-  state.counters["expanded_per_query"] = static_cast<double>(expanded) / static_cast<double>(state.iterations() * q.size());
+  state.counters["expanded_per_query"] =
+      static_cast<double>(expanded) / static_cast<double>(state.iterations() * q.size());
 }
 
 void arguments(benchmark::internal::Benchmark* b, bool with_bfs) {

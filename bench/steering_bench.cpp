@@ -122,12 +122,15 @@ void polyplan_distance(benchmark::State& state, Distance distance) {
 void BM_OmplDubins(benchmark::State& state) { ompl_distance<ob::DubinsStateSpace>(state); }
 void BM_PolyplanDubins(benchmark::State& state) { polyplan_distance(state, polyplan::dubins_distance); }
 void BM_PolyplanDubinsPath(benchmark::State& state) {
-  polyplan_distance(state, [](const auto& a, const auto& b, double r) { return polyplan::shortest_dubins_path(a, b, r).length(); });
+  polyplan_distance(
+      state, [](const auto& a, const auto& b, double r) { return polyplan::shortest_dubins_path(a, b, r).length(); });
 }
 void BM_OmplReedsShepp(benchmark::State& state) { ompl_distance<ob::ReedsSheppStateSpace>(state); }
 void BM_PolyplanReedsShepp(benchmark::State& state) { polyplan_distance(state, polyplan::reeds_shepp_distance); }
 void BM_PolyplanReedsSheppPath(benchmark::State& state) {
-  polyplan_distance(state, [](const auto& a, const auto& b, double r) { return polyplan::shortest_reeds_shepp_path(a, b, r).length(); });
+  polyplan_distance(state, [](const auto& a, const auto& b, double r) {
+    return polyplan::shortest_reeds_shepp_path(a, b, r).length();
+  });
 }
 
 BENCHMARK(BM_OmplDubins);

@@ -76,11 +76,12 @@ Pose drive(Pose p, Turn turn, double v, double radius) {
   const double th = p.theta;
   switch (turn) {
     case Turn::left:
-      return {p.x + radius * (std::sin(th + v) - std::sin(th)), p.y + radius * (-std::cos(th + v) + std::cos(th)), th + v};
+      return {p.x + radius * (std::sin(th + v) - std::sin(th)), p.y + radius * (-std::cos(th + v) + std::cos(th)),
+              th + v};
     case Turn::right:
-      return {p.x + radius * (-std::sin(th - v) + std::sin(th)), p.y + radius * (std::cos(th - v) - std::cos(th)), th - v};
-    case Turn::straight:
-      return {p.x + radius * v * std::cos(th), p.y + radius * v * std::sin(th), th};
+      return {p.x + radius * (-std::sin(th - v) + std::sin(th)), p.y + radius * (std::cos(th - v) - std::cos(th)),
+              th - v};
+    case Turn::straight: return {p.x + radius * v * std::cos(th), p.y + radius * v * std::sin(th), th};
   }
   return p;
 }
@@ -110,7 +111,7 @@ Turn turn_of(ob::ReedsSheppStateSpace::ReedsSheppPathSegmentType type) {
 // OMPL's answer for one pair.
 
 struct Answer {
-  double length = 0;  // distance()
+  double length = 0;       // distance()
   double path_length = 0;  // the path's own segments, radius · Σ|length_i|: should equal length
   Pose end;
 };
@@ -192,7 +193,8 @@ class Degenerate {
         for (int degrees : {45, 90, 180, 270}) {
           Pose goal = drive(starts[s], turn, degrees * pi / 180, radius_);
           goal.theta = ompl_heading(goal.theta);
-          add(std::string("circle_") + (turn == Turn::left ? "left" : "right") + std::to_string(degrees) + (s == 0 ? "_o" : "_p"),
+          add(std::string("circle_") + (turn == Turn::left ? "left" : "right") + std::to_string(degrees) +
+                  (s == 0 ? "_o" : "_p"),
               starts[s], goal);
         }
   }
@@ -204,11 +206,13 @@ class Degenerate {
       const char* name;
       double theta, ux, uy;  // the heading and its exact unit vector
     };
-    const std::array<Axis, 4> axes{Axis{"0", 0, 1, 0}, Axis{"90", pi / 2, 0, 1}, Axis{"-90", -pi / 2, 0, -1}, Axis{"180", pi, -1, 0}};
+    const std::array<Axis, 4> axes{Axis{"0", 0, 1, 0}, Axis{"90", pi / 2, 0, 1}, Axis{"-90", -pi / 2, 0, -1},
+                                   Axis{"180", pi, -1, 0}};
     for (const Axis& start : axes)
       for (const auto& [where, side, ahead] : std::array<std::tuple<const char*, double, double>, 4>{
                {{"ahead", 0, 1}, {"behind", 0, -1}, {"left", 1, 0}, {"right", -1, 0}}})
-        for (const auto& [dname, d] : std::array<std::pair<const char*, double>, 2>{{{"d3", 3.0}, {"d2R", 2 * radius_}}})
+        for (const auto& [dname, d] :
+             std::array<std::pair<const char*, double>, 2>{{{"d3", 3.0}, {"d2R", 2 * radius_}}})
           for (const Axis& goal : axes) {
             // ahead along (ux, uy), left along (-uy, ux)
             const double gx = d * (ahead * start.ux - side * start.uy), gy = d * (ahead * start.uy + side * start.ux);
@@ -232,7 +236,8 @@ class Degenerate {
         for (bool opposite : {false, true}) {
           const double gx = e * (ahead * s.ux - side * s.uy), gy = e * (ahead * s.uy + side * s.ux);
           const double goal_theta = opposite ? ompl_heading(s.theta + pi) : s.theta;
-          add(std::string("tiny_") + where + (opposite ? "_opposite" : "_same") + "_h" + s.name, {0, 0, s.theta}, {gx, gy, goal_theta});
+          add(std::string("tiny_") + where + (opposite ? "_opposite" : "_same") + "_h" + s.name, {0, 0, s.theta},
+              {gx, gy, goal_theta});
         }
     add("tiny_turn_plus", {0, 0, 0}, {0, 0, e});
     add("tiny_turn_minus", {0, 0, 0}, {0, 0, -e});
@@ -303,29 +308,33 @@ Miss miss(const Answer& a, const Pose& goal) {
 struct CsvFile {
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> file{nullptr, std::fclose};
 
-  CsvFile(const std::filesystem::path& path, const std::string& how) : file(std::fopen(path.c_str(), "w"), std::fclose) {
+  CsvFile(const std::filesystem::path& path, const std::string& how)
+      : file(std::fopen(path.c_str(), "w"), std::fclose) {
     if (!file) throw std::runtime_error("cannot write " + path.string());
     std::fputs("x0,y0,theta0,x1,y1,theta1,radius,length,end_x,end_y,end_theta\n", file.get());
     std::fprintf(file.get(), "# %s\n", how.c_str());
   }
   void row(const PosePair& p, const Answer& a) {
-    const std::array<double, 11> v{p.from.x, p.from.y, p.from.theta, p.to.x, p.to.y, p.to.theta, p.radius,
-                                   a.length, a.end.x,  a.end.y,  a.end.theta};
+    const std::array<double, 11> v{p.from.x, p.from.y, p.from.theta, p.to.x,  p.to.y,     p.to.theta,
+                                   p.radius, a.length, a.end.x,      a.end.y, a.end.theta};
     for (std::size_t i = 0; i < v.size(); ++i) std::fprintf(file.get(), i == 0 ? "%.17g" : ",%.17g", v[i]);
     std::fputc('\n', file.get());
   }
   void close(const std::filesystem::path& path) {
-    if (std::ferror(file.get()) != 0 || std::fclose(file.release()) != 0) throw std::runtime_error("cannot write " + path.string());
+    if (std::ferror(file.get()) != 0 || std::fclose(file.release()) != 0)
+      throw std::runtime_error("cannot write " + path.string());
   }
 };
 
 std::string provenance(const char* space, const std::string& command, std::size_t degenerate) {
   std::ostringstream how;
   // No commas: the line stays one field to a CSV reader that does not skip comments.
-  how << "made by bench/steering_reference.cpp (" << command << ") with OMPL " << OMPL_MAJOR_VERSION << '.' << OMPL_MINOR_VERSION
-      << '.' << OMPL_PATCH_VERSION << " ompl::base::" << space << ": length = distance(); end_* = OMPL's path segments driven "
-      << "from the start (end_theta in [-pi pi)); rows 0-" << degenerate - 1 << " the degenerate pairs of steering_cases.txt; then "
-      << random_count << " random pairs from std::mt19937_64 seed " << random_seed
+  how << "made by bench/steering_reference.cpp (" << command << ") with OMPL " << OMPL_MAJOR_VERSION << '.'
+      << OMPL_MINOR_VERSION << '.' << OMPL_PATCH_VERSION << " ompl::base::" << space
+      << ": length = distance(); end_* = OMPL's path segments driven "
+      << "from the start (end_theta in [-pi pi)); rows 0-" << degenerate - 1
+      << " the degenerate pairs of steering_cases.txt; then " << random_count
+      << " random pairs from std::mt19937_64 seed " << random_seed
       << ": each draws x0 y0 (uniform_real -10..10) theta0 (uniform_real -pi..pi) x1 y1 theta1 alike; then the radius "
          "{1 0.5 2 3.7}[uniform_int 0..3]";
   return how.str();
@@ -338,13 +347,15 @@ void report_miss(std::size_t row, const PosePair& p, const char* which, const An
   const double scale = std::max({1.0, std::abs(p.to.x), std::abs(p.to.y)});
   if (m.worst() <= 1e-14 * scale) return;
   std::fprintf(stderr, "  %s row %zu %s %s: misses the goal by %.3g, heading by %.3g rad; length %.17g\n",
-               m.worst() > miss_tolerance ? "MISS" : "    ", row, p.name.c_str(), which, m.distance, m.heading, a.length);
+               m.worst() > miss_tolerance ? "MISS" : "    ", row, p.name.c_str(), which, m.distance, m.heading,
+               a.length);
 }
 
 // Where distance() and the path's own segments disagree (they should not: both are OMPL's).
 void check_lengths(std::size_t row, const char* which, const Answer& a) {
   if (std::abs(a.length - a.path_length) > 1e-12 * std::max(1.0, a.length))
-    std::fprintf(stderr, "  row %zu %s: distance() %.17g but the path's segments sum to %.17g\n", row, which, a.length, a.path_length);
+    std::fprintf(stderr, "  row %zu %s: distance() %.17g but the path's segments sum to %.17g\n", row, which, a.length,
+                 a.path_length);
 }
 
 void write_cases(const std::filesystem::path& path, const std::vector<PosePair>& pairs) {
@@ -419,15 +430,18 @@ int run(const std::filesystem::path& out_dir, const std::string& command) {
   const std::size_t degenerate = pairs.size();
   std::string random_left_out;
   const std::vector<PosePair> random = answerable(random_pairs(), random_left_out);
-  if (!random_left_out.empty()) throw std::runtime_error("OMPL aborts on random pairs (" + random_left_out + "): the rule needs changing");
+  if (!random_left_out.empty())
+    throw std::runtime_error("OMPL aborts on random pairs (" + random_left_out + "): the rule needs changing");
   pairs.insert(pairs.end(), random.begin(), random.end());
 
   const std::string omitted = left_out.empty() ? "" : "; left out (OMPL's assertions abort on them): " + left_out;
   std::filesystem::create_directories(out_dir);
   CsvFile dubins(out_dir / "ompl_dubins.csv", provenance("DubinsStateSpace", command, degenerate) + omitted);
-  CsvFile reeds_shepp(out_dir / "ompl_reeds_shepp.csv", provenance("ReedsSheppStateSpace", command, degenerate) + omitted);
+  CsvFile reeds_shepp(out_dir / "ompl_reeds_shepp.csv",
+                      provenance("ReedsSheppStateSpace", command, degenerate) + omitted);
   RandomSummary random_dubins, random_reeds_shepp;
-  std::cerr << "steering_reference: degenerate rows whose OMPL path ends off the goal (MISS: by more than " << miss_tolerance << "):\n";
+  std::cerr << "steering_reference: degenerate rows whose OMPL path ends off the goal (MISS: by more than "
+            << miss_tolerance << "):\n";
   for (std::size_t row = 0; row < pairs.size(); ++row) {
     const PosePair& p = pairs[row];
     const Answer d = ompl_dubins(p), rs = ompl_reeds_shepp(p);
@@ -446,10 +460,11 @@ int run(const std::filesystem::path& out_dir, const std::string& command) {
   dubins.close(out_dir / "ompl_dubins.csv");
   reeds_shepp.close(out_dir / "ompl_reeds_shepp.csv");
   write_cases(out_dir / "steering_cases.txt", pairs);
-  std::fprintf(stderr, "random rows: dubins %zu over %g (worst %.3g), reeds_shepp %zu over %g (worst %.3g)\n", random_dubins.misses,
-               miss_tolerance, random_dubins.worst, random_reeds_shepp.misses, miss_tolerance, random_reeds_shepp.worst);
-  std::fprintf(stderr, "wrote %zu rows (%zu degenerate, %zu random) to each CSV in %s\n", pairs.size(), degenerate, random.size(),
-               out_dir.c_str());
+  std::fprintf(stderr, "random rows: dubins %zu over %g (worst %.3g), reeds_shepp %zu over %g (worst %.3g)\n",
+               random_dubins.misses, miss_tolerance, random_dubins.worst, random_reeds_shepp.misses, miss_tolerance,
+               random_reeds_shepp.worst);
+  std::fprintf(stderr, "wrote %zu rows (%zu degenerate, %zu random) to each CSV in %s\n", pairs.size(), degenerate,
+               random.size(), out_dir.c_str());
   return 0;
 }
 

@@ -7,8 +7,8 @@
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 
-#include <polyplan/experiment/experiment_plots.hpp>
 #include <polyplan/experiment/experiment_file.hpp>
+#include <polyplan/experiment/experiment_plots.hpp>
 #include <polyplan/experiment/experiment_results.hpp>
 #include <polyplan/experiment/experiment_runner.hpp>
 #include <polyplan/experiment/experiment_statistics.hpp>
@@ -34,8 +34,8 @@ struct BenchmarkCommand {
   std::string experiment;
   std::string out;
   unsigned threads = 1;
-  std::size_t seeds = 0;   // 0: all of the experiment's
-  double time_limit = 0;   // 0: the experiment's
+  std::size_t seeds = 0;  // 0: all of the experiment's
+  double time_limit = 0;  // 0: the experiment's
 };
 
 // The experiment cut to the first `seeds` seeds and given another time limit, its cost times
@@ -43,7 +43,8 @@ struct BenchmarkCommand {
 void scale_down(Experiment& e, const BenchmarkCommand& command) {
   if (command.seeds) {
     if (command.seeds > e.seeds.size())
-      throw InputError("--seeds " + std::to_string(command.seeds) + ": the experiment has " + std::to_string(e.seeds.size()) + " seeds");
+      throw InputError("--seeds " + std::to_string(command.seeds) + ": the experiment has " +
+                       std::to_string(e.seeds.size()) + " seeds");
     e.seeds.resize(command.seeds);
   }
   if (command.time_limit > 0) {
@@ -84,7 +85,8 @@ int run_benchmark(const BenchmarkCommand& command) {
   if (error || !fs::is_directory(out)) throw InputError("--out " + out.string() + ": cannot make the folder");
   const unsigned threads = command.threads ? command.threads : std::max(1u, std::thread::hardware_concurrency());
 
-  std::fprintf(stderr, "%s: %zu runs (%zu problems x %zu planner entries x %zu seeds, %g s each at most) on %u thread(s)\n",
+  std::fprintf(stderr,
+               "%s: %zu runs (%zu problems x %zu planner entries x %zu seeds, %g s each at most) on %u thread(s)\n",
                experiment.name.c_str(), experiment.cells(), experiment.problems.size(), experiment.planners.size(),
                experiment.seeds.size(), experiment.time_limit, threads);
   Progress progress("runs");
@@ -100,14 +102,18 @@ int run_benchmark(const BenchmarkCommand& command) {
   for (std::size_t problem = 0; problem < experiment.problems.size(); ++problem) {
     const std::string name = file_part(experiment.problems[problem].name);
     write_picture(success_rate_plot(experiment, problem, statistics[problem]), out / (name + "-success.svg"), written);
-    if (auto cost = cost_over_time_plot(experiment, problem, statistics[problem])) write_picture(*cost, out / (name + "-cost.svg"), written);
-    write_picture(box_plot(experiment, problem, statistics[problem], BoxPlotOf::time), out / (name + "-time.svg"), written);
-    write_picture(box_plot(experiment, problem, statistics[problem], BoxPlotOf::length), out / (name + "-length.svg"), written);
+    if (auto cost = cost_over_time_plot(experiment, problem, statistics[problem]))
+      write_picture(*cost, out / (name + "-cost.svg"), written);
+    write_picture(box_plot(experiment, problem, statistics[problem], BoxPlotOf::time), out / (name + "-time.svg"),
+                  written);
+    write_picture(box_plot(experiment, problem, statistics[problem], BoxPlotOf::length), out / (name + "-length.svg"),
+                  written);
   }
 
   std::size_t solved = 0;
   for (const ExperimentRun& run : results.runs) solved += run.solved;
-  std::cout << experiment.name << ": " << results.runs.size() << " runs, " << solved << " solved, " << results.total_seconds << " s\n";
+  std::cout << experiment.name << ": " << results.runs.size() << " runs, " << solved << " solved, "
+            << results.total_seconds << " s\n";
   for (const fs::path& path : written) std::cout << "wrote " << path.string() << '\n';
   return ok;
 }
@@ -117,12 +123,16 @@ int run_benchmark(const BenchmarkCommand& command) {
 void add_benchmark_command(CLI::App& app, Action& run) {
   auto command = std::make_shared<BenchmarkCommand>();
   CLI::App* benchmark = app.add_subcommand(
-      "benchmark", "Run an experiment (problems x planner entries x seeds): OMPL benchmark log, JSON, CSV, tables and plots");
+      "benchmark",
+      "Run an experiment (problems x planner entries x seeds): OMPL benchmark log, JSON, CSV, tables and plots");
   benchmark->add_option("experiment", command->experiment, "experiment file (JSON; docs/benchmark.md)")->required();
   benchmark->add_option("--out", command->out, "folder for the results (default: NAME_results, NAME the experiment's)");
-  benchmark->add_option("--threads", command->threads, "runs at a time, each alone in its thread (0: one per core)")->capture_default_str();
+  benchmark->add_option("--threads", command->threads, "runs at a time, each alone in its thread (0: one per core)")
+      ->capture_default_str();
   benchmark->add_option("--seeds", command->seeds, "only the experiment's first N seeds");
-  benchmark->add_option("--time-limit", command->time_limit, "seconds per run instead of the experiment's (its cost_times scaled alike)")
+  benchmark
+      ->add_option("--time-limit", command->time_limit,
+                   "seconds per run instead of the experiment's (its cost_times scaled alike)")
       ->check(CLI::PositiveNumber);
   benchmark->callback([command, &run] { run = [command] { return run_benchmark(*command); }; });
 }

@@ -38,7 +38,8 @@ void add_check_command(CLI::App& app, Action& run) {
   CLI::App* command = app.add_subcommand("check", "Check exactly whether a path is free in a world");
   command->add_option("world", options->world, "World file (JSON)")->required();
   command->add_option("path", options->path, "Path file: {\"path\": [[x, y], ...]}")->required();
-  command->add_option("--json", options->json, "Write {\"valid\", \"reason\"} as JSON to this file ('-' for standard output)");
+  command->add_option("--json", options->json,
+                      "Write {\"valid\", \"reason\"} as JSON to this file ('-' for standard output)");
   command->callback([options, &run] { run = [options] { return run_check(*options); }; });
 }
 

@@ -19,7 +19,8 @@ std::vector<double> comma_numbers(const std::string& text, const std::string& op
     } catch (const std::exception&) {
       used = 0;
     }
-    if (used == 0 || used != part.size() || !std::isfinite(value)) throw InputError(option + " " + text + ": \"" + part + "\" is not a finite number");
+    if (used == 0 || used != part.size() || !std::isfinite(value))
+      throw InputError(option + " " + text + ": \"" + part + "\" is not a finite number");
     values.push_back(value);
   }
   return values;

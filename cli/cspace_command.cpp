@@ -37,16 +37,14 @@ nlohmann::json summary(const CSpace& cspace, double seconds) {
 }
 
 void print_table(const nlohmann::json& s) {
-  std::cout << s["world"].get<std::string>() << ": robot " << s["robot"].get<std::string>() << ", "
-            << s["obstacles"] << " obstacle(s) joined into " << s["solids"] << " solid(s), " << s["cobstacles"]
-            << " C-obstacle(s), " << s["free_components"].size() << " free component(s)\n";
+  std::cout << s["world"].get<std::string>() << ": robot " << s["robot"].get<std::string>() << ", " << s["obstacles"]
+            << " obstacle(s) joined into " << s["solids"] << " solid(s), " << s["cobstacles"] << " C-obstacle(s), "
+            << s["free_components"].size() << " free component(s)\n";
   std::size_t i = 0;
   for (const auto& c : s["free_components"]) {
     std::cout << "  free component " << i++ << ": ";
-    if (c["unbounded"].get<bool>())
-      std::cout << "unbounded";
-    else
-      std::cout << "area " << c["area"].get<std::string>() << " (" << c["area_double"].get<double>() << ")";
+    if (c["unbounded"].get<bool>()) std::cout << "unbounded";
+    else std::cout << "area " << c["area"].get<std::string>() << " (" << c["area_double"].get<double>() << ")";
     std::cout << ", " << c["holes"] << " hole(s)\n";
   }
   std::printf("  built in %.3f s\n", s["seconds"].get<double>());
@@ -62,8 +60,7 @@ int run_cspace(const CSpaceOptions& options) {
   cspace.require_free_queries();
   if (!options.svg.empty()) write_cspace_svg(cspace, options.svg);
   const nlohmann::json s = summary(cspace, seconds);
-  if (!options.json.empty())
-    write_json(s, options.json);
+  if (!options.json.empty()) write_json(s, options.json);
   if (options.json != "-") print_table(s);
   if (!options.svg.empty() && options.json != "-") std::cout << "  picture: " << options.svg << '\n';
   return ok;

@@ -43,7 +43,9 @@ double mean(const std::vector<double>& values) {
   return values.empty() ? 0 : sum / static_cast<double>(values.size());
 }
 
-nlohmann::json length_or_null(bool found, double length) { return found ? nlohmann::json(length) : nlohmann::json(nullptr); }
+nlohmann::json length_or_null(bool found, double length) {
+  return found ? nlohmann::json(length) : nlohmann::json(nullptr);
+}
 
 int run_grid(const GridOptions& options) {
   // Every input is read and checked (any error reported, alone on stderr) before the long work.
@@ -94,20 +96,24 @@ int run_grid(const GridOptions& options) {
   if (weighted) {
     summary["weight"] = search.weight;
     summary["bound_violations"] = bound_violations;
-    summary["note"] = "weighted A* is not expected to match the optimal lengths; bound_violations counts costs above "
-                      "weight x the file's length";
+    summary["note"] =
+        "weighted A* is not expected to match the optimal lengths; bound_violations counts costs above "
+        "weight x the file's length";
   }
   if (!options.json.empty()) write_json({{"queries", queries}, {"summary", summary}}, options.json);
   if (options.json != "-") {
     std::printf("%8s %6s %14s %14s %10s %10s\n", "index", "found", "length", "expected", "expanded", "us");
     for (const auto& item : queries) {
-      const auto number = [](const nlohmann::json& v) { return v.is_null() ? std::string("-") : std::to_string(v.get<double>()); };
-      const char* flag = item["mismatch"].get<bool>() ? (weighted ? (item["bound_ok"].get<bool>() ? "  differs" : "  OVER BOUND")
-                                                                  : "  MISMATCH")
-                                                      : "";
+      const auto number = [](const nlohmann::json& v) {
+        return v.is_null() ? std::string("-") : std::to_string(v.get<double>());
+      };
+      const char* flag = item["mismatch"].get<bool>()
+                             ? (weighted ? (item["bound_ok"].get<bool>() ? "  differs" : "  OVER BOUND") : "  MISMATCH")
+                             : "";
       std::printf("%8zu %6s %14s %14s %10zu %10.1f%s\n", item["index"].get<std::size_t>(),
-                  item["found"].get<bool>() ? "yes" : "no", number(item["length"]).c_str(), number(item["expected"]).c_str(),
-                  item["expanded"].get<std::size_t>(), item["us"].get<double>(), flag);
+                  item["found"].get<bool>() ? "yes" : "no", number(item["length"]).c_str(),
+                  number(item["expected"]).c_str(), item["expanded"].get<std::size_t>(), item["us"].get<double>(),
+                  flag);
     }
     std::cout << "summary: " << summary.dump() << '\n';
   }
@@ -118,11 +124,13 @@ int run_grid(const GridOptions& options) {
 
 void add_grid_command(CLI::App& app, Action& run) {
   auto options = std::make_shared<GridOptions>();
-  CLI::App* command = app.add_subcommand("grid", "Answer a MovingAI scenario file on the 8-connected grid (octile lengths)");
+  CLI::App* command =
+      app.add_subcommand("grid", "Answer a MovingAI scenario file on the 8-connected grid (octile lengths)");
   command->add_option("map", options->map, "MovingAI map (.map)")->required();
   command->add_option("scenarios", options->scenarios, "MovingAI scenarios (.scen)")->required();
   command->add_option("--search", options->search, "astar, dijkstra or wastar")->capture_default_str();
-  command->add_option("--weight", options->weight, "Weighted A*: f = g + weight * h (weight >= 1)")->capture_default_str();
+  command->add_option("--weight", options->weight, "Weighted A*: f = g + weight * h (weight >= 1)")
+      ->capture_default_str();
   command->add_option("--json", options->json, "Write the results as JSON to this file ('-' for standard output)");
   command->callback([options, &run] { run = [options] { return run_grid(*options); }; });
 }

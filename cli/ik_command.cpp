@@ -69,7 +69,8 @@ int run_ik(const IkCommandOptions& o) {
   if (!o.json.empty()) {
     nlohmann::json solutions = nlohmann::json::array();
     for (std::size_t i = 0; i < answer.solutions.size(); ++i)
-      solutions.push_back({{"angles", answer.solutions[i].angles}, {"error", answer.solutions[i].error}, {"free", bool(free[i])}});
+      solutions.push_back(
+          {{"angles", answer.solutions[i].angles}, {"error", answer.solutions[i].error}, {"free", bool(free[i])}});
     nlohmann::json out = {{"target", {target.x(), target.y()}}, {"found", answer.found}, {"solutions", solutions}};
     out["orientation"] = std::isnan(o.orientation) ? nlohmann::json(nullptr) : nlohmann::json(o.orientation);
     if (!answer.found) out["why_not"] = answer.why_not;
@@ -83,15 +84,16 @@ int run_ik(const IkCommandOptions& o) {
     for (std::size_t i = 0; i < answer.solutions.size(); ++i) {
       picture.motion.push_back(answer.solutions[i].angles);
       char label[96];
-      std::snprintf(label, sizeof label, "%s %zu, error %.2g%s", answer.found ? "solution" : "closest", i + 1, answer.solutions[i].error,
-                    free[i] ? "" : ", collides");
+      std::snprintf(label, sizeof label, "%s %zu, error %.2g%s", answer.found ? "solution" : "closest", i + 1,
+                    answer.solutions[i].error, free[i] ? "" : ", collides");
       labels.push_back(label);
     }
     picture.title = "inverse kinematics: the hand at " + o.target;
     draw_arm_configurations(picture, labels).write(o.svg);
   }
   if (o.json != "-") {
-    std::cout << (answer.found ? std::to_string(answer.solutions.size()) + " solution(s)" : "no solution (" + answer.why_not + "); the closest")
+    std::cout << (answer.found ? std::to_string(answer.solutions.size()) + " solution(s)"
+                               : "no solution (" + answer.why_not + "); the closest")
               << " for the hand at (" << target.x() << ", " << target.y() << "):\n";
     for (std::size_t i = 0; i < answer.solutions.size(); ++i) {
       std::cout << " ";
@@ -113,9 +115,11 @@ void add_ik_command(CLI::App& app, Action& run) {
   command->add_option("arm", options->arm, "arm file (JSON)")->required();
   command->add_option("--target", options->target, "where the hand goes, X,Y")->required();
   command->add_option("--orientation", options->orientation, "the last link's absolute angle there, degrees");
-  command->add_flag("--all", options->all, "every distinct solution found (numeric: from 32 seeds), not only the first");
+  command->add_flag("--all", options->all,
+                    "every distinct solution found (numeric: from 32 seeds), not only the first");
   command->add_flag("--collision-free", options->collision_free, "only solutions free of the arm file's obstacles");
-  command->add_option("--json", options->json, "write {target, found, solutions [{angles, error, free}]} as JSON ('-' for standard output)");
+  command->add_option("--json", options->json,
+                      "write {target, found, solutions [{angles, error, free}]} as JSON ('-' for standard output)");
   command->add_option("--svg", options->svg, "draw every solution at once");
   command->callback([options, &run] { run = [options] { return run_ik(*options); }; });
 }

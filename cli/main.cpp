@@ -53,9 +53,11 @@ int main(int argc, char** argv) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
     // One line, like every other bad input, naming what was not understood.
     std::string message = e.what();
-    if (argc > 1 && argv[1][0] != '-' && app.get_subcommands([&](const CLI::App* c) { return c->get_name() == argv[1]; }).empty()) {
+    if (argc > 1 && argv[1][0] != '-' &&
+        app.get_subcommands([&](const CLI::App* c) { return c->get_name() == argv[1]; }).empty()) {
       message = "unknown command \"" + std::string(argv[1]) + "\" (commands:";
-      for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) message += " " + c->get_name();
+      for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; }))
+        message += " " + c->get_name();
       message += ")";
     }
     std::cerr << "error: " << message << " (see polyplan --help)\n";

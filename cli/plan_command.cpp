@@ -44,7 +44,8 @@ void write_trace(const std::string& target, const std::vector<Report>& reports) 
     }
   trace.finish();
   if (lines == 0 && !reports.empty())
-    std::cerr << "warning: --trace: " << reports.front().planner() << " ran no graph search for these queries (the graph planners "
+    std::cerr << "warning: --trace: " << reports.front().planner()
+              << " ran no graph search for these queries (the graph planners "
               << "record one: visibility, visibility-full, trapezoid, voronoi, raster, gvd-grid)\n";
 }
 
@@ -57,7 +58,8 @@ std::string picture_path(const std::string& base, const Picture& picture, std::s
   return (dot == std::string::npos ? base : base.substr(0, dot)) + "-" + name + ".svg";
 }
 
-void write_pictures(const Problem& problem, const std::vector<Report>& reports, const std::string& base, PictureOptions options) {
+void write_pictures(const Problem& problem, const std::vector<Report>& reports, const std::string& base,
+                    PictureOptions options) {
   std::vector<const Report*> drawn;
   for (const Report& r : reports) drawn.push_back(&r);
   const std::vector<Picture> pictures = draw_reports(problem, drawn, options);
@@ -80,8 +82,9 @@ std::vector<std::size_t> asked_queries(const Problem& problem, const std::string
 
 int run_plan(const PlanCommand& command) {
   if (command.check_resolution)
-    throw InputError("--check-resolution is gone: every motion is certified free (conservative advancement), not "
-                     "sampled at a resolution; leave the option out");
+    throw InputError(
+        "--check-resolution is gone: every motion is certified free (conservative advancement), not "
+        "sampled at a resolution; leave the option out");
   if (command.json == "-" && command.trace == "-")
     throw InputError("--json - and --trace -: only one of them can go to standard output");
   std::vector<std::string> warnings;
@@ -112,7 +115,8 @@ int run_plan(const PlanCommand& command) {
     if (!command.svg.empty()) std::cout << "picture: " << command.svg << '\n';
   }
   // After the answers, so that a mistake stays one line.
-  if (command.old_name) std::cerr << "note: polyplan arm is polyplan plan now (the same options; --method is --planner)\n";
+  if (command.old_name)
+    std::cerr << "note: polyplan arm is polyplan plan now (the same options; --method is --planner)\n";
   return ok;
 }
 
@@ -124,29 +128,36 @@ void add_command(CLI::App& app, Action& run, const std::string& name, const std:
   plan->add_option("problem", command->file, "World or arm file (JSON)")->required();
   plan->add_option("--query", command->query, "plan only the query with this name (e.g. easy)");
   plan->add_option("--json", command->json, "Write the plan(s) as JSON to this file ('-' for standard output)");
-  plan->add_option("--svg", command->svg,
-                   "Draw the plan(s): a world with its C-obstacles, the planner's roadmap or cells and the paths; an arm's "
-                   "motion as an animation (OUT-QUERY.svg for each of several queries)");
+  plan->add_option(
+      "--svg", command->svg,
+      "Draw the plan(s): a world with its C-obstacles, the planner's roadmap or cells and the paths; an arm's "
+      "motion as an animation (OUT-QUERY.svg for each of several queries)");
   plan->add_option("--strobe", command->strobe, "An arm: draw every k-th configuration of the motion at once");
   plan->add_option("--every", command->every, "k for --strobe (default: about 12 configurations)");
-  plan->add_option("--trace", command->trace,
-                   "Graph planners: every expansion of the search as a JSON line {step, vertex, g, h, f, backpointer, open, "
-                   "at, query} to this file ('-' for standard output)");
+  plan->add_option(
+      "--trace", command->trace,
+      "Graph planners: every expansion of the search as a JSON line {step, vertex, g, h, f, backpointer, open, "
+      "at, query} to this file ('-' for standard output)");
   // An option that would do nothing is refused, not ignored: a script that passes it learns why.
   plan->add_option_function<double>(
-          "--check-resolution", [command](double) { command->check_resolution = true; }, "refused: motions are certified, not sampled")
+          "--check-resolution", [command](double) { command->check_resolution = true; },
+          "refused: motions are certified, not sampled")
       ->group("");
-  command->planner = std::make_unique<PlannerChoice>(*plan, "--planner", std::vector<std::string>{"--roadmap", "--method"});
+  command->planner =
+      std::make_unique<PlannerChoice>(*plan, "--planner", std::vector<std::string>{"--roadmap", "--method"});
   // The arm grid's evaluation as the flags older scripts use.
-  auto* lazy = command->planner->add_alias(*plan, "--lazy", "evaluation", "lazy", "grid: decide cells when the search reaches them (default)");
-  command->planner->add_alias(*plan, "--eager", "evaluation", "eager", "grid: evaluate every cell before searching")->excludes(lazy);
+  auto* lazy = command->planner->add_alias(*plan, "--lazy", "evaluation", "lazy",
+                                           "grid: decide cells when the search reaches them (default)");
+  command->planner->add_alias(*plan, "--eager", "evaluation", "eager", "grid: evaluate every cell before searching")
+      ->excludes(lazy);
   plan->callback([command, &run] { run = [command] { return run_plan(*command); }; });
 }
 
 }  // namespace
 
 void add_plan_command(CLI::App& app, Action& run) {
-  add_command(app, run, "plan", "Paths for the queries of a world or an arm from one planner (polyplan planners lists them)", false);
+  add_command(app, run, "plan",
+              "Paths for the queries of a world or an arm from one planner (polyplan planners lists them)", false);
 }
 
 void add_arm_command(CLI::App& app, Action& run) {

@@ -21,9 +21,11 @@ PlannerChoice::PlannerChoice(CLI::App& command, const std::string& flag, const s
     : flag_(flag) {
   std::string flags = flag;
   for (const auto& a : aliases) flags += "," + a;
-  chosen_ = command.add_option(flags, name_, "planner: " + planner_names(planner_catalog()) +
-                                                 " (polyplan planners lists them; default: the problem's)");
-  command.add_option("--option", assignments_, "set a planner option: NAME=VALUE (repeatable)")->allow_extra_args(false);
+  chosen_ = command.add_option(flags, name_,
+                               "planner: " + planner_names(planner_catalog()) +
+                                   " (polyplan planners lists them; default: the problem's)");
+  command.add_option("--option", assignments_, "set a planner option: NAME=VALUE (repeatable)")
+      ->allow_extra_args(false);
 
   // One typed flag per option name, whichever planners have it.
   std::map<std::string, std::pair<OptionInfo, std::vector<std::string>>> options;  // name → info, planners
@@ -35,7 +37,8 @@ PlannerChoice::PlannerChoice(CLI::App& command, const std::string& flag, const s
       auto& [info, owners] = options[option.name];
       if (owners.empty()) info = option;
       else if (info.flag != option.flag)
-        throw std::logic_error("the option " + option.name + " is a flag for some planners and takes a value for others");
+        throw std::logic_error("the option " + option.name +
+                               " is a flag for some planners and takes a value for others");
       owners.push_back(planner.name);
     }
   }
@@ -80,13 +83,16 @@ OptionValues PlannerChoice::given(const PlannerListing& planner) const {
   const auto add = [&](const std::string& name, const std::string& value, const std::string& as) {
     bool known = false;
     for (const OptionInfo& o : planner.options) known |= o.name == name;
-    if (!known) throw InputError(as + ": the planner " + name_ + " has no option " + name + " (" + option_names(planner.options) + ")");
+    if (!known)
+      throw InputError(as + ": the planner " + name_ + " has no option " + name + " (" + option_names(planner.options) +
+                       ")");
     if (!named.insert(name).second) throw InputError(as + ": the option " + name + " is given twice");
     values.emplace_back(name, value);
   };
   for (const std::string& assignment : assignments_) {
     const auto equals = assignment.find('=');
-    if (equals == std::string::npos || equals == 0) throw InputError("--option " + assignment + ": expected NAME=VALUE");
+    if (equals == std::string::npos || equals == 0)
+      throw InputError("--option " + assignment + ": expected NAME=VALUE");
     add(assignment.substr(0, equals), assignment.substr(equals + 1), "--option " + assignment);
   }
   for (const Typed& t : typed_)

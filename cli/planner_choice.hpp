@@ -25,8 +25,8 @@ class PlannerChoice {
   PlannerChoice(CLI::App& command, const std::string& flag, const std::vector<std::string>& aliases);
 
   // Another spelling of one option's value (`--eager` for evaluation=eager): a flag that sets it.
-  CLI::Option* add_alias(CLI::App& command, const std::string& alias, const std::string& option, const std::string& value,
-                         const std::string& help);
+  CLI::Option* add_alias(CLI::App& command, const std::string& alias, const std::string& option,
+                         const std::string& value, const std::string& help);
 
   // Settles the planner for `problem`: the one named, or the problem's default. InputError for a
   // name nobody registered or one that does not plan this problem, an option the planner does

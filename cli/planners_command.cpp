@@ -18,10 +18,17 @@ struct PlannersCommand {
 nlohmann::json range_end(double x) { return std::isinf(x) ? nlohmann::json(nullptr) : nlohmann::json(x); }
 
 nlohmann::json option_json(const OptionInfo& o) {
-  nlohmann::json option = {{"name", o.name}, {"description", o.description}, {"kind", o.kind}, {"default", o.default_value}, {"flag", o.flag}};
+  nlohmann::json option = {{"name", o.name},
+                           {"description", o.description},
+                           {"kind", o.kind},
+                           {"default", o.default_value},
+                           {"flag", o.flag}};
   if (o.range)
-    option["range"] = {{"min", range_end(o.range->min)}, {"max", range_end(o.range->max)}, {"min_open", o.range->min_open},
-                       {"max_open", o.range->max_open}, {"text", o.range->text()}};
+    option["range"] = {{"min", range_end(o.range->min)},
+                       {"max", range_end(o.range->max)},
+                       {"min_open", o.range->min_open},
+                       {"max_open", o.range->max_open},
+                       {"text", o.range->text()}};
   if (!o.choices.empty()) option["choices"] = o.choices;
   return option;
 }
@@ -31,19 +38,23 @@ nlohmann::json spaces_json() {
   nlohmann::json spaces = nlohmann::json::array();
   for (const PlannerListing& planner : planner_catalog()) {
     if (spaces.empty() || spaces.back()["space"] != planner.space)
-      spaces.push_back({{"space", planner.space}, {"command", "polyplan plan " + planner.file + " --planner NAME"},
+      spaces.push_back({{"space", planner.space},
+                        {"command", "polyplan plan " + planner.file + " --planner NAME"},
                         {"planners", nlohmann::json::array()}});
     nlohmann::json options = nlohmann::json::array();
     for (const OptionInfo& o : planner.options) options.push_back(option_json(o));
-    spaces.back()["planners"].push_back({{"name", planner.name}, {"description", planner.description}, {"options", options}});
+    spaces.back()["planners"].push_back(
+        {{"name", planner.name}, {"description", planner.description}, {"options", options}});
   }
   return spaces;
 }
 
 void print_space(const nlohmann::json& space) {
-  std::cout << "Planners for " << space["space"].get<std::string>() << " (" << space["command"].get<std::string>() << "):\n";
+  std::cout << "Planners for " << space["space"].get<std::string>() << " (" << space["command"].get<std::string>()
+            << "):\n";
   for (const auto& planner : space["planners"]) {
-    std::printf("  %-16s %s\n", planner["name"].get<std::string>().c_str(), planner["description"].get<std::string>().c_str());
+    std::printf("  %-16s %s\n", planner["name"].get<std::string>().c_str(),
+                planner["description"].get<std::string>().c_str());
     for (const auto& o : planner["options"]) {
       const std::string name = o["name"], kind = o["kind"];
       const std::string flag = o["flag"].get<bool>() ? "--" + name + ", --no-" + name : "--" + name + " " + kind;

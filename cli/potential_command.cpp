@@ -52,10 +52,11 @@ int run_potential(const PotentialOptions& o) {
   if (!o.svg.empty()) draw_potential_study(cspace, field, study).write(o.svg);
   if (o.json != "-") {
     const BoxGrid& b = study.box;
-    std::cout << study.found.points.size() << " critical point(s) in the free space of [" << b.xmin << ", " << b.xmax << "] x [" << b.ymin
-              << ", " << b.ymax << "] (" << study.found.candidates << " candidate cells of " << b.cells_per_axis << " x " << b.cells_per_axis
-              << ")\n";
-    for (const CriticalPoint& p : study.found.points) std::cout << "  " << p.kind << " at " << text(p.at) << ", U = " << p.value << '\n';
+    std::cout << study.found.points.size() << " critical point(s) in the free space of [" << b.xmin << ", " << b.xmax
+              << "] x [" << b.ymin << ", " << b.ymax << "] (" << study.found.candidates << " candidate cells of "
+              << b.cells_per_axis << " x " << b.cells_per_axis << ")\n";
+    for (const CriticalPoint& p : study.found.points)
+      std::cout << "  " << p.kind << " at " << text(p.at) << ", U = " << p.value << '\n';
     if (!o.svg.empty()) std::cout << "picture: " << o.svg << '\n';
   }
   return ok;
@@ -65,17 +66,24 @@ int run_potential(const PotentialOptions& o) {
 
 void add_potential_command(CLI::App& app, Action& run) {
   auto options = std::make_shared<PotentialOptions>();
-  CLI::App* command = app.add_subcommand("potential", "The critical points of the potential-field planner's potential, and its picture");
+  CLI::App* command = app.add_subcommand(
+      "potential", "The critical points of the potential-field planner's potential, and its picture");
   command->add_option("world", options->world, "world file (JSON); its start/goal gives the goal")->required();
   command->add_option("--zeta", options->zeta, "weight of the goal's attraction")->capture_default_str();
-  command->add_option("--d-star", options->d_star, "quadratic attraction within this distance, conic beyond (0: conic everywhere)")
+  command
+      ->add_option("--d-star", options->d_star,
+                   "quadratic attraction within this distance, conic beyond (0: conic everywhere)")
       ->capture_default_str();
   command->add_option("--eta", options->eta, "weight of each obstacle's repulsion")->capture_default_str();
-  command->add_option("--q-star", options->q_star, "an obstacle farther than this does not repel")->capture_default_str();
-  command->add_option("--box", options->box, "the box to search, XMIN,YMIN,XMAX,YMAX (default: the bounds, or the box around the world)");
+  command->add_option("--q-star", options->q_star, "an obstacle farther than this does not repel")
+      ->capture_default_str();
+  command->add_option("--box", options->box,
+                      "the box to search, XMIN,YMIN,XMAX,YMAX (default: the bounds, or the box around the world)");
   command->add_option("--cells", options->cells, "cells per side of the box's subdivision")->capture_default_str();
-  command->add_option("--json", options->json, "write the critical points as JSON to this file ('-' for standard output)");
-  command->add_option("--svg", options->svg, "draw the potential, its contours, the descent arrows and the critical points");
+  command->add_option("--json", options->json,
+                      "write the critical points as JSON to this file ('-' for standard output)");
+  command->add_option("--svg", options->svg,
+                      "draw the potential, its contours, the descent arrows and the critical points");
   command->callback([options, &run] { run = [options] { return run_potential(*options); }; });
 }
 

@@ -22,7 +22,9 @@ class Progress {
     last_ = now;
     const double elapsed = std::chrono::duration<double>(now - started_).count();
     std::fprintf(stderr, "\r%s: %zu/%zu, %.0f s elapsed", what_.c_str(), done, total, elapsed);
-    if (done > 0 && done < total) std::fprintf(stderr, ", about %.0f s left   ", elapsed / static_cast<double>(done) * static_cast<double>(total - done));
+    if (done > 0 && done < total)
+      std::fprintf(stderr, ", about %.0f s left   ",
+                   elapsed / static_cast<double>(done) * static_cast<double>(total - done));
     else std::fprintf(stderr, "%20s", "");
     if (done == total) std::fprintf(stderr, "\n");
   }

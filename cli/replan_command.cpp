@@ -71,7 +71,8 @@ nlohmann::json result_json(const ReplanResult& r, double sensor) {
                      {"steps", steps}};
   if (r.status == PlanStatus::no_path)
     out["why_not"] = "the goal is unreachable on what the robot knows after " + std::to_string(r.moves) + " moves";
-  if (r.status == PlanStatus::limit) out["why_not"] = "the robot made its limit of " + std::to_string(r.moves) + " moves";
+  if (r.status == PlanStatus::limit)
+    out["why_not"] = "the robot made its limit of " + std::to_string(r.moves) + " moves";
   return out;
 }
 
@@ -114,8 +115,8 @@ class BothTraces : public ReplanTrace {
   ReplanTrace *a_, *b_;
 };
 
-// --rhs-trace: the course's planning problem set's g/rhs tables as JSON lines (one per replan's start, one per pass) or as
-// the seed's tables.
+// --rhs-trace: the course's planning problem set's g/rhs tables as JSON lines (one per replan's start, one per pass) or
+// as the seed's tables.
 class TraceWriter : public ReplanTrace {
  public:
   TraceWriter(std::ostream& out, bool tables) : out_(&out), tables_(tables) {}
@@ -130,10 +131,14 @@ class TraceWriter : public ReplanTrace {
     if (tables_) return print(p);
     nlohmann::json updated = nlohmann::json::array(), open = nlohmann::json::array();
     for (const auto& u : p.updated)
-      updated.push_back({{"cell", point_json(u.at)}, {"g", cost_json(u.g)}, {"rhs", cost_json(u.rhs)}, {"list", u.action}});
+      updated.push_back(
+          {{"cell", point_json(u.at)}, {"g", cost_json(u.g)}, {"rhs", cost_json(u.rhs)}, {"list", u.action}});
     for (const auto& e : p.open)
-      open.push_back({{"cell", point_json(e.at)}, {"g", cost_json(e.g)}, {"rhs", cost_json(e.rhs)},
-                      {"key", {cost_json(e.key_first), cost_json(e.key_second)}}, {"state", e.state}});
+      open.push_back({{"cell", point_json(e.at)},
+                      {"g", cost_json(e.g)},
+                      {"rhs", cost_json(e.rhs)},
+                      {"key", {cost_json(e.key_first), cost_json(e.key_second)}},
+                      {"state", e.state}});
     *out_ << nlohmann::json{{"replan", p.replan},
                             {"pass", p.pass},
                             {"popped", point_json(p.popped)},
@@ -165,7 +170,8 @@ class TraceWriter : public ReplanTrace {
   void row(const std::vector<std::string>& cells) {
     static constexpr std::size_t widths[] = {10, 9, 9, 20, 6};
     *out_ << "    ";
-    for (std::size_t i = 0; i < cells.size(); ++i) *out_ << (i + 1 < cells.size() ? pad(cells[i], widths[i]) : cells[i]);
+    for (std::size_t i = 0; i < cells.size(); ++i)
+      *out_ << (i + 1 < cells.size() ? pad(cells[i], widths[i]) : cells[i]);
     *out_ << '\n';
   }
   void print(const ReplanTracePass& p) {
@@ -180,7 +186,8 @@ class TraceWriter : public ReplanTrace {
     *out_ << "    open list:\n";
     row({"cell", "g", "rhs", "key", "state"});
     for (const auto& e : p.open)
-      row({cell(e.at), number(e.g), number(e.rhs), "[" + number(e.key_first) + "; " + number(e.key_second) + "]", e.state});
+      row({cell(e.at), number(e.g), number(e.rhs), "[" + number(e.key_first) + "; " + number(e.key_second) + "]",
+           e.state});
   }
 
   std::ostream* out_;
@@ -210,7 +217,7 @@ int run_replan(const ReplanCommandOptions& o) {
   if (!o.trace.empty()) expansions = std::make_unique<ExpansionTraceWriter>(o.trace);
   std::unique_ptr<BothTraces> both;
   if (tables && expansions) both = std::make_unique<BothTraces>(*tables, *expansions);
-  options.trace = both ? static_cast<ReplanTrace*>(both.get())
+  options.trace = both     ? static_cast<ReplanTrace*>(both.get())
                   : tables ? static_cast<ReplanTrace*>(tables.get())
                            : static_cast<ReplanTrace*>(expansions.get());
   const ReplanResult r = drive_through_unknown_map(std::move(map), start, goal, options);
@@ -218,11 +225,13 @@ int run_replan(const ReplanCommandOptions& o) {
   if (expansions) expansions->finish();
 
   if (!o.json.empty()) write_json(result_json(r, o.sensor), o.json);
-  if (!o.svg.empty()) (o.animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).write(o.svg);
+  if (!o.svg.empty())
+    (o.animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).write(o.svg);
   if (o.json != "-" && o.trace != "-" && o.rhs_trace != "-") {
     std::printf("%s: %s after %zu moves, cost %s (%.6g), %zu replans, %zu expanded, %.3g ms replanning\n",
-                o.algorithm.c_str(), std::string(to_string(r.status)).c_str(), r.moves, r.traversed_cost.to_string().c_str(),
-                r.traversed_cost.to_double(), r.replans, r.expanded, r.seconds * 1e3);
+                o.algorithm.c_str(), std::string(to_string(r.status)).c_str(), r.moves,
+                r.traversed_cost.to_string().c_str(), r.traversed_cost.to_double(), r.replans, r.expanded,
+                r.seconds * 1e3);
   }
   return ok;
 }
@@ -231,21 +240,26 @@ int run_replan(const ReplanCommandOptions& o) {
 
 void add_replan_command(CLI::App& app, Action& run) {
   auto options = std::make_shared<ReplanCommandOptions>();
-  CLI::App* command = app.add_subcommand("replan", "Drive a robot through a MovingAI map it discovers as it goes, replanning");
+  CLI::App* command =
+      app.add_subcommand("replan", "Drive a robot through a MovingAI map it discovers as it goes, replanning");
   command->add_option("map", options->map, "MovingAI map (.map)")->required();
   command->add_option("--start", options->start, "Start cell X,Y (column, row)")->required();
   command->add_option("--goal", options->goal, "Goal cell X,Y (column, row)")->required();
   command->add_option("--sensor", options->sensor, "Sensor radius in cells (at least √2)")->capture_default_str();
-  command->add_option("--algorithm", options->algorithm, "dstar-lite, lpastar or astar (from scratch)")->capture_default_str();
+  command->add_option("--algorithm", options->algorithm, "dstar-lite, lpastar or astar (from scratch)")
+      ->capture_default_str();
   command->add_option("--json", options->json, "Write the drive as JSON to this file ('-' for standard output)");
   command->add_option("--svg", options->svg, "Draw the map, what the robot knew and its path (SVG)");
   command->add_flag("--animate", options->animate, "Make the --svg picture an animation, one frame per move");
-  command->add_option("--trace", options->trace,
-                      "Every expansion of every replan as a JSON line {step, vertex, g, h, f, backpointer, open, replan, kind} "
-                      "to this file ('-' for standard output), as search and plan write them. Changed: the course's planning problem set's g/rhs "
-                      "tables, which --trace wrote before, are now --rhs-trace");
+  command->add_option(
+      "--trace", options->trace,
+      "Every expansion of every replan as a JSON line {step, vertex, g, h, f, backpointer, open, replan, kind} "
+      "to this file ('-' for standard output), as search and plan write them. Changed: the course's planning problem "
+      "set's g/rhs "
+      "tables, which --trace wrote before, are now --rhs-trace");
   command->add_option("--rhs-trace", options->rhs_trace,
-                      "The course's planning problem set's g/rhs tables for every pass of every replan: JSON lines to this file, or tables with '-'");
+                      "The course's planning problem set's g/rhs tables for every pass of every replan: JSON lines to "
+                      "this file, or tables with '-'");
   command->callback([options, &run] { run = [options] { return run_replan(*options); }; });
 }
 

@@ -48,9 +48,10 @@ int run_scen(const ScenOptions& options) {
   std::vector<std::optional<double>> reference;
   if (!options.reference.empty()) reference = read_reference_lengths(options.reference, scenarios.size());
   const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  std::fprintf(stderr, "building the corner graph and its distance table or hub labels for %s (%dx%d)...\n", options.map.c_str(),
-               map.width, map.height);
-  const EuclideanShortestPaths paths(map, {.table_bytes = options.table_mb << 20, .label_bytes = options.table_mb << 20, .threads = threads});
+  std::fprintf(stderr, "building the corner graph and its distance table or hub labels for %s (%dx%d)...\n",
+               options.map.c_str(), map.width, map.height);
+  const EuclideanShortestPaths paths(
+      map, {.table_bytes = options.table_mb << 20, .label_bytes = options.table_mb << 20, .threads = threads});
   const double preprocess = seconds_since(started);
 
   const auto batch = Clock::now();
@@ -68,7 +69,10 @@ int run_scen(const ScenOptions& options) {
   for (std::size_t i = 0; i < answers.size(); ++i) {
     const EuclideanPathAnswer& plan = answers[i].answer;
     micros.push_back(answers[i].us);
-    nlohmann::json item{{"index", i}, {"found", plan.found}, {"length", plan.found ? nlohmann::json(plan.length) : nlohmann::json(nullptr)}, {"us", answers[i].us}};
+    nlohmann::json item{{"index", i},
+                        {"found", plan.found},
+                        {"length", plan.found ? nlohmann::json(plan.length) : nlohmann::json(nullptr)},
+                        {"us", answers[i].us}};
     if (i < reference.size() && reference[i]) {
       const double expected = *reference[i];
       item["reference"] = expected;
@@ -109,7 +113,8 @@ int run_scen(const ScenOptions& options) {
   if (options.json != "-") {
     std::printf("%8s %6s %14s %14s %10s\n", "index", "found", "length", "reference", "us");
     for (const auto& item : queries)
-      std::printf("%8zu %6s %14.6f %14s %10.1f%s\n", item["index"].get<std::size_t>(), item["found"].get<bool>() ? "yes" : "no",
+      std::printf("%8zu %6s %14.6f %14s %10.1f%s\n", item["index"].get<std::size_t>(),
+                  item["found"].get<bool>() ? "yes" : "no",
                   item["found"].get<bool>() ? item["length"].get<double>() : -1.0,
                   item.contains("reference") ? std::to_string(item["reference"].get<double>()).c_str() : "-",
                   item["us"].get<double>(), item.contains("mismatch") ? "  MISMATCH" : "");
@@ -127,10 +132,14 @@ void add_scen_command(CLI::App& app, Action& run) {
   command->add_option("scenarios", options->scenarios, "MovingAI scenarios (.scen)")->required();
   command->add_option("--reference", options->reference, "Reference lengths (index,length CSV) to compare with");
   command->add_option("--json", options->json, "Write the results as JSON to this file ('-' for standard output)");
-  command->add_option("--threads", options->threads, "Threads answering the queries, sharing one preprocessing (default: every core)")
+  command
+      ->add_option("--threads", options->threads,
+                   "Threads answering the queries, sharing one preprocessing (default: every core)")
       ->check(CLI::Range(1u, 256u));
-  command->add_option("--table-mb", options->table_mb,
-                      "Largest corner-to-corner distance table, and hub labels, to build, in MB (else queries search the corner graph)")
+  command
+      ->add_option("--table-mb", options->table_mb,
+                   "Largest corner-to-corner distance table, and hub labels, to build, in MB (else queries search the "
+                   "corner graph)")
       ->check(CLI::Range(std::size_t{0}, std::size_t{1} << 20));
   // (the same budget bounds the hub labels built for maps whose table does not fit)
   command->callback([options, &run] { run = [options] { return run_scen(*options); }; });

@@ -1,8 +1,8 @@
 // polyplan search GRAPH.json --start I --goal J [--method astar|dijkstra|bfs|dfs|greedy|wastar]
 // [--weight W] [--json FILE|-] [--trace FILE|-] [--svg OUT.svg [--animate]] [--edge-weights]
-// [--labels] [--backpointers] [--heuristic] [--indices]: a graph search on the course's graph-search homework's graph_vector
-// (io/graph_reader.hpp) with the Euclidean heuristic, to watch: every expansion as a JSON line,
-// the final state or the whole search as a picture.
+// [--labels] [--backpointers] [--heuristic] [--indices]: a graph search on the course's graph-search homework's
+// graph_vector (io/graph_reader.hpp) with the Euclidean heuristic, to watch: every expansion as a JSON line, the final
+// state or the whole search as a picture.
 #include "cli/command.hpp"
 #include "cli/trace_output.hpp"
 
@@ -56,12 +56,13 @@ SearchOptions search_options(const SearchCommandOptions& o) {
   }
   options.record_expanded = true;
   options.record_trace = true;  // the picture's open list, labels and arrows come from it
-  options.ties_first_discovered = true;  // the course's graph-search homework's order: any A* that breaks ties so expands the same vertices
+  options.ties_first_discovered =
+      true;  // the course's graph-search homework's order: any A* that breaks ties so expands the same vertices
   return options;
 }
 
-nlohmann::ordered_json result_json(const SearchResult<DigraphVertexId>& r, const SearchOptions& options, DigraphVertexId start,
-                                   DigraphVertexId goal) {
+nlohmann::ordered_json result_json(const SearchResult<DigraphVertexId>& r, const SearchOptions& options,
+                                   DigraphVertexId start, DigraphVertexId goal) {
   nlohmann::ordered_json out;
   out["found"] = r.found;
   out["method"] = std::string(to_string(r.algorithm));
@@ -81,7 +82,9 @@ nlohmann::ordered_json result_json(const SearchResult<DigraphVertexId>& r, const
 }
 
 // nlohmann::json would sort the keys: written in their order.
-void write_result(const nlohmann::ordered_json& value, const std::string& target) { write_json_text(value.dump(2), target); }
+void write_result(const nlohmann::ordered_json& value, const std::string& target) {
+  write_json_text(value.dump(2), target);
+}
 
 std::string summary_line(const SearchResult<DigraphVertexId>& r) {
   std::string line = std::string(to_string(r.algorithm)) + ": ";
@@ -99,7 +102,8 @@ std::string summary_line(const SearchResult<DigraphVertexId>& r) {
 
 int run_search(const SearchCommandOptions& o) {
   if (o.animate && o.svg.empty()) throw InputError("--animate: give --svg OUT.svg for the animation");
-  if (o.json == "-" && o.trace == "-") throw InputError("--json - and --trace -: only one of them can go to standard output");
+  if (o.json == "-" && o.trace == "-")
+    throw InputError("--json - and --trace -: only one of them can go to standard output");
   const SearchOptions options = search_options(o);
   std::vector<std::string> warnings;
   const GraphFile file = read_graph(o.graph, &warnings);
@@ -131,12 +135,17 @@ int run_search(const SearchCommandOptions& o) {
 
 void add_search_command(CLI::App& app, Action& run) {
   auto o = std::make_shared<SearchCommandOptions>();
-  CLI::App* command = app.add_subcommand("search", "Search a graph given as the course's graph-search homework's vertex list, and watch the search");
-  command->add_option("graph", o->graph, "Graph file (JSON): [{\"x\": [x, y], \"neighbors\": [...], \"neighbors_cost\": [...]}, ...]")
+  CLI::App* command = app.add_subcommand(
+      "search", "Search a graph given as the course's graph-search homework's vertex list, and watch the search");
+  command
+      ->add_option("graph", o->graph,
+                   "Graph file (JSON): [{\"x\": [x, y], \"neighbors\": [...], \"neighbors_cost\": [...]}, ...]")
       ->required();
   command->add_option("--start", o->start, "Start vertex (0-based index)")->required();
   command->add_option("--goal", o->goal, "Goal vertex (0-based index)")->required();
-  command->add_option("--method", o->method, "astar, dijkstra, bfs, dfs, greedy or wastar (h: Euclidean distance to the goal)")
+  command
+      ->add_option("--method", o->method,
+                   "astar, dijkstra, bfs, dfs, greedy or wastar (h: Euclidean distance to the goal)")
       ->capture_default_str();
   command->add_option("--weight", o->weight, "wastar's weight w in f = g + w h (finite, >= 1)")->capture_default_str();
   command->add_option("--json", o->json,
@@ -148,8 +157,10 @@ void add_search_command(CLI::App& app, Action& run) {
   command->add_option("--svg", o->svg, "Draw the graph, the expanded vertices, the open list and the path (SVG)");
   command->add_flag("--animate", o->animate, "Make the --svg picture an animation, one step per expansion");
   command->add_flag("--edge-weights", o->picture.edge_weights, "Picture: each edge's cost (off by default)");
-  command->add_flag("--labels", o->picture.labels, "Picture: g, h and f beside each vertex the search reached (off by default)");
-  command->add_flag("--backpointers", o->picture.backpointers, "Picture: an arrow from each such vertex to its backpointer (off by default)");
+  command->add_flag("--labels", o->picture.labels,
+                    "Picture: g, h and f beside each vertex the search reached (off by default)");
+  command->add_flag("--backpointers", o->picture.backpointers,
+                    "Picture: an arrow from each such vertex to its backpointer (off by default)");
   command->add_flag("--heuristic", o->picture.heuristic, "Picture: h below every vertex (off by default)");
   command->add_flag("--indices", o->picture.indices, "Picture: each vertex's index (off by default)");
   command->callback([o, &run] { run = [o] { return run_search(*o); }; });

@@ -25,7 +25,8 @@ struct SteerOptions {
 // "X,Y,THETA" with theta in degrees.
 CarPose pose_option(const std::string& text, const char* option) {
   const std::vector<double> values = comma_numbers(text, std::string(option));
-  if (values.size() != 3) throw InputError(std::string(option) + " " + text + ": expected X,Y,THETA (theta in degrees)");
+  if (values.size() != 3)
+    throw InputError(std::string(option) + " " + text + ": expected X,Y,THETA (theta in degrees)");
   return {values[0], values[1], values[2] * M_PI / 180};
 }
 
@@ -53,14 +54,16 @@ int run_steer(const SteerOptions& o) {
 
 void add_steer_command(CLI::App& app, Action& run) {
   auto options = std::make_shared<SteerOptions>();
-  CLI::App* command = app.add_subcommand("steer", "The shortest Dubins or Reeds-Shepp curve between two poses of a car");
+  CLI::App* command =
+      app.add_subcommand("steer", "The shortest Dubins or Reeds-Shepp curve between two poses of a car");
   command->add_option("--model", options->model, "dubins (forward only) or reeds-shepp (may reverse)")
       ->check(CLI::IsMember({"dubins", "reeds-shepp"}))
       ->capture_default_str();
   command->add_option("--radius", options->radius, "turning radius")->capture_default_str();
   command->add_option("--from", options->from, "start pose X,Y,THETA (theta in degrees)")->required();
   command->add_option("--to", options->to, "goal pose X,Y,THETA (theta in degrees)")->required();
-  command->add_option("--json", options->json, "write {length, word, segments} as JSON to this file ('-' for standard output)");
+  command->add_option("--json", options->json,
+                      "write {length, word, segments} as JSON to this file ('-' for standard output)");
   command->add_option("--svg", options->svg, "draw the curve, its turning circles and the two poses");
   command->callback([options, &run] { run = [options] { return run_steer(*options); }; });
 }

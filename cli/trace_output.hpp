@@ -15,14 +15,15 @@
 
 namespace polyplan::cli {
 
-nlohmann::ordered_json expansion_line(std::size_t step, nlohmann::ordered_json vertex, double g, double h, double f, nlohmann::ordered_json backpointer,
-                              std::size_t open);
+nlohmann::ordered_json expansion_line(std::size_t step, nlohmann::ordered_json vertex, double g, double h, double f,
+                                      nlohmann::ordered_json backpointer, std::size_t open);
 
 // The search's ExpansionRecord with vertices as indices.
 template <class Record>
 nlohmann::ordered_json expansion_line(const Record& e) {
   return expansion_line(e.step, e.vertex, e.g, e.h, e.f,
-                        e.backpointer ? nlohmann::ordered_json(*e.backpointer) : nlohmann::ordered_json(nullptr), e.open);
+                        e.backpointer ? nlohmann::ordered_json(*e.backpointer) : nlohmann::ordered_json(nullptr),
+                        e.open);
 }
 
 // Where trace lines go: a file, or standard output for "-". Throws InputError naming the file when

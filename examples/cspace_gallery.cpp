@@ -59,8 +59,7 @@ int main(int argc, char** argv) {
       const fs::path picture = out / (name + ".svg");
       polyplan::write_cspace_svg(cspace, picture.string());
       std::printf("%-24s %7zu %12zu %16zu %9.3f  -> %s\n", name.c_str(), cspace.solids().size(),
-                  cspace.cobstacles().size(), cspace.free_components().size(), seconds,
-                  picture.string().c_str());
+                  cspace.cobstacles().size(), cspace.free_components().size(), seconds, picture.string().c_str());
     } catch (const polyplan::InputError& e) {
       std::fflush(stdout);
       std::cerr << e.what() << '\n';

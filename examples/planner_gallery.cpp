@@ -47,8 +47,8 @@ int main(int argc, char** argv) {
     cspace.require_free_queries();
     fs::create_directories(out);
     const Query& query = world.queries.front();
-    std::printf("%s, %s:\n\n%-16s %-6s %10s %8s %10s %10s %10s\n", world_file.c_str(), query.name.c_str(), "planner", "found",
-                "length", "ratio", "expanded", "vertices", "seconds");
+    std::printf("%s, %s:\n\n%-16s %-6s %10s %8s %10s %10s %10s\n", world_file.c_str(), query.name.c_str(), "planner",
+                "found", "length", "ratio", "expanded", "vertices", "seconds");
     std::optional<double> shortest;
     for (const PlannerEntry<TranslatingRobot>& entry : planners<TranslatingRobot>().entries()) {
       const Stopwatch planning;
@@ -62,8 +62,7 @@ int main(int argc, char** argv) {
         std::printf("%-16s %-6s %10.4f %8.4f %10s %10s %10.4f  -> %s\n", entry.name.c_str(), "yes", report.length,
                     report.length / *shortest, count_or_dash(report.facts, SearchFacts::expanded).c_str(),
                     count_or_dash(report.facts, RoadmapFacts::vertices).c_str(), seconds, picture.string().c_str());
-      else
-        std::printf("%-16s %-6s %s\n", entry.name.c_str(), "no", report.why_not.c_str());
+      else std::printf("%-16s %-6s %s\n", entry.name.c_str(), "no", report.why_not.c_str());
     }
   } catch (const InputError& e) {
     std::cerr << "error: " << e.what() << '\n';

@@ -8,12 +8,12 @@
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/io/world_reader.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
-#include <polyplan/grids/grid_facts.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <cstdio>
 #include <exception>
@@ -66,8 +66,10 @@ int main(int argc, char** argv) {
       const double seconds = rasterising.seconds();
       const Raster& raster = planner.raster();
       const std::size_t blocked = raster.blocked_count();
-      std::printf("n = %zu: %zu blocked cells, %zu free cells, rasterised in %.4f s\n", n, blocked, n * n - blocked, seconds);
-      std::printf("  %-11s %-6s %-18s %9s %9s %7s %9s\n", "query", "found", "cells", "length", "optimum", "ratio", "expanded");
+      std::printf("n = %zu: %zu blocked cells, %zu free cells, rasterised in %.4f s\n", n, blocked, n * n - blocked,
+                  seconds);
+      std::printf("  %-11s %-6s %-18s %9s %9s %7s %9s\n", "query", "found", "cells", "length", "optimum", "ratio",
+                  "expanded");
 
       std::vector<PlanReport<ExactPoint>> reports;
       std::vector<std::string> labels;
@@ -75,9 +77,10 @@ int main(int argc, char** argv) {
         const Query& q = world.queries[i];
         PlanReport<ExactPoint> plan = planner.plan(q, QueryOptions{true});
         plan.expanded.clear();  // ten searches' expansions would hide the cells
-        const std::string cells = plan.facts.contains(RasterFacts::start_cell)
-                                      ? plan.facts.at(RasterFacts::start_cell) + ">" + plan.facts.at(RasterFacts::goal_cell)
-                                      : "-";
+        const std::string cells =
+            plan.facts.contains(RasterFacts::start_cell)
+                ? plan.facts.at(RasterFacts::start_cell) + ">" + plan.facts.at(RasterFacts::goal_cell)
+                : "-";
         if (!plan.found) {
           std::printf("  %-11s %-6s %-18s %s\n", q.name.c_str(), "no", cells.c_str(), plan.why_not.c_str());
         } else {
@@ -85,12 +88,14 @@ int main(int argc, char** argv) {
                       optimum[i], optimum[i] > 0 ? plan.length / optimum[i] : 0.0,
                       static_cast<long long>(plan.facts.at(SearchFacts::expanded)));
         }
-        labels.push_back("q" + std::to_string(i) + (plan.found ? " " + std::to_string(plan.length).substr(0, 6) : " refused"));
+        labels.push_back("q" + std::to_string(i) +
+                         (plan.found ? " " + std::to_string(plan.length).substr(0, 6) : " refused"));
         reports.push_back(std::move(plan));
       }
       svg::Drawing drawing = draw_plan(cspace, reports, labels);
       drawing.text({to_double(raster.bounds.xmin), to_double(raster.bounds.ymax) + 0.15},
-                   std::to_string(n) + " x " + std::to_string(n) + " cells: " + std::to_string(blocked) + " blocked", 14);
+                   std::to_string(n) + " x " + std::to_string(n) + " cells: " + std::to_string(blocked) + " blocked",
+                   14);
       const std::string picture = prefix + "_n" + std::to_string(n) + ".svg";
       drawing.write(picture);
       std::printf("  picture: %s\n\n", picture.c_str());

@@ -3,15 +3,15 @@
 // the channel's shortest path, the Voronoi maximum-clearance roadmap and the brushfire GVD on a
 // grid. For each world's first query: path length, ratio to the optimum, clearance (the path's
 // smallest distance to the C-obstacles and walls, geometry/clearance.hpp), build and query time,
-// roadmap nodes and edges; and one picture per world and roadmap. A roadmap that is not registered (yet) is listed as such.
-// Usage: roadmap_comparison [WORLD.json ...] [--out DIR]   (default: every world of data/worlds)
+// roadmap nodes and edges; and one picture per world and roadmap. A roadmap that is not registered (yet) is listed as
+// such. Usage: roadmap_comparison [WORLD.json ...] [--out DIR]   (default: every world of data/worlds)
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/registry/registry.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <algorithm>
 #include <cstdio>

@@ -1,5 +1,5 @@
-// The course's C-space and visibility-graph problem set's Part 2 with certified turns: a rotating robot planned over layers of orientations at
-// several steps, against the same robot that may not turn. A table on stdout (layers, turn
+// The course's C-space and visibility-graph problem set's Part 2 with certified turns: a rotating robot planned over
+// layers of orientations at several steps, against the same robot that may not turn. A table on stdout (layers, turn
 // layers, found, length, degrees turned, motions, build and query times) and a strobe picture per
 // step.
 // Usage: rotation_steps [WORLD.json] [OUT_PREFIX] [STEP...]
@@ -7,10 +7,10 @@
 #include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/plan/stopwatch.hpp>
-#include <polyplan/rotation/rotation_planner.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/rotation/rotation_facts.hpp>
+#include <polyplan/rotation/rotation_planner.hpp>
 
 #include <cstdio>
 #include <exception>
@@ -61,8 +61,8 @@ int main(int argc, char** argv) {
       const PlanReport<Pose> report = planner.plan(query);
       std::printf("%5g° %7zu %11zu %6s %10.3f %8.1f° %8zu %9.2f %9.2f\n", step, planner.layers().layers().size(),
                   planner.layers().turns().size(), report.found ? "yes" : "no", report.found ? report.length : 0.0,
-                  report.facts.at(RotationFacts::rotation), report.path.empty() ? 0 : report.path.size() - 1, build_seconds,
-                  report.facts.at(QueryFacts::seconds) * 1000);
+                  report.facts.at(RotationFacts::rotation), report.path.empty() ? 0 : report.path.size() - 1,
+                  build_seconds, report.facts.at(QueryFacts::seconds) * 1000);
       char name[64];
       std::snprintf(name, sizeof name, "_%g.svg", step);
       draw_plan(world, {report}, {"path, every " + std::to_string(static_cast<int>(step)) + "°"}).write(prefix + name);

@@ -1,13 +1,13 @@
-// The table of the course's C-space and visibility-graph problem set's report: on the the course's C-space and visibility-graph problem set world, every search of a course over one
-// visibility graph — number of path segments, path cost, nodes explored — and all paths in one
-// picture. Usage: search_comparison [WORLD.json] [OUT.svg]
+// The table of the course's C-space and visibility-graph problem set's report: on the the course's C-space and
+// visibility-graph problem set world, every search of a course over one visibility graph — number of path segments,
+// path cost, nodes explored — and all paths in one picture. Usage: search_comparison [WORLD.json] [OUT.svg]
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/draw/world_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 
 #include <cstdio>
 #include <iostream>

@@ -4,5 +4,6 @@
 #include <polyplan/io/arm_reader.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return polyplan::fuzz::read_text(data, size, [](const std::string& text) { polyplan::parse_arm_problem(text, "fuzz.json"); });
+  return polyplan::fuzz::read_text(data, size,
+                                   [](const std::string& text) { polyplan::parse_arm_problem(text, "fuzz.json"); });
 }

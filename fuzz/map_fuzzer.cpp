@@ -4,5 +4,7 @@
 #include <polyplan/io/movingai_map.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return polyplan::fuzz::read_text(data, size, [](const std::string& text) { polyplan::world_from_grid(polyplan::parse_movingai_map(text, "fuzz.map")); });
+  return polyplan::fuzz::read_text(data, size, [](const std::string& text) {
+    polyplan::world_from_grid(polyplan::parse_movingai_map(text, "fuzz.map"));
+  });
 }

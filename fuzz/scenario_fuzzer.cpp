@@ -4,5 +4,6 @@
 #include <polyplan/io/movingai_scenario.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return polyplan::fuzz::read_text(data, size, [](const std::string& text) { polyplan::parse_scenarios(text, "fuzz.scen"); });
+  return polyplan::fuzz::read_text(data, size,
+                                   [](const std::string& text) { polyplan::parse_scenarios(text, "fuzz.scen"); });
 }

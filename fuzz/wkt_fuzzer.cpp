@@ -4,5 +4,6 @@
 #include <polyplan/io/wkt_reader.hpp>
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return polyplan::fuzz::read_text(data, size, [](const std::string& text) { polyplan::parse_wkt_obstacles(text, "fuzz.wkt: "); });
+  return polyplan::fuzz::read_text(data, size,
+                                   [](const std::string& text) { polyplan::parse_wkt_obstacles(text, "fuzz.wkt: "); });
 }

@@ -10,6 +10,7 @@ packages=(
   libnanoflann-dev                        # nearest neighbours
   libgtest-dev libbenchmark-dev           # tests and benchmarks
   clang libclang-rt-14-dev                # libFuzzer, for the readers' fuzz targets
+  clang-format                            # the style check (scripts/check_format.sh, .clang-format)
   librsvg2-bin                            # rsvg-convert: look at the SVGs as PNGs
   python3 python3-dev python3-pybind11 pybind11-dev   # the Python module
   python3-numpy python3-matplotlib python3-pytest     # its arrays, plots and tests

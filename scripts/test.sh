@@ -32,6 +32,8 @@ step() {  # step NAME COMMAND...: runs the command and keeps its time for the su
 }
 
 step setup scripts/setup.sh
+# The style first: it takes seconds, and a file clang-format would change fails the run.
+step format scripts/check_format.sh
 if [ "$sanitize" = 1 ]; then
   # The sanitized build below builds and runs every C++ test; the Release tree builds and runs only
   # what that one does not: the program, the Python module and the examples, and their tests

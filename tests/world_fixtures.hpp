@@ -25,9 +25,7 @@ namespace polyplan::test {
 
 inline World world_from(const std::string& json) { return parse_world(json, "test.json"); }
 
-inline ExactPoint pt(const std::string& x, const std::string& y) {
-  return {*parse_rational(x), *parse_rational(y)};
-}
+inline ExactPoint pt(const std::string& x, const std::string& y) { return {*parse_rational(x), *parse_rational(y)}; }
 
 // A ring rotated to start at its lexicographically smallest vertex, so that two descriptions of
 // the same cycle compare equal.
@@ -57,7 +55,9 @@ inline Rational area(const PolygonWithHoles& polygon) {
 }
 
 // A shipped data file: data/<relative>.
-inline std::string data_file(const std::string& relative) { return std::string(POLYPLAN_SOURCE_DIR) + "/data/" + relative; }
+inline std::string data_file(const std::string& relative) {
+  return std::string(POLYPLAN_SOURCE_DIR) + "/data/" + relative;
+}
 
 // The path of `name` in this test program's own scratch folder under GoogleTest's temporary
 // directory (the process id keeps concurrent runs apart; the folder goes when the program ends).

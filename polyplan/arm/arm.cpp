@@ -19,7 +19,8 @@ void joint_positions_into(const Arm& arm, const JointAngles& angles, std::vector
   // Relative angles: link k points along the sum of the first k+1 angles.
   double heading = 0;
   for (std::size_t k = 0; k < n; ++k) {
-    if (!std::isfinite(angles[k])) throw std::invalid_argument("joint_positions: angle " + std::to_string(k) + " is not finite");
+    if (!std::isfinite(angles[k]))
+      throw std::invalid_argument("joint_positions: angle " + std::to_string(k) + " is not finite");
     heading += angles[k];
     const Eigen::Vector2d direction(std::cos(heading), std::sin(heading));
     out[k + 1] = out[k] + arm.links[k] * direction;
@@ -58,7 +59,8 @@ std::size_t link_outline_into(const Arm& arm, const std::vector<Eigen::Vector2d>
   return 4;
 }
 
-std::vector<Eigen::Vector2d> link_outline(const Arm& arm, const std::vector<Eigen::Vector2d>& joints, std::size_t link) {
+std::vector<Eigen::Vector2d> link_outline(const Arm& arm, const std::vector<Eigen::Vector2d>& joints,
+                                          std::size_t link) {
   std::array<Eigen::Vector2d, 4> corners;
   const std::size_t n = link_outline_into(arm, joints, link, corners);
   return {corners.begin(), corners.begin() + static_cast<std::ptrdiff_t>(n)};

@@ -130,8 +130,7 @@ bool strictly_convex(const std::array<Point, 4>& v) {
 
 bool contains(const Convex& s, const Point& p) {
   switch (s.n) {
-    case 1:
-      return s.v[0] == p;
+    case 1: return s.v[0] == p;
     case 2:
       return CGAL::orientation(s.v[0], s.v[1], p) == CGAL::COLLINEAR &&
              CGAL::collinear_are_ordered_along_line(s.v[0], p, s.v[1]);
@@ -201,7 +200,8 @@ double squared_point_segment_distance(const Point& p, const Point& a, const Poin
 double squared_distance_to_boundary(const Point& p, const Convex& s) {
   if (s.n == 1) return squared_point_segment_distance(p, s.v[0], s.v[0]);
   double best = infinity;
-  for (int i = 0; i < edge_count(s); ++i) best = std::min(best, squared_point_segment_distance(p, s.v[i], s.v[(i + 1) % s.n]));
+  for (int i = 0; i < edge_count(s); ++i)
+    best = std::min(best, squared_point_segment_distance(p, s.v[i], s.v[(i + 1) % s.n]));
   return best;
 }
 double distance_apart(const Convex& a, const Convex& b) {
@@ -297,7 +297,7 @@ struct ArmCollisionChecker::Impl {
   Arm arm;
   std::vector<Obstacle> obstacles;  // only those the arm can reach
   std::vector<PointObstacle> points;
-  Box everything;  // of the kept obstacles and points
+  Box everything;                  // of the kept obstacles and points
   double everything_rounding = 0;  // the largest rounding of the kept obstacles
   // Scratch for one check, kept to avoid allocating per call.
   mutable std::vector<Eigen::Vector2d> joints, directions;
@@ -319,7 +319,7 @@ struct ArmCollisionChecker::Impl {
   };
   mutable std::vector<Measured> measured;
   mutable std::vector<std::size_t> candidate_begin;  // [k]: link k's first candidate
-  mutable std::vector<double> nearest;  // [k]: the smaller of reach[k] and every candidate's upper bound
+  mutable std::vector<double> nearest;               // [k]: the smaller of reach[k] and every candidate's upper bound
   mutable std::vector<bool> link_hit, pair_hit;
   mutable ArmClearances split;
   mutable std::size_t checks = 0;
@@ -328,7 +328,8 @@ struct ArmCollisionChecker::Impl {
       : arm(a), true_arm(arm) {
     if (arm.links.empty()) throw std::invalid_argument("ArmCollisionChecker: the arm has no links");
     for (double l : arm.links)
-      if (!(l > 0) || !std::isfinite(l)) throw std::invalid_argument("ArmCollisionChecker: a link length is not positive and finite");
+      if (!(l > 0) || !std::isfinite(l))
+        throw std::invalid_argument("ArmCollisionChecker: a link length is not positive and finite");
     if (!(arm.link_width >= 0) || !std::isfinite(arm.link_width))
       throw std::invalid_argument("ArmCollisionChecker: the link width is negative or not finite");
     const double reach = arm.reach();
@@ -343,7 +344,8 @@ struct ArmCollisionChecker::Impl {
 
     for (std::size_t i = 0; i < polygons.size(); ++i) {
       const PolygonWithHoles& polygon = polygons[i];
-      if (polygon.outer.size() < 3) throw std::invalid_argument("ArmCollisionChecker: an obstacle has fewer than 3 vertices");
+      if (polygon.outer.size() < 3)
+        throw std::invalid_argument("ArmCollisionChecker: an obstacle has fewer than 3 vertices");
       Obstacle o;
       o.index = i;
       o.outer = to_points(polygon.outer);
@@ -361,7 +363,8 @@ struct ArmCollisionChecker::Impl {
     }
     for (std::size_t i = 0; i < point_list.size(); ++i) {
       const Eigen::Vector2d& p = point_list[i];
-      if (!std::isfinite(p.x()) || !std::isfinite(p.y())) throw std::invalid_argument("ArmCollisionChecker: a point is not finite");
+      if (!std::isfinite(p.x()) || !std::isfinite(p.y()))
+        throw std::invalid_argument("ArmCollisionChecker: a point is not finite");
       const Point q(p.x(), p.y());
       if (!reachable.contains(q)) continue;
       PointObstacle kept{q, i, {}};
@@ -418,8 +421,7 @@ struct ArmCollisionChecker::Impl {
       std::array<Eigen::Vector2d, 4> corners;
       if (link.n == 4)
         for (int i = 0; i < 4; ++i) corners[static_cast<std::size_t>(i)] = {link.v[i].x(), link.v[i].y()};
-      else
-        corners[0] = joints[k], corners[1] = joints[k + 1];
+      else corners[0] = joints[k], corners[1] = joints[k + 1];
       link_radius[k] = true_arm.link_radius(k, std::span(corners.data(), link.n == 4 ? 4 : 2));
     }
   }
@@ -478,7 +480,8 @@ struct ArmCollisionChecker::Impl {
       within = link_speed.empty() ? enough : detail::covered_above(link_speed[k], step);
       Box near = grown(link.box, above(above(within + r) + everything_rounding));
       // A candidate's fast clearance: lower and upper bounds of some true clearance.
-      const auto candidate = [&](double fast, double radius, const Box& box, const Convex* edge, const PointObstacle* point) {
+      const auto candidate = [&](double fast, double radius, const Box& box, const Convex* edge,
+                                 const PointObstacle* point) {
         const double error = above(0x1p-20 * largest_coordinate(link.box, box));
         measured.push_back({below(below(fast - radius) - error), edge, point, radius, error});
         const double upper = above(above(fast - radius) + error);
@@ -497,7 +500,8 @@ struct ArmCollisionChecker::Impl {
         }
       for (const PointObstacle& p : points) {
         if (link_hit[k] || !near.contains(p.p)) continue;
-        if (link.box.contains(p.p) && contains(link, p.p)) met({k, ArmContact::With::point, p.index}), link_hit[k] = true;
+        if (link.box.contains(p.p) && contains(link, p.p))
+          met({k, ArmContact::With::point, p.index}), link_hit[k] = true;
         else candidate(std::sqrt(squared_distance_to_boundary(p.p, link)), r, p.box, nullptr, &p);
       }
       if (link_hit[k]) measured.resize(candidate_begin.back());
@@ -532,7 +536,8 @@ struct ArmCollisionChecker::Impl {
         best = std::min(best, m.fast_below);
         continue;
       }
-      const double d = m.edge ? distance_apart_below(link, *m.edge) : root_below(squared_distance_to_boundary_below(m.point->p, link));
+      const double d = m.edge ? distance_apart_below(link, *m.edge)
+                              : root_below(squared_distance_to_boundary_below(m.point->p, link));
       best = std::min(best, clearance_below(d, m.radius));
     }
     return best;
@@ -562,7 +567,8 @@ struct ArmCollisionChecker::Impl {
     for (std::size_t k = 0; k < n; ++k) {
       out.links[k] = obstacle_clearance(k, enough, use);
       if (arm.self_collision)
-        for (std::size_t m = k + 2; m < n; ++m) out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, enough);
+        for (std::size_t m = k + 2; m < n; ++m)
+          out.pairs[k * n + m] = out.pairs[m * n + k] = pair_clearance(k, m, enough);
     }
   }
 
@@ -570,13 +576,15 @@ struct ArmCollisionChecker::Impl {
                         double horizon, std::span<const double> spread) const {
     const std::size_t n = arm.joints();
     if (link_speed.size() != n || pair_speed.size() != (arm.self_collision ? n * n : 0))
-      throw std::invalid_argument("ArmCollisionChecker::safe_step: " + std::to_string(link_speed.size()) + " link speeds and " +
-                                  std::to_string(pair_speed.size()) + " pair speeds for an arm of " + std::to_string(n) +
-                                  " links" + (arm.self_collision ? " with" : " without") + " self-collision");
+      throw std::invalid_argument("ArmCollisionChecker::safe_step: " + std::to_string(link_speed.size()) +
+                                  " link speeds and " + std::to_string(pair_speed.size()) +
+                                  " pair speeds for an arm of " + std::to_string(n) + " links" +
+                                  (arm.self_collision ? " with" : " without") + " self-collision");
     const auto valid = [](double x) { return x >= 0 && std::isfinite(x); };
     if (!(horizon >= 0) || !std::all_of(link_speed.begin(), link_speed.end(), valid) ||
         !std::all_of(pair_speed.begin(), pair_speed.end(), valid))
-      throw std::invalid_argument("ArmCollisionChecker::safe_step: speeds must be finite and not negative, the horizon not negative");
+      throw std::invalid_argument(
+          "ArmCollisionChecker::safe_step: speeds must be finite and not negative, the horizon not negative");
     place_enclosed(q, spread);
     using detail::covered_above;
     using detail::lasts_below;
@@ -587,7 +595,9 @@ struct ArmCollisionChecker::Impl {
     double step = horizon;
     const RoundingUpward upward;  // covered_above and lasts_below bound in any rounding
     for (std::size_t k = 0; k < n; ++k) {
-      step = std::min(step, lasts_below(obstacle_clearance(k, covered_above(link_speed[k], step), ClearanceUse::stepping), link_speed[k]));
+      step =
+          std::min(step, lasts_below(obstacle_clearance(k, covered_above(link_speed[k], step), ClearanceUse::stepping),
+                                     link_speed[k]));
       if (arm.self_collision)
         for (std::size_t m = k + 2; m < n; ++m) {
           const double v = pair_speed[k * n + m];
@@ -612,7 +622,9 @@ ArmCollisionChecker& ArmCollisionChecker::operator=(ArmCollisionChecker&&) noexc
 
 const Arm& ArmCollisionChecker::arm() const { return impl_->arm; }
 bool ArmCollisionChecker::is_free(const JointAngles& angles) const { return !impl_->contact(angles); }
-std::optional<ArmContact> ArmCollisionChecker::first_contact(const JointAngles& angles) const { return impl_->contact(angles); }
+std::optional<ArmContact> ArmCollisionChecker::first_contact(const JointAngles& angles) const {
+  return impl_->contact(angles);
+}
 
 void ArmCollisionChecker::clearances(const JointAngles& q, ArmClearances& out, double enough, ClearanceUse use) const {
   impl_->clearances(q, out, enough, use);
@@ -629,7 +641,8 @@ void ArmCollisionChecker::clearances(const JointAngles& q, std::vector<double>& 
 }
 
 ArmSafeStep ArmCollisionChecker::safe_step(const JointAngles& q, std::span<const double> link_speed,
-                                           std::span<const double> pair_speed, double horizon, std::span<const double> spread) const {
+                                           std::span<const double> pair_speed, double horizon,
+                                           std::span<const double> spread) const {
   return impl_->safe_step(q, link_speed, pair_speed, horizon, spread);
 }
 

@@ -83,7 +83,8 @@ class ArmCollisionChecker {
   // length, a negative or non-finite width, an obstacle with fewer than 3 vertices, or a
   // non-finite point. (The arm reader already guarantees all of that.)
   explicit ArmCollisionChecker(const ArmProblem&);
-  ArmCollisionChecker(const Arm&, const std::vector<PolygonWithHoles>& obstacles, const std::vector<Eigen::Vector2d>& points);
+  ArmCollisionChecker(const Arm&, const std::vector<PolygonWithHoles>& obstacles,
+                      const std::vector<Eigen::Vector2d>& points);
   ~ArmCollisionChecker();
   // Movable, not copyable; a moved-from checker may only be destroyed or assigned to.
   ArmCollisionChecker(ArmCollisionChecker&&) noexcept;
@@ -98,8 +99,8 @@ class ArmCollisionChecker {
   std::optional<ArmContact> first_contact(const JointAngles&) const;
 
   // Lower bounds of each true link's distance to what it may collide with (0 when it touches or
-  // meets something, or may come within the rounding of it), for the configuration q; out[k] for links[k] (resized to the link count): the
-  // minimum over the obstacle polygons, the points and, with self-collision, the links it shares
+  // meets something, or may come within the rounding of it), for the configuration q; out[k] for links[k] (resized to
+  // the link count): the minimum over the obstacle polygons, the points and, with self-collision, the links it shares
   // no joint with. +infinity when nothing is within reach. Throws like is_free.
   void clearances(const JointAngles& q, std::vector<double>& out) const;
   // The same split into obstacle and link-pair clearances, with the first contact. A clearance of

@@ -3,8 +3,8 @@
 #include <polyplan/arm/arm.hpp>
 #include <polyplan/arm/inverse_kinematics.hpp>
 #include <polyplan/geometry/angles.hpp>
-#include <polyplan/plan/planner_options.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/planner_options.hpp>
 
 #include <algorithm>
 #include <stdexcept>
@@ -45,11 +45,12 @@ std::string why_none(const WorkspaceGoal& goal, const IkAnswer& answer, std::siz
   const std::string within = goal_text(goal) + " is within the arm's reach, but ";
   if (!answer.found) return within + "inverse kinematics found no configuration there (" + answer.why_not + ")";
   const std::size_t tried = answer.solutions.size() + answer.outside_limits;
-  std::string why = within + "none of the " + std::to_string(tried) + " inverse-kinematics solution(s) found is a goal: " +
-                    std::to_string(colliding) + " collide";
+  std::string why = within + "none of the " + std::to_string(tried) +
+                    " inverse-kinematics solution(s) found is a goal: " + std::to_string(colliding) + " collide";
   if (answer.outside_limits > 0) why += ", " + std::to_string(answer.outside_limits) + " lie outside the joint limits";
   if (inaccurate > 0) why += ", " + std::to_string(inaccurate) + " miss the point by more than 1e-9";
-  return why + (answer.every_solution ? " (every solution there is)" : "; a free configuration the seeds missed may still exist");
+  return why + (answer.every_solution ? " (every solution there is)"
+                                      : "; a free configuration the seeds missed may still exist");
 }
 
 ArmGoalSet workspace_goal_set(const ArmCollisionChecker& checker, const WorkspaceGoal& goal, std::size_t seeds) {
@@ -93,8 +94,10 @@ std::vector<JointAngles> ArmGoalSet::configurations() const {
 }
 
 std::size_t ArmGoalSet::index_of(const JointAngles& configuration) const {
-  const auto found = std::find_if(goals.begin(), goals.end(), [&](const ArmGoal& g) { return g.angles == configuration; });
-  if (found == goals.end()) throw std::logic_error("a path ends at a configuration that is not one of its query's goals");
+  const auto found =
+      std::find_if(goals.begin(), goals.end(), [&](const ArmGoal& g) { return g.angles == configuration; });
+  if (found == goals.end())
+    throw std::logic_error("a path ends at a configuration that is not one of its query's goals");
   return static_cast<std::size_t>(found - goals.begin());
 }
 

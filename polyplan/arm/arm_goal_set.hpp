@@ -6,9 +6,9 @@
 //   two links without an orientation, three with one: every solution of the closed forms (2, or 1 on
 //   the boundary of the reachable annulus); otherwise numeric_ik's distinct solutions from `seeds`
 //   seeds (a redundant arm has a continuum of them: the seeds pick a spread of it), refined until the
-//   end-effector error is below 1e-12 (1e-14 is aimed at) and never accepted above 1e-9; then the arm's joint limits; then the
-//   collision checker: only free configurations are goals. Each is normalised to [0, 2π) as the
-//   planners' paths are, and its error measured there, by forward kinematics.
+//   end-effector error is below 1e-12 (1e-14 is aimed at) and never accepted above 1e-9; then the arm's joint limits;
+//   then the collision checker: only free configurations are goals. Each is normalised to [0, 2π) as the planners'
+//   paths are, and its error measured there, by forward kinematics.
 //
 // Why there are none is part of the answer: a point outside the annulus the hand reaches,
 // max(0, 2·max l − Σ l) ≤ d ≤ Σ l, decided exactly (hand_reach), is status no_path; a point within it

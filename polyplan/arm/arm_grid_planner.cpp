@@ -1,21 +1,21 @@
 #include <polyplan/arm/arm_grid_planner.hpp>
 
+#include <polyplan/arm/arm_facts.hpp>
 #include <polyplan/arm/arm_goal_set.hpp>
 #include <polyplan/arm/arm_grid_search.hpp>
 #include <polyplan/arm/arm_motion.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
 #include <polyplan/search/grid_graph.hpp>
-#include <polyplan/arm/arm_facts.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <boost/container_hash/hash.hpp>
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -81,7 +81,8 @@ std::optional<std::vector<GridCoordinate>> join_to_grid(const AngleGrid& grid, c
     std::vector<GridCoordinate> at(joints);
     for (std::size_t i = 0; i < joints; ++i) {
       at[i] = options[i][(mask >> i) & 1u];
-      distance += grid.torus ? angular_distance(q[i], grid.angle(at[i])) : std::fabs(normalize_angle(q[i]) - grid.angle(at[i]));
+      distance +=
+          grid.torus ? angular_distance(q[i], grid.angle(at[i])) : std::fabs(normalize_angle(q[i]) - grid.angle(at[i]));
     }
     candidates.emplace_back(distance, std::move(at));
   }
@@ -114,7 +115,8 @@ std::int64_t cells_per_axis(double degrees) {
     throw std::invalid_argument("the grid resolution " + number_text(degrees) +
                                 " degrees is not a positive angle of at least 360/2^30 degrees");
   if (const auto n = cells_on_the_circle(degrees)) return *n;
-  throw std::invalid_argument("the grid resolution " + number_text(degrees) + " degrees must divide 360 into at least 3 cells");
+  throw std::invalid_argument("the grid resolution " + number_text(degrees) +
+                              " degrees must divide 360 into at least 3 cells");
 }
 
 }  // namespace
@@ -129,16 +131,20 @@ double arm_path_length(const std::vector<JointAngles>& path, bool torus) {
 }
 
 ArmGridPlanner::ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options)
-    : problem_(&problem), options_(options), cells_per_axis_(cells_per_axis(options.resolution_degrees)), checker_(problem) {
+    : problem_(&problem), options_(options), cells_per_axis_(cells_per_axis(options.resolution_degrees)),
+      checker_(problem) {
   if (problem.arm.joints() > GridGraph::max_dimensions)
-    throw std::invalid_argument("an arm of " + std::to_string(problem.arm.joints()) + " joints needs a grid of as many axes; it has at most " +
+    throw std::invalid_argument("an arm of " + std::to_string(problem.arm.joints()) +
+                                " joints needs a grid of as many axes; it has at most " +
                                 std::to_string(GridGraph::max_dimensions));
   const double cells = std::pow(static_cast<double>(cells_per_axis_), static_cast<double>(problem.arm.joints()));
   if (!(cells < 0x1p62))
-    throw std::invalid_argument("a grid of " + number_text(cells) + " cells (" + std::to_string(cells_per_axis_) + " per joint, " +
-                                std::to_string(problem.arm.joints()) + " joints) is too many to number; use a coarser resolution");
+    throw std::invalid_argument("a grid of " + number_text(cells) + " cells (" + std::to_string(cells_per_axis_) +
+                                " per joint, " + std::to_string(problem.arm.joints()) +
+                                " joints) is too many to number; use a coarser resolution");
   if (!options_.lazy && cells > static_cast<double>(std::uint64_t{1} << 24))
-    throw std::invalid_argument("eager evaluation of " + number_text(cells) + " cells is too much (at most 2^24); use lazy evaluation");
+    throw std::invalid_argument("eager evaluation of " + number_text(cells) +
+                                " cells is too much (at most 2^24); use lazy evaluation");
   if (options_.coarse_degrees != 0) cells_per_axis(options_.coarse_degrees);  // the same rule: it divides 360
   if (options_.corridor < 0 || options_.widenings < 0)
     throw std::invalid_argument("the corridor's half-width and the number of widenings must not be negative");
@@ -190,11 +196,13 @@ struct Planning {
   // The query stopped at its memory budget after `what` (`context`: what came before, if anything).
   void stop_at_budget(const std::string& what, const std::string& context = "") {
     report.fail(PlanStatus::limit, context + "stopped after " + what + ": the memory budget of one query is " +
-                                       number_text(options.memory_mb) + " MB (option memory-mb: raise it with --memory-mb N)");
+                                       number_text(options.memory_mb) +
+                                       " MB (option memory-mb: raise it with --memory-mb N)");
     report.facts.set(QueryFacts::stopped_by, "memory limit");
   }
   std::string no_join(bool start_joined, std::size_t goals) const {
-    const std::string end = start_joined ? (goals == 1 ? "goal" : "any of the " + std::to_string(goals) + " goals") : "start";
+    const std::string end =
+        start_joined ? (goals == 1 ? "goal" : "any of the " + std::to_string(goals) + " goals") : "start";
     return "no grid cell next to the " + end + " is reached from it by a certified free motion; try a finer resolution";
   }
   // With options.record and two joints, the C-space grid as the search left it (cell k centred on
@@ -213,8 +221,10 @@ struct Planning {
     report.cells = std::move(cells);
   }
   std::string not_connected(std::size_t goals) const {
-    const std::string ends = goals == 1 ? "start and goal are not connected" : "the start is connected to none of its " + std::to_string(goals) + " goals";
-    return ends + " on the " + (options.torus ? "torus" : "interval") + " grid at " + number_text(options.resolution_degrees) + " degrees";
+    const std::string ends = goals == 1 ? "start and goal are not connected"
+                                        : "the start is connected to none of its " + std::to_string(goals) + " goals";
+    return ends + " on the " + (options.torus ? "torus" : "interval") + " grid at " +
+           number_text(options.resolution_degrees) + " degrees";
   }
   void keep_path(const GridQuery& query, const std::vector<std::vector<GridCoordinate>>& cells, std::size_t goal) {
     report.succeed();
@@ -236,7 +246,8 @@ void plan_on_grid_graph(Planning& p, const GridQuery& query) {
   constexpr double bytes_per_cell = 330;
   const auto max_cells = static_cast<std::size_t>(p.options.memory_mb * 1e6 / bytes_per_cell);
   const AngleGrid& grid = p.grid;
-  std::vector<GridAxis> axes(p.joints, GridAxis{grid.n, p.options.torus ? AxisKind::wrapping : AxisKind::bounded, grid.step});
+  std::vector<GridAxis> axes(p.joints,
+                             GridAxis{grid.n, p.options.torus ? AxisKind::wrapping : AxisKind::bounded, grid.step});
   struct BudgetReached {};  // thrown from the cell test, out of the search, when the budget is spent
   std::size_t cells_tested = 0;
   GridGraph g(axes, Connectivity::axis_aligned, StepCost::sum_of_axes, [&](std::span<const GridCoordinate> at) {
@@ -299,10 +310,13 @@ void plan_on_grid_graph(Planning& p, const GridQuery& query) {
   }
   std::vector<std::vector<GridCoordinate>> cells;
   for (const GridCell c : result.path) cells.push_back(g.coordinates(c));
-  const auto reached = static_cast<std::size_t>(std::find(goal_cells.begin(), goal_cells.end(), result.path.back()) - goal_cells.begin());
+  const auto reached = static_cast<std::size_t>(std::find(goal_cells.begin(), goal_cells.end(), result.path.back()) -
+                                                goal_cells.begin());
   p.keep_path(query, cells, goals.goal_of[reached]);
-  p.report.facts.set(ArmGridFacts::grid_shortest, p.options.search.algorithm == Search::astar || p.options.search.algorithm == Search::dijkstra
-                                          ? "proved" : "not claimed");
+  p.report.facts.set(ArmGridFacts::grid_shortest,
+                     p.options.search.algorithm == Search::astar || p.options.search.algorithm == Search::dijkstra
+                         ? "proved"
+                         : "not claimed");
 }
 
 // The coarse path's cells, and which fine cells lie within some number of coarse cells of one of
@@ -390,10 +404,12 @@ std::optional<LevelProblem> level_problem(Planning& p, const GridQuery& query, s
 
 // Whether a grid of n cells per joint is searched only near the guide's path: when its whole
 // search is predicted (the guide's cells times the cells one guide cell holds) above exact_cells.
-std::optional<Corridor> corridor_for(const Planning& p, const std::optional<GuidePath>& guide, std::int64_t n, double& predicted) {
+std::optional<Corridor> corridor_for(const Planning& p, const std::optional<GuidePath>& guide, std::int64_t n,
+                                     double& predicted) {
   predicted = 0;
   if (!guide) return std::nullopt;
-  predicted = guide->predicted_cells * std::pow(static_cast<double>(n) / static_cast<double>(guide->n), static_cast<double>(p.joints));
+  predicted = guide->predicted_cells *
+              std::pow(static_cast<double>(n) / static_cast<double>(guide->n), static_cast<double>(p.joints));
   if (predicted <= static_cast<double>(p.options.exact_cells)) return std::nullopt;
   return Corridor(guide->path, guide->n, n, p.options.torus);
 }
@@ -407,7 +423,8 @@ std::optional<GuidePath> guide_path(Planning& p, const GridQuery& query, double 
   auto level = level_problem(p, query, n, start_joined);
   if (!level) return std::nullopt;
   std::optional<GuidePath> coarser;
-  if (guided && 2 * degrees <= 45 && cells_on_the_circle(2 * degrees)) coarser = guide_path(p, query, 2 * degrees, true);
+  if (guided && 2 * degrees <= 45 && cells_on_the_circle(2 * degrees))
+    coarser = guide_path(p, query, 2 * degrees, true);
   double predicted = 0;
   std::optional<Corridor> corridor = corridor_for(p, coarser, n, predicted);
   if (corridor) {
@@ -467,8 +484,9 @@ void plan_compactly(Planning& p, const GridQuery& query) {
     // A widened round that runs out of memory leaves the narrower corridor's path standing.
     if (round.over_budget && result.found) break;
     result = std::move(round);
-    const bool proved = !corridor || (result.found ? result.cost_steps <= result.outside_bound_steps
-                                                   : result.outside_bound_steps == std::numeric_limits<std::int64_t>::max());
+    const bool proved =
+        !corridor || (result.found ? result.cost_steps <= result.outside_bound_steps
+                                   : result.outside_bound_steps == std::numeric_limits<std::int64_t>::max());
     if (proved || result.over_budget || rounds > options.widenings) break;
     radius *= 2;
   }
@@ -511,10 +529,11 @@ void plan_compactly(Planning& p, const GridQuery& query) {
     const double bound = static_cast<double>(result.outside_bound_steps) * grid.step;
     p.report.facts.set(ArmGridFacts::grid_lower_bound, bound);
     char note[200];
-    std::snprintf(note, sizeof note,
-                  "the shortest within %d coarse cells of the %s-degree path; the grid's shortest, not proved, is at least %.6f "
-                  "rad between the same cells (option coarse 0 searches the whole grid)",
-                  radius, number_text(guide_degrees).c_str(), bound);
+    std::snprintf(
+        note, sizeof note,
+        "the shortest within %d coarse cells of the %s-degree path; the grid's shortest, not proved, is at least %.6f "
+        "rad between the same cells (option coarse 0 searches the whole grid)",
+        radius, number_text(guide_degrees).c_str(), bound);
     p.report.facts.set(QueryFacts::note, note);
   }
 }
@@ -544,11 +563,10 @@ PlanReport<JointAngles> ArmGridPlanner::plan(const ArmQuery& query, const QueryO
     if (goal_set.goals.size() > 1) facts.set(GoalFacts::candidates, goal_set.goals.size());
     const std::vector<JointAngles> goals = goal_set.configurations();
     const GridQuery grid_query{query.start, goals};
-    const bool compact = options_.lazy && (options_.search.algorithm == Search::astar || options_.search.algorithm == Search::dijkstra);
-    if (compact)
-      plan_compactly(p, grid_query);
-    else
-      plan_on_grid_graph(p, grid_query);
+    const bool compact =
+        options_.lazy && (options_.search.algorithm == Search::astar || options_.search.algorithm == Search::dijkstra);
+    if (compact) plan_compactly(p, grid_query);
+    else plan_on_grid_graph(p, grid_query);
     if (report.found) set_goal_facts(goal_set, p.goal_reached, facts);
   }
   facts.set(ArmGridFacts::cells_evaluated, p.cells_evaluated);
@@ -567,21 +585,27 @@ PlannerEntry<PlanarArm> arm_grid_planner_entry() {
   OptionTable<ArmGridOptions> table;
   table.add("resolution", &ArmGridOptions::resolution_degrees, "grid step in degrees (must divide 360)", above(0));
   table.add("torus", &ArmGridOptions::torus, "joint angles wrap round (false: each joint is the interval [0, 2pi))");
-  table.add("evaluation", &ArmGridOptions::lazy, "lazy: decide cells when the search reaches them; eager: every cell first",
+  table.add("evaluation", &ArmGridOptions::lazy,
+            "lazy: decide cells when the search reaches them; eager: every cell first",
             std::vector<std::pair<std::string, bool>>{{"lazy", true}, {"eager", false}});
   add_search_options(table, &ArmGridOptions::search);
-  table.add("coarse", &ArmGridOptions::coarse_degrees,
-            "a finer grid is searched first at this resolution (degrees), then in a corridor around that path; 0: whole grid", at_least(0));
+  table.add(
+      "coarse", &ArmGridOptions::coarse_degrees,
+      "a finer grid is searched first at this resolution (degrees), then in a corridor around that path; 0: whole grid",
+      at_least(0));
   table.add("corridor", &ArmGridOptions::corridor, "the corridor's half-width in coarse cells", at_least(0));
   table.add("exact-cells", &ArmGridOptions::exact_cells,
             "a finer grid is searched whole when the coarse search predicts at most this many cells", at_least(1));
-  table.add("widenings", &ArmGridOptions::widenings, "times the corridor may double while it cannot prove its path shortest", at_least(0));
-  table.add("memory-mb", &ArmGridOptions::memory_mb, "the memory one query's tables may take before it stops, saying so", above(0));
+  table.add("widenings", &ArmGridOptions::widenings,
+            "times the corridor may double while it cannot prove its path shortest", at_least(0));
+  table.add("memory-mb", &ArmGridOptions::memory_mb,
+            "the memory one query's tables may take before it stops, saying so", above(0));
   return make_planner_entry<PlanarArm, ArmGridOptions>(
-      "grid", "the course's graph-search homework's grid over the joint angles (a torus), searched lazily; every move a certified motion",
-      std::move(table), [](const ArmProblem& problem, const ArmGridOptions& o) {
-        return std::make_unique<ArmGridPlanner>(problem, o);
-      });
+      "grid",
+      "the course's graph-search homework's grid over the joint angles (a torus), searched lazily; every move a "
+      "certified motion",
+      std::move(table),
+      [](const ArmProblem& problem, const ArmGridOptions& o) { return std::make_unique<ArmGridPlanner>(problem, o); });
 }
 
 }  // namespace polyplan

@@ -27,7 +27,6 @@ constexpr std::uint8_t state_mask = 3, closed_bit = 4;
 // two_pi within 2^-51 of 2π. So no move turns more than step + 2^-49 (rounded up).
 double longest_move(double step) { return detail::above(step + 0x1p-49); }
 
-
 // A move between two free cells whose safe angles along its joint are a and b units: free when
 // the two ends' free stretches, [from, from + a) and (to − b, to], cover it — a + b > 255 units,
 // which exceed the longest move. (An end that alone reaches the other, 255, still needs the
@@ -47,10 +46,10 @@ struct ArmGridSearch::Impl {
   // ~4096 neighbouring cells (a cube of side 2^side_bits on every axis), allocated when the search
   // first touches one of them. Structure of arrays: the search reads g and flags far more often.
   struct Block {
-    std::vector<std::uint32_t> g;       // steps from the start, this run
-    std::vector<std::uint8_t> flags;    // state and closed
-    std::vector<std::uint8_t> parent;   // 2·axis + (1 when the move increased it), this run
-    std::vector<std::uint8_t> safe;     // [cell · joints + j]: quantized safe angles, once measured
+    std::vector<std::uint32_t> g;      // steps from the start, this run
+    std::vector<std::uint8_t> flags;   // state and closed
+    std::vector<std::uint8_t> parent;  // 2·axis + (1 when the move increased it), this run
+    std::vector<std::uint8_t> safe;    // [cell · joints + j]: quantized safe angles, once measured
   };
 
   const ArmCollisionChecker* checker;
@@ -85,11 +84,13 @@ struct ArmGridSearch::Impl {
 
   Impl(const ArmCollisionChecker& c, ArmGridSearchProblem p)
       : checker(&c), safe_angles(c), problem(std::move(p)), joints(c.arm().joints()), n(problem.cells_per_axis) {
-    if (joints > max_joints) throw std::invalid_argument("ArmGridSearch: at most " + std::to_string(max_joints) + " joints");
+    if (joints > max_joints)
+      throw std::invalid_argument("ArmGridSearch: at most " + std::to_string(max_joints) + " joints");
     if (n < 3) throw std::invalid_argument("ArmGridSearch: at least 3 cells per axis");
     // Cells are numbered in 64 bits.
     if (static_cast<double>(joints) * std::log2(static_cast<double>(n)) >= 63)
-      throw std::invalid_argument("ArmGridSearch: " + std::to_string(n) + "^" + std::to_string(joints) + " cells cannot be numbered in 63 bits");
+      throw std::invalid_argument("ArmGridSearch: " + std::to_string(n) + "^" + std::to_string(joints) +
+                                  " cells cannot be numbered in 63 bits");
     if (problem.goals.empty()) throw std::invalid_argument("ArmGridSearch: no goal cell");
     require_cell(problem.start);
     for (const auto& goal : problem.goals) require_cell(goal);
@@ -97,7 +98,8 @@ struct ArmGridSearch::Impl {
     move = longest_move(step);
     unit = detail::above(move / 255);
     side_bits = std::max(1, 12 / static_cast<int>(joints));
-    while (side_bits > 1 && (std::int64_t{1} << (side_bits - 1)) >= n) --side_bits;  // no block much wider than the grid
+    while (side_bits > 1 && (std::int64_t{1} << (side_bits - 1)) >= n)
+      --side_bits;  // no block much wider than the grid
     blocks_per_axis = (n + (std::int64_t{1} << side_bits) - 1) >> side_bits;
     cells_per_block = std::size_t{1} << (side_bits * static_cast<int>(joints));
     block_bytes = cells_per_block * (sizeof(std::uint32_t) + 2 + joints) + sizeof(Block) + 64;
@@ -114,9 +116,11 @@ struct ArmGridSearch::Impl {
 
   void require_cell(const std::vector<std::int32_t>& cell) const {
     if (cell.size() != joints)
-      throw std::invalid_argument("ArmGridSearch: " + std::to_string(cell.size()) + " coordinates for " + std::to_string(joints) + " joints");
+      throw std::invalid_argument("ArmGridSearch: " + std::to_string(cell.size()) + " coordinates for " +
+                                  std::to_string(joints) + " joints");
     for (const std::int32_t x : cell)
-      if (x < 0 || x >= n) throw std::invalid_argument("ArmGridSearch: coordinate " + std::to_string(x) + " outside [0, n)");
+      if (x < 0 || x >= n)
+        throw std::invalid_argument("ArmGridSearch: coordinate " + std::to_string(x) + " outside [0, n)");
   }
 
   std::size_t bytes() const { return blocks.size() * block_bytes + block_index.size() * 32 + queue_bytes; }
@@ -173,8 +177,8 @@ struct ArmGridSearch::Impl {
     configuration(x, configuration_a);
     ++result.cells_evaluated;
     const bool free = safe_angles.measure(configuration_a, move, safe_scratch);
-    b.flags[offset] = static_cast<std::uint8_t>((b.flags[offset] & ~state_mask) |
-                                                static_cast<std::uint8_t>(free ? ArmCellState::free : ArmCellState::blocked));
+    b.flags[offset] = static_cast<std::uint8_t>(
+        (b.flags[offset] & ~state_mask) | static_cast<std::uint8_t>(free ? ArmCellState::free : ArmCellState::blocked));
     if (free)
       for (std::size_t j = 0; j < joints; ++j) b.safe[offset * joints + j] = safe_angle_units(safe_scratch[j], unit);
   }
@@ -258,7 +262,8 @@ struct ArmGridSearch::Impl {
         if ((b->flags[offset] & closed_bit) || g + heuristic(x) != static_cast<std::int64_t>(f)) continue;  // stale
         b->flags[offset] |= closed_bit;
         ++result.expanded;
-        if (problem.record_expanded) result.expanded_order.emplace_back(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(joints));
+        if (problem.record_expanded)
+          result.expanded_order.emplace_back(x.begin(), x.begin() + static_cast<std::ptrdiff_t>(joints));
         if (const auto reached = std::find(goal_ids.begin(), goal_ids.end(), cell); reached != goal_ids.end()) {
           result.goal_reached = static_cast<std::size_t>(reached - goal_ids.begin());
           trace_path(x);
@@ -283,7 +288,8 @@ struct ArmGridSearch::Impl {
             Block* nb = locate(y, there, true);
             if (!nb) return finish();  // over the budget
             if ((nb->flags[there] & closed_bit) || nb->g[there] <= g + 1) continue;
-            if ((nb->flags[there] & state_mask) == static_cast<std::uint8_t>(ArmCellState::unknown)) evaluate(*nb, there, y);
+            if ((nb->flags[there] & state_mask) == static_cast<std::uint8_t>(ArmCellState::unknown))
+              evaluate(*nb, there, y);
             if ((nb->flags[there] & state_mask) != static_cast<std::uint8_t>(ArmCellState::free)) continue;
             if (!move_is_free(x, here_safe[i], y, nb->safe[there * joints + i])) continue;
             if (nb->g[there] == unreached) ++result.generated;

@@ -34,12 +34,12 @@ namespace polyplan {
 struct ArmGridSearchProblem {
   std::int64_t cells_per_axis = 72;  // n: the angles k · 2π/n, k in [0, n)
   bool torus = true;                 // false: an axis ends at 0 and n − 1
-  std::vector<std::int32_t> start;  // cell coordinates
+  std::vector<std::int32_t> start;   // cell coordinates
   // The cells the path may end at (at least one): the search stops at the first it expands, the
   // nearest. A*'s heuristic is the grid distance to the nearest of them, ignoring obstacles (a minimum
   // of consistent heuristics, so consistent itself).
   std::vector<std::vector<std::int32_t>> goals;
-  bool use_heuristic = true;         // A*; false: Dijkstra
+  bool use_heuristic = true;                        // A*; false: Dijkstra
   std::size_t memory_bytes = std::size_t{1} << 30;  // the search stops when its tables would exceed it
   bool record_expanded = false;
   // Cells the search may enter (coarse-to-fine): empty for every cell.
@@ -48,7 +48,7 @@ struct ArmGridSearchProblem {
 
 struct ArmGridSearchResult {
   bool found = false;
-  bool over_budget = false;  // stopped at memory_bytes
+  bool over_budget = false;                     // stopped at memory_bytes
   std::vector<std::vector<std::int32_t>> path;  // start … goal, cell coordinates
   std::size_t goal_reached = 0;                 // which of the problem's goals the path ends at (the first equal)
   std::int64_t cost_steps = 0;                  // path.size() − 1 when found
@@ -57,10 +57,10 @@ struct ArmGridSearchResult {
   // grid's shortest when cost_steps ≤ this.
   std::int64_t outside_bound_steps = std::numeric_limits<std::int64_t>::max();
   std::size_t expanded = 0, generated = 0, cells_evaluated = 0;
-  std::size_t moves_by_clearance = 0;  // moves proved free by their ends' safe angles alone
-  std::size_t moves_certified = 0;     // moves given to certify_motion
-  std::size_t moves_uncertified = 0;   // of those, refused near contact (treated as blocked)
-  std::size_t peak_bytes = 0;          // the tables' memory at its largest
+  std::size_t moves_by_clearance = 0;                     // moves proved free by their ends' safe angles alone
+  std::size_t moves_certified = 0;                        // moves given to certify_motion
+  std::size_t moves_uncertified = 0;                      // of those, refused near contact (treated as blocked)
+  std::size_t peak_bytes = 0;                             // the tables' memory at its largest
   std::vector<std::vector<std::int32_t>> expanded_order;  // with record_expanded
 };
 

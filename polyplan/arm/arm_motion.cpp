@@ -21,7 +21,8 @@ using detail::below;
 // pair_speed[k * n + m] (k + 2 ≤ m, self-collision only) how fast any point of links[m] moves
 // relative to links[k]. Sums and products of non-negative numbers, each rounded and then moved
 // up to the next double: upper bounds.
-void motion_speeds(const Arm& arm, const JointAngles& turn, std::vector<double>& link_speed, std::vector<double>& pair_speed) {
+void motion_speeds(const Arm& arm, const JointAngles& turn, std::vector<double>& link_speed,
+                   std::vector<double>& pair_speed) {
   const std::size_t n = arm.joints();
   // R_{j,k} = links[j] + … + links[k] + w/2: no point of links[k] is farther from joint j.
   const auto radius = [&](std::size_t j, std::size_t k) {
@@ -73,10 +74,13 @@ double spread_of(double q, double from, double t, const Range& turn) {
 
 // How long a configuration's clearances keep a motion with these speeds free, from that end:
 // safe_step's minimum, without measuring anything (lasts_below rounds down in any rounding mode).
-double lasts_at(const ArmClearances& clearances, const std::vector<double>& link_speed, const std::vector<double>& pair_speed) {
+double lasts_at(const ArmClearances& clearances, const std::vector<double>& link_speed,
+                const std::vector<double>& pair_speed) {
   double h = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < link_speed.size(); ++k) h = std::min(h, detail::lasts_below(clearances.links[k], link_speed[k]));
-  for (std::size_t i = 0; i < pair_speed.size(); ++i) h = std::min(h, detail::lasts_below(clearances.pairs[i], pair_speed[i]));
+  for (std::size_t k = 0; k < link_speed.size(); ++k)
+    h = std::min(h, detail::lasts_below(clearances.links[k], link_speed[k]));
+  for (std::size_t i = 0; i < pair_speed.size(); ++i)
+    h = std::min(h, detail::lasts_below(clearances.pairs[i], pair_speed[i]));
   return h;
 }
 
@@ -86,12 +90,14 @@ void measure_end_clearances(const ArmCollisionChecker& checker, const JointAngle
   checker.clearances(q, out, std::numeric_limits<double>::infinity(), ClearanceUse::stepping);
 }
 
-MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from_given, const JointAngles& to_given) {
+MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from_given,
+                                 const JointAngles& to_given) {
   return certify_motion(checker, from_given, to_given, nullptr, nullptr);
 }
 
-MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from_given, const JointAngles& to_given,
-                                 const ArmClearances* from_clearances, const ArmClearances* to_clearances) {
+MotionCertificate certify_motion(const ArmCollisionChecker& checker, const JointAngles& from_given,
+                                 const JointAngles& to_given, const ArmClearances* from_clearances,
+                                 const ArmClearances* to_clearances) {
   require_arm_size(checker, from_given, "from");
   require_arm_size(checker, to_given, "to");
   const std::size_t n = from_given.size();
@@ -220,7 +226,8 @@ bool JointSafeAngles::measure(const JointAngles& q, double enough, std::span<dou
   const std::size_t pairs = clearances_.pairs.size();
   for (std::size_t j = 0; j < n; ++j) {
     double step = enough;
-    for (std::size_t k = 0; k < n; ++k) step = std::min(step, detail::lasts_below(clearances_.links[k], link_speed_[j * n + k]));
+    for (std::size_t k = 0; k < n; ++k)
+      step = std::min(step, detail::lasts_below(clearances_.links[k], link_speed_[j * n + k]));
     for (std::size_t p = 0; p < pairs; ++p)
       step = std::min(step, detail::lasts_below(clearances_.pairs[p], pair_speed_[j * pairs + p]));
     out[j] = step;

@@ -1,9 +1,9 @@
 #pragma once
 // Motions between two configurations: every joint turns the short way round at a constant rate
-// (the course's arm and car planning report's interpolation): θ_j(t) = from_j + t·Δ_j, Δ_j = signed_angle_difference(from_j, to_j),
-// t ∈ [0, 1] (interpolate_angles_into). A joint exactly a half turn from its goal turns
-// counter-clockwise (signed_angle_difference's +π), so such a motion and its reverse sweep
-// different half circles.
+// (the course's arm and car planning report's interpolation): θ_j(t) = from_j + t·Δ_j, Δ_j =
+// signed_angle_difference(from_j, to_j), t ∈ [0, 1] (interpolate_angles_into). A joint exactly a half turn from its
+// goal turns counter-clockwise (signed_angle_difference's +π), so such a motion and its reverse sweep different half
+// circles.
 //
 // certify_motion proves a motion free for every t, not only at samples (docs/design.md: motions are
 // certified, never sampled), by conservative advancement. The motion proved is the true one: the
@@ -59,7 +59,7 @@ inline constexpr double motion_min_step = 1e-12;
 struct MotionCertificate {
   enum class Verdict { free, collides, uncertified };
   Verdict verdict = Verdict::uncertified;
-  std::size_t steps = 0;              // configurations whose clearance was computed
+  std::size_t steps = 0;  // configurations whose clearance was computed
   // collides/uncertified: the fraction t of the motion where it stopped (collides: a configuration
   // q(at) that collides, exactly; uncertified: the first configuration not proved free).
   double at = 0;

@@ -33,12 +33,15 @@ class ArmSamplingSpace final : public SamplingSpace<PlanarArm> {
     for (double& angle : out) angle = normalize_angle(uniform01(random) * two_pi);
   }
   void coordinates(const JointAngles& q, std::span<double> out) const override {
-    for (std::size_t i = 0; i < q.size(); ++i) out[i] = normalize_angle(q[i]);  // the configurations' own angles are normalised
+    for (std::size_t i = 0; i < q.size(); ++i)
+      out[i] = normalize_angle(q[i]);  // the configurations' own angles are normalised
   }
   JointAngles configuration(std::span<const double> c) const override { return JointAngles(c.begin(), c.end()); }
 
   bool is_free(const JointAngles& q) override { return checker_.is_free(q); }
-  bool motion_is_free(const JointAngles& from, const JointAngles& to) override { return polyplan::motion_is_free(checker_, from, to); }
+  bool motion_is_free(const JointAngles& from, const JointAngles& to) override {
+    return polyplan::motion_is_free(checker_, from, to);
+  }
   bool keeps_free_regions() const override { return true; }
   std::shared_ptr<const FreeRegion> free_region(const JointAngles& q) override {
     auto region = std::make_shared<ArmFreeRegion>();
@@ -50,9 +53,13 @@ class ArmSamplingSpace final : public SamplingSpace<PlanarArm> {
                               const FreeRegion* to_region) override {
     return certify_motion(checker_, from, to, clearances_of(from_region), clearances_of(to_region)).free();
   }
-  std::optional<std::string> query_not_free(const ArmQuery& query) override { return polyplan::query_not_free(checker_, query); }
+  std::optional<std::string> query_not_free(const ArmQuery& query) override {
+    return polyplan::query_not_free(checker_, query);
+  }
   std::optional<std::string> no_path(const ArmQuery& query) override { return why_none(query, PlanStatus::no_path); }
-  std::optional<std::string> no_goal_found(const ArmQuery& query) override { return why_none(query, PlanStatus::not_found); }
+  std::optional<std::string> no_goal_found(const ArmQuery& query) override {
+    return why_none(query, PlanStatus::not_found);
+  }
   JointAngles start(const ArmQuery& query) const override { return normalize_angles(query.start); }
   // A goal in the workspace has no one configuration: goals() gives its set.
   JointAngles goal(const ArmQuery& query) const override { return normalize_angles(query.goal); }

@@ -36,7 +36,8 @@ bool distinct(const std::vector<IkSolution>& found, const JointAngles& q) {
 }
 
 void require_links(const Arm& arm, std::size_t n, const char* what) {
-  if (arm.joints() != n) throw std::invalid_argument(std::string(what) + ": the arm has " + std::to_string(arm.joints()) + " links");
+  if (arm.joints() != n)
+    throw std::invalid_argument(std::string(what) + ": the arm has " + std::to_string(arm.joints()) + " links");
 }
 
 }  // namespace
@@ -56,18 +57,22 @@ HandReach exact_hand_reach(const std::vector<Rational>& links, const ExactPoint&
   }
   Rational inner = 2 * longest - sum;
   if (inner < 0) inner = 0;
-  const Rational d2 = target.x * target.x + target.y * target.y, outer_margin = sum * sum - d2, inner_margin = d2 - inner * inner;
-  return {to_double(inner), to_double(sum), sgn(outer_margin), sgn(inner_margin), to_double(outer_margin), to_double(inner_margin)};
+  const Rational d2 = target.x * target.x + target.y * target.y, outer_margin = sum * sum - d2,
+                 inner_margin = d2 - inner * inner;
+  return {to_double(inner),  to_double(sum),          sgn(outer_margin),
+          sgn(inner_margin), to_double(outer_margin), to_double(inner_margin)};
 }
 
 HandReach hand_reach(const std::vector<double>& links, Eigen::Vector2d target) {
   // Every double is a rational.
-  return exact_hand_reach(std::vector<Rational>(links.begin(), links.end()), ExactPoint{Rational(target.x()), Rational(target.y())});
+  return exact_hand_reach(std::vector<Rational>(links.begin(), links.end()),
+                          ExactPoint{Rational(target.x()), Rational(target.y())});
 }
 
 HandReach hand_reach(const Arm& arm, Eigen::Vector2d target, const std::optional<ExactPoint>& exact_target) {
-  const std::vector<Rational> links =
-      arm.exact_links.size() == arm.links.size() ? arm.exact_links : std::vector<Rational>(arm.links.begin(), arm.links.end());
+  const std::vector<Rational> links = arm.exact_links.size() == arm.links.size()
+                                          ? arm.exact_links
+                                          : std::vector<Rational>(arm.links.begin(), arm.links.end());
   return exact_hand_reach(links, exact_target.value_or(ExactPoint{Rational(target.x()), Rational(target.y())}));
 }
 
@@ -88,7 +93,8 @@ IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target, const std::optional
   answer.found = answer.every_solution = true;
   if (reach.outer_side == 0 || reach.inner_side == 0) {  // on the annulus's boundary: one elbow
     const bool at_base = target.x() == 0 && target.y() == 0;
-    answer.solutions.push_back(solution(arm, reach.outer_side == 0 ? stretched : (at_base ? JointAngles{0, M_PI} : folded), target));
+    answer.solutions.push_back(
+        solution(arm, reach.outer_side == 0 ? stretched : (at_base ? JointAngles{0, M_PI} : folded), target));
     return answer;
   }
   // The elbow's half-angle formula, tan²(θ2 / 2) = ((l1 + l2)² − d²) / (d² − (l1 − l2)²): stable
@@ -112,14 +118,17 @@ IkAnswer three_link_ik(const Arm& arm, Eigen::Vector2d target, double orientatio
   answer.found = answer.every_solution = wrist_answer.found;
   answer.why_not = wrist_answer.why_not.empty() ? "" : "the wrist point: " + wrist_answer.why_not;
   for (const IkSolution& s : wrist_answer.solutions)
-    answer.solutions.push_back(solution(arm, {s.angles[0], s.angles[1], orientation - s.angles[0] - s.angles[1]}, target));
+    answer.solutions.push_back(
+        solution(arm, {s.angles[0], s.angles[1], orientation - s.angles[0] - s.angles[1]}, target));
   return answer;
 }
 
-IkSolution fabrik(const Arm& arm, Eigen::Vector2d target, const JointAngles& start, std::size_t iterations, double tolerance) {
+IkSolution fabrik(const Arm& arm, Eigen::Vector2d target, const JointAngles& start, std::size_t iterations,
+                  double tolerance) {
   std::vector<Eigen::Vector2d> p = joint_positions(arm, start);
   const std::size_t n = arm.joints();
-  const auto place = [&](std::size_t from, std::size_t to, double length) {  // p[to] at `length` from p[from], on its line
+  const auto place = [&](std::size_t from, std::size_t to,
+                         double length) {  // p[to] at `length` from p[from], on its line
     Eigen::Vector2d d = p[to] - p[from];
     const double norm = d.norm();
     p[to] = p[from] + length * (norm > 0 ? Eigen::Vector2d(d / norm) : Eigen::Vector2d(1, 0));
@@ -148,7 +157,9 @@ IkSolution fabrik(const Arm& arm, Eigen::Vector2d target, const JointAngles& sta
 
 IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) {
   const std::size_t n = arm.joints();
-  if (!o.limits.empty() && o.limits.size() != n) throw std::invalid_argument("numeric_ik: " + std::to_string(o.limits.size()) + " joint limits for " + std::to_string(n) + " links");
+  if (!o.limits.empty() && o.limits.size() != n)
+    throw std::invalid_argument("numeric_ik: " + std::to_string(o.limits.size()) + " joint limits for " +
+                                std::to_string(n) + " links");
   const std::size_t rows = o.orientation ? 3 : 2;
   const double aim = o.refine_to > 0 ? std::min(o.refine_to, o.tolerance) : o.tolerance;
   const auto clamp = [&](JointAngles& q) {
@@ -177,7 +188,9 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
     JointAngles q(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
       const double lo = o.limits.empty() ? -M_PI : o.limits[i].first, hi = o.limits.empty() ? M_PI : o.limits[i].second;
-      q[i] = s == 0 && lo <= 0.3 && 0.3 <= hi ? 0.3 : std::uniform_real_distribution<double>(lo, hi)(random);  // seed 0: a gentle curl
+      q[i] = s == 0 && lo <= 0.3 && 0.3 <= hi
+                 ? 0.3
+                 : std::uniform_real_distribution<double>(lo, hi)(random);  // seed 0: a gentle curl
     }
     // Damped least squares, Levenberg–Marquardt's damping: halved after a step that helps,
     // quadrupled (and the step refused) after one that does not. Forward kinematics once per
@@ -187,7 +200,8 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
     Eigen::MatrixXd J = jacobian(joints);
     double damping = 1e-2 * arm.reach();
     const auto damped_step = [&](const Eigen::MatrixXd& jacobian_used) -> Eigen::VectorXd {
-      const Eigen::MatrixXd JJt = jacobian_used * jacobian_used.transpose() + damping * damping * Eigen::MatrixXd::Identity(rows, rows);
+      const Eigen::MatrixXd JJt =
+          jacobian_used * jacobian_used.transpose() + damping * damping * Eigen::MatrixXd::Identity(rows, rows);
       return jacobian_used.transpose() * JJt.ldlt().solve(e);
     };
     for (std::size_t k = 0; k < o.iterations && e.norm() > aim; ++k) {
@@ -198,7 +212,8 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
         Eigen::MatrixXd held = J;
         bool holds = false;
         for (std::size_t i = 0; i < n; ++i)
-          if ((q[i] <= o.limits[i].first && step[i] < 0) || (q[i] >= o.limits[i].second && step[i] > 0)) held.col(i).setZero(), holds = true;
+          if ((q[i] <= o.limits[i].first && step[i] < 0) || (q[i] >= o.limits[i].second && step[i] > 0))
+            held.col(i).setZero(), holds = true;
         if (holds) step = damped_step(held);
       }
       JointAngles next = q;
@@ -227,7 +242,8 @@ IkAnswer numeric_ik(const Arm& arm, Eigen::Vector2d target, const IkOptions& o) 
   if (!answer.found) {
     answer.solutions.push_back(*closest);
     char why[160];
-    std::snprintf(why, sizeof why, "no configuration within %g of the target from %zu seeds (the closest: %.6g away)", o.tolerance, o.seeds, closest->error);
+    std::snprintf(why, sizeof why, "no configuration within %g of the target from %zu seeds (the closest: %.6g away)",
+                  o.tolerance, o.seeds, closest->error);
     answer.why_not = why;
   }
   return answer;

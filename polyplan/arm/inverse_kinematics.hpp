@@ -62,18 +62,19 @@ HandReach hand_reach(const Arm& arm, Eigen::Vector2d target, const std::optional
 
 // exact_target: the target as written (a decimal 0.3 is 3/10), whose double is `target`; with the
 // arm's exact_links it decides the annulus's boundary on the values the user wrote.
-IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target, const std::optional<ExactPoint>& exact_target = std::nullopt);
+IkAnswer two_link_ik(const Arm& arm, Eigen::Vector2d target,
+                     const std::optional<ExactPoint>& exact_target = std::nullopt);
 IkAnswer three_link_ik(const Arm& arm, Eigen::Vector2d target, double orientation);
 
 struct IkOptions {
-  std::optional<double> orientation;                      // radians; none: the hand's position only
-  std::vector<std::pair<double, double>> limits;          // per joint [lo, hi] radians; empty: none
-  std::size_t seeds = 8;                                  // starting configurations tried
-  std::size_t iterations = 100;                           // per seed, damped least squares
-  double tolerance = 1e-9;                                // end-effector error accepted
+  std::optional<double> orientation;              // radians; none: the hand's position only
+  std::vector<std::pair<double, double>> limits;  // per joint [lo, hi] radians; empty: none
+  std::size_t seeds = 8;                          // starting configurations tried
+  std::size_t iterations = 100;                   // per seed, damped least squares
+  double tolerance = 1e-9;                        // end-effector error accepted
   double refine_to = 0;  // above 0: iterate on towards this smaller error while the steps still reduce it
-  bool all = false;                                       // every distinct solution the seeds find, not only the first
-  std::optional<ExactPoint> exact_target;                 // the target as written (two_link_ik's boundary)
+  bool all = false;      // every distinct solution the seeds find, not only the first
+  std::optional<ExactPoint> exact_target;  // the target as written (two_link_ik's boundary)
   std::uint64_t seed = 1;
 };
 
@@ -92,7 +93,8 @@ bool within_joint_limits(const JointAngles& angles, const std::vector<std::pair<
 // FABRIK (Aristidou & Lasenby) from `start`: the joints' positions pulled to the target and back
 // to the base until the hand is within the tolerance; link lengths kept to 1e-12. An unreachable
 // target gives the arm stretched straight towards it.
-IkSolution fabrik(const Arm& arm, Eigen::Vector2d target, const JointAngles& start, std::size_t iterations = 200, double tolerance = 1e-9);
+IkSolution fabrik(const Arm& arm, Eigen::Vector2d target, const JointAngles& start, std::size_t iterations = 200,
+                  double tolerance = 1e-9);
 
 // The absolute angle of the last link: θ1 + … + θn, in (−π, π].
 double end_orientation(const JointAngles& angles);

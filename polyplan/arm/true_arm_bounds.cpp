@@ -19,7 +19,8 @@ Interval interval(const std::array<double, 2>& range) { return Interval(range[0]
 }  // namespace
 
 void TrueArmBounds::enclose(const JointAngles& q, std::span<const double> spread, const std::vector<double>& headings,
-                            const std::vector<Eigen::Vector2d>& directions, const std::vector<Eigen::Vector2d>& joints) {
+                            const std::vector<Eigen::Vector2d>& directions,
+                            const std::vector<Eigen::Vector2d>& joints) {
   const std::size_t n = arm_->joints();
   x_.resize(n + 1);
   y_.resize(n + 1);
@@ -61,7 +62,8 @@ double TrueArmBounds::link_radius(std::size_t k, std::span<const Eigen::Vector2d
   for (int i = 0; i < 4; ++i) {
     const Interval x = interval(x_[joint_of[i]]), y = interval(y_[joint_of[i]]);
     const bool minus = i < 2;
-    largest = std::max(largest, radius_of(corners[static_cast<std::size_t>(i)], minus ? x - nx : x + nx, minus ? y - ny : y + ny));
+    largest = std::max(
+        largest, radius_of(corners[static_cast<std::size_t>(i)], minus ? x - nx : x + nx, minus ? y - ny : y + ny));
   }
   return largest;
 }

@@ -153,7 +153,8 @@ struct CarCollision::Impl {
 
   // The body's vertices relative to the turning centre `c` at the arc's start, turned through
   // [from, to] (radians, counter-clockwise, |to − from| ≤ 45°): the hull of their ends and apexes.
-  bool arc_piece_free(const std::vector<std::vector<Vec>>& relative, Vec c, double from, double to, double m, int halvings) const {
+  bool arc_piece_free(const std::vector<std::vector<Vec>>& relative, Vec c, double from, double to, double m,
+                      int halvings) const {
     const double mid = (from + to) / 2, stretch = 1 / std::cos((to - from) / 2);
     const auto turned = [&](const Vec& r, double angle, double scale) {
       const double co = std::cos(angle) * scale, si = std::sin(angle) * scale;
@@ -162,7 +163,8 @@ struct CarCollision::Impl {
     bool free = true;
     for (const auto& piece : relative) {
       std::vector<Vec> points;
-      for (const Vec& r : piece) points.insert(points.end(), {turned(r, from, 1), turned(r, to, 1), turned(r, mid, stretch)});
+      for (const Vec& r : piece)
+        points.insert(points.end(), {turned(r, from, 1), turned(r, to, 1), turned(r, mid, stretch)});
       if (hull_blocked(points, m)) {
         free = false;
         break;
@@ -175,7 +177,8 @@ struct CarCollision::Impl {
       for (const Vec& r : piece) points.push_back(turned(r, mid, 1));
       if (hull_blocked(points, m)) return false;
     }
-    return arc_piece_free(relative, c, from, mid, m, halvings + 1) && arc_piece_free(relative, c, mid, to, m, halvings + 1);
+    return arc_piece_free(relative, c, from, mid, m, halvings + 1) &&
+           arc_piece_free(relative, c, mid, to, m, halvings + 1);
   }
 
   bool arc_free(const CarPose& start, const SteeringSegment& segment) const {
@@ -201,7 +204,8 @@ CarCollision::CarCollision(const World& world) : impl_(std::make_unique<Impl>())
   Impl& s = *impl_;
   s.radius = world.robot.car->turning_radius;
   s.reverse = world.robot.car->reverse;
-  const std::vector<Ring> pieces = world.robot.is_point() ? std::vector<Ring>{{ExactPoint{0, 0}}} : convex_pieces(world.robot);
+  const std::vector<Ring> pieces =
+      world.robot.is_point() ? std::vector<Ring>{{ExactPoint{0, 0}}} : convex_pieces(world.robot);
   const detail::Point origin(0, 0);
   for (const Ring& piece : pieces) {
     std::vector<Vec> vertices;
@@ -211,8 +215,9 @@ CarCollision::CarCollision(const World& world) : impl_(std::make_unique<Impl>())
     }
     s.pieces.push_back(std::move(vertices));
     const auto exact = points_of(piece);
-    s.holds_reference |= exact.size() < 3 ? exact.front() == origin
-                                          : CGAL::bounded_side_2(exact.begin(), exact.end(), origin) != CGAL::ON_UNBOUNDED_SIDE;
+    s.holds_reference |= exact.size() < 3
+                             ? exact.front() == origin
+                             : CGAL::bounded_side_2(exact.begin(), exact.end(), origin) != CGAL::ON_UNBOUNDED_SIDE;
   }
   for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
     Obstacle o;
@@ -249,7 +254,8 @@ std::size_t CarCollision::enclosures_tested() const { return impl_->enclosures; 
 bool CarCollision::arrival_is_covered(const CarPose& start, const SteeringSegment& segment, const CarPose& end,
                                       const CarPose& to) const {
   const double room = std::ldexp(impl_->margin(start, segment.length), -3) * (1 - 1e-9);  // 2⁻⁴³·S, rounded down
-  const double moved = std::hypot(to.x - end.x, to.y - end.y) + impl_->body_radius * std::abs(std::remainder(to.theta - end.theta, 2 * pi));
+  const double moved = std::hypot(to.x - end.x, to.y - end.y) +
+                       impl_->body_radius * std::abs(std::remainder(to.theta - end.theta, 2 * pi));
   return moved * (1 + 1e-9) <= room;
 }
 
@@ -261,8 +267,8 @@ std::optional<std::string> CarCollision::pose_blocked_by(const CarPose& pose) co
 }
 
 bool CarCollision::segment_is_free(const CarPose& start, const SteeringSegment& segment) const {
-  if (!std::isfinite(start.x) || !std::isfinite(start.y) || !std::isfinite(start.theta) || !std::isfinite(segment.length) ||
-      segment.length < 0)
+  if (!std::isfinite(start.x) || !std::isfinite(start.y) || !std::isfinite(start.theta) ||
+      !std::isfinite(segment.length) || segment.length < 0)
     return false;
   if (segment.length == 0) return pose_is_free(start);
   return segment.steer == Steer::straight ? impl_->straight_free(start, segment) : impl_->arc_free(start, segment);

@@ -52,7 +52,8 @@ class CarCollision {
   // certificate encloses: its points move by at most 2^-43 of the segment's scale, well inside the
   // margin's room beyond the rounding (car_collision.cpp). A path that arrives farther off is not
   // certified.
-  bool arrival_is_covered(const CarPose& start, const SteeringSegment& segment, const CarPose& end, const CarPose& to) const;
+  bool arrival_is_covered(const CarPose& start, const SteeringSegment& segment, const CarPose& end,
+                          const CarPose& to) const;
 
   // Enclosures tested so far (each convex piece's hull counts once): the work certification did.
   std::size_t enclosures_tested() const;

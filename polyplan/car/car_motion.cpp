@@ -15,7 +15,8 @@ SteeringPath shortest_car_path(const CarSteering& steering, const CarPose& from,
 }
 
 double car_distance(const CarSteering& steering, const CarPose& from, const CarPose& to) {
-  return steering.reverse ? reeds_shepp_distance(from, to, steering.turning_radius) : dubins_distance(from, to, steering.turning_radius);
+  return steering.reverse ? reeds_shepp_distance(from, to, steering.turning_radius)
+                          : dubins_distance(from, to, steering.turning_radius);
 }
 
 std::vector<CarState> states_along(const CarPose& from, const SteeringPath& path, const CarPose& to, double radius) {
@@ -34,8 +35,8 @@ std::vector<CarState> states_along(const CarPose& from, const SteeringPath& path
 
 // Each segment starts where the one before ends, at the states' own poses (only the last, which
 // starts nothing, is moved onto `to`): certifying from them certifies the states returned.
-std::optional<std::vector<CarState>> certified_states(const CarCollision& car, const CarPose& from, const SteeringPath& path,
-                                                      const CarPose& to) {
+std::optional<std::vector<CarState>> certified_states(const CarCollision& car, const CarPose& from,
+                                                      const SteeringPath& path, const CarPose& to) {
   std::vector<CarState> states = states_along(from, path, to, car.turning_radius());
   for (std::size_t i = 0; i < states.size(); ++i) {
     const CarPose& start = i == 0 ? from : states[i - 1].pose;
@@ -43,7 +44,8 @@ std::optional<std::vector<CarState>> certified_states(const CarCollision& car, c
     // The last state was moved from the curve's computed end onto `to`: that step must stay within
     // what the last segment's certificate encloses.
     if (i + 1 == states.size() &&
-        !car.arrival_is_covered(start, states[i].arrival, drive(start, states[i].arrival, car.turning_radius(), states[i].arrival.length), to))
+        !car.arrival_is_covered(start, states[i].arrival,
+                                drive(start, states[i].arrival, car.turning_radius(), states[i].arrival.length), to))
       return std::nullopt;
   }
   return states;
@@ -62,7 +64,8 @@ std::size_t gear_changes(const std::vector<CarState>& path) {
 
 bool arrives(const CarPose& end, const CarPose& at, double radius) {
   const double scale = 1e-9 * (1 + std::max({std::abs(at.x), std::abs(at.y), radius}));
-  return std::hypot(end.x - at.x, end.y - at.y) <= scale && radius * std::abs(std::remainder(end.theta - at.theta, 2 * pi)) <= scale;
+  return std::hypot(end.x - at.x, end.y - at.y) <= scale &&
+         radius * std::abs(std::remainder(end.theta - at.theta, 2 * pi)) <= scale;
 }
 
 }  // namespace polyplan

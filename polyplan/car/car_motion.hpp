@@ -22,8 +22,8 @@ double car_distance(const CarSteering& steering, const CarPose& from, const CarP
 // continuously).
 std::vector<CarState> states_along(const CarPose& from, const SteeringPath& path, const CarPose& to, double radius);
 // Those states when every segment is certified free; nullopt otherwise.
-std::optional<std::vector<CarState>> certified_states(const CarCollision& car, const CarPose& from, const SteeringPath& path,
-                                                      const CarPose& to);
+std::optional<std::vector<CarState>> certified_states(const CarCollision& car, const CarPose& from,
+                                                      const SteeringPath& path, const CarPose& to);
 
 // How often a path of states changes gear (segments of no length do not count).
 std::size_t gear_changes(const std::vector<CarState>& path);

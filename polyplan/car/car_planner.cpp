@@ -1,8 +1,8 @@
 #include <polyplan/car/car_planner.hpp>
 
-#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/car/car_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 
 #include <stdexcept>
 #include <utility>
@@ -47,7 +47,8 @@ PlanReport<CarState> CarPlanner::plan(const Query& query, const QueryOptions& op
     const CarState& from = attempt.path[i - 1];
     const CarState& to = attempt.path[i];
     if (!arrives(drive(from.pose, to.arrival, radius(), to.arrival.length), to.pose, radius()))
-      throw std::logic_error("car planner: segment " + std::to_string(i) + " does not arrive at its pose " + to_string(to.pose));
+      throw std::logic_error("car planner: segment " + std::to_string(i) + " does not arrive at its pose " +
+                             to_string(to.pose));
     if (!collision_.segment_is_free(from.pose, to.arrival)) {
       report.fail(PlanStatus::not_found, "the path's segment " + std::to_string(i) + " from " + to_string(from.pose) +
                                              " could not be certified free on its own");

@@ -54,10 +54,15 @@ class CarPlanner : public Planner<SteeredCar> {
   bool reverse() const { return collision_.reverse(); }
   // The car's shortest curve ignoring obstacles (Reeds–Shepp when it may reverse, else Dubins)
   // and its length: a lower bound on any path's length between the poses.
-  SteeringPath steering_path(const CarPose& from, const CarPose& to) const { return shortest_car_path(*world_.robot.car, from, to); }
-  double steering_distance(const CarPose& from, const CarPose& to) const { return car_distance(*world_.robot.car, from, to); }
+  SteeringPath steering_path(const CarPose& from, const CarPose& to) const {
+    return shortest_car_path(*world_.robot.car, from, to);
+  }
+  double steering_distance(const CarPose& from, const CarPose& to) const {
+    return car_distance(*world_.robot.car, from, to);
+  }
   // car/car_motion.hpp's, on this car.
-  std::optional<std::vector<CarState>> certified_states(const CarPose& from, const SteeringPath& path, const CarPose& to) const {
+  std::optional<std::vector<CarState>> certified_states(const CarPose& from, const SteeringPath& path,
+                                                        const CarPose& to) const {
     return polyplan::certified_states(collision_, from, path, to);
   }
 

@@ -32,16 +32,19 @@ std::optional<std::string> car_query_not_free(const CarCollision& car, const Que
 
 std::optional<std::string> car_query_unreachable(const HolonomicDistance* holonomic, const Query& query) {
   if (!holonomic || !holonomic->separated(query.start, query.goal)) return std::nullopt;
-  return "start and goal lie in different components of the free space of the car's reference point, which lies in its body: "
+  return "start and goal lie in different components of the free space of the car's reference point, which lies in its "
+         "body: "
          "no motion of the car joins them";
 }
 
 CarSamplingBox car_sampling_box(const World& world) {
   if (world.bounds)
-    return {to_double(world.bounds->xmin), to_double(world.bounds->ymin), to_double(world.bounds->xmax), to_double(world.bounds->ymax)};
+    return {to_double(world.bounds->xmin), to_double(world.bounds->ymin), to_double(world.bounds->xmax),
+            to_double(world.bounds->ymax)};
   CarSamplingBox b{HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
   const auto add = [&](const ExactPoint& p) {
-    b = {std::min(b.xmin, to_double(p.x)), std::min(b.ymin, to_double(p.y)), std::max(b.xmax, to_double(p.x)), std::max(b.ymax, to_double(p.y))};
+    b = {std::min(b.xmin, to_double(p.x)), std::min(b.ymin, to_double(p.y)), std::max(b.xmax, to_double(p.x)),
+         std::max(b.ymax, to_double(p.y))};
   };
   for (const auto& o : world.obstacles)
     for (const ExactPoint& p : o.outer) add(p);

@@ -1,12 +1,12 @@
 #include <polyplan/car/car_rrt_planner.hpp>
 
+#include <polyplan/car/car_facts.hpp>
 #include <polyplan/car/car_planner.hpp>
 #include <polyplan/geometry/rotation.hpp>
-#include <polyplan/plan/stopwatch.hpp>
-#include <polyplan/sampling/sampling_space.hpp>
-#include <polyplan/car/car_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
+#include <polyplan/sampling/sampling_space.hpp>
 
 #include <cmath>
 #include <limits>
@@ -21,14 +21,18 @@ constexpr double kConnectRadii = 4;
 class CarRrtPlanner final : public CarPlanner {
  public:
   CarRrtPlanner(const World& world, const CarRrtOptions& options) : CarPlanner(world), options_(options) {
-    if (options_.dt < 0 || !std::isfinite(options_.dt)) throw std::invalid_argument("dt must be positive (0: a third of the turning radius)");
-    if (!(options_.goal_bias >= 0 && options_.goal_bias <= 1)) throw std::invalid_argument("goal-bias must lie in [0, 1]");
-    if (!(options_.time > 0) || options_.iterations == 0) throw std::invalid_argument("time and iterations must be positive");
+    if (options_.dt < 0 || !std::isfinite(options_.dt))
+      throw std::invalid_argument("dt must be positive (0: a third of the turning radius)");
+    if (!(options_.goal_bias >= 0 && options_.goal_bias <= 1))
+      throw std::invalid_argument("goal-bias must lie in [0, 1]");
+    if (!(options_.time > 0) || options_.iterations == 0)
+      throw std::invalid_argument("time and iterations must be positive");
     if (options_.dt == 0) options_.dt = radius() / 3;
     if (options_.goal_tolerance < 0) options_.goal_tolerance = radius() / 10;
     box_ = car_sampling_box(world);
     for (const int gear : reverse() ? std::vector<int>{1, -1} : std::vector<int>{1})
-      for (const Steer steer : {Steer::left, Steer::straight, Steer::right}) controls_.push_back({steer, gear, options_.dt});
+      for (const Steer steer : {Steer::left, Steer::straight, Steer::right})
+        controls_.push_back({steer, gear, options_.dt});
   }
 
  private:
@@ -36,7 +40,8 @@ class CarRrtPlanner final : public CarPlanner {
     return CarPlanner::reaches_goal(end, goal) || miss(end, goal) <= options_.goal_tolerance;
   }
   double miss(const CarPose& end, const CarPose& goal) const {
-    return std::max(std::hypot(end.x - goal.x, end.y - goal.y), radius() * std::abs(std::remainder(end.theta - goal.theta, 2 * pi)));
+    return std::max(std::hypot(end.x - goal.x, end.y - goal.y),
+                    radius() * std::abs(std::remainder(end.theta - goal.theta, 2 * pi)));
   }
 
   // The node nearest to `to` by the steering distance; the Euclidean distance bounds it from
@@ -93,10 +98,11 @@ class CarRrtPlanner final : public CarPlanner {
     while (iterations < options_.iterations) {
       if (clock.seconds() >= options_.time) break;
       ++iterations;
-      const CarPose sample = uniform01(random_) < options_.goal_bias
-                                 ? goal
-                                 : CarPose{box_.xmin + uniform01(random_) * (box_.xmax - box_.xmin), box_.ymin + uniform01(random_) * (box_.ymax - box_.ymin),
-                                           (2 * uniform01(random_) - 1) * pi};
+      const CarPose sample =
+          uniform01(random_) < options_.goal_bias
+              ? goal
+              : CarPose{box_.xmin + uniform01(random_) * (box_.xmax - box_.xmin),
+                        box_.ymin + uniform01(random_) * (box_.ymax - box_.ymin), (2 * uniform01(random_) - 1) * pi};
       const std::size_t from = nearest(nodes, sample);
       std::optional<CarState> chosen;
       double chosen_distance = HUGE_VAL;
@@ -122,8 +128,9 @@ class CarRrtPlanner final : public CarPlanner {
     const bool timed_out = iterations < options_.iterations;
     facts.set(QueryFacts::stopped_by, timed_out ? "time limit" : "iteration limit");
     attempt.failure = PlanStatus::limit;
-    attempt.why_not = std::string("the ") + (timed_out ? "time limit (" + std::to_string(options_.time) + " s)"
-                                                      : "iteration limit (" + std::to_string(options_.iterations) + ")") +
+    attempt.why_not = std::string("the ") +
+                      (timed_out ? "time limit (" + std::to_string(options_.time) + " s)"
+                                 : "iteration limit (" + std::to_string(options_.iterations) + ")") +
                       " ended the search before the tree came within the goal tolerance";
     return tell(std::nullopt);
   }
@@ -131,22 +138,28 @@ class CarRrtPlanner final : public CarPlanner {
   CarRrtOptions options_;
   CarSamplingBox box_;
   std::vector<SteeringSegment> controls_;
-  SamplingRandom random_;  // sampling/sampling_space.hpp's, made into doubles by its uniform01: one seed, one path everywhere
+  SamplingRandom
+      random_;  // sampling/sampling_space.hpp's, made into doubles by its uniform01: one seed, one path everywhere
 };
 
 }  // namespace
 
 PlannerEntry<SteeredCar> car_rrt_planner_entry() {
   OptionTable<CarRrtOptions> table;
-  table.add("dt", &CarRrtOptions::dt, "length driven by one control at unit speed (0: a third of the turning radius)", at_least(0))
+  table
+      .add("dt", &CarRrtOptions::dt, "length driven by one control at unit speed (0: a third of the turning radius)",
+           at_least(0))
       .add("goal-bias", &CarRrtOptions::goal_bias, "probability of sampling the goal", in_range(0, 1))
       .add("goal-tolerance", &CarRrtOptions::goal_tolerance,
-           "how near the goal a node ends the search: position, and heading times the radius (negative: a tenth of the turning radius)", at_least(0))
+           "how near the goal a node ends the search: position, and heading times the radius (negative: a tenth of the "
+           "turning radius)",
+           at_least(0))
       .add("seed", &CarRrtOptions::seed, "the random numbers' seed: one seed, one path")
       .add("time", &CarRrtOptions::time, "time limit per query, seconds", above(0))
       .add("iterations", &CarRrtOptions::iterations, "iteration limit per query", at_least(1));
   return make_planner_entry<SteeredCar, CarRrtOptions>(
-      "car-rrt", "RRT with controls: forward/backward at full lock or straight for dt, nearest by the steering distance",
+      "car-rrt",
+      "RRT with controls: forward/backward at full lock or straight for dt, nearest by the steering distance",
       std::move(table), [](const World& world, const CarRrtOptions& options) -> std::unique_ptr<Planner<SteeredCar>> {
         return std::make_unique<CarRrtPlanner>(world, options);
       });

@@ -1,9 +1,9 @@
 #include <polyplan/car/car_sampling_space.hpp>
 
+#include <polyplan/car/car_facts.hpp>
 #include <polyplan/car/car_motion.hpp>
 #include <polyplan/car/car_query.hpp>
 #include <polyplan/geometry/angles.hpp>
-#include <polyplan/car/car_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -34,9 +34,11 @@ class CarSamplingSpace final : public SamplingSpace<SteeredCar> {
   // The heading turns by at most length / radius: a curve is at least as long as its ends lie
   // apart, and at least the radius times the heading change (the short way round).
   double distance_bound(std::span<const double> a, std::span<const double> b) const override {
-    return std::max(std::hypot(b[0] - a[0], b[1] - a[1]), steering_.turning_radius * std::abs(std::remainder(b[2] - a[2], two_pi)));
+    return std::max(std::hypot(b[0] - a[0], b[1] - a[1]),
+                    steering_.turning_radius * std::abs(std::remainder(b[2] - a[2], two_pi)));
   }
-  void interpolate(std::span<const double> a, std::span<const double> b, double t, std::span<double> out) const override {
+  void interpolate(std::span<const double> a, std::span<const double> b, double t,
+                   std::span<double> out) const override {
     const CarPose from = pose_at(a);
     const SteeringPath path = shortest_car_path(steering_, from, pose_at(b));
     const CarPose at = pose_along(path, from, steering_.turning_radius, t * path.length());
@@ -62,9 +64,15 @@ class CarSamplingSpace final : public SamplingSpace<SteeredCar> {
   CarState configuration(std::span<const double> c) const override { return {pose_at(c), {}}; }
 
   bool is_free(const CarState& state) override { return collision_.pose_is_free(state.pose); }
-  bool motion_is_free(const CarState& from, const CarState& to) override { return states_between(from, to).has_value(); }
-  std::optional<std::string> query_not_free(const Query& query) override { return car_query_not_free(collision_, query); }
-  std::optional<std::string> no_path(const Query& query) override { return car_query_unreachable(holonomic_ ? &*holonomic_ : nullptr, query); }
+  bool motion_is_free(const CarState& from, const CarState& to) override {
+    return states_between(from, to).has_value();
+  }
+  std::optional<std::string> query_not_free(const Query& query) override {
+    return car_query_not_free(collision_, query);
+  }
+  std::optional<std::string> no_path(const Query& query) override {
+    return car_query_unreachable(holonomic_ ? &*holonomic_ : nullptr, query);
+  }
   CarState start(const Query& query) const override { return {start_pose(query), {}}; }
   CarState goal(const Query& query) const override { return {goal_pose(query), {}}; }
   std::string certificate_method() const override { return CarCollision::method; }
@@ -76,7 +84,8 @@ class CarSamplingSpace final : public SamplingSpace<SteeredCar> {
     std::vector<CarState> cut{path.front()};
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       const CarPose &from = path[i].pose, &to = path[i + 1].pose;
-      std::vector<CarState> states = states_along(from, shortest_car_path(steering_, from, to), to, steering_.turning_radius);
+      std::vector<CarState> states =
+          states_along(from, shortest_car_path(steering_, from, to), to, steering_.turning_radius);
       if (!states.empty()) states.back().pose = to;
       cut.insert(cut.end(), states.begin(), states.end());
     }

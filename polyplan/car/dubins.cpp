@@ -105,7 +105,8 @@ std::optional<Word> lrl(const DubinsFrame& f) {
 SteeringPath path_of(const Word& w, double radius) {
   SteeringPath path;
   const double lengths[] = {w.t, w.p, w.q};
-  for (int i = 0; i < 3; ++i) append_segment(path, static_cast<Steer>(w.letters[i]), 1, lengths[i] * radius, radius, false);
+  for (int i = 0; i < 3; ++i)
+    append_segment(path, static_cast<Steer>(w.letters[i]), 1, lengths[i] * radius, radius, false);
   return path;
 }
 

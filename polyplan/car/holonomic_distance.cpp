@@ -65,8 +65,8 @@ void HolonomicDistance::set_goal(const ExactPoint& goal) {
     for (std::size_t v = 0; v < n; ++v)
       if (check_segment(s.cspace, corners[v].exact, goal).valid) add_edge(roadmap, v, target);
   std::vector<double> distance(n + 1);
-  boost::dijkstra_shortest_paths(roadmap, target,
-                                 boost::weight_map(boost::get(&RoadmapEdge::length, roadmap)).distance_map(distance.data()));
+  boost::dijkstra_shortest_paths(
+      roadmap, target, boost::weight_map(boost::get(&RoadmapEdge::length, roadmap)).distance_map(distance.data()));
   distance.pop_back();
   s.distance = std::move(distance);
 }

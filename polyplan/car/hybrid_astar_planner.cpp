@@ -1,10 +1,10 @@
 #include <polyplan/car/hybrid_astar_planner.hpp>
 
+#include <polyplan/car/car_facts.hpp>
 #include <polyplan/car/car_planner.hpp>
 #include <polyplan/geometry/rotation.hpp>
-#include <polyplan/plan/stopwatch.hpp>
-#include <polyplan/car/car_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 
 #include <cmath>
 #include <cstdint>
@@ -21,15 +21,21 @@ namespace {
 class HybridAStarPlanner final : public CarPlanner {
  public:
   HybridAStarPlanner(const World& world, const HybridAStarOptions& options) : CarPlanner(world), options_(options) {
-    if (options_.headings < 4 || options_.headings > 3600) throw std::invalid_argument("headings must lie in [4, 3600]");
-    if (options_.cell < 0 || !std::isfinite(options_.cell)) throw std::invalid_argument("cell must be positive (0: a quarter turning radius)");
-    if (options_.step < 0 || !std::isfinite(options_.step)) throw std::invalid_argument("step must be positive (0: its default)");
+    if (options_.headings < 4 || options_.headings > 3600)
+      throw std::invalid_argument("headings must lie in [4, 3600]");
+    if (options_.cell < 0 || !std::isfinite(options_.cell))
+      throw std::invalid_argument("cell must be positive (0: a quarter turning radius)");
+    if (options_.step < 0 || !std::isfinite(options_.step))
+      throw std::invalid_argument("step must be positive (0: its default)");
     if (!(options_.reverse_cost >= 1) || !std::isfinite(options_.reverse_cost))
       throw std::invalid_argument("reverse-cost must be at least 1 (the heuristic bounds the length driven)");
-    if (!(options_.time > 0) || options_.iterations == 0) throw std::invalid_argument("time and iterations must be positive");
+    if (!(options_.time > 0) || options_.iterations == 0)
+      throw std::invalid_argument("time and iterations must be positive");
     if (options_.analytic_every == 0) throw std::invalid_argument("analytic-every must be at least 1");
     if (options_.cell == 0) options_.cell = radius() / 4;
-    if (options_.step == 0) options_.step = std::max(std::sqrt(2.0) * options_.cell, radius() * 2 * pi / static_cast<double>(options_.headings));
+    if (options_.step == 0)
+      options_.step =
+          std::max(std::sqrt(2.0) * options_.cell, radius() * 2 * pi / static_cast<double>(options_.headings));
     if (options_.switch_cost < 0) options_.switch_cost = radius();
   }
 
@@ -42,7 +48,10 @@ class HybridAStarPlanner final : public CarPlanner {
   };
 
   std::uint64_t bin_of(const CarPose& p) const {
-    const auto cell = [&](double v) { return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / options_.cell)) + (1 << 20)) & 0x1fffff; };
+    const auto cell = [&](double v) {
+      return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / options_.cell)) + (1 << 20)) &
+             0x1fffff;
+    };
     const double turns = p.theta / (2 * pi) * static_cast<double>(options_.headings);
     const auto h = static_cast<std::int64_t>(std::llround(turns)) % static_cast<std::int64_t>(options_.headings);
     const auto heading = static_cast<std::uint64_t>(h < 0 ? h + static_cast<std::int64_t>(options_.headings) : h);
@@ -80,7 +89,8 @@ class HybridAStarPlanner final : public CarPlanner {
     std::size_t expanded = 0, analytic_tries = 0;
     std::vector<SteeringSegment> primitives;
     for (const int gear : reverse() ? std::vector<int>{1, -1} : std::vector<int>{1})
-      for (const Steer steer : {Steer::left, Steer::straight, Steer::right}) primitives.push_back({steer, gear, options_.step});
+      for (const Steer steer : {Steer::left, Steer::straight, Steer::right})
+        primitives.push_back({steer, gear, options_.step});
 
     Attempt attempt;
     const auto tell = [&] {
@@ -107,8 +117,9 @@ class HybridAStarPlanner final : public CarPlanner {
         const bool timed_out = expanded < options_.iterations;
         facts.set(QueryFacts::stopped_by, timed_out ? "time limit" : "iteration limit");
         attempt.failure = PlanStatus::limit;
-        attempt.why_not = timed_out ? "the time limit (" + std::to_string(options_.time) + " s) ended the search"
-                                    : "the iteration limit (" + std::to_string(options_.iterations) + " expansions) ended the search";
+        attempt.why_not =
+            timed_out ? "the time limit (" + std::to_string(options_.time) + " s) ended the search"
+                      : "the iteration limit (" + std::to_string(options_.iterations) + " expansions) ended the search";
         return tell();
       }
       const auto [f, id] = open.top();
@@ -122,12 +133,13 @@ class HybridAStarPlanner final : public CarPlanner {
         if (auto rest = certified_states(here.pose, steering_path(here.pose, goal), goal)) {
           attempt.path = path_to(nodes, id);
           attempt.path.insert(attempt.path.end(), rest->begin(), rest->end());
-          facts.set(CarFacts::cost, nodes[id].g + [&] {
-            double c = 0;
-            SteeringSegment before = here.arrival;
-            for (const CarState& s : *rest) c += cost(s.arrival, before), before = s.arrival;
-            return c;
-          }());
+          facts.set(
+              CarFacts::cost, nodes[id].g + [&] {
+                double c = 0;
+                SteeringSegment before = here.arrival;
+                for (const CarState& s : *rest) c += cost(s.arrival, before), before = s.arrival;
+                return c;
+              }());
           return tell();
         }
       }
@@ -158,16 +170,21 @@ class HybridAStarPlanner final : public CarPlanner {
 PlannerEntry<SteeredCar> hybrid_astar_planner_entry() {
   OptionTable<HybridAStarOptions> table;
   table.add("headings", &HybridAStarOptions::headings, "heading bins of the closed set", in_range(4, 3600))
-      .add("cell", &HybridAStarOptions::cell, "width of the closed set's cells (0: a quarter of the turning radius)", at_least(0))
-      .add("step", &HybridAStarOptions::step, "length of a motion primitive (0: the larger of 1.41 cells and one heading bin's arc)", at_least(0))
+      .add("cell", &HybridAStarOptions::cell, "width of the closed set's cells (0: a quarter of the turning radius)",
+           at_least(0))
+      .add("step", &HybridAStarOptions::step,
+           "length of a motion primitive (0: the larger of 1.41 cells and one heading bin's arc)", at_least(0))
       .add("reverse-cost", &HybridAStarOptions::reverse_cost, "cost per unit driven backward (forward: 1)", at_least(1))
       .add("switch-cost", &HybridAStarOptions::switch_cost, "cost of a gear change (negative: one turning radius)")
-      .add("analytic-every", &HybridAStarOptions::analytic_every, "try the steering curve to the goal every this many expansions", at_least(1))
+      .add("analytic-every", &HybridAStarOptions::analytic_every,
+           "try the steering curve to the goal every this many expansions", at_least(1))
       .add("time", &HybridAStarOptions::time, "time limit per query, seconds", above(0))
       .add("iterations", &HybridAStarOptions::iterations, "expansion limit per query", at_least(1));
   return make_planner_entry<SteeredCar, HybridAStarOptions>(
-      "hybrid-astar", "hybrid A*: heading-binned grid, arcs and straights, steering-curve heuristic and analytic expansion",
-      std::move(table), [](const World& world, const HybridAStarOptions& options) -> std::unique_ptr<Planner<SteeredCar>> {
+      "hybrid-astar",
+      "hybrid A*: heading-binned grid, arcs and straights, steering-curve heuristic and analytic expansion",
+      std::move(table),
+      [](const World& world, const HybridAStarOptions& options) -> std::unique_ptr<Planner<SteeredCar>> {
         return std::make_unique<HybridAStarPlanner>(world, options);
       });
 }

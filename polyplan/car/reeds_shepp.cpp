@@ -96,7 +96,8 @@ bool lp_rm_l(double x, double y, double phi, double& t, double& u, double& v) {
 // The last two angles of the CCCC words (8.7, 8.8).
 void tau_omega(double u, double v, double xi, double eta, double phi, double& tau, double& omega) {
   const double delta = wrap(u - v), a = std::sin(u) - std::sin(delta), b = std::cos(u) - std::cos(delta) - 1;
-  const double t1 = std::atan2(eta * a - xi * b, xi * a + eta * b), t2 = 2 * (std::cos(delta) - std::cos(v) - std::cos(u)) + 3;
+  const double t1 = std::atan2(eta * a - xi * b, xi * a + eta * b),
+               t2 = 2 * (std::cos(delta) - std::cos(v) - std::cos(u)) + 3;
   tau = t2 < 0 ? wrap(t1 + pi) : wrap(t1);
   omega = wrap(tau - u + v - phi);
 }
@@ -162,7 +163,8 @@ using Formula = bool (*)(double, double, double, double&, double&, double&);
 // (-1: time-flipped) into the word: `letters` for the goal as given, `mirrored` (left and right
 // swapped) for the reflection.
 template <class Make>
-void symmetric(std::vector<Word>& out, Formula formula, Letters letters, Letters mirrored, double x, double y, double phi, Make make) {
+void symmetric(std::vector<Word>& out, Formula formula, Letters letters, Letters mirrored, double x, double y,
+               double phi, Make make) {
   double t, u, v;
   const auto snapped = [&](Letters l, double sign) {
     for (double* length : {&t, &u, &v})
@@ -188,26 +190,36 @@ void backwards(double x, double y, double phi, double& xb, double& yb) {
 }
 
 void ccc(std::vector<Word>& out, double x, double y, double phi) {
-  symmetric(out, lp_rm_l, "LRL", "RLR", x, y, phi, [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * v}); });
+  symmetric(out, lp_rm_l, "LRL", "RLR", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+    return word(l, {s * t, s * u, s * v});
+  });
   double xb, yb;
   backwards(x, y, phi, xb, yb);
-  symmetric(out, lp_rm_l, "LRL", "RLR", xb, yb, phi, [](Letters l, double s, double t, double u, double v) { return word(l, {s * v, s * u, s * t}); });
+  symmetric(out, lp_rm_l, "LRL", "RLR", xb, yb, phi, [](Letters l, double s, double t, double u, double v) {
+    return word(l, {s * v, s * u, s * t});
+  });
 }
 
 void cccc(std::vector<Word>& out, double x, double y, double phi) {
-  symmetric(out, lp_rup_lum_rm, "LRLR", "RLRL", x, y, phi,
-            [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, -s * u, s * v}); });
-  symmetric(out, lp_rum_lum_rp, "LRLR", "RLRL", x, y, phi,
-            [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * u, s * v}); });
+  symmetric(out, lp_rup_lum_rm, "LRLR", "RLRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+    return word(l, {s * t, s * u, -s * u, s * v});
+  });
+  symmetric(out, lp_rum_lum_rp, "LRLR", "RLRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+    return word(l, {s * t, s * u, s * u, s * v});
+  });
 }
 
 void ccsc(std::vector<Word>& out, double x, double y, double phi) {
-  const auto forward = [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, -s * pi / 2, s * u, s * v}); };
+  const auto forward = [](Letters l, double s, double t, double u, double v) {
+    return word(l, {s * t, -s * pi / 2, s * u, s * v});
+  };
   symmetric(out, lp_rm_sm_lm, "LRSL", "RLSR", x, y, phi, forward);
   symmetric(out, lp_rm_sm_rm, "LRSR", "RLSL", x, y, phi, forward);
   double xb, yb;
   backwards(x, y, phi, xb, yb);
-  const auto reverse = [](Letters l, double s, double t, double u, double v) { return word(l, {s * v, s * u, -s * pi / 2, s * t}); };
+  const auto reverse = [](Letters l, double s, double t, double u, double v) {
+    return word(l, {s * v, s * u, -s * pi / 2, s * t});
+  };
   symmetric(out, lp_rm_sm_lm, "LSRL", "RSLR", xb, yb, phi, reverse);
   symmetric(out, lp_rm_sm_rm, "RSRL", "LSLR", xb, yb, phi, reverse);
 }
@@ -221,7 +233,8 @@ void ccscc(std::vector<Word>& out, double x, double y, double phi) {
 SteeringPath path_of(const Word& w, double radius) {
   SteeringPath path;
   for (int i = 0; i < w.size; ++i)
-    append_segment(path, static_cast<Steer>(w.letters[i]), w.lengths[i] < 0 ? -1 : 1, std::abs(w.lengths[i]) * radius, radius, true);
+    append_segment(path, static_cast<Steer>(w.letters[i]), w.lengths[i] < 0 ? -1 : 1, std::abs(w.lengths[i]) * radius,
+                   radius, true);
   return path;
 }
 
@@ -244,7 +257,8 @@ std::vector<Word> every_word(const CarPose& from, const CarPose& to, double radi
 // through the goal).
 Word shortest_word(const CarPose& from, const CarPose& to, double radius) {
   const std::vector<Word> words = every_word(from, to, radius);
-  return *std::min_element(words.begin(), words.end(), [](const Word& a, const Word& b) { return a.length() < b.length(); });
+  return *std::min_element(words.begin(), words.end(),
+                           [](const Word& a, const Word& b) { return a.length() < b.length(); });
 }
 
 }  // namespace

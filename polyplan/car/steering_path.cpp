@@ -47,8 +47,7 @@ double goal_miss(const SteeringPath& path, const CarPose& from, const CarPose& t
 }
 
 void require_steerable(const CarPose& from, const CarPose& to, double radius, const char* what) {
-  if (!(std::isfinite(radius) && radius > 0))
-  {
+  if (!(std::isfinite(radius) && radius > 0)) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", radius);
     throw InputError(std::string(what) + ": turning radius " + text + ": expected a positive finite number");

@@ -24,10 +24,10 @@ namespace {
 constexpr double kDegreesPerRadian = 180 / std::numbers::pi;
 
 // Screen sizes in pixels.
-constexpr double kPanelPx = 520;      // the workspace's larger side, and the C-space panel's side
-constexpr double kTitleBandPx = 46;   // above the panels: the title and the panels' names
-constexpr double kTickBandPx = 40;    // below the C-space panel: θ1's tick labels and name
-constexpr double kPanelGapPx = 78;    // between the panels: θ2's tick labels and name
+constexpr double kPanelPx = 520;     // the workspace's larger side, and the C-space panel's side
+constexpr double kTitleBandPx = 46;  // above the panels: the title and the panels' names
+constexpr double kTickBandPx = 40;   // below the C-space panel: θ1's tick labels and name
+constexpr double kPanelGapPx = 78;   // between the panels: θ2's tick labels and name
 constexpr double kRightPadPx = 10;
 
 // Timing of the animation.
@@ -127,7 +127,8 @@ void check_picture(const ArmPlanPicture& picture) {
       }
     }
   }
-  if (picture.target && !(picture.target->point.allFinite() && std::isfinite(picture.target->orientation.value_or(0)))) {
+  if (picture.target &&
+      !(picture.target->point.allFinite() && std::isfinite(picture.target->orientation.value_or(0)))) {
     throw std::invalid_argument("arm picture: the goal point (or its orientation) is not finite");
   }
   if (picture.cspace) {
@@ -138,7 +139,8 @@ void check_picture(const ArmPlanPicture& picture) {
     const std::size_t n = picture.cspace->columns;
     if (n == 0 || picture.cspace->rows != n || picture.cspace->states.size() != n * n) {
       throw std::invalid_argument("arm picture: C-space image of " + std::to_string(n) + " cells per axis has " +
-                                  std::to_string(picture.cspace->rows) + " rows and " + std::to_string(picture.cspace->states.size()) + " states, not n·n");
+                                  std::to_string(picture.cspace->rows) + " rows and " +
+                                  std::to_string(picture.cspace->states.size()) + " states, not n·n");
     }
     for (std::uint8_t s : picture.cspace->states) {
       if (s > CellGrid::blocked) {
@@ -303,7 +305,8 @@ void draw_titles(svg::Drawing& d, const Layout& l, const ArmPlanPicture& picture
   d.text({l.workspace.xmin, names_y}, picture.motion.empty() ? "workspace — no path" : "workspace", 12);
   if (l.has_panel) {
     d.text({l.panel_x, names_y},
-           picture.torus ? "C-space θ1 × θ2 (a torus: opposite edges meet)" : "C-space θ1 × θ2 (intervals [0, 2π))", 12);
+           picture.torus ? "C-space θ1 × θ2 (a torus: opposite edges meet)" : "C-space θ1 × θ2 (intervals [0, 2π))",
+           12);
   }
 }
 
@@ -357,8 +360,8 @@ void draw_target(svg::Drawing& d, const Layout& l, const Arm& arm, const std::op
     d.segments({{at, tip}, {tip, barb(0.45)}, {tip, barb(-0.45)}}, line);
   }
   d.end_group();
-  d.legend(target->orientation ? "goal point and orientation (the hand's target)" : "goal point (the hand's target)", line,
-           svg::Swatch::line);
+  d.legend(target->orientation ? "goal point and orientation (the hand's target)" : "goal point (the hand's target)",
+           line, svg::Swatch::line);
 }
 
 void draw_base(svg::Drawing& d) {
@@ -393,8 +396,7 @@ void draw_link(svg::Drawing& d, const Arm& arm, const std::vector<Eigen::Vector2
   }
 }
 
-void draw_configuration(svg::Drawing& d, const Arm& arm, const JointAngles& q, const LinkLook& look,
-                        bool with_joints) {
+void draw_configuration(svg::Drawing& d, const Arm& arm, const JointAngles& q, const LinkLook& look, bool with_joints) {
   const std::vector<Eigen::Vector2d> joints = joint_positions(arm, q);
   for (std::size_t i = 0; i < arm.joints(); ++i) draw_link(d, arm, joints, i, look);
   if (with_joints) {
@@ -503,8 +505,8 @@ void draw_workspace_graph(svg::Drawing& d, const Arm& arm, const PlanGraph<Joint
   d.points(dots, 1.1, vertex_style);
   d.end_group();
   if (!edges.empty()) {
-    d.legend(graph.kind + " edges (" + drawn_of(edges.size(), graph.edges.size()) + "): end-effector traces", edge_style,
-             svg::Swatch::line);
+    d.legend(graph.kind + " edges (" + drawn_of(edges.size(), graph.edges.size()) + "): end-effector traces",
+             edge_style, svg::Swatch::line);
   }
   if (!vertices.empty()) {
     d.legend(graph.kind + " vertices (" + drawn_of(vertices.size(), graph.vertices.size()) + ")", vertex_style,
@@ -520,7 +522,8 @@ void draw_moving_arm(svg::Drawing& d, const Arm& arm, const std::vector<JointAng
                      const Timeline& t) {
   const std::vector<Eigen::Vector2d> zero = joint_positions(arm, JointAngles(arm.joints(), 0.0));
   const LinkLook look = link_look(arm, theme::arm_fill, theme::arm_edge, 1.0);
-  const std::string timing = seconds_attribute(t.seconds) + " repeatCount=\"indefinite\" " + key_times_attribute(t.key_times);
+  const std::string timing =
+      seconds_attribute(t.seconds) + " repeatCount=\"indefinite\" " + key_times_attribute(t.key_times);
   for (std::size_t i = 0; i < arm.joints(); ++i) {
     const svg::Point2 centre = d.to_screen(point(zero[i]));
     const std::string about = " " + svg::format_number(centre.x) + " " + svg::format_number(centre.y);
@@ -534,7 +537,8 @@ void draw_moving_arm(svg::Drawing& d, const Arm& arm, const std::vector<JointAng
       values += rotation(t.frames[k]);
     }
     d.begin_group("class=\"arm-link\" transform=\"rotate(" + rotation(t.frames.front()) + ")\"",
-                  "<animateTransform attributeName=\"transform\" type=\"rotate\" " + timing + " values=\"" + values + "\"/>",
+                  "<animateTransform attributeName=\"transform\" type=\"rotate\" " + timing + " values=\"" + values +
+                      "\"/>",
                   svg::Drawing::GroupContent::moves);
     draw_link(d, arm, zero, i, look);
     if (i > 0) d.points({point(zero[i])}, 3, look.joint);
@@ -563,7 +567,8 @@ using PanelPiece = std::vector<PanelVertex>;
 // The two-joint path as pieces on the square [0, 2π]²: where it crosses a seam (θ passes 2π or
 // 0) a piece ends on one edge and the next begins on the opposite one, so no line runs across the
 // picture. `angles` are unwrapped (continuous); `times` go with them.
-std::vector<PanelPiece> panel_pieces(const std::vector<std::array<double, 2>>& angles, const std::vector<double>& times) {
+std::vector<PanelPiece> panel_pieces(const std::vector<std::array<double, 2>>& angles,
+                                     const std::vector<double>& times) {
   std::vector<PanelPiece> pieces;
   if (angles.empty()) return pieces;
   // Which copy of the square the path is in, per axis: the position on the panel is angle − 2π·tile.
@@ -670,7 +675,7 @@ void draw_cells(svg::Drawing& d, const Layout& l, const CellGrid& image) {
   struct Block {
     std::size_t begin, end;  // extended columns, inclusive
     std::uint8_t state;
-    std::size_t first_row;   // extended rows first_row .. the row before it was closed
+    std::size_t first_row;  // extended rows first_row .. the row before it was closed
   };
   std::array<std::vector<svg::Box2>, 3> rects;  // per state
   auto close = [&](const Block& b, std::size_t last_row) {
@@ -705,7 +710,8 @@ void draw_cells(svg::Drawing& d, const Layout& l, const CellGrid& image) {
     // Lazy search leaves most cells unknown: hatched, so they are not mistaken for free ones.
     d.raw(std::string("<defs><pattern id=\"") + kHatchId +
           "\" width=\"6\" height=\"6\" patternUnits=\"userSpaceOnUse\" patternTransform=\"rotate(45)\">"
-          "<rect width=\"6\" height=\"6\" fill=\"#fff\"/><path d=\"M0 0V6\" stroke=\"" + theme::not_evaluated_hatch +
+          "<rect width=\"6\" height=\"6\" fill=\"#fff\"/><path d=\"M0 0V6\" stroke=\"" +
+          theme::not_evaluated_hatch +
           "\" stroke-width=\"1.5\"/>"
           "</pattern></defs>");
   }
@@ -805,11 +811,12 @@ void draw_panel(svg::Drawing& d, const Layout& l, const CellGrid& image, const P
     }
   }
   const svg::Point2 at = d.to_screen(l.on_panel(first.theta1, first.theta2));
-  const std::string timing = seconds_attribute(timeline->seconds) + " repeatCount=\"indefinite\" keyTimes=\"" + times + "\"";
+  const std::string timing =
+      seconds_attribute(timeline->seconds) + " repeatCount=\"indefinite\" keyTimes=\"" + times + "\"";
   d.raw("<circle class=\"cspace-dot\" cx=\"" + svg::format_number(at.x) + "\" cy=\"" + svg::format_number(at.y) +
         "\" r=\"7.5\" fill=\"none\" stroke=\"" + theme::arm_edge + "\" stroke-width=\"2.5\">\n" +
-        "<animate attributeName=\"cx\" " + timing + " values=\"" + xs + "\"/>\n" +
-        "<animate attributeName=\"cy\" " + timing + " values=\"" + ys + "\"/>\n</circle>");
+        "<animate attributeName=\"cx\" " + timing + " values=\"" + xs + "\"/>\n" + "<animate attributeName=\"cy\" " +
+        timing + " values=\"" + ys + "\"/>\n</circle>");
   d.legend("the arm's configuration now", stroked(theme::arm_edge, 2.5), svg::Swatch::dot);
 }
 
@@ -818,7 +825,11 @@ void draw_panel(svg::Drawing& d, const Layout& l, const CellGrid& image, const P
 // "1st", "2nd", "3rd", "4th", …, "11th", "12th", "13th", "21st", …
 std::string ordinal(std::size_t k) {
   const std::size_t tens = k % 100, units = k % 10;
-  const char* suffix = (tens >= 11 && tens <= 13) ? "th" : units == 1 ? "st" : units == 2 ? "nd" : units == 3 ? "rd" : "th";
+  const char* suffix = (tens >= 11 && tens <= 13) ? "th"
+                       : units == 1               ? "st"
+                       : units == 2               ? "nd"
+                       : units == 3               ? "rd"
+                                                  : "th";
   return std::to_string(k) + suffix;
 }
 
@@ -849,7 +860,8 @@ svg::Drawing animation_drawing(const ArmPlanPicture& picture) {
     draw_moving_arm(d, problem.arm, continuous, t);
     char period[32];
     std::snprintf(period, sizeof period, "%.1f", t.seconds);
-    d.legend(std::string("arm, moving (") + period + " s loop)", link_look(problem.arm, theme::arm_fill, theme::arm_edge, 1).body);
+    d.legend(std::string("arm, moving (") + period + " s loop)",
+             link_look(problem.arm, theme::arm_fill, theme::arm_edge, 1).body);
   }
   if (picture.cspace) {
     draw_panel(d, l, *picture.cspace, shows_graph(picture) ? picture.graph.get() : nullptr, continuous,
@@ -945,7 +957,8 @@ svg::Drawing draw_arm_configurations(const ArmPlanPicture& picture, const std::v
     if (i < named) d.legend(i < labels.size() ? labels[i] : "configuration " + std::to_string(i + 1), look.body);
   }
   if (picture.motion.size() > named)
-    d.legend("and " + std::to_string(picture.motion.size() - named) + " more", link_look(arm, theme::trace, theme::trace, 0.8).body);
+    d.legend("and " + std::to_string(picture.motion.size() - named) + " more",
+             link_look(arm, theme::trace, theme::trace, 0.8).body);
   draw_target(d, l, arm, picture.target);
   draw_base(d);
   return d;
@@ -957,7 +970,8 @@ std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth)
   return strobe_drawing(picture, every_kth).str();
 }
 
-svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>& report, const ArmPictureOptions& options) {
+svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>& report,
+                       const ArmPictureOptions& options) {
   ArmPlanPicture picture;
   picture.problem = &problem;
   picture.title = options.title;

@@ -2,9 +2,9 @@
 // Pictures of a planar arm's plan (draw/svg.hpp does the drawing, draw/theme.hpp gives the
 // colours): the arm moving along its path as an SVG animation (SMIL only, no script, so it plays
 // in any browser and a file viewer still shows a sensible picture), a "strobe" with every k-th
-// configuration drawn at once (the course's arm and car planning report's figure), and for two joints the torus C-space θ1 × θ2
-// beside the workspace with the path on it (the course's graph-search homework's Figure 2); either with the planner's roadmap
-// or tree drawn faint under the path. draw_plan makes either from any arm planner's report.
+// configuration drawn at once (the course's arm and car planning report's figure), and for two joints the torus C-space
+// θ1 × θ2 beside the workspace with the path on it (the course's graph-search homework's Figure 2); either with the
+// planner's roadmap or tree drawn faint under the path. draw_plan makes either from any arm planner's report.
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/plan/plan_report.hpp>
@@ -87,9 +87,11 @@ struct ArmPictureOptions {
   std::string title;
   std::size_t every_kth = 0;
   double degrees_per_frame = 1;
-  std::optional<WorkspaceGoal> target = std::nullopt;  // the query's goal point, when it has one: marked (ArmPlanPicture::target)
+  std::optional<WorkspaceGoal> target =
+      std::nullopt;  // the query's goal point, when it has one: marked (ArmPlanPicture::target)
 };
-svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>& report, const ArmPictureOptions& options);
+svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>& report,
+                       const ArmPictureOptions& options);
 
 // The same, written to `path`; std::runtime_error naming the file when it cannot be written.
 void write_arm_animation_svg(const std::string& path, const ArmPlanPicture& picture);

@@ -20,7 +20,8 @@ std::vector<std::vector<svg::Point2>> body_at(const Robot& robot, const CarPose&
 
 svg::Box2 view_of(const World& world, const std::vector<PlanReport<CarState>>& reports) {
   if (world.bounds)
-    return {to_double(world.bounds->xmin), to_double(world.bounds->ymin), to_double(world.bounds->xmax), to_double(world.bounds->ymax)};
+    return {to_double(world.bounds->xmin), to_double(world.bounds->ymin), to_double(world.bounds->xmax),
+            to_double(world.bounds->ymax)};
   svg::BoxAround box;
   for (const PolygonWithHoles& o : world.obstacles)
     for (const ExactPoint& p : o.outer) box.add(to_double(p.x), to_double(p.y));
@@ -39,14 +40,16 @@ std::vector<std::pair<CarPose, int>> strobe(const std::vector<CarState>& path, d
     const SteeringSegment& s = path[i].arrival;
     const auto steps = static_cast<std::size_t>(std::max(1.0, std::ceil(s.length / spacing)));
     for (std::size_t k = 0; k < steps; ++k)
-      out.push_back({drive(path[i - 1].pose, s, radius, s.length * static_cast<double>(k) / static_cast<double>(steps)), s.gear});
+      out.push_back(
+          {drive(path[i - 1].pose, s, radius, s.length * static_cast<double>(k) / static_cast<double>(steps)), s.gear});
   }
   return out;
 }
 
 // An edge's motion: the segment its end arrived by (hybrid A*, car-rrt), or for poses that
 // arrive by none (a sampling planner's tree or roadmap) the car's shortest curve between them.
-void draw_edge(svg::Drawing& d, const CarState& from, const CarState& to, const CarSteering& steering, const svg::Style& style) {
+void draw_edge(svg::Drawing& d, const CarState& from, const CarState& to, const CarSteering& steering,
+               const svg::Style& style) {
   if (to.arrival.length > 0) {
     d.polyline(segment_track(from.pose, to.arrival, steering.turning_radius), style);
     return;
@@ -61,12 +64,14 @@ void draw_edge(svg::Drawing& d, const CarState& from, const CarState& to, const 
 void draw_tree(svg::Drawing& d, const PlanGraph<CarState>& graph, const CarSteering& steering) {
   const svg::Style style{"none", theme::roadmap, 0.6, 0.45, 1.0, ""};
   for (const auto& [u, v] : graph.edges) draw_edge(d, graph.vertices[u], graph.vertices[v], steering, style);
-  if (!graph.edges.empty()) d.legend(graph.kind + " (" + std::to_string(graph.vertices.size()) + " poses)", style, svg::Swatch::line);
+  if (!graph.edges.empty())
+    d.legend(graph.kind + " (" + std::to_string(graph.vertices.size()) + " poses)", style, svg::Swatch::line);
 }
 
 }  // namespace
 
-svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<CarState>>& reports, const std::vector<std::string>& labels) {
+svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<CarState>>& reports,
+                       const std::vector<std::string>& labels) {
   const CarSteering steering = world.robot.car.value_or(CarSteering{});
   const double radius = steering.turning_radius;
   const svg::Box2 box = view_of(world, reports);
@@ -100,14 +105,17 @@ svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<CarState
       d.polyline(segment_track(path[k - 1].pose, s, radius), style);
       bool& shown = s.gear > 0 ? forward_shown : reverse_shown;
       if (!shown) {
-        const std::string label = i < labels.size() ? labels[i] : reports.size() == 1 ? "path" : "path " + std::to_string(i);
+        const std::string label = i < labels.size()     ? labels[i]
+                                  : reports.size() == 1 ? "path"
+                                                        : "path " + std::to_string(i);
         d.legend(label + (s.gear > 0 ? ", forward" : ", reverse"), style, svg::Swatch::line);
       }
       shown = true;
     }
   }
   const double arrow = std::max(radius / 2, diagonal / 40);
-  const svg::Style start_style{"none", theme::start, 2.5, 1.0, 1.0, ""}, goal_style{"none", theme::goal, 2.5, 1.0, 1.0, ""};
+  const svg::Style start_style{"none", theme::start, 2.5, 1.0, 1.0, ""},
+      goal_style{"none", theme::goal, 2.5, 1.0, 1.0, ""};
   for (const Query& q : world.queries) {
     const CarPose start{to_double(q.start.x), to_double(q.start.y), q.start_theta.value_or(0) * M_PI / 180};
     const CarPose goal{to_double(q.goal.x), to_double(q.goal.y), q.goal_theta.value_or(0) * M_PI / 180};

@@ -4,9 +4,9 @@
 // along each path as a strobe — forward and reverse in two colours, the body at start and goal
 // bold — the reference point's track, and the start and goal poses as arrows.
 #include <polyplan/draw/svg.hpp>
+#include <polyplan/geometry/car_pose.hpp>
 #include <polyplan/geometry/world.hpp>
 #include <polyplan/plan/plan_report.hpp>
-#include <polyplan/geometry/car_pose.hpp>
 
 #include <string>
 #include <vector>

@@ -40,7 +40,9 @@ std::vector<svg::Box2> cell_runs(const CellGrid& cells, CellGrid::State state) {
 // The free and ridge cells coloured by their value in theme::heat's steps, the range spread over
 // the values of those cells; one run of boxes per step.
 void draw_heat(svg::Drawing& drawing, const CellGrid& cells) {
-  const auto valued = [&](std::size_t i) { return cells.states[i] == CellGrid::free || cells.states[i] == CellGrid::ridge; };
+  const auto valued = [&](std::size_t i) {
+    return cells.states[i] == CellGrid::free || cells.states[i] == CellGrid::ridge;
+  };
   float low = 0, high = 0;
   bool any = false;
   for (std::size_t i = 0; i < cells.values.size(); ++i)
@@ -52,7 +54,8 @@ void draw_heat(svg::Drawing& drawing, const CellGrid& cells) {
   if (!any) return;
   const auto step_of = [&](std::size_t i) {
     if (high <= low) return std::size_t{0};
-    const auto step = static_cast<std::size_t>((cells.values[i] - low) / (high - low) * static_cast<float>(theme::heat_steps));
+    const auto step =
+        static_cast<std::size_t>((cells.values[i] - low) / (high - low) * static_cast<float>(theme::heat_steps));
     return std::min(step, theme::heat_steps - 1);
   };
   for (std::size_t step = 0; step < theme::heat_steps; ++step) {
@@ -69,7 +72,8 @@ void draw_heat(svg::Drawing& drawing, const CellGrid& cells) {
     return text;
   };
   drawing.legend(cells.value_name + ": " + number(low), svg::filled(theme::heat[0], 1.0, "none", 0));
-  drawing.legend(cells.value_name + ": " + number(high), svg::filled(theme::heat[theme::heat_steps - 1], 1.0, "none", 0));
+  drawing.legend(cells.value_name + ": " + number(high),
+                 svg::filled(theme::heat[theme::heat_steps - 1], 1.0, "none", 0));
 }
 
 // Cell centres are drawn only where a reader can still tell them apart.
@@ -85,8 +89,7 @@ void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph) {
     const auto& [u, v] = graph.edges[i];
     if (i < graph.bends.size() && graph.bends[i])
       arcs.push_back({point(graph.vertices[u]), point(*graph.bends[i]), point(graph.vertices[v])});
-    else
-      edges.push_back({point(graph.vertices[u]), point(graph.vertices[v])});
+    else edges.push_back({point(graph.vertices[u]), point(graph.vertices[v])});
   }
   svg::Style edge_style;
   edge_style.stroke = theme::roadmap;
@@ -121,7 +124,8 @@ void draw_cells(svg::Drawing& drawing, const CellGrid& cells) {
   if (!ridge.empty()) {
     const svg::Style ridge_style = svg::filled(theme::ridge_cell, 1.0, "none", 0);
     drawing.boxes(ridge, ridge_style);
-    drawing.legend("ridge cells (" + std::to_string(std::count(cells.states.begin(), cells.states.end(), CellGrid::ridge)) + ")",
+    drawing.legend("ridge cells (" +
+                       std::to_string(std::count(cells.states.begin(), cells.states.end(), CellGrid::ridge)) + ")",
                    ridge_style);
   }
 
@@ -255,7 +259,8 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   std::vector<PlanMark<ExactPoint>> marks;
   for (const auto& r : reports)
     for (const auto& mark : r.marks) {
-      auto same = std::find_if(marks.begin(), marks.end(), [&](const auto& m) { return m.kind == mark.kind && m.legend == mark.legend; });
+      auto same = std::find_if(marks.begin(), marks.end(),
+                               [&](const auto& m) { return m.kind == mark.kind && m.legend == mark.legend; });
       if (same == marks.end()) marks.push_back(mark);
       else same->parts.insert(same->parts.end(), mark.parts.begin(), mark.parts.end());
     }
@@ -263,12 +268,15 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
 
   for (std::size_t i = 0; i < reports.size(); ++i) {
     if (!reports[i].found) continue;
-    const std::string label = i < labels.size() ? labels[i] : reports.size() == 1 ? "path" : "path " + std::to_string(i);
+    const std::string label = i < labels.size()     ? labels[i]
+                              : reports.size() == 1 ? "path"
+                                                    : "path " + std::to_string(i);
     draw_path(drawing, reports[i].path, label, theme::path_colour(i));
     // A planner's further answers (the next homotopy classes), each in a colour of its own.
     for (std::size_t k = 1; k < reports[i].paths.size(); ++k) {
       const auto& more = reports[i].paths[k];
-      const std::string name = label + " #" + std::to_string(k + 1) + (more.label.empty() ? "" : " (" + more.label + ")");
+      const std::string name =
+          label + " #" + std::to_string(k + 1) + (more.label.empty() ? "" : " (" + more.label + ")");
       draw_path(drawing, more.path, name, theme::path_colour(i + k));
     }
   }

@@ -45,7 +45,9 @@ std::vector<Sample> samples(const std::vector<Pose>& path, double radius, double
   return out;
 }
 
-std::vector<std::vector<svg::Point2>> robot_at(const Robot& robot, const Sample& s) { return placed_robot(robot, s.x, s.y, s.angle); }
+std::vector<std::vector<svg::Point2>> robot_at(const Robot& robot, const Sample& s) {
+  return placed_robot(robot, s.x, s.y, s.angle);
+}
 
 svg::Box2 world_box(const World& world, const std::vector<std::vector<Sample>>& tracks, const Robot& robot) {
   if (world.bounds)
@@ -73,14 +75,17 @@ std::string degrees_label(double radians) {
 
 }  // namespace
 
-svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<Pose>>& reports, const std::vector<std::string>& labels) {
+svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<Pose>>& reports,
+                       const std::vector<std::string>& labels) {
   const double radius = robot_radius(world.robot);
   std::vector<std::vector<Sample>> tracks;
-  for (const auto& report : reports) tracks.push_back(samples(report.path, radius, 1, 360));  // corners only, for the box
+  for (const auto& report : reports)
+    tracks.push_back(samples(report.path, radius, 1, 360));  // corners only, for the box
   const svg::Box2 box = world_box(world, tracks, world.robot);
   const double width = box.xmax - box.xmin, height = box.ymax - box.ymin;
   // The orientation panel sits right of the world, in world units, half the world's height.
-  const svg::Box2 panel{box.xmax + 0.1 * width, box.ymin + 0.25 * height, box.xmax + 0.55 * width, box.ymin + 0.75 * height};
+  const svg::Box2 panel{box.xmax + 0.1 * width, box.ymin + 0.25 * height, box.xmax + 0.55 * width,
+                        box.ymin + 0.75 * height};
   svg::Drawing d({box.xmin, box.ymin, panel.xmax + 0.1 * width, box.ymax}, 1100);  // room for the angle labels
   draw_surroundings(d, world);
 
@@ -112,7 +117,9 @@ svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<Pose>>& 
       line.push_back({to_double(path[k].position.x), to_double(path[k].position.y)});
       if (k > 0 && !(path[k].rotation == path[k - 1].rotation)) turns.push_back(line.back());
     }
-    const std::string label = i < labels.size() ? labels[i] : reports.size() == 1 ? "path" : "path " + std::to_string(i);
+    const std::string label = i < labels.size()     ? labels[i]
+                              : reports.size() == 1 ? "path"
+                                                    : "path " + std::to_string(i);
     const svg::Style track_style{"none", theme::path_colour(i), 2.0, 1.0, 1.0, ""};
     d.polyline(line, track_style);
     d.legend(label + " (reference point)", track_style, svg::Swatch::line);
@@ -134,9 +141,12 @@ svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<Pose>>& 
 
   // The panel: orientation (up) against progress along the path (right); a turn is a vertical step.
   if (lowest <= highest) {
-    const double low = lowest == highest ? lowest - pi / 18 : lowest, high = lowest == highest ? highest + pi / 18 : highest;
+    const double low = lowest == highest ? lowest - pi / 18 : lowest,
+                 high = lowest == highest ? highest + pi / 18 : highest;
     const svg::Style frame{"#fff", theme::ink, 1.0, 1.0, 1.0, ""};
-    d.polygon({{{panel.xmin, panel.ymin}, {panel.xmax, panel.ymin}, {panel.xmax, panel.ymax}, {panel.xmin, panel.ymax}}}, frame);
+    d.polygon(
+        {{{panel.xmin, panel.ymin}, {panel.xmax, panel.ymin}, {panel.xmax, panel.ymax}, {panel.xmin, panel.ymax}}},
+        frame);
     for (std::size_t i = 0; i < tracks.size(); ++i) {
       if (tracks[i].empty()) continue;
       const double total = std::max(tracks[i].back().progress, 1e-300);

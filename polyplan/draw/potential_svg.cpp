@@ -12,7 +12,8 @@ namespace polyplan {
 namespace {
 
 svg::Point2 centre(const CellGrid& map, std::size_t column, std::size_t row) {
-  return {map.x0 + (static_cast<double>(column) + 0.5) * map.cell_width, map.y0 + (static_cast<double>(row) + 0.5) * map.cell_height};
+  return {map.x0 + (static_cast<double>(column) + 0.5) * map.cell_width,
+          map.y0 + (static_cast<double>(row) + 0.5) * map.cell_height};
 }
 
 // Where the level crosses the edge from a (value va) to b (value vb).
@@ -21,8 +22,8 @@ svg::Point2 crossing(svg::Point2 a, svg::Point2 b, double va, double vb, double 
   return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
 }
 
-void draw_arrows(svg::Drawing& drawing, const CellGrid& map, const ObstacleField& field, Vec2 goal, const PotentialParameters& parameters,
-                 std::size_t per_axis) {
+void draw_arrows(svg::Drawing& drawing, const CellGrid& map, const ObstacleField& field, Vec2 goal,
+                 const PotentialParameters& parameters, std::size_t per_axis) {
   const double w = map.cell_width * static_cast<double>(map.columns) / static_cast<double>(per_axis);
   const double h = map.cell_height * static_cast<double>(map.rows) / static_cast<double>(per_axis);
   const double length = 0.4 * std::min(w, h);
@@ -30,7 +31,8 @@ void draw_arrows(svg::Drawing& drawing, const CellGrid& map, const ObstacleField
   for (std::size_t j = 0; j < per_axis; ++j)
     for (std::size_t i = 0; i < per_axis; ++i) {
       const Vec2 at{map.x0 + (static_cast<double>(i) + 0.5) * w, map.y0 + (static_cast<double>(j) + 0.5) * h};
-      const auto column = static_cast<std::size_t>((at.x - map.x0) / map.cell_width), row = static_cast<std::size_t>((at.y - map.y0) / map.cell_height);
+      const auto column = static_cast<std::size_t>((at.x - map.x0) / map.cell_width),
+                 row = static_cast<std::size_t>((at.y - map.y0) / map.cell_height);
       if (column >= map.columns || row >= map.rows || map.state(column, row) != CellGrid::free) continue;
       const Vec2 g = field.potential(at, goal, parameters).gradient;
       const double norm = std::hypot(g.x, g.y);
@@ -41,7 +43,8 @@ void draw_arrows(svg::Drawing& drawing, const CellGrid& map, const ObstacleField
       // Two barbs a third of the shaft long, 25° either side of it.
       const double back = std::atan2(g.y, g.x);
       for (const double side : {-0.44, 0.44})
-        heads.push_back({tip, {tip.x + length / 3 * std::cos(back + side), tip.y + length / 3 * std::sin(back + side)}});
+        heads.push_back(
+            {tip, {tip.x + length / 3 * std::cos(back + side), tip.y + length / 3 * std::sin(back + side)}});
     }
   svg::Style style;
   style.stroke = theme::ink;
@@ -81,7 +84,8 @@ std::vector<std::pair<svg::Point2, svg::Point2>> contour_segments(const CellGrid
 }
 
 svg::Drawing draw_potential(const CSpace& cspace, const CellGrid& map, const ObstacleField& field, Vec2 goal,
-                            const PotentialParameters& parameters, const std::vector<CriticalPoint>& points, std::size_t arrows_per_axis) {
+                            const PotentialParameters& parameters, const std::vector<CriticalPoint>& points,
+                            std::size_t arrows_per_axis) {
   svg::Drawing drawing(svg::Box2{map.x0, map.y0, map.x0 + map.cell_width * static_cast<double>(map.columns),
                                  map.y0 + map.cell_height * static_cast<double>(map.rows)});
   draw_cells(drawing, map);
@@ -108,7 +112,8 @@ svg::Drawing draw_potential(const CSpace& cspace, const CellGrid& map, const Obs
     const char* name;
     const char* colour;
   };
-  for (const Kind kind : {Kind{"minimum", "#2ca02c"}, Kind{"saddle", "#ff7f0e"}, Kind{"maximum", "#d62728"}, Kind{"degenerate", "#9467bd"}}) {
+  for (const Kind kind : {Kind{"minimum", "#2ca02c"}, Kind{"saddle", "#ff7f0e"}, Kind{"maximum", "#d62728"},
+                          Kind{"degenerate", "#9467bd"}}) {
     std::vector<svg::Point2> at;
     for (const CriticalPoint& p : points)
       if (p.kind == kind.name) at.push_back({p.at.x, p.at.y});
@@ -123,8 +128,8 @@ svg::Drawing draw_potential(const CSpace& cspace, const CellGrid& map, const Obs
 svg::Drawing draw_potential_study(const CSpace& cspace, const ObstacleField& field, const PotentialStudy& study) {
   BoxGrid picture = study.box;
   picture.cells_per_axis = std::min<std::size_t>(study.box.cells_per_axis, 160);
-  return draw_potential(cspace, potential_map(cspace, field, study.goal, study.parameters, picture), field, study.goal, study.parameters,
-                        study.found.points);
+  return draw_potential(cspace, potential_map(cspace, field, study.goal, study.parameters, picture), field, study.goal,
+                        study.parameters, study.found.points);
 }
 
 }  // namespace polyplan

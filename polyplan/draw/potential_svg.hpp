@@ -14,7 +14,8 @@ namespace polyplan {
 // `map` is the heat map (reactive/potential_map.hpp); `arrows_per_axis` arrows along each side of
 // its box.
 svg::Drawing draw_potential(const CSpace& cspace, const CellGrid& map, const ObstacleField& field, Vec2 goal,
-                            const PotentialParameters& parameters, const std::vector<CriticalPoint>& points, std::size_t arrows_per_axis = 24);
+                            const PotentialParameters& parameters, const std::vector<CriticalPoint>& points,
+                            std::size_t arrows_per_axis = 24);
 
 // The picture `polyplan potential --svg` draws of a study: its box's heat map at most 160 cells a
 // side (finer says nothing more to the eye and writes megabytes).

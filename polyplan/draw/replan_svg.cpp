@@ -71,7 +71,8 @@ void draw_cells_as_seen(svg::Drawing& drawing, const ReplanResult& r, double fra
   const CellStyles styles;
   drawing.boxes(blocked, styles.unseen);
   for (std::size_t m = 0; m <= r.moves; ++m)
-    for (const auto& [cells, style] : {std::pair{&free_by_move[m], &styles.free}, std::pair{&blocked_by_move[m], &styles.seen}}) {
+    for (const auto& [cells, style] :
+         {std::pair{&free_by_move[m], &styles.free}, std::pair{&blocked_by_move[m], &styles.seen}}) {
       if (cells->empty()) continue;
       drawing.begin_group("opacity=\"0\"", appear_at(m / frames, timing));
       drawing.boxes(*cells, *style);
@@ -97,7 +98,8 @@ svg::Drawing draw_replan_animation(const ReplanResult& r, const std::string& tit
   svg::Drawing drawing({0, 0, static_cast<double>(r.width), static_cast<double>(r.height)});
   // One frame per move and one more at the end, held, before the loop starts again.
   const double frames = static_cast<double>(r.moves) + 2;
-  const std::string timing = "dur=\"" + svg::format_number(frames * seconds_per_move) + "s\" repeatCount=\"indefinite\"";
+  const std::string timing =
+      "dur=\"" + svg::format_number(frames * seconds_per_move) + "s\" repeatCount=\"indefinite\"";
   draw_cells_as_seen(drawing, r, frames, timing);
   draw_frame_and_title(drawing, r, title);
   const svg::Style driven{"none", theme::path_colour(0), 2.5, 1, 0.35, ""};
@@ -116,9 +118,10 @@ svg::Drawing draw_replan_animation(const ReplanResult& r, const std::string& tit
   times += ";1";
   const svg::Point2 at = drawing.to_screen(centre(r, r.traversed.front()));
   const std::string keyed = timing + " calcMode=\"discrete\" keyTimes=\"" + times + "\"";
-  drawing.raw("<circle cx=\"" + svg::format_number(at.x) + "\" cy=\"" + svg::format_number(at.y) + "\" r=\"6\" fill=\"" +
-              theme::start + "\" stroke=\"#fff\" stroke-width=\"1.5\">\n<animate attributeName=\"cx\" " + keyed +
-              " values=\"" + xs + "\"/>\n<animate attributeName=\"cy\" " + keyed + " values=\"" + ys + "\"/>\n</circle>");
+  drawing.raw("<circle cx=\"" + svg::format_number(at.x) + "\" cy=\"" + svg::format_number(at.y) +
+              "\" r=\"6\" fill=\"" + theme::start +
+              "\" stroke=\"#fff\" stroke-width=\"1.5\">\n<animate attributeName=\"cx\" " + keyed + " values=\"" + xs +
+              "\"/>\n<animate attributeName=\"cy\" " + keyed + " values=\"" + ys + "\"/>\n</circle>");
   drawing.legend("the robot", svg::Style{theme::start, "#fff", 1.5, 1, 1, ""}, svg::Swatch::dot);
   const svg::Style goal{theme::goal, theme::goal, 1, 1, 1, ""};
   if (r.found) {

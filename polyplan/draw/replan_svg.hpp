@@ -19,6 +19,7 @@ svg::Drawing draw_replan(const ReplanResult& result, const std::string& title);
 // The same drive as an animation (SMIL, looping): one frame per move, `seconds_per_move` each,
 // the robot moving from cell to cell and each cell appearing, free or blocked, when it is first
 // sensed; the blocked cells never seen stay pale throughout.
-svg::Drawing draw_replan_animation(const ReplanResult& result, const std::string& title, double seconds_per_move = 0.15);
+svg::Drawing draw_replan_animation(const ReplanResult& result, const std::string& title,
+                                   double seconds_per_move = 0.15);
 
 }  // namespace polyplan

@@ -66,8 +66,8 @@ struct SearchStyles {
   svg::Style goal = svg::filled(theme::goal, 1, theme::goal, 1);
 };
 
-void draw_graph(svg::Drawing& drawing, const WeightedDigraph& graph, DigraphVertexId goal, const SearchPictureOptions& options,
-                const SearchStyles& styles) {
+void draw_graph(svg::Drawing& drawing, const WeightedDigraph& graph, DigraphVertexId goal,
+                const SearchPictureOptions& options, const SearchStyles& styles) {
   std::vector<std::pair<svg::Point2, svg::Point2>> edges;
   for (auto [e, end] = boost::edges(graph); e != end; ++e) {
     const auto u = boost::source(*e, graph), v = boost::target(*e, graph);
@@ -101,7 +101,8 @@ void draw_graph(svg::Drawing& drawing, const WeightedDigraph& graph, DigraphVert
 std::string arrow_defs() {
   return std::string("<defs><marker id=\"") + kArrowMarker +
          "\" viewBox=\"0 0 10 10\" refX=\"10\" refY=\"5\" markerWidth=\"7\" markerHeight=\"7\" orient=\"auto\">"
-         "<path d=\"M0,0 L10,5 L0,10 z\" fill=\"" + theme::trace + "\"/></marker></defs>";
+         "<path d=\"M0,0 L10,5 L0,10 z\" fill=\"" +
+         theme::trace + "\"/></marker></defs>";
 }
 
 // An arrow from v to its backpointer, stopping short of the backpointer's dot; `children` go
@@ -164,20 +165,22 @@ std::vector<VertexHistory> histories(const WeightedDigraph& graph, const Result&
 // "hidden, shown from `from` to `to`, hidden again" as fractions of the loop (to = 1: to the end).
 std::string shown_between(double from, double to, const std::string& timing) {
   const auto n = svg::format_number;
-  if (to >= 1) return "<animate attributeName=\"opacity\" calcMode=\"discrete\" " + timing + " values=\"0;1;1\" keyTimes=\"0;" + n(from) + ";1\"/>";
-  return "<animate attributeName=\"opacity\" calcMode=\"discrete\" " + timing + " values=\"0;1;0;0\" keyTimes=\"0;" + n(from) +
-         ";" + n(to) + ";1\"/>";
+  if (to >= 1)
+    return "<animate attributeName=\"opacity\" calcMode=\"discrete\" " + timing + " values=\"0;1;1\" keyTimes=\"0;" +
+           n(from) + ";1\"/>";
+  return "<animate attributeName=\"opacity\" calcMode=\"discrete\" " + timing + " values=\"0;1;0;0\" keyTimes=\"0;" +
+         n(from) + ";" + n(to) + ";1\"/>";
 }
 
 }  // namespace
 
 std::string search_title(const std::string& file, const Result& result, DigraphVertexId start, DigraphVertexId goal) {
-  return "polyplan search " + file + " (" + std::string(to_string(result.algorithm)) + ", " + std::to_string(start) + " → " +
-         std::to_string(goal) + ")";
+  return "polyplan search " + file + " (" + std::string(to_string(result.algorithm)) + ", " + std::to_string(start) +
+         " → " + std::to_string(goal) + ")";
 }
 
-svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, DigraphVertexId goal, const Result& result,
-                         const SearchPictureOptions& options, const std::string& title) {
+svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, DigraphVertexId goal,
+                         const Result& result, const SearchPictureOptions& options, const std::string& title) {
   svg::Drawing drawing(graph_box(graph, options));
   const SearchStyles styles;
   drawing.raw(arrow_defs());
@@ -209,7 +212,8 @@ svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, Di
 }
 
 svg::Drawing draw_search_animation(const WeightedDigraph& graph, DigraphVertexId start, DigraphVertexId goal,
-                                   const Result& result, const SearchPictureOptions& options, const std::string& title) {
+                                   const Result& result, const SearchPictureOptions& options,
+                                   const std::string& title) {
   svg::Drawing drawing(graph_box(graph, options));
   const SearchStyles styles;
   drawing.raw(arrow_defs());
@@ -227,7 +231,8 @@ svg::Drawing draw_search_animation(const WeightedDigraph& graph, DigraphVertexId
     if (h.labels.empty()) continue;
     // In the open list from its discovery to its expansion.
     const double left = h.expanded_at ? time_of(*h.expanded_at) : 1.0;
-    drawing.raw(circle(drawing, at(graph, v), "open", kOpenPx, styles.open, shown_between(time_of(h.labels.front()->step), left, timing)));
+    drawing.raw(circle(drawing, at(graph, v), "open", kOpenPx, styles.open,
+                       shown_between(time_of(h.labels.front()->step), left, timing)));
     if (h.expanded_at)
       drawing.raw(circle(drawing, at(graph, v), "expanded", kExpandedPx, styles.expanded,
                          shown_between(time_of(*h.expanded_at), 1.0, timing)));
@@ -253,8 +258,9 @@ svg::Drawing draw_search_animation(const WeightedDigraph& graph, DigraphVertexId
   const svg::Point2 caption{view.xmin + 0.02 * (view.xmax - view.xmin), view.ymax - 0.07 * (view.ymax - view.ymin)};
   for (const auto& e : result.trace.expansions) {
     drawing.begin_group("class=\"step\" opacity=\"0\"", shown_between(time_of(e.step), time_of(e.step + 1), timing));
-    drawing.text(caption, "step " + std::to_string(e.step) + ": expand " + std::to_string(e.vertex) + " (g=" + number(e.g) +
-                              " h=" + number(e.h) + " f=" + number(e.f) + ", open " + std::to_string(e.open) + ")",
+    drawing.text(caption,
+                 "step " + std::to_string(e.step) + ": expand " + std::to_string(e.vertex) + " (g=" + number(e.g) +
+                     " h=" + number(e.h) + " f=" + number(e.f) + ", open " + std::to_string(e.open) + ")",
                  12);
     drawing.end_group();
   }

@@ -14,11 +14,11 @@
 namespace polyplan {
 
 struct SearchPictureOptions {
-  bool edge_weights = false;  // each edge's cost at its middle (Graph.plot's flag_edge_weights)
-  bool labels = false;        // "g= h= f=" beside each vertex the search gave a g (flag_backpointers_cost)
-  bool backpointers = false;  // an arrow from each such vertex to its backpointer (flag_backpointers)
-  bool heuristic = false;     // "h=" below every vertex, the Euclidean distance to the goal (flag_heuristic)
-  bool indices = false;       // each vertex's index (flag_labels)
+  bool edge_weights = false;      // each edge's cost at its middle (Graph.plot's flag_edge_weights)
+  bool labels = false;            // "g= h= f=" beside each vertex the search gave a g (flag_backpointers_cost)
+  bool backpointers = false;      // an arrow from each such vertex to its backpointer (flag_backpointers)
+  bool heuristic = false;         // "h=" below every vertex, the Euclidean distance to the goal (flag_heuristic)
+  bool indices = false;           // each vertex's index (flag_labels)
   double seconds_per_step = 0.6;  // the animation's: one step per expansion
 };
 

@@ -48,13 +48,17 @@ std::vector<svg::Point2> pose_arrow(const CarPose& p, double length) {
   const double c = std::cos(p.theta), s = std::sin(p.theta);
   const svg::Point2 tip{p.x + length * c, p.y + length * s};
   const double head = length / 4;
-  return {{p.x, p.y}, tip, {tip.x - head * (c - s / 2), tip.y - head * (s + c / 2)}, tip,
+  return {{p.x, p.y},
+          tip,
+          {tip.x - head * (c - s / 2), tip.y - head * (s + c / 2)},
+          tip,
           {tip.x - head * (c + s / 2), tip.y - head * (s - c / 2)}};
 }
 
 std::vector<svg::Point2> segment_track(const CarPose& from, const SteeringSegment& segment, double radius) {
-  const int steps =
-      segment.steer == Steer::straight ? 1 : std::max(2, static_cast<int>(std::ceil(segment.length / radius / (M_PI / 90))));
+  const int steps = segment.steer == Steer::straight
+                        ? 1
+                        : std::max(2, static_cast<int>(std::ceil(segment.length / radius / (M_PI / 90))));
   std::vector<svg::Point2> track;
   for (int i = 0; i <= steps; ++i) {
     const CarPose q = drive(from, segment, radius, segment.length * i / steps);
@@ -69,7 +73,8 @@ svg::Drawing draw_steering(const SteeringPath& path, const CarPose& from, const 
   const svg::Style circles{"none", theme::turning_circle, 1, 1, 1, "4 3"};
   for (const CarPose& p : {from, to})
     for (int side : {1, -1})  // left centre: radius to the left of the heading
-      drawing.polyline(circle(p.x - side * radius * std::sin(p.theta), p.y + side * radius * std::cos(p.theta), radius), circles);
+      drawing.polyline(circle(p.x - side * radius * std::sin(p.theta), p.y + side * radius * std::cos(p.theta), radius),
+                       circles);
   drawing.legend("turning circles", circles, svg::Swatch::line);
   // The poses under the path, so that a short first segment shows over the start's arrow.
   drawing.polyline(pose_arrow(from, radius), line(theme::start, 2.5));

@@ -27,8 +27,8 @@ namespace {
 constexpr const char* kFontFamily = "DejaVu Sans, Helvetica, Arial, sans-serif";
 constexpr double kLegendFontPx = 13;
 constexpr double kLegendRowPx = 18;
-constexpr double kLegendPadPx = 8;     // between the legend box and the picture's edge
-constexpr double kLegendInsetPx = 6;   // between the box's edge and its first row
+constexpr double kLegendPadPx = 8;    // between the legend box and the picture's edge
+constexpr double kLegendInsetPx = 6;  // between the box's edge and its first row
 constexpr double kLegendSwatchPx = 22;
 constexpr double kLegendCharPx = 0.58 * kLegendFontPx;  // a generous average glyph width
 
@@ -172,9 +172,7 @@ Drawing::Drawing(Box2 box, double width_px) {
   ink_.assign(ink_columns_ * ink_rows_, Ink{});
 }
 
-Point2 Drawing::to_screen(Point2 p) const {
-  return {(p.x - view_.xmin) * scale_, (view_.ymax - p.y) * scale_};
-}
+Point2 Drawing::to_screen(Point2 p) const { return {(p.x - view_.xmin) * scale_, (view_.ymax - p.y) * scale_}; }
 
 void Drawing::append_point(std::string& out, Point2 world) const {
   const Point2 s = to_screen(world);
@@ -426,11 +424,10 @@ Drawing::LegendLayout Drawing::legend_layout() const {
     const double bottom = height_px_ - kLegendPadPx - layout.height;
     Ink least;
     bool found = false;
-    for (const auto& [x, y] : {std::pair{left, top}, std::pair{right, top}, std::pair{left, bottom},
-                               std::pair{right, bottom}}) {
+    for (const auto& [x, y] :
+         {std::pair{left, top}, std::pair{right, top}, std::pair{left, bottom}, std::pair{right, bottom}}) {
       const Ink ink = ink_in(x, y, x + layout.width, y + layout.height);
-      if (!found || ink.important < least.important ||
-          (ink.important == least.important && ink.edges < least.edges)) {
+      if (!found || ink.important < least.important || (ink.important == least.important && ink.edges < least.edges)) {
         least = ink;
         layout.x = x;
         layout.y = y;
@@ -467,8 +464,7 @@ void Drawing::append_legend(std::string& out, const LegendLayout& layout) const 
   for (std::size_t i = 0; i < legend_.size(); ++i) {
     const LegendEntry& e = legend_[i];
     const double column_x = layout.x + layout.column_width * static_cast<double>(i / layout.rows);
-    const double mid =
-        layout.y + kLegendInsetPx + kLegendRowPx * (static_cast<double>(i % layout.rows) + 0.5);
+    const double mid = layout.y + kLegendInsetPx + kLegendRowPx * (static_cast<double>(i % layout.rows) + 0.5);
     const double sx = column_x + 8;
     Style s = e.style;
     s.stroke_px = std::min(s.stroke_px, 4.0);

@@ -33,8 +33,9 @@ class BoxAround {
   BoxAround() = default;
   explicit BoxAround(Box2 start) : box_(start), empty_(false) {}
   void add(double x, double y) {
-    box_ = empty_ ? Box2{x, y, x, y}
-                  : Box2{std::min(box_.xmin, x), std::min(box_.ymin, y), std::max(box_.xmax, x), std::max(box_.ymax, y)};
+    box_ = empty_
+               ? Box2{x, y, x, y}
+               : Box2{std::min(box_.xmin, x), std::min(box_.ymin, y), std::max(box_.xmax, x), std::max(box_.ymax, y)};
     empty_ = false;
   }
   // The box, or `none` when no point was added.
@@ -128,9 +129,9 @@ class Drawing {
     Swatch swatch;
   };
   struct LegendLayout {
-    double x = 0, y = 0;          // the box's top-left corner, px
+    double x = 0, y = 0;           // the box's top-left corner, px
     double width = 0, height = 0;  // the box, px
-    std::size_t rows = 0;         // entries per column
+    std::size_t rows = 0;          // entries per column
     double column_width = 0;
     double band = 0;  // px added below the world picture (0 when the legend is inside it)
   };

@@ -86,7 +86,9 @@ inline constexpr const char* trace = "#555";
 // From arm_start at t = 0 to arm_goal at t = 1, channel by channel ("#rrggbb"): the colour of a
 // strobe's configurations along a motion.
 inline std::string start_to_goal(double t) {
-  const auto channel = [](const char* colour, int i) { return static_cast<int>(std::strtol(std::string(colour + 1 + 2 * i, 2).c_str(), nullptr, 16)); };
+  const auto channel = [](const char* colour, int i) {
+    return static_cast<int>(std::strtol(std::string(colour + 1 + 2 * i, 2).c_str(), nullptr, 16));
+  };
   const auto mix = [&](int i) {
     const int a = channel(arm_start, i), b = channel(arm_goal, i);
     return static_cast<int>(std::lround(a + (b - a) * std::clamp(t, 0.0, 1.0)));

@@ -183,10 +183,11 @@ svg::Box2 view_box(const World& world, const CSpace& cspace) {
     for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start))
       for (const ExactPoint& p : part) extend(p);
   }
-  const svg::Box2 all = box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
+  const svg::Box2 all =
+      box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
   if (world.queries.empty()) return all;
-  // Obstacles reaching far beyond the queries (the course's planning problem set's endless wall) would shrink what happens
-  // near them to a line: the view ends twice the queries' extent round them.
+  // Obstacles reaching far beyond the queries (the course's planning problem set's endless wall) would shrink what
+  // happens near them to a line: the view ends twice the queries' extent round them.
   const svg::Box2 q = around_queries.box_or(all);
   const double reach = 2 * std::max({q.xmax - q.xmin, q.ymax - q.ymin, 1.0});
   return {std::max(all.xmin, q.xmin - reach), std::max(all.ymin, q.ymin - reach), std::min(all.xmax, q.xmax + reach),

@@ -27,8 +27,8 @@ struct ExperimentProblem {
 
 // One entry of the experiment's planners: a registry planner with one set of options.
 struct ExperimentPlanner {
-  std::string name;     // the entry's own name ("rrt-bias0.2"), unique in the experiment
-  std::string planner;  // the registry's name ("rrt")
+  std::string name;      // the entry's own name ("rrt-bias0.2"), unique in the experiment
+  std::string planner;   // the registry's name ("rrt")
   OptionValues options;  // as `polyplan planners` names them, without seed and time (the experiment sets those)
   bool anytime = false;  // the registry's planner improves its solution until its limit (PlannerEntry::anytime)
 };

@@ -31,17 +31,21 @@ class ExperimentReader {
     if (!root.is_object()) fail("experiment", "expected a JSON object with problems, planners, seeds and time_limit");
     const std::set<std::string> keys{"name", "problems", "planners", "seeds", "time_limit", "cost_times"};
     for (const auto& [key, value] : root.items())
-      if (!keys.count(key)) fail(key, "unknown key (an experiment has name, problems, planners, seeds, time_limit, cost_times)");
+      if (!keys.count(key))
+        fail(key, "unknown key (an experiment has name, problems, planners, seeds, time_limit, cost_times)");
     Experiment e;
     e.source = file_;
     e.name = root.contains("name") ? text(root["name"], "name") : fs::path(file_).stem().string();
     e.time_limit = positive(required(root, "time_limit"), "time_limit");
     e.seeds = seeds(required(root, "seeds"));
-    e.cost_times = root.contains("cost_times") ? cost_times(root["cost_times"], e.time_limit) : even_steps(e.time_limit);
+    e.cost_times =
+        root.contains("cost_times") ? cost_times(root["cost_times"], e.time_limit) : even_steps(e.time_limit);
     const json& problems = non_empty_array(required(root, "problems"), "problems");
-    for (std::size_t i = 0; i < problems.size(); ++i) e.problems.push_back(problem(problems[i], "problems[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < problems.size(); ++i)
+      e.problems.push_back(problem(problems[i], "problems[" + std::to_string(i) + "]"));
     const json& planners = non_empty_array(required(root, "planners"), "planners");
-    for (std::size_t i = 0; i < planners.size(); ++i) e.planners.push_back(planner(planners[i], "planners[" + std::to_string(i) + "]"));
+    for (std::size_t i = 0; i < planners.size(); ++i)
+      e.planners.push_back(planner(planners[i], "planners[" + std::to_string(i) + "]"));
     unique_names(e);
     check_planners_on_problems(e);
     return e;
@@ -80,7 +84,8 @@ class ExperimentReader {
     for (std::size_t i = 0; i < non_empty_array(value, "cost_times").size(); ++i) {
       const std::string object = "cost_times[" + std::to_string(i) + "]";
       const double t = positive(value[i], object);
-      if (t > time_limit) fail(object, "after the time limit (" + detail::show_number(t) + " > " + detail::show_number(time_limit) + ")");
+      if (t > time_limit)
+        fail(object, "after the time limit (" + detail::show_number(t) + " > " + detail::show_number(time_limit) + ")");
       if (!out.empty() && t <= out.back()) fail(object, "the times must increase");
       out.push_back(t);
     }
@@ -123,7 +128,9 @@ class ExperimentReader {
     const std::string named = text(value, object + ".kind");
     if (named != "world" && named != "arm") fail(object + ".kind", "expected \"world\" or \"arm\"");
     const char* is = kind == ProblemKind::arm ? "arm" : "world";
-    if (named != is) fail(object + ".kind", "\"" + named + "\", but the file is " + (kind == ProblemKind::arm ? "an arm file" : "a world file"));
+    if (named != is)
+      fail(object + ".kind",
+           "\"" + named + "\", but the file is " + (kind == ProblemKind::arm ? "an arm file" : "a world file"));
   }
 
   std::string query(const json& value, const std::string& object, const std::vector<std::string>& names) const {
@@ -133,18 +140,22 @@ class ExperimentReader {
     if (!value.contains("query")) return names.front();
     const json& q = value["query"];
     if (q.is_number_unsigned()) {
-      if (q.get<std::size_t>() >= names.size()) fail(object + ".query", "no query " + q.dump() + " (the file has " + std::to_string(names.size()) + ": " + listed + ")");
+      if (q.get<std::size_t>() >= names.size())
+        fail(object + ".query",
+             "no query " + q.dump() + " (the file has " + std::to_string(names.size()) + ": " + listed + ")");
       return names[q.get<std::size_t>()];
     }
     const std::string name = text(q, object + ".query");
-    if (std::find(names.begin(), names.end(), name) == names.end()) fail(object + ".query", "no query named \"" + name + "\" (queries: " + listed + ")");
+    if (std::find(names.begin(), names.end(), name) == names.end())
+      fail(object + ".query", "no query named \"" + name + "\" (queries: " + listed + ")");
     return name;
   }
 
   ExperimentPlanner planner(const json& value, const std::string& object) const {
     if (!value.is_object()) fail(object, "expected an object with name, planner and options");
     for (const auto& [key, v] : value.items())
-      if (key != "name" && key != "planner" && key != "options") fail(object + "." + key, "unknown key (a planner entry has name, planner, options)");
+      if (key != "name" && key != "planner" && key != "options")
+        fail(object + "." + key, "unknown key (a planner entry has name, planner, options)");
     ExperimentPlanner p;
     p.name = text(required(value, "name", object), object + ".name");
     p.planner = text(required(value, "planner", object), object + ".planner");
@@ -172,10 +183,12 @@ class ExperimentReader {
   void unique_names(const Experiment& e) const {
     std::set<std::string> seen;
     for (std::size_t i = 0; i < e.problems.size(); ++i)
-      if (!seen.insert(e.problems[i].name).second) fail("problems[" + std::to_string(i) + "].name", "\"" + e.problems[i].name + "\" names two problems");
+      if (!seen.insert(e.problems[i].name).second)
+        fail("problems[" + std::to_string(i) + "].name", "\"" + e.problems[i].name + "\" names two problems");
     seen.clear();
     for (std::size_t i = 0; i < e.planners.size(); ++i)
-      if (!seen.insert(e.planners[i].name).second) fail("planners[" + std::to_string(i) + "].name", "\"" + e.planners[i].name + "\" names two planner entries");
+      if (!seen.insert(e.planners[i].name).second)
+        fail("planners[" + std::to_string(i) + "].name", "\"" + e.planners[i].name + "\" names two planner entries");
   }
 
   // Every planner entry is one the registry builds, with its options, for every problem.
@@ -189,11 +202,13 @@ class ExperimentReader {
         try {
           known = &planner_for(p.planner, problem).options;
         } catch (const InputError& error) {
-          fail(object + ".planner", "no planner \"" + p.planner + "\" plans problems[" + std::to_string(j) + "]: " + error.what());
+          fail(object + ".planner",
+               "no planner \"" + p.planner + "\" plans problems[" + std::to_string(j) + "]: " + error.what());
         }
         for (const auto& [key, value] : p.options)
           if (std::none_of(known->begin(), known->end(), [&](const OptionInfo& o) { return o.name == key; }))
-            fail(object + ".options." + key, "unknown option for " + p.planner + " (options: " + option_names(*known) + ")");
+            fail(object + ".options." + key,
+                 "unknown option for " + p.planner + " (options: " + option_names(*known) + ")");
         try {
           // Building is what checks the values; a planner built on a problem costs little beside a run.
           make_planner(p.planner, problem, options_for_run(p.options, *known, e.seeds.front(), e.time_limit));

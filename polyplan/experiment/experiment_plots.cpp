@@ -38,7 +38,8 @@ std::vector<double> nice_ticks(double lo, double hi, int count = 6) {
       break;
     }
   std::vector<double> ticks;
-  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + step * 1e-9; t += step) ticks.push_back(std::abs(t) < step * 1e-9 ? 0 : t);
+  for (double t = std::ceil(lo / step - 1e-9) * step; t <= hi + step * 1e-9; t += step)
+    ticks.push_back(std::abs(t) < step * 1e-9 ? 0 : t);
   return ticks;
 }
 
@@ -57,9 +58,10 @@ std::pair<double, double> padded(double lo, double hi, bool from_zero) {
 // Axes and frame of a chart whose data run over [x0, x1] × [y0, y1].
 class Chart {
  public:
-  Chart(double x0, double x1, double y0, double y1, const std::string& title, const std::string& x_name, const std::string& y_name,
-        double bottom_room = 0.2)
-      : drawing_(svg::Box2{-0.2, -bottom_room, kWidth + 0.05, kHeight + 0.12}, 820), x0_(x0), x1_(x1), y0_(y0), y1_(y1) {
+  Chart(double x0, double x1, double y0, double y1, const std::string& title, const std::string& x_name,
+        const std::string& y_name, double bottom_room = 0.2)
+      : drawing_(svg::Box2{-0.2, -bottom_room, kWidth + 0.05, kHeight + 0.12}, 820), x0_(x0), x1_(x1), y0_(y0),
+        y1_(y1) {
     const svg::Style frame{"none", theme::ink, 1.0, 1, 1, ""};
     const svg::Style grid{"none", "#dddddd", 0.8, 1, 1, ""};
     for (double t : nice_ticks(y0, y1)) {
@@ -84,7 +86,9 @@ class Chart {
   double to_x(double v) const { return (v - x0_) / (x1_ - x0_) * kWidth; }
   double to_y(double v) const { return (v - y0_) / (y1_ - y0_) * kHeight; }
   Point2 at(double x, double y) const { return {to_x(x), to_y(y)}; }
-  double text_width(const std::string& text, double px) const { return 0.6 * px * static_cast<double>(text.size()) / drawing_.scale(); }
+  double text_width(const std::string& text, double px) const {
+    return 0.6 * px * static_cast<double>(text.size()) / drawing_.scale();
+  }
   svg::Drawing& drawing() { return drawing_; }
 
  private:
@@ -100,7 +104,8 @@ std::string title_of(const Experiment& e, std::size_t problem, const std::string
 
 }  // namespace
 
-svg::Drawing success_rate_plot(const Experiment& e, std::size_t problem, const std::vector<CellStatistics>& statistics) {
+svg::Drawing success_rate_plot(const Experiment& e, std::size_t problem,
+                               const std::vector<CellStatistics>& statistics) {
   double end = e.time_limit;
   for (const CellStatistics& s : statistics)
     for (double t : s.first_solutions)
@@ -122,7 +127,8 @@ svg::Drawing success_rate_plot(const Experiment& e, std::size_t problem, const s
   return std::move(chart.drawing());
 }
 
-std::optional<svg::Drawing> cost_over_time_plot(const Experiment& e, std::size_t problem, const std::vector<CellStatistics>& statistics) {
+std::optional<svg::Drawing> cost_over_time_plot(const Experiment& e, std::size_t problem,
+                                                const std::vector<CellStatistics>& statistics) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   bool any = false;
   for (std::size_t i = 0; i < statistics.size(); ++i) {
@@ -142,7 +148,9 @@ std::optional<svg::Drawing> cost_over_time_plot(const Experiment& e, std::size_t
     // The band and the median where they are finite: a run without a solution has no cost yet.
     std::vector<Point2> upper, lower, median;
     for (std::size_t t = 0; t < costs.size(); ++t) {
-      if (std::isfinite(costs[t].q3)) upper.push_back(chart.at(e.cost_times[t], costs[t].q3)), lower.push_back(chart.at(e.cost_times[t], costs[t].q1));
+      if (std::isfinite(costs[t].q3))
+        upper.push_back(chart.at(e.cost_times[t], costs[t].q3)),
+            lower.push_back(chart.at(e.cost_times[t], costs[t].q1));
       if (std::isfinite(costs[t].median)) median.push_back(chart.at(e.cost_times[t], costs[t].median));
     }
     if (upper.size() > 1) {
@@ -157,8 +165,11 @@ std::optional<svg::Drawing> cost_over_time_plot(const Experiment& e, std::size_t
   return std::move(chart.drawing());
 }
 
-svg::Drawing box_plot(const Experiment& e, std::size_t problem, const std::vector<CellStatistics>& statistics, BoxPlotOf of) {
-  const auto summary = [&](const CellStatistics& s) -> const ValueSummary& { return of == BoxPlotOf::time ? s.time : s.length; };
+svg::Drawing box_plot(const Experiment& e, std::size_t problem, const std::vector<CellStatistics>& statistics,
+                      BoxPlotOf of) {
+  const auto summary = [&](const CellStatistics& s) -> const ValueSummary& {
+    return of == BoxPlotOf::time ? s.time : s.length;
+  };
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (const CellStatistics& s : statistics)
     if (summary(s).count) lo = std::min(lo, summary(s).min), hi = std::max(hi, summary(s).max);
@@ -173,8 +184,9 @@ svg::Drawing box_plot(const Experiment& e, std::size_t problem, const std::vecto
     const ValueSummary& s = summary(statistics[i]);
     const svg::Style edge = line(i, 1.5);
     if (s.count) {
-      d.polygon({{chart.at(x - half, s.q1), chart.at(x + half, s.q1), chart.at(x + half, s.q3), chart.at(x - half, s.q3)}},
-                svg::filled(theme::path_colour(i), 0.25, theme::path_colour(i), 1.5));
+      d.polygon(
+          {{chart.at(x - half, s.q1), chart.at(x + half, s.q1), chart.at(x + half, s.q3), chart.at(x - half, s.q3)}},
+          svg::filled(theme::path_colour(i), 0.25, theme::path_colour(i), 1.5));
       d.segments({{chart.at(x - half, s.median), chart.at(x + half, s.median)},
                   {chart.at(x, s.q3), chart.at(x, s.whisker_high)},
                   {chart.at(x, s.q1), chart.at(x, s.whisker_low)},
@@ -190,8 +202,8 @@ svg::Drawing box_plot(const Experiment& e, std::size_t problem, const std::vecto
     const Point2 foot = d.to_screen(chart.at(x, y0));
     const std::string label = e.planners[i].name + (s.count ? "" : " (none)");
     d.raw("<text x=\"" + svg::format_number(foot.x) + "\" y=\"" + svg::format_number(foot.y + 14) +
-          "\" font-size=\"11\" fill=\"#222\" text-anchor=\"end\" transform=\"rotate(-35 " + svg::format_number(foot.x) + " " +
-          svg::format_number(foot.y + 14) + ")\">" + svg::escape_xml(label) + "</text>\n");
+          "\" font-size=\"11\" fill=\"#222\" text-anchor=\"end\" transform=\"rotate(-35 " + svg::format_number(foot.x) +
+          " " + svg::format_number(foot.y + 14) + ")\">" + svg::escape_xml(label) + "</text>\n");
   }
   return std::move(chart.drawing());
 }

@@ -13,7 +13,8 @@
 namespace polyplan {
 
 // Of `statistics` (experiment_statistics(...)[problem]): the share of runs solved by each time.
-svg::Drawing success_rate_plot(const Experiment& experiment, std::size_t problem, const std::vector<CellStatistics>& statistics);
+svg::Drawing success_rate_plot(const Experiment& experiment, std::size_t problem,
+                               const std::vector<CellStatistics>& statistics);
 
 // The median and the quartiles of the best cost at each of the experiment's cost_times, for the
 // anytime planner entries; none when the experiment has none (or no cost_times).
@@ -22,6 +23,7 @@ std::optional<svg::Drawing> cost_over_time_plot(const Experiment& experiment, st
 
 enum class BoxPlotOf { time, length };
 // A box per planner entry: every run's time, or the solved runs' lengths.
-svg::Drawing box_plot(const Experiment& experiment, std::size_t problem, const std::vector<CellStatistics>& statistics, BoxPlotOf of);
+svg::Drawing box_plot(const Experiment& experiment, std::size_t problem, const std::vector<CellStatistics>& statistics,
+                      BoxPlotOf of);
 
 }  // namespace polyplan

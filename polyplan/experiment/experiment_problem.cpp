@@ -12,7 +12,8 @@ namespace {
 std::size_t query_index(const Problem& problem, const std::string& name) {
   const std::vector<std::string> names = problem.query_names();
   const auto at = std::find(names.begin(), names.end(), name);
-  if (at == names.end()) throw std::logic_error(problem.source() + ": no query named " + name + " (the experiment's reader checks it)");
+  if (at == names.end())
+    throw std::logic_error(problem.source() + ": no query named " + name + " (the experiment's reader checks it)");
   return static_cast<std::size_t>(at - names.begin());
 }
 

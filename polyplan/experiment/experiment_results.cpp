@@ -22,14 +22,18 @@ json finite_or_null(double value) { return std::isfinite(value) ? json(value) : 
 json experiment_json(const Experiment& e) {
   json problems = json::array(), planners = json::array();
   for (const ExperimentProblem& p : e.problems)
-    problems.push_back({{"name", p.name}, {"file", p.file}, {"kind", p.kind == ProblemKind::arm ? "arm" : "world"}, {"query", p.query}});
+    problems.push_back({{"name", p.name},
+                        {"file", p.file},
+                        {"kind", p.kind == ProblemKind::arm ? "arm" : "world"},
+                        {"query", p.query}});
   for (const ExperimentPlanner& p : e.planners) {
     json options = json::object();
     for (const auto& [key, value] : p.options) options[key] = value;
     planners.push_back({{"name", p.name}, {"planner", p.planner}, {"options", options}, {"anytime", p.anytime}});
   }
-  return {{"name", e.name}, {"file", e.source},         {"time_limit", e.time_limit}, {"seeds", e.seeds},
-          {"cost_times", e.cost_times}, {"problems", problems}, {"planners", planners}};
+  return {{"name", e.name},      {"file", e.source},           {"time_limit", e.time_limit},
+          {"seeds", e.seeds},    {"cost_times", e.cost_times}, {"problems", problems},
+          {"planners", planners}};
 }
 
 json run_json(const Experiment& e, const ExperimentRun& run) {
@@ -54,8 +58,10 @@ json run_json(const Experiment& e, const ExperimentRun& run) {
 }
 
 json summary_json(const ValueSummary& s) {
-  return {{"mean", finite_or_null(s.mean)}, {"std", s.stddev}, {"median", finite_or_null(s.median)},
-          {"q1", finite_or_null(s.q1)},     {"q3", finite_or_null(s.q3)}, {"min", finite_or_null(s.min)}, {"max", finite_or_null(s.max)}};
+  return {{"mean", finite_or_null(s.mean)},     {"std", s.stddev},
+          {"median", finite_or_null(s.median)}, {"q1", finite_or_null(s.q1)},
+          {"q3", finite_or_null(s.q3)},         {"min", finite_or_null(s.min)},
+          {"max", finite_or_null(s.max)}};
 }
 
 // CSV: a field with a comma, a quote or a line break in quotes, its quotes doubled.
@@ -119,8 +125,8 @@ void write_experiment_results_csv(std::ostream& out, const Experiment& experimen
   for (const std::string& name : facts) out << ',' << csv_field(name);
   out << ",why_not\n";
   for (const ExperimentRun& run : results.runs) {
-    out << csv_field(experiment.problems[run.problem].name) << ',' << csv_field(experiment.planners[run.planner].name) << ','
-        << csv_field(ompl_planner_name(experiment, run.problem, run.planner)) << ',' << run.seed << ','
+    out << csv_field(experiment.problems[run.problem].name) << ',' << csv_field(experiment.planners[run.planner].name)
+        << ',' << csv_field(ompl_planner_name(experiment, run.problem, run.planner)) << ',' << run.seed << ','
         << (run.solved ? "true" : "false") << ',' << to_string(run.status) << ',' << csv_number(run.seconds) << ','
         << csv_number(run.setup_seconds) << ',' << (run.solved ? csv_number(run.length) : "") << ','
         << csv_number(run.first_solution_seconds());

@@ -7,7 +7,8 @@
 //              "seed": 1, "solved": true, "status": "solved", "time": 0.0123, "setup_time": 0.001,
 //              "length": 57.2, "first_solution_time": 0.011, "improvements": [[0.011, 60.1], ...],
 //              "cost_at": [null, 57.2, ...], "why_not": "...", "facts": {...}}, ...],
-//    "summary": [{"problem", "planner", "log_planner", "runs", "solved", "success_rate", "time": {...}, "length": {...}}, ...]}
+//    "summary": [{"problem", "planner", "log_planner", "runs", "solved", "success_rate", "time": {...}, "length":
+//    {...}}, ...]}
 //
 // "time" is the run's property "time" in results.log (the same double); "log_planner" is the
 // planner the log files the run under; "cost_at" is the best length at each of cost_times (null

@@ -50,7 +50,8 @@ class Worker {
     try {
       const Problem& file = this->file(run.problem);
       const std::vector<OptionInfo>& known = planner_for(entry.planner, file).options;
-      run_once(file, entry.planner, options_for_run(entry.options, known, run.seed, experiment_.time_limit), problem.query, run);
+      run_once(file, entry.planner, options_for_run(entry.options, known, run.seed, experiment_.time_limit),
+               problem.query, run);
     } catch (const std::exception& e) {
       run.status = PlanStatus::not_found;
       run.solved = false;

@@ -15,6 +15,7 @@ using ExperimentProgress = std::function<void(std::size_t done, std::size_t tota
 
 // The runs in cell order. A run whose planner throws (a bug, not an answer) is recorded as not
 // found with the exception's message in why_not, so that one run cannot lose a long experiment.
-ExperimentResults run_experiment(const Experiment& experiment, unsigned threads, const ExperimentProgress& progress = {});
+ExperimentResults run_experiment(const Experiment& experiment, unsigned threads,
+                                 const ExperimentProgress& progress = {});
 
 }  // namespace polyplan

@@ -46,11 +46,14 @@ ValueSummary summarize(std::vector<double> values) {
   return s;
 }
 
-std::vector<std::vector<CellStatistics>> experiment_statistics(const Experiment& experiment, const ExperimentResults& results) {
+std::vector<std::vector<CellStatistics>> experiment_statistics(const Experiment& experiment,
+                                                               const ExperimentResults& results) {
   std::vector<std::vector<const ExperimentRun*>> runs(experiment.problems.size() * experiment.planners.size());
-  for (const ExperimentRun& run : results.runs) runs[run.problem * experiment.planners.size() + run.planner].push_back(&run);
+  for (const ExperimentRun& run : results.runs)
+    runs[run.problem * experiment.planners.size() + run.planner].push_back(&run);
 
-  std::vector<std::vector<CellStatistics>> statistics(experiment.problems.size(), std::vector<CellStatistics>(experiment.planners.size()));
+  std::vector<std::vector<CellStatistics>> statistics(experiment.problems.size(),
+                                                      std::vector<CellStatistics>(experiment.planners.size()));
   for (std::size_t problem = 0; problem < experiment.problems.size(); ++problem)
     for (std::size_t planner = 0; planner < experiment.planners.size(); ++planner) {
       const auto& cell = runs[problem * experiment.planners.size() + planner];

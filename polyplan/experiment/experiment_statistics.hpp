@@ -26,10 +26,10 @@ ValueSummary summarize(std::vector<double> values);
 // A planner entry on a problem.
 struct CellStatistics {
   std::size_t runs = 0, solved = 0;
-  double success_rate = 0;       // solved / runs
-  ValueSummary time;             // seconds of every run
-  ValueSummary length;           // of the solved runs
-  ValueSummary first_solution;   // seconds to the first solution, of the solved runs
+  double success_rate = 0;      // solved / runs
+  ValueSummary time;            // seconds of every run
+  ValueSummary length;          // of the solved runs
+  ValueSummary first_solution;  // seconds to the first solution, of the solved runs
   // At each of the experiment's cost_times: the best cost by then over every run (+infinity for a
   // run without a solution yet), and the share of runs solved by then.
   std::vector<ValueSummary> cost_at;
@@ -39,6 +39,7 @@ struct CellStatistics {
 };
 
 // statistics[problem][planner entry].
-std::vector<std::vector<CellStatistics>> experiment_statistics(const Experiment& experiment, const ExperimentResults& results);
+std::vector<std::vector<CellStatistics>> experiment_statistics(const Experiment& experiment,
+                                                               const ExperimentResults& results);
 
 }  // namespace polyplan

@@ -58,20 +58,23 @@ void write_cost_table(std::ostream& out, const Experiment& e, const std::vector<
 
 void write_experiment_tables(std::ostream& out, const Experiment& experiment, const ExperimentResults& results) {
   const auto statistics = experiment_statistics(experiment, results);
-  out << "# " << experiment.name << "\n\n" << experiment.seeds.size() << " runs per planner entry and problem (seeds), "
-      << brief(experiment.time_limit) << " s per run. Cost: the path's length over the solved runs; time: seconds per run.\n";
+  out << "# " << experiment.name << "\n\n"
+      << experiment.seeds.size() << " runs per planner entry and problem (seeds), " << brief(experiment.time_limit)
+      << " s per run. Cost: the path's length over the solved runs; time: seconds per run.\n";
   bool any_anytime = false;
   for (const ExperimentPlanner& p : experiment.planners) any_anytime = any_anytime || p.anytime;
   for (std::size_t problem = 0; problem < experiment.problems.size(); ++problem) {
     const ExperimentProblem& p = experiment.problems[problem];
     out << "\n## " << p.name << "\n\n" << p.file << ", query " << p.query << "\n\n";
-    out << "| planner | options | success | cost (mean ± std) | cost (median) | time s (mean ± std) | time s (median) | first solution s (median) |\n";
+    out << "| planner | options | success | cost (mean ± std) | cost (median) | time s (mean ± std) | time s (median) "
+           "| first solution s (median) |\n";
     out << "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |\n";
     for (std::size_t planner = 0; planner < experiment.planners.size(); ++planner) {
       const CellStatistics& s = statistics[problem][planner];
-      out << "| " << experiment.planners[planner].name << " | " << options_text(experiment.planners[planner]) << " | " << s.solved
-          << "/" << s.runs << " | " << mean_and_spread(s.length) << " | " << (s.length.count ? brief(s.length.median) : "–") << " | "
-          << mean_and_spread(s.time) << " | " << (s.time.count ? brief(s.time.median) : "–") << " | "
+      out << "| " << experiment.planners[planner].name << " | " << options_text(experiment.planners[planner]) << " | "
+          << s.solved << "/" << s.runs << " | " << mean_and_spread(s.length) << " | "
+          << (s.length.count ? brief(s.length.median) : "–") << " | " << mean_and_spread(s.time) << " | "
+          << (s.time.count ? brief(s.time.median) : "–") << " | "
           << (s.first_solution.count ? brief(s.first_solution.median) : "–") << " |\n";
     }
     if (any_anytime && !experiment.cost_times.empty()) write_cost_table(out, experiment, statistics[problem]);

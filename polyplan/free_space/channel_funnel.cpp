@@ -7,7 +7,8 @@ namespace polyplan {
 // The funnel is the apex (the last bend) and two rays through the tightest left and right portal
 // ends seen so far. A new portal end that narrows the funnel moves its ray; one that crosses the
 // other ray makes that ray's end a bend — the new apex, from whose portal the walk restarts.
-std::vector<ExactPoint> funnel_path(const ExactPoint& start, const std::vector<Portal>& portals, const ExactPoint& goal) {
+std::vector<ExactPoint> funnel_path(const ExactPoint& start, const std::vector<Portal>& portals,
+                                    const ExactPoint& goal) {
   std::vector<Portal> gates;
   gates.reserve(portals.size() + 2);
   gates.push_back({start, start});

@@ -19,6 +19,7 @@ struct Portal {
 // start, the portal ends where the shortest path bends, goal. The channel's cells must be convex,
 // start in the closure of the first, goal in the closure of the last, and each portal the shared
 // side of two consecutive cells.
-std::vector<ExactPoint> funnel_path(const ExactPoint& start, const std::vector<Portal>& portals, const ExactPoint& goal);
+std::vector<ExactPoint> funnel_path(const ExactPoint& start, const std::vector<Portal>& portals,
+                                    const ExactPoint& goal);
 
 }  // namespace polyplan

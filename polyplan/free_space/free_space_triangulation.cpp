@@ -58,7 +58,8 @@ struct FreeSpaceTriangulation::Impl {
   }
 
   static bool in_cone(const Point& apex, const Cone& c, const Point& q) {
-    return CGAL::orientation(apex, c.right, q) != CGAL::RIGHT_TURN && CGAL::orientation(apex, c.left, q) != CGAL::LEFT_TURN;
+    return CGAL::orientation(apex, c.right, q) != CGAL::RIGHT_TURN &&
+           CGAL::orientation(apex, c.left, q) != CGAL::LEFT_TURN;
   }
 
   // The part of `cone` that passes through the edge a-b; false when none passes through the
@@ -127,21 +128,19 @@ struct FreeSpaceTriangulation::Impl {
     const Face located = cdt.locate(p, type, li);
     if (found) *found = located;
     switch (type) {
-      case CDT::FACE:
-        faces.push_back(located);
-        break;
+      case CDT::FACE: faces.push_back(located); break;
       case CDT::EDGE:
         faces.push_back(located);
         faces.push_back(located->neighbor(li));
         break;
       case CDT::VERTEX: {
         auto face = cdt.incident_faces(located->vertex(li)), first = face;
-        do faces.push_back(face); while (++face != first);
+        do faces.push_back(face);
+        while (++face != first);
         if (vertex) *vertex = located->vertex(li);
         break;
       }
-      default:
-        break;
+      default: break;
     }
     return faces;
   }
@@ -278,7 +277,8 @@ FreeSpaceTriangulation::Arrays FreeSpaceTriangulation::arrays() const {
   return arrays;
 }
 
-void FreeSpaceTriangulation::visible_from_corner(std::size_t v, std::size_t wedge, std::vector<std::size_t>& out) const {
+void FreeSpaceTriangulation::visible_from_corner(std::size_t v, std::size_t wedge,
+                                                 std::vector<std::size_t>& out) const {
   const Impl& t = *impl_;
   t.begin_query();
   t.seen[v] = t.generation;  // not itself
@@ -343,11 +343,13 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
 // Walks the segment a-b through the triangulation: across unconstrained edges, along edges, and
 // through vertices, where docs/design.md's pinch rule decides (arrive and leave in one free wedge).
 // Entering a blocked triangle or crossing a constrained edge is entering a C-obstacle.
-std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, const Point& b, const Place* a_place) const {
+std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, const Point& b,
+                                                               const Place* a_place) const {
   const Impl& t = *impl_;
   if (a == b) {
     const std::vector<Face> faces = t.faces_at(a);
-    if (std::none_of(faces.begin(), faces.end(), [](Face f) { return f->info().free; })) return std::string("the point is blocked");
+    if (std::none_of(faces.begin(), faces.end(), [](Face f) { return f->info().free; }))
+      return std::string("the point is blocked");
     return std::nullopt;
   }
   auto ahead = [&](const Point& q) {  // strictly beyond a in the direction of b
@@ -356,22 +358,18 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
   auto on_segment_before = [&](const Point& q, const Point& far) {  // b on [q, far]?
     return CGAL::collinear(q, far, b) && CGAL::collinear_are_ordered_along_line(q, b, far);
   };
-  Face face;                 // the triangle the segment runs into, or
-  VertexHandle at;           // the vertex the segment passes through
-  VertexHandle came_from;    // the vertex we left the last time, if any
-  bool arrived = false;      // at a vertex: reached it along the segment (not its start)
+  Face face;               // the triangle the segment runs into, or
+  VertexHandle at;         // the vertex the segment passes through
+  VertexHandle came_from;  // the vertex we left the last time, if any
+  bool arrived = false;    // at a vertex: reached it along the segment (not its start)
 
   CDT::Locate_type type;
   int li = 0;
   if (t.cdt.dimension() < 2) return std::string("no free space");
   const Face start = t.cdt.locate(a, type, li, a_place ? a_place->face : Face());
   switch (type) {
-    case CDT::FACE:
-      face = start;
-      break;
-    case CDT::VERTEX:
-      at = start->vertex(li);
-      break;
+    case CDT::FACE: face = start; break;
+    case CDT::VERTEX: at = start->vertex(li); break;
     case CDT::EDGE: {
       // An edge between two blocked triangles lies inside a C-obstacle (a free-space boundary
       // edge has a free side).
@@ -388,8 +386,7 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
       }
       break;
     }
-    default:
-      return std::string("the start is outside the free space");
+    default: return std::string("the start is outside the free space");
   }
 
   for (std::size_t steps = 0; steps < 4 * t.cdt.number_of_faces() + 8; ++steps) {
@@ -426,7 +423,8 @@ std::optional<std::string> FreeSpaceTriangulation::why_blocked(const Point& a, c
         arrived = true;
         continue;
       }
-      if (next_face == Face() || !next_face->info().free) return "enters a C-obstacle at " + to_text(came_from->point());
+      if (next_face == Face() || !next_face->info().free)
+        return "enters a C-obstacle at " + to_text(came_from->point());
       face = next_face;
       continue;
     }

@@ -27,7 +27,8 @@ using CDT = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predi
 struct Cells {
   const GridMap& map;
   bool blocked(std::int64_t x, std::int64_t y) const {
-    return x < 0 || y < 0 || x >= map.width || y >= map.height || map.is_blocked(static_cast<int>(x), static_cast<int>(y));
+    return x < 0 || y < 0 || x >= map.width || y >= map.height ||
+           map.is_blocked(static_cast<int>(x), static_cast<int>(y));
   }
   // The boundary edges leaving grid point (x, y), counter-clockwise from +x (+x, +y, -x, -y; the
   // left of +x is the +y side): the cells beside each, and which one lies on the left.
@@ -41,7 +42,8 @@ struct Cells {
     return edges;
   }
   static bool is_vertex(const std::vector<IntegerTriangulation::Parts::WedgeEdge>& edges) {
-    return edges.size() == 4 || (edges.size() == 2 && edges[0].direction.x * edges[1].direction.y != edges[0].direction.y * edges[1].direction.x);
+    return edges.size() == 4 || (edges.size() == 2 && edges[0].direction.x * edges[1].direction.y !=
+                                                          edges[0].direction.y * edges[1].direction.x);
   }
 };
 
@@ -74,7 +76,7 @@ IntegerTriangulation IntegerTriangulation::from_grid(const GridMap& map) {
         if (open >= 0) runs.emplace_back(static_cast<std::size_t>(open), static_cast<std::size_t>(v->second));
         // A run leaves this vertex forwards when the unit edge after it is a boundary edge.
         const bool forward = along < length && (horizontal ? cells.blocked(x, y - 1) != cells.blocked(x, y)
-                                                          : cells.blocked(x - 1, y) != cells.blocked(x, y));
+                                                           : cells.blocked(x - 1, y) != cells.blocked(x, y));
         open = forward ? v->second : -1;
       }
     }
@@ -89,9 +91,11 @@ IntegerTriangulation IntegerTriangulation::from_grid(const GridMap& map) {
   cdt.insert_constraints(points.begin(), points.end(), runs.begin(), runs.end());
   if (cdt.dimension() < 2) return assemble(parts);
   for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    v->info() = vertex_at.at(static_cast<std::int64_t>(v->point().y()) * row + static_cast<std::int64_t>(v->point().x()));
+    v->info() =
+        vertex_at.at(static_cast<std::int64_t>(v->point().y()) * row + static_cast<std::int64_t>(v->point().x()));
   std::unordered_map<const void*, int> face_index;
-  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) face_index.emplace(&*f, static_cast<int>(face_index.size()));
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    face_index.emplace(&*f, static_cast<int>(face_index.size()));
   parts.triangles.resize(face_index.size());
   for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f) {
     Parts::Triangle& t = parts.triangles[static_cast<std::size_t>(face_index.at(&*f))];

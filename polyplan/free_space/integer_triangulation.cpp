@@ -23,7 +23,6 @@ bool angle_less(const IntegerPoint& a, const IntegerPoint& b) {
 }
 bool same_direction(const IntegerPoint& a, const IntegerPoint& b) { return cross_product(a, b) == 0 && dot(a, b) > 0; }
 
-
 std::optional<std::int64_t> integer(const FT& value) {
   const Rational q = to_rational(value);
   if (q.get_den() != 1 || abs(q.get_num()) >= kIntegerCoordinateLimit) return std::nullopt;
@@ -112,7 +111,7 @@ IntegerTriangulation IntegerTriangulation::assemble(const Parts& parts) {
     for (int i = 0; i < t.buckets_x_; ++i) {
       const int bx = by % 2 == 0 ? i : t.buckets_x_ - 1 - i;  // snake order: each walk is short
       const IntegerPoint centre{std::min(t.high_.x, t.low_.x + bx * t.bucket_size_ + t.bucket_size_ / 2),
-                            std::min(t.high_.y, t.low_.y + by * t.bucket_size_ + t.bucket_size_ / 2)};
+                                std::min(t.high_.y, t.low_.y + by * t.bucket_size_ + t.bucket_size_ / 2)};
       const Location found = t.locate_from(from, centre);
       if (found.triangle >= 0) from = found.triangle;
       t.bucket_triangle_[static_cast<std::size_t>(by) * t.buckets_x_ + bx] = from;
@@ -129,7 +128,8 @@ std::size_t IntegerTriangulation::memory_bytes() const {
 bool IntegerTriangulation::in_closed_triangle(int triangle, const IntegerPoint& q) const {
   const Triangle& t = triangles_[static_cast<std::size_t>(triangle)];
   for (int i = 0; i < 3; ++i)
-    if (orientation(points_[static_cast<std::size_t>(t.vertex[ccw(i)])], points_[static_cast<std::size_t>(t.vertex[cw(i)])], q) < 0)
+    if (orientation(points_[static_cast<std::size_t>(t.vertex[ccw(i)])],
+                    points_[static_cast<std::size_t>(t.vertex[cw(i)])], q) < 0)
       return false;
   return true;
 }
@@ -142,11 +142,13 @@ IntegerTriangulation::Location IntegerTriangulation::locate_from(int triangle, c
     for (int i = 0; i < 3; ++i)
       if (points_[static_cast<std::size_t>(tri.vertex[i])] == p) return Location{Location::vertex, t, tri.vertex[i]};
     for (int i = 0; i < 3; ++i)
-      if (orientation(points_[static_cast<std::size_t>(tri.vertex[ccw(i)])], points_[static_cast<std::size_t>(tri.vertex[cw(i)])], p) == 0)
+      if (orientation(points_[static_cast<std::size_t>(tri.vertex[ccw(i)])],
+                      points_[static_cast<std::size_t>(tri.vertex[cw(i)])], p) == 0)
         return Location{Location::edge, t, i};
     return Location{Location::face, t, -1};
   };
-  std::uint64_t random = static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4FULL;
+  std::uint64_t random =
+      static_cast<std::uint64_t>(p.x) * 0x9E3779B97F4A7C15ULL ^ static_cast<std::uint64_t>(p.y) * 0xC2B2AE3D27D4EB4FULL;
   for (std::size_t steps = 0; steps < 4 * triangles_.size() + 16; ++steps) {
     const Triangle& t = triangles_[static_cast<std::size_t>(triangle)];
     random = random * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -154,7 +156,8 @@ IntegerTriangulation::Location IntegerTriangulation::locate_from(int triangle, c
     int beyond = -1;
     for (int k = 0; k < 3 && beyond < 0; ++k) {
       const int i = (first + k) % 3;
-      if (orientation(points_[static_cast<std::size_t>(t.vertex[ccw(i)])], points_[static_cast<std::size_t>(t.vertex[cw(i)])], p) < 0)
+      if (orientation(points_[static_cast<std::size_t>(t.vertex[ccw(i)])],
+                      points_[static_cast<std::size_t>(t.vertex[cw(i)])], p) < 0)
         beyond = i;
     }
     if (beyond < 0) return classify(triangle);
@@ -168,7 +171,8 @@ IntegerTriangulation::Location IntegerTriangulation::locate_from(int triangle, c
 
 IntegerTriangulation::Location IntegerTriangulation::locate(const IntegerPoint& p) const {
   if (triangles_.empty() || p.x < low_.x || p.y < low_.y || p.x > high_.x || p.y > high_.y) return {};
-  const auto bx = static_cast<std::size_t>((p.x - low_.x) / bucket_size_), by = static_cast<std::size_t>((p.y - low_.y) / bucket_size_);
+  const auto bx = static_cast<std::size_t>((p.x - low_.x) / bucket_size_),
+             by = static_cast<std::size_t>((p.y - low_.y) / bucket_size_);
   return locate_from(bucket_triangle_[by * static_cast<std::size_t>(buckets_x_) + bx], p);
 }
 
@@ -187,9 +191,11 @@ std::optional<std::size_t> IntegerTriangulation::wedge(std::size_t v, const Inte
   const auto first = wedges_.begin() + static_cast<std::ptrdiff_t>(wedge_begin_[v]);
   const auto last = wedges_.begin() + static_cast<std::ptrdiff_t>(wedge_begin_[v + 1]);
   const std::size_t n = static_cast<std::size_t>(last - first);
-  const auto after = std::upper_bound(first, last, d, [](const IntegerPoint& dir, const WedgeEdge& e) { return angle_less(dir, e.direction); });
+  const auto after = std::upper_bound(
+      first, last, d, [](const IntegerPoint& dir, const WedgeEdge& e) { return angle_less(dir, e.direction); });
   std::size_t k = after == first ? n - 1 : static_cast<std::size_t>(after - first) - 1;
-  if (same_direction(first[static_cast<std::ptrdiff_t>(k)].direction, d) && !first[static_cast<std::ptrdiff_t>(k)].free_on_left)
+  if (same_direction(first[static_cast<std::ptrdiff_t>(k)].direction, d) &&
+      !first[static_cast<std::ptrdiff_t>(k)].free_on_left)
     k = (k + n - 1) % n;
   if (!first[static_cast<std::ptrdiff_t>(k)].free_on_left) return std::nullopt;
   return k;
@@ -198,9 +204,7 @@ std::optional<std::size_t> IntegerTriangulation::wedge(std::size_t v, const Inte
 template <typename Visit>
 void IntegerTriangulation::for_each_triangle_at(const Location& where, Visit visit) const {
   switch (where.type) {
-    case Location::face:
-      visit(where.triangle);
-      break;
+    case Location::face: visit(where.triangle); break;
     case Location::edge: {
       visit(where.triangle);
       const int other = triangles_[static_cast<std::size_t>(where.triangle)].neighbour[where.index];
@@ -212,8 +216,7 @@ void IntegerTriangulation::for_each_triangle_at(const Location& where, Visit vis
       for (std::size_t i = fan_begin_[v]; i < fan_begin_[v + 1]; ++i) visit(fan_[i]);
       break;
     }
-    default:
-      break;
+    default: break;
   }
 }
 
@@ -237,8 +240,8 @@ void IntegerTriangulation::report(int vertex, std::vector<int>& out, Scratch& sc
 
 // Enters the triangle across `edge` with the part of the cone (right, left) that crosses the
 // edge's interior, keeping a positive width (free_space_triangulation.cpp's `narrow` says why).
-void IntegerTriangulation::cross(const IntegerPoint& apex, int triangle, int edge, const IntegerPoint& right, const IntegerPoint& left,
-                                 Scratch& scratch) const {
+void IntegerTriangulation::cross(const IntegerPoint& apex, int triangle, int edge, const IntegerPoint& right,
+                                 const IntegerPoint& left, Scratch& scratch) const {
   const Triangle& t = triangles_[static_cast<std::size_t>(triangle)];
   if (t.is_constrained(edge)) return;
   const IntegerPoint& a = points_[static_cast<std::size_t>(t.vertex[ccw(edge)])];
@@ -270,7 +273,8 @@ void IntegerTriangulation::expand(const IntegerPoint& apex, std::vector<int>& ou
   }
 }
 
-void IntegerTriangulation::expand_from(const IntegerPoint& apex, int triangle, std::vector<int>& out, Scratch& scratch) const {
+void IntegerTriangulation::expand_from(const IntegerPoint& apex, int triangle, std::vector<int>& out,
+                                       Scratch& scratch) const {
   const Triangle& t = triangles_[static_cast<std::size_t>(triangle)];
   for (int i = 0; i < 3; ++i) {
     report(t.vertex[i], out, scratch);
@@ -296,7 +300,8 @@ bool IntegerTriangulation::visible_from_point(const IntegerPoint& p, const Locat
   return any_free;
 }
 
-void IntegerTriangulation::visible_from_corner(std::size_t v, std::size_t wedge_index, std::vector<int>& out, Scratch& scratch) const {
+void IntegerTriangulation::visible_from_corner(std::size_t v, std::size_t wedge_index, std::vector<int>& out,
+                                               Scratch& scratch) const {
   begin(scratch);
   scratch.seen[v] = scratch.generation;
   const IntegerPoint& apex = points_[v];
@@ -318,12 +323,14 @@ void IntegerTriangulation::components_at(const Location& where, std::vector<int>
   out.clear();
   for_each_triangle_at(where, [&](int t) {
     const Triangle& triangle = triangles_[static_cast<std::size_t>(t)];
-    if (triangle.free && std::find(out.begin(), out.end(), triangle.component) == out.end()) out.push_back(triangle.component);
+    if (triangle.free && std::find(out.begin(), out.end(), triangle.component) == out.end())
+      out.push_back(triangle.component);
   });
 }
 
 // free_space_triangulation.cpp's why_blocked, step for step, in integers.
-IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntegerPoint& a, const Location& from, const IntegerPoint& b) const {
+IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntegerPoint& a, const Location& from,
+                                                         const IntegerPoint& b) const {
   if (a == b) {
     bool any_free = false;
     for_each_triangle_at(from, [&](int t) { any_free |= triangles_[static_cast<std::size_t>(t)].free; });
@@ -340,12 +347,8 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntegerPoint& a, 
   int came_from = -1;  // the vertex we left the last time, if any
   bool arrived = false;
   switch (from.type) {
-    case Location::face:
-      face = from.triangle;
-      break;
-    case Location::vertex:
-      at = from.index;
-      break;
+    case Location::face: face = from.triangle; break;
+    case Location::vertex: at = from.index; break;
     case Location::edge: {
       const Triangle& t = triangles_[static_cast<std::size_t>(from.triangle)];
       const int other = t.neighbour[from.index];
@@ -362,8 +365,7 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntegerPoint& a, 
       }
       break;
     }
-    default:
-      return {Blocked::start_outside};
+    default: return {Blocked::start_outside};
   }
 
   for (std::size_t steps = 0; steps < 4 * triangles_.size() + 8; ++steps) {
@@ -372,8 +374,7 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntegerPoint& a, 
       if (static_cast<std::size_t>(at) >= space_vertices_) return {Blocked::frame};
       const auto leaving = wedge(static_cast<std::size_t>(at), direction);
       if (!leaving) return {Blocked::enters_at, at};
-      if (arrived && wedge(static_cast<std::size_t>(at), a - b) != leaving)
-        return {Blocked::pinch_at, at};
+      if (arrived && wedge(static_cast<std::size_t>(at), a - b) != leaving) return {Blocked::pinch_at, at};
       // Leave along an edge of the fan or into the triangle that holds the direction.
       int next_vertex = -1, next_face = -1;
       const auto v = static_cast<std::size_t>(at);
@@ -418,7 +419,8 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntegerPoint& a, 
     for (int i = 0; i < 3; ++i)
       if (side[ccw(i)] < 0 && side[cw(i)] > 0) exit_edge = i;
     if (exit_edge < 0) return {Blocked::lost};  // cannot happen
-    if (orientation(at_point(t.vertex[ccw(exit_edge)]), at_point(t.vertex[cw(exit_edge)]), b) >= 0) return {};  // b before the exit
+    if (orientation(at_point(t.vertex[ccw(exit_edge)]), at_point(t.vertex[cw(exit_edge)]), b) >= 0)
+      return {};  // b before the exit
     if (t.is_constrained(exit_edge)) return {Blocked::crosses};
     face = t.neighbour[exit_edge];
     if (face < 0) return {Blocked::enters};
@@ -427,7 +429,8 @@ IntegerTriangulation::Blocked IntegerTriangulation::walk(const IntegerPoint& a, 
   return {Blocked::lost};
 }
 
-std::optional<std::string> IntegerTriangulation::why_blocked(const IntegerPoint& a, const Location& from, const IntegerPoint& b) const {
+std::optional<std::string> IntegerTriangulation::why_blocked(const IntegerPoint& a, const Location& from,
+                                                             const IntegerPoint& b) const {
   const Blocked blocked = walk(a, from, b);
   const auto at = [&] { return to_text(points_[static_cast<std::size_t>(blocked.vertex)]); };
   switch (blocked.reason) {
@@ -447,7 +450,8 @@ std::optional<std::string> IntegerTriangulation::why_blocked(const IntegerPoint&
 
 bool IntegerTriangulation::path_free(const std::vector<IntegerPoint>& path, const std::vector<Location>& where) const {
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
-    if (path[i] == path[i + 1] || where[i].type == Location::outside) return !why_path_blocked(path, where);  // the general case
+    if (path[i] == path[i + 1] || where[i].type == Location::outside)
+      return !why_path_blocked(path, where);  // the general case
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
     if (!segment_free(path[i], where[i], path[i + 1])) return false;
   for (std::size_t i = 1; i + 1 < path.size(); ++i) {
@@ -459,14 +463,15 @@ bool IntegerTriangulation::path_free(const std::vector<IntegerPoint>& path, cons
 }
 
 std::optional<std::string> IntegerTriangulation::why_path_blocked(const std::vector<IntegerPoint>& given,
-                                                                 const std::vector<Location>& given_where) const {
+                                                                  const std::vector<Location>& given_where) const {
   // A zero-length step carries no motion and has no direction to turn by.
   std::vector<IntegerPoint> path;
   std::vector<Location> where;
   for (std::size_t i = 0; i < given.size(); ++i) {
     if (!path.empty() && path.back() == given[i]) continue;
     path.push_back(given[i]);
-    where.push_back(i < given_where.size() && given_where[i].type != Location::outside ? given_where[i] : locate(given[i]));
+    where.push_back(i < given_where.size() && given_where[i].type != Location::outside ? given_where[i]
+                                                                                       : locate(given[i]));
   }
   if (path.size() == 1) return why_blocked(path[0], where[0], path[0]);
   for (std::size_t i = 0; i + 1 < path.size(); ++i)

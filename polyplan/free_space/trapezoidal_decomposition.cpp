@@ -83,7 +83,7 @@ SweepCounts sweep_counts(const Arrangement& arrangement) {
 }  // namespace
 
 struct TrapezoidalDecomposition::Impl {
-  std::optional<Bounds> frame;  // only for an unbounded free space
+  std::optional<Bounds> frame;    // only for an unbounded free space
   Arrangement cells_arrangement;  // the free space's boundary and the walls
   std::unique_ptr<PointLocation> point_location;
   std::unordered_map<const void*, std::size_t> cell_of_face;  // keyed by &*face
@@ -124,7 +124,8 @@ struct TrapezoidalDecomposition::Impl {
 
   // From every vertex, the segments up and down to the first boundary feature that lie in the
   // free space. A wall between two vertices on one vertical line is made once.
-  static std::vector<Arrangement::X_monotone_curve_2> vertical_walls(const CSpace& cspace, const Arrangement& boundary) {
+  static std::vector<Arrangement::X_monotone_curve_2> vertical_walls(const CSpace& cspace,
+                                                                     const Arrangement& boundary) {
     using Vertex = Arrangement::Vertex_const_handle;
     using Halfedge = Arrangement::Halfedge_const_handle;
     std::vector<Arrangement::X_monotone_curve_2> segments;
@@ -145,7 +146,8 @@ struct TrapezoidalDecomposition::Impl {
       const auto& [below, above] = entry.second;
       if (above) {
         if (const Vertex* w = boost::get<Vertex>(&*above)) add_if(free_between(p, (*w)->point()), p, (*w)->point());
-        else if (const Halfedge* h = boost::get<Halfedge>(&*above)) add_if((*h)->face()->contained(), p, on_edge_at_x(*h, p));
+        else if (const Halfedge* h = boost::get<Halfedge>(&*above))
+          add_if((*h)->face()->contained(), p, on_edge_at_x(*h, p));
       }
       if (below) {
         // A wall down to a vertex is the lower vertex's wall up, unless that one is straight
@@ -195,7 +197,8 @@ struct TrapezoidalDecomposition::Impl {
                                detail::to_text(s));
       // A halfedge has its face on its left: going up, that is the cell on the wall's left.
       const bool upward = CGAL::compare_y(s, t) == CGAL::SMALLER;
-      walls.push_back(upward ? TrapezoidWall{*a, *b, to_exact(s), to_exact(t)} : TrapezoidWall{*b, *a, to_exact(t), to_exact(s)});
+      walls.push_back(upward ? TrapezoidWall{*a, *b, to_exact(s), to_exact(t)}
+                             : TrapezoidWall{*b, *a, to_exact(t), to_exact(s)});
     }
   }
 };

@@ -38,8 +38,8 @@ double distance_to_site(Vec2 p, const BoundarySite& s) { return distance_to_segm
 // focus's distance to the directrix; parameter u.
 struct Curve {
   bool parabolic = false;
-  Vec2 a, b;          // straight
-  Vec2 apex, t, n;    // parabolic
+  Vec2 a, b;        // straight
+  Vec2 apex, t, n;  // parabolic
   double f = 0;
   double t_from = 0, t_to = 1;
   std::size_t site = 0;  // the site a straight piece's clearance is measured from
@@ -82,7 +82,8 @@ struct VoronoiDiagram::Impl {
     frame = framed.frame;
     const auto& arrangement = framed.free_set.arrangement();
     for (auto e = arrangement.edges_begin(); e != arrangement.edges_end(); ++e) {
-      const Vec2 a = approximate(detail::to_exact(e->source()->point())), b = approximate(detail::to_exact(e->target()->point()));
+      const Vec2 a = approximate(detail::to_exact(e->source()->point())),
+                 b = approximate(detail::to_exact(e->target()->point()));
       if (!same(a, b)) sdg.insert(SitePoint(a.x, a.y), SitePoint(b.x, b.y));
     }
     number_sites();
@@ -148,7 +149,8 @@ struct VoronoiDiagram::Impl {
         edge = sdg.data_structure().mirror_edge(edge);
       const SDG::Face_handle f = edge.first, g = f->neighbor(edge.second);
       keyed.push_back({{site_index(f->vertex(sdg.ccw(edge.second))), site_index(f->vertex(sdg.cw(edge.second))),
-                        site_index(f->vertex(edge.second)), site_index(g->vertex(sdg.data_structure().mirror_index(f, edge.second)))},
+                        site_index(f->vertex(edge.second)),
+                        site_index(g->vertex(sdg.data_structure().mirror_index(f, edge.second)))},
                        edge});
     }
     std::sort(keyed.begin(), keyed.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
@@ -220,9 +222,7 @@ struct VoronoiDiagram::Impl {
     return std::abs(parabola_length(t2, c.f) - parabola_length(t1, c.f));
   }
 
-  std::size_t site_at(Vec2 p) const {
-    return site_index(sdg.nearest_neighbor(SitePoint(p.x, p.y)));
-  }
+  std::size_t site_at(Vec2 p) const { return site_index(sdg.nearest_neighbor(SitePoint(p.x, p.y))); }
 
   // A point near p in the free space, off the boundary, joined to p by a segment in the free space
   // (the exact segment test): the first of sixteen directions, from a thousandth of p's size
@@ -234,7 +234,8 @@ struct VoronoiDiagram::Impl {
       double step = 1e-3 * (1 + std::max(std::abs(at.x), std::abs(at.y)));
       for (int halving = 0; halving < 40; ++halving, step /= 2) {
         const Vec2 q = at + step * direction;
-        if (cspace->locate(exactly(q)).kind == Location::Kind::free && check_segment(*cspace, p, exactly(q)).valid) return q;
+        if (cspace->locate(exactly(q)).kind == Location::Kind::free && check_segment(*cspace, p, exactly(q)).valid)
+          return q;
       }
     }
     return std::nullopt;
@@ -257,7 +258,9 @@ VoronoiDiagram& VoronoiDiagram::operator=(VoronoiDiagram&&) noexcept = default;
 const std::vector<BoundarySite>& VoronoiDiagram::sites() const { return impl_->sites; }
 const std::vector<DiagramVertex>& VoronoiDiagram::vertices() const { return impl_->vertices; }
 const std::vector<DiagramEdge>& VoronoiDiagram::edges() const { return impl_->edges; }
-bool VoronoiDiagram::in_frame(const ExactPoint& p) const { return !impl_->frame || detail::strictly_inside(*impl_->frame, p); }
+bool VoronoiDiagram::in_frame(const ExactPoint& p) const {
+  return !impl_->frame || detail::strictly_inside(*impl_->frame, p);
+}
 bool VoronoiDiagram::is_parabolic(std::size_t edge) const { return impl_->curves[edge].parabolic; }
 double VoronoiDiagram::parameter_from(std::size_t edge) const { return impl_->curves[edge].t_from; }
 double VoronoiDiagram::parameter_to(std::size_t edge) const { return impl_->curves[edge].t_to; }

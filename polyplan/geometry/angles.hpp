@@ -15,7 +15,6 @@
 
 namespace polyplan {
 
-
 // 2π as a double (the one nearest 2π).
 inline constexpr double two_pi = 6.283185307179586476925286766559;
 
@@ -61,7 +60,8 @@ inline double signed_angle_difference(double from, double to) {
 // In [0, π]: angular_distance(1, 5) = 2π − 4 = 2.2831853071795862.
 inline double angular_distance(double a, double b) { return std::fabs(signed_angle_difference(a, b)); }
 
-// Sum over joints of angular_distance (the course's arm and car planning report's total_angular_distance, the arm planners' cost).
+// Sum over joints of angular_distance (the course's arm and car planning report's total_angular_distance, the arm
+// planners' cost).
 inline double total_angular_distance(const JointAngles& a, const JointAngles& b) {
   detail::require_same_size(a, b, "total_angular_distance");
   double sum = 0;
@@ -70,7 +70,8 @@ inline double total_angular_distance(const JointAngles& a, const JointAngles& b)
 }
 
 // a_i + t·signed_angle_difference(a_i, b_i), normalised, into `out` (resized; no allocation once
-// it has the size). Each joint goes its own short way round, as the course's arm and car planning report's interpolation does.
+// it has the size). Each joint goes its own short way round, as the course's arm and car planning report's
+// interpolation does.
 inline void interpolate_angles_into(const JointAngles& a, const JointAngles& b, double t, JointAngles& out) {
   detail::require_same_size(a, b, "interpolate_angles");
   if (!std::isfinite(t)) throw std::invalid_argument("interpolate_angles: t is not finite");

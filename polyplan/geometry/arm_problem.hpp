@@ -26,8 +26,8 @@ struct Arm {
   // 0: links are segments; w > 0: each link is the w-wide rectangle on its segment (no end caps:
   // the rectangle ends at the joints).
   double link_width = 0;
-  // false: links at different heights never collide with each other (the course's arm and car planning report). true: two links
-  // that share no joint collide when they meet; adjacent links never do.
+  // false: links at different heights never collide with each other (the course's arm and car planning report). true:
+  // two links that share no joint collide when they meet; adjacent links never do.
   bool self_collision = false;
   // Per joint [lo, hi], radians, lo <= hi: the angles a joint may take, read round the circle (an
   // angle a is within them when a + 2πk lies in [lo, hi] for some whole k). Empty: no limits. Inverse

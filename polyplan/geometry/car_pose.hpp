@@ -21,8 +21,8 @@ enum class Steer : char { left = 'L', straight = 'S', right = 'R' };
 
 struct SteeringSegment {
   Steer steer = Steer::straight;
-  int gear = 1;        // +1 forward, -1 reverse
-  double length = 0;   // distance driven, >= 0; an arc turns length / radius radians
+  int gear = 1;       // +1 forward, -1 reverse
+  double length = 0;  // distance driven, >= 0; an arc turns length / radius radians
   friend bool operator==(const SteeringSegment&, const SteeringSegment&) = default;
 };
 

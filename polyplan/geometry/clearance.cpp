@@ -36,7 +36,9 @@ PathBottleneck nearest_between_segments(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
 
 double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) { return distance(p, nearest_on_segment(p, a, b)); }
 
-double distance_between_segments(Vec2 a, Vec2 b, Vec2 c, Vec2 d) { return nearest_between_segments(a, b, c, d).clearance; }
+double distance_between_segments(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {
+  return nearest_between_segments(a, b, c, d).clearance;
+}
 
 namespace {
 
@@ -45,7 +47,8 @@ namespace {
 std::vector<std::pair<Vec2, Vec2>> boundary_edges(const CSpace& cspace) {
   std::vector<std::pair<Vec2, Vec2>> edges;
   auto add = [&](const Ring& ring) {
-    for (std::size_t i = 0; i < ring.size(); ++i) edges.push_back({approximate(ring[i]), approximate(ring[(i + 1) % ring.size()])});
+    for (std::size_t i = 0; i < ring.size(); ++i)
+      edges.push_back({approximate(ring[i]), approximate(ring[(i + 1) % ring.size()])});
   };
   for (const FreeComponent& c : cspace.free_components()) {
     add(c.outer);
@@ -56,9 +59,7 @@ std::vector<std::pair<Vec2, Vec2>> boundary_edges(const CSpace& cspace) {
 
 }  // namespace
 
-double clearance_at(const CSpace& cspace, const ExactPoint& p) {
-  return path_clearance(cspace, {p});
-}
+double clearance_at(const CSpace& cspace, const ExactPoint& p) { return path_clearance(cspace, {p}); }
 
 double path_clearance(const CSpace& cspace, const std::vector<ExactPoint>& path) {
   return path_bottleneck(cspace, path).clearance;

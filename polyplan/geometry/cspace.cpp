@@ -187,7 +187,8 @@ Location CSpace::locate(const ExactPoint& p) const {
   } else if (auto* vertex = boost::get<Impl::Vertex>(&located)) {
     if (!(*vertex)->is_isolated()) {
       auto edge = (*vertex)->incident_halfedges(), first = edge;
-      do add(edge->face()); while (++edge != first);
+      do add(edge->face());
+      while (++edge != first);
     }
     if (!result.components.empty()) result.kind = Location::Kind::contact;
   }
@@ -211,24 +212,28 @@ std::optional<std::string> CSpace::collision_at(const ExactPoint& p) const {
         hit = hit || CGAL::do_intersect(placed, obstacle);  // interiors only: contact is allowed
       }
     }
-    if (hit) return (impl.world.robot.is_point() ? "it is inside " : "the robot overlaps ") + impl.world.obstacle_names[i];
+    if (hit)
+      return (impl.world.robot.is_point() ? "it is inside " : "the robot overlaps ") + impl.world.obstacle_names[i];
   }
   return std::string("the robot fits there only exactly: the free space has zero width (obstacles touch around it)");
 }
 
 std::optional<std::string> CSpace::query_not_free(const Query& query) const {
   for (const auto& [what, point] : {std::pair{"start", &query.start}, std::pair{"goal", &query.goal}})
-    if (auto why = collision_at(*point)) return std::string("the ") + what + " " + to_string(*point) + " is not free: " + *why;
+    if (auto why = collision_at(*point))
+      return std::string("the ") + what + " " + to_string(*point) + " is not free: " + *why;
   return std::nullopt;
 }
 
 void CSpace::require_free_queries() const {
   // A pose turned away from 0° is not a configuration of this C-space (the robot as drawn).
   for (const Query& q : impl_->world.queries)
-    for (const auto& [what, point, theta] : {std::tuple{"start", &q.start, &q.start_theta}, std::tuple{"goal", &q.goal, &q.goal_theta}})
+    for (const auto& [what, point, theta] :
+         {std::tuple{"start", &q.start, &q.start_theta}, std::tuple{"goal", &q.goal, &q.goal_theta}})
       if (auto why = turned(*theta) ? std::nullopt : collision_at(*point))
-        throw InputError(impl_->world.source + ": " + (q.name == "start/goal" ? std::string(what) : q.name + "." + what) +
-                         " " + to_text(*point) + ": not free: " + *why);
+        throw InputError(impl_->world.source + ": " +
+                         (q.name == "start/goal" ? std::string(what) : q.name + "." + what) + " " + to_text(*point) +
+                         ": not free: " + *why);
 }
 
 }  // namespace polyplan

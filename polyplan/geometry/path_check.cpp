@@ -53,9 +53,8 @@ std::optional<Point> blocked_witness(const CSpace& cspace, const Zone& zone, con
       if (auto* p = boost::get<Point>(&*x)) cuts.push_back(*p);
   }
   for (const auto& v : zone.vertices) cuts.push_back(v->point());
-  std::sort(cuts.begin(), cuts.end(), [&](const Point& p, const Point& q) {
-    return CGAL::compare_distance_to_point(a, p, q) == CGAL::SMALLER;
-  });
+  std::sort(cuts.begin(), cuts.end(),
+            [&](const Point& p, const Point& q) { return CGAL::compare_distance_to_point(a, p, q) == CGAL::SMALLER; });
   for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
     if (cuts[i] == cuts[i + 1]) continue;
     const Point mid = CGAL::midpoint(cuts[i], cuts[i + 1]);
@@ -79,7 +78,8 @@ PathCheck check_path(const CSpace& cspace, const std::vector<ExactPoint>& path) 
   for (std::size_t i = 0; i < points.size(); ++i)
     if (located(points[i]).kind == Location::Kind::blocked) {
       std::string why = cspace.collision_at(to_exact(points[i])).value_or("blocked");
-      return invalid(i == 0 ? 0 : i - 1, "point " + std::to_string(i) + " " + to_text(points[i]) + " is not free: " + why);
+      return invalid(i == 0 ? 0 : i - 1,
+                     "point " + std::to_string(i) + " " + to_text(points[i]) + " is not free: " + why);
     }
 
   for (std::size_t i = 0; i + 1 < points.size(); ++i) {
@@ -114,7 +114,8 @@ PathCheck check_path(const CSpace& cspace, const std::vector<ExactPoint>& path) 
     if (!vertex || (*vertex)->is_isolated()) continue;
     VertexWedges wedges((*vertex)->point(), (*vertex)->incident_halfedges());
     if (!wedges.is_pinch()) continue;
-    if (wedges.wedge(Kernel::Direction_2(points[i - 1] - points[i])) != wedges.wedge(Kernel::Direction_2(points[i + 1] - points[i])))
+    if (wedges.wedge(Kernel::Direction_2(points[i - 1] - points[i])) !=
+        wedges.wedge(Kernel::Direction_2(points[i + 1] - points[i])))
       return invalid(i, "the path turns at the pinch point " + to_text(points[i]) +
                             " into another free wedge than it came from (zero-width passage)");
   }

@@ -1,8 +1,8 @@
 #pragma once
-// A polygon world as an occupancy grid (the course's graph-search homework's discretised sphere world), decided exactly:
-// the world's bounds split into n × n equal cells, a cell blocked when its square meets the
-// interior of a C-obstacle (the obstacles' regularized union for a point robot) or reaches
-// where the robot's reference point cannot be because the bounds are walls.
+// A polygon world as an occupancy grid (the course's graph-search homework's discretised sphere world), decided
+// exactly: the world's bounds split into n × n equal cells, a cell blocked when its square meets the interior of a
+// C-obstacle (the obstacles' regularized union for a point robot) or reaches where the robot's reference point cannot
+// be because the bounds are walls.
 //
 // A closed square meets an open set iff the open square does, so a cell that only touches an
 // obstacle along its boundary (a shared edge or corner) stays free. Touching obstacles count as
@@ -25,8 +25,8 @@
 namespace polyplan {
 
 struct Raster {
-  Bounds bounds;               // the world's bounds, exact
-  std::size_t cells_per_axis;  // n: the bounds box split into n × n equal cells (non-square if the box is)
+  Bounds bounds;                      // the world's bounds, exact
+  std::size_t cells_per_axis;         // n: the bounds box split into n × n equal cells (non-square if the box is)
   std::vector<std::uint8_t> blocked;  // n·n, 1 = blocked; index x + y·n, x from xmin, y from ymin (y up)
   // n·n, 1 = blocked because the robot would leave the bounds there (the square leaves the box
   // the reference point must stay in): the walls, as opposed to the C-obstacles. All 0 for a

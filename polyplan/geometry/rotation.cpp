@@ -1,8 +1,8 @@
 #include <polyplan/geometry/rotation.hpp>
 
 #include <algorithm>
-#include <cmath>
 #include <charconv>
+#include <cmath>
 #include <stdexcept>
 
 namespace polyplan {
@@ -29,7 +29,8 @@ Rotation small_rotation(double radians) {
       k2 = k1;
       h1 = p;
       k1 = q;
-      const bool close_enough = std::abs(2 * std::atan2(p.get_d(), q.get_d()) - std::abs(radians)) <= rotation_tolerance_radians / 2;
+      const bool close_enough =
+          std::abs(2 * std::atan2(p.get_d(), q.get_d()) - std::abs(radians)) <= rotation_tolerance_radians / 2;
       if (close_enough || rest == whole) break;
       rest = 1 / (rest - whole);
     }

@@ -25,7 +25,8 @@ struct Rotation {
 };
 
 // An exact rotation within rotation_tolerance_radians of `degrees`, counter-clockwise, with small
-// numbers (denominators about 1/tolerance). Multiples of 90 degrees are exact. Throws std::invalid_argument for an angle that is not finite.
+// numbers (denominators about 1/tolerance). Multiples of 90 degrees are exact. Throws std::invalid_argument for an
+// angle that is not finite.
 Rotation exact_rotation(double degrees);
 
 // The angle of an exact rotation in degrees, in (-180, 180] (atan2 of the doubles: what it is,

@@ -37,7 +37,8 @@ std::vector<Polygon> convex_pieces(const Ring& part) {
   if (polygon.is_convex()) return {polygon};
   using Traits = CGAL::Partition_traits_2<detail::Kernel>;
   std::list<Traits::Polygon_2> pieces;
-  CGAL::approx_convex_partition_2(polygon.vertices_begin(), polygon.vertices_end(), std::back_inserter(pieces), Traits());
+  CGAL::approx_convex_partition_2(polygon.vertices_begin(), polygon.vertices_end(), std::back_inserter(pieces),
+                                  Traits());
   std::vector<Polygon> out;
   for (const auto& piece : pieces) out.emplace_back(piece.vertices_begin(), piece.vertices_end());
   return out;

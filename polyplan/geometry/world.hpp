@@ -32,8 +32,6 @@ struct Query {
   std::optional<double> start_theta = std::nullopt, goal_theta = std::nullopt;
 };
 
-
-
 // A translating robot: its parts in the robot frame; the reference point is the origin.
 // No parts means a point robot.
 // A robot that steers like a car ("robot": {"parts": [...], "car": {...}}): its parts are the body

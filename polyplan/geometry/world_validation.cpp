@@ -33,13 +33,15 @@ std::string edge_text(const Polygon& polygon, std::size_t i) {
 }
 
 // A bounding box with an index (an edge's or a hole's), for CGAL's box intersection.
-using IndexedBox = CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+using IndexedBox =
+    CGAL::Box_intersection_d::Box_with_handle_d<double, 2, std::size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
 
 // The boxes of a polygon's edges, edge i carrying the index first + i.
 std::vector<IndexedBox> edge_boxes(const Polygon& polygon, std::size_t first = 0) {
   std::vector<IndexedBox> boxes;
   boxes.reserve(polygon.size());
-  for (std::size_t i = 0; i < polygon.size(); ++i) boxes.emplace_back(polygon.edge(static_cast<int>(i)).bbox(), first + i);
+  for (std::size_t i = 0; i < polygon.size(); ++i)
+    boxes.emplace_back(polygon.edge(static_cast<int>(i)).bbox(), first + i);
   return boxes;
 }
 
@@ -54,7 +56,8 @@ bool edges_conflict(const Polygon& polygon, std::size_t i, std::size_t j, std::s
     *how = edge_text(polygon, i) + " crosses " + edge_text(polygon, j);
     return true;
   }
-  if (!CGAL::collinear(a.source(), a.target(), b.source()) || !CGAL::collinear(a.source(), a.target(), b.target())) return false;
+  if (!CGAL::collinear(a.source(), a.target(), b.source()) || !CGAL::collinear(a.source(), a.target(), b.target()))
+    return false;
   // Adjacent edges meet in their shared vertex only, unless they fold back over each other.
   const bool consecutive = j == i + 1;
   const Point& shared = consecutive ? a.target() : a.source();
@@ -89,18 +92,27 @@ std::string crossing_edges(const Polygon& polygon) {
 bool shares_a_segment(const Polygon& outer, const Polygon& hole) {
   std::vector<IndexedBox> outer_boxes = edge_boxes(outer), hole_boxes = edge_boxes(hole, outer.size());
   bool shared = false;
-  CGAL::box_intersection_d(outer_boxes.begin(), outer_boxes.end(), hole_boxes.begin(), hole_boxes.end(), [&](const IndexedBox& a, const IndexedBox& b) {
-    if (shared) return;
-    const Segment e = outer.edge(static_cast<int>(a.handle())), f = hole.edge(static_cast<int>(b.handle() - outer.size()));
-    if (!CGAL::collinear(e.source(), e.target(), f.source()) || !CGAL::collinear(e.source(), e.target(), f.target())) return;
-    // Collinear: they share a segment iff the later of their lower ends comes before the earlier
-    // of their upper ends (in xy order along the line).
-    auto lower = [](const Segment& g) { return CGAL::compare_xy(g.source(), g.target()) == CGAL::SMALLER ? g.source() : g.target(); };
-    auto upper = [](const Segment& g) { return CGAL::compare_xy(g.source(), g.target()) == CGAL::SMALLER ? g.target() : g.source(); };
-    const Point lo = CGAL::compare_xy(lower(e), lower(f)) == CGAL::LARGER ? lower(e) : lower(f);
-    const Point hi = CGAL::compare_xy(upper(e), upper(f)) == CGAL::SMALLER ? upper(e) : upper(f);
-    shared = CGAL::compare_xy(lo, hi) == CGAL::SMALLER;
-  });
+  CGAL::box_intersection_d(
+      outer_boxes.begin(), outer_boxes.end(), hole_boxes.begin(), hole_boxes.end(),
+      [&](const IndexedBox& a, const IndexedBox& b) {
+        if (shared) return;
+        const Segment e = outer.edge(static_cast<int>(a.handle())),
+                      f = hole.edge(static_cast<int>(b.handle() - outer.size()));
+        if (!CGAL::collinear(e.source(), e.target(), f.source()) ||
+            !CGAL::collinear(e.source(), e.target(), f.target()))
+          return;
+        // Collinear: they share a segment iff the later of their lower ends comes before the earlier
+        // of their upper ends (in xy order along the line).
+        auto lower = [](const Segment& g) {
+          return CGAL::compare_xy(g.source(), g.target()) == CGAL::SMALLER ? g.source() : g.target();
+        };
+        auto upper = [](const Segment& g) {
+          return CGAL::compare_xy(g.source(), g.target()) == CGAL::SMALLER ? g.target() : g.source();
+        };
+        const Point lo = CGAL::compare_xy(lower(e), lower(f)) == CGAL::LARGER ? lower(e) : lower(f);
+        const Point hi = CGAL::compare_xy(upper(e), upper(f)) == CGAL::SMALLER ? upper(e) : upper(f);
+        shared = CGAL::compare_xy(lo, hi) == CGAL::SMALLER;
+      });
   return shared;
 }
 
@@ -155,8 +167,9 @@ void check_obstacle(const World& world, PolygonWithHoles& obstacle, const std::s
     CGAL::difference(hole_ccw, outer, std::back_inserter(outside));
     if (!outside.empty()) fail(world, hole_name, "not inside the outer boundary of " + name);
     if (shares_a_segment(outer, hole_ccw))
-      fail(world, hole_name, "shares a boundary segment with the outer boundary of " + name +
-                                 " (zero width there: make the hole a notch of the outer boundary instead)");
+      fail(world, hole_name,
+           "shares a boundary segment with the outer boundary of " + name +
+               " (zero width there: make the hole a notch of the outer boundary instead)");
     holes_ccw.push_back(std::move(hole_ccw));
   }
   if (const auto pair = overlapping_holes(holes_ccw))
@@ -171,8 +184,9 @@ void check_changes(World& world) {
   for (std::size_t i = 0; i < world.changes.size(); ++i) {
     WorldChange& change = world.changes[i];
     if (i > 0 && change.after_moves < world.changes[i - 1].after_moves)
-      fail(world, change.name + ".after_moves", std::to_string(change.after_moves) + " after " + world.changes[i - 1].name + "'s " +
-                                                    std::to_string(world.changes[i - 1].after_moves) + ": list the changes in the order they happen");
+      fail(world, change.name + ".after_moves",
+           std::to_string(change.after_moves) + " after " + world.changes[i - 1].name + "'s " +
+               std::to_string(world.changes[i - 1].after_moves) + ": list the changes in the order they happen");
     if (change.added) {
       check_obstacle(world, *change.added, change.name + ".add_obstacle");
       gone.push_back(false);
@@ -180,9 +194,12 @@ void check_changes(World& world) {
     if (change.removed) {
       const std::size_t k = *change.removed;
       if (k >= gone.size())
-        fail(world, change.name + ".remove_obstacle", std::to_string(k) + ": there are " + std::to_string(gone.size()) +
-                                                          " obstacles at that moment (numbered from 0: the world's, then those the changes before added)");
-      if (gone[k]) fail(world, change.name + ".remove_obstacle", "obstacle " + std::to_string(k) + " was removed by an earlier change");
+        fail(world, change.name + ".remove_obstacle",
+             std::to_string(k) + ": there are " + std::to_string(gone.size()) +
+                 " obstacles at that moment (numbered from 0: the world's, then those the changes before added)");
+      if (gone[k])
+        fail(world, change.name + ".remove_obstacle",
+             "obstacle " + std::to_string(k) + " was removed by an earlier change");
       gone[k] = true;
     }
   }
@@ -194,10 +211,12 @@ void validate_world(World& world) {
   if (world.bounds) {
     const Bounds& b = *world.bounds;
     if (!(b.xmin < b.xmax) || !(b.ymin < b.ymax))
-      fail(world, "bounds", "empty or inverted: [" + to_string(b.xmin) + ", " + to_string(b.ymin) + ", " +
-                                to_string(b.xmax) + ", " + to_string(b.ymax) + "] needs xmin < xmax and ymin < ymax");
+      fail(world, "bounds",
+           "empty or inverted: [" + to_string(b.xmin) + ", " + to_string(b.ymin) + ", " + to_string(b.xmax) + ", " +
+               to_string(b.ymax) + "] needs xmin < xmax and ymin < ymax");
   }
-  for (std::size_t i = 0; i < world.obstacles.size(); ++i) check_obstacle(world, world.obstacles[i], world.obstacle_names[i]);
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i)
+    check_obstacle(world, world.obstacles[i], world.obstacle_names[i]);
   for (std::size_t i = 0; i < world.robot.parts.size(); ++i)
     check_ring(world, world.robot.parts[i], "robot.parts[" + std::to_string(i) + "]", CGAL::COUNTERCLOCKWISE);
   check_changes(world);

@@ -1,11 +1,11 @@
 #include <polyplan/grids/gvd_grid_planner.hpp>
 
 #include <polyplan/geometry/clearance.hpp>
+#include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_grid.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
-#include <polyplan/grids/grid_facts.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -25,9 +25,7 @@ struct GvdGridPlanner::Impl {
   std::shared_ptr<const CellGrid> picture;  // made for the first query that records
 
   Impl(const CSpace& c, const GvdGridOptions& o)
-      : cspace(&c),
-        options(o),
-        raster(rasterize(c, o.resolution)),
+      : cspace(&c), options(o), raster(rasterize(c, o.resolution)),
         field(polyplan::brushfire(raster.cells_per_axis, raster.cells_per_axis, raster.blocked, raster.walls)),
         free_graph(raster_axes(raster), Connectivity::full, StepCost::euclidean, raster_free_cells(raster)),
         gvd_graph(raster_axes(raster), Connectivity::full, StepCost::euclidean, raster_free_cells(raster)) {
@@ -66,7 +64,8 @@ struct GvdGridPlanner::Impl {
   }
 };
 
-GvdGridPlanner::GvdGridPlanner(const CSpace& cspace, GvdGridOptions options) : impl_(build_timed<Impl>(cspace, options)) {}
+GvdGridPlanner::GvdGridPlanner(const CSpace& cspace, GvdGridOptions options)
+    : impl_(build_timed<Impl>(cspace, options)) {}
 
 GvdGridPlanner::~GvdGridPlanner() = default;
 
@@ -104,9 +103,10 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
     const std::vector<GridCell> up = climb(snapped->first), down = climb(snapped->second);
     for (const auto& [climbed, what] : {std::pair{&up, "start"}, std::pair{&down, "goal"}}) {
       if (r.field.gvd[climbed->back()]) continue;
-      report.fail(PlanStatus::not_found, std::string("the climb from the ") + what + "'s cell " + cell_text(r.raster, climbed->front()) +
-                       " up the distance field stops at cell " + cell_text(r.raster, climbed->back()) +
-                       ", a local maximum off the GVD (the brushfire's GVD failed to reach it: a bug to report)");
+      report.fail(PlanStatus::not_found,
+                  std::string("the climb from the ") + what + "'s cell " + cell_text(r.raster, climbed->front()) +
+                      " up the distance field stops at cell " + cell_text(r.raster, climbed->back()) +
+                      ", a local maximum off the GVD (the brushfire's GVD failed to reach it: a bug to report)");
       return;
     }
     report.facts.set(GvdFacts::start_cell, cell_text(r.raster, up.back()));
@@ -124,10 +124,12 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
       // Expected only between two free components of the grid; a second search over all free
       // cells tells that from a GVD that failed to join one component (brushfire.hpp).
       const bool apart = !search_between(r.free_graph, SearchOptions{Search::bfs}).found;
-      report.fail(PlanStatus::not_found, "the GVD does not connect cell " + cell_text(r.raster, up.back()) + ", where the start's climb reaches it, to cell " +
-                       cell_text(r.raster, down.back()) + ", where the goal's does" +
-                       (apart ? ": they lie in different free components of the grid"
-                              : ", though free cells do (the brushfire's GVD failed to join them: a bug to report)"));
+      report.fail(PlanStatus::not_found,
+                  "the GVD does not connect cell " + cell_text(r.raster, up.back()) +
+                      ", where the start's climb reaches it, to cell " + cell_text(r.raster, down.back()) +
+                      ", where the goal's does" +
+                      (apart ? ": they lie in different free components of the grid"
+                             : ", though free cells do (the brushfire's GVD failed to join them: a bug to report)"));
       return;
     }
 
@@ -151,13 +153,13 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
 
 PlannerEntry<TranslatingRobot> gvd_grid_planner_entry() {
   OptionTable<GvdGridOptions> table;
-  table.add("resolution", &GvdGridOptions::resolution, "cells per side of the bounds (n x n cells)", in_range(1, static_cast<double>(max_cells_per_axis)));
+  table.add("resolution", &GvdGridOptions::resolution, "cells per side of the bounds (n x n cells)",
+            in_range(1, static_cast<double>(max_cells_per_axis)));
   add_search_options(table, &GvdGridOptions::search);
   return make_planner_entry<TranslatingRobot, GvdGridOptions>(
       "gvd-grid", "brushfire GVD on the n x n occupancy grid: climb the distance field, follow the GVD, descend",
-      std::move(table), [](const CSpace& cspace, const GvdGridOptions& o) {
-        return std::make_unique<GvdGridPlanner>(cspace, o);
-      });
+      std::move(table),
+      [](const CSpace& cspace, const GvdGridOptions& o) { return std::make_unique<GvdGridPlanner>(cspace, o); });
 }
 
 }  // namespace polyplan

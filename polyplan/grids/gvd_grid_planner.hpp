@@ -7,9 +7,9 @@
 // bounds from two sides; thinned to what joins pieces and ends climbs), told apart by the
 // obstacle cells the fronts came from. The cells where the robot would leave the bounds are
 // part of the outside, the bounds' one obstacle, so a wall touching the bounds keeps its own
-// id. A query snaps start and goal to their nearest free cells (as `raster` does), climbs from each up the distance field to the GVD, searches along
-// GVD cells between the two places where the climbs arrive, and joins start → the centres where
-// that cell path turns → goal. Registered as `gvd-grid`.
+// id. A query snaps start and goal to their nearest free cells (as `raster` does), climbs from each up the distance
+// field to the GVD, searches along GVD cells between the two places where the climbs arrive, and joins start → the
+// centres where that cell path turns → goal. Registered as `gvd-grid`.
 //
 // The climb is a steepest ascent over the moves of the 8-connected grid without corner cutting:
 // from a cell off the GVD it steps onto a GVD neighbour when there is one (the one of largest

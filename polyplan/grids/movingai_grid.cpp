@@ -23,12 +23,14 @@ GridGraph movingai_grid(const GridMap& map) {
                    StepCost::euclidean, std::move(free));
 }
 
-void check_scenarios_fit(const GridMap& map, const std::vector<ScenarioQuery>& queries, const std::string& scenario_file) {
+void check_scenarios_fit(const GridMap& map, const std::vector<ScenarioQuery>& queries,
+                         const std::string& scenario_file) {
   check_scenarios_match(queries, map.width, map.height, map.source, scenario_file);
   for (const ScenarioQuery& q : queries) {
     const std::string where = scenario_file + ": line " + std::to_string(q.line) + ": ";
     for (const auto& [name, x, y] : {std::tuple{"start", q.start_x, q.start_y}, std::tuple{"goal", q.goal_x, q.goal_y}})
-      if (map.is_blocked(x, y)) throw InputError(where + name + " " + cell_text(x, y) + " is a blocked cell of " + map.source);
+      if (map.is_blocked(x, y))
+        throw InputError(where + name + " " + cell_text(x, y) + " is a blocked cell of " + map.source);
   }
 }
 
@@ -66,8 +68,8 @@ SearchResult<GridCell> MovingAiGridSearch::search(const ScenarioQuery& q, const 
     return graph_.cell(at);
   };
   const GridCell start = free_cell("start", q.start_x, q.start_y), goal = free_cell("goal", q.goal_x, q.goal_y);
-  return shortest_path(graph_, start, goal, options, GridDistanceTo(graph_, goal, GridMetric::octile), GridMoveCost{&graph_},
-                       workspace_);
+  return shortest_path(graph_, start, goal, options, GridDistanceTo(graph_, goal, GridMetric::octile),
+                       GridMoveCost{&graph_}, workspace_);
 }
 
 }  // namespace polyplan

@@ -23,7 +23,8 @@ GridGraph movingai_grid(const GridMap& map);
 // Throws InputError "SCENARIO_FILE: line N: ..." for the first query made for a map of another
 // size, or whose start or goal is outside the map or on a blocked cell. Call it on every query
 // before answering any, so that bad input is reported before the long work.
-void check_scenarios_fit(const GridMap& map, const std::vector<ScenarioQuery>& queries, const std::string& scenario_file);
+void check_scenarios_fit(const GridMap& map, const std::vector<ScenarioQuery>& queries,
+                         const std::string& scenario_file);
 
 // What the scenario file says about a query: whether there is a path, its length as printed, and
 // the tolerance within which a computed optimal length agrees with it: half a unit in the last

@@ -2,9 +2,9 @@
 
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
-#include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/plan_trace.hpp>
 
 #include <utility>
 
@@ -70,17 +70,20 @@ std::optional<std::pair<GridCell, GridCell>> snap_query(const CSpace& cspace, co
   }
   report.facts.set(RasterFacts::start_cell, cell_text(start_cell->first, start_cell->second));
   report.facts.set(RasterFacts::goal_cell, cell_text(goal_cell->first, goal_cell->second));
-  const auto index = [&](std::pair<std::size_t, std::size_t> c) { return GridCell{c.first + c.second * r.cells_per_axis}; };
+  const auto index = [&](std::pair<std::size_t, std::size_t> c) {
+    return GridCell{c.first + c.second * r.cells_per_axis};
+  };
   return std::pair<GridCell, GridCell>(index(*start_cell), index(*goal_cell));
 }
 
 // A cell is a corner of the polyline only where the move direction changes.
-std::vector<ExactPoint> polyline_through_turns(const Raster& r, const ExactPoint& start, std::span<const GridCell> cells,
-                                               const ExactPoint& goal) {
+std::vector<ExactPoint> polyline_through_turns(const Raster& r, const ExactPoint& start,
+                                               std::span<const GridCell> cells, const ExactPoint& goal) {
   const auto move = [&](std::size_t k) {  // from cells[k - 1] to cells[k]
     const auto [x0, y0] = xy_of(r, cells[k - 1]);
     const auto [x1, y1] = xy_of(r, cells[k]);
-    return std::pair<long, long>(static_cast<long>(x1) - static_cast<long>(x0), static_cast<long>(y1) - static_cast<long>(y0));
+    return std::pair<long, long>(static_cast<long>(x1) - static_cast<long>(x0),
+                                 static_cast<long>(y1) - static_cast<long>(y0));
   };
   std::vector<ExactPoint> path;
   append(path, start);
@@ -95,7 +98,8 @@ std::vector<ExactPoint> polyline_through_turns(const Raster& r, const ExactPoint
   return path;
 }
 
-void return_if_valid(const CSpace& cspace, std::vector<ExactPoint> path, std::string_view what, PlanReport<ExactPoint>& report) {
+void return_if_valid(const CSpace& cspace, std::vector<ExactPoint> path, std::string_view what,
+                     PlanReport<ExactPoint>& report) {
   const PathCheck check = check_path(cspace, path);
   if (!check.valid) {
     report.fail(PlanStatus::not_found, std::string(what) + " is not a valid motion: " + check.reason);

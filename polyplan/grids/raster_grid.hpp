@@ -7,11 +7,11 @@
 // also the grid graph's (axis 0 varies fastest).
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_report.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/grid_graph.hpp>
 #include <polyplan/search/search_result.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -75,7 +75,8 @@ std::vector<ExactPoint> polyline_through_turns(const Raster& raster, const Exact
 // otherwise found stays false and why_not says "`what` is not a valid motion: " and the check's
 // reason. A grid path's joins to the exact start and goal can cross a corner that the cells
 // did not see, so the whole polyline is checked, never the cells only.
-void return_if_valid(const CSpace& cspace, std::vector<ExactPoint> path, std::string_view what, PlanReport<ExactPoint>& report);
+void return_if_valid(const CSpace& cspace, std::vector<ExactPoint> path, std::string_view what,
+                     PlanReport<ExactPoint>& report);
 
 // The raster's cells as a picture shows them: free or blocked, no values.
 CellGrid raster_cell_grid(const Raster& raster);

@@ -1,10 +1,10 @@
 #include <polyplan/grids/raster_planner.hpp>
 
+#include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_grid.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
-#include <polyplan/grids/grid_facts.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -21,12 +21,9 @@ struct RasterPlanner::Impl {
   std::shared_ptr<const CellGrid> picture;  // made for the first query that records
 
   Impl(const CSpace& c, const RasterOptions& o)
-      : cspace(&c),
-        options(o),
-        raster(rasterize(c, o.resolution)),
+      : cspace(&c), options(o), raster(rasterize(c, o.resolution)),
         graph(raster_axes(raster), o.connectivity, StepCost::euclidean, raster_free_cells(raster)),
-        free_cells(raster.blocked.size() - raster.blocked_count()),
-        moves(move_count(graph)) {}
+        free_cells(raster.blocked.size() - raster.blocked_count()), moves(move_count(graph)) {}
 
   std::shared_ptr<const CellGrid> cells() {
     if (!picture) picture = std::make_shared<const CellGrid>(raster_cell_grid(raster));
@@ -68,11 +65,12 @@ PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOption
     SearchOptions searching = r.options.search;
     searching.record_expanded = options.record;
     searching.record_trace = options.trace;
-    search = shortest_path(g, from, to, searching, GridDistanceTo(g, to, raster_metric(r.raster, g.connectivity())), GridMoveCost{&g});
+    search = shortest_path(g, from, to, searching, GridDistanceTo(g, to, raster_metric(r.raster, g.connectivity())),
+                           GridMoveCost{&g});
     if (!search.found) {
       const std::string n = std::to_string(r.raster.cells_per_axis);
-      report.fail(PlanStatus::not_found, "no path on the " + n + " x " + n + " grid from cell " + cell_text(r.raster, from) + " to cell " +
-                       cell_text(r.raster, to));
+      report.fail(PlanStatus::not_found, "no path on the " + n + " x " + n + " grid from cell " +
+                                             cell_text(r.raster, from) + " to cell " + cell_text(r.raster, to));
       return;
     }
     report.facts.set(RasterFacts::grid_cost, search.cost);
@@ -84,15 +82,19 @@ PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOption
 
 PlannerEntry<TranslatingRobot> raster_planner_entry() {
   OptionTable<RasterOptions> table;
-  table.add("resolution", &RasterOptions::resolution, "cells per side of the bounds (n x n cells)", in_range(1, static_cast<double>(max_cells_per_axis)));
-  table.add("connectivity", &RasterOptions::connectivity, "8: moves to all 8 neighbours without cutting corners; 4: axis moves only",
-            std::vector<std::pair<std::string, Connectivity>>{{"8", Connectivity::full}, {"4", Connectivity::axis_aligned}});
+  table.add("resolution", &RasterOptions::resolution, "cells per side of the bounds (n x n cells)",
+            in_range(1, static_cast<double>(max_cells_per_axis)));
+  table.add(
+      "connectivity", &RasterOptions::connectivity,
+      "8: moves to all 8 neighbours without cutting corners; 4: axis moves only",
+      std::vector<std::pair<std::string, Connectivity>>{{"8", Connectivity::full}, {"4", Connectivity::axis_aligned}});
   add_search_options(table, &RasterOptions::search);
   return make_planner_entry<TranslatingRobot, RasterOptions>(
-      "raster", "the course's graph-search homework's occupancy grid: the bounds cut into n x n exact cells, searched 8-connected",
-      std::move(table), [](const CSpace& cspace, const RasterOptions& o) {
-        return std::make_unique<RasterPlanner>(cspace, o);
-      });
+      "raster",
+      "the course's graph-search homework's occupancy grid: the bounds cut into n x n exact cells, searched "
+      "8-connected",
+      std::move(table),
+      [](const CSpace& cspace, const RasterOptions& o) { return std::make_unique<RasterPlanner>(cspace, o); });
 }
 
 }  // namespace polyplan

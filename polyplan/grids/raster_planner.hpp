@@ -1,9 +1,8 @@
 #pragma once
-// Planning on a rasterised world (geometry/rasterize.hpp), as the course's graph-search homework's search_start_goal does:
-// the world's bounds cut into n × n cells, a cell blocked when it meets a C-obstacle's interior;
-// start and goal snap to the nearest free cell centre, the implicit grid graph
-// (search/grid_graph.hpp) is searched between those cells, and the path is
-// start → the centres where the grid path turns → goal. Registered as `raster`.
+// Planning on a rasterised world (geometry/rasterize.hpp), as the course's graph-search homework's search_start_goal
+// does: the world's bounds cut into n × n cells, a cell blocked when it meets a C-obstacle's interior; start and goal
+// snap to the nearest free cell centre, the implicit grid graph (search/grid_graph.hpp) is searched between those
+// cells, and the path is start → the centres where the grid path turns → goal. Registered as `raster`.
 //
 // The grid part of such a path never enters a C-obstacle: it runs through free open squares and
 // across sides and corners shared by free cells (diagonal moves never cut a corner). The joins

@@ -42,7 +42,8 @@ std::size_t ClassGraph::add_point(const ExactPoint& p) {
   return id;
 }
 
-ClassSearch::ClassSearch(const ClassGraph& graph, std::size_t source, Word word, double max_length, std::size_t max_states, Admit admit)
+ClassSearch::ClassSearch(const ClassGraph& graph, std::size_t source, Word word, double max_length,
+                         std::size_t max_states, Admit admit)
     : graph_(&graph), max_length_(max_length), max_states_(max_states), admit_(std::move(admit)) {
   offer(source, std::move(word), 0, std::nullopt);
 }

@@ -62,7 +62,8 @@ class ClassSearch {
   };
   using Admit = std::function<bool(std::size_t vertex, const Word& word, double distance)>;
 
-  ClassSearch(const ClassGraph& graph, std::size_t source, Word word, double max_length, std::size_t max_states, Admit admit = {});
+  ClassSearch(const ClassGraph& graph, std::size_t source, Word word, double max_length, std::size_t max_states,
+              Admit admit = {});
 
   // The next state settled (its id), or nullopt when none is left.
   std::optional<std::size_t> next();
@@ -86,7 +87,8 @@ class ClassSearch {
   std::vector<State> states_;
   std::vector<bool> settled_;
   std::map<std::pair<std::size_t, Word>, std::size_t> ids_;
-  std::priority_queue<std::pair<double, std::size_t>, std::vector<std::pair<double, std::size_t>>, std::greater<>> open_;
+  std::priority_queue<std::pair<double, std::size_t>, std::vector<std::pair<double, std::size_t>>, std::greater<>>
+      open_;
 };
 
 }  // namespace polyplan

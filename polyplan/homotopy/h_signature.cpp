@@ -21,7 +21,8 @@ Word inverse(const Word& word) {
 
 std::string word_text(const Word& word) {
   std::string out;
-  for (const int letter : word) out += (out.empty() ? "t" : " t") + std::to_string(std::abs(letter)) + (letter < 0 ? "'" : "");
+  for (const int letter : word)
+    out += (out.empty() ? "t" : " t") + std::to_string(std::abs(letter)) + (letter < 0 ? "'" : "");
   return out;
 }
 
@@ -40,7 +41,8 @@ void crossings_at(const Ring& ring, const Rational& y, std::vector<Rational>& ou
 // midway between two consecutive vertex heights of all the boundary (`rings`), so that it crosses
 // edges only, in a piece between two crossings that lies inside the ring, at its middle, then a
 // third, a ninth, ... of it.
-ExactPoint inside_point(const CSpace& cspace, const Ring& ring, const std::vector<const Ring*>& rings, const std::set<Rational>& xs) {
+ExactPoint inside_point(const CSpace& cspace, const Ring& ring, const std::vector<const Ring*>& rings,
+                        const std::set<Rational>& xs) {
   std::set<Rational> heights;
   for (const Ring* r : rings)
     for (const ExactPoint& p : *r) heights.insert(p.y);
@@ -113,7 +115,8 @@ Word HSignature::segment(const ExactPoint& a, const ExactPoint& b) const {
 
 std::vector<std::vector<ExactPoint>> HSignature::ray_segments() const {
   std::vector<std::vector<ExactPoint>> out;
-  for (const HomotopyRay& ray : rays_) out.push_back({ray.origin, {ray.origin.x, std::max(top_, Rational(ray.origin.y + 1))}});
+  for (const HomotopyRay& ray : rays_)
+    out.push_back({ray.origin, {ray.origin.x, std::max(top_, Rational(ray.origin.y + 1))}});
   return out;
 }
 

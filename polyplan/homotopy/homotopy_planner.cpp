@@ -4,9 +4,9 @@
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/homotopy/class_graph.hpp>
-#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/homotopy/homotopy_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 
 #include <limits>
 #include <set>
@@ -23,7 +23,8 @@ struct HomotopyPlanner::Impl {
 HomotopyPlanner::HomotopyPlanner(const CSpace& cspace, HomotopyOptions options)
     : impl_(std::make_unique<Impl>(Impl{&cspace, options, ClassGraph(cspace)})) {
   if (options.classes == 0) throw std::invalid_argument("option classes=0: expected at least 1");
-  if (!(options.max_length >= 0)) throw std::invalid_argument("option max-length: expected a number >= 0 (0: no bound)");
+  if (!(options.max_length >= 0))
+    throw std::invalid_argument("option max-length: expected a number >= 0 (0: no bound)");
 }
 
 HomotopyPlanner::~HomotopyPlanner() = default;
@@ -69,8 +70,12 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
   facts.set(HomotopyFacts::states, search.states());
   if (search.truncated()) facts.set(QueryFacts::stopped_by, "state limit");
   if (report.paths.empty()) {
-    if (search.truncated()) report.fail(PlanStatus::limit, "max-states (" + std::to_string(r.options.max_states) + ") ended the search before the goal");
-    else report.fail(PlanStatus::not_found, "no path within max-length (" + detail::show_number(r.options.max_length) + ")");
+    if (search.truncated())
+      report.fail(PlanStatus::limit,
+                  "max-states (" + std::to_string(r.options.max_states) + ") ended the search before the goal");
+    else
+      report.fail(PlanStatus::not_found,
+                  "no path within max-length (" + detail::show_number(r.options.max_length) + ")");
     return finish();
   }
   for (const auto& p : report.paths)
@@ -81,22 +86,28 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
   report.length = report.paths.front().length;
   report.certificate = {true, "exact path check (arrangement zone walk) of visibility-graph segments"};
   facts.set(HomotopyFacts::word, report.paths.front().label);
-  if (query_options.record) report.marks.push_back({PlanMark<ExactPoint>::Kind::lines, "h-signature rays (t1, t2, ...)", r.graph.signature().ray_segments()});
+  if (query_options.record)
+    report.marks.push_back(
+        {PlanMark<ExactPoint>::Kind::lines, "h-signature rays (t1, t2, ...)", r.graph.signature().ray_segments()});
   // What the program prints after its summary line: every class, by length.
   std::string note = std::to_string(report.paths.size()) + " class(es) by length:";
   for (const auto& p : report.paths) note += " " + std::to_string(p.length) + " [" + p.label + "]";
-  if (report.paths.size() < r.options.classes) note += " (" + std::to_string(r.options.classes) + " asked for: no more within the bounds)";
+  if (report.paths.size() < r.options.classes)
+    note += " (" + std::to_string(r.options.classes) + " asked for: no more within the bounds)";
   facts.set(QueryFacts::note, note);
   return finish();
 }
 
 PlannerEntry<TranslatingRobot> homotopy_planner_entry() {
   OptionTable<HomotopyOptions> table;
-  table.add("classes", &HomotopyOptions::classes, "how many homotopy classes: the shortest path of each, in order of length", at_least(1));
+  table.add("classes", &HomotopyOptions::classes,
+            "how many homotopy classes: the shortest path of each, in order of length", at_least(1));
   table.add("max-length", &HomotopyOptions::max_length, "no path longer than this (0: no bound)", at_least(0));
   table.add("max-states", &HomotopyOptions::max_states, "(vertex, word) states the search may make", at_least(1));
   return make_planner_entry<TranslatingRobot, HomotopyOptions>(
-      "homotopy", "the shortest path of each of the K shortest homotopy classes (h-signature words over the visibility graph)", std::move(table),
+      "homotopy",
+      "the shortest path of each of the K shortest homotopy classes (h-signature words over the visibility graph)",
+      std::move(table),
       [](const CSpace& cspace, const HomotopyOptions& o) { return std::make_unique<HomotopyPlanner>(cspace, o); });
 }
 

@@ -4,9 +4,9 @@
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/homotopy/class_graph.hpp>
-#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/homotopy/homotopy_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -61,7 +61,8 @@ struct TetherPlanner::Impl {
 
 TetherPlanner::TetherPlanner(const CSpace& cspace, TetherOptions options)
     : impl_(std::make_unique<Impl>(Impl{&cspace, options, parse_base(options.tether_base), ClassGraph(cspace)})) {
-  if (!(options.tether_length >= 0)) throw std::invalid_argument("option tether-length: expected a number >= 0 (0: no bound)");
+  if (!(options.tether_length >= 0))
+    throw std::invalid_argument("option tether-length: expected a number >= 0 (0: no bound)");
 }
 
 TetherPlanner::~TetherPlanner() = default;
@@ -86,7 +87,8 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
     return finish();
   }
   if (!share_a_component(*r.cspace, base, q.start) || !share_a_component(*r.cspace, q.start, q.goal)) {
-    report.fail(PlanStatus::no_path, "the tether base, the start and the goal do not lie in one component of the free space");
+    report.fail(PlanStatus::no_path,
+                "the tether base, the start and the goal do not lie in one component of the free space");
     return finish();
   }
   ClassGraph graph = r.graph;  // the query's points join a copy
@@ -107,7 +109,8 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
       }
   }
   if (start_length > L) {
-    report.fail(PlanStatus::no_path, "the tether at the start is " + detail::show_number(start_length) + " long, more than tether-length");
+    report.fail(PlanStatus::no_path,
+                "the tether at the start is " + detail::show_number(start_length) + " long, more than tether-length");
     return finish();
   }
   // G_w: every (vertex, class) the tether reaches within L (without L: within what the robot's
@@ -124,7 +127,9 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   if (!arrived) {
     if (tether) facts.set(TetherFacts::reachable, tether->search.states());
     report.fail(truncated ? PlanStatus::limit : PlanStatus::no_path,
-                truncated ? "max-states ended the search" : "no class of tether within tether-length (" + detail::show_number(L) + ") lets the robot reach the goal");
+                truncated ? "max-states ended the search"
+                          : "no class of tether within tether-length (" + detail::show_number(L) +
+                                ") lets the robot reach the goal");
     return finish();
   }
   report.path = robot.path_to(*arrived);
@@ -149,13 +154,14 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   facts.set(TetherFacts::largest, largest);
   facts.set(TetherFacts::at_goal, points_text(shapes.back()));
   facts.set(TetherFacts::reachable, tether->search.states());
-  std::string note = "tether [" + word_text(end.word) + "] " + std::to_string(*tether->length(g, end.word)) + " long at the goal, at most " +
-                     std::to_string(largest) + " on the way";
+  std::string note = "tether [" + word_text(end.word) + "] " + std::to_string(*tether->length(g, end.word)) +
+                     " long at the goal, at most " + std::to_string(largest) + " on the way";
   if (r.options.list_classes) {
     std::string classes;
     for (std::size_t id = 0; id < tether->search.states(); ++id)
       if (tether->search.state(id).vertex == g)
-        classes += (classes.empty() ? "[" : "; [") + word_text(tether->search.state(id).word) + "] " + detail::show_number(tether->search.state(id).distance);
+        classes += (classes.empty() ? "[" : "; [") + word_text(tether->search.state(id).word) + "] " +
+                   detail::show_number(tether->search.state(id).distance);
     facts.set(TetherFacts::classes, classes);
     note += "; the goal within L in the classes " + classes;
   }
@@ -175,18 +181,24 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
 
 PlannerEntry<TranslatingRobot> tether_planner_entry() {
   OptionTable<TetherOptions> table;
-  table.add("tether-base", "where the tether is anchored, X,Y (default: the start)", "point X,Y",
-            [](const TetherOptions& o) { return o.tether_base; },
-            [](TetherOptions& o, std::string_view text) -> std::optional<std::string> {
-              o.tether_base = std::string(text);
-              return std::nullopt;
-            });
-  table.add("tether-length", &TetherOptions::tether_length, "the tether's length L: its taut shape is never longer (0: no bound)", at_least(0));
-  table.add("list-classes", &TetherOptions::list_classes, "list every class of tether the goal is reached in within L (fact tether.classes)");
+  table.add(
+      "tether-base", "where the tether is anchored, X,Y (default: the start)", "point X,Y",
+      [](const TetherOptions& o) { return o.tether_base; },
+      [](TetherOptions& o, std::string_view text) -> std::optional<std::string> {
+        o.tether_base = std::string(text);
+        return std::nullopt;
+      });
+  table.add("tether-length", &TetherOptions::tether_length,
+            "the tether's length L: its taut shape is never longer (0: no bound)", at_least(0));
+  table.add("list-classes", &TetherOptions::list_classes,
+            "list every class of tether the goal is reached in within L (fact tether.classes)");
   table.add("max-states", &TetherOptions::max_states, "(vertex, word) states each search may make", at_least(1));
   return make_planner_entry<TranslatingRobot, TetherOptions>(
-      "tether", "a robot on a taut tether of bounded length from a base: the shortest path keeping the tether within L (h-signature classes)",
-      std::move(table), [](const CSpace& cspace, const TetherOptions& o) { return std::make_unique<TetherPlanner>(cspace, o); });
+      "tether",
+      "a robot on a taut tether of bounded length from a base: the shortest path keeping the tether within L "
+      "(h-signature classes)",
+      std::move(table),
+      [](const CSpace& cspace, const TetherOptions& o) { return std::make_unique<TetherPlanner>(cspace, o); });
 }
 
 }  // namespace polyplan

@@ -1,8 +1,8 @@
 #pragma once
-// A tethered robot (the course's sampling-planner homework, part 3), registered as `tether`: a tether anchored at `tether-base`
-// (X,Y; default the query's start) stays taut, so it is the shortest path from the base to the
-// robot in its homotopy class, and may never be longer than `tether-length` L (0: no bound). A
-// configuration is the robot's position and the tether's word (homotopy/h_signature.hpp).
+// A tethered robot (the course's sampling-planner homework, part 3), registered as `tether`: a tether anchored at
+// `tether-base` (X,Y; default the query's start) stays taut, so it is the shortest path from the base to the robot in
+// its homotopy class, and may never be longer than `tether-length` L (0: no bound). A configuration is the robot's
+// position and the tether's word (homotopy/h_signature.hpp).
 //
 // As the seed's algorithm: a Dijkstra over (visibility-graph vertex, word) from the base, bounded
 // by L, gives every (vertex, class) the tether reaches and its taut length (G_w, the fact
@@ -28,8 +28,8 @@
 namespace polyplan {
 
 struct TetherOptions {
-  std::string tether_base;     // "X,Y"; empty: the query's start
-  double tether_length = 0;    // L; 0: no bound
+  std::string tether_base;   // "X,Y"; empty: the query's start
+  double tether_length = 0;  // L; 0: no bound
   bool list_classes = false;
   std::size_t max_states = 1000000;
 };

@@ -88,7 +88,8 @@ class Replanner {
 template <IncrementalDirection Direction>
 class SearchReplanner : public Replanner {
  public:
-  SearchReplanner(const ChangingGrid& grid, GridCell start, GridCell goal, ReplanAlgorithm algorithm, ReplanTrace* trace)
+  SearchReplanner(const ChangingGrid& grid, GridCell start, GridCell goal, ReplanAlgorithm algorithm,
+                  ReplanTrace* trace)
       : search_(grid.graph(), {&grid}, {&grid}, Direction == IncrementalDirection::from_goal ? start : goal,
                 Direction == IncrementalDirection::from_goal ? goal : start),
         algorithm_(algorithm), at_(start) {
@@ -126,11 +127,14 @@ class SearchReplanner : public Replanner {
   std::unique_ptr<TraceAdapter<Search>> adapter_;
 };
 
-std::unique_ptr<Replanner> make_replanner(const ChangingGrid& grid, GridCell start, GridCell goal, const ReplanOptions& options) {
+std::unique_ptr<Replanner> make_replanner(const ChangingGrid& grid, GridCell start, GridCell goal,
+                                          const ReplanOptions& options) {
   // LPA* grows from its start: its root is the robot's goal, the robot's cell the goal it aims at.
   if (options.algorithm == ReplanAlgorithm::lpastar)
-    return std::make_unique<SearchReplanner<IncrementalDirection::from_start>>(grid, start, goal, options.algorithm, options.trace);
-  return std::make_unique<SearchReplanner<IncrementalDirection::from_goal>>(grid, start, goal, options.algorithm, options.trace);
+    return std::make_unique<SearchReplanner<IncrementalDirection::from_start>>(grid, start, goal, options.algorithm,
+                                                                               options.trace);
+  return std::make_unique<SearchReplanner<IncrementalDirection::from_goal>>(grid, start, goal, options.algorithm,
+                                                                            options.trace);
 }
 
 void check_cell(const GridMap& map, GridPoint p, const char* what) {
@@ -144,8 +148,10 @@ void check_cell(const GridMap& map, GridPoint p, const char* what) {
 void check_options(const ReplanOptions& options) {
   const double r = options.sensor_radius;
   if (!std::isfinite(r) || r * r < 2.0)
-    throw InputError("sensor radius: must be a finite number of at least √2 ≈ 1.41421357 (the robot must see every "
-                     "cell its next move touches), got " + std::to_string(r));
+    throw InputError(
+        "sensor radius: must be a finite number of at least √2 ≈ 1.41421357 (the robot must see every "
+        "cell its next move touches), got " +
+        std::to_string(r));
 }
 
 // What the robot knows, and the grid it plans on (unknown cells free).
@@ -155,7 +161,8 @@ struct Knowledge {
         seen_after(cells.size(), never_seen) {}
   // Senses the cells within `radius` of `at`; returns how many cells changed their believed state
   // and appends the moves that changed.
-  std::size_t sense(const GridMap& truth, GridPoint at, double radius, std::size_t moves, std::vector<ChangedMove>& changed) {
+  std::size_t sense(const GridMap& truth, GridPoint at, double radius, std::size_t moves,
+                    std::vector<ChangedMove>& changed) {
     std::size_t changed_cells = 0;
     // The square of cells the disc reaches, cut to the map (a radius beyond the map's diagonal
     // sees the whole map at the cost of its cells, not of the square).

@@ -55,11 +55,11 @@ struct ReplanTracePass {
   std::size_t replan = 0, pass = 0;  // replan counts from 1, pass from 1 within it
   GridPoint popped;
   OctileLength key_first, key_second, g_before, g_after, rhs;
-  OctileLength h;                       // the popped cell's heuristic (without k_m)
+  OctileLength h;                        // the popped cell's heuristic (without k_m)
   std::optional<GridPoint> backpointer;  // the neighbour its rhs reads, after the pass (none: the goal, or rhs ∞)
-  std::string kind;            // "over" (g := rhs), "under" (g := ∞), "stale key" (put back)
-  std::vector<Cell> updated;   // the rhs values it recomputed, in order
-  std::vector<Open> open;      // the open list after the pass, by key
+  std::string kind;                      // "over" (g := rhs), "under" (g := ∞), "stale key" (put back)
+  std::vector<Cell> updated;             // the rhs values it recomputed, in order
+  std::vector<Open> open;                // the open list after the pass, by key
 };
 
 class ReplanTrace {
@@ -82,8 +82,8 @@ struct ReplanOptions {
 
 struct ReplanStep {
   GridPoint at;
-  OctileLength cost_to_goal;    // planned from `at` on the knowledge at that moment (∞: no path)
-  std::size_t expanded = 0;     // by the replan here (0 when nothing changed: the plan held)
+  OctileLength cost_to_goal;      // planned from `at` on the knowledge at that moment (∞: no path)
+  std::size_t expanded = 0;       // by the replan here (0 when nothing changed: the plan held)
   std::size_t changed_cells = 0;  // cells whose believed state the sensing here changed
   bool replanned = false;
 };

@@ -3,11 +3,11 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/geometry/rasterize.hpp>
-#include <polyplan/grids/raster_grid.hpp>
-#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/incremental/replan_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 
 #include <cmath>
 #include <stdexcept>
@@ -82,8 +82,9 @@ struct ReplanningPlanner::Impl {
 
   Impl(const CSpace& c, ReplanAlgorithm a, const ReplanningOptions& o) : cspace(&c), algorithm(a), options(o) {
     if (o.sensor != 0 && !(std::isfinite(o.sensor) && o.sensor > 0 && o.sensor * o.sensor >= 2))
-      throw std::invalid_argument("sensor: expected 0 (the whole raster) or a finite number of cells of at least √2 ≈ 1.41421357, got " +
-                                  std::to_string(o.sensor));
+      throw std::invalid_argument(
+          "sensor: expected 0 (the whole raster) or a finite number of cells of at least √2 ≈ 1.41421357, got " +
+          std::to_string(o.sensor));
     phases.push_back({0, 0, nullptr, &c, rasterize(c, o.resolution)});
     const World& world = c.world();
     // One world for each moment of change: the changes listed with one after_moves happen at once.
@@ -102,26 +103,30 @@ struct ReplanningPlanner::Impl {
   }
 
   // The drive's cells from move `from` to move `to` (both included), on the raster.
-  static std::vector<GridCell> stretch(const Raster& raster, const ReplanResult& drive, std::size_t from, std::size_t to) {
+  static std::vector<GridCell> stretch(const Raster& raster, const ReplanResult& drive, std::size_t from,
+                                       std::size_t to) {
     std::vector<GridCell> cells;
     for (std::size_t m = from; m <= to; ++m) cells.push_back(cell_of(raster, drive.traversed[m]));
     return cells;
   }
 
   // start → turns → goal, each stretch between two changes checked exactly in its own world.
-  void return_drive(const Query& query, const ReplanResult& drive, std::size_t lived, PlanReport<ExactPoint>& report) const {
+  void return_drive(const Query& query, const ReplanResult& drive, std::size_t lived,
+                    PlanReport<ExactPoint>& report) const {
     std::vector<ExactPoint> path;
     for (std::size_t p = 0; p < lived; ++p) {
       const Phase& phase = phases[p];
       const std::size_t to = p + 1 < lived ? phases[p + 1].from_moves : drive.moves;
       const std::vector<GridCell> cells = stretch(phase.raster, drive, phase.from_moves, to);
       const ExactPoint from_point = p == 0 ? query.start : path.back();
-      const ExactPoint to_point = p + 1 == lived ? query.goal : phase.raster.cell_center(drive.traversed[to].x, drive.traversed[to].y);
+      const ExactPoint to_point =
+          p + 1 == lived ? query.goal : phase.raster.cell_center(drive.traversed[to].x, drive.traversed[to].y);
       const std::vector<ExactPoint> piece = polyline_through_turns(phase.raster, from_point, cells, to_point);
       const PathCheck check = check_path(*phase.cspace, piece);
       if (!check.valid) {
-        report.fail(PlanStatus::not_found, "the drive from move " + std::to_string(phase.from_moves) + " to move " + std::to_string(to) +
-                                               " is not a valid motion in the world of " + made_text(phase) + ": " + check.reason);
+        report.fail(PlanStatus::not_found, "the drive from move " + std::to_string(phase.from_moves) + " to move " +
+                                               std::to_string(to) + " is not a valid motion in the world of " +
+                                               made_text(phase) + ": " + check.reason);
         return;
       }
       path.insert(path.end(), piece.begin() + (path.empty() ? 0 : 1), piece.end());
@@ -130,7 +135,8 @@ struct ReplanningPlanner::Impl {
     report.succeed();
     report.path = std::move(path);
     report.length = euclidean_length(report.path);
-    report.certificate = {true, "exact path check (arrangement zone walk) of each stretch in the world as it was when driven"};
+    report.certificate = {
+        true, "exact path check (arrangement zone walk) of each stretch in the world as it was when driven"};
   }
 
   std::string made_text(const Phase& phase) const {
@@ -147,11 +153,12 @@ struct ReplanningPlanner::Impl {
       report.facts.set(QueryFacts::stopped_by, "move limit");
       report.fail(PlanStatus::limit, after + ": the move limit ended the drive at cell " + cell);
     } else if (drive.truth.is_blocked(at.x, at.y)) {
-      report.fail(PlanStatus::not_found, after + ", the world of " + made_text(last) + " blocks the robot's own cell " + cell);
+      report.fail(PlanStatus::not_found,
+                  after + ", the world of " + made_text(last) + " blocks the robot's own cell " + cell);
     } else {
       const std::string n = std::to_string(last.raster.cells_per_axis);
-      report.fail(PlanStatus::not_found, after + ", no path on the " + n + " x " + n + " grid the robot knows from cell " + cell +
-                                             " to the goal's cell");
+      report.fail(PlanStatus::not_found, after + ", no path on the " + n + " x " + n +
+                                             " grid the robot knows from cell " + cell + " to the goal's cell");
     }
   }
 
@@ -199,8 +206,9 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
     for (; lived < r.phases.size() && r.phases[lived].from_moves <= moves; ++lived)
       truth.blocked.assign(r.phases[lived].raster.blocked.begin(), r.phases[lived].raster.blocked.end());
   };
-  const ReplanResult drive = drive_through_unknown_map(grid_map(first, r.cspace->world().source), point_of(first, snapped->first),
-                                                       point_of(first, snapped->second), replanning);
+  const ReplanResult drive =
+      drive_through_unknown_map(grid_map(first, r.cspace->world().source), point_of(first, snapped->first),
+                                point_of(first, snapped->second), replanning);
   r.record_facts(drive, lived, facts);
   const Phase& last = r.phases[lived - 1];
   if (options.record) {
@@ -214,14 +222,20 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
 
 PlannerEntry<TranslatingRobot> replanning_planner_entry(ReplanAlgorithm algorithm) {
   OptionTable<ReplanningOptions> table;
-  table.add("resolution", &ReplanningOptions::resolution, "cells per side of the bounds (n x n cells)", in_range(1, static_cast<double>(max_cells_per_axis)))
-      .add("sensor", &ReplanningOptions::sensor, "sensing radius in cells (at least 1.41421357), 0: the robot sees the whole raster", at_least(0))
-      .add("max-moves", &ReplanningOptions::max_moves, "moves before the drive stops with status limit (0: 4 x the cells)", at_least(1));
+  table
+      .add("resolution", &ReplanningOptions::resolution, "cells per side of the bounds (n x n cells)",
+           in_range(1, static_cast<double>(max_cells_per_axis)))
+      .add("sensor", &ReplanningOptions::sensor,
+           "sensing radius in cells (at least 1.41421357), 0: the robot sees the whole raster", at_least(0))
+      .add("max-moves", &ReplanningOptions::max_moves,
+           "moves before the drive stops with status limit (0: 4 x the cells)", at_least(1));
   static constexpr const char* how[] = {"D* Lite (Koenig & Likhachev), the start moving with the robot",
-                                        "LPA*, re-keyed each time the robot has moved", "A* from scratch at every replan"};
+                                        "LPA*, re-keyed each time the robot has moved",
+                                        "A* from scratch at every replan"};
   PlannerEntry<TranslatingRobot> entry = make_planner_entry<TranslatingRobot, ReplanningOptions>(
       replanning_planner_name(algorithm),
-      std::string("a robot drives the raster while the world's \"changes\" happen, replanning with ") + how[static_cast<int>(algorithm)],
+      std::string("a robot drives the raster while the world's \"changes\" happen, replanning with ") +
+          how[static_cast<int>(algorithm)],
       std::move(table), [algorithm](const CSpace& cspace, const ReplanningOptions& o) {
         return std::make_unique<ReplanningPlanner>(cspace, algorithm, o);
       });

@@ -57,8 +57,9 @@ class ArmFileReader : public detail::JsonFileReader {
   }
 
   // A number as the file wrote it (floating-point literals arrive as their text).
-  static std::string text(const json& v) { return detail::abbreviated_text(v.is_string() ? v.get<std::string>() : v.dump()); }
-
+  static std::string text(const json& v) {
+    return detail::abbreviated_text(v.is_string() ? v.get<std::string>() : v.dump());
+  }
 };
 
 // "limits": [[lo, hi], ...], one pair per joint, radians.
@@ -72,7 +73,8 @@ std::vector<std::pair<double, double>> read_limits(const ArmFileReader& r, const
     const std::vector<double> pair = r.numbers(v[i], object, "[lo, hi] (radians)");
     if (pair.size() != 2) r.fail(object, "expected [lo, hi] (radians), got " + ArmFileReader::abbreviated(v[i]));
     if (pair[0] > pair[1])
-      r.fail(object, "lo " + ArmFileReader::text(v[i][0]) + " is above hi " + ArmFileReader::text(v[i][1]) + " (radians, [lo, hi])");
+      r.fail(object, "lo " + ArmFileReader::text(v[i][0]) + " is above hi " + ArmFileReader::text(v[i][1]) +
+                         " (radians, [lo, hi])");
     limits.emplace_back(pair[0], pair[1]);
   }
   return limits;
@@ -86,7 +88,8 @@ Arm read_arm(const ArmFileReader& r, const json& root) {
   for (const json& l : root["links"]) arm.exact_links.push_back(ArmFileReader::exact(l));
   for (std::size_t i = 0; i < arm.links.size(); ++i)
     if (!(arm.links[i] > 0))
-      r.fail("links[" + std::to_string(i) + "]", "a link length must be positive, got " + ArmFileReader::text(root["links"][i]));
+      r.fail("links[" + std::to_string(i) + "]",
+             "a link length must be positive, got " + ArmFileReader::text(root["links"][i]));
   if (root.contains("link_width")) {
     arm.link_width = r.number(root["link_width"], "link_width");
     if (arm.link_width < 0)
@@ -104,7 +107,8 @@ Arm read_arm(const ArmFileReader& r, const json& root) {
 
 // Obstacle polygons are the world file's: handed to the world reader (exact numbers, simple
 // polygons, holes inside, orientation), which names them "obstacles[i]" in the same file.
-void read_obstacles(const json& root, const std::string& name, ArmProblem& problem, std::vector<std::string>& warnings) {
+void read_obstacles(const json& root, const std::string& name, ArmProblem& problem,
+                    std::vector<std::string>& warnings) {
   if (!root.contains("obstacles")) return;
   const json obstacles_only = {{"obstacles", root["obstacles"]}};
   World world = parse_world(obstacles_only.dump(), name, &warnings);
@@ -115,18 +119,21 @@ void read_obstacles(const json& root, const std::string& name, ArmProblem& probl
 void read_points(const ArmFileReader& r, const json& root, ArmProblem& problem) {
   if (!root.contains("points")) return;
   const json& points = root["points"];
-  if (!points.is_array()) r.fail("points", "expected a list of points [[x, y], ...], got " + ArmFileReader::abbreviated(points));
-  for (std::size_t i = 0; i < points.size(); ++i) problem.points.push_back(r.point(points[i], "points[" + std::to_string(i) + "]"));
+  if (!points.is_array())
+    r.fail("points", "expected a list of points [[x, y], ...], got " + ArmFileReader::abbreviated(points));
+  for (std::size_t i = 0; i < points.size(); ++i)
+    problem.points.push_back(r.point(points[i], "points[" + std::to_string(i) + "]"));
 }
 
 // A query's goal in `q` (the file's top level, or one of its queries): joint angles ("goal") or the
 // hand at a point ("goal_point", with "goal_orientation" optionally), exactly one of them. `where`
 // names the query ("arm" at the top level), `prefix` its fields ("" or "queries[2].").
-void read_goal(const ArmFileReader& r, const json& q, const std::string& where, const std::string& prefix, std::size_t joints,
-               ArmQuery& query) {
+void read_goal(const ArmFileReader& r, const json& q, const std::string& where, const std::string& prefix,
+               std::size_t joints, ArmQuery& query) {
   const bool angles = q.contains("goal"), point = q.contains("goal_point");
   if (angles && point)
-    r.fail(where, "both \"goal\" and \"goal_point\" given: a query's goal is joint angles or the hand at a point, not both");
+    r.fail(where,
+           "both \"goal\" and \"goal_point\" given: a query's goal is joint angles or the hand at a point, not both");
   if (!angles && !point) r.fail(where, "missing field \"goal\" (or \"goal_point\")");
   if (q.contains("goal_orientation") && !point)
     r.fail(prefix + "goal_orientation", "given without \"goal_point\" (it is the hand's orientation at that point)");
@@ -135,7 +142,8 @@ void read_goal(const ArmFileReader& r, const json& q, const std::string& where, 
     return;
   }
   const json& p = q["goal_point"];
-  WorkspaceGoal goal{r.point(p, prefix + "goal_point"), std::nullopt, ExactPoint{ArmFileReader::exact(p[0]), ArmFileReader::exact(p[1])}};
+  WorkspaceGoal goal{r.point(p, prefix + "goal_point"), std::nullopt,
+                     ExactPoint{ArmFileReader::exact(p[0]), ArmFileReader::exact(p[1])}};
   if (q.contains("goal_orientation")) goal.orientation = r.number(q["goal_orientation"], prefix + "goal_orientation");
   query.goal_point = goal;
 }
@@ -145,7 +153,8 @@ void read_queries(const ArmFileReader& r, const json& root, ArmProblem& problem,
   const bool goal_given = root.contains("goal") || root.contains("goal_point");
   if (root.contains("start") != goal_given)
     r.fail("arm", root.contains("start") ? "missing field \"goal\" or \"goal_point\" (start is given)"
-                                         : std::string("missing field \"start\" (") + (root.contains("goal") ? "goal" : "goal_point") + " is given)");
+                                         : std::string("missing field \"start\" (") +
+                                               (root.contains("goal") ? "goal" : "goal_point") + " is given)");
   if (root.contains("start")) {
     ArmQuery query{"start/goal", r.angles(root["start"], "start", n), {}};
     read_goal(r, root, "arm", "", n, query);
@@ -186,8 +195,9 @@ ArmProblem parse_arm_problem(const std::string& text, const std::string& name, s
   if (!root.is_object()) r.fail("arm", "expected a JSON object at the top level");
 
   std::vector<std::string> found_warnings;
-  r.warn_unknown(root, "arm", {"links", "link_width", "self_collision", "limits", "obstacles", "points", "start", "goal", "goal_point",
-                                  "goal_orientation", "queries"},
+  r.warn_unknown(root, "arm",
+                 {"links", "link_width", "self_collision", "limits", "obstacles", "points", "start", "goal",
+                  "goal_point", "goal_orientation", "queries"},
                  &found_warnings);
 
   ArmProblem problem;

@@ -14,9 +14,9 @@
 // effector (`goal_point` [x, y]; with `goal_orientation`, the last link's absolute angle there,
 // θ1 + … + θn, in radians), never both: the planners then plan to the collision-free inverse-kinematics
 // solutions (arm/arm_goal_set.hpp). `limits` gives each joint's [lo, hi] in radians, lo <= hi (read
-// round the circle), which inverse kinematics keeps to. Obstacle polygons are read exactly and validated by the world reader
-// (io/world_reader.hpp), so their messages are the world file's. Every problem throws
-// InputError with one line "<file>: <object>: <what is wrong>".
+// round the circle), which inverse kinematics keeps to. Obstacle polygons are read exactly and validated by the world
+// reader (io/world_reader.hpp), so their messages are the world file's. Every problem throws InputError with one line
+// "<file>: <object>: <what is wrong>".
 #include <polyplan/geometry/arm_problem.hpp>
 
 #include <string>

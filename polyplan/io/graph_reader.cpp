@@ -61,9 +61,11 @@ class GraphFileReader : public detail::JsonFileReader {
     return static_cast<std::size_t>(i);
   }
 
-  GraphVertex vertex(const json& v, const std::string& object, std::size_t count, std::vector<std::string>& warnings) const {
+  GraphVertex vertex(const json& v, const std::string& object, std::size_t count,
+                     std::vector<std::string>& warnings) const {
     if (!v.is_object())
-      fail(object, "expected a vertex {\"x\": [x, y], \"neighbors\": [...], \"neighbors_cost\": [...]}, got " + abbreviated(v));
+      fail(object,
+           "expected a vertex {\"x\": [x, y], \"neighbors\": [...], \"neighbors_cost\": [...]}, got " + abbreviated(v));
     warn_unknown(v, object, {"x", "neighbors", "neighbors_cost", "g", "backpointer"}, &warnings);
     GraphVertex vertex;
     read_point(required(v, "x", object), object + ".x", vertex);
@@ -133,7 +135,8 @@ GraphFile parse_graph(const std::string& text, const std::string& name, std::vec
   GraphFile graph;
   graph.source = name;
   for (std::size_t i = 0; i < vertices.size(); ++i)
-    graph.vertices.push_back(r.vertex(vertices[i], "vertices[" + std::to_string(i) + "]", vertices.size(), found_warnings));
+    graph.vertices.push_back(
+        r.vertex(vertices[i], "vertices[" + std::to_string(i) + "]", vertices.size(), found_warnings));
   if (warnings) warnings->insert(warnings->end(), found_warnings.begin(), found_warnings.end());
   else
     for (const auto& w : found_warnings) std::cerr << "warning: " << w << '\n';

@@ -26,7 +26,7 @@ struct GraphVertex {
 };
 
 struct GraphFile {
-  std::string source;  // the file, for messages and titles
+  std::string source;                 // the file, for messages and titles
   std::vector<GraphVertex> vertices;  // at least one
 };
 

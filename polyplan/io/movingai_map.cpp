@@ -25,8 +25,13 @@ using namespace detail;
 // not one (a free cell by mistake would be a silent wrong answer).
 std::optional<bool> terrain_blocks(char c) {
   switch (c) {
-    case '.': case 'G': return false;
-    case '@': case 'O': case 'T': case 'W': case 'S': return true;
+    case '.':
+    case 'G': return false;
+    case '@':
+    case 'O':
+    case 'T':
+    case 'W':
+    case 'S': return true;
     default: return std::nullopt;
   }
 }
@@ -50,7 +55,7 @@ struct GridPoint {
 // CGAL's symmetric difference). Cutting the cycle at each corner it revisits leaves loops whose
 // winding numbers add up to the cycle's, so the blocked region (odd winding) is unchanged.
 void split_at_repeated_corners(std::vector<GridPoint> cycle, std::vector<std::vector<GridPoint>>& cycles) {
-  std::vector<GridPoint> open;  // the corners walked and not yet closed into a loop
+  std::vector<GridPoint> open;                             // the corners walked and not yet closed into a loop
   std::unordered_map<std::int64_t, std::size_t> position;  // where each corner of `open` is
   auto key = [](const GridPoint& p) { return (static_cast<std::int64_t>(p.y) << 32) + p.x; };
   for (const GridPoint& p : cycle) {
@@ -144,18 +149,21 @@ GridMap parse_movingai_map(const std::string& text, const std::string& path) {
       in_grid = true;
       continue;
     }
-    fail("expected the header lines 'type', 'height H', 'width W', 'map', got \"" + detail::abbreviated_text(line) + "\"");
+    fail("expected the header lines 'type', 'height H', 'width W', 'map', got \"" + detail::abbreviated_text(line) +
+         "\"");
   }
   if (!in_grid) fail("missing the 'map' line");
   // Checked before the cells are allocated: the header alone must not cost gigabytes.
-  if (width <= 0 || height <= 0 || static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) > limits::map_cells)
+  if (width <= 0 || height <= 0 ||
+      static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) > limits::map_cells)
     fail("width and height must be positive, with at most " + std::to_string(limits::map_cells) + " cells, got " +
          std::to_string(width) + "x" + std::to_string(height));
   map.width = static_cast<int>(width);
   map.height = static_cast<int>(height);
   map.blocked.assign(static_cast<std::size_t>(map.width) * map.height, false);
   for (int y = 0; y < map.height; ++y) {
-    if (!std::getline(in, line)) fail("the map has " + std::to_string(y) + " rows, the header says " + std::to_string(map.height));
+    if (!std::getline(in, line))
+      fail("the map has " + std::to_string(y) + " rows, the header says " + std::to_string(map.height));
     ++line_number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (static_cast<int>(line.size()) != map.width)
@@ -189,7 +197,8 @@ World world_from_grid(const GridMap& map) {
     Polygon polygon;
     for (const GridPoint& p : cycle) polygon.push_back(Point(p.x, p.y));
     // A non-simple loop would crash CGAL below (undefined behaviour): a bug of the trace, told.
-    if (!polygon.is_simple()) throw std::logic_error("world_from_grid: a traced boundary of " + map.source + " is not simple");
+    if (!polygon.is_simple())
+      throw std::logic_error("world_from_grid: a traced boundary of " + map.source + " is not simple");
     if (polygon.orientation() == CGAL::CLOCKWISE) polygon.reverse_orientation();
     polygons.push_back(std::move(polygon));
   }

@@ -23,7 +23,9 @@ std::optional<double> whole_double(const std::string& text) {
 
 }  // namespace
 
-std::vector<ScenarioQuery> read_scenarios(const std::string& path) { return parse_scenarios(detail::read_text_file(path), path); }
+std::vector<ScenarioQuery> read_scenarios(const std::string& path) {
+  return parse_scenarios(detail::read_text_file(path), path);
+}
 
 std::vector<ScenarioQuery> parse_scenarios(const std::string& text, const std::string& path) {
   std::istringstream in(text);
@@ -42,7 +44,8 @@ std::vector<ScenarioQuery> parse_scenarios(const std::string& text, const std::s
     ScenarioQuery q;
     std::string map_name, rest;
     q.line = line_number;
-    if (!(fields >> q.bucket >> map_name >> q.map_width >> q.map_height >> q.start_x >> q.start_y >> q.goal_x >> q.goal_y >> q.octile_text) ||
+    if (!(fields >> q.bucket >> map_name >> q.map_width >> q.map_height >> q.start_x >> q.start_y >> q.goal_x >>
+          q.goal_y >> q.octile_text) ||
         (fields >> rest))
       throw InputError(where + "expected 'bucket map width height start_x start_y goal_x goal_y length'");
     const auto length = whole_double(q.octile_text);
@@ -53,17 +56,18 @@ std::vector<ScenarioQuery> parse_scenarios(const std::string& text, const std::s
   return queries;
 }
 
-void check_scenarios_match(const std::vector<ScenarioQuery>& queries, int map_width, int map_height, const std::string& map_file,
-                           const std::string& scenario_file) {
+void check_scenarios_match(const std::vector<ScenarioQuery>& queries, int map_width, int map_height,
+                           const std::string& map_file, const std::string& scenario_file) {
   const std::string size = std::to_string(map_width) + "x" + std::to_string(map_height);
   for (const ScenarioQuery& q : queries) {
     const std::string where = scenario_file + ": line " + std::to_string(q.line) + ": ";
     if (q.map_width != map_width || q.map_height != map_height)
-      throw InputError(where + "the query is for a " + std::to_string(q.map_width) + "x" + std::to_string(q.map_height) +
-                       " map, " + map_file + " is " + size);
+      throw InputError(where + "the query is for a " + std::to_string(q.map_width) + "x" +
+                       std::to_string(q.map_height) + " map, " + map_file + " is " + size);
     for (const auto& [name, x, y] : {std::tuple{"start", q.start_x, q.start_y}, std::tuple{"goal", q.goal_x, q.goal_y}})
       if (x < 0 || y < 0 || x >= map_width || y >= map_height)
-        throw InputError(where + name + " (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " + size + " map");
+        throw InputError(where + name + " (" + std::to_string(x) + ", " + std::to_string(y) + ") is outside the " +
+                         size + " map");
   }
 }
 
@@ -71,7 +75,8 @@ std::vector<std::optional<double>> read_reference_lengths(const std::string& pat
   return parse_reference_lengths(detail::read_text_file(path), path, queries);
 }
 
-std::vector<std::optional<double>> parse_reference_lengths(const std::string& text, const std::string& path, std::size_t queries) {
+std::vector<std::optional<double>> parse_reference_lengths(const std::string& text, const std::string& path,
+                                                           std::size_t queries) {
   std::istringstream in(text);
   std::string line;
   if (!std::getline(in, line) || line.rfind("index,length", 0) != 0)
@@ -93,8 +98,8 @@ std::vector<std::optional<double>> parse_reference_lengths(const std::string& te
     if (comma == std::string::npos || error != std::errc() || stop != end || !length)
       throw InputError(where + "expected 'index,length', got \"" + detail::abbreviated_text(line) + "\"");
     if (index >= queries)
-      throw InputError(where + "index " + std::to_string(index) + " is beyond the scenario file's " + std::to_string(queries) +
-                       " queries");
+      throw InputError(where + "index " + std::to_string(index) + " is beyond the scenario file's " +
+                       std::to_string(queries) + " queries");
     lengths[index] = *length;
   }
   return lengths;

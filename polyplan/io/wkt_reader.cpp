@@ -38,7 +38,8 @@ class WktParser {
         while (comma_or(')'));
       } else {
         throw InputError(prefix_ + "line " + std::to_string(geometry_line_) +
-                         ": cannot read WKT: expected POLYGON or MULTIPOLYGON, got \"" + detail::abbreviated_text(type_) + "\"");
+                         ": cannot read WKT: expected POLYGON or MULTIPOLYGON, got \"" +
+                         detail::abbreviated_text(type_) + "\"");
       }
     }
     if (obstacles.empty()) throw InputError(prefix_ + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
@@ -61,7 +62,8 @@ class WktParser {
     Ring r;
     do {
       const Rational x = number(), y = number();
-      if (skip_space(), pos_ < text_.size() && number_char(text_[pos_])) malformed("a point has more than two coordinates");
+      if (skip_space(), pos_ < text_.size() && number_char(text_[pos_]))
+        malformed("a point has more than two coordinates");
       r.push_back({x, y});
     } while (comma_or(')'));
     // WKT closes a ring by repeating its first point; polyplan's rings are implicitly closed.
@@ -91,7 +93,8 @@ class WktParser {
 
   void expect(char c) {
     skip_space();
-    if (pos_ >= text_.size() || text_[pos_] != c) malformed(std::string("expected '") + c + "', got " + describe_next(pos_));
+    if (pos_ >= text_.size() || text_[pos_] != c)
+      malformed(std::string("expected '") + c + "', got " + describe_next(pos_));
     ++pos_;
   }
 
@@ -122,13 +125,16 @@ class WktParser {
   }
 
   static bool number_char(char c) {
-    return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E' || c == '/';
+    return std::isdigit(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '+' || c == 'e' || c == 'E' ||
+           c == '/';
   }
 
   std::string describe_next(std::size_t at) const {
     if (at >= text_.size()) return "the end of the file";
     std::size_t end = at;
-    auto separator = [](char c) { return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == '(' || c == ')'; };
+    auto separator = [](char c) {
+      return std::isspace(static_cast<unsigned char>(c)) || c == ',' || c == '(' || c == ')';
+    };
     while (end < text_.size() && end - at < 20 && !separator(text_[end])) ++end;
     std::string quoted = "\"";  // appended: GCC 12 takes "\"" + string for an out-of-bounds copy
     quoted += text_.substr(at, std::max<std::size_t>(end - at, 1));
@@ -137,7 +143,8 @@ class WktParser {
   }
 
   [[noreturn]] void malformed(const std::string& why) const {
-    throw InputError(prefix_ + "line " + std::to_string(geometry_line_) + ": cannot read WKT: malformed " + type_ + ": " + why);
+    throw InputError(prefix_ + "line " + std::to_string(geometry_line_) + ": cannot read WKT: malformed " + type_ +
+                     ": " + why);
   }
 
   std::string_view text_;

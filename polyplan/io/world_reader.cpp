@@ -23,8 +23,9 @@ class Reader : public detail::JsonFileReader {
 
   Rational number(const json& v, const std::string& object) const {
     std::string text;
-    if (v.is_number_integer()) return v.is_number_unsigned() ? Rational(mpz_class(std::to_string(v.get<std::uint64_t>()))) :
-                                                            Rational(mpz_class(std::to_string(v.get<std::int64_t>())));
+    if (v.is_number_integer())
+      return v.is_number_unsigned() ? Rational(mpz_class(std::to_string(v.get<std::uint64_t>())))
+                                    : Rational(mpz_class(std::to_string(v.get<std::int64_t>())));
     if (!v.is_string()) fail(object, "not a number: " + abbreviated(v));
     std::string why;
     auto value = parse_rational(v.get<std::string>(), &why);
@@ -45,14 +46,16 @@ class Reader : public detail::JsonFileReader {
     position = {number(v[0], object + "[0]"), number(v[1], object + "[1]")};
     if (v.size() == 3) {
       const Rational degrees = number(v[2], object + "[2] (theta, degrees)");
-      if (abs(degrees) > 1e6) fail(object + "[2]", "theta " + to_string(degrees) + " degrees: expected an angle within ±1e6 degrees");
+      if (abs(degrees) > 1e6)
+        fail(object + "[2]", "theta " + to_string(degrees) + " degrees: expected an angle within ±1e6 degrees");
       theta = to_double(degrees);
     }
   }
 
   // "car": {"turning_radius": R, "reverse": true|false}.
   CarSteering car(const json& v, std::vector<std::string>* warnings) const {
-    if (!v.is_object()) fail("robot.car", "expected {\"turning_radius\": R, \"reverse\": true|false}, got " + abbreviated(v));
+    if (!v.is_object())
+      fail("robot.car", "expected {\"turning_radius\": R, \"reverse\": true|false}, got " + abbreviated(v));
     warn_unknown(v, "robot.car", {"turning_radius", "reverse"}, warnings);
     CarSteering car;
     const Rational radius = number(required(v, "turning_radius", "robot.car"), "robot.car.turning_radius");
@@ -60,7 +63,8 @@ class Reader : public detail::JsonFileReader {
     if (radius <= 0 || !std::isfinite(car.turning_radius) || car.turning_radius <= 0)
       fail("robot.car.turning_radius", to_string(radius) + ": expected a positive number");
     if (v.contains("reverse")) {
-      if (!v["reverse"].is_boolean()) fail("robot.car.reverse", "expected true or false, got " + abbreviated(v["reverse"]));
+      if (!v["reverse"].is_boolean())
+        fail("robot.car.reverse", "expected true or false, got " + abbreviated(v["reverse"]));
       car.reverse = v["reverse"].get<bool>();
     }
     return car;
@@ -72,8 +76,10 @@ class Reader : public detail::JsonFileReader {
     pose(start, start_object, q.start, q.start_theta);
     pose(goal, goal_object, q.goal, q.goal_theta);
     // A car's heading is half its pose: a start without one is a mistake, not heading 0.
-    if (car && !q.start_theta) fail(start_object, "a car's pose is [x, y, theta] (theta in degrees), got " + abbreviated(start));
-    if (car && !q.goal_theta) fail(goal_object, "a car's pose is [x, y, theta] (theta in degrees), got " + abbreviated(goal));
+    if (car && !q.start_theta)
+      fail(start_object, "a car's pose is [x, y, theta] (theta in degrees), got " + abbreviated(start));
+    if (car && !q.goal_theta)
+      fail(goal_object, "a car's pose is [x, y, theta] (theta in degrees), got " + abbreviated(goal));
     q.name = std::move(name);
     return q;
   }
@@ -88,7 +94,8 @@ class Reader : public detail::JsonFileReader {
 
   PolygonWithHoles polygon(const json& v, const std::string& object, std::vector<std::string>* warnings) const {
     if (v.is_array()) return {ring(v, object), {}};
-    if (!v.is_object()) fail(object, "expected a polygon (a list of points or {\"outer\", \"holes\"}), got " + abbreviated(v));
+    if (!v.is_object())
+      fail(object, "expected a polygon (a list of points or {\"outer\", \"holes\"}), got " + abbreviated(v));
     warn_unknown(v, object, {"outer", "holes"}, warnings);
     PolygonWithHoles p;
     p.outer = ring(required(v, "outer", object), object + ".outer");
@@ -103,7 +110,9 @@ class Reader : public detail::JsonFileReader {
 
   // {"after_moves": k, "add_obstacle": polygon} or {"after_moves": k, "remove_obstacle": i}.
   WorldChange change(const json& v, const std::string& object, std::vector<std::string>* warnings) const {
-    const std::string form = "expected {\"after_moves\": k, \"add_obstacle\": [[x, y], ...]} or {\"after_moves\": k, \"remove_obstacle\": i}";
+    const std::string form =
+        "expected {\"after_moves\": k, \"add_obstacle\": [[x, y], ...]} or {\"after_moves\": k, \"remove_obstacle\": "
+        "i}";
     if (!v.is_object()) fail(object, form + ", got " + abbreviated(v));
     warn_unknown(v, object, {"after_moves", "add_obstacle", "remove_obstacle"}, warnings);
     WorldChange c;
@@ -129,14 +138,16 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
   Reader r(name);
   json root = r.parse(text);
   if (!root.is_object()) r.fail("world", "expected a JSON object at the top level");
-  r.warn_unknown(root, "world", {"bounds", "obstacles", "obstacles_wkt", "robot", "start", "goal", "queries", "changes"}, warnings);
+  r.warn_unknown(root, "world",
+                 {"bounds", "obstacles", "obstacles_wkt", "robot", "start", "goal", "queries", "changes"}, warnings);
 
   World world;
   world.source = name;
 
   if (root.contains("bounds")) {
     const json& b = root["bounds"];
-    if (!b.is_array() || b.size() != 4) r.fail("bounds", "expected [xmin, ymin, xmax, ymax], got " + Reader::abbreviated(b));
+    if (!b.is_array() || b.size() != 4)
+      r.fail("bounds", "expected [xmin, ymin, xmax, ymax], got " + Reader::abbreviated(b));
     world.bounds = Bounds{r.number(b[0], "bounds[0]"), r.number(b[1], "bounds[1]"), r.number(b[2], "bounds[2]"),
                           r.number(b[3], "bounds[3]")};
   }
@@ -145,7 +156,8 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
     r.fail("world", "missing field \"obstacles\" (use [] for a world without obstacles)");
   if (root.contains("obstacles")) {
     const json& obstacles = root["obstacles"];
-    if (!obstacles.is_array()) r.fail("obstacles", "expected a list of polygons, got " + Reader::abbreviated(obstacles));
+    if (!obstacles.is_array())
+      r.fail("obstacles", "expected a list of polygons, got " + Reader::abbreviated(obstacles));
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
       std::string object = "obstacles[" + std::to_string(i) + "]";
       world.obstacles.push_back(r.polygon(obstacles[i], object, warnings));
@@ -171,15 +183,19 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
     const json& parts = r.required(robot, "parts", "robot");
     if (!parts.is_array()) r.fail("robot.parts", "expected a list of polygons");
     // A robot named without parts is almost certainly a mistake, not a point robot.
-    if (parts.empty()) r.fail("robot.parts", "empty: a robot needs at least one part (leave out \"robot\" for a point robot)");
+    if (parts.empty())
+      r.fail("robot.parts", "empty: a robot needs at least one part (leave out \"robot\" for a point robot)");
     for (std::size_t i = 0; i < parts.size(); ++i)
       world.robot.parts.push_back(r.ring(parts[i], "robot.parts[" + std::to_string(i) + "]"));
     if (robot.contains("car")) world.robot.car = r.car(robot["car"], warnings);
   }
 
   if (root.contains("start") != root.contains("goal"))
-    r.fail("world", root.contains("start") ? "missing field \"goal\" (start is given)" : "missing field \"start\" (goal is given)");
-  if (root.contains("start")) world.queries.push_back(r.query(root["start"], root["goal"], "start", "goal", "start/goal", world.robot.car.has_value()));
+    r.fail("world", root.contains("start") ? "missing field \"goal\" (start is given)"
+                                           : "missing field \"start\" (goal is given)");
+  if (root.contains("start"))
+    world.queries.push_back(
+        r.query(root["start"], root["goal"], "start", "goal", "start/goal", world.robot.car.has_value()));
   if (root.contains("queries")) {
     const json& queries = root["queries"];
     if (!queries.is_array()) r.fail("queries", "expected a list of {\"start\", \"goal\"}");
@@ -195,8 +211,10 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
 
   if (root.contains("changes")) {
     const json& changes = root["changes"];
-    if (!changes.is_array()) r.fail("changes", "expected a list of {\"after_moves\", \"add_obstacle\" or \"remove_obstacle\"}");
-    for (std::size_t i = 0; i < changes.size(); ++i) world.changes.push_back(r.change(changes[i], "changes[" + std::to_string(i) + "]", warnings));
+    if (!changes.is_array())
+      r.fail("changes", "expected a list of {\"after_moves\", \"add_obstacle\" or \"remove_obstacle\"}");
+    for (std::size_t i = 0; i < changes.size(); ++i)
+      world.changes.push_back(r.change(changes[i], "changes[" + std::to_string(i) + "]", warnings));
   }
 
   validate_world(world);

@@ -13,8 +13,7 @@ World read_world(const std::string& path, std::vector<std::string>* warnings = n
 
 // The same from text already in memory; `name` stands for the file in messages and relative
 // paths (obstacles_wkt) resolve against its folder.
-World parse_world(const std::string& text, const std::string& name,
-                  std::vector<std::string>* warnings = nullptr);
+World parse_world(const std::string& text, const std::string& name, std::vector<std::string>* warnings = nullptr);
 
 // Reads {"path": [[x, y], ...]}.
 std::vector<ExactPoint> read_path(const std::string& path);

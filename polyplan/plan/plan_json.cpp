@@ -46,7 +46,8 @@ void add_path(json& out, const std::vector<Pose>& path) {
   json doubles = json::array(), exact = json::array();
   for (const Pose& p : path) {
     doubles.push_back({to_double(p.position.x), to_double(p.position.y), p.degrees});
-    exact.push_back({to_string(p.position.x), to_string(p.position.y), to_string(p.rotation.sin), to_string(p.rotation.cos)});
+    exact.push_back(
+        {to_string(p.position.x), to_string(p.position.y), to_string(p.rotation.sin), to_string(p.rotation.cos)});
   }
   out["path"] = std::move(doubles);
   out["path_exact"] = std::move(exact);
@@ -60,7 +61,9 @@ void add_path(json& out, const std::vector<CarState>& path) {
     poses.push_back(pose_json(path[i].pose));
     if (i == 0) continue;
     const SteeringSegment& s = path[i].arrival;
-    segments.push_back({{"steer", std::string(1, static_cast<char>(s.steer))}, {"gear", s.gear}, {"length", s.length},
+    segments.push_back({{"steer", std::string(1, static_cast<char>(s.steer))},
+                        {"gear", s.gear},
+                        {"length", s.length},
                         {"start", pose_json(path[i - 1].pose)}});
   }
   out["path"] = std::move(poses);

@@ -80,14 +80,16 @@ class OptionTable {
   // takes the values `range` allows (default: every value of its type); one outside is refused
   // naming the option, the value and the range.
   template <class T>
-  OptionTable& add(std::string name, T Options::*member, std::string description, std::optional<OptionRange> range = {}) {
+  OptionTable& add(std::string name, T Options::*member, std::string description,
+                   std::optional<OptionRange> range = {}) {
     if constexpr (std::is_same_v<T, Search>) {
       return add(std::move(name), member, std::move(description), search_choices());
     } else {
       if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
         if (!range) range = range_of<T>();
       }
-      Entry e{{std::move(name), std::move(description), kind_of<T>(range), {}, std::is_same_v<T, bool>, range, {}}, {}, {}};
+      Entry e{
+          {std::move(name), std::move(description), kind_of<T>(range), {}, std::is_same_v<T, bool>, range, {}}, {}, {}};
       e.show = [member](const Options& o) { return show(o.*member); };
       e.set = [member, range](Options& o, std::string_view text) -> std::optional<std::string> {
         if (auto why = assign(o.*member, text)) return why;
@@ -102,8 +104,8 @@ class OptionTable {
   // An enumeration set by its names: {{"full", Connectivity::full}, {"axis", ...}}.
   template <class T>
   OptionTable& add(std::string name, T Options::*member, std::string description, Choices<T> names) {
-    return add_choice(std::move(name), std::move(description), [member](auto& o) -> auto& { return o.*member; },
-                      std::move(names));
+    return add_choice(
+        std::move(name), std::move(description), [member](auto& o) -> auto& { return o.*member; }, std::move(names));
   }
 
   // The same for the enumeration that `field(options)` returns a reference to (a member of a member).
@@ -138,7 +140,9 @@ class OptionTable {
                    std::function<std::string(const Options&)> show,
                    std::function<std::optional<std::string>(Options&, std::string_view)> set,
                    std::optional<OptionRange> range = {}) {
-    return push(Entry{{std::move(name), std::move(description), std::move(kind), {}, false, range, {}}, std::move(show), std::move(set)});
+    return push(Entry{{std::move(name), std::move(description), std::move(kind), {}, false, range, {}},
+                      std::move(show),
+                      std::move(set)});
   }
 
   // Every option, its default read from a default-constructed Options.
@@ -219,8 +223,9 @@ class OptionTable {
     } else if constexpr (std::is_integral_v<T>) {
       const auto whole = detail::parse_whole_number(text);
       if (!whole) return "expected a whole number";
-      const bool fits = *whole < 0 ? std::is_signed_v<T> && *whole >= static_cast<std::int64_t>(std::numeric_limits<T>::min())
-                                   : static_cast<std::uint64_t>(*whole) <= static_cast<std::uint64_t>(std::numeric_limits<T>::max());
+      const bool fits =
+          *whole < 0 ? std::is_signed_v<T> && *whole >= static_cast<std::int64_t>(std::numeric_limits<T>::min())
+                     : static_cast<std::uint64_t>(*whole) <= static_cast<std::uint64_t>(std::numeric_limits<T>::max());
       if (!fits) return std::is_unsigned_v<T> && *whole < 0 ? "expected a whole number >= 0" : "out of range";
       field = static_cast<T>(*whole);
     } else if constexpr (std::is_floating_point_v<T>) {
@@ -240,8 +245,9 @@ class OptionTable {
 // algorithm) and "weight" (weighted A*'s w, at least 1).
 template <class Options>
 OptionTable<Options>& add_search_options(OptionTable<Options>& table, SearchOptions Options::*member) {
-  table.add_choice("search", "graph search: A*, Dijkstra, BFS, DFS, greedy best-first, weighted A*",
-                   [member](auto& o) -> auto& { return (o.*member).algorithm; }, search_choices());
+  table.add_choice(
+      "search", "graph search: A*, Dijkstra, BFS, DFS, greedy best-first, weighted A*",
+      [member](auto& o) -> auto& { return (o.*member).algorithm; }, search_choices());
   const OptionRange weights = at_least(1);
   table.add(
       "weight", "weighted A*: f = g + weight * h", "number in " + weights.text(),

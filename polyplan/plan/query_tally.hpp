@@ -2,9 +2,9 @@
 // The facts every roadmap query reports whatever its answer (plan_report.hpp's shared words):
 // search.expanded, search.generated, search.seconds and query_seconds, counted while the query
 // runs and written once, when the answer is known (tallied_query).
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_report.hpp>
 #include <polyplan/plan/stopwatch.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <cstddef>
 

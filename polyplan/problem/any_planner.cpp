@@ -15,8 +15,14 @@ using detail::space_door;
 template <class Space>
 PlannerListing listing_of(const PlannerEntry<Space>& entry) {
   const auto& door = space_door<Space>();
-  return {entry.name,    std::string(Space::description), std::string(door.kind()),       std::string(door.file()),
-          entry.description, entry.options,               entry.anytime, entry.follows_world_changes};
+  return {entry.name,
+          std::string(Space::description),
+          std::string(door.kind()),
+          std::string(door.file()),
+          entry.description,
+          entry.options,
+          entry.anytime,
+          entry.follows_world_changes};
 }
 
 // A registry planner of one space, built for a problem that space plans.
@@ -24,8 +30,7 @@ template <class Space>
 class PlannerIn final : public AnyPlanner {
  public:
   PlannerIn(const PlannerEntry<Space>& entry, const Problem& problem, const OptionValues& options)
-      : AnyPlanner(listing_of(entry), problem),
-        door_(space_door<Space>()),
+      : AnyPlanner(listing_of(entry), problem), door_(space_door<Space>()),
         planner_(entry.make(door_.built_from(this->problem()), options)) {}
 
   void require_plannable() const override { door_.require_plannable(problem(), name()); }
@@ -83,14 +88,17 @@ std::string with_article(std::string_view word) {
       return true;
     });
   }
-  if (!registered) throw InputError("unknown planner \"" + std::string(name) + "\" (" + planner_names(planner_catalog()) + ")");
+  if (!registered)
+    throw InputError("unknown planner \"" + std::string(name) + "\" (" + planner_names(planner_catalog()) + ")");
   // A space's own words first: a car planner for a robot that does not steer, and the reverse.
   detail::any_space([&](auto tag) {
     using Space = typename decltype(tag)::Space;
     if (space_door<Space>().plans(problem)) space_door<Space>().require_fits(problem, name);
     return false;
   });
-  throw InputError("planner " + std::string(name) + " plans in " + with_article(registered->kind) + " (" + registered->space + "), not in " + with_article(kind) + " (" + problem.source() + "; its planners: " + planner_names(here) + ")");
+  throw InputError("planner " + std::string(name) + " plans in " + with_article(registered->kind) + " (" +
+                   registered->space + "), not in " + with_article(kind) + " (" + problem.source() +
+                   "; its planners: " + planner_names(here) + ")");
 }
 
 }  // namespace

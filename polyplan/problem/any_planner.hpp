@@ -61,7 +61,8 @@ class AnyPlanner {
 // InputError naming the planner when nobody registered it, when it plans for another kind of
 // problem (saying which, and which planners plan this one), or when an option is unknown or out
 // of its range.
-std::unique_ptr<AnyPlanner> make_planner(std::string_view name, const Problem& problem, const OptionValues& options = {});
+std::unique_ptr<AnyPlanner> make_planner(std::string_view name, const Problem& problem,
+                                         const OptionValues& options = {});
 
 // What `name` is for this problem: its listing in the space that plans it, or InputError as
 // make_planner's (before anything is built).

@@ -13,7 +13,8 @@ namespace {
 JointAngles joint_angles(const std::vector<Rational>& numbers, const std::string& what, const ArmProblem& problem) {
   const std::size_t joints = problem.arm.joints();
   if (numbers.size() != joints)
-    throw InputError(what + ": expected " + std::to_string(joints) + " joint angles (radians), got " + std::to_string(numbers.size()));
+    throw InputError(what + ": expected " + std::to_string(joints) + " joint angles (radians), got " +
+                     std::to_string(numbers.size()));
   JointAngles angles;
   for (const Rational& a : numbers) angles.push_back(to_double(a));
   return angles;
@@ -38,7 +39,9 @@ class ArmDoor final : public SpaceDoor<PlanarArm> {
   std::string_view file() const override { return "ARM.json"; }
   bool plans(const Problem& problem) const override { return problem.arm() != nullptr; }
   const ArmProblem& built_from(const Problem& problem) const override { return *problem.arm(); }
-  ArmQuery own_query(const Problem& problem, std::size_t index) const override { return problem.arm()->queries.at(index); }
+  ArmQuery own_query(const Problem& problem, std::size_t index) const override {
+    return problem.arm()->queries.at(index);
+  }
 
   // The goal as joint angles, or as the hand at a point, as an arm file gives it.
   ArmQuery query(const Problem& problem, const QuerySpec& spec) const override {
@@ -64,7 +67,8 @@ class ArmDoor final : public SpaceDoor<PlanarArm> {
     std::vector<Picture> pictures;
     for (const Report* r : reports) {
       const ArmPictureOptions arm{options.strobe ? ArmPictureOptions::Kind::strobe : ArmPictureOptions::Kind::animation,
-                                  file_name(problem.source()) + " · " + r->query() + " · " + r->planner() + options.settings,
+                                  file_name(problem.source()) + " · " + r->query() + " · " + r->planner() +
+                                      options.settings,
                                   options.every_kth, 1, r->target};
       pictures.push_back({r->query(), draw_plan(*problem.arm(), std::get<PlanReport<JointAngles>>(r->typed()), arm)});
     }
@@ -81,8 +85,10 @@ class ArmDoor final : public SpaceDoor<PlanarArm> {
     const auto reached = facts.find(GoalFacts::reached), candidates = facts.find(GoalFacts::candidates);
     if (!error || !reached || !candidates) return "";
     char goal[160];
-    std::snprintf(goal, sizeof goal, ", ends at IK solution %lld of %lld (goal.reached %lld), the hand %.2g from the goal point",
-                  static_cast<long long>(*reached + 1), static_cast<long long>(*candidates), static_cast<long long>(*reached), *error);
+    std::snprintf(goal, sizeof goal,
+                  ", ends at IK solution %lld of %lld (goal.reached %lld), the hand %.2g from the goal point",
+                  static_cast<long long>(*reached + 1), static_cast<long long>(*candidates),
+                  static_cast<long long>(*reached), *error);
     return goal;
   }
 };

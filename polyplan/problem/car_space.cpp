@@ -22,16 +22,17 @@ class CarDoor final : public WorldDoor<SteeredCar> {
   Query query(const Problem&, const QuerySpec& spec) const override {
     Query q = world_query(spec);
     if (!q.start_theta || !q.goal_theta)
-      throw InputError(std::string(q.start_theta ? "goal" : "start") + ": a car's pose is (x, y, theta), theta in degrees");
+      throw InputError(std::string(q.start_theta ? "goal" : "start") +
+                       ": a car's pose is (x, y, theta), theta in degrees");
     return q;
   }
 
   std::string default_planner(const Problem&) const override { return planners<SteeredCar>().default_planner(); }
 
-  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports, const PictureOptions&) const override {
+  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports,
+                            const PictureOptions&) const override {
     return {Picture{"", draw_plan(*problem.world(), typed_reports<CarState>(reports))}};
   }
-
 };
 
 }  // namespace

@@ -41,9 +41,11 @@ const std::string& Problem::source() const {
 
 std::vector<std::string> Problem::query_names() const {
   std::vector<std::string> names;
-  std::visit([&](const auto& p) {
-    for (const auto& q : p.queries) names.push_back(q.name);
-  }, state_->problem);
+  std::visit(
+      [&](const auto& p) {
+        for (const auto& q : p.queries) names.push_back(q.name);
+      },
+      state_->problem);
   return names;
 }
 
@@ -52,7 +54,8 @@ const ArmProblem* Problem::arm() const { return std::get_if<ArmProblem>(&state_-
 
 const CSpace& Problem::cspace() const {
   const World* w = world();
-  if (!w) throw std::logic_error("Problem::cspace: " + source() + " is an arm, which has no C-space of a translating robot");
+  if (!w)
+    throw std::logic_error("Problem::cspace: " + source() + " is an arm, which has no C-space of a translating robot");
   if (!state_->cspace) state_->cspace = std::make_unique<CSpace>(*w);
   return *state_->cspace;
 }

@@ -1,8 +1,8 @@
 #include <polyplan/problem/report.hpp>
 
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/problem/detail/space_door.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -19,7 +19,9 @@ std::vector<double> coordinates(const CarState& s) { return {s.pose.x, s.pose.y,
 
 // Exact coordinates, for the configurations that are exact (none for joint angles and a car's poses).
 std::vector<Rational> exact_coordinates(const ExactPoint& p) { return {p.x, p.y}; }
-std::vector<Rational> exact_coordinates(const Pose& p) { return {p.position.x, p.position.y, p.rotation.sin, p.rotation.cos}; }
+std::vector<Rational> exact_coordinates(const Pose& p) {
+  return {p.position.x, p.position.y, p.rotation.sin, p.rotation.cos};
+}
 
 template <class Configuration>
 Rows rows_of(const std::vector<Configuration>& configurations) {
@@ -35,16 +37,19 @@ std::string facts_summary(const Facts& facts) {
   const auto algorithm = facts.find(SearchFacts::algorithm);
   const auto expanded = facts.find(SearchFacts::expanded), generated = facts.find(SearchFacts::generated);
   if (algorithm && expanded && generated)
-    line += ", " + *algorithm + " expanded " + std::to_string(*expanded) + " of " + std::to_string(*generated) + " generated";
+    line += ", " + *algorithm + " expanded " + std::to_string(*expanded) + " of " + std::to_string(*generated) +
+            " generated";
   const auto vertices = facts.find(RoadmapFacts::vertices), edges = facts.find(RoadmapFacts::edges);
-  if (vertices && edges) line += ", roadmap " + std::to_string(*vertices) + " vertices " + std::to_string(*edges) + " edges";
+  if (vertices && edges)
+    line += ", roadmap " + std::to_string(*vertices) + " vertices " + std::to_string(*edges) + " edges";
   return line;
 }
 
 }  // namespace
 
 Report::Report(Typed typed, std::string_view space, std::size_t columns, std::string query, std::string planner)
-    : typed_(std::move(typed)), space_(space), columns_(columns), query_(std::move(query)), planner_(std::move(planner)) {}
+    : typed_(std::move(typed)), space_(space), columns_(columns), query_(std::move(query)),
+      planner_(std::move(planner)) {}
 
 bool Report::found() const {
   return std::visit([](const auto& r) { return r.found; }, typed_);
@@ -73,40 +78,47 @@ Rows Report::path() const {
 }
 
 std::optional<std::vector<std::vector<Rational>>> Report::exact_path() const {
-  return std::visit([](const auto& r) -> std::optional<std::vector<std::vector<Rational>>> {
-    using Configuration = typename std::decay_t<decltype(r.path)>::value_type;
-    if constexpr (requires(const Configuration& c) { exact_coordinates(c); }) {
-      std::vector<std::vector<Rational>> rows;
-      for (const Configuration& c : r.path) rows.push_back(exact_coordinates(c));
-      return rows;
-    } else {
-      return std::nullopt;
-    }
-  }, typed_);
+  return std::visit(
+      [](const auto& r) -> std::optional<std::vector<std::vector<Rational>>> {
+        using Configuration = typename std::decay_t<decltype(r.path)>::value_type;
+        if constexpr (requires(const Configuration& c) { exact_coordinates(c); }) {
+          std::vector<std::vector<Rational>> rows;
+          for (const Configuration& c : r.path) rows.push_back(exact_coordinates(c));
+          return rows;
+        } else {
+          return std::nullopt;
+        }
+      },
+      typed_);
 }
 
 Recording Report::recording() const {
-  return std::visit([](const auto& r) {
-    Recording recorded;
-    if (r.graph) {
-      recorded.graph_kind = r.graph->kind;
-      recorded.graph_vertices = rows_of(r.graph->vertices);
-      recorded.graph_edges = r.graph->edges;
-    }
-    recorded.expanded = rows_of(r.expanded);
-    recorded.cells = r.cells;
-    if (r.decomposition)
-      for (const auto& cell : r.decomposition->cells) recorded.decomposition.push_back(rows_of(cell));
-    return recorded;
-  }, typed_);
+  return std::visit(
+      [](const auto& r) {
+        Recording recorded;
+        if (r.graph) {
+          recorded.graph_kind = r.graph->kind;
+          recorded.graph_vertices = rows_of(r.graph->vertices);
+          recorded.graph_edges = r.graph->edges;
+        }
+        recorded.expanded = rows_of(r.expanded);
+        recorded.cells = r.cells;
+        if (r.decomposition)
+          for (const auto& cell : r.decomposition->cells) recorded.decomposition.push_back(rows_of(cell));
+        return recorded;
+      },
+      typed_);
 }
 
 std::vector<TracedExpansion> Report::trace() const {
-  return std::visit([](const auto& r) {
-    std::vector<TracedExpansion> expansions;
-    for (const auto& e : r.trace) expansions.push_back({e.step, e.vertex, coordinates(e.at), e.g, e.h, e.f, e.backpointer, e.open});
-    return expansions;
-  }, typed_);
+  return std::visit(
+      [](const auto& r) {
+        std::vector<TracedExpansion> expansions;
+        for (const auto& e : r.trace)
+          expansions.push_back({e.step, e.vertex, coordinates(e.at), e.g, e.h, e.f, e.backpointer, e.open});
+        return expansions;
+      },
+      typed_);
 }
 
 nlohmann::json Report::to_json() const {
@@ -115,7 +127,8 @@ nlohmann::json Report::to_json() const {
 
 nlohmann::json Report::facts_json() const {
   nlohmann::json all = to_json();
-  for (const char* answer : {"query", "found", "status", "length", "path", "path_exact", "segments", "why_not", "certified", "certified_by"})
+  for (const char* answer :
+       {"query", "found", "status", "length", "path", "path_exact", "segments", "why_not", "certified", "certified_by"})
     all.erase(answer);
   return all;
 }
@@ -134,8 +147,8 @@ std::string Report::summary() const {
   });
   const std::size_t moves = std::visit([](const auto& r) { return r.path.size() - 1; }, typed_);
   char text[128];
-  std::snprintf(text, sizeof text, "%s: length %.6f%.*s, %zu %.*s(s)", query_.c_str(), length(), static_cast<int>(unit.size()),
-                unit.data(), moves, static_cast<int>(steps.size()), steps.data());
+  std::snprintf(text, sizeof text, "%s: length %.6f%.*s, %zu %.*s(s)", query_.c_str(), length(),
+                static_cast<int>(unit.size()), unit.data(), moves, static_cast<int>(steps.size()), steps.data());
   std::string line = text + facts_summary(facts()) + more;
   if (const auto note = facts().find(QueryFacts::note)) line += "; " + *note;
   return line;

@@ -5,10 +5,13 @@
 
 namespace polyplan {
 
-std::vector<Picture> draw_reports(const Problem& problem, const std::vector<const Report*>& reports, const PictureOptions& options) {
+std::vector<Picture> draw_reports(const Problem& problem, const std::vector<const Report*>& reports,
+                                  const PictureOptions& options) {
   const std::string_view space = reports.empty() ? std::string_view() : reports.front()->space();
   for (const Report* r : reports)
-    if (r->space() != space) throw InputError("the plans to draw mix planners of different spaces (" + std::string(space) + ", " + std::string(r->space()) + ")");
+    if (r->space() != space)
+      throw InputError("the plans to draw mix planners of different spaces (" + std::string(space) + ", " +
+                       std::string(r->space()) + ")");
   std::vector<Picture> pictures;
   const bool drawn = detail::any_space([&](auto tag) {
     using Space = typename decltype(tag)::Space;

@@ -15,7 +15,8 @@ class RotatingDoor final : public WorldDoor<RotatingRobot> {
 
   std::string default_planner(const Problem&) const override { return planners<RotatingRobot>().default_planner(); }
 
-  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports, const PictureOptions&) const override {
+  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports,
+                            const PictureOptions&) const override {
     return {Picture{"", draw_plan(*problem.world(), typed_reports<Pose>(reports))}};
   }
 

@@ -18,8 +18,10 @@ class TranslatingDoor final : public WorldDoor<TranslatingRobot> {
     Query q = world_query(spec);
     for (const auto& [what, theta] : {std::pair{"start", q.start_theta}, std::pair{"goal", q.goal_theta}})
       if (turned(theta))
-        throw InputError(std::string(what) + ": an orientation other than 0 degrees; a translating planner moves the robot as "
-                         "its file draws it: use the planner \"" + planners<RotatingRobot>().default_planner() + "\"");
+        throw InputError(std::string(what) +
+                         ": an orientation other than 0 degrees; a translating planner moves the robot as "
+                         "its file draws it: use the planner \"" +
+                         planners<RotatingRobot>().default_planner() + "\"");
     return q;
   }
 
@@ -36,7 +38,8 @@ class TranslatingDoor final : public WorldDoor<TranslatingRobot> {
     return planners<TranslatingRobot>().default_planner();
   }
 
-  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports, const PictureOptions&) const override {
+  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports,
+                            const PictureOptions&) const override {
     return {Picture{"", draw_plan(problem.cspace(), typed_reports<ExactPoint>(reports))}};
   }
 

@@ -10,11 +10,13 @@ namespace {
 // θ as the world reader bounds it: a finite number of degrees within ±1e6.
 double degrees(const Rational& theta, const std::string& what) {
   const double value = to_double(theta);
-  if (!(std::abs(value) <= 1e6)) throw InputError(what + ": theta " + to_string(theta) + " degrees: expected an angle within ±1e6 degrees");
+  if (!(std::abs(value) <= 1e6))
+    throw InputError(what + ": theta " + to_string(theta) + " degrees: expected an angle within ±1e6 degrees");
   return value;
 }
 
-void read_pose(const std::vector<Rational>& numbers, const std::string& what, ExactPoint& at, std::optional<double>& theta) {
+void read_pose(const std::vector<Rational>& numbers, const std::string& what, ExactPoint& at,
+               std::optional<double>& theta) {
   if (numbers.size() != 2 && numbers.size() != 3)
     throw InputError(what + ": expected (x, y) or (x, y, theta), got " + std::to_string(numbers.size()) + " number(s)");
   at = {numbers[0], numbers[1]};

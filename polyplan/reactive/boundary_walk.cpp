@@ -7,12 +7,20 @@
 
 namespace polyplan::walk {
 
-Rational cross(const Point& o, const Point& a, const Point& b) { return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x); }
-Rational dot(const Point& o, const Point& a, const Point& b) { return (a.x - o.x) * (b.x - o.x) + (a.y - o.y) * (b.y - o.y); }
+Rational cross(const Point& o, const Point& a, const Point& b) {
+  return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
+}
+Rational dot(const Point& o, const Point& a, const Point& b) {
+  return (a.x - o.x) * (b.x - o.x) + (a.y - o.y) * (b.y - o.y);
+}
 Rational squared(const Point& a, const Point& b) { return dot(a, b, b); }
-Point along(const Point& a, const Point& b, const Rational& t) { return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)}; }
+Point along(const Point& a, const Point& b, const Rational& t) {
+  return {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+}
 double distance(const Point& a, const Point& b) { return std::sqrt(to_double(squared(a, b))); }
-std::string text(const Point& p) { return "(" + std::to_string(to_double(p.x)) + ", " + std::to_string(to_double(p.y)) + ")"; }
+std::string text(const Point& p) {
+  return "(" + std::to_string(to_double(p.x)) + ", " + std::to_string(to_double(p.y)) + ")";
+}
 
 void meetings(const Point& p, const Point& q, const Point& a, const Point& b, std::vector<Rational>& out) {
   const Rational da = cross(p, q, a), db = cross(p, q, b), pq = squared(p, q);
@@ -85,7 +93,8 @@ double Boundary::perimeter(std::size_t cycle) const {
 
 std::size_t Boundary::crossings(std::size_t cycle, const Point& start, const Point& goal) const {
   std::vector<Rational> ts;
-  for (std::size_t i = 0; i < cycles_[cycle].size(); ++i) meetings(start, goal, vertex(cycle, i), vertex(cycle, i + 1), ts);
+  for (std::size_t i = 0; i < cycles_[cycle].size(); ++i)
+    meetings(start, goal, vertex(cycle, i), vertex(cycle, i + 1), ts);
   std::sort(ts.begin(), ts.end());
   return static_cast<std::size_t>(std::unique(ts.begin(), ts.end()) - ts.begin());
 }

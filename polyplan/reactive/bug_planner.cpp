@@ -1,9 +1,9 @@
 #include <polyplan/reactive/bug_planner.hpp>
 
-#include <polyplan/plan/stopwatch.hpp>
-#include <polyplan/reactive/walk_report.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
+#include <polyplan/reactive/walk_report.hpp>
 
 #include <algorithm>
 #include <optional>
@@ -70,7 +70,8 @@ struct BugPlanner::Impl {
       if (a == b) continue;
       const Rational t = std::clamp(Rational(dot(a, q.goal, b) / squared(a, b)), Rational(0), Rational(1));
       const Point foot = along(a, b, t);
-      if (squared(foot, q.goal) < best) best = squared(foot, q.goal), nearest = foot, on = k, at_arc = arc[k] + distance(a, foot);
+      if (squared(foot, q.goal) < best)
+        best = squared(foot, q.goal), nearest = foot, on = k, at_arc = arc[k] + distance(a, foot);
     }
     path.insert(path.end(), loop.begin() + 1, loop.end());
     const double total = arc.back();
@@ -102,8 +103,9 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
     report_walk(report, r.boundary.cspace(), walk, q, arrived, query_options.record, name);
     double bound = distance(q.start, q.goal);
     for (const std::size_t c : met)
-      bound += r.kind == BugKind::bug1 ? 1.5 * r.boundary.perimeter(c)
-                                       : 0.5 * static_cast<double>(r.boundary.crossings(c, q.start, q.goal)) * r.boundary.perimeter(c);
+      bound += r.kind == BugKind::bug1
+                   ? 1.5 * r.boundary.perimeter(c)
+                   : 0.5 * static_cast<double>(r.boundary.crossings(c, q.start, q.goal)) * r.boundary.perimeter(c);
     facts.set(BugFacts::bound, bound);
     facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
@@ -118,7 +120,8 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
     if (!hit) break;
     if (walk.hits.size() >= r.options.max_hits) {
       facts.set(QueryFacts::stopped_by, "hit limit");
-      report.fail(PlanStatus::limit, "the hit limit (" + std::to_string(r.options.max_hits) + ") ended the walk at " + text(at));
+      report.fail(PlanStatus::limit,
+                  "the hit limit (" + std::to_string(r.options.max_hits) + ") ended the walk at " + text(at));
       return finish(false);
     }
     walk.to(*hit);
@@ -135,9 +138,12 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
       if (!blocked || !(*blocked == nearest)) leave = nearest;
     }
     if (!leave) {
-      report.fail(PlanStatus::no_path, std::string(r.kind == BugKind::bug1 ? "round the obstacle hit at " + text(*hit) + ", the point nearest the goal cannot head for it"
-                                                                           : "the walk round the obstacle came back to its hit point " + text(*hit) + " without a leave point") +
-                                           ": the goal is unreachable (" + name + " is complete)");
+      report.fail(PlanStatus::no_path,
+                  std::string(r.kind == BugKind::bug1 ? "round the obstacle hit at " + text(*hit) +
+                                                            ", the point nearest the goal cannot head for it"
+                                                      : "the walk round the obstacle came back to its hit point " +
+                                                            text(*hit) + " without a leave point") +
+                      ": the goal is unreachable (" + name + " is complete)");
       return finish(false);
     }
     walk.leaves.push_back(*leave);
@@ -154,8 +160,10 @@ PlannerEntry<TranslatingRobot> bug_planner_entry(BugKind kind) {
   return make_planner_entry<TranslatingRobot, BugOptions>(
       one ? "bug1" : "bug2",
       one ? "Bug1: to the goal, round each obstacle hit, leaving from its point nearest the goal (Lumelsky & Stepanov)"
-          : "Bug2: along the start-goal line, round each obstacle hit until the line is met nearer the goal (Lumelsky & Stepanov)",
-      std::move(table), [kind](const CSpace& cspace, const BugOptions& o) { return std::make_unique<BugPlanner>(cspace, kind, o); });
+          : "Bug2: along the start-goal line, round each obstacle hit until the line is met nearer the goal (Lumelsky "
+            "& Stepanov)",
+      std::move(table),
+      [kind](const CSpace& cspace, const BugOptions& o) { return std::make_unique<BugPlanner>(cspace, kind, o); });
 }
 
 }  // namespace polyplan

@@ -29,7 +29,8 @@ struct Newton {
       const Hessian2& h = p.hessian;
       const double det = h.xx * h.yy - h.xy * h.xy;
       if (!(std::abs(det) > 0) || !std::isfinite(det)) return std::nullopt;
-      q = {q.x - (h.yy * p.gradient.x - h.xy * p.gradient.y) / det, q.y - (h.xx * p.gradient.y - h.xy * p.gradient.x) / det};
+      q = {q.x - (h.yy * p.gradient.x - h.xy * p.gradient.y) / det,
+           q.y - (h.xx * p.gradient.y - h.xy * p.gradient.x) / det};
       if (!(std::hypot(q.x - start.x, q.y - start.y) <= reach)) return std::nullopt;
     }
     return std::nullopt;
@@ -38,17 +39,22 @@ struct Newton {
 
 }  // namespace
 
-CriticalPoints find_critical_points(const CSpace& cspace, const ObstacleField& field, Vec2 goal, const PotentialParameters& parameters,
-                                    const BoxGrid& search) {
+CriticalPoints find_critical_points(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
+                                    const PotentialParameters& parameters, const BoxGrid& search) {
   search.check();
   const std::size_t n = search.cells_per_axis;
-  const double w = (search.xmax - search.xmin) / static_cast<double>(n), h = (search.ymax - search.ymin) / static_cast<double>(n);
-  const auto corner = [&](std::size_t i, std::size_t j) { return Vec2{search.xmin + static_cast<double>(i) * w, search.ymin + static_cast<double>(j) * h}; };
+  const double w = (search.xmax - search.xmin) / static_cast<double>(n),
+               h = (search.ymax - search.ymin) / static_cast<double>(n);
+  const auto corner = [&](std::size_t i, std::size_t j) {
+    return Vec2{search.xmin + static_cast<double>(i) * w, search.ymin + static_cast<double>(j) * h};
+  };
   // The gradient at every corner of the subdivision, once.
   std::vector<Vec2> gradient((n + 1) * (n + 1));
   for (std::size_t j = 0; j <= n; ++j)
-    for (std::size_t i = 0; i <= n; ++i) gradient[i + j * (n + 1)] = field.potential(corner(i, j), goal, parameters).gradient;
-  const double pull = parameters.attractive.d_star > 0 ? parameters.attractive.zeta * parameters.attractive.d_star : parameters.attractive.zeta;
+    for (std::size_t i = 0; i <= n; ++i)
+      gradient[i + j * (n + 1)] = field.potential(corner(i, j), goal, parameters).gradient;
+  const double pull = parameters.attractive.d_star > 0 ? parameters.attractive.zeta * parameters.attractive.d_star
+                                                       : parameters.attractive.zeta;
   const Newton newton{field, goal, parameters, 1e-9 * pull};
   const double cell = std::hypot(w, h), same = 1e-6 * std::hypot(search.xmax - search.xmin, search.ymax - search.ymin);
 
@@ -62,14 +68,17 @@ CriticalPoints find_critical_points(const CSpace& cspace, const ObstacleField& f
       const Vec2 centre{corner(i, j).x + w / 2, corner(i, j).y + h / 2};
       const auto zero = newton.from(centre, 2 * cell);
       if (!zero || cspace.locate(exactly(*zero)).kind != Location::Kind::free) continue;
-      const bool known = std::any_of(found.points.begin(), found.points.end(),
-                                     [&](const CriticalPoint& p) { return std::hypot(p.at.x - zero->x, p.at.y - zero->y) <= same; });
+      const bool known = std::any_of(found.points.begin(), found.points.end(), [&](const CriticalPoint& p) {
+        return std::hypot(p.at.x - zero->x, p.at.y - zero->y) <= same;
+      });
       if (known) continue;
       const Potential p = field.potential(*zero, goal, parameters);
-      found.points.push_back({*zero, critical_point_kind(p.hessian), eigenvalues(p.hessian), p.value, std::hypot(p.gradient.x, p.gradient.y)});
+      found.points.push_back({*zero, critical_point_kind(p.hessian), eigenvalues(p.hessian), p.value,
+                              std::hypot(p.gradient.x, p.gradient.y)});
     }
-  std::sort(found.points.begin(), found.points.end(),
-            [](const CriticalPoint& p, const CriticalPoint& q) { return p.at.x != q.at.x ? p.at.x < q.at.x : p.at.y < q.at.y; });
+  std::sort(found.points.begin(), found.points.end(), [](const CriticalPoint& p, const CriticalPoint& q) {
+    return p.at.x != q.at.x ? p.at.x < q.at.x : p.at.y < q.at.y;
+  });
   return found;
 }
 

@@ -22,8 +22,8 @@ struct CriticalPoint {
   Vec2 at;
   std::string kind;  // "minimum", "maximum", "saddle", "degenerate"
   Eigenvalues eigenvalues;
-  double value = 0;          // U there
-  double gradient = 0;       // |∇U| there (the residual Newton left)
+  double value = 0;     // U there
+  double gradient = 0;  // |∇U| there (the residual Newton left)
 };
 
 struct CriticalPoints {
@@ -32,7 +32,7 @@ struct CriticalPoints {
 };
 
 // Throws std::invalid_argument for an empty box or 0 cells.
-CriticalPoints find_critical_points(const CSpace& cspace, const ObstacleField& field, Vec2 goal, const PotentialParameters& parameters,
-                                    const BoxGrid& search);
+CriticalPoints find_critical_points(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
+                                    const PotentialParameters& parameters, const BoxGrid& search);
 
 }  // namespace polyplan

@@ -15,7 +15,8 @@ double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 // One step from `at` along `direction`, at most `length` long: halved until its segment is
 // exactly free (a step that started in the free space always ends so, at some length).
-std::optional<ExactPoint> free_step(const CSpace& cspace, const ExactPoint& at, Vec2 from, Vec2 direction, double length) {
+std::optional<ExactPoint> free_step(const CSpace& cspace, const ExactPoint& at, Vec2 from, Vec2 direction,
+                                    double length) {
   for (int halvings = 0; halvings < 60; ++halvings, length /= 2) {
     const ExactPoint to = exactly({from.x + length * direction.x, from.y + length * direction.y});
     if (check_segment(cspace, at, to).valid) return to;
@@ -94,8 +95,8 @@ bool answered_before_descent(const CSpace& cspace, const Query& query, PlanRepor
   return false;
 }
 
-void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record, const std::string& why_suffix,
-                    PlanReport<ExactPoint>& report) {
+void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record,
+                    const std::string& why_suffix, PlanReport<ExactPoint>& report) {
   if (record) report.expanded = descent.path;  // the picture shows the descent, wherever it stopped
   report.facts.set(keys.steps, descent.path.size() - 1);
   report.facts.set(keys.stopped_at, point_text(approximate(descent.path.back())));
@@ -111,7 +112,8 @@ void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& k
   report.succeed();
   report.path = std::move(descent.path);
   report.length = euclidean_length(report.path);
-  report.certificate = {true, "exact segment test of every step as it was taken, and of the whole path (arrangement zone walk)"};
+  report.certificate = {
+      true, "exact segment test of every step as it was taken, and of the whole path (arrangement zone walk)"};
 }
 
 }  // namespace polyplan

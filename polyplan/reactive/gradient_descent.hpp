@@ -10,9 +10,9 @@
 //                  a row bring it no closer to the goal than it has been (it oscillates);
 //   not_found      where the slope is undefined (in contact with an obstacle, say);
 //   limit          after `max_steps` steps.
+#include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/plan/plan_report.hpp>
-#include <polyplan/geometry/clearance.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
 
 #include <cstddef>
@@ -24,9 +24,9 @@
 namespace polyplan {
 
 struct Slope {
-  Vec2 gradient;          // the descent goes against it
-  double value = 0;       // of the function descended, for the facts
-  double clearance = 0;   // the distance to the nearest obstacle there: half of it caps the step
+  Vec2 gradient;         // the descent goes against it
+  double value = 0;      // of the function descended, for the facts
+  double clearance = 0;  // the distance to the nearest obstacle there: half of it caps the step
 };
 
 // The slope at a point, or why there is none there.
@@ -61,8 +61,8 @@ bool answered_before_descent(const CSpace& cspace, const Query& query, PlanRepor
 // exactly as it was taken, and the whole path again, whose bends the steps alone cannot judge at
 // a pinch point) when solved, or the status and `why` (followed by `why_suffix`) otherwise —
 // stopped_by "step limit" for a limit.
-void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record, const std::string& why_suffix,
-                    PlanReport<ExactPoint>& report);
+void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record,
+                    const std::string& why_suffix, PlanReport<ExactPoint>& report);
 
 // "(x, y)" with six decimals.
 std::string point_text(Vec2 p);

@@ -1,10 +1,10 @@
 #include <polyplan/reactive/navigation_function_planner.hpp>
 
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/gradient_descent.hpp>
 #include <polyplan/reactive/obstacle_field.hpp>
 #include <polyplan/reactive/potential_map.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
 
 #include <cmath>
@@ -48,8 +48,10 @@ std::optional<std::string> not_a_sphere_world(const Sphere& world, const std::ve
 
 void check_options(const NavigationFunctionOptions& o) {
   if (o.kappa != 0 && !(std::isfinite(o.kappa) && o.kappa >= 1))
-    throw std::invalid_argument("kappa: expected 0 (try 2, 4, ..., 64) or a finite number of at least 1, got " + std::to_string(o.kappa));
-  if (!(std::isfinite(o.step) && o.step >= 0)) throw std::invalid_argument("step: expected a finite number of at least 0");
+    throw std::invalid_argument("kappa: expected 0 (try 2, 4, ..., 64) or a finite number of at least 1, got " +
+                                std::to_string(o.kappa));
+  if (!(std::isfinite(o.step) && o.step >= 0))
+    throw std::invalid_argument("step: expected a finite number of at least 0");
   if (o.patience == 0) throw std::invalid_argument("patience: expected at least 1 step");
 }
 
@@ -65,8 +67,8 @@ struct NavigationFunctionPlanner::Impl {
 
   Impl(const CSpace& c, const NavigationFunctionOptions& o) : cspace(&c), options(o), field(c) {
     const BoxGrid box = c.reference_box() && c.reference_box()->xmin <= c.reference_box()->xmax
-                            ? BoxGrid{to_double(c.reference_box()->xmin), to_double(c.reference_box()->ymin), to_double(c.reference_box()->xmax),
-                                      to_double(c.reference_box()->ymax), 1}
+                            ? BoxGrid{to_double(c.reference_box()->xmin), to_double(c.reference_box()->ymin),
+                                      to_double(c.reference_box()->xmax), to_double(c.reference_box()->ymax), 1}
                             : box_around(c, 1);
     // The world's disc: round the box, or without bounds half as wide again round everything.
     const double grow = c.world().bounds ? 1.0 : 1.5;
@@ -83,13 +85,16 @@ struct NavigationFunctionPlanner::Impl {
       g.x -= gamma / kappa * grad_beta.x / beta;
       g.y -= gamma / kappa * grad_beta.y / beta;
     };
-    const double beta0 = world.radius * world.radius - ((q.x - world.centre.x) * (q.x - world.centre.x) + (q.y - world.centre.y) * (q.y - world.centre.y));
+    const double beta0 = world.radius * world.radius - ((q.x - world.centre.x) * (q.x - world.centre.x) +
+                                                        (q.y - world.centre.y) * (q.y - world.centre.y));
     if (!(beta0 > 0)) return {std::nullopt, "the robot is on or beyond the world's disc"};
     add(beta0, {-2 * (q.x - world.centre.x), -2 * (q.y - world.centre.y)});
     for (std::size_t i = 0; i < obstacles.size(); ++i) {
       const Sphere& s = obstacles[i];
-      const double beta = (q.x - s.centre.x) * (q.x - s.centre.x) + (q.y - s.centre.y) * (q.y - s.centre.y) - s.radius * s.radius;
-      if (!(beta > 0)) return {std::nullopt, "the robot is inside the disc standing for C-obstacle " + std::to_string(i)};
+      const double beta =
+          (q.x - s.centre.x) * (q.x - s.centre.x) + (q.y - s.centre.y) * (q.y - s.centre.y) - s.radius * s.radius;
+      if (!(beta > 0))
+        return {std::nullopt, "the robot is inside the disc standing for C-obstacle " + std::to_string(i)};
       add(beta, {2 * (q.x - s.centre.x), 2 * (q.y - s.centre.y)});
     }
     return {Slope{g, gamma, field.clearance(q)}, {}};
@@ -127,25 +132,34 @@ PlanReport<ExactPoint> NavigationFunctionPlanner::plan(const Query& query, const
   }
   Descent descent;
   double kappa = r.options.kappa;
-  for (const double k : r.options.kappa > 0 ? std::vector<double>{r.options.kappa} : std::vector<double>{2, 4, 8, 16, 32, 64}) {
+  for (const double k :
+       r.options.kappa > 0 ? std::vector<double>{r.options.kappa} : std::vector<double>{2, 4, 8, 16, 32, 64}) {
     kappa = k;
     descent = r.descend(query, k);
     if (descent.status == PlanStatus::solved || descent.status == PlanStatus::not_found) break;
   }
   facts.set(NavigationFacts::kappa, kappa);
-  report_descent(*r.cspace, std::move(descent), NavigationFacts::descent, options.record, " (kappa " + std::to_string(kappa) + ")", report);
+  report_descent(*r.cspace, std::move(descent), NavigationFacts::descent, options.record,
+                 " (kappa " + std::to_string(kappa) + ")", report);
   return finish();
 }
 
 PlannerEntry<TranslatingRobot> navigation_function_planner_entry() {
   OptionTable<NavigationFunctionOptions> table;
-  table.add("kappa", &NavigationFunctionOptions::kappa, "the navigation function's kappa (0: the smallest of 2, 4, ..., 64 that reaches the goal)", at_least(0))
+  table
+      .add("kappa", &NavigationFunctionOptions::kappa,
+           "the navigation function's kappa (0: the smallest of 2, 4, ..., 64 that reaches the goal)", at_least(0))
       .add("step", &NavigationFunctionOptions::step, "the longest step (0: 1/200 of the world's diagonal)", at_least(0))
-      .add("max-steps", &NavigationFunctionOptions::max_steps, "steps before the descent stops with status limit", at_least(1))
-      .add("patience", &NavigationFunctionOptions::patience, "steps without getting closer to the goal before it is a local minimum", at_least(1));
+      .add("max-steps", &NavigationFunctionOptions::max_steps, "steps before the descent stops with status limit",
+           at_least(1))
+      .add("patience", &NavigationFunctionOptions::patience,
+           "steps without getting closer to the goal before it is a local minimum", at_least(1));
   return make_planner_entry<TranslatingRobot, NavigationFunctionOptions>(
-      "navigation-function", "descent on Rimon and Koditschek's navigation function of the discs around the C-obstacles (sphere worlds)",
-      std::move(table), [](const CSpace& cspace, const NavigationFunctionOptions& o) { return std::make_unique<NavigationFunctionPlanner>(cspace, o); });
+      "navigation-function",
+      "descent on Rimon and Koditschek's navigation function of the discs around the C-obstacles (sphere worlds)",
+      std::move(table), [](const CSpace& cspace, const NavigationFunctionOptions& o) {
+        return std::make_unique<NavigationFunctionPlanner>(cspace, o);
+      });
 }
 
 }  // namespace polyplan

@@ -22,7 +22,10 @@ ObstacleField::ObstacleField(const CSpace& cspace) {
     cobstacles_.push_back(std::move(rings));
   }
   if (const auto& box = cspace.reference_box()) {
-    walls_ = {{true, to_double(box->xmin)}, {true, to_double(box->xmax)}, {false, to_double(box->ymin)}, {false, to_double(box->ymax)}};
+    walls_ = {{true, to_double(box->xmin)},
+              {true, to_double(box->xmax)},
+              {false, to_double(box->ymin)},
+              {false, to_double(box->ymax)}};
   }
 }
 
@@ -52,7 +55,8 @@ double ObstacleField::clearance(std::span<const NearestPoint> nearest) {
 
 double ObstacleField::clearance(Vec2 q) const { return clearance(nearest_points(q)); }
 
-Potential ObstacleField::potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters, std::span<const NearestPoint> nearest) {
+Potential ObstacleField::potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters,
+                                   std::span<const NearestPoint> nearest) {
   Potential total = attractive_potential(q, goal, parameters.attractive);
   for (const NearestPoint& n : nearest) total = total + repulsive_potential(q, n, parameters.repulsive);
   return total;

@@ -35,7 +35,8 @@ class ObstacleField {
   Potential potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters) const;
   // The same from the nearest points nearest_points(q) found already (a descent needs them for
   // its clearance too, and finding them is the work of the step).
-  static Potential potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters, std::span<const NearestPoint> nearest);
+  static Potential potential(Vec2 q, Vec2 goal, const PotentialParameters& parameters,
+                             std::span<const NearestPoint> nearest);
 
   // The smallest of the distances (infinite for none).
   static double clearance(std::span<const NearestPoint> nearest);

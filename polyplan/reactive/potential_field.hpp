@@ -4,7 +4,8 @@
 //
 //   attractive  ½ ζ d²                      where d = |q − goal| ≤ d*
 //               d* ζ d − ½ ζ d*²            beyond d* (conic: the pull is ζ d* whatever the distance)
-//               ζ d                         everywhere when d* = 0 (the purely conic potential of the course's planning problem set)
+//               ζ d                         everywhere when d* = 0 (the purely conic potential of the course's planning
+//               problem set)
 //   repulsive   ½ η (1/D − 1/Q*)²           of one obstacle at distance D ≤ Q*, 0 beyond Q*
 //
 // Value and gradient are continuous across d* and Q* (the Hessian jumps there, as the book's

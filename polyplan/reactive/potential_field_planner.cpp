@@ -1,10 +1,10 @@
 #include <polyplan/reactive/potential_field_planner.hpp>
 
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/gradient_descent.hpp>
 #include <polyplan/reactive/potential_map.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
 
 #include <algorithm>
@@ -18,7 +18,9 @@ namespace {
 
 void check_options(const PotentialFieldOptions& o) {
   const auto weight = [](double v, const char* name) {
-    if (!std::isfinite(v) || v < 0) throw std::invalid_argument(std::string(name) + ": expected a finite number of at least 0, got " + std::to_string(v));
+    if (!std::isfinite(v) || v < 0)
+      throw std::invalid_argument(std::string(name) + ": expected a finite number of at least 0, got " +
+                                  std::to_string(v));
   };
   weight(o.zeta, "zeta");
   weight(o.d_star, "d-star");
@@ -41,23 +43,27 @@ struct PotentialFieldPlanner::Impl {
 
   Impl(const CSpace& c, const PotentialFieldOptions& o)
       : cspace(&c), options(o), parameters{{o.zeta, o.d_star}, {o.eta, o.q_star}}, field(c),
-        step(o.step > 0 ? o.step : box_around(c, 1).diagonal() / 200), tolerance(o.goal_tolerance > 0 ? o.goal_tolerance : step) {}
+        step(o.step > 0 ? o.step : box_around(c, 1).diagonal() / 200),
+        tolerance(o.goal_tolerance > 0 ? o.goal_tolerance : step) {}
 
   Descent descend(const Query& query) const {
     const Vec2 goal = approximate(query.goal);
     const SlopeFunction slope = [&](Vec2 q) -> SlopeAt {
       const std::vector<NearestPoint> nearest = field.nearest_points(q);
       const double clearance = ObstacleField::clearance(nearest);
-      if (clearance == 0) return {std::nullopt, "the robot touches an obstacle, where the repulsion is infinite and has no gradient"};
+      if (clearance == 0)
+        return {std::nullopt, "the robot touches an obstacle, where the repulsion is infinite and has no gradient"};
       const Potential p = ObstacleField::potential(q, goal, parameters, nearest);
       return {Slope{p.gradient, p.value, clearance}, {}};
     };
-    return polyplan::descend(*cspace, query, slope, {step, tolerance, options.max_steps, options.patience, 1e-12 * (options.zeta + 1)});
+    return polyplan::descend(*cspace, query, slope,
+                             {step, tolerance, options.max_steps, options.patience, 1e-12 * (options.zeta + 1)});
   }
 
   // log(1 + U) over a 64 × 64 grid of the box around the world, for the picture.
   std::shared_ptr<const CellGrid> heat_map(const Query& query) const {
-    return std::make_shared<const CellGrid>(potential_map(*cspace, field, approximate(query.goal), parameters, box_around(*cspace, 64)));
+    return std::make_shared<const CellGrid>(
+        potential_map(*cspace, field, approximate(query.goal), parameters, box_around(*cspace, 64)));
   }
 };
 
@@ -91,16 +97,23 @@ PlanReport<ExactPoint> PotentialFieldPlanner::plan(const Query& query, const Que
 PlannerEntry<TranslatingRobot> potential_field_planner_entry() {
   OptionTable<PotentialFieldOptions> table;
   table.add("zeta", &PotentialFieldOptions::zeta, "weight of the goal's attraction", above(0))
-      .add("d-star", &PotentialFieldOptions::d_star, "quadratic attraction within this distance of the goal, conic beyond (0: conic everywhere)", at_least(0))
+      .add("d-star", &PotentialFieldOptions::d_star,
+           "quadratic attraction within this distance of the goal, conic beyond (0: conic everywhere)", at_least(0))
       .add("eta", &PotentialFieldOptions::eta, "weight of each obstacle's repulsion", at_least(0))
       .add("q-star", &PotentialFieldOptions::q_star, "an obstacle farther than this does not repel", at_least(0))
       .add("step", &PotentialFieldOptions::step, "the longest step (0: 1/200 of the world's diagonal)", at_least(0))
-      .add("goal-tolerance", &PotentialFieldOptions::goal_tolerance, "solved within this distance of the goal (0: the step)", at_least(0))
-      .add("max-steps", &PotentialFieldOptions::max_steps, "steps before the descent stops with status limit", at_least(1))
-      .add("patience", &PotentialFieldOptions::patience, "steps without getting closer to the goal before it is a local minimum", at_least(1));
+      .add("goal-tolerance", &PotentialFieldOptions::goal_tolerance,
+           "solved within this distance of the goal (0: the step)", at_least(0))
+      .add("max-steps", &PotentialFieldOptions::max_steps, "steps before the descent stops with status limit",
+           at_least(1))
+      .add("patience", &PotentialFieldOptions::patience,
+           "steps without getting closer to the goal before it is a local minimum", at_least(1));
   return make_planner_entry<TranslatingRobot, PotentialFieldOptions>(
-      "potential-field", "gradient descent on the goal's attraction and each C-obstacle's repulsion (Choset et al. ch. 4)",
-      std::move(table), [](const CSpace& cspace, const PotentialFieldOptions& o) { return std::make_unique<PotentialFieldPlanner>(cspace, o); });
+      "potential-field",
+      "gradient descent on the goal's attraction and each C-obstacle's repulsion (Choset et al. ch. 4)",
+      std::move(table), [](const CSpace& cspace, const PotentialFieldOptions& o) {
+        return std::make_unique<PotentialFieldPlanner>(cspace, o);
+      });
 }
 
 }  // namespace polyplan

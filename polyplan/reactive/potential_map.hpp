@@ -21,7 +21,7 @@ struct BoxGrid {
 // The world's bounds, or without bounds the box around its C-obstacles and queries (at least 1 wide).
 BoxGrid box_around(const CSpace& cspace, std::size_t cells_per_axis);
 
-CellGrid potential_map(const CSpace& cspace, const ObstacleField& field, Vec2 goal, const PotentialParameters& parameters,
-                       const BoxGrid& grid);
+CellGrid potential_map(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
+                       const PotentialParameters& parameters, const BoxGrid& grid);
 
 }  // namespace polyplan

@@ -30,7 +30,8 @@ void check_potential_inputs(const PotentialParameters& parameters, std::size_t c
 
 // The critical points in `box` (none: the world's bounds, or the box around it) cut into
 // cells × cells. Throws InputError for an empty box, naming `box_name`.
-PotentialStudy study_potential(const CSpace& cspace, const ObstacleField& field, Vec2 goal, const PotentialParameters& parameters,
-                               const std::optional<BoxGrid>& box, std::size_t cells, const std::string& box_name);
+PotentialStudy study_potential(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
+                               const PotentialParameters& parameters, const std::optional<BoxGrid>& box,
+                               std::size_t cells, const std::string& box_name);
 
 }  // namespace polyplan

@@ -1,11 +1,11 @@
 #include <polyplan/reactive/tangent_bug_planner.hpp>
 
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/reactive/reactive_facts.hpp>
 #include <polyplan/reactive/visibility_region.hpp>
 #include <polyplan/reactive/walk_report.hpp>
-#include <polyplan/plan/plan_facts.hpp>
-#include <polyplan/reactive/reactive_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -26,7 +26,8 @@ constexpr std::size_t regions_drawn = 6;  // the sensed regions a picture shows:
 double parse_range(const std::string& text) {
   if (text == "inf" || text == "infinity") return infinity;
   const auto value = detail::parse_real_number(text);
-  if (!value || *value < 0) throw std::invalid_argument("option sensor-range=" + text + ": expected a number >= 0 or inf");
+  if (!value || *value < 0)
+    throw std::invalid_argument("option sensor-range=" + text + ": expected a number >= 0 or inf");
   return *value;
 }
 
@@ -96,7 +97,8 @@ struct TangentBugPlanner::Impl {
   std::vector<Candidate> discontinuities(const Point& x, const Point& goal, const std::vector<Point>& region) const {
     std::vector<Candidate> out;
     for (const auto& [near, far] : windows(boundary, x, region))
-      if (senses(x, near) && check_segment(boundary.cspace(), x, near).valid) out.push_back({near, distance(x, near) + distance(near, goal)});
+      if (senses(x, near) && check_segment(boundary.cspace(), x, near).valid)
+        out.push_back({near, distance(x, near) + distance(near, goal)});
     return out;
   }
 
@@ -112,7 +114,9 @@ struct TangentBugPlanner::Impl {
   // yes, unless a discontinuity on the backward side (the end its direction is nearer) is strictly
   // better than every one on the forward side. `ends` = {backward end, forward end}.
   static bool follow_forwards(const Point& x, const std::vector<Candidate>& sensed, const std::vector<Point>& ends) {
-    const auto cosine = [&](const Point& end, const Point& o) { return to_double(dot(x, end, o)) / distance(x, end) / distance(x, o); };
+    const auto cosine = [&](const Point& end, const Point& o) {
+      return to_double(dot(x, end, o)) / distance(x, end) / distance(x, o);
+    };
     double best[2] = {infinity, infinity};  // backward, forward
     for (const Candidate& c : sensed) {
       const int side = cosine(ends[1], c.to) >= cosine(ends[0], c.to) ? 1 : 0;
@@ -179,7 +183,8 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
     if (record) facts.set(TangentBugFacts::d_followed, std::sqrt(to_double(*record)));
     facts.set(TangentBugFacts::stops, stops);
     if (query_options.record && !sensed.empty())
-      report.marks.push_back({PlanMark<ExactPoint>::Kind::regions, "sensed (visibility within range) at the first stops", sensed});
+      report.marks.push_back(
+          {PlanMark<ExactPoint>::Kind::regions, "sensed (visibility within range) at the first stops", sensed});
     report_walk(report, r.boundary.cspace(), walk, q, arrived, query_options.record, "tangent-bug");
     facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
@@ -187,7 +192,8 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
   const auto out_of_distance = [&](const std::string& doing) {
     facts.set(QueryFacts::stopped_by, "distance limit");
     const std::string followed = record ? ", d_followed " + detail::show_number(std::sqrt(to_double(*record))) : "";
-    report.fail(PlanStatus::limit, "the walk reached max-distance (" + detail::show_number(r.options.max_distance) + ") at " + text(at) + doing + followed);
+    report.fail(PlanStatus::limit, "the walk reached max-distance (" + detail::show_number(r.options.max_distance) +
+                                       ") at " + text(at) + doing + followed);
     return finish(false);
   };
   // Goes straight to p, or as far as max-distance allows (then false).
@@ -210,7 +216,8 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
   for (;;) {
     if (++stops > r.options.max_stops) {
       facts.set(QueryFacts::stopped_by, "stop limit");
-      report.fail(PlanStatus::limit, "the stop limit (" + std::to_string(r.options.max_stops) + ") ended the walk at " + text(at));
+      report.fail(PlanStatus::limit,
+                  "the stop limit (" + std::to_string(r.options.max_stops) + ") ended the walk at " + text(at));
       return finish(false);
     }
     // Motion to the goal.
@@ -221,10 +228,12 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
       continue;
     }
     const std::vector<Point> region = r.regions.visible_from(at);
-    if (query_options.record && r.range > 0 && sensed.size() < regions_drawn) sensed.push_back(within_range(region, at, r.range));
+    if (query_options.record && r.range > 0 && sensed.size() < regions_drawn)
+      sensed.push_back(within_range(region, at, r.range));
     const std::vector<Candidate> sensed_ends = r.discontinuities(at, q.goal, region);  // sensed once per stop
     std::optional<Candidate> move = best_of(Impl::nearer_goal(sensed_ends, at, q.goal));
-    if (const auto slide = r.best_slide(at, q.goal); slide && (!move || slide->heuristic < move->heuristic)) move = slide;
+    if (const auto slide = r.best_slide(at, q.goal); slide && (!move || slide->heuristic < move->heuristic))
+      move = slide;
     if (!move && !(*hit == at)) move = Candidate{*hit, 0};  // no discontinuity to head for: up to the obstacle
     if (move) {
       if (!go(move->to)) return out_of_distance(" heading for the goal");
@@ -233,7 +242,8 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
     // A local minimum of the distance to the goal: boundary following.
     const auto edge = r.boundary.edge_at(at);
     if (!edge) {
-      report.fail(PlanStatus::not_found, "tangent-bug: blocked at " + text(at) + ", off the boundary (a bug of polyplan's)");
+      report.fail(PlanStatus::not_found,
+                  "tangent-bug: blocked at " + text(at) + ", off the boundary (a bug of polyplan's)");
       return finish(false);
     }
     record = squared(at, q.goal);
@@ -246,8 +256,10 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
     // Walk the cycle from corner to corner until d_reach < d_followed.
     for (std::size_t walked = 0;; ++walked, k = forwards ? k + 1 : k + n - 1) {
       if (walked > n) {
-        report.fail(PlanStatus::no_path, "went once round the boundary from " + text(walk.hits.back()) +
-                                             " without coming nearer the goal than d_followed: the goal is unreachable (tangent-bug is complete)");
+        report.fail(
+            PlanStatus::no_path,
+            "went once round the boundary from " + text(walk.hits.back()) +
+                " without coming nearer the goal than d_followed: the goal is unreachable (tangent-bug is complete)");
         return finish(false);
       }
       const Point next = r.boundary.vertex(c, k);
@@ -274,16 +286,22 @@ PlannerEntry<TranslatingRobot> tangent_bug_planner_entry() {
       [](const TangentBugOptions& o) { return o.sensor_range; },
       [](TangentBugOptions& o, std::string_view text) -> std::optional<std::string> {
         const auto value = detail::parse_real_number(text);
-        if (text != "inf" && text != "infinity" && !(value && *value >= 0)) return "expected a number in [0, inf) or inf";
+        if (text != "inf" && text != "infinity" && !(value && *value >= 0))
+          return "expected a number in [0, inf) or inf";
         o.sensor_range = std::string(text);
         return std::nullopt;
       },
       at_least(0));
-  table.add("max-distance", &TangentBugOptions::max_distance, "the walk's length before it stops with status limit", at_least(0));
-  table.add("max-stops", &TangentBugOptions::max_stops, "stops (each one sensing) before the walk stops with status limit", at_least(1));
+  table.add("max-distance", &TangentBugOptions::max_distance, "the walk's length before it stops with status limit",
+            at_least(0));
+  table.add("max-stops", &TangentBugOptions::max_stops,
+            "stops (each one sensing) before the walk stops with status limit", at_least(1));
   return make_planner_entry<TranslatingRobot, TangentBugOptions>(
-      "tangent-bug", "TangentBug: to the goal or the best discontinuity its range sensor sees, following a boundary where that stops bringing it nearer (Kamon, Rivlin & Rimon)",
-      std::move(table), [](const CSpace& cspace, const TangentBugOptions& o) { return std::make_unique<TangentBugPlanner>(cspace, o); });
+      "tangent-bug",
+      "TangentBug: to the goal or the best discontinuity its range sensor sees, following a boundary where that stops "
+      "bringing it nearer (Kamon, Rivlin & Rimon)",
+      std::move(table),
+      [](const CSpace& cspace, const TangentBugOptions& o) { return std::make_unique<TangentBugPlanner>(cspace, o); });
 }
 
 }  // namespace polyplan

@@ -38,7 +38,10 @@ std::vector<detail::Segment> segments(const Boundary& boundary) {
   for (const FreeComponent& c : boundary.cspace().free_components()) bounded |= !c.outer.empty();
   if (!bounded) {
     const Rational margin = std::max({Rational(1), Rational(xmax - xmin), Rational(ymax - ymin)});
-    const Point corners[] = {{xmin - margin, ymin - margin}, {xmax + margin, ymin - margin}, {xmax + margin, ymax + margin}, {xmin - margin, ymax + margin}};
+    const Point corners[] = {{xmin - margin, ymin - margin},
+                             {xmax + margin, ymin - margin},
+                             {xmax + margin, ymax + margin},
+                             {xmin - margin, ymax + margin}};
     for (int k = 0; k < 4; ++k) out.emplace_back(to_point(corners[k]), to_point(corners[(k + 1) % 4]));
   }
   return out;
@@ -46,7 +49,8 @@ std::vector<detail::Segment> segments(const Boundary& boundary) {
 
 // Of a halfedge along the cycle's edge and its twin, the one with the free space on its left: the
 // one running the cycle's way (a face lies left of its boundary's halfedges).
-Arrangement::Halfedge_const_handle free_side(const Boundary& boundary, const Edge& edge, Arrangement::Halfedge_const_handle candidate) {
+Arrangement::Halfedge_const_handle free_side(const Boundary& boundary, const Edge& edge,
+                                             Arrangement::Halfedge_const_handle candidate) {
   const Point& a = boundary.vertex(edge.cycle, edge.index);
   const Point& b = boundary.vertex(edge.cycle, edge.index + 1);
   const Point dir{b.x - a.x, b.y - a.y};
@@ -92,7 +96,8 @@ std::vector<Point> VisibilityRegions::visible_from(const Point& x) const {
   } else {
     // A vertex: the halfedge arriving from the cycle's vertex before it, or from a point on that edge.
     const auto* vertex = boost::get<Arrangement::Vertex_const_handle>(&located);
-    if (!vertex) throw std::logic_error("visibility: " + text(x) + " is a cycle's point but not on the arrangement's boundary");
+    if (!vertex)
+      throw std::logic_error("visibility: " + text(x) + " is a cycle's point but not on the arrangement's boundary");
     const Point& before = r.boundary->vertex(on->cycle, on->index + r.boundary->cycles()[on->cycle].size() - 1);
     auto h = (*vertex)->incident_halfedges(), end = h;
     std::optional<Arrangement::Halfedge_const_handle> arriving;
@@ -112,7 +117,8 @@ std::vector<Point> VisibilityRegions::visible_from(const Point& x) const {
   return ring;
 }
 
-std::vector<std::pair<Point, Point>> windows(const Boundary& boundary, const Point& x, const std::vector<Point>& region) {
+std::vector<std::pair<Point, Point>> windows(const Boundary& boundary, const Point& x,
+                                             const std::vector<Point>& region) {
   std::vector<std::pair<Point, Point>> out;
   for (std::size_t i = 0; i < region.size(); ++i) {
     const Point &p = region[i], &q = region[(i + 1) % region.size()];
@@ -128,7 +134,9 @@ std::vector<Point> within_range(const std::vector<Point>& region, const Point& x
   if (!std::isfinite(range) || region.empty()) return region;
   const double cx = to_double(x.x), cy = to_double(x.y);
   const auto inside = [&](double px, double py) { return std::hypot(px - cx, py - cy) <= range; };
-  const auto on_circle = [&](double t) { return Point{Rational(cx + range * std::cos(t)), Rational(cy + range * std::sin(t))}; };
+  const auto on_circle = [&](double t) {
+    return Point{Rational(cx + range * std::cos(t)), Rational(cy + range * std::sin(t))};
+  };
   std::vector<Point> out;
   double last_exit = std::numeric_limits<double>::quiet_NaN();
   const auto arc_to = [&](double angle) {  // chords along the circle from the last exit

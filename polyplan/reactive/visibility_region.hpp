@@ -29,7 +29,8 @@ class VisibilityRegions {
 
 // The windows of x's visibility polygon: (near end, far end) for each edge of it on a line through
 // x that runs through the free space, not along the boundary. The near end is a boundary vertex.
-std::vector<std::pair<Point, Point>> windows(const Boundary& boundary, const Point& x, const std::vector<Point>& region);
+std::vector<std::pair<Point, Point>> windows(const Boundary& boundary, const Point& x,
+                                             const std::vector<Point>& region);
 
 // The region seen within `range` of x (a disc's arcs as short chords): a picture's polygon, in
 // rational copies of doubles. An infinite range returns the region.

@@ -23,8 +23,8 @@ void mark(PlanReport<ExactPoint>& report, const Walk& walk, const Query& query, 
 
 }  // namespace
 
-void report_walk(PlanReport<ExactPoint>& report, const CSpace& cspace, const Walk& walk, const Query& query, bool arrived,
-                 bool record, const std::string& name) {
+void report_walk(PlanReport<ExactPoint>& report, const CSpace& cspace, const Walk& walk, const Query& query,
+                 bool arrived, bool record, const std::string& name) {
   report.facts.set(BugFacts::hits, texts(walk.hits));
   report.facts.set(BugFacts::leaves, texts(walk.leaves));
   report.facts.set(BugFacts::distance, euclidean_length(walk.path));
@@ -35,7 +35,8 @@ void report_walk(PlanReport<ExactPoint>& report, const CSpace& cspace, const Wal
   if (!(report.path.back() == query.goal)) report.path.push_back(query.goal);
   if (report.path.size() == 1) report.path.push_back(query.goal);
   report.length = euclidean_length(report.path);
-  report.certificate = {true, "exact path check (arrangement zone walk) of the straight runs and the boundary edges followed"};
+  report.certificate = {
+      true, "exact path check (arrangement zone walk) of the straight runs and the boundary edges followed"};
   // Every point is exact and every run straight or along an edge, so this holds; checked all the
   // same, so that a mistake here is an answer that says so, never a path through an obstacle.
   const PathCheck check = check_path(cspace, report.path);

@@ -13,16 +13,15 @@ namespace polyplan {
 // Every arm planner, one line each, in the order `polyplan planners` lists them.
 template <>
 const PlannerRegistry<PlanarArm>& planners<PlanarArm>() {
-  static const PlannerRegistry<PlanarArm> registry{
-      "grid",
-      {
-      arm_grid_planner_entry(),
-      prm_planner_entry<PlanarArm>(arm_sampling_space),
-      lazy_prm_planner_entry<PlanarArm>(arm_sampling_space),
-      rrt_planner_entry<PlanarArm>(arm_sampling_space),
-      rrt_star_planner_entry<PlanarArm>(arm_sampling_space),
-      rrt_connect_planner_entry<PlanarArm>(arm_sampling_space),
-  }};
+  static const PlannerRegistry<PlanarArm> registry{"grid",
+                                                   {
+                                                       arm_grid_planner_entry(),
+                                                       prm_planner_entry<PlanarArm>(arm_sampling_space),
+                                                       lazy_prm_planner_entry<PlanarArm>(arm_sampling_space),
+                                                       rrt_planner_entry<PlanarArm>(arm_sampling_space),
+                                                       rrt_star_planner_entry<PlanarArm>(arm_sampling_space),
+                                                       rrt_connect_planner_entry<PlanarArm>(arm_sampling_space),
+                                                   }};
   return registry;
 }
 

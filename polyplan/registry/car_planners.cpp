@@ -14,17 +14,16 @@ namespace polyplan {
 // Every planner of a steered car, one line each, in the order `polyplan planners` lists them.
 template <>
 const PlannerRegistry<SteeredCar>& planners<SteeredCar>() {
-  static const PlannerRegistry<SteeredCar> registry{
-      "hybrid-astar",
-      {
-      hybrid_astar_planner_entry(),
-      car_rrt_planner_entry(),
-      prm_planner_entry<SteeredCar>(car_sampling_space),
-      lazy_prm_planner_entry<SteeredCar>(car_sampling_space),
-      rrt_planner_entry<SteeredCar>(car_sampling_space),
-      rrt_star_planner_entry<SteeredCar>(car_sampling_space),
-      rrt_connect_planner_entry<SteeredCar>(car_sampling_space),
-  }};
+  static const PlannerRegistry<SteeredCar> registry{"hybrid-astar",
+                                                    {
+                                                        hybrid_astar_planner_entry(),
+                                                        car_rrt_planner_entry(),
+                                                        prm_planner_entry<SteeredCar>(car_sampling_space),
+                                                        lazy_prm_planner_entry<SteeredCar>(car_sampling_space),
+                                                        rrt_planner_entry<SteeredCar>(car_sampling_space),
+                                                        rrt_star_planner_entry<SteeredCar>(car_sampling_space),
+                                                        rrt_connect_planner_entry<SteeredCar>(car_sampling_space),
+                                                    }};
   return registry;
 }
 

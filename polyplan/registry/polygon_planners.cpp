@@ -2,13 +2,13 @@
 
 #include <polyplan/grids/gvd_grid_planner.hpp>
 #include <polyplan/grids/raster_planner.hpp>
-#include <polyplan/incremental/replanning_planner.hpp>
-#include <polyplan/reactive/bug_planner.hpp>
-#include <polyplan/reactive/tangent_bug_planner.hpp>
 #include <polyplan/homotopy/homotopy_planner.hpp>
 #include <polyplan/homotopy/tether_planner.hpp>
+#include <polyplan/incremental/replanning_planner.hpp>
+#include <polyplan/reactive/bug_planner.hpp>
 #include <polyplan/reactive/navigation_function_planner.hpp>
 #include <polyplan/reactive/potential_field_planner.hpp>
+#include <polyplan/reactive/tangent_bug_planner.hpp>
 #include <polyplan/roadmaps/trapezoid_planner.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/roadmaps/voronoi_planner.hpp>
@@ -28,39 +28,38 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
   static const PlannerRegistry<TranslatingRobot> registry{
       "visibility",
       {
-      visibility_planner_entry(VisibilityKind::reduced),
-      visibility_planner_entry(VisibilityKind::full),
-      raster_planner_entry(),
-      trapezoid_planner_entry(),
-      voronoi_planner_entry(),
-      gvd_grid_planner_entry(),
-      replanning_planner_entry(ReplanAlgorithm::dstar_lite),
-      replanning_planner_entry(ReplanAlgorithm::lpastar),
-      replanning_planner_entry(ReplanAlgorithm::astar),
-      potential_field_planner_entry(),
-      navigation_function_planner_entry(),
-      bug_planner_entry(BugKind::bug1),
-      bug_planner_entry(BugKind::bug2),
-      tangent_bug_planner_entry(),
-      homotopy_planner_entry(),
-      tether_planner_entry(),
-      prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
-      lazy_prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
-      rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),
-      rrt_star_planner_entry<TranslatingRobot>(polygon_sampling_space),
-      rrt_connect_planner_entry<TranslatingRobot>(polygon_sampling_space),
-  }};
+          visibility_planner_entry(VisibilityKind::reduced),
+          visibility_planner_entry(VisibilityKind::full),
+          raster_planner_entry(),
+          trapezoid_planner_entry(),
+          voronoi_planner_entry(),
+          gvd_grid_planner_entry(),
+          replanning_planner_entry(ReplanAlgorithm::dstar_lite),
+          replanning_planner_entry(ReplanAlgorithm::lpastar),
+          replanning_planner_entry(ReplanAlgorithm::astar),
+          potential_field_planner_entry(),
+          navigation_function_planner_entry(),
+          bug_planner_entry(BugKind::bug1),
+          bug_planner_entry(BugKind::bug2),
+          tangent_bug_planner_entry(),
+          homotopy_planner_entry(),
+          tether_planner_entry(),
+          prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
+          lazy_prm_planner_entry<TranslatingRobot>(polygon_sampling_space),
+          rrt_planner_entry<TranslatingRobot>(polygon_sampling_space),
+          rrt_star_planner_entry<TranslatingRobot>(polygon_sampling_space),
+          rrt_connect_planner_entry<TranslatingRobot>(polygon_sampling_space),
+      }};
   return registry;
 }
 
 // Every planner of rotating polygon robots.
 template <>
 const PlannerRegistry<RotatingRobot>& planners<RotatingRobot>() {
-  static const PlannerRegistry<RotatingRobot> registry{
-      "rotation",
-      {
-      rotation_planner_entry(),
-  }};
+  static const PlannerRegistry<RotatingRobot> registry{"rotation",
+                                                       {
+                                                           rotation_planner_entry(),
+                                                       }};
   return registry;
 }
 

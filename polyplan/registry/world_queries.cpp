@@ -20,8 +20,9 @@ void require_planner_for_changes(const World& world, std::string_view planner) {
   if (std::find(following.begin(), following.end(), planner) != following.end()) return;
   std::string names;
   for (const std::string& name : following) names += (names.empty() ? "" : ", ") + name;
-  throw InputError(world.source + ": " + world.changes.front().name + ": the world changes as the robot drives, and the planner " +
-                   std::string(planner) + " plans a world that stands still: use one that follows the changes (" + names + ")");
+  throw InputError(world.source + ": " + world.changes.front().name +
+                   ": the world changes as the robot drives, and the planner " + std::string(planner) +
+                   " plans a world that stands still: use one that follows the changes (" + names + ")");
 }
 
 }  // namespace
@@ -37,11 +38,13 @@ void require_planner_for_robot(const World& world, std::string_view planner) {
   const bool car_planner = planners<SteeredCar>().find(planner) != nullptr;
   const bool world_planner = planners<TranslatingRobot>().find(planner) || planners<RotatingRobot>().find(planner);
   if (world.robot.car && !car_planner)
-    throw InputError(world.source + ": robot.car: the robot steers like a car, and the planner " + std::string(planner) +
-                     " neither steers nor keeps to a turning radius: use a car planner (" + planners<SteeredCar>().names() + ")");
+    throw InputError(world.source + ": robot.car: the robot steers like a car, and the planner " +
+                     std::string(planner) + " neither steers nor keeps to a turning radius: use a car planner (" +
+                     planners<SteeredCar>().names() + ")");
   if (!world.robot.car && car_planner && !world_planner)
-    throw InputError(world.source + ": robot: the planner " + std::string(planner) +
-                     " plans for a car, and this robot has no \"car\": {\"turning_radius\": R, \"reverse\": true|false}");
+    throw InputError(
+        world.source + ": robot: the planner " + std::string(planner) +
+        " plans for a car, and this robot has no \"car\": {\"turning_radius\": R, \"reverse\": true|false}");
   if (!world.changes.empty()) require_planner_for_changes(world, planner);
 }
 
@@ -59,10 +62,12 @@ void require_plannable_queries(const World& world, const CSpace* cspace, std::st
   // A rotating robot's planner builds the C-space of each orientation itself.
   if (planners<RotatingRobot>().find(planner)) return require_free_poses(world);
   if (turns_the_robot(world))
-    throw InputError(world.source + ": a start or goal has an orientation other than 0 degrees ([x, y, theta]); the planner " +
-                     std::string(planner) +
-                     " only translates the robot as its file draws it: use --planner rotation (Python: planner=\"rotation\")");
-  if (!cspace) throw std::logic_error("require_plannable_queries: a translating planner's check needs the world's C-space");
+    throw InputError(
+        world.source + ": a start or goal has an orientation other than 0 degrees ([x, y, theta]); the planner " +
+        std::string(planner) +
+        " only translates the robot as its file draws it: use --planner rotation (Python: planner=\"rotation\")");
+  if (!cspace)
+    throw std::logic_error("require_plannable_queries: a translating planner's check needs the world's C-space");
   cspace->require_free_queries();
 }
 

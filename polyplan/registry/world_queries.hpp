@@ -14,9 +14,9 @@ namespace polyplan {
 
 // InputError naming the world's file and the query when the world has no query, or a start or
 // goal is not free: for `planner` (a name of planners<TranslatingRobot>(), planners<RotatingRobot>()
-// or planners<SteeredCar>(): a car's body at its poses) at the query's orientation; a translating planner also refuses an
-// orientation other than 0 degrees. `cspace` is the world's C-space, which a translating planner's
-// check reads (a rotating planner's builds those of its orientations: null will do).
+// or planners<SteeredCar>(): a car's body at its poses) at the query's orientation; a translating planner also refuses
+// an orientation other than 0 degrees. `cspace` is the world's C-space, which a translating planner's check reads (a
+// rotating planner's builds those of its orientations: null will do).
 void require_plannable_queries(const World& world, const CSpace* cspace, std::string_view planner);
 
 // InputError when `planner` cannot plan for the world's robot at all, asked or not: a car's

@@ -104,7 +104,7 @@ struct EuclideanShortestPaths::Impl {
   std::vector<int> node_at;
   std::vector<int> node_vertex;
   std::vector<IntegerPoint> node_point;  // node_vertex's points, beside each other for the search
-  CompressedGraph graph;  // of the corners
+  CompressedGraph graph;                 // of the corners
   // The table (n x n, row s = Dijkstra from s): distance and the predecessor on the path from s.
   std::vector<double> table_distance;
   std::vector<int> table_parent;
@@ -230,7 +230,8 @@ struct EuclideanShortestPaths::Impl {
   }
 
   // reach() by walking the triangulation (none from a blocked point).
-  void walk_reach(const IntegerPoint& p, const PointLocation& where, std::vector<Reached>& out, Scratch::Impl& s) const {
+  void walk_reach(const IntegerPoint& p, const PointLocation& where, std::vector<Reached>& out,
+                  Scratch::Impl& s) const {
     out.clear();
     s.visible.clear();
     triangulation.visible_from_point(p, where, s.visible, s.walk);
@@ -248,9 +249,11 @@ struct EuclideanShortestPaths::Impl {
     std::vector<std::pair<double, int>>& order = s.heap;
     order.clear();
     for (std::size_t i = 0; i < s.from_start.size(); ++i)
-      order.emplace_back(s.from_start[i].distance + distance(position(s.from_start[i].node), goal), static_cast<int>(i));
+      order.emplace_back(s.from_start[i].distance + distance(position(s.from_start[i].node), goal),
+                         static_cast<int>(i));
     std::sort(order.begin(), order.end());
-    std::sort(s.from_goal.begin(), s.from_goal.end(), [](const Reached& a, const Reached& b) { return a.node < b.node; });
+    std::sort(s.from_goal.begin(), s.from_goal.end(),
+              [](const Reached& a, const Reached& b) { return a.node < b.node; });
     double best = kInfinity;
     int best_a = -1, best_b = -1;
     for (const auto& [bound, i] : order) {
@@ -368,7 +371,8 @@ struct EuclideanShortestPaths::Impl {
         best_node = u;
       }
       const double cost = r.cost;
-      for (std::size_t e = graph.row_begin(u); e < graph.row_end(u); ++e) relax(graph.adjacent[e], cost + graph.weight[e], u);
+      for (std::size_t e = graph.row_begin(u); e < graph.row_end(u); ++e)
+        relax(graph.adjacent[e], cost + graph.weight[e], u);
     }
     if (best_node < 0) return false;
     corners.clear();
@@ -404,8 +408,7 @@ void EuclideanShortestPaths::build(EuclideanShortestPathsOptions options) {
   const unsigned threads = thread_count(options.threads);
   impl_->build_graph(threads);
   const std::size_t n = impl_->nodes();
-  if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n)
-    impl_->build_table(threads);
+  if (n > 0 && n <= options.table_bytes / (sizeof(double) + sizeof(int)) / n) impl_->build_table(threads);
   else if (n > 0 && impl_->graph.adjacent.size() <= kLabelDegreeLimit * n)
     impl_->labels = HubLabels::build(impl_->graph, options.label_bytes);
   if (n > 0) impl_->build_point_table(threads, options.table_bytes);
@@ -426,11 +429,14 @@ std::size_t EuclideanShortestPaths::memory_bytes() const {
   return g.triangulation.memory_bytes() + (g.wedge_offset.capacity() + g.graph.begin.capacity()) * sizeof(std::size_t) +
          g.node_point.capacity() * sizeof(IntegerPoint) +
          (g.node_at.capacity() + g.node_vertex.capacity() + g.graph.adjacent.capacity() + g.table_parent.capacity() +
-          g.point_corners.capacity() + g.point_begin.capacity()) * sizeof(int) +
-         (g.graph.weight.capacity() + g.table_distance.capacity()) * sizeof(double) + (g.labels ? g.labels->memory_bytes() : 0);
+          g.point_corners.capacity() + g.point_begin.capacity()) *
+             sizeof(int) +
+         (g.graph.weight.capacity() + g.table_distance.capacity()) * sizeof(double) +
+         (g.labels ? g.labels->memory_bytes() : 0);
 }
 
-EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPoint& start, const IntegerPoint& goal, Scratch& scratch) const {
+EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPoint& start, const IntegerPoint& goal,
+                                                  Scratch& scratch) const {
   const Impl& g = *impl_;
   Scratch::Impl& s = *scratch.impl_;
   EuclideanPathAnswer answer;
@@ -467,24 +473,26 @@ EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPoint& start, con
   if (!g.triangulation.segment_free(from, start_at, to)) {  // start does not see goal: through corners
     g.reach(from, start_at, s.from_start, s);
     g.reach(to, goal_at, s.from_goal, s);
-    const bool found = has_table()    ? g.best_through_table(to, s, s.corners)
-                       : g.labels ? g.best_through_labels(s, s.corners)
-                                  : g.best_by_search(to, s, s.corners);
+    const bool found = has_table() ? g.best_through_table(to, s, s.corners)
+                       : g.labels  ? g.best_through_labels(s, s.corners)
+                                   : g.best_by_search(to, s, s.corners);
     if (!found) {  // cannot happen: one component means one path through its corners
       answer.why_not = "no path through the corners between start and goal";
       return answer;
     }
     for (int c : s.corners) {
       path.push_back(g.position(c));
-      where.push_back(IntegerTriangulation::at_vertex(static_cast<std::size_t>(g.node_vertex[static_cast<std::size_t>(c)])));
+      where.push_back(
+          IntegerTriangulation::at_vertex(static_cast<std::size_t>(g.node_vertex[static_cast<std::size_t>(c)])));
     }
     // Every reported path is checked exactly by the segment walk, which is not the visibility
     // that found it; a failure is a bug, never a tolerance call.
     path.push_back(to);
     where.push_back(goal_at);
     if (!g.triangulation.path_free(path, where))
-      throw std::logic_error("euclidean shortest paths produced an invalid path: " +
-                             g.triangulation.why_path_blocked(path, where).value_or("(the check disagrees with itself)"));
+      throw std::logic_error(
+          "euclidean shortest paths produced an invalid path: " +
+          g.triangulation.why_path_blocked(path, where).value_or("(the check disagrees with itself)"));
   } else {
     path.push_back(to);
   }

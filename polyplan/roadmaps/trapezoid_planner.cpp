@@ -4,11 +4,11 @@
 #include <polyplan/free_space/query_frame.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/plan/query_tally.hpp>
-#include <polyplan/search/shortest_path.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/roadmaps/roadmap_facts.hpp>
+#include <polyplan/search/shortest_path.hpp>
 
 #include <algorithm>
 #include <stdexcept>
@@ -50,7 +50,9 @@ struct TrapezoidPlanner::Impl {
 
   std::size_t cell_count() const { return decomposition.cells().size(); }
   // A query slot at p: its edges' lengths and the search's heuristic read the position.
-  void place(RoadmapVertexId slot, const ExactPoint& p) { roadmap[slot] = RoadmapVertex{p, to_double(p.x), to_double(p.y)}; }
+  void place(RoadmapVertexId slot, const ExactPoint& p) {
+    roadmap[slot] = RoadmapVertex{p, to_double(p.x), to_double(p.y)};
+  }
   bool is_wall_node(RoadmapVertexId v) const { return v >= cell_count() && v < start_slot; }
   const TrapezoidWall& wall_of(RoadmapVertexId v) const { return decomposition.walls()[v - cell_count()]; }
 
@@ -146,7 +148,8 @@ PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOpt
       report.graph = g.graph();
       report.decomposition = g.cells();
     }
-    const std::vector<std::size_t> from = g.decomposition.cells_at(query.start), to = g.decomposition.cells_at(query.goal);
+    const std::vector<std::size_t> from = g.decomposition.cells_at(query.start),
+                                   to = g.decomposition.cells_at(query.goal);
     if (from.empty() || to.empty())
       return report.fail(PlanStatus::invalid_query,
                          g.cspace->query_not_free(query).value_or("the start or goal is in no trapezoid"));
@@ -184,15 +187,16 @@ PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOpt
 
 PlannerEntry<TranslatingRobot> trapezoid_planner_entry() {
   OptionTable<TrapezoidOptions> table;
-  table.add("path", &TrapezoidOptions::path,
-            "funnel: the shortest path within the channel of trapezoids found; zigzag: through centroids and wall midpoints",
-            std::vector<std::pair<std::string, ChannelPath>>{{"funnel", ChannelPath::funnel}, {"zigzag", ChannelPath::zigzag}});
+  table.add(
+      "path", &TrapezoidOptions::path,
+      "funnel: the shortest path within the channel of trapezoids found; zigzag: through centroids and wall midpoints",
+      std::vector<std::pair<std::string, ChannelPath>>{{"funnel", ChannelPath::funnel},
+                                                       {"zigzag", ChannelPath::zigzag}});
   add_search_options(table, &TrapezoidOptions::search);
   return make_planner_entry<TranslatingRobot, TrapezoidOptions>(
       "trapezoid", "vertical (trapezoidal) decomposition of the free space: centroids and wall midpoints as a roadmap",
-      std::move(table), [](const CSpace& cspace, const TrapezoidOptions& o) {
-        return std::make_unique<TrapezoidPlanner>(cspace, o);
-      });
+      std::move(table),
+      [](const CSpace& cspace, const TrapezoidOptions& o) { return std::make_unique<TrapezoidPlanner>(cspace, o); });
 }
 
 }  // namespace polyplan

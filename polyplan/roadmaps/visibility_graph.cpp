@@ -4,11 +4,11 @@
 #include <polyplan/free_space/query_frame.hpp>
 #include <polyplan/geometry/detail/cspace_impl.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/shortest_path.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +21,6 @@ using namespace detail;
 using Direction = VertexWedges::Direction;
 
 constexpr std::size_t kNotANode = static_cast<std::size_t>(-1);
-
-
 
 }  // namespace
 

@@ -4,13 +4,13 @@
 #include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
-#include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/geometry/shared_component.hpp>
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/plan/query_tally.hpp>
+#include <polyplan/roadmaps/roadmap_facts.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/search/shortest_path.hpp>
-#include <polyplan/plan/plan_facts.hpp>
-#include <polyplan/roadmaps/roadmap_facts.hpp>
 
 #include <boost/pending/disjoint_sets.hpp>
 
@@ -27,7 +27,7 @@ constexpr double kClearanceTolerance = 1e-7;  // how far a sampled arc may come 
 // A piece of the graph searched for one query: a diagram edge between two parameters, or the
 // straight move from a query point to where it meets the diagram.
 struct Piece {
-  std::size_t u = 0, v = 0;  // graph vertices
+  std::size_t u = 0, v = 0;         // graph vertices
   std::optional<std::size_t> edge;  // the diagram edge it runs along; none for a straight move
   std::optional<Vec2> via;          // a straight move's corner: where it stepped off the boundary
   double t_u = 0, t_v = 0;
@@ -103,12 +103,16 @@ struct VoronoiPlanner::Impl {
     }
     auto land = [&](std::size_t query, std::size_t landing, const ExactPoint& p, const VoronoiDiagram::Retraction& r) {
       const CurvePoint on = r.on;
-      const Vec2 at = approximate(p), there = diagram.point(on.edge, on.parameter), corner = r.off_boundary.value_or(at);
-      pieces.push_back({query, landing, std::nullopt, r.off_boundary, 0, 0, r.clearance,
-                        std::hypot(at.x - corner.x, at.y - corner.y) + std::hypot(corner.x - there.x, corner.y - there.y), true});
+      const Vec2 at = approximate(p), there = diagram.point(on.edge, on.parameter),
+                 corner = r.off_boundary.value_or(at);
+      pieces.push_back(
+          {query, landing, std::nullopt, r.off_boundary, 0, 0, r.clearance,
+           std::hypot(at.x - corner.x, at.y - corner.y) + std::hypot(corner.x - there.x, corner.y - there.y), true});
       const DiagramEdge& edge = diagram.edges()[on.edge];
-      for (const auto& [end, t] : {std::pair{edge.from, diagram.parameter_from(on.edge)}, std::pair{edge.to, diagram.parameter_to(on.edge)}})
-        pieces.push_back({landing, end, on.edge, std::nullopt, on.parameter, t, diagram.clearance_between(on.edge, on.parameter, t),
+      for (const auto& [end, t] :
+           {std::pair{edge.from, diagram.parameter_from(on.edge)}, std::pair{edge.to, diagram.parameter_to(on.edge)}})
+        pieces.push_back({landing, end, on.edge, std::nullopt, on.parameter, t,
+                          diagram.clearance_between(on.edge, on.parameter, t),
                           diagram.length_between(on.edge, on.parameter, t), true});
     };
     land(s, rs, start, from_start);
@@ -122,7 +126,8 @@ struct VoronoiPlanner::Impl {
 
   // Chords along a piece from its t_u end to its t_v end (the t_u end not included), fine enough
   // to stay within the tolerance of the bottleneck.
-  void sample(const Piece& piece, double t1, double t2, double bottleneck, std::vector<Vec2>& out, int depth = 0) const {
+  void sample(const Piece& piece, double t1, double t2, double bottleneck, std::vector<Vec2>& out,
+              int depth = 0) const {
     const std::size_t e = *piece.edge;
     if (diagram.is_parabolic(e) && depth < 60) {
       const double arc = diagram.clearance_between(e, t1, t2);
@@ -149,7 +154,8 @@ struct VoronoiPlanner::Impl {
   std::optional<double> bottleneck_of(const std::vector<Piece>& pieces) const {
     std::vector<std::size_t> order(pieces.size());
     std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return pieces[a].clearance > pieces[b].clearance; });
+    std::sort(order.begin(), order.end(),
+              [&](std::size_t a, std::size_t b) { return pieces[a].clearance > pieces[b].clearance; });
     std::vector<std::size_t> rank(search_vertices()), parent(search_vertices());
     boost::disjoint_sets<std::size_t*, std::size_t*> components(rank.data(), parent.data());
     for (std::size_t v = 0; v < search_vertices(); ++v) components.make_set(v);
@@ -215,7 +221,8 @@ struct VoronoiPlanner::Impl {
       report.path.clear();
       return report.fail(PlanStatus::not_found,
                          "the maximum-clearance path failed the exact check (the diagram's doubles rounded across the "
-                         "boundary): " + check.reason);
+                         "boundary): " +
+                             check.reason);
     }
     report.succeed();
     report.length = euclidean_length(report.path);
@@ -282,9 +289,8 @@ PlannerEntry<TranslatingRobot> voronoi_planner_entry() {
   add_search_options(table, &VoronoiOptions::search);
   return make_planner_entry<TranslatingRobot, VoronoiOptions>(
       "voronoi", "maximum clearance on the generalized Voronoi diagram of the free space (CGAL segment Delaunay graph)",
-      std::move(table), [](const CSpace& cspace, const VoronoiOptions& o) {
-        return std::make_unique<VoronoiPlanner>(cspace, o);
-      });
+      std::move(table),
+      [](const CSpace& cspace, const VoronoiOptions& o) { return std::make_unique<VoronoiPlanner>(cspace, o); });
 }
 
 }  // namespace polyplan

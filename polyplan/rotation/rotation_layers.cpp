@@ -9,9 +9,9 @@
 #include <map>
 #include <memory>
 #include <set>
-#include <tuple>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 
 namespace polyplan {
 
@@ -32,14 +32,16 @@ OrientationSet::OrientationSet(const OrientationOptions& o) {
     if (o.count > max_rotation_layers)
       throw std::invalid_argument("rotation-count " + std::to_string(o.count) + ": more than " +
                                   std::to_string(max_rotation_layers) + " layers");
-    if (width == 0 && o.count != 1) throw std::invalid_argument("rotation-count: an empty range " + range + " has one layer");
+    if (width == 0 && o.count != 1)
+      throw std::invalid_argument("rotation-count: an empty range " + range + " has one layer");
     if (!whole_circle_ && width > 0 && o.count < 2)
       throw std::invalid_argument("rotation-count: the range " + range + " needs at least two layers, its ends");
     intervals = whole_circle_ ? o.count : o.count - 1;
     step_ = intervals == 0 ? 360 : width / static_cast<double>(intervals);
   } else {
     if (!std::isfinite(o.step) || o.step <= 0)
-      throw std::invalid_argument("rotation-step " + detail::show_number(o.step) + ": expected a number of degrees > 0");
+      throw std::invalid_argument("rotation-step " + detail::show_number(o.step) +
+                                  ": expected a number of degrees > 0");
     const double steps = width / o.step;
     if (steps > static_cast<double>(max_rotation_layers))
       throw std::invalid_argument("rotation-step " + angle_text(o.step) + ": more than " +
@@ -48,15 +50,16 @@ OrientationSet::OrientationSet(const OrientationOptions& o) {
     // The step must divide the range: reading "0.1" gives a double, so "divides" is decided to
     // within rounding of the user's numbers (this picks the layers; it decides no collision).
     if (std::abs(static_cast<double>(intervals) * o.step - width) > 1e-9 * std::max(1.0, width))
-      throw std::invalid_argument("rotation-step " + angle_text(o.step) + " does not divide the range " + range +
-                                  " (" + detail::show_number(steps) + " steps)");
+      throw std::invalid_argument("rotation-step " + angle_text(o.step) + " does not divide the range " + range + " (" +
+                                  detail::show_number(steps) + " steps)");
     step_ = o.step;
     if (whole_circle_ && intervals == 0) intervals = 1;
   }
   const std::size_t n = whole_circle_ ? intervals : intervals + 1;
   if (n > 1 && step_ >= 180)
-    throw std::invalid_argument("rotation-step " + angle_text(step_) +
-                                ": neighbouring layers must be less than 180° apart (a turn is enclosed the short way)");
+    throw std::invalid_argument(
+        "rotation-step " + angle_text(step_) +
+        ": neighbouring layers must be less than 180° apart (a turn is enclosed the short way)");
   for (std::size_t k = 0; k < n; ++k)
     degrees_.push_back(k + 1 == n && !whole_circle_ && n > 1 ? to : o.from + static_cast<double>(k) * step_);
 }
@@ -119,12 +122,13 @@ void require_free_poses(const World& world) {
   std::map<double, std::unique_ptr<CSpace>> at_angle;
   for (const Query& q : world.queries)
     for (const auto& [what, point, theta] : {std::tuple{"start", &q.start, q.start_theta.value_or(0)},
-                                              std::tuple{"goal", &q.goal, q.goal_theta.value_or(0)}}) {
+                                             std::tuple{"goal", &q.goal, q.goal_theta.value_or(0)}}) {
       auto& cspace = at_angle[theta];
-      if (!cspace) cspace = std::make_unique<CSpace>(world_with_robot(world, rotated(world.robot, exact_rotation(theta))));
+      if (!cspace)
+        cspace = std::make_unique<CSpace>(world_with_robot(world, rotated(world.robot, exact_rotation(theta))));
       if (auto why = cspace->collision_at(*point))
-        throw InputError(world.source + ": " + (q.name == "start/goal" ? std::string(what) : q.name + "." + what) + " " +
-                         to_string(Pose{*point, {}, theta}) + ": not free: " + *why);
+        throw InputError(world.source + ": " + (q.name == "start/goal" ? std::string(what) : q.name + "." + what) +
+                         " " + to_string(Pose{*point, {}, theta}) + ": not free: " + *why);
     }
 }
 

@@ -4,11 +4,11 @@
 #include <polyplan/geometry/detail/cspace_impl.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/turn_enclosure.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/plan/stopwatch.hpp>
-#include <polyplan/search/graph_search.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/rotation/rotation_facts.hpp>
+#include <polyplan/search/graph_search.hpp>
 
 #include <boost/graph/adjacency_list.hpp>
 
@@ -43,9 +43,9 @@ using PointKey = std::pair<Rational, Rational>;
 // One layer's share of the roadmap.
 struct LayerRoadmap {
   std::unique_ptr<FreeSpaceTriangulation> triangulation;
-  std::map<PointKey, NodeId> node_at;   // every vertex of the layer, by position
-  std::vector<NodeId> corner_of;        // triangulation vertex → its node when a convex corner
-  std::set<PointKey> pinches;           // where the free space has zero width: no vertex goes there
+  std::map<PointKey, NodeId> node_at;            // every vertex of the layer, by position
+  std::vector<NodeId> corner_of;                 // triangulation vertex → its node when a convex corner
+  std::set<PointKey> pinches;                    // where the free space has zero width: no vertex goes there
   std::vector<std::vector<NodeId>> turn_points;  // per turn layer beside it: its corners here
 };
 
@@ -54,8 +54,8 @@ struct LayerRoadmap {
 struct QueryEnd {
   Pose pose;
   std::size_t on_layer = kOffLayer;
-  std::vector<std::size_t> entry_layers;      // off a layer: the nearest layers it can turn onto
-  std::vector<double> entry_turns;            // degrees, pose → layer
+  std::vector<std::size_t> entry_layers;       // off a layer: the nearest layers it can turn onto
+  std::vector<double> entry_turns;             // degrees, pose → layer
   std::vector<std::unique_ptr<CSpace>> turns;  // the turn enclosures' C-spaces, by entry
 };
 
@@ -89,8 +89,7 @@ struct RotationPlanner::Impl {
   double max_error_radians = 0;
 
   Impl(const World& world, const RotationOptions& o)
-      : options(o),
-        weight(o.weight < 0 ? robot_radius(world.robot) : o.weight),
+      : options(o), weight(o.weight < 0 ? robot_radius(world.robot) : o.weight),
         layers(world, OrientationSet(o.orientations)) {
     for (const RotationLayer& layer : layers.layers()) {
       const double error = std::abs(std::remainder(degrees_of(layer.rotation) - layer.degrees, 360.0)) * pi / 180;
@@ -124,8 +123,8 @@ struct RotationPlanner::Impl {
   // translations between those that see each other.
   void add_corners(std::size_t k) {
     LayerRoadmap& r = roadmaps[k];
-    r.triangulation = std::make_unique<FreeSpaceTriangulation>(detail::CSpaceAccess::impl(*layer(k).cspace),
-                                                               query_points(world()));
+    r.triangulation =
+        std::make_unique<FreeSpaceTriangulation>(detail::CSpaceAccess::impl(*layer(k).cspace), query_points(world()));
     const FreeSpaceTriangulation& t = *r.triangulation;
     r.corner_of.assign(t.vertex_count(), kNoNode);
     std::vector<std::size_t> wedge_of(t.vertex_count(), 0);
@@ -214,8 +213,8 @@ struct RotationPlanner::Impl {
     const auto angle = set.normalized(asked);
     const std::string pose_text = to_string(Pose{position, {}, asked});
     if (!angle)
-      return std::string("the ") + what + " " + pose_text + " is outside the orientations [" + angle_text(set.degrees(0)) +
-             ", " + angle_text(set.degrees(set.size() - 1)) + "]";
+      return std::string("the ") + what + " " + pose_text + " is outside the orientations [" +
+             angle_text(set.degrees(0)) + ", " + angle_text(set.degrees(set.size() - 1)) + "]";
     if (!roadmaps[0].triangulation->in_frame(position))
       return std::string("the ") + what + " " + pose_text +
              " is beyond the frame the planner triangulated around this world without bounds (give the world bounds)";
@@ -228,7 +227,8 @@ struct RotationPlanner::Impl {
     }
     end.pose = Pose{position, exact_rotation(*angle), *angle};
     const World own = world_with_robot(world(), rotated(world().robot, end.pose.rotation));
-    if (auto why = CSpace(own).collision_at(position)) return std::string("the ") + what + " " + pose_text + " is not free: " + *why;
+    if (auto why = CSpace(own).collision_at(position))
+      return std::string("the ") + what + " " + pose_text + " is not free: " + *why;
     std::string refused;
     for (std::size_t k : set.nearest(*angle)) {
       auto turn = std::make_unique<CSpace>(  // a C-space keeps its own copy of the world
@@ -276,7 +276,8 @@ struct RotationPlanner::Impl {
           (layer(k).cspace->locate(p).kind != Location::Kind::blocked && !roadmaps[k].pinches.count({p.x, p.y})))
         at_layer[k] = query_vertex(k, p);
     for (const TurnLayer& t : layers.turns())
-      if (at_layer[t.from] != kNoNode && at_layer[t.to] != kNoNode && t.cspace->locate(p).kind != Location::Kind::blocked)
+      if (at_layer[t.from] != kNoNode && at_layer[t.to] != kNoNode &&
+          t.cspace->locate(p).kind != Location::Kind::blocked)
         boost::add_edge(at_layer[t.from], at_layer[t.to], Motion{turn_cost(t.turn_degrees)}, graph);
     if (end.on_layer != kOffLayer) return at_layer[end.on_layer];
     const NodeId pose = query_vertex(kOffLayer, p);
@@ -381,9 +382,11 @@ struct RotationPlanner::Impl {
                                           to_double(last.position.y) - to_double(pose.position.y));
         } else {  // a turn on the spot, certified by its turn layer
           check_run();
-          if (!(last.position == pose.position)) throw std::logic_error("rotation planner: a motion that turns and translates");
+          if (!(last.position == pose.position))
+            throw std::logic_error("rotation planner: a motion that turns and translates");
           if (turn_cspace(previous, n, q).locate(pose.position).kind == Location::Kind::blocked)
-            throw std::logic_error("rotation planner: a turn at " + to_string(pose.position) + " is not free in its turn layer");
+            throw std::logic_error("rotation planner: a turn at " + to_string(pose.position) +
+                                   " is not free in its turn layer");
           walked.turned += std::abs(turn_degrees(last.rotation, pose.rotation));
           ++walked.turns_used;
         }
@@ -403,7 +406,8 @@ struct RotationPlanner::Impl {
 
   std::string no_motion() const {
     const OrientationSet& set = layers.orientations();
-    if (set.size() == 1) return "no motion joins start and goal at the one orientation " + angle_text(set.degrees(0)) + " (no turns)";
+    if (set.size() == 1)
+      return "no motion joins start and goal at the one orientation " + angle_text(set.degrees(0)) + " (no turns)";
     return "no certified motion joins start and goal over " + std::to_string(set.size()) + " orientations " +
            angle_text(set.step()) + " apart (a turn is allowed only where its whole sweep is free)";
   }
@@ -458,7 +462,8 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
     QueryNodes q;
     if (auto why = g.resolve(query.start, query.start_theta, "start", q.start))
       return report.fail(PlanStatus::invalid_query, *why);
-    if (auto why = g.resolve(query.goal, query.goal_theta, "goal", q.goal)) return report.fail(PlanStatus::invalid_query, *why);
+    if (auto why = g.resolve(query.goal, query.goal_theta, "goal", q.goal))
+      return report.fail(PlanStatus::invalid_query, *why);
     std::vector<NodeId> start_at, goal_at;
     q.from = g.enter(q.start, start_at);
     q.to = g.enter(q.goal, goal_at);
@@ -471,7 +476,8 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
       report.path = unwrapped(walked.poses, query.start_theta.value_or(0));
       report.succeed();
       report.length = walked.translated + g.turn_cost(walked.turned);
-      report.certificate = {true, "exact path check in each layer; turns by their turn layers' exact C-spaces (swept-area enclosure)"};
+      report.certificate = {
+          true, "exact path check in each layer; turns by their turn layers' exact C-spaces (swept-area enclosure)"};
     } else {
       report.fail(PlanStatus::not_found, g.no_motion());
     }
@@ -482,60 +488,67 @@ PlanReport<Pose> RotationPlanner::plan(const Query& query, const QueryOptions&) 
 
 PlannerEntry<RotatingRobot> rotation_planner_entry() {
   OptionTable<RotationOptions> table;
-  table.add("rotation-step", "degrees between neighbouring orientations (layers)", std::string("number > 0"),
-            [](const RotationOptions& o) { return detail::show_number(o.orientations.step); },
-            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
-              const auto step = detail::parse_real_number(text);
-              if (!step || *step <= 0) return "expected a number of degrees > 0";
-              o.orientations.step = *step;
-              return std::nullopt;
-            },
-            above(0));
-  table.add("rotation-count", "number of orientations (0: one every rotation-step)", std::string("whole number >= 0"),
-            [](const RotationOptions& o) { return std::to_string(o.orientations.count); },
-            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
-              const auto count = detail::parse_whole_number(text);
-              if (!count || *count < 0) return "expected a whole number >= 0";
-              o.orientations.count = static_cast<std::size_t>(*count);
-              return std::nullopt;
-            },
-            at_least(0));
-  table.add("rotation-from", "first orientation, degrees", std::string("number"),
-            [](const RotationOptions& o) { return detail::show_number(o.orientations.from); },
-            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
-              const auto degrees = detail::parse_real_number(text);
-              if (!degrees) return "expected a number of degrees";
-              o.orientations.from = *degrees;
-              return std::nullopt;
-            },
-            OptionRange{});
-  table.add("rotation-to", "last orientation, degrees (default and from + 360: the whole circle)", std::string("number"),
-            [](const RotationOptions& o) {
-              return o.orientations.to ? detail::show_number(*o.orientations.to) : std::string("from+360");
-            },
-            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
-              const auto degrees = detail::parse_real_number(text);
-              if (!degrees) return "expected a number of degrees";
-              o.orientations.to = *degrees;
-              return std::nullopt;
-            },
-            OptionRange{});
-  table.add("rotation-weight", "cost of turning per radian (default: the robot's radius)", std::string("number >= 0 or radius"),
-            [](const RotationOptions& o) { return o.weight < 0 ? std::string("radius") : detail::show_number(o.weight); },
-            [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
-              if (text == "radius") {
-                o.weight = -1;
-                return std::nullopt;
-              }
-              const auto weight = detail::parse_real_number(text);
-              if (!weight || *weight < 0) return "expected a number >= 0 or radius";
-              o.weight = *weight;
-              return std::nullopt;
-            },
-            at_least(0));
+  table.add(
+      "rotation-step", "degrees between neighbouring orientations (layers)", std::string("number > 0"),
+      [](const RotationOptions& o) { return detail::show_number(o.orientations.step); },
+      [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+        const auto step = detail::parse_real_number(text);
+        if (!step || *step <= 0) return "expected a number of degrees > 0";
+        o.orientations.step = *step;
+        return std::nullopt;
+      },
+      above(0));
+  table.add(
+      "rotation-count", "number of orientations (0: one every rotation-step)", std::string("whole number >= 0"),
+      [](const RotationOptions& o) { return std::to_string(o.orientations.count); },
+      [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+        const auto count = detail::parse_whole_number(text);
+        if (!count || *count < 0) return "expected a whole number >= 0";
+        o.orientations.count = static_cast<std::size_t>(*count);
+        return std::nullopt;
+      },
+      at_least(0));
+  table.add(
+      "rotation-from", "first orientation, degrees", std::string("number"),
+      [](const RotationOptions& o) { return detail::show_number(o.orientations.from); },
+      [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+        const auto degrees = detail::parse_real_number(text);
+        if (!degrees) return "expected a number of degrees";
+        o.orientations.from = *degrees;
+        return std::nullopt;
+      },
+      OptionRange{});
+  table.add(
+      "rotation-to", "last orientation, degrees (default and from + 360: the whole circle)", std::string("number"),
+      [](const RotationOptions& o) {
+        return o.orientations.to ? detail::show_number(*o.orientations.to) : std::string("from+360");
+      },
+      [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+        const auto degrees = detail::parse_real_number(text);
+        if (!degrees) return "expected a number of degrees";
+        o.orientations.to = *degrees;
+        return std::nullopt;
+      },
+      OptionRange{});
+  table.add(
+      "rotation-weight", "cost of turning per radian (default: the robot's radius)",
+      std::string("number >= 0 or radius"),
+      [](const RotationOptions& o) { return o.weight < 0 ? std::string("radius") : detail::show_number(o.weight); },
+      [](RotationOptions& o, std::string_view text) -> std::optional<std::string> {
+        if (text == "radius") {
+          o.weight = -1;
+          return std::nullopt;
+        }
+        const auto weight = detail::parse_real_number(text);
+        if (!weight || *weight < 0) return "expected a number >= 0 or radius";
+        o.weight = *weight;
+        return std::nullopt;
+      },
+      at_least(0));
   add_search_options(table, &RotationOptions::search);
   return make_planner_entry<RotatingRobot, RotationOptions>(
-      "rotation", "translations and certified turns over exact rotation layers (discretized rotation)", std::move(table),
+      "rotation", "translations and certified turns over exact rotation layers (discretized rotation)",
+      std::move(table),
       [](const World& world, const RotationOptions& o) { return std::make_unique<RotationPlanner>(world, o); });
 }
 

@@ -48,7 +48,8 @@ class RotationPlanner final : public Planner<RotatingRobot> {
   // turn_layers.used, roadmap.kind ("rotation-layers"), roadmap.vertices, roadmap.edges,
   // roadmap.seconds, search.*, query_seconds. The path's poses carry each layer's exact rotation
   // and its nominal angle, unwrapped along the path: the first is the start's theta as the query
-  // gives it, and consecutive angles differ by the turn between them, the short way. Not thread-safe: queries reuse the query slots.
+  // gives it, and consecutive angles differ by the turn between them, the short way. Not thread-safe: queries reuse the
+  // query slots.
   PlanReport<Pose> plan(const Query& query, const QueryOptions& options = {}) override;
 
  private:

@@ -1,7 +1,7 @@
 #include <polyplan/sampling/lazy_prm_planner.hpp>
 
-#include <polyplan/sampling/detail/sampled_roadmap.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/sampling/detail/sampled_roadmap.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
 
 #include <algorithm>
@@ -36,7 +36,8 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
       const auto [e, exists] = boost::edge(path[i], path[i + 1], graph);
       if (graph[e].certified) continue;
       const auto& nodes = roadmap_.nodes();
-      if (!this->motion_free(nodes, path[i], path[i + 1]) || (!this->space().symmetric() && !this->motion_free(nodes, path[i + 1], path[i]))) {
+      if (!this->motion_free(nodes, path[i], path[i + 1]) ||
+          (!this->space().symmetric() && !this->motion_free(nodes, path[i + 1], path[i]))) {
         boost::remove_edge(e, graph);
         ++removed;
         return false;
@@ -101,8 +102,9 @@ PlannerEntry<Space> lazy_prm_planner_entry(SamplingSpaceFactory<Space> make_spac
   table.add("k", &LazyPrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)", at_least(0));
   add_sampling_options(table);
   return make_sampling_entry<Space, LazyPrmOptions>(
-      "lazyprm", "lazy PRM: edges certified only when the shortest path wants them, kept across queries", std::move(table),
-      std::move(make_space), [](std::unique_ptr<SamplingSpace<Space>> space, const LazyPrmOptions& options) {
+      "lazyprm", "lazy PRM: edges certified only when the shortest path wants them, kept across queries",
+      std::move(table), std::move(make_space),
+      [](std::unique_ptr<SamplingSpace<Space>> space, const LazyPrmOptions& options) {
         return std::make_unique<LazyPrmPlanner<Space>>(std::move(space), options);
       });
 }

@@ -4,8 +4,8 @@
 // path (to each of its goals, when it has several, keeping the cheapest) and certifies only that
 // path's unchecked edges, from the start on. An edge that is not
 // free is removed and the search runs again; when no path is left, the roadmap grows by half its
-// size (at least 10 samples: an easy query needs a dozen milestones). Certified edges are remembered from query to query. Registered as
-// `lazyprm` for polygon worlds and arms.
+// size (at least 10 samples: an easy query needs a dozen milestones). Certified edges are remembered from query to
+// query. Registered as `lazyprm` for polygon worlds and arms.
 #include <polyplan/sampling/sampling_planner.hpp>
 
 namespace polyplan {

@@ -178,8 +178,7 @@ void build_tree(SamplingMetric metric, const Points& points, std::optional<AnyTr
   const int dimension = static_cast<int>(points.dimension);
   if (metric == SamplingMetric::torus)
     tree.emplace(std::in_place_type<Tree<metric_torus>>, dimension, points, params, maximum_hint);
-  else
-    tree.emplace(std::in_place_type<Tree<nanoflann::metric_L2_Simple>>, dimension, points, params, maximum_hint);
+  else tree.emplace(std::in_place_type<Tree<nanoflann::metric_L2_Simple>>, dimension, points, params, maximum_hint);
 }
 
 }  // namespace
@@ -187,15 +186,14 @@ void build_tree(SamplingMetric metric, const Points& points, std::optional<AnyTr
 struct NearestNeighbours::Impl {
   SamplingMetric metric;
   Points points;
-  double slack;  // widened()'s absolute part
+  double slack;           // widened()'s absolute part
   std::size_t tree_from;  // scan_threshold(dimension)
   // Empty until size() reaches tree_from. Reads `points`; Impl stays where it was made (moves move
   // the pointer).
   std::optional<AnyTree> tree;
 
   Impl(std::size_t dimension, SamplingMetric metric)
-      : metric(metric),
-        points{dimension, {}},
+      : metric(metric), points{dimension, {}},
         slack(metric == SamplingMetric::torus ? 1e-9 * static_cast<double>(dimension)
                                               : std::numeric_limits<double>::min()),
         tree_from(scan_threshold(dimension)) {}

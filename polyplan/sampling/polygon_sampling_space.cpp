@@ -64,7 +64,8 @@ const PolygonFreeRegion* polygon_region(const FreeRegion* region) {
 class PolygonSamplingSpace final : public SamplingSpace<TranslatingRobot> {
  public:
   explicit PolygonSamplingSpace(const CSpace& cspace)
-      : cspace_(&cspace), box_(sampling_box(cspace)), triangulation_(detail::CSpaceAccess::impl(cspace), corners(box_)) {}
+      : cspace_(&cspace), box_(sampling_box(cspace)),
+        triangulation_(detail::CSpaceAccess::impl(cspace), corners(box_)) {}
 
   std::size_t dimension() const override { return 2; }
   SamplingMetric metric() const override { return SamplingMetric::euclidean; }
@@ -85,7 +86,9 @@ class PolygonSamplingSpace final : public SamplingSpace<TranslatingRobot> {
     if (!triangulation_.in_frame(p)) return cspace_->locate(p).kind != Location::Kind::blocked;
     return !triangulation_.components_at(detail::to_point(p)).empty();
   }
-  bool motion_is_free(const ExactPoint& a, const ExactPoint& b) override { return motion_is_free_between(a, b, nullptr, nullptr); }
+  bool motion_is_free(const ExactPoint& a, const ExactPoint& b) override {
+    return motion_is_free_between(a, b, nullptr, nullptr);
+  }
   bool keeps_free_regions() const override { return true; }
   std::shared_ptr<const FreeRegion> free_region(const ExactPoint& p) override {
     auto region = std::make_shared<PolygonFreeRegion>();
@@ -109,7 +112,9 @@ class PolygonSamplingSpace final : public SamplingSpace<TranslatingRobot> {
   }
   ExactPoint start(const Query& query) const override { return query.start; }
   ExactPoint goal(const Query& query) const override { return query.goal; }
-  std::string certificate_method() const override { return "exact segment test (triangulation walk), the whole path checked exactly"; }
+  std::string certificate_method() const override {
+    return "exact segment test (triangulation walk), the whole path checked exactly";
+  }
   std::optional<std::string> why_path_invalid(const std::vector<ExactPoint>& path) override {
     const PathCheck check = check_path(*cspace_, path);
     return check.valid ? std::nullopt : std::optional<std::string>(check.reason);

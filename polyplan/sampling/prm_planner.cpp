@@ -1,7 +1,7 @@
 #include <polyplan/sampling/prm_planner.hpp>
 
-#include <polyplan/sampling/detail/sampled_roadmap.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/sampling/detail/sampled_roadmap.hpp>
 
 #include <numeric>
 
@@ -74,7 +74,8 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     const auto result = roadmap_.cheapest(start, joined, [&](std::size_t from, std::size_t to) {
       return options_.bidirectional ? roadmap_.search_both_ways(from, to) : roadmap_.search(from, to, options_.search);
     });
-    facts.set(SearchFacts::algorithm, options_.bidirectional ? std::string("bidirectional dijkstra") : std::string(to_string(options_.search.algorithm)));
+    facts.set(SearchFacts::algorithm, options_.bidirectional ? std::string("bidirectional dijkstra")
+                                                             : std::string(to_string(options_.search.algorithm)));
     facts.set(SearchFacts::expanded, result.expanded);
     for (std::size_t v : result.path) attempt.path.push_back(roadmap_.nodes()[v]);
     this->found(budget, this->length(attempt.path));
@@ -96,8 +97,8 @@ PlannerEntry<Space> prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
   table.add("bidirectional", &PrmOptions::bidirectional, "search the roadmap with bidirectional Dijkstra instead");
   add_sampling_options(table);
   return make_sampling_entry<Space, PrmOptions>(
-      "prm", "probabilistic roadmap (k nearest), kept across queries, certified motions", std::move(table), std::move(make_space),
-      [](std::unique_ptr<SamplingSpace<Space>> space, const PrmOptions& options) {
+      "prm", "probabilistic roadmap (k nearest), kept across queries, certified motions", std::move(table),
+      std::move(make_space), [](std::unique_ptr<SamplingSpace<Space>> space, const PrmOptions& options) {
         return std::make_unique<PrmPlanner<Space>>(std::move(space), options);
       });
 }

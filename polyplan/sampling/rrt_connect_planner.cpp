@@ -24,8 +24,8 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
   enum class Grown { trapped, advanced, reached };
 
   // One step of `tree` toward `target` (its coordinates `to`) from the nearest node.
-  Grown extend(SamplingTree<Space>& tree, const Configuration& target, std::span<const double> to, std::vector<double>& at,
-               std::size_t& added) {
+  Grown extend(SamplingTree<Space>& tree, const Configuration& target, std::span<const double> to,
+               std::vector<double>& at, std::size_t& added) {
     auto step = this->step_toward(tree, target, to, step_, at);
     if (step.stays) {
       added = step.from;
@@ -49,7 +49,8 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
 
     Attempt attempt;
     std::optional<std::pair<std::size_t, std::size_t>> meeting;  // (start tree node, goal tree node)
-    if (const auto start_goal = this->goal_index(goals, space.start(query))) meeting.emplace(SamplingTree<Space>::root, *start_goal);
+    if (const auto start_goal = this->goal_index(goals, space.start(query)))
+      meeting.emplace(SamplingTree<Space>::root, *start_goal);
     while (!meeting && budget.next()) {
       const Configuration sample = this->draw(sample_at);
       std::size_t added = 0;
@@ -58,7 +59,8 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
         const Configuration& target = (*grow).nodes()[added];
         std::size_t reached_by = 0;
         Grown connect = Grown::advanced;
-        while (connect == Grown::advanced && !budget.spent()) connect = extend(*other, target, new_at, step_at, reached_by);
+        while (connect == Grown::advanced && !budget.spent())
+          connect = extend(*other, target, new_at, step_at, reached_by);
         if (connect == Grown::reached)
           meeting = grow == &from_start ? std::pair{added, reached_by} : std::pair{reached_by, added};
       }
@@ -89,7 +91,8 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
 template <class Space>
 PlannerEntry<Space> rrt_connect_planner_entry(SamplingSpaceFactory<Space> make_space) {
   OptionTable<RrtConnectOptions> table;
-  table.add("step", &RrtConnectOptions::step, "the farthest one extension goes (0: a fifth of the space's extent)", at_least(0));
+  table.add("step", &RrtConnectOptions::step, "the farthest one extension goes (0: a fifth of the space's extent)",
+            at_least(0));
   add_sampling_options(table);
   return make_sampling_entry<Space, RrtConnectOptions>(
       "rrtconnect", "two trees, from start and goal, that extend and connect, certified motions", std::move(table),

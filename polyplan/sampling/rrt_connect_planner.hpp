@@ -1,9 +1,9 @@
 #pragma once
 // RRT-Connect (Kuffner & LaValle 2000) over any sampling space: a tree from the start and one from
-// the goal (with several goals, a forest rooted at each: the path ends at the goal whose tree it meets). Each iteration extends one tree a step toward a sample, then the other tree steps
-// toward the new node again and again (each step a certified motion) until it reaches it exactly
-// or is stopped; the trees swap roles every iteration. Registered as `rrtconnect` for polygon
-// worlds and arms.
+// the goal (with several goals, a forest rooted at each: the path ends at the goal whose tree it meets). Each iteration
+// extends one tree a step toward a sample, then the other tree steps toward the new node again and again (each step a
+// certified motion) until it reaches it exactly or is stopped; the trees swap roles every iteration. Registered as
+// `rrtconnect` for polygon worlds and arms.
 #include <polyplan/sampling/rrt_planner.hpp>
 
 namespace polyplan {

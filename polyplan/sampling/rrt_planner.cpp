@@ -7,7 +7,8 @@
 namespace polyplan {
 
 double extension_step(const RrtOptions& options, double extent) {
-  if (!(options.goal_bias >= 0 && options.goal_bias <= 1)) throw std::invalid_argument("goal-bias must be a probability in [0, 1]");
+  if (!(options.goal_bias >= 0 && options.goal_bias <= 1))
+    throw std::invalid_argument("goal-bias must be a probability in [0, 1]");
   if (!(options.step >= 0)) throw std::invalid_argument("step must be 0 (the default) or a positive distance");
   if (options.extend == Extension::to_sample) return 0;
   return options.step > 0 ? options.step : extent / 5;
@@ -24,7 +25,8 @@ class RrtPlanner final : public SamplingPlanner<Space> {
 
  public:
   RrtPlanner(std::unique_ptr<SamplingSpace<Space>> space, const RrtOptions& options)
-      : Base("rrt", std::move(space), options), options_(options), step_(extension_step(options, this->space().extent())) {}
+      : Base("rrt", std::move(space), options), options_(options),
+        step_(extension_step(options, this->space().extent())) {}
 
  private:
   Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,

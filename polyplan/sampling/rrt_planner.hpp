@@ -16,8 +16,8 @@ enum class Extension {
 };
 
 struct RrtOptions : SamplingLimits {
-  double goal_bias = 0.05;              // probability of drawing the goal as the sample
-  double step = 0;                      // E2's step η; 0: a fifth of the space's extent (OMPL's range)
+  double goal_bias = 0.05;  // probability of drawing the goal as the sample
+  double step = 0;          // E2's step η; 0: a fifth of the space's extent (OMPL's range)
   Extension extend = Extension::by_step;
 };
 
@@ -31,10 +31,13 @@ PlannerEntry<Space> rrt_planner_entry(SamplingSpaceFactory<Space> make_space);
 template <class Options>
 OptionTable<Options>& add_tree_options(OptionTable<Options>& table) {
   static_assert(std::is_base_of_v<RrtOptions, Options>);
-  return table.add("goal-bias", static_cast<double Options::*>(&RrtOptions::goal_bias), "probability of sampling the goal", in_range(0, 1))
+  return table
+      .add("goal-bias", static_cast<double Options::*>(&RrtOptions::goal_bias), "probability of sampling the goal",
+           in_range(0, 1))
       .add("step", static_cast<double Options::*>(&RrtOptions::step),
            "E2's step: the farthest one extension goes (0: a fifth of the space's extent)", at_least(0))
-      .add("extend", static_cast<Extension Options::*>(&RrtOptions::extend), "E1: to the sample; E2: one step toward it",
+      .add("extend", static_cast<Extension Options::*>(&RrtOptions::extend),
+           "E1: to the sample; E2: one step toward it",
            std::vector<std::pair<std::string, Extension>>{{"e1", Extension::to_sample}, {"e2", Extension::by_step}});
 }
 

@@ -9,7 +9,8 @@
 namespace polyplan {
 namespace {
 
-// The measure of the metric's unit ball in d dimensions: π^(d/2) / Γ(d/2 + 1) (Euclidean), 2^d / d! (the torus's sum of turns).
+// The measure of the metric's unit ball in d dimensions: π^(d/2) / Γ(d/2 + 1) (Euclidean), 2^d / d! (the torus's sum of
+// turns).
 double unit_ball(SamplingMetric metric, std::size_t d) {
   const double n = static_cast<double>(d);
   if (metric == SamplingMetric::euclidean) return std::pow(std::numbers::pi, n / 2) / std::tgamma(n / 2 + 1);
@@ -25,10 +26,13 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
 
  public:
   RrtStarPlanner(std::unique_ptr<SamplingSpace<Space>> space, const RrtStarOptions& options)
-      : Base("rrtstar", std::move(space), options), options_(options), step_(extension_step(options, this->space().extent())) {
+      : Base("rrtstar", std::move(space), options), options_(options),
+        step_(extension_step(options, this->space().extent())) {
     const double d = static_cast<double>(this->space().dimension());
     k_factor_ = std::numbers::e * (1 + 1 / d);
-    gamma_ = 2 * std::pow((1 + 1 / d) * this->space().volume() / unit_ball(this->space().metric(), this->space().dimension()), 1 / d);
+    gamma_ = 2 * std::pow((1 + 1 / d) * this->space().volume() /
+                              unit_ball(this->space().metric(), this->space().dimension()),
+                          1 / d);
   }
 
  private:
@@ -45,8 +49,10 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
       const std::size_t k = options_.k ? options_.k : static_cast<std::size_t>(std::ceil(k_factor_ * std::log(n + 1)));
       tree.nodes().nearest(at, k, out);
       if (step_ > 0)
-        out.erase(std::remove_if(out.begin(), out.end(), [&](std::size_t id) { return this->distance(tree.nodes().coordinates(id), at) > step_; }),
-                  out.end());
+        out.erase(
+            std::remove_if(out.begin(), out.end(),
+                           [&](std::size_t id) { return this->distance(tree.nodes().coordinates(id), at) > step_; }),
+            out.end());
       return;
     }
     double r = gamma_ * std::pow(std::log(n + 1) / (n + 1), 1 / static_cast<double>(this->space().dimension()));
@@ -55,7 +61,8 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
   }
 
   // A new parent for `child` (its cost falls by `saving`): the subtree's costs fall with it.
-  void reparent(SamplingTree<Space>& tree, std::vector<Node>& nodes, std::size_t child, std::size_t parent, double cost) {
+  void reparent(SamplingTree<Space>& tree, std::vector<Node>& nodes, std::size_t child, std::size_t parent,
+                double cost) {
     auto& siblings = nodes[tree.parent(child)].children;
     siblings.erase(std::find(siblings.begin(), siblings.end(), child));
     tree.set_parent(child, parent);
@@ -72,8 +79,8 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
 
   // Whether the motion from the new node `id` to its neighbour `n` is free: the reversed verdict on
   // n → id when the choice of parent decided it and the space is symmetric, otherwise certified.
-  bool rewire_free(const SamplingTree<Space>& tree, const std::vector<std::pair<std::size_t, bool>>& verdicts, std::size_t id,
-                   std::size_t n) {
+  bool rewire_free(const SamplingTree<Space>& tree, const std::vector<std::pair<std::size_t, bool>>& verdicts,
+                   std::size_t id, std::size_t n) {
     if (this->space().symmetric())
       for (const auto& [decided, free] : verdicts)
         if (decided == n) return free;
@@ -98,7 +105,8 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     SamplingTree<Space> tree(space, space.start(query));
     std::vector<Node> nodes(1);
     std::vector<std::optional<std::size_t>> goal_nodes(goals.size());  // goal i's node, once the tree reaches it
-    if (const auto start_goal = this->goal_index(goals, space.start(query))) goal_nodes[*start_goal] = SamplingTree<Space>::root;
+    if (const auto start_goal = this->goal_index(goals, space.start(query)))
+      goal_nodes[*start_goal] = SamplingTree<Space>::root;
     double best = cheapest_goal_node(goal_nodes, nodes) ? 0 : std::numeric_limits<double>::infinity();
     std::size_t solutions = 0, rewired = 0;
     std::vector<std::size_t> near;
@@ -119,7 +127,8 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         neighbours_of(tree, goal_at, near);
         by_cost.clear();
         for (std::size_t n : near)
-          if (n != goal_node) by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), goal_at), n);
+          if (n != goal_node)
+            by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), goal_at), n);
         std::sort(by_cost.begin(), by_cost.end());
         for (const auto& [cost, n] : by_cost) {
           if (cost >= nodes[goal_node].cost) break;
@@ -135,7 +144,8 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         // The cheapest certified parent among the neighbours (the nearest one is certified already).
         neighbours_of(tree, new_at, near);
         by_cost.clear();
-        for (std::size_t n : near) by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), new_at), n);
+        for (std::size_t n : near)
+          by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), new_at), n);
         std::sort(by_cost.begin(), by_cost.end());
         std::size_t parent = nearest;
         double cost = nodes[nearest].cost + this->distance(tree.nodes().coordinates(nearest), new_at);
@@ -198,14 +208,19 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
 template <class Space>
 PlannerEntry<Space> rrt_star_planner_entry(SamplingSpaceFactory<Space> make_space) {
   OptionTable<RrtStarOptions> table;
-  table.add("rewire", &RrtStarOptions::rewire, "the neighbours a new node may take as parent and rewire: k nearest or within a radius",
+  table.add("rewire", &RrtStarOptions::rewire,
+            "the neighbours a new node may take as parent and rewire: k nearest or within a radius",
             std::vector<std::pair<std::string, Rewiring>>{{"k", Rewiring::k_nearest}, {"radius", Rewiring::radius}});
-  table.add("k", &RrtStarOptions::k, "rewire=k: the nearest neighbours a new node considers (0: ceil(e (1 + 1/d) log n), growing with the tree)", at_least(0));
+  table.add("k", &RrtStarOptions::k,
+            "rewire=k: the nearest neighbours a new node considers (0: ceil(e (1 + 1/d) log n), growing with the tree)",
+            at_least(0));
   add_tree_options(table);
   add_sampling_options(table);
   PlannerEntry<Space> entry = make_sampling_entry<Space, RrtStarOptions>(
-      "rrtstar", "RRT* (asymptotically optimal, anytime: improves until its time or iteration limit), certified motions",
-      std::move(table), std::move(make_space), [](std::unique_ptr<SamplingSpace<Space>> space, const RrtStarOptions& options) {
+      "rrtstar",
+      "RRT* (asymptotically optimal, anytime: improves until its time or iteration limit), certified motions",
+      std::move(table), std::move(make_space),
+      [](std::unique_ptr<SamplingSpace<Space>> space, const RrtStarOptions& options) {
         return std::make_unique<RrtStarPlanner<Space>>(std::move(space), options);
       });
   entry.anytime = true;

@@ -27,8 +27,8 @@ struct RrtStarOptions : RrtOptions {
 };
 
 // The registry's `rrtstar` for a space: options rewire (k|radius), k, goal-bias, step, extend and the
-// sampling limits (by default it stops at 5 s; the iteration limit is 10^9). Facts: tree_size, solutions (how often the path
-// improved), rewired (motions that replaced a parent).
+// sampling limits (by default it stops at 5 s; the iteration limit is 10^9). Facts: tree_size, solutions (how often the
+// path improved), rewired (motions that replaced a parent).
 template <class Space>
 PlannerEntry<Space> rrt_star_planner_entry(SamplingSpaceFactory<Space> make_space);
 

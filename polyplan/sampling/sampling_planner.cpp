@@ -1,7 +1,7 @@
 #include <polyplan/sampling/sampling_planner.hpp>
 
-#include <polyplan/plan/planner_options.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/planner_options.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
 
 #include <algorithm>
@@ -17,9 +17,11 @@ std::string SamplingBudget::limit_reached() const {
 }
 
 template <class Space>
-SamplingPlanner<Space>::SamplingPlanner(std::string name, std::unique_ptr<SamplingSpace<Space>> space, SamplingLimits limits)
+SamplingPlanner<Space>::SamplingPlanner(std::string name, std::unique_ptr<SamplingSpace<Space>> space,
+                                        SamplingLimits limits)
     : name_(std::move(name)), space_(std::move(space)), limits_(limits), random_(limits.seed) {
-  if (!(limits_.time > 0) || !std::isfinite(limits_.time)) throw std::invalid_argument("time must be a number of seconds above 0");
+  if (!(limits_.time > 0) || !std::isfinite(limits_.time))
+    throw std::invalid_argument("time must be a number of seconds above 0");
   if (limits_.iterations == 0) throw std::invalid_argument("iterations must be at least 1");
 }
 
@@ -31,15 +33,17 @@ auto SamplingPlanner<Space>::draw(std::span<double> coordinates) -> Configuratio
 }
 
 template <class Space>
-std::vector<std::vector<double>> SamplingPlanner<Space>::coordinates_of(const std::vector<Configuration>& configurations) const {
+std::vector<std::vector<double>> SamplingPlanner<Space>::coordinates_of(
+    const std::vector<Configuration>& configurations) const {
   std::vector<std::vector<double>> out(configurations.size(), std::vector<double>(space_->dimension()));
   for (std::size_t i = 0; i < configurations.size(); ++i) space_->coordinates(configurations[i], out[i]);
   return out;
 }
 
 template <class Space>
-auto SamplingPlanner<Space>::goal_biased(const std::vector<Configuration>& goals, const std::vector<std::vector<double>>& goals_at,
-                                         double goal_bias, std::span<double> drawn_at) -> Sample {
+auto SamplingPlanner<Space>::goal_biased(const std::vector<Configuration>& goals,
+                                         const std::vector<std::vector<double>>& goals_at, double goal_bias,
+                                         std::span<double> drawn_at) -> Sample {
   if (uniform01(random_) < goal_bias) {
     // A single goal draws no number to be chosen, so that its random stream (and every seed's
     // path) is what it was before goal sets. The remainder's bias, below 2^-60, does not matter.
@@ -127,8 +131,9 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   // limit cut that query, and the same input would not give the same answer; and without the name,
   // planners given one seed draw the same first samples and fail together (rrt and rrtstar did on
   // six_link_forest's seeds 3 and 4). std::seed_seq is specified bit for bit: one stream everywhere.
-  std::vector<std::uint32_t> words{static_cast<std::uint32_t>(limits_.seed), static_cast<std::uint32_t>(limits_.seed >> 32),
-                                   static_cast<std::uint32_t>(queries_asked_), static_cast<std::uint32_t>(queries_asked_ >> 32)};
+  std::vector<std::uint32_t> words{
+      static_cast<std::uint32_t>(limits_.seed), static_cast<std::uint32_t>(limits_.seed >> 32),
+      static_cast<std::uint32_t>(queries_asked_), static_cast<std::uint32_t>(queries_asked_ >> 32)};
   for (const char c : name_) words.push_back(static_cast<unsigned char>(c));
   std::seed_seq stream(words.begin(), words.end());
   random_.seed(stream);
@@ -176,7 +181,8 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
     throw std::logic_error("a sampling planner's path does not run from the query's start to one of its goals");
   if (attempt.path.size() == 1) attempt.path.push_back(goals[*reached]);  // the start is a goal: one motion of length 0
   if (goals.size() > 1) facts.set(GoalFacts::reached, *reached);
-  facts.set(SamplingFacts::first_solution_seconds, improvements_.empty() ? budget.seconds() : improvements_.front().seconds);
+  facts.set(SamplingFacts::first_solution_seconds,
+            improvements_.empty() ? budget.seconds() : improvements_.front().seconds);
   facts.set(SamplingFacts::raw_length, length(attempt.path));
   std::vector<Configuration> path = limits_.shortcut ? shortcut(std::move(attempt.path)) : std::move(attempt.path);
 

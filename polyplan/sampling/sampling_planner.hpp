@@ -30,8 +30,8 @@
 #include <initializer_list>
 #include <memory>
 #include <optional>
-#include <stdexcept>
 #include <span>
+#include <stdexcept>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -52,7 +52,9 @@ struct SamplingLimits {
 template <class Options>
 OptionTable<Options>& add_sampling_options(OptionTable<Options>& table) {
   static_assert(std::is_base_of_v<SamplingLimits, Options>);
-  return table.add("seed", static_cast<std::uint64_t Options::*>(&SamplingLimits::seed), "the random numbers' seed: one seed, one path")
+  return table
+      .add("seed", static_cast<std::uint64_t Options::*>(&SamplingLimits::seed),
+           "the random numbers' seed: one seed, one path")
       .add("time", static_cast<double Options::*>(&SamplingLimits::time), "time limit per query, seconds", above(0))
       .add("iterations", static_cast<std::size_t Options::*>(&SamplingLimits::iterations),
            "iteration limit per query: samples (prm, lazyprm) or extensions (trees)", at_least(1))
@@ -79,15 +81,19 @@ class SampledConfigurations {
       : space_(&space), dimension_(space.dimension()), index_(space.index_dimension(), space.metric()) {}
 
   // `region`: what its clearance proves, when measured already (otherwise measured when first asked).
-  std::size_t add(Configuration configuration, std::span<const double> coordinates, std::shared_ptr<const FreeRegion> region = nullptr) {
+  std::size_t add(Configuration configuration, std::span<const double> coordinates,
+                  std::shared_ptr<const FreeRegion> region = nullptr) {
     configurations_.push_back(std::move(configuration));
     regions_.push_back(std::move(region));
-    coordinates_.insert(coordinates_.end(), coordinates.begin(), coordinates.begin() + static_cast<std::ptrdiff_t>(dimension_));
+    coordinates_.insert(coordinates_.end(), coordinates.begin(),
+                        coordinates.begin() + static_cast<std::ptrdiff_t>(dimension_));
     return index_.add(coordinates.first(index_.dimension()));
   }
   std::size_t size() const { return configurations_.size(); }
   const Configuration& operator[](std::size_t id) const { return configurations_[id]; }
-  std::span<const double> coordinates(std::size_t id) const { return std::span(coordinates_).subspan(id * dimension_, dimension_); }
+  std::span<const double> coordinates(std::size_t id) const {
+    return std::span(coordinates_).subspan(id * dimension_, dimension_);
+  }
   const std::vector<Configuration>& all() const { return configurations_; }
   // Configuration `id`'s free region (SamplingSpace::free_region), kept once measured: the
   // planner's memory of what the node's clearance proves, filled in as motions ask for it.
@@ -100,15 +106,18 @@ class SampledConfigurations {
   // The id of a configuration nearest to `at`. Throws std::logic_error when there is none.
   std::size_t nearest(std::span<const double> at, Toward toward = Toward::asked) const;
   // The min(k, size()) nearest to `at`, nearest first, into `out` (cleared).
-  void nearest(std::span<const double> at, std::size_t k, std::vector<std::size_t>& out, Toward toward = Toward::asked) const;
+  void nearest(std::span<const double> at, std::size_t k, std::vector<std::size_t>& out,
+               Toward toward = Toward::asked) const;
   // Every configuration within `radius` of `at` (distance <= radius), nearest first, into `out`.
-  void within(std::span<const double> at, double radius, std::vector<std::size_t>& out, Toward toward = Toward::asked) const;
+  void within(std::span<const double> at, double radius, std::vector<std::size_t>& out,
+              Toward toward = Toward::asked) const;
 
  private:
   // A distance grown past the rounding that may put a lower bound, computed otherwise, above it.
   static double widened(double d) { return d + 1e-9 * (1 + d); }
   // `ids` ordered by their true distance to `at`, the first `keep` (all by default) kept.
-  void by_distance(std::span<const double> at, std::vector<std::size_t>& ids, Toward toward, std::size_t keep = SIZE_MAX) const;  // SIZE_MAX: <cstdint>
+  void by_distance(std::span<const double> at, std::vector<std::size_t>& ids, Toward toward,
+                   std::size_t keep = SIZE_MAX) const;  // SIZE_MAX: <cstdint>
 
   const SamplingSpace<Space>* space_;
   std::size_t dimension_;
@@ -149,7 +158,8 @@ void SampledConfigurations<Space>::nearest(std::span<const double> at, std::size
     const auto placed_at = coordinates(id);
     if (sampling_distance(space_->metric(), placed_at.first(key.size()), key) > widened(kth)) break;
     if (std::find(out.begin(), out.end(), id) != out.end()) continue;
-    const double bound = toward == Toward::asked ? space_->distance_bound(placed_at, at) : space_->distance_bound(at, placed_at);
+    const double bound =
+        toward == Toward::asked ? space_->distance_bound(placed_at, at) : space_->distance_bound(at, placed_at);
     if (bound > widened(kth)) continue;
     const double d = distance(id, at, toward);
     if (d >= kth) continue;
@@ -177,7 +187,8 @@ void SampledConfigurations<Space>::within(std::span<const double> at, double rad
   ranked_.clear();
   for (std::size_t id : out) {
     const auto placed_at = coordinates(id);
-    const double bound = toward == Toward::asked ? space_->distance_bound(placed_at, at) : space_->distance_bound(at, placed_at);
+    const double bound =
+        toward == Toward::asked ? space_->distance_bound(placed_at, at) : space_->distance_bound(at, placed_at);
     if (bound > widened(radius)) continue;
     if (const double d = distance(id, at, toward); d <= radius) ranked_.emplace_back(d, id);
   }
@@ -198,10 +209,12 @@ class SamplingTree {
   using Configuration = typename Space::Configuration;
   static constexpr std::size_t root = 0;  // the first root
 
-  SamplingTree(const SamplingSpace<Space>& space, const Configuration& root_configuration, Toward growth = Toward::asked)
+  SamplingTree(const SamplingSpace<Space>& space, const Configuration& root_configuration,
+               Toward growth = Toward::asked)
       : SamplingTree(space, std::vector<Configuration>{root_configuration}, growth) {}
   // Roots i = 0, 1, ... at roots[i], in that order.
-  SamplingTree(const SamplingSpace<Space>& space, const std::vector<Configuration>& roots, Toward growth = Toward::asked)
+  SamplingTree(const SamplingSpace<Space>& space, const std::vector<Configuration>& roots,
+               Toward growth = Toward::asked)
       : nodes_(space), growth_(growth) {
     std::vector<double> coordinates(space.dimension());
     for (const Configuration& root_configuration : roots) {
@@ -256,8 +269,7 @@ class SamplingTree {
 // The limits of one query as it runs.
 class SamplingBudget {
  public:
-  explicit SamplingBudget(const SamplingLimits& limits)
-      : seconds_(limits.time), iterations_(limits.iterations) {}
+  explicit SamplingBudget(const SamplingLimits& limits) : seconds_(limits.time), iterations_(limits.iterations) {}
 
   // Counts an iteration; false (and nothing counted) once the iteration or time limit is reached.
   bool next() {
@@ -278,7 +290,9 @@ class SamplingBudget {
   // query stopped by the time limit may differ from run to run; the others never do, nor do the
   // queries after a cut one, which draw their own random streams — but a roadmap that a cut query
   // grew is the roadmap the next query finds).
-  std::string stopped_by() const { return timed_out_ ? "time limit" : out_of_iterations_ ? "iteration limit" : "solution"; }
+  std::string stopped_by() const {
+    return timed_out_ ? "time limit" : out_of_iterations_ ? "iteration limit" : "solution";
+  }
 
  private:
   Stopwatch running_;
@@ -316,8 +330,8 @@ class SamplingPlanner : public Planner<Space> {
   // space's goals(query), never empty; the nearest one the planner can reach). Facts particular to
   // it go in `facts`; a solution is announced with found() as soon as it exists (found() times the
   // first and every better one).
-  virtual Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
-                        bool record) = 0;
+  virtual Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget,
+                        Facts& facts, bool record) = 0;
 
   // For solve(): the counted operations and the space.
   SamplingSpace<Space>& space() { return *space_; }
@@ -332,7 +346,8 @@ class SamplingPlanner : public Planner<Space> {
   }
   double distance(std::span<const double> a, std::span<const double> b) const { return space_->distance(a, b); }
   // Which of `goals` `configuration` is (the first equal to it), if any.
-  static std::optional<std::size_t> goal_index(const std::vector<Configuration>& goals, const Configuration& configuration) {
+  static std::optional<std::size_t> goal_index(const std::vector<Configuration>& goals,
+                                               const Configuration& configuration) {
     const auto found = std::find(goals.begin(), goals.end(), configuration);
     if (found == goals.end()) return std::nullopt;
     return static_cast<std::size_t>(found - goals.begin());
@@ -346,8 +361,8 @@ class SamplingPlanner : public Planner<Space> {
     std::span<const double> at;
     std::optional<std::size_t> goal;  // which goal it is, if it is one
   };
-  Sample goal_biased(const std::vector<Configuration>& goals, const std::vector<std::vector<double>>& goals_at, double goal_bias,
-                     std::span<double> drawn_at);
+  Sample goal_biased(const std::vector<Configuration>& goals, const std::vector<std::vector<double>>& goals_at,
+                     double goal_bias, std::span<double> drawn_at);
   // One extension of `tree` toward `target`: from its nearest node, `target` itself when it is
   // within `step` (or step is 0: all the way), otherwise the configuration `step` along the way
   // (in a tree grown toward its root: `step` before the node on the motion from `target` to it);
@@ -358,8 +373,8 @@ class SamplingPlanner : public Planner<Space> {
     bool reaches_target = false;
     bool stays = false;
   };
-  Step step_toward(const SamplingTree<Space>& tree, const Configuration& target, std::span<const double> target_at, double step,
-                   std::span<double> out) const {
+  Step step_toward(const SamplingTree<Space>& tree, const Configuration& target, std::span<const double> target_at,
+                   double step, std::span<double> out) const {
     const Toward toward = tree.growth();
     const std::size_t from = tree.nodes().nearest(target_at, toward);
     const auto from_at = tree.nodes().coordinates(from);
@@ -392,7 +407,8 @@ class SamplingPlanner : public Planner<Space> {
   }
   // The motion that joins a tree's node `from` and a configuration `to` grown from it: from → to,
   // or to → from in a tree grown toward its root; `to_region` as above. Certified and counted.
-  bool motion_free(const SamplingTree<Space>& tree, std::size_t from, const Configuration& to, std::shared_ptr<const FreeRegion>& to_region) {
+  bool motion_free(const SamplingTree<Space>& tree, std::size_t from, const Configuration& to,
+                   std::shared_ptr<const FreeRegion>& to_region) {
     return motion_free(tree.nodes(), from, to, to_region, tree.growth() == Toward::placed);
   }
   // The length of a path of configurations in the space's metric.

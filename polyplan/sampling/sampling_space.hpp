@@ -98,7 +98,8 @@ class SamplingSpace {
   virtual double distance_bound(std::span<const double> a, std::span<const double> b) const {
     return sampling_distance(metric(), a.first(index_dimension()), b.first(index_dimension()));
   }
-  virtual void interpolate(std::span<const double> a, std::span<const double> b, double t, std::span<double> out) const {
+  virtual void interpolate(std::span<const double> a, std::span<const double> b, double t,
+                           std::span<double> out) const {
     sampling_interpolate(metric(), a, b, t, out);
   }
   // The largest distance between two configurations that sample() can give: default steps are
@@ -126,8 +127,8 @@ class SamplingSpace {
   // uncovered, and decides as motion_is_free does. By default a space keeps none.
   virtual bool keeps_free_regions() const { return false; }
   virtual std::shared_ptr<const FreeRegion> free_region(const Configuration&) { return nullptr; }
-  virtual bool motion_is_free_between(const Configuration& from, const Configuration& to, const FreeRegion* /*from_region*/,
-                                      const FreeRegion* /*to_region*/) {
+  virtual bool motion_is_free_between(const Configuration& from, const Configuration& to,
+                                      const FreeRegion* /*from_region*/, const FreeRegion* /*to_region*/) {
     return motion_is_free(from, to);
   }
   // Why a query cannot be planned (a start or goal that is not free, angles of the wrong count),

@@ -35,7 +35,8 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> bidirection
   constexpr double unreached = std::numeric_limits<double>::infinity();
   const auto began = std::chrono::steady_clock::now();
   const std::size_t n = num_vertices(g);
-  if (start >= n || goal >= n) throw std::out_of_range("bidirectional_dijkstra: start or goal is not a vertex of the graph");
+  if (start >= n || goal >= n)
+    throw std::out_of_range("bidirectional_dijkstra: start or goal is not a vertex of the graph");
 
   SearchResult<Vertex> result;
   result.algorithm = Search::dijkstra;

@@ -12,7 +12,8 @@ namespace {
 constexpr std::uint32_t unreached = std::numeric_limits<std::uint32_t>::max();
 constexpr std::uint32_t outside = 0;
 
-constexpr std::array<std::array<int, 2>, 8> neighbour_offsets{{{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
+constexpr std::array<std::array<int, 2>, 8> neighbour_offsets{
+    {{1, 0}, {1, 1}, {0, 1}, {-1, 1}, {-1, 0}, {-1, -1}, {0, -1}, {1, -1}}};
 
 class Grid {
  public:
@@ -46,7 +47,8 @@ class Grid {
 };
 
 // Ids 1, 2, ... for the 8-connected components of blocked cells, in the order of their lowest cell.
-std::uint32_t label_obstacles(const Grid& grid, const std::vector<std::uint8_t>& blocked, std::vector<std::uint32_t>& obstacle) {
+std::uint32_t label_obstacles(const Grid& grid, const std::vector<std::uint8_t>& blocked,
+                              std::vector<std::uint32_t>& obstacle) {
   std::uint32_t next = outside + 1;
   std::vector<std::size_t> stack;
   for (std::size_t seed = 0; seed < blocked.size(); ++seed) {
@@ -74,7 +76,9 @@ std::int64_t squared_distance(long x, long y, BrushfireOrigin o) {
 }
 
 // Origins of one front along its obstacle: the same or 8-adjacent cells.
-bool adjacent(BrushfireOrigin a, BrushfireOrigin b) { return std::abs(a.column - b.column) <= 1 && std::abs(a.row - b.row) <= 1; }
+bool adjacent(BrushfireOrigin a, BrushfireOrigin b) {
+  return std::abs(a.column - b.column) <= 1 && std::abs(a.row - b.row) <= 1;
+}
 
 // A front: the obstacle it left and the cell of that obstacle it left from.
 struct Front {
@@ -94,7 +98,8 @@ bool beats(const Front& front, const Front& held, long x, long y) {
 }
 
 // Of the free cells c at (x, y) and n at (nx, ny), one front each, whether c is the one on the GVD.
-bool takes_the_pair(long x, long y, std::size_t c, long nx, long ny, std::size_t n, const Front& mine, const Front& theirs) {
+bool takes_the_pair(long x, long y, std::size_t c, long nx, long ny, std::size_t n, const Front& mine,
+                    const Front& theirs) {
   if (theirs.id != mine.id) return theirs.id > mine.id;
   // One obstacle's fronts from two places: the cell nearer the bisector of the two origins,
   // measured by how much farther each cell is from the other's origin than from its own.
@@ -123,8 +128,9 @@ Meeting on_front(const Grid& grid, const std::vector<std::uint8_t>& blocked, con
     const bool in = grid.inside(nx, ny);
     const std::size_t n = in ? grid.index(nx, ny) : 0;
     // A blocked neighbour, and the outside beyond the border, is its own origin.
-    const Front theirs = in ? Front{b.obstacle[n], b.origin[n]}
-                            : Front{outside, BrushfireOrigin{static_cast<std::int32_t>(nx), static_cast<std::int32_t>(ny)}};
+    const Front theirs =
+        in ? Front{b.obstacle[n], b.origin[n]}
+           : Front{outside, BrushfireOrigin{static_cast<std::int32_t>(nx), static_cast<std::int32_t>(ny)}};
     if (theirs.id == mine.id && adjacent(theirs.origin, mine.origin)) continue;  // one front
     const Meeting here_is = theirs.id != mine.id ? Meeting::two_obstacles : Meeting::one_obstacle;
     if (here_is <= meeting) continue;
@@ -213,7 +219,8 @@ void thin_one_obstacle_meetings(const Grid& grid, const std::vector<std::uint8_t
 
 Brushfire brushfire(std::size_t columns, std::size_t rows, const std::vector<std::uint8_t>& blocked,
                     const std::vector<std::uint8_t>& outside_cells) {
-  if (blocked.size() != columns * rows) throw std::invalid_argument("brushfire: the blocked flags are not columns x rows");
+  if (blocked.size() != columns * rows)
+    throw std::invalid_argument("brushfire: the blocked flags are not columns x rows");
   if (!outside_cells.empty() && outside_cells.size() != blocked.size())
     throw std::invalid_argument("brushfire: the outside flags are not columns x rows");
   const Grid grid(columns, rows);
@@ -282,7 +289,8 @@ Brushfire brushfire(std::size_t columns, std::size_t rows, const std::vector<std
   std::vector<std::size_t> joins;
   for (long y = 0; y + 1 < static_cast<long>(rows); ++y)
     for (long x = 0; x + 1 < static_cast<long>(columns); ++x) {
-      const std::size_t a = grid.index(x, y), bb = grid.index(x + 1, y), c = grid.index(x, y + 1), d = grid.index(x + 1, y + 1);
+      const std::size_t a = grid.index(x, y), bb = grid.index(x + 1, y), c = grid.index(x, y + 1),
+                        d = grid.index(x + 1, y + 1);
       const auto join = [&](std::size_t p, std::size_t q, std::size_t side1, std::size_t side2) {
         if (!b.gvd[p] || !b.gvd[q] || b.gvd[side1] || b.gvd[side2]) return;
         if (blocked[side1] && !blocked[side2]) joins.push_back(side2);

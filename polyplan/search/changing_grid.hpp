@@ -28,7 +28,9 @@ class ChangingGrid {
   int width() const { return width_; }
   int height() const { return height_; }
   const GridGraph& graph() const { return graph_; }
-  GridCell cell(int x, int y) const { return static_cast<GridCell>(y) * static_cast<GridCell>(width_) + static_cast<GridCell>(x); }
+  GridCell cell(int x, int y) const {
+    return static_cast<GridCell>(y) * static_cast<GridCell>(width_) + static_cast<GridCell>(x);
+  }
   int x(GridCell c) const { return static_cast<int>(c % static_cast<GridCell>(width_)); }
   int y(GridCell c) const { return static_cast<int>(c / static_cast<GridCell>(width_)); }
   bool contains(int x, int y) const { return x >= 0 && y >= 0 && x < width_ && y < height_; }

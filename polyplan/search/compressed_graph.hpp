@@ -49,8 +49,9 @@ struct CompressedGraph {
 // parent[v] (the vertex before v, -1 at the source); each settled vertex is passed to `settle` in
 // order. `heap` is the caller's, to be reused.
 template <class Settle = void (*)(int)>
-void dijkstra(const CompressedGraph& g, int source, double* dist, int* parent, std::vector<std::pair<double, int>>& heap,
-              Settle settle = [](int) {}) {
+void dijkstra(
+    const CompressedGraph& g, int source, double* dist, int* parent, std::vector<std::pair<double, int>>& heap,
+    Settle settle = [](int) {}) {
   dist[source] = 0;
   parent[source] = -1;
   heap.assign(1, {0.0, source});

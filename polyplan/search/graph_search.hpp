@@ -44,13 +44,21 @@ namespace detail {
 
 struct WorkspaceAccess {
   template <class W>
-  static auto& hashed(W& ws) { return ws.hashed_; }
+  static auto& hashed(W& ws) {
+    return ws.hashed_;
+  }
   template <class W>
-  static auto& dense(W& ws) { return ws.dense_; }
+  static auto& dense(W& ws) {
+    return ws.dense_;
+  }
   template <class W>
-  static auto& fifo(W& ws) { return ws.fifo_; }
+  static auto& fifo(W& ws) {
+    return ws.fifo_;
+  }
   template <class W>
-  static void set_used_dense(W& ws, bool dense) { ws.used_dense_ = dense; }
+  static void set_used_dense(W& ws, bool dense) {
+    ws.used_dense_ = dense;
+  }
 };
 
 // ---- property maps over a workspace table: absent records read as the BGL initial values ----
@@ -59,44 +67,68 @@ struct DistanceField {
   template <class Vertex>
   using value_type = double;
   template <class R>
-  static double read(const R& r) { return r.distance; }
+  static double read(const R& r) {
+    return r.distance;
+  }
   template <class R>
-  static void write(R& r, double x) { r.distance = x; }
+  static void write(R& r, double x) {
+    r.distance = x;
+  }
   template <class Vertex>
-  static double absent(const Vertex&) { return unreached; }
+  static double absent(const Vertex&) {
+    return unreached;
+  }
 };
 
 struct RankField {
   template <class Vertex>
   using value_type = double;
   template <class R>
-  static double read(const R& r) { return r.rank; }
+  static double read(const R& r) {
+    return r.rank;
+  }
   template <class R>
-  static void write(R& r, double x) { r.rank = x; }
+  static void write(R& r, double x) {
+    r.rank = x;
+  }
   template <class Vertex>
-  static double absent(const Vertex&) { return unreached; }
+  static double absent(const Vertex&) {
+    return unreached;
+  }
 };
 
 struct PredecessorField {
   template <class Vertex>
   using value_type = Vertex;
   template <class R>
-  static auto read(const R& r) { return r.predecessor; }
+  static auto read(const R& r) {
+    return r.predecessor;
+  }
   template <class R, class Vertex>
-  static void write(R& r, const Vertex& x) { r.predecessor = x; }
+  static void write(R& r, const Vertex& x) {
+    r.predecessor = x;
+  }
   template <class Vertex>
-  static Vertex absent(const Vertex& v) { return v; }
+  static Vertex absent(const Vertex& v) {
+    return v;
+  }
 };
 
 struct ColorField {
   template <class Vertex>
   using value_type = boost::default_color_type;
   template <class R>
-  static boost::default_color_type read(const R& r) { return static_cast<boost::default_color_type>(r.color); }
+  static boost::default_color_type read(const R& r) {
+    return static_cast<boost::default_color_type>(r.color);
+  }
   template <class R>
-  static void write(R& r, boost::default_color_type x) { r.color = static_cast<std::uint8_t>(x); }
+  static void write(R& r, boost::default_color_type x) {
+    r.color = static_cast<std::uint8_t>(x);
+  }
   template <class Vertex>
-  static boost::default_color_type absent(const Vertex&) { return boost::white_color; }
+  static boost::default_color_type absent(const Vertex&) {
+    return boost::white_color;
+  }
 };
 
 template <class Table, class Vertex, class Field>
@@ -204,7 +236,9 @@ struct ZeroWeightMap {
 
 struct ZeroHeuristic {
   template <class Vertex>
-  double operator()(const Vertex&) const { return 0.0; }
+  double operator()(const Vertex&) const {
+    return 0.0;
+  }
 };
 
 template <class Heuristic>
@@ -212,7 +246,9 @@ struct ScaledHeuristic {
   Heuristic h;
   double weight;
   template <class Vertex>
-  double operator()(const Vertex& v) const { return weight * h(v); }
+  double operator()(const Vertex& v) const {
+    return weight * h(v);
+  }
 };
 
 // ---- visitors: count, record tree edges, stop at the goal ----
@@ -224,7 +260,8 @@ struct FoundGoal {};  // thrown through the BGL algorithm; never leaves shortest
 template <class Vertex>
 class GoalTest {
  public:
-  GoalTest(const Vertex* goals, std::size_t count, Vertex& reached) : goals_(goals), count_(count), reached_(&reached) {}
+  GoalTest(const Vertex* goals, std::size_t count, Vertex& reached)
+      : goals_(goals), count_(count), reached_(&reached) {}
   void stop_if_goal(const Vertex& u) const {
     for (std::size_t i = 0; i < count_; ++i)
       if (u == goals_[i]) {
@@ -251,8 +288,8 @@ struct SearchCounts {
 template <class Vertex, class Hash, class Heuristic, class WeightFn, class PredecessorMap>
 class TraceRecorder {
  public:
-  TraceRecorder(SearchTrace<Vertex>& out, const SearchOptions& options, const Heuristic& heuristic, const WeightFn& weight,
-                PredecessorMap predecessor)
+  TraceRecorder(SearchTrace<Vertex>& out, const SearchOptions& options, const Heuristic& heuristic,
+                const WeightFn& weight, PredecessorMap predecessor)
       : out_(&out), algorithm_(options.algorithm), weighting_(options.weight), heuristic_(&heuristic), weight_(&weight),
         predecessor_(predecessor) {}
 
@@ -285,7 +322,9 @@ class TraceRecorder {
   }
   // bfs and dfs: the edge that discovered its target.
   template <class Edge, class Graph>
-  void tree_edge(const Edge& e, const Graph& g) { label_through(target(e, g), source(e, g), e); }
+  void tree_edge(const Edge& e, const Graph& g) {
+    label_through(target(e, g), source(e, g), e);
+  }
 
  private:
   struct Label {
@@ -364,8 +403,8 @@ class AStarGoalVisitor : public boost::default_astar_visitor {
 template <class Vertex, class PredecessorMap, class Recorder>
 class BfsGoalVisitor : public boost::default_bfs_visitor {
  public:
-  BfsGoalVisitor(const GoalTest<Vertex>& goal, SearchCounts& counts, PredecessorMap predecessor, std::vector<Vertex>* trace,
-                 Recorder* recorder)
+  BfsGoalVisitor(const GoalTest<Vertex>& goal, SearchCounts& counts, PredecessorMap predecessor,
+                 std::vector<Vertex>* trace, Recorder* recorder)
       : goal_(goal), counts_(&counts), predecessor_(predecessor), trace_(trace), recorder_(recorder) {}
   template <class Graph>
   void discover_vertex(const Vertex& v, const Graph&) {
@@ -495,13 +534,14 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with
       case Search::bfs:
         fifo.clear();
         boost::breadth_first_visit(
-            g, start, fifo, BfsGoalVisitor<Vertex, decltype(predecessor), Recorder>(is_goal, counts, predecessor, trace, recorder),
+            g, start, fifo,
+            BfsGoalVisitor<Vertex, decltype(predecessor), Recorder>(is_goal, counts, predecessor, trace, recorder),
             color);
         break;
       case Search::dfs:
-        boost::depth_first_visit(g, start,
-                                 DfsCountingVisitor<Vertex, decltype(predecessor), Recorder>(counts, predecessor, trace, recorder),
-                                 color, StopAtGoal<Vertex>{is_goal});
+        boost::depth_first_visit(
+            g, start, DfsCountingVisitor<Vertex, decltype(predecessor), Recorder>(counts, predecessor, trace, recorder),
+            color, StopAtGoal<Vertex>{is_goal});
         break;
     }
   } catch (const FoundGoal&) {
@@ -549,7 +589,8 @@ template <class Graph, class Heuristic, class WeightFn, class Hash>
 SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> shortest_path_to_any(
     const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
     const std::vector<typename boost::graph_traits<Graph>::vertex_descriptor>& goals, const SearchOptions& options,
-    Heuristic heuristic, WeightFn weight, SearchWorkspace<typename boost::graph_traits<Graph>::vertex_descriptor, Hash>& workspace) {
+    Heuristic heuristic, WeightFn weight,
+    SearchWorkspace<typename boost::graph_traits<Graph>::vertex_descriptor, Hash>& workspace) {
   detail::check_options(options);
   if (goals.empty()) throw std::invalid_argument("shortest_path_to_any: no goal");
   const auto began = std::chrono::steady_clock::now();

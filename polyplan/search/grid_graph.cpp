@@ -25,10 +25,8 @@ struct GridGraph::LazyCache {
     return it == touched.end() ? CellState::unknown : it->second ? CellState::free : CellState::blocked;
   }
   void set(GridCell c, bool free) {
-    if (!flat.empty())
-      flat[c] = free ? CellState::free : CellState::blocked;
-    else
-      touched.emplace(c, free);
+    if (!flat.empty()) flat[c] = free ? CellState::free : CellState::blocked;
+    else touched.emplace(c, free);
   }
 };
 
@@ -77,7 +75,9 @@ GridGraph::GridGraph(std::vector<GridAxis> axes, Connectivity connectivity, Step
     ++o[i];
   }
   std::stable_sort(offsets.begin(), offsets.end(), [](const auto& a, const auto& b) {
-    const auto nz = [](const auto& v) { return std::count_if(v.begin(), v.end(), [](std::int32_t x) { return x != 0; }); };
+    const auto nz = [](const auto& v) {
+      return std::count_if(v.begin(), v.end(), [](std::int32_t x) { return x != 0; });
+    };
     return nz(a) < nz(b);
   });
   const auto index_of = [&](const std::vector<std::int32_t>& v) {

@@ -22,9 +22,9 @@
 #include <boost/iterator/iterator_facade.hpp>
 
 #include <array>
-#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <functional>
 #include <initializer_list>
 #include <memory>
@@ -41,7 +41,7 @@ enum class AxisKind { bounded, wrapping };
 struct GridAxis {
   std::int64_t cells = 0;  // >= 1 (>= 3 when wrapping, so that the two neighbours differ)
   AxisKind kind = AxisKind::bounded;
-  double step = 1.0;       // the length of one cell along this axis (> 0), for costs and heuristics
+  double step = 1.0;  // the length of one cell along this axis (> 0), for costs and heuristics
 };
 
 enum class Connectivity {
@@ -70,7 +70,7 @@ class GridGraph {
  public:
   static constexpr std::size_t max_dimensions = 12;
   using CellTest = std::function<bool(std::span<const GridCoordinate>)>;  // true: the cell is free
-  using MoveTest = std::function<bool(GridCell from, GridCell to)>;        // true: the move is allowed
+  using MoveTest = std::function<bool(GridCell from, GridCell to)>;       // true: the move is allowed
 
   // Cells given by a bitmap: free_cells[cell] != 0 means free (size: cell_count()).
   GridGraph(std::vector<GridAxis> axes, Connectivity, StepCost, std::vector<std::uint8_t> free_cells);
@@ -128,7 +128,7 @@ class GridGraph {
     std::vector<AxisOffset> moves;      // the axes it changes
     std::vector<std::uint32_t> guards;  // directions of its proper sub-moves: cells that must be free too
     double cost;
-    std::int64_t delta;                 // the change of the linear index when no axis wraps or ends
+    std::int64_t delta;  // the change of the linear index when no axis wraps or ends
   };
   using Coordinates = std::array<GridCoordinate, max_dimensions>;
 
@@ -204,7 +204,8 @@ class GridGraph {
 };
 
 // Iterates over the allowed moves out of one cell (boost::graph_traits<GridGraph>::out_edge_iterator).
-class GridMoveIterator : public boost::iterator_facade<GridMoveIterator, GridMove, std::forward_iterator_tag, GridMove> {
+class GridMoveIterator
+    : public boost::iterator_facade<GridMoveIterator, GridMove, std::forward_iterator_tag, GridMove> {
  public:
   GridMoveIterator() = default;
 

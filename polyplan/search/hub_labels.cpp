@@ -24,7 +24,8 @@ std::vector<int> hub_order(const CompressedGraph& g) {
   for (std::size_t k = 0; k < roots; ++k) {
     std::fill(dist.begin(), dist.end(), kInfinity);
     settled.clear();
-    dijkstra(g, static_cast<int>(k * n / roots), dist.data(), parent.data(), heap, [&](int u) { settled.push_back(u); });
+    dijkstra(g, static_cast<int>(k * n / roots), dist.data(), parent.data(), heap,
+             [&](int u) { settled.push_back(u); });
     std::fill(subtree.begin(), subtree.end(), 0);
     for (auto it = settled.rbegin(); it != settled.rend(); ++it) {  // leaves before their parents
       const auto v = static_cast<std::size_t>(*it);
@@ -36,7 +37,8 @@ std::vector<int> hub_order(const CompressedGraph& g) {
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return g.degree(a) != g.degree(b) ? g.degree(a) > g.degree(b) : score[static_cast<std::size_t>(a)] > score[static_cast<std::size_t>(b)];
+    return g.degree(a) != g.degree(b) ? g.degree(a) > g.degree(b)
+                                      : score[static_cast<std::size_t>(a)] > score[static_cast<std::size_t>(b)];
   });
   return order;
 }
@@ -56,7 +58,8 @@ std::optional<HubLabels> HubLabels::build(const CompressedGraph& graph, std::siz
   std::vector<std::pair<double, int>> heap;
   for (std::size_t rank = 0; rank < n; ++rank) {
     const int root = labels.order_[rank];
-    for (const Entry& e : building[static_cast<std::size_t>(root)]) hub_distance[static_cast<std::size_t>(e.hub)] = e.distance;
+    for (const Entry& e : building[static_cast<std::size_t>(root)])
+      hub_distance[static_cast<std::size_t>(e.hub)] = e.distance;
     dist[static_cast<std::size_t>(root)] = 0;
     parent[static_cast<std::size_t>(root)] = -1;
     touched.assign(1, root);
@@ -90,7 +93,8 @@ std::optional<HubLabels> HubLabels::build(const CompressedGraph& graph, std::siz
       }
     }
     for (int v : touched) dist[static_cast<std::size_t>(v)] = kInfinity;
-    for (const Entry& e : building[static_cast<std::size_t>(root)]) hub_distance[static_cast<std::size_t>(e.hub)] = kInfinity;
+    for (const Entry& e : building[static_cast<std::size_t>(root)])
+      hub_distance[static_cast<std::size_t>(e.hub)] = kInfinity;
   }
   labels.label_begin_.assign(1, 0);
   labels.entries_.reserve(entries);
@@ -121,14 +125,16 @@ void HubLabels::path_to_hub(int v, int hub, std::vector<int>& out) const {
   for (;;) {
     out.push_back(v);
     const Entry* end = label_end(v);
-    const Entry* e = std::lower_bound(label_begin(v), end, hub, [](const Entry& entry, int h) { return entry.hub < h; });
+    const Entry* e =
+        std::lower_bound(label_begin(v), end, hub, [](const Entry& entry, int h) { return entry.hub < h; });
     if (e == end || e->hub != hub || e->parent < 0) return;  // at the hub
     v = e->parent;
   }
 }
 
 std::size_t HubLabels::memory_bytes() const {
-  return order_.capacity() * sizeof(int) + label_begin_.capacity() * sizeof(std::size_t) + entries_.capacity() * sizeof(Entry);
+  return order_.capacity() * sizeof(int) + label_begin_.capacity() * sizeof(std::size_t) +
+         entries_.capacity() * sizeof(Entry);
 }
 
 }  // namespace polyplan

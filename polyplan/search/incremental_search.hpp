@@ -52,10 +52,10 @@ enum class IncrementalDirection { from_start, from_goal };
 
 // What a search did, summed over its life (subtract two readings for one call).
 struct IncrementalCounts {
-  std::size_t expanded = 0;      // vertices taken from the open list and made consistent or raised to ∞
-  std::size_t generated = 0;     // vertices put in the open list for the first time
+  std::size_t expanded = 0;   // vertices taken from the open list and made consistent or raised to ∞
+  std::size_t generated = 0;  // vertices put in the open list for the first time
   std::size_t heap_pushes = 0, heap_pops = 0, heap_updates = 0, heap_removals = 0;
-  std::size_t searches = 0;      // calls of compute_shortest_path
+  std::size_t searches = 0;  // calls of compute_shortest_path
   std::size_t heap_operations() const { return heap_pushes + heap_pops + heap_updates + heap_removals; }
 };
 
@@ -115,7 +115,8 @@ struct IncrementalStep {
 template <class Search>
 struct IncrementalObserver {
   virtual ~IncrementalObserver() = default;
-  virtual void step(const Search&, const IncrementalStep<typename Search::vertex_type, typename Search::cost_type>&) = 0;
+  virtual void step(const Search&,
+                    const IncrementalStep<typename Search::vertex_type, typename Search::cost_type>&) = 0;
 };
 
 template <class Graph, class Costs, class Heuristic, IncrementalDirection Direction>
@@ -172,10 +173,8 @@ class IncrementalSearch {
     const cost_type now = link(child, parent);
     Record& c = records_[child];
     if (child != root_) {
-      if (old > now)
-        c.rhs = std::min(c.rhs, now + records_[parent].g);
-      else if (c.rhs == old + records_[parent].g)
-        c.rhs = best_rhs(child);
+      if (old > now) c.rhs = std::min(c.rhs, now + records_[parent].g);
+      else if (c.rhs == old + records_[parent].g) c.rhs = best_rhs(child);
     }
     update_vertex_queue(child);
   }
@@ -196,18 +195,14 @@ class IncrementalSearch {
   }
 
   // D* Lite: the robot moved to s. k_m grows by h(s_last, s) before the next change or search.
-  void move_start(vertex_type s)
-    requires(Direction == IncrementalDirection::from_goal)
-  {
+  void move_start(vertex_type s) requires(Direction == IncrementalDirection::from_goal) {
     check_vertex(s);
     aim_ = s;
   }
 
   // LPA*: a new goal. The heuristic changes for every vertex, so every key in the open list is
   // recomputed (what D* Lite's k_m avoids when the moving end is the one the search aims at).
-  void move_goal(vertex_type s)
-    requires(Direction == IncrementalDirection::from_start)
-  {
+  void move_goal(vertex_type s) requires(Direction == IncrementalDirection::from_start) {
     check_vertex(s);
     aim_ = last_aim_ = s;
     std::vector<vertex_type> queued;
@@ -312,7 +307,8 @@ class IncrementalSearch {
       return a.vertex > b.vertex;  // the same order whatever the heap's history
     }
   };
-  using Heap = boost::heap::d_ary_heap<Entry, boost::heap::arity<4>, boost::heap::mutable_<true>, boost::heap::compare<Later>>;
+  using Heap =
+      boost::heap::d_ary_heap<Entry, boost::heap::arity<4>, boost::heap::mutable_<true>, boost::heap::compare<Later>>;
   struct Record {
     cost_type g = cost_type::infinity(), rhs = cost_type::infinity();
     typename Heap::handle_type handle{};

@@ -55,9 +55,9 @@ class OctileLength {
     return x.straight_ == y.straight_ && x.diagonal_ == y.diagonal_;  // √2 is irrational
   }
   friend constexpr std::strong_ordering operator<=>(const OctileLength& x, const OctileLength& y) {
-    if (x.infinite_ || y.infinite_) return x.infinite_ == y.infinite_ ? std::strong_ordering::equal
-                                                                    : (x.infinite_ ? std::strong_ordering::greater
-                                                                                   : std::strong_ordering::less);
+    if (x.infinite_ || y.infinite_)
+      return x.infinite_ == y.infinite_ ? std::strong_ordering::equal
+                                        : (x.infinite_ ? std::strong_ordering::greater : std::strong_ordering::less);
     return sign(x.straight_ - y.straight_, x.diagonal_ - y.diagonal_) <=> 0;
   }
 

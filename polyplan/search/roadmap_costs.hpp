@@ -29,7 +29,8 @@ class ScaledLength {
 
   constexpr std::int64_t units() const { return units_; }
   double to_double() const {
-    return units_ == infinite_units ? std::numeric_limits<double>::infinity() : static_cast<double>(units_) / units_per_length;
+    return units_ == infinite_units ? std::numeric_limits<double>::infinity()
+                                    : static_cast<double>(units_) / units_per_length;
   }
   friend constexpr ScaledLength operator+(ScaledLength a, ScaledLength b) {
     if (a.units_ == infinite_units || b.units_ == infinite_units) return infinity();

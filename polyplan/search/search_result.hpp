@@ -60,9 +60,8 @@ struct SearchOptions {
   bool record_trace = false;
   // Which of several open vertices of equal f a best-first search (astar, wastar, dijkstra, greedy)
   // expands first. false: whichever Boost's 4-ary heap yields (the fastest). true: the one that
-  // entered the open list first, as the course's graph-search homework's priority queue does (a list searched for its first
-  // minimum, a vertex keeping its place when its f is lowered): an order any reimplementation can
-  // reproduce.
+  // entered the open list first, as the course's graph-search homework's priority queue does (a list searched for its
+  // first minimum, a vertex keeping its place when its f is lowered): an order any reimplementation can reproduce.
   bool ties_first_discovered = false;
 };
 

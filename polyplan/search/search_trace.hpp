@@ -1,7 +1,7 @@
 #pragma once
-// What a graph search did, step by step, for watching it (the course's graph-search homework: "plots of the solution after
-// every node expansion", g, h and f at each node, arrows for the backpointers). Recorded by every
-// algorithm of search/graph_search.hpp when SearchOptions::record_trace is set. No Boost here.
+// What a graph search did, step by step, for watching it (the course's graph-search homework: "plots of the solution
+// after every node expansion", g, h and f at each node, arrows for the backpointers). Recorded by every algorithm of
+// search/graph_search.hpp when SearchOptions::record_trace is set. No Boost here.
 //
 // The numbers mean the same for every algorithm:
 //   g            the cost of the path start → vertex along the backpointers, summed with the real

@@ -70,11 +70,11 @@ inline constexpr double unreached = std::numeric_limits<double>::infinity();
 // predecessor itself, colour white (the BGL initialisation that *_no_init algorithms skip).
 template <class Vertex>
 struct VertexRecord {
-  double distance;      // g
-  double rank;          // the open-list key (f = g + h for A*)
+  double distance;  // g
+  double rank;      // the open-list key (f = g + h for A*)
   Vertex predecessor;
-  std::uint32_t slot;   // order of first touch in this query: the dense index BGL's heap needs
-  std::uint8_t color;   // boost::default_color_type, stored narrow
+  std::uint32_t slot;  // order of first touch in this query: the dense index BGL's heap needs
+  std::uint8_t color;  // boost::default_color_type, stored narrow
 };
 
 template <class Vertex>

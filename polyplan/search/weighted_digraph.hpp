@@ -1,8 +1,8 @@
 #pragma once
-// A directed graph given as the course's graph-search homework's graph_vector: vertices at points of the plane, each with its
-// out-neighbours and the cost of the move to each (costs need not be lengths, nor symmetric), and
-// the searches of search/graph_search.hpp on it with the Euclidean heuristic (the course's graph-search homework's
-// Graph.heuristic). Read one from a file with io/graph_reader.hpp.
+// A directed graph given as the course's graph-search homework's graph_vector: vertices at points of the plane, each
+// with its out-neighbours and the cost of the move to each (costs need not be lengths, nor symmetric), and the searches
+// of search/graph_search.hpp on it with the Euclidean heuristic (the course's graph-search homework's Graph.heuristic).
+// Read one from a file with io/graph_reader.hpp.
 //
 //   const WeightedDigraph graph = make_weighted_digraph(read_graph("graph.json").vertices);
 //   auto result = shortest_path(graph, 0, 5, SearchOptions{Search::astar});
@@ -40,11 +40,13 @@ WeightedDigraph make_weighted_digraph(const VertexList& vertices) {
   for (const auto& v : vertices) {
     graph[i] = DigraphVertex{v.x, v.y};
     if (v.neighbors.size() != v.neighbors_cost.size())
-      throw std::invalid_argument("make_weighted_digraph: vertex " + std::to_string(i) + ": neighbors and costs differ in length");
+      throw std::invalid_argument("make_weighted_digraph: vertex " + std::to_string(i) +
+                                  ": neighbors and costs differ in length");
     for (std::size_t k = 0; k < v.neighbors.size(); ++k) {
       if (static_cast<std::size_t>(v.neighbors[k]) >= vertices.size())
         throw std::invalid_argument("make_weighted_digraph: vertex " + std::to_string(i) + ": neighbour out of range");
-      boost::add_edge(i, static_cast<std::size_t>(v.neighbors[k]), DigraphEdge{static_cast<double>(v.neighbors_cost[k])}, graph);
+      boost::add_edge(i, static_cast<std::size_t>(v.neighbors[k]),
+                      DigraphEdge{static_cast<double>(v.neighbors_cost[k])}, graph);
     }
     ++i;
   }

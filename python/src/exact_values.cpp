@@ -19,7 +19,9 @@ bool is_instance_of(py::handle value, const char* module, const char* name) {
 bool is_boolean(py::handle value) { return PyBool_Check(value.ptr()) || is_instance_of(value, "numpy", "bool_"); }
 
 // A sequence that is not text (a str is a sequence of characters, never of numbers).
-bool is_sequence(py::handle value) { return PySequence_Check(value.ptr()) && !py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value); }
+bool is_sequence(py::handle value) {
+  return PySequence_Check(value.ptr()) && !py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value);
+}
 
 py::sequence sequence_of(py::handle value, const std::string& what, const std::string& expected) {
   if (!is_sequence(value)) throw InputError(what + ": expected " + expected + ", got " + type_name(value));
@@ -36,12 +38,15 @@ std::string type_name(py::handle value) {
 }
 
 Rational exact_number(py::handle value, const std::string& what) {
-  if (is_boolean(value)) throw InputError(what + ": expected a number, got a bool (" + std::string(py::str(value)) + ")");
+  if (is_boolean(value))
+    throw InputError(what + ": expected a number, got a bool (" + std::string(py::str(value)) + ")");
   if (py::isinstance<py::str>(value)) return parsed(value.cast<std::string>(), what);
   if (is_instance_of(value, "fractions", "Fraction"))
-    return parsed(std::string(py::str(value.attr("numerator"))) + "/" + std::string(py::str(value.attr("denominator"))), what);
+    return parsed(std::string(py::str(value.attr("numerator"))) + "/" + std::string(py::str(value.attr("denominator"))),
+                  what);
   if (is_instance_of(value, "decimal", "Decimal")) return parsed(py::str(value), what);
-  if (PyIndex_Check(value.ptr())) return parsed(py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()))), what);
+  if (PyIndex_Check(value.ptr()))
+    return parsed(py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()))), what);
   if (PyFloat_Check(value.ptr()) || is_instance_of(value, "numpy", "floating")) {
     const double d = py::float_(py::reinterpret_borrow<py::object>(value));
     if (!std::isfinite(d)) throw InputError(what + ": not a finite number (" + std::string(py::str(value)) + ")");
@@ -62,7 +67,8 @@ double finite_number(py::handle value, const std::string& what) {
 
 ExactPoint exact_point(py::handle value, const std::string& what) {
   const py::sequence pair = sequence_of(value, what, "a point (x, y)");
-  if (py::len(pair) != 2) throw InputError(what + ": expected a point (x, y), got " + std::to_string(py::len(pair)) + " numbers");
+  if (py::len(pair) != 2)
+    throw InputError(what + ": expected a point (x, y), got " + std::to_string(py::len(pair)) + " numbers");
   return {exact_number(pair[0], what + "[0]"), exact_number(pair[1], what + "[1]")};
 }
 
@@ -71,7 +77,8 @@ std::vector<ExactPoint> exact_points(py::handle value, const std::string& what) 
   if (py::isinstance<py::array>(value)) {
     const auto array = py::reinterpret_borrow<py::array>(value);
     if (array.ndim() != 2 || array.shape(1) != 2)
-      throw InputError(what + ": expected an (N, 2) array of points, got shape " + std::string(py::str(value.attr("shape"))));
+      throw InputError(what + ": expected an (N, 2) array of points, got shape " +
+                       std::string(py::str(value.attr("shape"))));
     const char kind = array.dtype().kind();
     if (kind == 'f') {
       // Any order and stride: a C-ordered float64 copy (forcecast) is read, never the caller's memory.
@@ -79,7 +86,8 @@ std::vector<ExactPoint> exact_points(py::handle value, const std::string& what) 
       const auto view = doubles.unchecked<2>();
       for (py::ssize_t i = 0; i < view.shape(0); ++i) {
         const std::string row = what + "[" + std::to_string(i) + "]";
-        points.push_back({exact_number(py::float_(view(i, 0)), row + "[0]"), exact_number(py::float_(view(i, 1)), row + "[1]")});
+        points.push_back(
+            {exact_number(py::float_(view(i, 0)), row + "[0]"), exact_number(py::float_(view(i, 1)), row + "[1]")});
       }
       return points;
     }
@@ -89,7 +97,8 @@ std::vector<ExactPoint> exact_points(py::handle value, const std::string& what) 
     // Integers (exact, whatever their size) and objects (Fractions, strings) element by element.
   }
   const py::sequence rows = sequence_of(value, what, "a sequence of points (x, y)");
-  for (std::size_t i = 0; i < py::len(rows); ++i) points.push_back(exact_point(rows[i], what + "[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < py::len(rows); ++i)
+    points.push_back(exact_point(rows[i], what + "[" + std::to_string(i) + "]"));
   return points;
 }
 
@@ -99,17 +108,23 @@ namespace {
 template <class Read>
 auto numbers_of(py::handle value, const std::string& what, Read read) {
   if (py::isinstance<py::array>(value) && py::reinterpret_borrow<py::array>(value).ndim() != 1)
-    throw InputError(what + ": expected a 1-d array of numbers, got shape " + std::string(py::str(value.attr("shape"))));
+    throw InputError(what + ": expected a 1-d array of numbers, got shape " +
+                     std::string(py::str(value.attr("shape"))));
   const py::sequence numbers = sequence_of(value, what, "a sequence of numbers");
   std::vector<decltype(read(numbers[0], what))> out;
-  for (std::size_t i = 0; i < py::len(numbers); ++i) out.push_back(read(numbers[i], what + "[" + std::to_string(i) + "]"));
+  for (std::size_t i = 0; i < py::len(numbers); ++i)
+    out.push_back(read(numbers[i], what + "[" + std::to_string(i) + "]"));
   return out;
 }
 
 }  // namespace
 
-std::vector<double> finite_numbers(py::handle value, const std::string& what) { return numbers_of(value, what, finite_number); }
-std::vector<Rational> exact_numbers(py::handle value, const std::string& what) { return numbers_of(value, what, exact_number); }
+std::vector<double> finite_numbers(py::handle value, const std::string& what) {
+  return numbers_of(value, what, finite_number);
+}
+std::vector<Rational> exact_numbers(py::handle value, const std::string& what) {
+  return numbers_of(value, what, exact_number);
+}
 
 std::string text_of(py::handle value, const std::string& what) {
   if (!py::isinstance<py::str>(value)) throw InputError(what + ": expected a str, got " + type_name(value));
@@ -117,8 +132,10 @@ std::string text_of(py::handle value, const std::string& what) {
 }
 
 std::string path_of(py::handle value, const std::string& what) {
-  if (py::isinstance(value, py::module_::import("os").attr("PathLike"))) return text_of(py::module_::import("os").attr("fspath")(value), what);
-  if (!py::isinstance<py::str>(value)) throw InputError(what + ": expected a file's path (a str or a pathlib.Path), got " + type_name(value));
+  if (py::isinstance(value, py::module_::import("os").attr("PathLike")))
+    return text_of(py::module_::import("os").attr("fspath")(value), what);
+  if (!py::isinstance<py::str>(value))
+    throw InputError(what + ": expected a file's path (a str or a pathlib.Path), got " + type_name(value));
   return value.cast<std::string>();
 }
 
@@ -128,7 +145,8 @@ bool flag_of(py::handle value, const std::string& what) {
 }
 
 py::object fraction(const Rational& value) {
-  return py::module_::import("fractions").attr("Fraction")(py::int_(py::str(value.get_num().get_str())), py::int_(py::str(value.get_den().get_str())));
+  return py::module_::import("fractions")
+      .attr("Fraction")(py::int_(py::str(value.get_num().get_str())), py::int_(py::str(value.get_den().get_str())));
 }
 
 py::array_t<double> rows_array(const std::vector<std::vector<double>>& rows, std::size_t columns) {

@@ -13,7 +13,8 @@ namespace py = pybind11;
 PYBIND11_MODULE(_polyplan, m) {
   m.doc() = "polyplan's compiled core; import polyplan, not this module.";
   static py::exception<polyplan::InputError> input_error(m, "InputError", PyExc_ValueError);
-  input_error.doc() = "Bad input: a file, a value or an option polyplan refuses. The message is the one `polyplan` prints.";
+  input_error.doc() =
+      "Bad input: a file, a value or an option polyplan refuses. The message is the one `polyplan` prints.";
   py::register_exception_translator([](std::exception_ptr thrown) {
     try {
       std::rethrow_exception(thrown);

@@ -17,7 +17,8 @@ namespace {
 // A keyword argument as the option text the registry parses: True/False, an int, a float (its
 // shortest round-trip text), a Fraction (as a float), a string, or for a point option a pair of
 // numbers ("x,y"); nothing else.
-std::string option_text(const std::string& planner, const OptionInfo& option, const std::string& key, py::handle value) {
+std::string option_text(const std::string& planner, const OptionInfo& option, const std::string& key,
+                        py::handle value) {
   if (PyBool_Check(value.ptr())) return value.ptr() == Py_True ? "true" : "false";
   if (py::isinstance<py::str>(value)) return value.cast<std::string>();
   if (PyIndex_Check(value.ptr())) return py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())));
@@ -25,7 +26,8 @@ std::string option_text(const std::string& planner, const OptionInfo& option, co
     return py::repr(py::float_(py::reinterpret_borrow<py::object>(value)));
   if (option.kind.rfind("point", 0) == 0 && (PySequence_Check(value.ptr()) || py::isinstance<py::array>(value))) {
     std::string text;
-    for (const Rational& x : exact_numbers(value, "planner " + planner + ": option " + key)) text += (text.empty() ? "" : ",") + to_string(x);
+    for (const Rational& x : exact_numbers(value, "planner " + planner + ": option " + key))
+      text += (text.empty() ? "" : ",") + to_string(x);
     return text;
   }
   throw InputError("planner " + planner + ": option " + key + "=" + std::string(py::repr(value)) +
@@ -42,7 +44,8 @@ OptionValues option_values(const PlannerListing& planner, const py::dict& option
     const std::string given = py::str(key);
     std::string name = given;
     std::replace(name.begin(), name.end(), '_', '-');
-    const auto option = std::find_if(planner.options.begin(), planner.options.end(), [&](const OptionInfo& o) { return o.name == name; });
+    const auto option = std::find_if(planner.options.begin(), planner.options.end(),
+                                     [&](const OptionInfo& o) { return o.name == name; });
     if (option == planner.options.end())
       throw InputError("planner " + planner.name + ": option " + given + ": no such option (" +
                        (known.empty() ? "it takes none" : "its options: " + known) + ")");
@@ -72,7 +75,8 @@ struct PlannerHandle {
       throw InputError("plan: query: expected a query's name or index, got " + type_name(query));
     const long long i = py::int_(py::reinterpret_borrow<py::object>(query));
     if (i < 0 || static_cast<std::size_t>(i) >= names.size())
-      throw InputError("plan: query " + std::to_string(i) + ": " + source + " has " + std::to_string(names.size()) + " query(ies)");
+      throw InputError("plan: query " + std::to_string(i) + ": " + source + " has " + std::to_string(names.size()) +
+                       " query(ies)");
     return static_cast<std::size_t>(i);
   }
 
@@ -103,7 +107,8 @@ QuerySpec query_spec(const py::object& start, const Goal& goal) {
   return spec;
 }
 
-PlanResult plan(const PlannerHandle& p, const py::object& start, const Goal& goal, const py::object& query, bool record) {
+PlanResult plan(const PlannerHandle& p, const py::object& start, const Goal& goal, const py::object& query,
+                bool record) {
   const bool own = start.is_none() && goal.angles.is_none() && goal.point.is_none() && goal.orientation.is_none();
   if (own) {
     const std::size_t index = p.own_query(query);
@@ -120,7 +125,8 @@ std::vector<PlanResult> plan_all(const PlannerHandle& p, bool record) {
   std::vector<Report> reports = locked(p.handle->lock(), [&] {
     p.planner->require_plannable();
     std::vector<Report> all;
-    for (std::size_t i = 0; i < p.handle->door().query_names().size(); ++i) all.push_back(p.planner->plan(i, QueryOptions{record}));
+    for (std::size_t i = 0; i < p.handle->door().query_names().size(); ++i)
+      all.push_back(p.planner->plan(i, QueryOptions{record}));
     return all;
   });
   std::vector<PlanResult> results;
@@ -137,29 +143,35 @@ PlannerHandle make(const std::string& name, const py::object& problem, const py:
 }
 
 py::tuple option_tuple(const OptionInfo& o) {
-  const py::object range = o.range ? py::object(py::make_tuple(o.range->min, o.range->max, o.range->min_open, o.range->max_open)) : py::none();
+  const py::object range =
+      o.range ? py::object(py::make_tuple(o.range->min, o.range->max, o.range->min_open, o.range->max_open))
+              : py::none();
   return py::make_tuple(o.name, o.kind, o.default_value, o.description, range, o.choices);
 }
 
 }  // namespace
 
 void bind_planners(py::module_& m) {
-  py::class_<PlannerHandle>(m, "Planner", R"(A planner of the registry built once for one World or Arm (polyplan.planner).
+  py::class_<PlannerHandle>(m, "Planner",
+                            R"(A planner of the registry built once for one World or Arm (polyplan.planner).
 
 Its roadmap, diagram or grid is built with it; each plan() answers one query with it. One
 planner answers one query at a time; planners of different problems plan in parallel in
 different threads (the GIL is released while planning).)")
-      .def_property_readonly("name", [](const PlannerHandle& p) { return p.planner->name(); }, "The planner's name in the registry.")
-      .def_property_readonly("space", [](const PlannerHandle& p) { return p.planner->listing().space; },
-                             "The configuration space it plans in.")
-      .def("plan",
-           [](const PlannerHandle& p, const py::object& start, const py::object& goal, const py::object& query, const py::object& record,
-              const py::object& goal_point, const py::object& goal_orientation) {
-             return plan(p, start, {goal, goal_point, goal_orientation}, query, flag_of(record, "plan: record"));
-           },
-           py::arg("start") = py::none(), py::arg("goal") = py::none(), py::arg("query") = py::none(),
-           py::arg("record") = true, py::arg("goal_point") = py::none(), py::arg("goal_orientation") = py::none(),
-           R"(One query answered: a Plan.
+      .def_property_readonly(
+          "name", [](const PlannerHandle& p) { return p.planner->name(); }, "The planner's name in the registry.")
+      .def_property_readonly(
+          "space", [](const PlannerHandle& p) { return p.planner->listing().space; },
+          "The configuration space it plans in.")
+      .def(
+          "plan",
+          [](const PlannerHandle& p, const py::object& start, const py::object& goal, const py::object& query,
+             const py::object& record, const py::object& goal_point, const py::object& goal_orientation) {
+            return plan(p, start, {goal, goal_point, goal_orientation}, query, flag_of(record, "plan: record"));
+          },
+          py::arg("start") = py::none(), py::arg("goal") = py::none(), py::arg("query") = py::none(),
+          py::arg("record") = true, py::arg("goal_point") = py::none(), py::arg("goal_orientation") = py::none(),
+          R"(One query answered: a Plan.
 
 start, goal: (x, y) for a translating robot, (x, y) or (x, y, theta) (degrees) for the rotation
 planner and a car, a sequence of joint angles (radians) for an arm; exact numbers as in World.
@@ -170,10 +182,17 @@ goal_point=(x, y), goal_orientation=radians (an arm only, instead of goal): the 
 point (with the last link at that absolute angle); the planner plans to the collision-free
 inverse-kinematics solutions, and the Plan's facts["goal"] says which it reached (an unreachable
 point is an answer: status "no_path").)")
-      .def("plan_all", [](const PlannerHandle& p, const py::object& record) { return plan_all(p, flag_of(record, "plan_all: record")); },
-           py::arg("record") = true,
-           "Every query of the problem (checked as `polyplan plan` checks them: InputError for one that is not free): a list of Plan.")
-      .def("__repr__", [](const PlannerHandle& p) { return "<polyplan.Planner " + p.planner->name() + " for " + p.planner->listing().space + ">"; });
+      .def(
+          "plan_all",
+          [](const PlannerHandle& p, const py::object& record) {
+            return plan_all(p, flag_of(record, "plan_all: record"));
+          },
+          py::arg("record") = true,
+          "Every query of the problem (checked as `polyplan plan` checks them: InputError for one that is not free): a "
+          "list of Plan.")
+      .def("__repr__", [](const PlannerHandle& p) {
+        return "<polyplan.Planner " + p.planner->name() + " for " + p.planner->listing().space + ">";
+      });
 
   // polyplan.planner and polyplan.plan in __init__.py (which document them) call this with the
   // options as a dict; an empty name is the problem's default planner.

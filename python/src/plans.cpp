@@ -1,14 +1,14 @@
 // Python's Plan: any planner's report read the way the JSON writer prints it (the same keys and
 // values as `polyplan plan --json -`), with numpy arrays for the path, and polyplan.svg, the
 // picture the program draws.
-#include "exact_values.hpp"
 #include "plans.hpp"
+#include "exact_values.hpp"
 
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/problem/report_pictures.hpp>
 
-#include <nlohmann/json.hpp>
 #include <pybind11/stl.h>
+#include <nlohmann/json.hpp>
 
 namespace polyplan::python {
 namespace {
@@ -21,8 +21,9 @@ py::object graph(const PlanResult& r) {
   std::vector<std::vector<double>> edges;
   for (const auto& [a, b] : recorded.graph_edges) edges.push_back({double(a), double(b)});
   py::array_t<double> pairs = rows_array(edges, 2);
-  return py::module_::import("polyplan").attr("Graph")(recorded.graph_kind, rows_of(recorded.graph_vertices, r.report.path_columns()),
-                                                       pairs.attr("astype")("int64"));
+  return py::module_::import("polyplan")
+      .attr("Graph")(recorded.graph_kind, rows_of(recorded.graph_vertices, r.report.path_columns()),
+                     pairs.attr("astype")("int64"));
 }
 
 py::object cells(const PlanResult& r) {
@@ -37,7 +38,8 @@ py::object cells(const PlanResult& r) {
     std::copy(c.values.begin(), c.values.end(), v.mutable_data());
     values = v;
   }
-  return py::module_::import("polyplan").attr("Cells")(states, c.x0, c.y0, c.cell_width, c.cell_height, values, c.value_name, c.wraps);
+  return py::module_::import("polyplan")
+      .attr("Cells")(states, c.x0, c.y0, c.cell_width, c.cell_height, values, c.value_name, c.wraps);
 }
 
 py::object decomposition(const PlanResult& r) {
@@ -66,12 +68,15 @@ std::string svg_of(py::handle problem, const std::vector<const PlanResult*>& pla
   std::vector<const Report*> reports;
   for (const PlanResult* p : plans) {
     if (!p->problem.is(problem))
-      throw InputError("svg: the plan " + p->report.planner() + " " + p->report.query() + " was planned in another problem, not in " +
-                       handle->door().source());
+      throw InputError("svg: the plan " + p->report.planner() + " " + p->report.query() +
+                       " was planned in another problem, not in " + handle->door().source());
     reports.push_back(&p->report);
   }
-  const std::vector<Picture> pictures = locked(handle->lock(), [&] { return draw_reports(handle->door(), reports, {strobe, 0, ""}); });
-  if (pictures.size() != 1) throw InputError("svg: this problem's picture shows one plan, got " + std::to_string(plans.size()));
+  const std::vector<Picture> pictures = locked(handle->lock(), [&] {
+    return draw_reports(handle->door(), reports, {strobe, 0, ""});
+  });
+  if (pictures.size() != 1)
+    throw InputError("svg: this problem's picture shows one plan, got " + std::to_string(plans.size()));
   return pictures.front().drawing.str();
 }
 
@@ -99,38 +104,51 @@ py::object from_json(const nlohmann::json& value) {
 }
 
 void bind_plans(py::module_& m) {
-  py::class_<PlanResult>(m, "Plan", R"(One query's answer from a Planner: what `polyplan plan --json -` prints, as Python values.
+  py::class_<PlanResult>(m, "Plan",
+                         R"(One query's answer from a Planner: what `polyplan plan --json -` prints, as Python values.
 
 found, status ("solved", "no_path", "not_found", "limit", "invalid_query", "local_minimum") and
 why_not say what became of the query; path is the certified path (a new float64 array); facts
 the planner's counts and measures, nested as in the JSON.)")
-      .def_property_readonly("found", [](const PlanResult& r) { return r.report.found(); },
-                             "True when a certified path was found (status \"solved\").")
-      .def_property_readonly("status", [](const PlanResult& r) { return std::string(to_string(r.report.status())); },
-                             "What became of the query, the JSON's word: solved, no_path, not_found, limit, invalid_query, local_minimum.")
       .def_property_readonly(
-          "why_not", [](const PlanResult& r) -> py::object { return r.report.found() ? py::object(py::none()) : py::str(r.report.why_not()); },
+          "found", [](const PlanResult& r) { return r.report.found(); },
+          "True when a certified path was found (status \"solved\").")
+      .def_property_readonly(
+          "status", [](const PlanResult& r) { return std::string(to_string(r.report.status())); },
+          "What became of the query, the JSON's word: solved, no_path, not_found, limit, invalid_query, local_minimum.")
+      .def_property_readonly(
+          "why_not",
+          [](const PlanResult& r) -> py::object {
+            return r.report.found() ? py::object(py::none()) : py::str(r.report.why_not());
+          },
           "When not found, one sentence saying why; None when found.")
       .def_property_readonly(
-          "length", [](const PlanResult& r) -> py::object { return r.report.found() ? py::object(py::float_(r.report.length())) : py::object(py::none()); },
-          "The path's length in the planner's metric (Euclidean; an arm's: the sum of the joints' turns); None when not found.")
-      .def_property_readonly("path", [](const PlanResult& r) { return rows_of(r.report.path(), r.report.path_columns()); },
-                             "The path: a new float64 array of shape (N, 2) for points, (N, 3) [x, y, theta degrees] for poses, "
-                             "(N, joints) for an arm; (0, k) when not found.")
+          "length",
+          [](const PlanResult& r) -> py::object {
+            return r.report.found() ? py::object(py::float_(r.report.length())) : py::object(py::none());
+          },
+          "The path's length in the planner's metric (Euclidean; an arm's: the sum of the joints' turns); None when "
+          "not found.")
       .def_property_readonly(
-          "path_exact", &exact_path,
-          "The path exactly: a list of tuples of fractions.Fraction, (x, y) for points, (x, y, sin, cos) for poses (the exact "
-          "rotation); None for an arm or a car (joint angles and a car's poses are doubles).")
+          "path", [](const PlanResult& r) { return rows_of(r.report.path(), r.report.path_columns()); },
+          "The path: a new float64 array of shape (N, 2) for points, (N, 3) [x, y, theta degrees] for poses, "
+          "(N, joints) for an arm; (0, k) when not found.")
+      .def_property_readonly("path_exact", &exact_path,
+                             "The path exactly: a list of tuples of fractions.Fraction, (x, y) for points, (x, y, sin, "
+                             "cos) for poses (the exact "
+                             "rotation); None for an arm or a car (joint angles and a car's poses are doubles).")
       .def_property_readonly(
           "segments",
           [](const PlanResult& r) -> py::object {
             const nlohmann::json j = r.report.to_json();
             return j.contains("segments") ? from_json(j["segments"]) : py::object(py::none());
           },
-          "A car's path as it drives: a list of dicts {steer: \"L\"|\"S\"|\"R\", gear: 1|-1, length, start: [x, y, theta]}, one per "
+          "A car's path as it drives: a list of dicts {steer: \"L\"|\"S\"|\"R\", gear: 1|-1, length, start: [x, y, "
+          "theta]}, one per "
           "segment; None for other robots.")
-      .def_property_readonly("certified", [](const PlanResult& r) { return r.report.certificate().certified; },
-                             "Whether every configuration along the path was proved free (every found path is).")
+      .def_property_readonly(
+          "certified", [](const PlanResult& r) { return r.report.certificate().certified; },
+          "Whether every configuration along the path was proved free (every found path is).")
       .def_property_readonly(
           "certified_by",
           [](const PlanResult& r) -> py::object {
@@ -138,26 +156,34 @@ the planner's counts and measures, nested as in the JSON.)")
             return c.certified ? py::object(py::str(c.method)) : py::object(py::none());
           },
           "How the path was proved free, e.g. \"exact path check (triangulation walk)\"; None when not certified.")
-      .def_property_readonly("facts", [](const PlanResult& r) { return from_json(r.report.facts_json()); },
-                             "Everything the JSON holds beside the answer, as a dict nested as there: the planner's facts "
-                             "(facts[\"search\"][\"expanded\"], facts[\"roadmap\"][\"vertices\"], ...), clearance and bottleneck, "
-                             "a planner's further paths")
-      .def_property_readonly("query", [](const PlanResult& r) { return r.report.query(); }, "The query's name (\"start/goal\", \"queries[2]\", ...).")
-      .def_property_readonly("planner", [](const PlanResult& r) { return r.report.planner(); }, "The planner's name.")
       .def_property_readonly(
-          "problem", [](const PlanResult& r) { return r.problem; },
-          "The World or Arm it was planned in.")
+          "facts", [](const PlanResult& r) { return from_json(r.report.facts_json()); },
+          "Everything the JSON holds beside the answer, as a dict nested as there: the planner's facts "
+          "(facts[\"search\"][\"expanded\"], facts[\"roadmap\"][\"vertices\"], ...), clearance and bottleneck, "
+          "a planner's further paths")
+      .def_property_readonly(
+          "query", [](const PlanResult& r) { return r.report.query(); },
+          "The query's name (\"start/goal\", \"queries[2]\", ...).")
+      .def_property_readonly(
+          "planner", [](const PlanResult& r) { return r.report.planner(); }, "The planner's name.")
+      .def_property_readonly(
+          "problem", [](const PlanResult& r) { return r.problem; }, "The World or Arm it was planned in.")
       .def_property_readonly("graph", &graph,
-                             "The roadmap or tree when the query recorded one: Graph(kind, vertices (V, k) float64, edges (E, 2) int64); else None.")
+                             "The roadmap or tree when the query recorded one: Graph(kind, vertices (V, k) float64, "
+                             "edges (E, 2) int64); else None.")
       .def_property_readonly(
-          "expanded", [](const PlanResult& r) { return rows_of(r.report.recording().expanded, r.report.path_columns()); },
+          "expanded",
+          [](const PlanResult& r) { return rows_of(r.report.recording().expanded, r.report.path_columns()); },
           "Where the search expanded, in order (recorded queries), an (M, k) float64 array.")
-      .def_property_readonly("cells", &cells,
-                             "The planner's cells when it has some: Cells(states (rows, columns) uint8 [0 not evaluated, 1 free, "
-                             "2 blocked, 3 ridge], x0, y0, cell_width, cell_height, values, value_name, wraps); else None.")
-      .def_property_readonly("decomposition", &decomposition, "The convex cells of a decomposition (trapezoids), (n, k) arrays; else None.")
-      .def("to_json", [](const PlanResult& r) { return r.report.to_json().dump(2); },
-           "The JSON text `polyplan plan --json -` (or `polyplan arm`) prints for this query.")
+      .def_property_readonly(
+          "cells", &cells,
+          "The planner's cells when it has some: Cells(states (rows, columns) uint8 [0 not evaluated, 1 free, "
+          "2 blocked, 3 ridge], x0, y0, cell_width, cell_height, values, value_name, wraps); else None.")
+      .def_property_readonly("decomposition", &decomposition,
+                             "The convex cells of a decomposition (trapezoids), (n, k) arrays; else None.")
+      .def(
+          "to_json", [](const PlanResult& r) { return r.report.to_json().dump(2); },
+          "The JSON text `polyplan plan --json -` (or `polyplan arm`) prints for this query.")
       .def("__repr__", [](const PlanResult& r) {
         const nlohmann::json j = r.report.to_json();
         return "<polyplan.Plan " + r.report.planner() + " " + r.report.query() + ": " + j["status"].get<std::string>() +
@@ -170,9 +196,11 @@ the planner's counts and measures, nested as in the JSON.)")
         std::vector<const PlanResult*> list;
         if (py::isinstance<PlanResult>(plans)) list.push_back(&plans.cast<const PlanResult&>());
         else if (!plans.is_none()) {
-          if (!py::isinstance<py::iterable>(plans)) throw InputError("svg: expected a Plan or a list of Plan, got " + type_name(plans));
+          if (!py::isinstance<py::iterable>(plans))
+            throw InputError("svg: expected a Plan or a list of Plan, got " + type_name(plans));
           for (py::handle p : plans) {
-            if (!py::isinstance<PlanResult>(p)) throw InputError("svg: expected a Plan or a list of Plan, got " + type_name(p));
+            if (!py::isinstance<PlanResult>(p))
+              throw InputError("svg: expected a Plan or a list of Plan, got " + type_name(p));
             list.push_back(&p.cast<const PlanResult&>());
           }
         }

@@ -4,8 +4,8 @@
 
 #include <polyplan/problem/report.hpp>
 
-#include <nlohmann/json_fwd.hpp>
 #include <pybind11/pybind11.h>
+#include <nlohmann/json_fwd.hpp>
 
 #include <memory>
 #include <string>

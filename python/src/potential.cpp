@@ -21,7 +21,8 @@ namespace {
 
 std::size_t cells_of(const py::handle& value) {
   const Rational n = exact_number(value, "cells");
-  if (n.get_den() != 1 || n < 0 || !n.get_num().fits_ulong_p()) throw InputError("cells: expected an integer from 1 to 4096, got " + std::string(py::str(value)));
+  if (n.get_den() != 1 || n < 0 || !n.get_num().fits_ulong_p())
+    throw InputError("cells: expected an integer from 1 to 4096, got " + std::string(py::str(value)));
   return n.get_num().get_ui();
 }
 
@@ -29,7 +30,8 @@ std::size_t cells_of(const py::handle& value) {
 std::optional<BoxGrid> box_of(const py::handle& value, std::size_t cells) {
   if (value.is_none()) return std::nullopt;
   const std::vector<double> v = finite_numbers(value, "box");
-  if (v.size() != 4) throw InputError("box: expected (xmin, ymin, xmax, ymax), got " + std::to_string(v.size()) + " numbers");
+  if (v.size() != 4)
+    throw InputError("box: expected (xmin, ymin, xmax, ymax), got " + std::to_string(v.size()) + " numbers");
   return BoxGrid{v[0], v[1], v[2], v[3], cells};
 }
 
@@ -38,8 +40,9 @@ std::optional<BoxGrid> box_of(const py::handle& value, std::size_t cells) {
 void bind_potential(py::module_& m) {
   m.def(
       "potential",
-      [](const py::object& given, const py::object& zeta, const py::object& d_star, const py::object& eta, const py::object& q_star,
-         const py::object& box_given, const py::object& cells_given, const py::object& picture) {
+      [](const py::object& given, const py::object& zeta, const py::object& d_star, const py::object& eta,
+         const py::object& q_star, const py::object& box_given, const py::object& cells_given,
+         const py::object& picture) {
         const std::shared_ptr<WorldHandle> world = world_of(given, "potential");
         const Vec2 goal = potential_goal(world->world());
         const PotentialParameters parameters{{finite_number(zeta, "zeta"), finite_number(d_star, "d_star")},

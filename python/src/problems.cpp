@@ -85,7 +85,8 @@ std::shared_ptr<ProblemHandle> problem_of(py::handle value, const std::string& w
 }
 
 std::shared_ptr<WorldHandle> world_of(py::handle value, const std::string& what) {
-  if (!py::isinstance<WorldHandle>(value)) throw InputError(what + ": expected a polyplan.World, got " + type_name(value));
+  if (!py::isinstance<WorldHandle>(value))
+    throw InputError(what + ": expected a polyplan.World, got " + type_name(value));
   return value.cast<WorldPtr>();
 }
 
@@ -99,12 +100,15 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
       .def_static(
           "from_json",
           [](const py::object& text, const py::object& name) {
-            return read_warning<WorldHandle>(
-                [&](auto* warnings) { return parse_world(text_of(text, "World.from_json: text"), text_of(name, "World.from_json: name"), warnings); });
+            return read_warning<WorldHandle>([&](auto* warnings) {
+              return parse_world(text_of(text, "World.from_json: text"), text_of(name, "World.from_json: name"),
+                                 warnings);
+            });
           },
           py::arg("text"), py::arg("name") = "<json>",
           "The world in a world file's JSON text; `name` stands for the file in messages and relative paths.")
-      .def_property_readonly("source", [](const WorldHandle& w) { return w.world().source; }, "The file (or name) it was read from.")
+      .def_property_readonly(
+          "source", [](const WorldHandle& w) { return w.world().source; }, "The file (or name) it was read from.")
       .def_property_readonly(
           "bounds",
           [](const WorldHandle& w) -> py::object {
@@ -113,8 +117,9 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
             return py::make_tuple(fraction(b.xmin), fraction(b.ymin), fraction(b.xmax), fraction(b.ymax));
           },
           "(xmin, ymin, xmax, ymax) as Fractions, or None for an unbounded world.")
-      .def_property_readonly("obstacles", [](const WorldHandle& w) { return rings(w.world().obstacles); },
-                             "Each obstacle's outer boundary, an (N, 2) float64 array (counter-clockwise).")
+      .def_property_readonly(
+          "obstacles", [](const WorldHandle& w) { return rings(w.world().obstacles); },
+          "Each obstacle's outer boundary, an (N, 2) float64 array (counter-clockwise).")
       .def_property_readonly(
           "robot",
           [](const WorldHandle& w) {
@@ -133,7 +138,8 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
             out["reverse"] = car->reverse;
             return out;
           },
-          "When the robot steers like a car: {\"turning_radius\": R, \"reverse\": bool} (the car planners plan for it); else None.")
+          "When the robot steers like a car: {\"turning_radius\": R, \"reverse\": bool} (the car planners plan for "
+          "it); else None.")
       .def_property_readonly(
           "queries",
           [](const WorldHandle& w) {
@@ -141,33 +147,45 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
             for (const Query& q : w.world().queries) out.append(query_tuple(q));
             return out;
           },
-          "The world's queries as (name, start, goal); start and goal are (x, y) Fractions, or (x, y, theta) with theta in degrees.")
+          "The world's queries as (name, start, goal); start and goal are (x, y) Fractions, or (x, y, theta) with "
+          "theta in degrees.")
       .def("__repr__", [](const WorldHandle& w) {
         const World& world = w.world();
         return "<polyplan.World " + world.source + ": " + std::to_string(world.obstacles.size()) + " obstacle(s), " +
-               (world.robot.is_point() ? std::string("point robot") : std::to_string(world.robot.parts.size()) + "-part robot") +
-               (world.robot.car ? std::string(world.robot.car->reverse ? " (a Reeds–Shepp car)" : " (a Dubins car)") : std::string()) +
+               (world.robot.is_point() ? std::string("point robot")
+                                       : std::to_string(world.robot.parts.size()) + "-part robot") +
+               (world.robot.car ? std::string(world.robot.car->reverse ? " (a Reeds–Shepp car)" : " (a Dubins car)")
+                                : std::string()) +
                ", " + std::to_string(world.queries.size()) + " query(ies)>";
       });
 
-  py::class_<ArmHandle, ArmPtr>(m, "Arm", R"(A planar n-link arm among obstacle polygons and points (docs/design.md "Arm file").
+  py::class_<ArmHandle, ArmPtr>(m, "Arm",
+                                R"(A planar n-link arm among obstacle polygons and points (docs/design.md "Arm file").
 
 Read one with polyplan.read_arm(path), Arm.from_json(text) or Arm.from_dict(d). Joint angles
 are radians, relative (theta1 from +x, theta_i from link i-1).)")
       .def_static(
           "from_json",
           [](const py::object& text, const py::object& name) {
-            return read_warning<ArmHandle>(
-                [&](auto* warnings) { return parse_arm_problem(text_of(text, "Arm.from_json: text"), text_of(name, "Arm.from_json: name"), warnings); });
+            return read_warning<ArmHandle>([&](auto* warnings) {
+              return parse_arm_problem(text_of(text, "Arm.from_json: text"), text_of(name, "Arm.from_json: name"),
+                                       warnings);
+            });
           },
-          py::arg("text"), py::arg("name") = "<json>", "The arm in an arm file's JSON text; `name` stands for the file in messages.")
-      .def_property_readonly("source", [](const ArmHandle& a) { return a.problem().source; }, "The file (or name) it was read from.")
-      .def_property_readonly("links", [](const ArmHandle& a) { return a.problem().arm.links; }, "The link lengths, base first.")
-      .def_property_readonly("joints", [](const ArmHandle& a) { return a.problem().arm.joints(); }, "The number of joints (= links).")
-      .def_property_readonly("link_width", [](const ArmHandle& a) { return a.problem().arm.link_width; },
-                             "0: links are segments; w > 0: each link is a w-wide rectangle.")
-      .def_property_readonly("obstacles", [](const ArmHandle& a) { return rings(a.problem().obstacles); },
-                             "Each obstacle polygon's outer boundary, an (N, 2) float64 array.")
+          py::arg("text"), py::arg("name") = "<json>",
+          "The arm in an arm file's JSON text; `name` stands for the file in messages.")
+      .def_property_readonly(
+          "source", [](const ArmHandle& a) { return a.problem().source; }, "The file (or name) it was read from.")
+      .def_property_readonly(
+          "links", [](const ArmHandle& a) { return a.problem().arm.links; }, "The link lengths, base first.")
+      .def_property_readonly(
+          "joints", [](const ArmHandle& a) { return a.problem().arm.joints(); }, "The number of joints (= links).")
+      .def_property_readonly(
+          "link_width", [](const ArmHandle& a) { return a.problem().arm.link_width; },
+          "0: links are segments; w > 0: each link is a w-wide rectangle.")
+      .def_property_readonly(
+          "obstacles", [](const ArmHandle& a) { return rings(a.problem().obstacles); },
+          "Each obstacle polygon's outer boundary, an (N, 2) float64 array.")
       .def_property_readonly(
           "points",
           [](const ArmHandle& a) {
@@ -184,7 +202,8 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
             for (const auto& [lo, hi] : a.problem().arm.limits) out.append(py::make_tuple(lo, hi));
             return out;
           },
-          "Each joint's limits (lo, hi) in radians, read round the circle, which inverse kinematics keeps to; None without.")
+          "Each joint's limits (lo, hi) in radians, read round the circle, which inverse kinematics keeps to; None "
+          "without.")
       .def_property_readonly(
           "queries",
           [](const ArmHandle& a) {
@@ -196,7 +215,8 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
               }
               py::dict goal;
               goal["point"] = py::make_tuple(q.goal_point->point.x(), q.goal_point->point.y());
-              goal["orientation"] = q.goal_point->orientation ? py::object(py::float_(*q.goal_point->orientation)) : py::none();
+              goal["orientation"] =
+                  q.goal_point->orientation ? py::object(py::float_(*q.goal_point->orientation)) : py::none();
               out.append(py::make_tuple(q.name, q.start, goal));
             }
             return out;
@@ -214,7 +234,8 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
             for (const auto& p : polyplan::joint_positions(a.problem().arm, q)) rows.push_back({p.x(), p.y()});
             return rows_array(rows, 2);
           },
-          py::arg("angles"), "The base, every joint and the tip at these joint angles: a (joints + 1, 2) float64 array.")
+          py::arg("angles"),
+          "The base, every joint and the tip at these joint angles: a (joints + 1, 2) float64 array.")
       .def("__repr__", [](const ArmHandle& a) {
         const ArmProblem& p = a.problem();
         return "<polyplan.Arm " + p.source + ": " + std::to_string(p.arm.joints()) + " link(s), " +
@@ -225,27 +246,36 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
   m.def(
       "read_world",
       [](const py::object& path) {
-        return read_warning<WorldHandle>([&](auto* warnings) { return read_world(path_of(path, "read_world: path"), warnings); });
+        return read_warning<WorldHandle>(
+            [&](auto* warnings) { return read_world(path_of(path, "read_world: path"), warnings); });
       },
-      py::arg("path"), "The world file at `path` (JSON). Raises InputError naming the file and the object for bad input.");
+      py::arg("path"),
+      "The world file at `path` (JSON). Raises InputError naming the file and the object for bad input.");
   m.def(
       "read_arm",
       [](const py::object& path) {
-        return read_warning<ArmHandle>([&](auto* warnings) { return read_arm_problem(path_of(path, "read_arm: path"), warnings); });
+        return read_warning<ArmHandle>(
+            [&](auto* warnings) { return read_arm_problem(path_of(path, "read_arm: path"), warnings); });
       },
-      py::arg("path"), "The arm file at `path` (JSON). Raises InputError naming the file and the object for bad input.");
+      py::arg("path"),
+      "The arm file at `path` (JSON). Raises InputError naming the file and the object for bad input.");
 
-  py::class_<CSpaceView>(m, "CSpace", "A world's exact configuration space (polyplan.cspace(world)): the C-obstacles and the free space.")
+  py::class_<CSpaceView>(
+      m, "CSpace", "A world's exact configuration space (polyplan.cspace(world)): the C-obstacles and the free space.")
       .def_property_readonly(
           "obstacles",
           [](const CSpaceView& v) {
-            return rings(locked(v.world->lock(), [&]() -> const auto& { return v.world->cspace().cobstacles(); }));
+            return rings(locked(
+                v.world->lock(), [&]() -> const auto& { return v.world->cspace().cobstacles(); }));
           },
-          "Each C-obstacle's outer boundary (the obstacles grown by the reflected robot, merged), an (N, 2) float64 array.")
-      .def_property_readonly("free_components", &free_components,
-                             "The free space's connected components: FreeComponent(outer, holes, area), outer None and area "
-                             "None for an unbounded one; area an exact Fraction.")
-      .def_property_readonly("free_area", &free_area, "The free space's exact area (a Fraction); None when it is unbounded.")
+          "Each C-obstacle's outer boundary (the obstacles grown by the reflected robot, merged), an (N, 2) float64 "
+          "array.")
+      .def_property_readonly(
+          "free_components", &free_components,
+          "The free space's connected components: FreeComponent(outer, holes, area), outer None and area "
+          "None for an unbounded one; area an exact Fraction.")
+      .def_property_readonly("free_area", &free_area,
+                             "The free space's exact area (a Fraction); None when it is unbounded.")
       .def("__repr__", [](const CSpaceView& v) { return "<polyplan.CSpace of " + v.world->world().source + ">"; });
 
   m.def(

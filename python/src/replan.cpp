@@ -40,27 +40,40 @@ py::list cells(const std::vector<GridPoint>& points) {
 
 void bind_replan(py::module_& m) {
   py::class_<ReplanResult>(m, "Drive", "A robot's drive through a map it discovered (polyplan.replan).")
-      .def_property_readonly("found", [](const ReplanResult& r) { return r.found; }, "Whether it reached the goal.")
-      .def_property_readonly("status", [](const ReplanResult& r) { return std::string(to_string(r.status)); },
-                             "\"solved\", \"no_path\" (the goal unreachable on what it knew) or \"limit\".")
-      .def_property_readonly("algorithm", [](const ReplanResult& r) { return std::string(to_string(r.algorithm)); },
-                             "\"dstar-lite\", \"lpastar\" or \"astar\".")
-      .def_property_readonly("traversed", [](const ReplanResult& r) { return cells(r.traversed); },
-                             "The cells it stood on, (x, y) tuples, the start first.")
-      .def_property_readonly("traversed_cost", [](const ReplanResult& r) { return r.traversed_cost.to_double(); },
-                             "The cost it drove (moves 1 and √2).")
-      .def_property_readonly("traversed_cost_exact", [](const ReplanResult& r) { return r.traversed_cost.to_string(); },
-                             "The same, exactly: \"a + b√2\".")
-      .def_property_readonly("moves", [](const ReplanResult& r) { return r.moves; }, "Moves made.")
-      .def_property_readonly("replans", [](const ReplanResult& r) { return r.replans; },
-                             "Searches run: the first, and one after each sensing that changed what it knew.")
-      .def_property_readonly("expanded", [](const ReplanResult& r) { return r.expanded; }, "Vertices expanded, all replans.")
-      .def_property_readonly("generated", [](const ReplanResult& r) { return r.generated; }, "Vertices put in an open list.")
-      .def_property_readonly("heap_operations", [](const ReplanResult& r) { return r.heap_operations; },
-                             "Pushes, pops, key updates and removals, all replans.")
-      .def_property_readonly("seconds", [](const ReplanResult& r) { return r.seconds; }, "Time spent replanning.")
-      .def_property_readonly("last_plan", [](const ReplanResult& r) { return cells(r.last_plan); },
-                             "The last planned path, from where it was made.")
+      .def_property_readonly(
+          "found", [](const ReplanResult& r) { return r.found; }, "Whether it reached the goal.")
+      .def_property_readonly(
+          "status", [](const ReplanResult& r) { return std::string(to_string(r.status)); },
+          "\"solved\", \"no_path\" (the goal unreachable on what it knew) or \"limit\".")
+      .def_property_readonly(
+          "algorithm", [](const ReplanResult& r) { return std::string(to_string(r.algorithm)); },
+          "\"dstar-lite\", \"lpastar\" or \"astar\".")
+      .def_property_readonly(
+          "traversed", [](const ReplanResult& r) { return cells(r.traversed); },
+          "The cells it stood on, (x, y) tuples, the start first.")
+      .def_property_readonly(
+          "traversed_cost", [](const ReplanResult& r) { return r.traversed_cost.to_double(); },
+          "The cost it drove (moves 1 and √2).")
+      .def_property_readonly(
+          "traversed_cost_exact", [](const ReplanResult& r) { return r.traversed_cost.to_string(); },
+          "The same, exactly: \"a + b√2\".")
+      .def_property_readonly(
+          "moves", [](const ReplanResult& r) { return r.moves; }, "Moves made.")
+      .def_property_readonly(
+          "replans", [](const ReplanResult& r) { return r.replans; },
+          "Searches run: the first, and one after each sensing that changed what it knew.")
+      .def_property_readonly(
+          "expanded", [](const ReplanResult& r) { return r.expanded; }, "Vertices expanded, all replans.")
+      .def_property_readonly(
+          "generated", [](const ReplanResult& r) { return r.generated; }, "Vertices put in an open list.")
+      .def_property_readonly(
+          "heap_operations", [](const ReplanResult& r) { return r.heap_operations; },
+          "Pushes, pops, key updates and removals, all replans.")
+      .def_property_readonly(
+          "seconds", [](const ReplanResult& r) { return r.seconds; }, "Time spent replanning.")
+      .def_property_readonly(
+          "last_plan", [](const ReplanResult& r) { return cells(r.last_plan); },
+          "The last planned path, from where it was made.")
       .def_property_readonly(
           "steps",
           [](const ReplanResult& r) {
@@ -77,14 +90,16 @@ void bind_replan(py::module_& m) {
             }
             return out;
           },
-          "One dict per cell it planned from (at, cost_to_goal, cost_to_goal_exact, expanded, changed_cells, replanned).")
+          "One dict per cell it planned from (at, cost_to_goal, cost_to_goal_exact, expanded, changed_cells, "
+          "replanned).")
       .def_property_readonly(
           "knowledge",
           [](const ReplanResult& r) {
             py::array_t<std::uint8_t> a({r.height, r.width});
             auto v = a.mutable_unchecked<2>();
             for (int y = 0; y < r.height; ++y)
-              for (int x = 0; x < r.width; ++x) v(y, x) = static_cast<std::uint8_t>(r.knowledge[static_cast<std::size_t>(y) * r.width + x]);
+              for (int x = 0; x < r.width; ++x)
+                v(y, x) = static_cast<std::uint8_t>(r.knowledge[static_cast<std::size_t>(y) * r.width + x]);
             return a;
           },
           "What it knew at the end, knowledge[row, column]: 0 unknown, 1 free, 2 blocked (uint8).")
@@ -95,13 +110,14 @@ void bind_replan(py::module_& m) {
           },
           py::arg("animate") = false, "The picture (or, animate=True, the animation) as SVG text.")
       .def("__repr__", [](const ReplanResult& r) {
-        return "<polyplan.Drive " + std::string(to_string(r.algorithm)) + " " + std::string(to_string(r.status)) + " after " +
-               std::to_string(r.moves) + " moves, " + std::to_string(r.replans) + " replans>";
+        return "<polyplan.Drive " + std::string(to_string(r.algorithm)) + " " + std::string(to_string(r.status)) +
+               " after " + std::to_string(r.moves) + " moves, " + std::to_string(r.replans) + " replans>";
       });
 
   m.def(
       "replan",
-      [](const py::object& map, const py::object& start, const py::object& goal, double sensor, const std::string& algorithm) {
+      [](const py::object& map, const py::object& start, const py::object& goal, double sensor,
+         const std::string& algorithm) {
         ReplanOptions options;
         options.algorithm = parse_replan_algorithm(algorithm, "algorithm");
         options.sensor_radius = sensor;

@@ -1,5 +1,5 @@
-// polyplan.search_graph: a search on the course's graph-search homework's graph_vector (polyplan search), its path, cost,
-// counts and trace as a dict, and its picture.
+// polyplan.search_graph: a search on the course's graph-search homework's graph_vector (polyplan search), its path,
+// cost, counts and trace as a dict, and its picture.
 #include "plans.hpp"
 
 #include <polyplan/draw/search_svg.hpp>
@@ -73,7 +73,8 @@ void bind_search(py::module_& m) {
                              " (0-based indices [0, " + std::to_string(n) + "))");
         SearchOptions options;
         const auto algorithm = search_from_string(method);
-        if (!algorithm) throw InputError("method " + method + ": unknown method (astar, dijkstra, bfs, dfs, greedy, wastar)");
+        if (!algorithm)
+          throw InputError("method " + method + ": unknown method (astar, dijkstra, bfs, dfs, greedy, wastar)");
         options.algorithm = *algorithm;
         if (options.algorithm == Search::wastar && !(std::isfinite(weight) && weight >= 1))
           throw InputError("weight " + std::to_string(weight) + ": weighted A* needs a finite weight >= 1");
@@ -84,13 +85,13 @@ void bind_search(py::module_& m) {
         return result_dict(shortest_path(g, from, to, options), g, from, to);
       },
       py::arg("graph"), py::arg("start"), py::arg("goal"), py::arg("method") = "astar", py::arg("weight") = 1.5,
-      R"(Searches a graph in the course's graph-search homework's format, a file's path or the list of dicts itself ({"x": [x, y],
-"neighbors": [...], "neighbors_cost": [...]}, 0-based; "g" and "backpointer" ignored), from vertex
-`start` to `goal` with `method` (astar, dijkstra, bfs, dfs, greedy, wastar with `weight`) and the
-Euclidean heuristic, as `polyplan search` does. Returns a dict: found, method, path (indices), cost
-(None without a path), expanded, generated, expansion_order, trace (one dict per expansion: step,
-vertex, g, h, f, backpointer, open), svg and animation (the pictures as SVG text). Raises InputError
-for a bad graph (naming the vertex), vertex or method.)");
+      R"(Searches a graph in the course's graph-search homework's format, a file's path or the list of dicts
+itself ({"x": [x, y], "neighbors": [...], "neighbors_cost": [...]}, 0-based; "g" and "backpointer"
+ignored), from vertex `start` to `goal` with `method` (astar, dijkstra, bfs, dfs, greedy, wastar
+with `weight`) and the Euclidean heuristic, as `polyplan search` does. Returns a dict: found,
+method, path (indices), cost (None without a path), expanded, generated, expansion_order, trace (one
+dict per expansion: step, vertex, g, h, f, backpointer, open), svg and animation (the pictures as
+SVG text). Raises InputError for a bad graph (naming the vertex), vertex or method.)");
 }
 
 }  // namespace polyplan::python

@@ -39,7 +39,9 @@ TEST(Collision, PointOnASegmentLinkCollidesOneUlpBesideItDoesNot) {
 
 TEST(Collision, RectangleLinkCatchesPointsWithinHalfTheWidth) {
   const Arm arm = arm_of({2}, 0.5);
-  auto free_with_point = [&](double x, double y) { return ArmCollisionChecker(arm, {}, {Eigen::Vector2d(x, y)}).is_free({0}); };
+  auto free_with_point = [&](double x, double y) {
+    return ArmCollisionChecker(arm, {}, {Eigen::Vector2d(x, y)}).is_free({0});
+  };
   EXPECT_FALSE(free_with_point(1, 0.24));
   EXPECT_FALSE(free_with_point(1, -0.24));
   EXPECT_FALSE(free_with_point(1, 0.25));  // on the long side: closed
@@ -91,10 +93,11 @@ TEST(Collision, PolygonBoundaryInteriorAndHoles) {
   // A 10×10 square with a 6×6 hole: the hole's interior is free, its boundary is not.
   PolygonWithHoles frame = square(5);
   frame.holes.push_back(ring({{-3, -3}, {-3, 3}, {3, 3}, {3, -3}}));
-  for (int k = 0; k < 36; ++k) EXPECT_TRUE(ArmCollisionChecker(arm_of({2}), {frame}, {}).is_free({k * two_pi / 36})) << k;
+  for (int k = 0; k < 36; ++k)
+    EXPECT_TRUE(ArmCollisionChecker(arm_of({2}), {frame}, {}).is_free({k * two_pi / 36})) << k;
   const ArmCollisionChecker three(arm_of({3}), {frame}, {});
-  EXPECT_FALSE(three.is_free({0}));        // the tip (3, 0) is on the hole's boundary
-  EXPECT_TRUE(three.is_free({kPi / 4}));   // the tip (2.12, 2.12) is inside the hole
+  EXPECT_FALSE(three.is_free({0}));       // the tip (3, 0) is on the hole's boundary
+  EXPECT_TRUE(three.is_free({kPi / 4}));  // the tip (2.12, 2.12) is inside the hole
   const auto contact = ArmCollisionChecker(arm_of({1, 3}), {frame}, {}).first_contact({0, 0});
   ASSERT_TRUE(contact);
   EXPECT_EQ(contact->describe(), "link 2 meets obstacles[0]");
@@ -146,7 +149,8 @@ TEST(Collision, FirstContactOrderCountsAndBadArguments) {
   const auto contact = checker.first_contact({0, 0});
   ASSERT_TRUE(contact);
   EXPECT_EQ(contact->describe(), "link 1 meets obstacles[0]");
-  const auto second = ArmCollisionChecker(arm_of({3, 3}), {}, {Eigen::Vector2d(1, 1), Eigen::Vector2d(4, 0)}).first_contact({0, 0});
+  const auto second =
+      ArmCollisionChecker(arm_of({3, 3}), {}, {Eigen::Vector2d(1, 1), Eigen::Vector2d(4, 0)}).first_contact({0, 0});
   ASSERT_TRUE(second);
   EXPECT_EQ(second->describe(), "link 2 meets points[1]");
   EXPECT_EQ(checker.checks(), 1u);
@@ -377,8 +381,9 @@ TEST(Clearance, NeverAboveIndependentDistancesOnTheShippedArms) {
           for (std::size_t v = 0; v < 3 && within_reach_box(t, p.arm.reach()); ++v) {
             const long double ax = to_double(t.outer[v].x), ay = to_double(t.outer[v].y);
             const long double bx = to_double(t.outer[(v + 1) % 3].x), by = to_double(t.outer[(v + 1) % 3].y);
-            nearest = std::min({nearest, point_segment_distance(ax, ay, x, y, ex, ey), point_segment_distance(bx, by, x, y, ex, ey),
-                                point_segment_distance(x, y, ax, ay, bx, by), point_segment_distance(ex, ey, ax, ay, bx, by)});
+            nearest = std::min(
+                {nearest, point_segment_distance(ax, ay, x, y, ex, ey), point_segment_distance(bx, by, x, y, ex, ey),
+                 point_segment_distance(x, y, ax, ay, bx, by), point_segment_distance(ex, ey, ax, ay, bx, by)});
           }
         ASSERT_LE(c[k], static_cast<double>(nearest)) << k;
         ASSERT_GE(c[k], static_cast<double>(nearest) - 1e-9) << k;

@@ -8,8 +8,8 @@
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/world.hpp>
-#include <polyplan/plan/plan_report.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/plan_report.hpp>
 
 #include <gtest/gtest.h>
 
@@ -49,14 +49,17 @@ inline Arm arm_of(std::vector<double> links, double width = 0, bool self_collisi
 // Whether every configuration at samples `resolution` radians apart (arm/arm_motion.hpp's
 // motion_samples) is free: the sampled check certification replaced, kept here to show what it
 // misses and to check certificates independently with dense samples.
-inline bool samples_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to, double resolution) {
+inline bool samples_free(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to,
+                         double resolution) {
   for (const JointAngles& q : motion_samples(from, to, resolution))
     if (!checker.is_free(q)) return false;
   return true;
 }
 
 // A shipped arm file: data/arms/<name>.
-inline std::string arm_data_file(const std::string& name) { return std::string(POLYPLAN_SOURCE_DIR) + "/data/arms/" + name; }
+inline std::string arm_data_file(const std::string& name) {
+  return std::string(POLYPLAN_SOURCE_DIR) + "/data/arms/" + name;
+}
 
 // Where the hand of an arm with these links is at `angles`: forward kinematics written out here, apart
 // from the library's joint_positions, for the tests that check a planner's hand against a point.
@@ -76,7 +79,8 @@ inline bool keeps_limits(const JointAngles& angles, const std::vector<std::pair<
   for (std::size_t i = 0; i < limits.size(); ++i) {
     const auto [lo, hi] = limits[i];
     bool within = hi - lo >= two_pi;
-    for (int k = -3; k <= 3 && !within; ++k) within = angles[i] + k * two_pi >= lo - 1e-12 && angles[i] + k * two_pi <= hi + 1e-12;
+    for (int k = -3; k <= 3 && !within; ++k)
+      within = angles[i] + k * two_pi >= lo - 1e-12 && angles[i] + k * two_pi <= hi + 1e-12;
     if (!within) return false;
   }
   return true;
@@ -100,7 +104,8 @@ inline void expect_hand_at_goal(const Arm& arm, const WorkspaceGoal& goal, const
 // ends at its goal (normalised) — or, for a goal in the workspace, with the hand at the point
 // (expect_hand_at_goal) —, and every motion is free at samples 0.01° apart (of the joint that
 // turns most) and certified again. Returns the sum of the joints' short-way turns.
-inline double expect_arm_path_free(const ArmCollisionChecker& checker, const ArmQuery& q, const std::vector<JointAngles>& path) {
+inline double expect_arm_path_free(const ArmCollisionChecker& checker, const ArmQuery& q,
+                                   const std::vector<JointAngles>& path) {
   if (path.size() < 2) {
     ADD_FAILURE() << "a path of " << path.size() << " configurations";
     return 0;

@@ -8,8 +8,8 @@
 #include <polyplan/arm/arm_goal_set.hpp>
 #include <polyplan/arm/inverse_kinematics.hpp>
 #include <polyplan/io/arm_reader.hpp>
-#include <polyplan/registry/registry.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/registry/registry.hpp>
 #include "arm/arm_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -62,7 +62,8 @@ double apart(const JointAngles& a, const JointAngles& b) {
 // l = [3, 2]: the hand reaches 1 ≤ d ≤ 5. (3, 4) and (5, 0) lie exactly at 5, (0, -1) and (1, 0) at 1.
 TEST(ArmGoalSet, TwoLinksExactlyOnTheAnnulusHaveOneGoalAndOneUlpBeyondNone) {
   const ArmProblem problem = problem_of(arm_of({3, 2}));
-  for (const Eigen::Vector2d& point : {Eigen::Vector2d(3, 4), Eigen::Vector2d(5, 0), Eigen::Vector2d(0, -1), Eigen::Vector2d(1, 0)}) {
+  for (const Eigen::Vector2d& point :
+       {Eigen::Vector2d(3, 4), Eigen::Vector2d(5, 0), Eigen::Vector2d(0, -1), Eigen::Vector2d(1, 0)}) {
     SCOPED_TRACE(point.transpose());
     const ArmQuery query = to_point({1, 1}, point);
     const ArmGoalSet set = goal_set_of(problem, query);
@@ -112,8 +113,9 @@ TEST(ArmGoalSet, ThreeLinksWithAnOrientationHaveTheClosedFormsGoals) {
   const ArmGoalSet none = goal_set_of(problem, to_point({0, 0, 0}, {2, 0}, M_PI));
   EXPECT_TRUE(none.goals.empty());
   EXPECT_EQ(none.status, PlanStatus::not_found);
-  EXPECT_NE(none.why_none.find("the point (2, 0) with the last link at 3.141592653589793 rad is within the arm's reach, but inverse "
-                               "kinematics found no configuration there"),
+  EXPECT_NE(none.why_none.find(
+                "the point (2, 0) with the last link at 3.141592653589793 rad is within the arm's reach, but inverse "
+                "kinematics found no configuration there"),
             std::string::npos)
       << none.why_none;
 }
@@ -126,7 +128,8 @@ TEST(ArmGoalSet, RedundantArmsHaveDistinctNumericGoalsWithinATrillionth) {
   EXPECT_LE(set.goals.size(), goal_set_seeds + 1);
   expect_goals_reach(four, set, *query.goal_point, 1e-12);
   for (std::size_t i = 0; i < set.goals.size(); ++i)
-    for (std::size_t j = i + 1; j < set.goals.size(); ++j) EXPECT_GT(apart(set.goals[i].angles, set.goals[j].angles), 1e-6);
+    for (std::size_t j = i + 1; j < set.goals.size(); ++j)
+      EXPECT_GT(apart(set.goals[i].angles, set.goals[j].angles), 1e-6);
 
   const ArmProblem six = problem_of(arm_of({1, 0.9, 0.8, 0.7, 0.6, 0.5}));
   const ArmQuery oriented = to_point(JointAngles(6, 0.0), {-1.2, 2.1}, 2.0);
@@ -184,8 +187,10 @@ TEST(ArmGoalSet, ACollidingSolutionIsNoGoal) {
   const ArmGoalSet none = goal_set_of(problem_of(arm, {{2, 0.1}, {2.1, 2.5}}), query);
   EXPECT_TRUE(none.goals.empty());
   EXPECT_EQ(none.status, PlanStatus::not_found);
-  EXPECT_EQ(none.why_none, "the point (3, 2) is within the arm's reach, but none of the 2 inverse-kinematics solution(s) found is a goal: "
-                           "2 collide (every solution there is)");
+  EXPECT_EQ(
+      none.why_none,
+      "the point (3, 2) is within the arm's reach, but none of the 2 inverse-kinematics solution(s) found is a goal: "
+      "2 collide (every solution there is)");
   // The hand inside an obstacle: every numeric solution collides, and the set says a free one may
   // have been missed (as far as the numeric method knows).
   ArmProblem walled = problem_of(arm_of({1, 1, 1}));
@@ -193,7 +198,8 @@ TEST(ArmGoalSet, ACollidingSolutionIsNoGoal) {
   walled.obstacle_names = {"obstacles[0]"};
   const ArmGoalSet missed = goal_set_of(walled, to_point({0, 0, 0}, {1.5, 1}));
   EXPECT_TRUE(missed.goals.empty());
-  EXPECT_NE(missed.why_none.find("; a free configuration the seeds missed may still exist"), std::string::npos) << missed.why_none;
+  EXPECT_NE(missed.why_none.find("; a free configuration the seeds missed may still exist"), std::string::npos)
+      << missed.why_none;
 }
 
 // The annulus of n links is the longest folded back over the rest: [5, 1, 1] reaches 3 ≤ d ≤ 7,
@@ -211,13 +217,15 @@ TEST(ArmGoalSet, TheReachOfNLinksIsDecidedExactly) {
   EXPECT_EQ(hand_reach({0.1, 0.2}, {0.3, 0}).outer_side, 1);
   const ArmGoalSet set = goal_set_of(problem_of(arm_of({5, 1, 1})), to_point({0, 0, 0}, {0, test::down(3)}));
   EXPECT_EQ(set.status, PlanStatus::no_path);
-  EXPECT_EQ(set.why_none, "the point (0, 2.9999999999999996) is out of reach: the arm reaches distances 3 to 7 from its base");
+  EXPECT_EQ(set.why_none,
+            "the point (0, 2.9999999999999996) is out of reach: the arm reaches distances 3 to 7 from its base");
 }
 
 // An arm file's decimals are the values written: links 0.2 and 0.3 reach (0.3, 0.4) only stretched
 // out, one goal, though the doubles of the three numbers would put it out of reach.
 TEST(ArmGoalSet, AFilesDecimalGoalOnTheBoundaryHasOneGoal) {
-  const ArmProblem p = parse_arm_problem(R"({"links": [0.2, 0.3], "start": [1, 1], "goal_point": [0.3, 0.4]})", "decimal");
+  const ArmProblem p =
+      parse_arm_problem(R"({"links": [0.2, 0.3], "start": [1, 1], "goal_point": [0.3, 0.4]})", "decimal");
   EXPECT_EQ(p.arm.exact_links, (std::vector<Rational>{Rational(1, 5), Rational(3, 10)}));
   ASSERT_TRUE(p.queries[0].goal_point && p.queries[0].goal_point->exact_point);
   EXPECT_EQ(*p.queries[0].goal_point->exact_point, (ExactPoint{Rational(3, 10), Rational(2, 5)}));
@@ -248,10 +256,14 @@ TEST(ArmGoalSet, QueriesThatCannotBeAskedAreRefused) {
   const ArmCollisionChecker checker(problem_of(arm_of({1, 1})));
   ArmQuery both = to_point({0, 0}, {1, 1});
   both.goal = {1, 1};
-  EXPECT_EQ(query_not_free(checker, both), "the query reach has both goal angles and a goal point: its goal is one or the other");
-  EXPECT_EQ(query_not_free(checker, to_point({0}, {1, 1})), "the query reach has 1 start angles for an arm of 2 joints");
-  EXPECT_EQ(query_not_free(checker, to_point({0, 0}, {std::nan(""), 1})), "the query reach's goal point (or orientation) is not a finite number");
-  EXPECT_EQ(query_not_free(checker, to_point({0, 0}, {1, 1}, INFINITY)), "the query reach's goal point (or orientation) is not a finite number");
+  EXPECT_EQ(query_not_free(checker, both),
+            "the query reach has both goal angles and a goal point: its goal is one or the other");
+  EXPECT_EQ(query_not_free(checker, to_point({0}, {1, 1})),
+            "the query reach has 1 start angles for an arm of 2 joints");
+  EXPECT_EQ(query_not_free(checker, to_point({0, 0}, {std::nan(""), 1})),
+            "the query reach's goal point (or orientation) is not a finite number");
+  EXPECT_EQ(query_not_free(checker, to_point({0, 0}, {1, 1}, INFINITY)),
+            "the query reach's goal point (or orientation) is not a finite number");
   EXPECT_EQ(query_not_free(checker, to_point({0, 0}, {1, 1})), std::nullopt);
 }
 
@@ -263,7 +275,8 @@ TEST_P(EveryArmPlannerToAPoint, EndsWithTheHandAtThePointOnCertifiedMotions) {
   const ArmProblem problem = problem_of(arm_of({1.2, 1, 0.6}, 0.1), {{1.5, 1.5}, {-1, 1.8}, {0.4, -1.6}, {-2.2, -0.5}});
   const ArmCollisionChecker checker(problem);
   const PlannerEntry<PlanarArm>& entry = *planners<PlanarArm>().find(GetParam());
-  const auto planner = entry.make(problem, entry.anytime ? OptionValues{{"iterations", "20000"}} : OptionValues{});  // RRT* ends soon
+  const auto planner =
+      entry.make(problem, entry.anytime ? OptionValues{{"iterations", "20000"}} : OptionValues{});  // RRT* ends soon
   for (const ArmQuery& query : {to_point({0.3, 0.2, 0.1}, {-1.4, 1.3}), to_point({0.3, 0.2, 0.1}, {0.5, 2.2}, 2.0),
                                 to_point({0.3, 0.2, 0.1}, {2.2, -0.7})}) {
     SCOPED_TRACE(query.goal_point->point.transpose());
@@ -278,14 +291,17 @@ TEST_P(EveryArmPlannerToAPoint, EndsWithTheHandAtThePointOnCertifiedMotions) {
   const auto stuck = planners<PlanarArm>().find(GetParam())->make(blocked, {});
   const PlanReport<JointAngles> none = stuck->plan(to_point({0.3, 0.2, 0.1}, {0, 1.6}, M_PI / 2));
   EXPECT_EQ(none.status, PlanStatus::not_found);
-  EXPECT_EQ(none.why_not, "the point (0, 1.6) with the last link at 1.5707963267948966 rad is within the arm's reach, but none of the 2 "
-                          "inverse-kinematics solution(s) found is a goal: 2 collide (every solution there is)");
+  EXPECT_EQ(
+      none.why_not,
+      "the point (0, 1.6) with the last link at 1.5707963267948966 rad is within the arm's reach, but none of the 2 "
+      "inverse-kinematics solution(s) found is a goal: 2 collide (every solution there is)");
   const PlanReport<JointAngles> far = stuck->plan(to_point({0.3, 0.2, 0.1}, {0, 2.9}));
   EXPECT_EQ(far.status, PlanStatus::no_path);
   EXPECT_EQ(far.why_not, "the point (0, 2.9) is out of reach: the arm reaches distances 0 to 2.8 from its base");
 }
 
-INSTANTIATE_TEST_SUITE_P(ArmGoalSet, EveryArmPlannerToAPoint, ::testing::Values("grid", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"));
+INSTANTIATE_TEST_SUITE_P(ArmGoalSet, EveryArmPlannerToAPoint,
+                         ::testing::Values("grid", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"));
 
 }  // namespace
 }  // namespace polyplan

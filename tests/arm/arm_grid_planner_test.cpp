@@ -4,11 +4,11 @@
 #include <polyplan/arm/arm_grid_planner.hpp>
 
 #include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_facts.hpp>
 #include <polyplan/arm/arm_goal_set.hpp>
 #include <polyplan/arm/arm_grid_search.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/io/arm_reader.hpp>
-#include <polyplan/arm/arm_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include "arm/arm_fixtures.hpp"
 
@@ -85,7 +85,9 @@ void expect_valid(const ArmProblem& p, const ArmQuery& q, const PlanReport<Joint
   EXPECT_NEAR(plan.length, length, 1e-9);
 }
 
-std::int64_t cells_evaluated(const PlanReport<JointAngles>& plan) { return plan.facts.at(ArmGridFacts::cells_evaluated); }
+std::int64_t cells_evaluated(const PlanReport<JointAngles>& plan) {
+  return plan.facts.at(ArmGridFacts::cells_evaluated);
+}
 
 TEST(ArmGridPlanner, TorusKeepsTheEasyCaseShortAndTheIntervalUnwinds) {
   const ArmProblem p = read_arm_problem(arms + "two_link_points.json");
@@ -128,8 +130,9 @@ TEST(ArmGridPlanner, AQueryStopsAtItsMemoryBudget) {
   const auto stopped = plan_once(p, hard, small);
   EXPECT_FALSE(stopped.found);
   EXPECT_EQ(stopped.why_not.rfind("stopped after evaluating ", 0), 0u) << stopped.why_not;
-  EXPECT_NE(stopped.why_not.find("the memory budget of one query is 0.05 MB (option memory-mb: raise it with --memory-mb N)"),
-            std::string::npos)
+  EXPECT_NE(
+      stopped.why_not.find("the memory budget of one query is 0.05 MB (option memory-mb: raise it with --memory-mb N)"),
+      std::string::npos)
       << stopped.why_not;
   EXPECT_LE(stopped.facts.at(ArmGridFacts::memory_mb), 0.05);
   small.lazy = false;  // eager evaluation meets the budget before searching
@@ -198,7 +201,8 @@ TEST(ArmGridPlanner, CorridorPathsAreValidAndTheirBoundsAreBounds) {
       // The bound covers the grid part (the joins are the same cells at the same resolution).
       EXPECT_LE(plan.facts.at(ArmGridFacts::grid_lower_bound), best.length) << "radius " << radius;
     }
-    EXPECT_LT(plan.facts.at(ArmGridFacts::cells_evaluated), best.facts.at(ArmGridFacts::cells_evaluated) + 30000) << "radius " << radius;
+    EXPECT_LT(plan.facts.at(ArmGridFacts::cells_evaluated), best.facts.at(ArmGridFacts::cells_evaluated) + 30000)
+        << "radius " << radius;
   }
   // With a tiny exact_cells every coarse level is guided by the next coarser one too (40, 20, 10
   // and 5 degrees, each in a corridor): still a valid path, never shorter than the shortest.
@@ -346,7 +350,8 @@ TEST(ArmGridSearch, SafeAnglesAreStoredRoundedDown) {
     const double whole = std::floor(uniform(random) * 300);
     const double safe = i % 2 ? whole * unit : uniform(random) * 300 * unit;
     const std::uint8_t units = safe_angle_units(safe, unit);
-    ASSERT_LE(std::fma(static_cast<double>(units), unit, -safe), 0.0) << safe << " / " << unit << " stored as " << int(units);
+    ASSERT_LE(std::fma(static_cast<double>(units), unit, -safe), 0.0)
+        << safe << " / " << unit << " stored as " << int(units);
     const double naive = std::floor(safe / unit);
     if (naive < 255 && std::fma(naive, unit, -safe) > 0) {
       ++quotient_rounded_up;
@@ -389,7 +394,8 @@ TEST(ArmGridPlanner, ACorridorWithoutAPathGivesWayToTheWholeGrid) {
   const auto stopped = plan_once(p, p.queries[0], options);
   EXPECT_FALSE(stopped.found);
   EXPECT_EQ(stopped.status, PlanStatus::limit);
-  EXPECT_NE(stopped.why_not.find("no path within 0 coarse cells of the 5-degree path"), std::string::npos) << stopped.why_not;
+  EXPECT_NE(stopped.why_not.find("no path within 0 coarse cells of the 5-degree path"), std::string::npos)
+      << stopped.why_not;
   EXPECT_EQ(stopped.facts.at(QueryFacts::stopped_by), "memory limit");
 }
 
@@ -422,7 +428,8 @@ TEST(ArmGridPlanner, AGuideThatMissesAPassageGivesWayToAFinerGuide) {
 std::size_t grid_moves(const std::vector<JointAngles>& path, std::int64_t n) {
   const double step = two_pi / static_cast<double>(n);
   const auto on_grid = [&](const JointAngles& q) {
-    return std::all_of(q.begin(), q.end(), [&](double a) { return static_cast<double>(std::llround(a / step)) * step == a; });
+    return std::all_of(q.begin(), q.end(),
+                       [&](double a) { return static_cast<double>(std::llround(a / step)) * step == a; });
   };
   std::size_t moves = 0;
   for (std::size_t k = 0; k + 1 < path.size(); ++k) moves += on_grid(path[k]) && on_grid(path[k + 1]);
@@ -439,8 +446,9 @@ TEST(ArmGridPlanner, AGoalPointEndsAtTheNearestGoalOfItsSet) {
     double resolution;
     bool eager;
   };
-  for (const Case& c : {Case{"two_link_reach.json", "two_elbows", 10, true}, Case{"four_link_reach.json", "near_the_base", 10, false},
-                        Case{"four_link_reach.json", "oriented", 10, false}}) {
+  for (const Case& c :
+       {Case{"two_link_reach.json", "two_elbows", 10, true}, Case{"four_link_reach.json", "near_the_base", 10, false},
+        Case{"four_link_reach.json", "oriented", 10, false}}) {
     SCOPED_TRACE(c.file + " " + c.query);
     const ArmProblem p = read_arm_problem(arms + c.file);
     const ArmQuery& q = query_named(p, c.query);
@@ -470,7 +478,8 @@ TEST(ArmGridPlanner, AGoalPointEndsAtTheNearestGoalOfItsSet) {
       const std::size_t reached = test::expect_goal_facts(plan, set);
       EXPECT_EQ(grid_moves(plan.path, n), fewest);
       EXPECT_EQ(moves_to[reached], fewest);
-      EXPECT_EQ(plan.facts.at(ArmGridFacts::grid_shortest), o.search.algorithm == Search::bfs ? "not claimed" : "proved");
+      EXPECT_EQ(plan.facts.at(ArmGridFacts::grid_shortest),
+                o.search.algorithm == Search::bfs ? "not claimed" : "proved");
     }
   }
 }

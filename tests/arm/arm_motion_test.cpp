@@ -43,7 +43,8 @@ TEST(Motion, SampleCountAndStepSize) {
   const auto wrap = motion_samples(a, b, resolution);
   EXPECT_EQ(wrap.size(), static_cast<std::size_t>(std::ceil(angular_distance(3.0, 0.2) / resolution)) + 1);
   for (std::size_t i = 1; i < wrap.size(); ++i)
-    for (std::size_t j = 0; j < 3; ++j) ASSERT_LE(angular_distance(wrap[i - 1][j], wrap[i][j]), resolution * (1 + 1e-12));
+    for (std::size_t j = 0; j < 3; ++j)
+      ASSERT_LE(angular_distance(wrap[i - 1][j], wrap[i][j]), resolution * (1 + 1e-12));
   for (const auto& s : wrap) ASSERT_LE(angular_distance(s[0], 0), 0.1 + 1e-15);
   EXPECT_THROW(motion_samples(a, b, 0), std::invalid_argument);
   EXPECT_THROW(motion_samples(a, b, std::nan("")), std::invalid_argument);
@@ -93,8 +94,8 @@ constexpr double kDegree = two_pi / 360;
 
 // An independent re-check: some configuration along the motion, every `step` radians of its
 // widest joint (and the two ends), collides by checker.is_free alone.
-bool dense_sampling_finds_a_collision(const ArmCollisionChecker& checker, const JointAngles& from, const JointAngles& to,
-                                      double step) {
+bool dense_sampling_finds_a_collision(const ArmCollisionChecker& checker, const JointAngles& from,
+                                      const JointAngles& to, double step) {
   double widest = 0;
   for (std::size_t j = 0; j < from.size(); ++j) widest = std::max(widest, angular_distance(from[j], to[j]));
   const auto samples = static_cast<int>(std::ceil(widest / step));
@@ -293,13 +294,13 @@ void check_against_dense_sampling(const ArmCollisionChecker& checker, const Join
       break;
     case MotionCertificate::Verdict::collides: {
       ++verdicts.collides;
-      const JointAngles& at = certificate.at == 0 ? from : certificate.at == 1 ? to : interpolate_angles(from, to, certificate.at);
+      const JointAngles& at = certificate.at == 0   ? from
+                              : certificate.at == 1 ? to
+                                                    : interpolate_angles(from, to, certificate.at);
       ASSERT_FALSE(checker.is_free(at)) << "a collision at t = " << certificate.at << " that is not one";
       break;
     }
-    case MotionCertificate::Verdict::uncertified:
-      ++verdicts.uncertified;
-      break;
+    case MotionCertificate::Verdict::uncertified: ++verdicts.uncertified; break;
   }
 }
 
@@ -334,8 +335,9 @@ TEST(CertifiedMotion, NeverFreeWhereDenseSamplingCollidesOnTheShippedArms) {
       if (HasFatalFailure()) return;
     }
     SCOPED_TRACE(file);
-    RecordProperty(std::string(file) + " free/collides/uncertified",
-                   std::to_string(verdicts.free) + "/" + std::to_string(verdicts.collides) + "/" + std::to_string(verdicts.uncertified));
+    RecordProperty(std::string(file) + " free/collides/uncertified", std::to_string(verdicts.free) + "/" +
+                                                                         std::to_string(verdicts.collides) + "/" +
+                                                                         std::to_string(verdicts.uncertified));
     EXPECT_GT(verdicts.free, 20);  // both answers occur: the test can fail
     EXPECT_GT(verdicts.collides, 20);
     EXPECT_LT(verdicts.uncertified, 10);
@@ -367,8 +369,8 @@ TEST(CertifiedMotion, NeverFreeWhereDenseSamplingCollidesAmongRandomPoints) {
       if (HasFatalFailure()) return;
     }
   }
-  RecordProperty("free/collides/uncertified",
-                 std::to_string(verdicts.free) + "/" + std::to_string(verdicts.collides) + "/" + std::to_string(verdicts.uncertified));
+  RecordProperty("free/collides/uncertified", std::to_string(verdicts.free) + "/" + std::to_string(verdicts.collides) +
+                                                  "/" + std::to_string(verdicts.uncertified));
   EXPECT_GT(verdicts.free, 60);
   EXPECT_GT(verdicts.collides, 200);
 }
@@ -389,8 +391,8 @@ TEST(CertifiedMotion, NeverFreeWhereDenseSamplingCollidesWithSelfCollision) {
       if (HasFatalFailure()) return;
     }
   }
-  RecordProperty("free/collides/uncertified",
-                 std::to_string(verdicts.free) + "/" + std::to_string(verdicts.collides) + "/" + std::to_string(verdicts.uncertified));
+  RecordProperty("free/collides/uncertified", std::to_string(verdicts.free) + "/" + std::to_string(verdicts.collides) +
+                                                  "/" + std::to_string(verdicts.uncertified));
   EXPECT_GT(verdicts.free, 100);
   EXPECT_GT(verdicts.collides, 100);
 }
@@ -423,7 +425,8 @@ TEST(ReusedClearances, NeverFreeWhereDenseSamplingCollidesAndMeasureLess) {
         ASSERT_FALSE(dense_sampling_finds_a_collision(checker, from, to, 0.001)) << "certified a colliding motion";
       } else {
         ++refused;
-        if (reused.verdict == MotionCertificate::Verdict::collides) ASSERT_FALSE(checker.is_free(interpolate_angles(from, to, reused.at)));
+        if (reused.verdict == MotionCertificate::Verdict::collides)
+          ASSERT_FALSE(checker.is_free(interpolate_angles(from, to, reused.at)));
       }
       agree += plain.free() == reused.free();
       if (plain.free() && reused.free()) plain_steps += plain.steps, reused_steps += reused.steps, ++both_free;
@@ -447,7 +450,8 @@ TEST(ReusedClearances, AnEndThatCollidesRefusesTheMotionAndUnnormalisedEndsAreMe
   ASSERT_TRUE(blocked.contact);
   measure_end_clearances(checker, {kPi}, free_end);
   ASSERT_FALSE(free_end.contact);
-  EXPECT_EQ(certify_motion(checker, {kPi / 2}, {kPi}, &blocked, &free_end).verdict, MotionCertificate::Verdict::collides);
+  EXPECT_EQ(certify_motion(checker, {kPi / 2}, {kPi}, &blocked, &free_end).verdict,
+            MotionCertificate::Verdict::collides);
   EXPECT_EQ(certify_motion(checker, {kPi}, {kPi / 2}, &free_end, &blocked).at, 1.0);
   // Clearances handed over for an unnormalised angle are not used (the motion starts at the
   // normalised one): with the collision's clearances given for the free 2π + π, the motion is
@@ -480,11 +484,13 @@ TEST(ArmData, TwoLinkPointsQueriesAreFreeAndTheStraightMotionsAreAsDesigned) {
   EXPECT_TRUE(motion_is_free(checker, p.queries[0].start, p.queries[0].goal));  // and certified
   // ...while the long way up at θ1 = 0.76 is blocked (by the group of points above the arm).
   bool long_way_blocked = false;
-  for (int k = 0; k <= 1000 && !long_way_blocked; ++k) long_way_blocked = !checker.is_free({0.76, 0.12 + 5.88 * k / 1000});
+  for (int k = 0; k <= 1000 && !long_way_blocked; ++k)
+    long_way_blocked = !checker.is_free({0.76, 0.12 + 5.88 * k / 1000});
   EXPECT_TRUE(long_way_blocked);
   // hard: the straight short-way motion crosses the wall that separates it on the bounded square.
   EXPECT_FALSE(samples_free(checker, p.queries[2].start, p.queries[2].goal, two_pi / 3600));
-  EXPECT_EQ(certify_motion(checker, p.queries[2].start, p.queries[2].goal).verdict, MotionCertificate::Verdict::collides);
+  EXPECT_EQ(certify_motion(checker, p.queries[2].start, p.queries[2].goal).verdict,
+            MotionCertificate::Verdict::collides);
 }
 
 TEST(ArmData, ForestsAreSeed001sArmsAndTheirStartAndGoalAreFree) {
@@ -514,11 +520,11 @@ TEST(ArmData, ForestsAreSeed001sArmsAndTheirStartAndGoalAreFree) {
     const ArmCollisionChecker checker(p);
     EXPECT_TRUE(checker.is_free(f.start)) << f.file;
     EXPECT_TRUE(checker.is_free(f.goal)) << f.file;
-    EXPECT_FALSE(samples_free(checker, f.start, f.goal, two_pi / 360)) << f.file << ": the straight motion should need planning";
+    EXPECT_FALSE(samples_free(checker, f.start, f.goal, two_pi / 360))
+        << f.file << ": the straight motion should need planning";
     EXPECT_EQ(certify_motion(checker, f.start, f.goal).verdict, MotionCertificate::Verdict::collides) << f.file;
   }
 }
-
 
 // ---------------------------------------------------------------- single-joint safe angles
 

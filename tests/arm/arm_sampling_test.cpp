@@ -9,8 +9,8 @@
 #include <polyplan/geometry/angles.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/registry/registry.hpp>
-#include <polyplan/sampling/sampling_planner.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
+#include <polyplan/sampling/sampling_planner.hpp>
 #include "arm/arm_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -28,7 +28,8 @@ ArmProblem shipped_arm(const std::string& name) {
   return read_arm_problem(std::string(POLYPLAN_SOURCE_DIR) + "/data/arms/" + name + ".json");
 }
 
-std::unique_ptr<Planner<PlanarArm>> make(const std::string& name, const ArmProblem& problem, const OptionValues& options) {
+std::unique_ptr<Planner<PlanarArm>> make(const std::string& name, const ArmProblem& problem,
+                                         const OptionValues& options) {
   return planners<PlanarArm>().find(name)->make(problem, options);
 }
 
@@ -61,8 +62,10 @@ TEST_P(SamplingPlannerOnArm, ThreeSeedsGiveIndependentlyCheckedPathsAndOneSeedOn
 }
 
 INSTANTIATE_TEST_SUITE_P(ArmSampling, SamplingPlannerOnArm,
-                         ::testing::Combine(::testing::ValuesIn(std::vector<std::string>(sampling_planners.begin(), sampling_planners.end())),
-                                            ::testing::ValuesIn(std::vector<std::string>{"two_link_points", "three_link_forest", "four_link_forest"})),
+                         ::testing::Combine(::testing::ValuesIn(std::vector<std::string>(sampling_planners.begin(),
+                                                                                         sampling_planners.end())),
+                                            ::testing::ValuesIn(std::vector<std::string>{
+                                                "two_link_points", "three_link_forest", "four_link_forest"})),
                          [](const auto& info) { return std::get<0>(info.param) + "_on_" + std::get<1>(info.param); });
 
 // RRT* without shortcuts on the two-link arm's hard query: the cost of one seed never grows with
@@ -76,9 +79,11 @@ TEST(ArmSampling, RrtStarConvergesTowardTheFineGridOptimum) {
   ASSERT_TRUE(grid.found) << grid.why_not;
   double previous = std::numeric_limits<double>::infinity();
   for (const std::string iterations : {"500", "2000", "8000"}) {
-    const auto report = make("rrtstar", problem, {{"iterations", iterations}, {"shortcut", "false"}, {"time", "60"}})->plan(hard);
+    const auto report =
+        make("rrtstar", problem, {{"iterations", iterations}, {"shortcut", "false"}, {"time", "60"}})->plan(hard);
     ASSERT_TRUE(report.found) << report.why_not;
-    SCOPED_TRACE(iterations + " iterations: " + std::to_string(report.length) + " against the grid's " + std::to_string(grid.length));
+    SCOPED_TRACE(iterations + " iterations: " + std::to_string(report.length) + " against the grid's " +
+                 std::to_string(grid.length));
     EXPECT_LE(report.length, previous);
     previous = report.length;
   }
@@ -94,7 +99,8 @@ TEST(ArmSampling, PathsGoTheShortWayAcrossTheSeam) {
   for (const char* name : sampling_planners) {
     const auto report = make(name, problem, {})->plan(problem.queries[0]);
     ASSERT_TRUE(report.found) << name;
-    EXPECT_NEAR(report.length, total_angular_distance({6.2, 0.1}, {0.1, 6.2}), 1e-9) << name;  // a straight motion after shortcuts
+    EXPECT_NEAR(report.length, total_angular_distance({6.2, 0.1}, {0.1, 6.2}), 1e-9)
+        << name;  // a straight motion after shortcuts
   }
 }
 
@@ -120,10 +126,12 @@ TEST(ArmSampling, SpaceSamplesTheTorusAndMeasuresTheShortWay) {
     space->sample(random, at);
     for (double a : at) EXPECT_TRUE(a >= 0 && a < two_pi);
   }
-  EXPECT_NEAR(sampling_distance(SamplingMetric::torus, std::vector<double>{0.1, 0, 0, 0}, std::vector<double>{6.2, 0, 0, 0}),
-              0.1 + (two_pi - 6.2), 1e-15);
+  EXPECT_NEAR(
+      sampling_distance(SamplingMetric::torus, std::vector<double>{0.1, 0, 0, 0}, std::vector<double>{6.2, 0, 0, 0}),
+      0.1 + (two_pi - 6.2), 1e-15);
   std::vector<double> half(4);
-  sampling_interpolate(SamplingMetric::torus, std::vector<double>{0.1, 1, 1, 1}, std::vector<double>{6.2, 1, 1, 1}, 0.5, half);
+  sampling_interpolate(SamplingMetric::torus, std::vector<double>{0.1, 1, 1, 1}, std::vector<double>{6.2, 1, 1, 1}, 0.5,
+                       half);
   EXPECT_NEAR(half[0], normalize_angle((0.1 + 6.2 - two_pi) / 2), 1e-15);
 }
 

@@ -20,7 +20,9 @@ Arm arm_of(std::vector<double> links) {
   return arm;
 }
 
-double error_of(const Arm& arm, const JointAngles& q, Eigen::Vector2d target) { return (joint_positions(arm, q).back() - target).norm(); }
+double error_of(const Arm& arm, const JointAngles& q, Eigen::Vector2d target) {
+  return (joint_positions(arm, q).back() - target).norm();
+}
 
 TEST(InverseKinematics, TwoLinksInsideTheAnnulusHaveBothElbows) {
   const Arm arm = arm_of({1, 0.5});

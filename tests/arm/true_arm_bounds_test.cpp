@@ -69,7 +69,8 @@ double miss(const Eigen::Vector2d& computed, const RealPoint& p) {
 
 // The true arm at the angles q (reals): its joints, and the corners of each link's rectangle in
 // link_outline_into's order (joint k − n, joint k+1 − n, joint k+1 + n, joint k + n, n = (w/2)(−sin, cos)).
-void true_arm(const Arm& arm, const std::vector<Real>& q, std::vector<RealPoint>& joints, std::vector<RealPoint>& corners) {
+void true_arm(const Arm& arm, const std::vector<Real>& q, std::vector<RealPoint>& joints,
+              std::vector<RealPoint>& corners) {
   const std::size_t n = arm.joints();
   joints = std::vector<RealPoint>(n + 1);
   corners = std::vector<RealPoint>(4 * n);
@@ -114,7 +115,8 @@ TEST(TrueArmBounds, TheTrueArmLiesWithinTheRadiiAndTheRadiiAreTight) {
     for (std::size_t k = 0; k < n; ++k) used[k] = link_outline_into(arm, joints, k, corners[k]);
     std::vector<double> radius(n);
     std::fesetround(FE_UPWARD);  // as the collision checker calls it: rounding upward throughout
-    bounds.enclose(q, spread == 0 ? std::span<const double>() : std::span<const double>(spreads), headings, directions, joints);
+    bounds.enclose(q, spread == 0 ? std::span<const double>() : std::span<const double>(spreads), headings, directions,
+                   joints);
     for (std::size_t k = 0; k < n; ++k) radius[k] = bounds.link_radius(k, std::span(corners[k].data(), used[k]));
     std::fesetround(FE_TONEAREST);
     // The true arm at q, and at angles moved by the whole spread (alternating signs) and a third of it.

@@ -1,7 +1,7 @@
 // The car's certified segments: exact at contact (touching is refused, a hair's clearance is
 // proved), arcs whose middle sweeps into an obstacle refused though both ends are free, loose
-// enclosures split until they prove a near miss, the bounds holding the whole sweep, and on random segments among random obstacles
-// every segment certified free passes the independent sampling oracle.
+// enclosures split until they prove a near miss, the bounds holding the whole sweep, and on random segments among
+// random obstacles every segment certified free passes the independent sampling oracle.
 #include "car/car_fixtures.hpp"
 #include "car/car_path_check.hpp"
 
@@ -26,8 +26,8 @@ TEST(CarCollision, AStraightToTheWallIsRefusedAndOneAHairShortIsProved) {
   const CarCollision collision(walled("5"));
   const CarPose start{0, 0, 0};
   EXPECT_TRUE(collision.segment_is_free(start, {Steer::straight, 1, 3.9}));
-  EXPECT_TRUE(collision.segment_is_free(start, {Steer::straight, 1, 4 - 1e-6}));  // no epsilon of 1e-6 decides
-  EXPECT_FALSE(collision.segment_is_free(start, {Steer::straight, 1, 4}));         // touching: refused
+  EXPECT_TRUE(collision.segment_is_free(start, {Steer::straight, 1, 4 - 1e-6}));    // no epsilon of 1e-6 decides
+  EXPECT_FALSE(collision.segment_is_free(start, {Steer::straight, 1, 4}));          // touching: refused
   EXPECT_FALSE(collision.segment_is_free(start, {Steer::straight, 1, 4 - 1e-14}));  // within the margin: refused
   EXPECT_FALSE(collision.segment_is_free(start, {Steer::straight, 1, 4.5}));
   EXPECT_TRUE(collision.segment_is_free(start, {Steer::straight, -1, 40}));  // backward, away from the wall
@@ -39,8 +39,10 @@ TEST(CarCollision, AStraightToTheWallIsRefusedAndOneAHairShortIsProved) {
 // A 0.2 square car on a half turn left about (0, 2): its outermost corner passes x = 2.1024 at
 // mid-turn (distance √(0.1² + 2.1²) from the centre), where both ends are far from x > 2.
 World post(const std::string& x) {
-  return test::car_world(R"({"obstacles": [[[)" + x + R"(, 1.5], [3, 1.5], [3, 2.5], [)" + x + R"(, 2.5]]],
-    "robot": {"parts": [[[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1], [-0.1, 0.1]]], "car": {"turning_radius": 2, "reverse": false}},
+  return test::car_world(R"({"obstacles": [[[)" + x + R"(, 1.5], [3, 1.5], [3, 2.5], [)" + x +
+                         R"(, 2.5]]],
+    "robot": {"parts": [[[-0.1, -0.1], [0.1, -0.1], [0.1, 0.1], [-0.1, 0.1]]], "car": {"turning_radius": 2, )"
+                         R"("reverse": false}},
     "start": [0, 0, 0], "goal": [0, 4, 180]})");
 }
 
@@ -67,7 +69,7 @@ TEST(CarCollision, TheBoundsHoldTheWholeSweep) {
     "robot": {"parts": [[[-0.01, -0.01], [0.01, -0.01], [0.01, 0.01], [-0.01, 0.01]]], "car": {"turning_radius": 1}},
     "start": [5, 5, 0], "goal": [6, 5, 0]})"));
   EXPECT_TRUE(collision.body_holds_reference_point());
-  EXPECT_TRUE(collision.segment_is_free({5, 5, 0}, {Steer::left, 1, 2 * pi}));  // a full circle of radius 1
+  EXPECT_TRUE(collision.segment_is_free({5, 5, 0}, {Steer::left, 1, 2 * pi}));      // a full circle of radius 1
   EXPECT_FALSE(collision.segment_is_free({5, 5, 0}, {Steer::straight, 1, 4.995}));  // the body reaches x = 10.005
   EXPECT_TRUE(collision.segment_is_free({5, 5, 0}, {Steer::straight, 1, 4.98}));
   EXPECT_FALSE(collision.segment_is_free({5, 8.5, 0}, {Steer::left, 1, pi}));  // the circle reaches y = 10.5
@@ -80,12 +82,14 @@ TEST(CarCollision, EverySegmentCertifiedFreeAmongRandomObstaclesPassesTheSamplin
   std::string obstacles;
   for (int i = 0; i < 25; ++i) {
     const double x = uniform(0, 28), y = uniform(0, 28), w = uniform(0.3, 2.5), h = uniform(0.3, 2.5);
-    obstacles += std::string(i ? ", " : "") + "[[" + std::to_string(x) + ", " + std::to_string(y) + "], [" + std::to_string(x + w) +
-                 ", " + std::to_string(y) + "], [" + std::to_string(x + w) + ", " + std::to_string(y + h) + "], [" +
-                 std::to_string(x) + ", " + std::to_string(y + h) + "]]";
+    obstacles += std::string(i ? ", " : "") + "[[" + std::to_string(x) + ", " + std::to_string(y) + "], [" +
+                 std::to_string(x + w) + ", " + std::to_string(y) + "], [" + std::to_string(x + w) + ", " +
+                 std::to_string(y + h) + "], [" + std::to_string(x) + ", " + std::to_string(y + h) + "]]";
   }
-  const World world = test::car_world(R"({"bounds": [0, 0, 30, 30], "obstacles": [)" + obstacles + R"(],
-    "robot": {"parts": [[[-0.5, -0.4], [1.5, -0.4], [1.8, 0], [1.5, 0.4], [-0.5, 0.4]]], "car": {"turning_radius": 1.5, "reverse": true}},
+  const World world = test::car_world(R"({"bounds": [0, 0, 30, 30], "obstacles": [)" + obstacles +
+                                      R"(],
+    "robot": {"parts": [[[-0.5, -0.4], [1.5, -0.4], [1.8, 0], [1.5, 0.4], [-0.5, 0.4]]], )"
+                                      R"("car": {"turning_radius": 1.5, "reverse": true}},
     "start": [1, 1, 0], "goal": [2, 1, 0]})");
   const CarCollision collision(world);
   std::size_t free = 0, refused = 0;

@@ -21,12 +21,14 @@ namespace polyplan::test {
 // centre, or along the heading), for radius `r`.
 inline CarPose driven_by_hand(const CarPose& p, const SteeringSegment& segment, double r, double s) {
   const double signed_s = segment.gear * s;
-  if (segment.steer == Steer::straight) return {p.x + signed_s * std::cos(p.theta), p.y + signed_s * std::sin(p.theta), p.theta};
+  if (segment.steer == Steer::straight)
+    return {p.x + signed_s * std::cos(p.theta), p.y + signed_s * std::sin(p.theta), p.theta};
   const double side = segment.steer == Steer::left ? 1 : -1;
   const double cx = p.x - side * r * std::sin(p.theta), cy = p.y + side * r * std::cos(p.theta);
   const double turn = side * signed_s / r;
   const double dx = p.x - cx, dy = p.y - cy;
-  return {cx + std::cos(turn) * dx - std::sin(turn) * dy, cy + std::sin(turn) * dx + std::cos(turn) * dy, p.theta + turn};
+  return {cx + std::cos(turn) * dx - std::sin(turn) * dy, cy + std::sin(turn) * dx + std::cos(turn) * dy,
+          p.theta + turn};
 }
 
 // The first sampled pose along `path` where the body overlaps an obstacle or leaves the bounds,
@@ -46,7 +48,8 @@ inline std::optional<std::string> sampled_car_overlap(const World& world, const 
     const int n = std::max(1, static_cast<int>(std::ceil(seg.length / (0.01 * r))));
     for (int k = 1; k <= n; ++k) {
       const CarPose p = driven_by_hand(path[i - 1].pose, seg, r, seg.length * k / n);
-      if (auto hit = at(p)) return "segment " + std::to_string(i) + " at " + std::to_string(seg.length * k / n) + " of it: " + *hit;
+      if (auto hit = at(p))
+        return "segment " + std::to_string(i) + " at " + std::to_string(seg.length * k / n) + " of it: " + *hit;
     }
     const CarPose end = driven_by_hand(path[i - 1].pose, seg, r, seg.length);
     const double scale = 1e-9 * (1 + std::abs(end.x) + std::abs(end.y) + r);

@@ -5,12 +5,12 @@
 #include "car/car_fixtures.hpp"
 #include "car/car_path_check.hpp"
 
+#include <polyplan/car/car_facts.hpp>
 #include <polyplan/car/car_planner.hpp>
 #include <polyplan/car/reeds_shepp.hpp>
 #include <polyplan/geometry/input_error.hpp>
-#include <polyplan/registry/registry.hpp>
-#include <polyplan/car/car_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/registry/registry.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
 
 #include <gtest/gtest.h>
@@ -24,7 +24,8 @@ World shipped(const std::string& name, bool reverse = true) {
   return world;
 }
 
-PlanReport<CarState> plan(const std::string& planner, const World& world, OptionValues options = {}, std::size_t query = 0) {
+PlanReport<CarState> plan(const std::string& planner, const World& world, OptionValues options = {},
+                          std::size_t query = 0) {
   return planners<SteeredCar>().find(planner)->make(world, options)->plan(world.queries.at(query));
 }
 
@@ -50,11 +51,13 @@ TEST(CarPlanners, ParallelParkingReversesIntoTheBay) {
   for (const CarState& s : parked.path) reversed |= s.arrival.gear < 0 && s.arrival.length > 0;
   EXPECT_TRUE(reversed);
   if (auto why = test::sampled_car_overlap(world, parked.path)) ADD_FAILURE() << *why;
-  EXPECT_FALSE(plan("hybrid-astar", shipped("car_parallel_parking", false)).found) << "forward only, the bay is too short";
+  EXPECT_FALSE(plan("hybrid-astar", shipped("car_parallel_parking", false)).found)
+      << "forward only, the bay is too short";
 }
 
 TEST(CarPlanners, InAnEmptyWorldHybridAStarDrivesTheShortestCurveAtOnce) {
-  const World world = test::car_world(R"({"obstacles": [], "robot": {"parts": [[[-1, -0.5], [2, -0.5], [2, 0.5], [-1, 0.5]]],
+  const World world =
+      test::car_world(R"({"obstacles": [], "robot": {"parts": [[[-1, -0.5], [2, -0.5], [2, 0.5], [-1, 0.5]]],
     "car": {"turning_radius": 2, "reverse": true}}, "start": [0, 0, 0], "goal": [3, 4, 200]})");
   const auto report = plan("hybrid-astar", world);
   ASSERT_TRUE(report.found);
@@ -73,7 +76,8 @@ TEST(CarPlanners, StartEqualToGoalAndABlockedStartAreAnswers) {
     EXPECT_EQ(same.length, 0);
     const auto blocked = planners<SteeredCar>().find(planner)->make(world, {})->plan(world.queries[1]);
     EXPECT_EQ(blocked.status, PlanStatus::invalid_query);
-    EXPECT_NE(blocked.why_not.find("the start [3, 0, 0°] is not free: the car's body meets obstacles[0]"), std::string::npos)
+    EXPECT_NE(blocked.why_not.find("the start [3, 0, 0°] is not free: the car's body meets obstacles[0]"),
+              std::string::npos)
         << blocked.why_not;
   }
 }
@@ -88,8 +92,10 @@ TEST(CarPlanners, BadOptionsNameThePlannerAndTheOption) {
       EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
     }
   };
-  refuses("hybrid-astar", {{"headings", "2"}}, "planner hybrid-astar: option headings=2: expected a whole number in [4, 3600]");
-  refuses("hybrid-astar", {{"reverse-cost", "0.5"}}, "planner hybrid-astar: option reverse-cost=0.5: expected a number in [1, inf)");
+  refuses("hybrid-astar", {{"headings", "2"}},
+          "planner hybrid-astar: option headings=2: expected a whole number in [4, 3600]");
+  refuses("hybrid-astar", {{"reverse-cost", "0.5"}},
+          "planner hybrid-astar: option reverse-cost=0.5: expected a number in [1, inf)");
   refuses("car-rrt", {{"goal-bias", "2"}}, "planner car-rrt: option goal-bias=2: expected a number in [0, 1]");
   refuses("car-rrt", {{"dt", "-1"}}, "planner car-rrt: option dt=-1: expected a number in [0, inf)");
 }

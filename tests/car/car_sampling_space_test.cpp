@@ -17,7 +17,8 @@ namespace {
 
 World open_car_world(bool reverse) {
   World world = test::car_world(R"({"bounds": [0, 0, 30, 20], "obstacles": [[[14, 8], [16, 8], [16, 12], [14, 12]]],
-    "robot": {"parts": [[[-0.5, -0.5], [1.5, -0.5], [1.5, 0.5], [-0.5, 0.5]]], "car": {"turning_radius": 2.5, "reverse": true}},
+    "robot": {"parts": [[[-0.5, -0.5], [1.5, -0.5], [1.5, 0.5], [-0.5, 0.5]]], "car": {"turning_radius": 2.5, )"
+                                R"("reverse": true}},
     "start": [2, 2, 0], "goal": [28, 18, 90]})");
   world.robot.car->reverse = reverse;
   return world;

@@ -18,7 +18,8 @@ TEST(Dubins, EveryWordReachesTheGoalAndTheShortestIsTheLeast) {
     const auto paths = dubins_paths(p.from, p.to, p.radius);
     ASSERT_GE(paths.size(), 2u) << p.name;  // LSL and RSR always exist
     const SteeringPath shortest = shortest_dubins_path(p.from, p.to, p.radius);
-    EXPECT_NEAR(dubins_distance(p.from, p.to, p.radius), shortest.length(), 1e-14 * std::max(1.0, shortest.length())) << p.name;
+    EXPECT_NEAR(dubins_distance(p.from, p.to, p.radius), shortest.length(), 1e-14 * std::max(1.0, shortest.length()))
+        << p.name;
     EXPECT_LE(goal_miss(shortest, p.from, p.to, p.radius), test::miss_allowed(p)) << p.name << " " << shortest.word;
     for (const SteeringPath& path : paths) {
       EXPECT_LE(goal_miss(path, p.from, p.to, p.radius), test::miss_allowed(p)) << p.name << " " << path.word;

@@ -18,7 +18,9 @@ TEST(ReedsShepp, EveryWordReachesTheGoalAndTheShortestIsTheLeast) {
   std::set<std::string> words;
   for (const test::PosePair& p : test::every_test_pair()) {
     const SteeringPath shortest = shortest_reeds_shepp_path(p.from, p.to, p.radius);
-    EXPECT_NEAR(reeds_shepp_distance(p.from, p.to, p.radius), shortest.length(), 1e-14 * std::max(1.0, shortest.length())) << p.name;
+    EXPECT_NEAR(reeds_shepp_distance(p.from, p.to, p.radius), shortest.length(),
+                1e-14 * std::max(1.0, shortest.length()))
+        << p.name;
     EXPECT_LE(goal_miss(shortest, p.from, p.to, p.radius), test::miss_allowed(p)) << p.name << " " << shortest.word;
     for (const SteeringPath& path : reeds_shepp_paths(p.from, p.to, p.radius)) {
       EXPECT_LE(goal_miss(path, p.from, p.to, p.radius), test::miss_allowed(p)) << p.name << " " << path.word;

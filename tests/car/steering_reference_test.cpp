@@ -23,7 +23,9 @@
 namespace polyplan {
 namespace {
 
-std::string reference_file(const std::string& name) { return std::string(POLYPLAN_SOURCE_DIR) + "/tests/data/car/" + name; }
+std::string reference_file(const std::string& name) {
+  return std::string(POLYPLAN_SOURCE_DIR) + "/tests/data/car/" + name;
+}
 
 struct ReferenceRow {
   CarPose from, to;
@@ -41,8 +43,8 @@ std::vector<ReferenceRow> read_reference(const std::string& file) {
     std::replace(line.begin(), line.end(), ',', ' ');
     std::istringstream fields(line);
     ReferenceRow r;
-    fields >> r.from.x >> r.from.y >> r.from.theta >> r.to.x >> r.to.y >> r.to.theta >> r.radius >> r.length >> r.ompl_end.x >>
-        r.ompl_end.y >> r.ompl_end.theta;
+    fields >> r.from.x >> r.from.y >> r.from.theta >> r.to.x >> r.to.y >> r.to.theta >> r.radius >> r.length >>
+        r.ompl_end.x >> r.ompl_end.y >> r.ompl_end.theta;
     rows.push_back(r);
   }
   return rows;
@@ -84,7 +86,8 @@ std::set<std::string> compare_with_ompl(const std::string& file, Shortest shorte
       ompl_misses.insert(name);
       continue;
     }
-    EXPECT_NEAR(path.length(), r.length, 1e-9 * std::max(1.0, r.length)) << file << " row " << i << " " << name << " " << path.word;
+    EXPECT_NEAR(path.length(), r.length, 1e-9 * std::max(1.0, r.length))
+        << file << " row " << i << " " << name << " " << path.word;
   }
   return ompl_misses;
 }
@@ -97,7 +100,8 @@ std::set<std::string> where_ompl_dubins_misses() {
   std::set<std::string> names;
   for (const char* radius : {"r0.25", "r1", "r7.5"}) {
     for (const char* side : {"behind", "left", "right"})
-      for (const char* heading : {"h0", "h0.7"}) names.insert(std::string("tiny_") + side + "_same_" + heading + "_" + radius);
+      for (const char* heading : {"h0", "h0.7"})
+        names.insert(std::string("tiny_") + side + "_same_" + heading + "_" + radius);
     for (const char* turn : {"plus", "minus"}) names.insert(std::string("tiny_turn_") + turn + "_" + radius);
     names.insert(std::string("tiny_seam_turn_") + radius);
   }

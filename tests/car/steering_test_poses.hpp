@@ -39,8 +39,14 @@ inline std::vector<PosePair> degenerate_pose_pairs() {
   for (double radius : {1.0, 0.25, 7.5})
     for (double arc : {M_PI / 2, M_PI, 3 * M_PI / 2, 0.1}) {
       // The pose after an exact left (right) arc from (0, 0, 0): on the start's turning circle.
-      pairs.push_back({"left circle, arc " + std::to_string(arc), {0, 0, 0}, {radius * std::sin(arc), radius * (1 - std::cos(arc)), arc}, radius});
-      pairs.push_back({"right circle, arc " + std::to_string(arc), {0, 0, 0}, {radius * std::sin(arc), -radius * (1 - std::cos(arc)), -arc}, radius});
+      pairs.push_back({"left circle, arc " + std::to_string(arc),
+                       {0, 0, 0},
+                       {radius * std::sin(arc), radius * (1 - std::cos(arc)), arc},
+                       radius});
+      pairs.push_back({"right circle, arc " + std::to_string(arc),
+                       {0, 0, 0},
+                       {radius * std::sin(arc), -radius * (1 - std::cos(arc)), -arc},
+                       radius});
     }
   const double exact_headings[] = {0, M_PI / 2, -M_PI / 2, M_PI};
   for (double a : exact_headings)

@@ -1,8 +1,8 @@
 // `polyplan benchmark`: the shipped experiments (data/experiments/) at a small scale, their outputs
 // checked — the OMPL log read by the tests' own reader of the format, its runs and times those of
 // results.json, the pictures SVG, a table row per planner entry — and bad experiment files.
-#include "cli_runner.hpp"
 #include "../experiment/ompl_log_parser.hpp"
+#include "cli_runner.hpp"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -22,10 +22,12 @@ struct Outputs {
 
 // Runs the shipped experiment `name` with two seeds and a short time limit into a fresh folder.
 Outputs run_shipped(const std::string& name, const std::string& time_limit) {
-  const fs::path dir = fs::temp_directory_path() / ("polyplan_benchmark_test_" + std::to_string(::getpid()) + "_" + name);
+  const fs::path dir =
+      fs::temp_directory_path() / ("polyplan_benchmark_test_" + std::to_string(::getpid()) + "_" + name);
   fs::remove_all(dir);
-  const CliRun run = run_polyplan("benchmark '" + kSource + "/data/experiments/" + name + ".json' --seeds 2 --time-limit " + time_limit +
-                                  " --threads 2 --out '" + dir.string() + "'");
+  const CliRun run =
+      run_polyplan("benchmark '" + kSource + "/data/experiments/" + name + ".json' --seeds 2 --time-limit " +
+                   time_limit + " --threads 2 --out '" + dir.string() + "'");
   return {run, dir};
 }
 
@@ -33,7 +35,8 @@ bool python_can_parse_xml() { return std::system("python3 -c 'import xml.etree.E
 
 void check_outputs(const Outputs& outputs, std::size_t problems, std::size_t entries, bool anytime) {
   ASSERT_EQ(outputs.run.exit_code, 0) << outputs.run.err;
-  EXPECT_NE(outputs.run.err.find("runs: " + std::to_string(problems * entries * 2) + "/" + std::to_string(problems * entries * 2)),
+  EXPECT_NE(outputs.run.err.find("runs: " + std::to_string(problems * entries * 2) + "/" +
+                                 std::to_string(problems * entries * 2)),
             std::string::npos)
       << outputs.run.err;  // the progress bar
   const nlohmann::json results = nlohmann::json::parse(slurp(outputs.dir / "results.json"));
@@ -47,7 +50,8 @@ void check_outputs(const Outputs& outputs, std::size_t problems, std::size_t ent
   for (const OmplLogPlanner& planner : log.planners) {
     ASSERT_EQ(planner.runs.size(), 2u) << planner.name;
     const auto column = [&](const std::string& name) {
-      return static_cast<std::size_t>(std::find(planner.columns.begin(), planner.columns.end(), name) - planner.columns.begin());
+      return static_cast<std::size_t>(std::find(planner.columns.begin(), planner.columns.end(), name) -
+                                      planner.columns.begin());
     };
     for (const auto& values : planner.runs) {
       const nlohmann::json& run = results["runs"][next++];
@@ -86,7 +90,10 @@ void check_outputs(const Outputs& outputs, std::size_t problems, std::size_t ent
     }
   }
   if (python_can_parse_xml())
-    EXPECT_EQ(std::system(("python3 -c 'import sys, xml.etree.ElementTree as E; [E.parse(f) for f in sys.argv[1:]]'" + pictures).c_str()), 0)
+    EXPECT_EQ(std::system(
+                  ("python3 -c 'import sys, xml.etree.ElementTree as E; [E.parse(f) for f in sys.argv[1:]]'" + pictures)
+                      .c_str()),
+              0)
         << "a picture is not well-formed XML:" << pictures;
   fs::remove_all(outputs.dir);
 }
@@ -108,14 +115,16 @@ TEST(BenchmarkCommand, ABadExperimentFileExitsTwoNamingTheObject) {
   const CliRun run = run_polyplan("benchmark '" + file.string() + "'");
   fs::remove(file);
   EXPECT_EQ(run.exit_code, 2);
-  EXPECT_NE(run.err.find(file.string() + ": planners[1].options.kk: unknown option for rrtstar (options: rewire, k, goal-bias"),
+  EXPECT_NE(run.err.find(file.string() +
+                         ": planners[1].options.kk: unknown option for rrtstar (options: rewire, k, goal-bias"),
             std::string::npos)
       << run.err;
   EXPECT_EQ(lines(run.err), 1u);
 }
 
 TEST(BenchmarkCommand, MoreSeedsThanTheExperimentHasIsBadInput) {
-  const CliRun run = run_polyplan("benchmark '" + kSource + "/data/experiments/seed001_kprm.json' --seeds 11 --out /tmp/never");
+  const CliRun run =
+      run_polyplan("benchmark '" + kSource + "/data/experiments/seed001_kprm.json' --seeds 11 --out /tmp/never");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_NE(run.err.find("--seeds 11: the experiment has 10 seeds"), std::string::npos) << run.err;
 }

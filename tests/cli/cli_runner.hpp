@@ -1,14 +1,14 @@
 #pragma once
 // Runs the polyplan program as a user does (a shell, files for stdout and stderr) for the CLI
 // tests: every cli_tests source includes this one runner.
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace polyplan::test {
 
@@ -32,8 +32,9 @@ inline CliRun run_polyplan(const std::string& arguments) {
   const fs::path dir = fs::temp_directory_path() / ("polyplan_cli_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::string command = "'";  // appended: GCC 12 takes "'" + string for an out-of-bounds copy
-  for (const std::string& piece : {std::string(POLYPLAN_CLI), std::string("' "), arguments, std::string(" >'"), (dir / "out").string(),
-                                   std::string("' 2>'"), (dir / "err").string(), std::string("' </dev/null")})
+  for (const std::string& piece :
+       {std::string(POLYPLAN_CLI), std::string("' "), arguments, std::string(" >'"), (dir / "out").string(),
+        std::string("' 2>'"), (dir / "err").string(), std::string("' </dev/null")})
     command += piece;
   const int status = std::system(command.c_str());
   CliRun run{WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status), slurp(dir / "out"), slurp(dir / "err")};
@@ -47,6 +48,8 @@ inline std::string arm_file(const std::string& name) { return "'" + kSource + "/
 inline std::string path_file(const std::string& name) { return "'" + kSource + "/tests/data/paths/" + name + "'"; }
 inline const std::string kMovingAi = kSource + "/data/movingai";
 
-inline std::size_t lines(const std::string& s) { return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n')); }
+inline std::size_t lines(const std::string& s) {
+  return static_cast<std::size_t>(std::count(s.begin(), s.end(), '\n'));
+}
 
 }  // namespace polyplan::test

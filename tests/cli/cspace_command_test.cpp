@@ -72,7 +72,8 @@ TEST(Cspace, ExactFitCorridorSplitsTheFreeSpace) {
 }
 
 TEST(Cspace, AreasAreExactRationals) {
-  const auto summary = nlohmann::json::parse(run_polyplan("cspace " + world("touching_corners.json") + " --json -").out);
+  const auto summary =
+      nlohmann::json::parse(run_polyplan("cspace " + world("touching_corners.json") + " --json -").out);
   ASSERT_EQ(summary["free_components"].size(), 2u);
   for (const auto& c : summary["free_components"]) {
     EXPECT_EQ(c["area"], "4");

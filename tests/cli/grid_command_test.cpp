@@ -24,14 +24,16 @@ TEST(Grid, ArenaJsonHasEveryKeyAndNoMismatch) {
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto out = nlohmann::json::parse(run.out);
   const auto& summary = out["summary"];
-  for (const char* key : {"queries", "mismatches", "mean_us", "mean_expanded"}) EXPECT_TRUE(summary.contains(key)) << key;
+  for (const char* key : {"queries", "mismatches", "mean_us", "mean_expanded"})
+    EXPECT_TRUE(summary.contains(key)) << key;
   EXPECT_EQ(summary["queries"], 160);
   EXPECT_EQ(summary["mismatches"], 0);
   EXPECT_GT(summary["mean_expanded"].get<double>(), 1.0);
   EXPECT_GT(summary["mean_us"].get<double>(), 0.0);
   ASSERT_EQ(out["queries"].size(), 160u);
   for (const auto& q : out["queries"])
-    for (const char* key : {"index", "found", "length", "expected", "expanded", "us"}) ASSERT_TRUE(q.contains(key)) << key;
+    for (const char* key : {"index", "found", "length", "expected", "expanded", "us"})
+      ASSERT_TRUE(q.contains(key)) << key;
   // Line 2 of the file: (1, 11) to (1, 12), one straight step; line 4: (1, 13) to (4, 12), 2 + sqrt 2.
   EXPECT_EQ(out["queries"][0]["index"], 0);
   EXPECT_EQ(out["queries"][0]["length"].get<double>(), 1.0);
@@ -68,7 +70,8 @@ TEST(Grid, BadInputIsOneLineNamingTheFileAndExitTwo) {
   } cases[] = {
       {"grid '" + kData + "/maps/arena.map' '" + kData + "/scenarios/den312d.map.scen'", "",
        "den312d.map.scen: line 2: the query is for a 65x81 map, " + kData + "/maps/arena.map is 49x49"},
-      {arena_with_scen, "0\tarena.map\t49\t49\t1\t0\t1\t12\t12", scen.string() + ": line 2: start (1, 0) is a blocked cell"},
+      {arena_with_scen, "0\tarena.map\t49\t49\t1\t0\t1\t12\t12",
+       scen.string() + ": line 2: start (1, 0) is a blocked cell"},
       {arena_with_scen, "0\tarena.map\t49\t49\t1\t11\t1\t49\t38",
        scen.string() + ": line 2: goal (1, 49) is outside the 49x49 map"},
       {"grid " + kArena + " --search bfs", "", "--search: unknown algorithm \"bfs\""},

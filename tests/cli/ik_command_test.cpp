@@ -36,16 +36,21 @@ TEST(Ik, TwoLinksReachAPointWithBothElbowsAndTheirReachWithOne) {
     EXPECT_NEAR(y, 4, 1e-12);
     EXPECT_LT(s["error"].get<double>(), 1e-12);
   }
-  const auto edge = nlohmann::json::parse(run_polyplan("ik " + arm_file("two_link_points.json") + " --target 6,8 --json -").out);
+  const auto edge =
+      nlohmann::json::parse(run_polyplan("ik " + arm_file("two_link_points.json") + " --target 6,8 --json -").out);
   EXPECT_EQ(edge["solutions"].size(), 1u);
   const CliRun beyond = run_polyplan("ik " + arm_file("two_link_points.json") + " --target 6,8.01");
   EXPECT_EQ(beyond.exit_code, 0);
-  EXPECT_NE(beyond.out.find("no solution (the target is farther from the base than the two links reach"), std::string::npos) << beyond.out;
+  EXPECT_NE(beyond.out.find("no solution (the target is farther from the base than the two links reach"),
+            std::string::npos)
+      << beyond.out;
 }
 
 TEST(Ik, SixLinksWithAnOrientationAndCollisionFreeSolutions) {
   const std::string svg = (std::filesystem::temp_directory_path() / "polyplan_ik_test.svg").string();
-  const CliRun run = run_polyplan("ik " + arm_file("six_link_forest.json") + " --target -1.2,-0.8 --orientation 30 --all --collision-free --json - --svg '" + svg + "'");
+  const CliRun run =
+      run_polyplan("ik " + arm_file("six_link_forest.json") +
+                   " --target -1.2,-0.8 --orientation 30 --all --collision-free --json - --svg '" + svg + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto j = nlohmann::json::parse(run.out);
   ASSERT_TRUE(j["found"]);

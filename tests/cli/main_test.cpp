@@ -33,11 +33,14 @@ TEST(Usage, EveryMistakeOnTheCommandLineIsOneLineAndExitTwo) {
     std::string arguments, expected;
   };
   const std::vector<Case> cases = {
-      {"teleport " + maze, "error: unknown command \"teleport\" (commands: cspace check plan scen grid arm planners steer replan potential ik search benchmark)"},
+      {"teleport " + maze,
+       "error: unknown command \"teleport\" (commands: cspace check plan scen grid arm planners steer replan potential "
+       "ik search benchmark)"},
       {"cspace " + maze + " --frobnicate", "--frobnicate"},
       {"plan", "problem is required"},
       {"plan " + maze + " --svg " + dir.string(), dir.string() + ": cannot write the SVG file: Is a directory"},
-      {"plan " + maze + " --svg " + (dir / "missing" / "x.svg").string(), "cannot write the SVG file: No such file or directory"},
+      {"plan " + maze + " --svg " + (dir / "missing" / "x.svg").string(),
+       "cannot write the SVG file: No such file or directory"},
       {"plan " + maze + " --json /dev/full", "/dev/full: cannot write the JSON output"},
       {"cspace " + maze + " --json /dev/full", "/dev/full: cannot write the JSON output"},
       {"plan " + maze + " --weight inf", "option weight=inf"},

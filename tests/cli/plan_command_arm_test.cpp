@@ -18,7 +18,8 @@ using namespace polyplan::test;
 namespace fs = std::filesystem;
 
 TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
-  const CliRun torus = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner grid --resolution 5 --query hard --json -");
+  const CliRun torus =
+      run_polyplan("plan " + arm_file("two_link_points.json") + " --planner grid --resolution 5 --query hard --json -");
   ASSERT_EQ(torus.exit_code, 0) << torus.err;
   const auto j = nlohmann::json::parse(torus.out);
   for (const char* key : {"found", "path", "length", "cells_evaluated", "expanded", "seconds"})
@@ -30,7 +31,8 @@ TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
   EXPECT_EQ(j["grid"]["torus"], true);
   EXPECT_EQ(j["grid"]["evaluation"], "lazy");
 
-  const CliRun interval = run_polyplan("plan " + arm_file("two_link_points.json") + " --resolution 5 --no-torus --query hard --json -");
+  const CliRun interval =
+      run_polyplan("plan " + arm_file("two_link_points.json") + " --resolution 5 --no-torus --query hard --json -");
   ASSERT_EQ(interval.exit_code, 0) << "no path is an answer: " << interval.err;
   const auto k = nlohmann::json::parse(interval.out);
   EXPECT_FALSE(k["found"].get<bool>());
@@ -40,21 +42,24 @@ TEST(ArmCommand, HardCaseJsonOnTheTorusAndNoPathOnTheInterval) {
 
 // The sampling planners' flags, as the issue writes them: one seed, one path, and the facts.
 TEST(ArmCommand, SamplingPlannersTakeTheirFlagsAndOneSeedGivesOnePath) {
-  const std::string command = "arm " + arm_file("four_link_forest.json") +
-                              " --planner rrt --seed 7 --time 20 --iterations 50000 --goal-bias 0.1 --step 1 --extend e2 --json -";
+  const std::string command =
+      "arm " + arm_file("four_link_forest.json") +
+      " --planner rrt --seed 7 --time 20 --iterations 50000 --goal-bias 0.1 --step 1 --extend e2 --json -";
   const CliRun once = run_polyplan(command), again = run_polyplan(command);
   ASSERT_EQ(once.exit_code, 0) << once.err;
   const auto a = nlohmann::json::parse(once.out), b = nlohmann::json::parse(again.out);
   ASSERT_TRUE(a["found"].get<bool>()) << a.dump();
   EXPECT_EQ(a["path"], b["path"]);
-  for (const char* key : {"samples", "tree_size", "motions_checked", "first_solution_seconds", "raw_length", "iterations", "seed"})
+  for (const char* key :
+       {"samples", "tree_size", "motions_checked", "first_solution_seconds", "raw_length", "iterations", "seed"})
     EXPECT_TRUE(a.contains(key)) << key;
   EXPECT_EQ(a["seed"], 7);
   EXPECT_EQ(a["roadmap"]["kind"], "rrt");
   EXPECT_LE(a["length"].get<double>(), a["raw_length"].get<double>());
   EXPECT_EQ(a["path"].front(), nlohmann::json::parse("[0.1, 0.2, 0.3, 0.4]"));
 
-  const CliRun prm = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner prm --k 15 --bidirectional --query hard --json -");
+  const CliRun prm = run_polyplan("plan " + arm_file("two_link_points.json") +
+                                  " --planner prm --k 15 --bidirectional --query hard --json -");
   ASSERT_EQ(prm.exit_code, 0) << prm.err;
   const auto p = nlohmann::json::parse(prm.out);
   EXPECT_TRUE(p["found"].get<bool>());
@@ -63,7 +68,8 @@ TEST(ArmCommand, SamplingPlannersTakeTheirFlagsAndOneSeedGivesOnePath) {
 
   const CliRun bias = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner rrt --goal-bias 2");
   EXPECT_EQ(bias.exit_code, 2);
-  EXPECT_NE(bias.err.find("planner rrt: option goal-bias=2: expected a number in [0, 1]"), std::string::npos) << bias.err;
+  EXPECT_NE(bias.err.find("planner rrt: option goal-bias=2: expected a number in [0, 1]"), std::string::npos)
+      << bias.err;
 }
 
 TEST(ArmCommand, EveryQueryOfAFileGivesAnArrayAndEagerMatchesLazy) {
@@ -85,7 +91,7 @@ TEST(ArmCommand, WritesTheAnimationAndTheStrobe) {
   const fs::path dir = fs::temp_directory_path() / ("polyplan_arm_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const CliRun run = run_polyplan("plan " + arm_file("two_link_points.json") + " --query medium --svg '" +
-                              (dir / "medium.svg").string() + "' --strobe '" + (dir / "strobe.svg").string() + "'");
+                                  (dir / "medium.svg").string() + "' --strobe '" + (dir / "strobe.svg").string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string animation = slurp(dir / "medium.svg"), strobe = slurp(dir / "strobe.svg");
   EXPECT_NE(animation.find("repeatCount=\"indefinite\""), std::string::npos);
@@ -110,12 +116,14 @@ TEST(ArmCommand, BadInputIsOneLineNamingTheProblem) {
   EXPECT_NE(missing.err.find("/nonexistent/arm.json"), std::string::npos) << missing.err;
   // Thirteen joints exited 3 ("internal error") from the grid's axis limit.
   const std::filesystem::path thirteen = std::filesystem::temp_directory_path() / "polyplan_arm13.json";
-  std::ofstream(thirteen) << R"({"links": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1], "start": [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0],
+  std::ofstream(thirteen)
+      << R"({"links": [1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1], "start": [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0],
                                  "goal": [1, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]})";
   const CliRun joints = run_polyplan("plan '" + thirteen.string() + "'");
   EXPECT_EQ(joints.exit_code, 2) << joints.err;
   EXPECT_EQ(lines(joints.err), 1u) << joints.err;
-  EXPECT_NE(joints.err.find("an arm of 13 joints needs a grid of as many axes; it has at most 12"), std::string::npos) << joints.err;
+  EXPECT_NE(joints.err.find("an arm of 13 joints needs a grid of as many axes; it has at most 12"), std::string::npos)
+      << joints.err;
   std::filesystem::remove(thirteen);
 }
 
@@ -124,9 +132,11 @@ TEST(ArmCommand, BadInputIsOneLineNamingTheProblem) {
 namespace {
 
 TEST(ArmCommand, OptionsAndTheOldFlagsSetTheSamePlanner) {
-  const CliRun flags = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner grid --resolution 10 --no-torus --eager --json -");
-  const CliRun options = run_polyplan("plan " + arm_file("two_link_points.json") + " --planner grid --option resolution=10 "
-                                     "--option torus=false --option evaluation=eager --json -");
+  const CliRun flags = run_polyplan("plan " + arm_file("two_link_points.json") +
+                                    " --planner grid --resolution 10 --no-torus --eager --json -");
+  const CliRun options = run_polyplan("plan " + arm_file("two_link_points.json") +
+                                      " --planner grid --option resolution=10 "
+                                      "--option torus=false --option evaluation=eager --json -");
   ASSERT_EQ(flags.exit_code, 0) << flags.err;
   ASSERT_EQ(options.exit_code, 0) << options.err;
   const auto a = nlohmann::json::parse(flags.out), b = nlohmann::json::parse(options.out);
@@ -141,9 +151,11 @@ TEST(ArmCommand, OptionsAndTheOldFlagsSetTheSamePlanner) {
 }
 
 TEST(ArmCommand, PathsAreCertifiedAndCheckResolutionIsRefused) {
-  const CliRun refused = run_polyplan("plan " + arm_file("two_link_points.json") + " --query easy --check-resolution 0.5");
+  const CliRun refused =
+      run_polyplan("plan " + arm_file("two_link_points.json") + " --query easy --check-resolution 0.5");
   EXPECT_EQ(refused.exit_code, 2);
-  EXPECT_NE(refused.err.find("--check-resolution is gone: every motion is certified"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--check-resolution is gone: every motion is certified"), std::string::npos)
+      << refused.err;
   EXPECT_TRUE(refused.out.empty()) << refused.out;
   const CliRun run = run_polyplan("plan " + arm_file("two_link_points.json") + " --query easy --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
@@ -170,7 +182,8 @@ TEST(ArmCommand, AGoalPointIsPlannedToItsIkSolutions) {
   ASSERT_EQ(all.size(), 5u);
   std::map<std::string, nlohmann::json> by_name;
   for (const auto& answer : all) by_name[answer["query"].get<std::string>()] = answer;
-  const std::map<std::string, int> candidates{{"outer_boundary", 1}, {"inner_boundary", 1}, {"two_elbows", 2}, {"one_elbow_free", 1}};
+  const std::map<std::string, int> candidates{
+      {"outer_boundary", 1}, {"inner_boundary", 1}, {"two_elbows", 2}, {"one_elbow_free", 1}};
   for (const auto& [name, count] : candidates) {
     SCOPED_TRACE(name);
     const auto& j = by_name.at(name);
@@ -183,27 +196,32 @@ TEST(ArmCommand, AGoalPointIsPlannedToItsIkSolutions) {
   const auto& beyond = by_name.at("one_ulp_beyond");
   EXPECT_FALSE(beyond["found"].get<bool>());
   EXPECT_EQ(beyond["status"], "no_path");
-  EXPECT_EQ(beyond["why_not"], "the point (0, 5.000000000000001) is out of reach: the arm reaches distances 1 to 5 from its base");
+  EXPECT_EQ(beyond["why_not"],
+            "the point (0, 5.000000000000001) is out of reach: the arm reaches distances 1 to 5 from its base");
   EXPECT_FALSE(beyond.contains("goal"));
 
-  const CliRun text = run_polyplan("plan " + arm_file("two_link_reach.json") + " --query two_elbows --planner rrtconnect");
+  const CliRun text =
+      run_polyplan("plan " + arm_file("two_link_reach.json") + " --query two_elbows --planner rrtconnect");
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("two_elbows: length "), std::string::npos) << text.out;
-  EXPECT_TRUE(std::regex_search(text.out, std::regex(R"(, ends at IK solution ([12]) of 2 \(goal\.reached [01]\), the hand \S+ from the goal point\n)")))
+  EXPECT_TRUE(std::regex_search(
+      text.out,
+      std::regex(R"(, ends at IK solution ([12]) of 2 \(goal\.reached [01]\), the hand \S+ from the goal point\n)")))
       << text.out;
 }
 
 TEST(ArmCommand, APictureMarksTheGoalPoint) {
   const fs::path dir = fs::temp_directory_path() / ("polyplan_arm_goal_cli_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  const CliRun run = run_polyplan("plan " + arm_file("four_link_reach.json") + " --planner rrtconnect --svg '" + (dir / "reach.svg").string() +
-                                  "' --strobe '" + (dir / "strobe.svg").string() + "'");
+  const CliRun run = run_polyplan("plan " + arm_file("four_link_reach.json") + " --planner rrtconnect --svg '" +
+                                  (dir / "reach.svg").string() + "' --strobe '" + (dir / "strobe.svg").string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   for (const char* picture : {"reach-oriented.svg", "strobe-near_the_base.svg", "reach-out_of_reach.svg"}) {
     const std::string svg = slurp(dir / picture);
     EXPECT_NE(svg.find("class=\"goal-point\""), std::string::npos) << picture;
   }
-  EXPECT_NE(slurp(dir / "reach-oriented.svg").find("goal point and orientation (the hand&apos;s target)"), std::string::npos);
+  EXPECT_NE(slurp(dir / "reach-oriented.svg").find("goal point and orientation (the hand&apos;s target)"),
+            std::string::npos);
   EXPECT_NE(slurp(dir / "reach-near_the_base.svg").find("goal point (the hand&apos;s target)"), std::string::npos);
   EXPECT_EQ(slurp(dir / "reach-near_the_base.svg").find("goal point and orientation"), std::string::npos);
   fs::remove_all(dir);
@@ -211,11 +229,13 @@ TEST(ArmCommand, APictureMarksTheGoalPoint) {
 
 TEST(ArmCommand, BothGoalAndGoalPointIsBadInput) {
   const fs::path file = fs::temp_directory_path() / ("polyplan_arm_both_" + std::to_string(::getpid()) + ".json");
-  std::ofstream(file) << R"({"links": [1, 1], "queries": [{"name": "q", "start": [0, 0], "goal": [1, 1], "goal_point": [1, 1]}]})";
+  std::ofstream(file)
+      << R"({"links": [1, 1], "queries": [{"name": "q", "start": [0, 0], "goal": [1, 1], "goal_point": [1, 1]}]})";
   const CliRun run = run_polyplan("plan '" + file.string() + "'");
   EXPECT_EQ(run.exit_code, 2);
   EXPECT_EQ(lines(run.err), 1u) << run.err;
-  EXPECT_NE(run.err.find(file.string() + ": queries[0]: both \"goal\" and \"goal_point\" given"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(file.string() + ": queries[0]: both \"goal\" and \"goal_point\" given"), std::string::npos)
+      << run.err;
   EXPECT_TRUE(run.out.empty()) << run.out;
   fs::remove(file);
 }

@@ -41,7 +41,8 @@ TEST(Plan, OneQueryIsAnObjectAndNoPathIsAnAnswer) {
 TEST(Plan, EverySearchAndTheFullGraph) {
   for (const char* search : {"astar", "dijkstra", "bfs", "dfs", "greedy", "wastar --weight 2"}) {
     SCOPED_TRACE(search);
-    const CliRun run = run_polyplan("plan " + world("maze.json") + " --roadmap visibility-full --search " + search + " --json -");
+    const CliRun run =
+        run_polyplan("plan " + world("maze.json") + " --roadmap visibility-full --search " + search + " --json -");
     ASSERT_EQ(run.exit_code, 0) << run.err;
     const auto plan = nlohmann::json::parse(run.out);
     EXPECT_TRUE(plan["found"].get<bool>());
@@ -75,7 +76,8 @@ TEST(Plan, EveryRegisteredPlannerAnswersByNameAndRoadmapIsAnAlias) {
       ASSERT_EQ(run.exit_code, 0) << run.err;
       const auto plan = nlohmann::json::parse(run.out);
       EXPECT_EQ(plan["roadmap"]["kind"], name);
-      if (name == "potential-field") {  // a reactive planner that stops in one of the maze's local minima: an answer, no path
+      if (name ==
+          "potential-field") {  // a reactive planner that stops in one of the maze's local minima: an answer, no path
         EXPECT_EQ(plan["status"], "local_minimum") << plan.dump();
         continue;
       }
@@ -94,8 +96,10 @@ TEST(Plan, EveryRegisteredPlannerAnswersByNameAndRoadmapIsAnAlias) {
 }
 
 TEST(Plan, OptionsBySpelledOutAssignmentOrByTheirOwnFlag) {
-  const CliRun flag = run_polyplan("plan " + world("sphere_world.json") + " --planner raster --resolution 40 --search dijkstra --json -");
-  const CliRun option = run_polyplan("plan " + world("sphere_world.json") + " --planner raster --option resolution=40 "
+  const CliRun flag = run_polyplan("plan " + world("sphere_world.json") +
+                                   " --planner raster --resolution 40 --search dijkstra --json -");
+  const CliRun option = run_polyplan("plan " + world("sphere_world.json") +
+                                     " --planner raster --option resolution=40 "
                                      "--option search=dijkstra --json -");
   ASSERT_EQ(flag.exit_code, 0) << flag.err;
   ASSERT_EQ(option.exit_code, 0) << option.err;
@@ -113,7 +117,10 @@ TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
   struct Case {
     std::string arguments, message;
   } cases[] = {
-      {"--planner teleport", "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, potential-field, navigation-function, bug1, bug2, tangent-bug, homotopy, tether, prm, lazyprm, rrt, rrtstar, rrtconnect, rotation, hybrid-astar, car-rrt, grid)"},
+      {"--planner teleport",
+       "--planner: unknown planner \"teleport\" (visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, "
+       "dstar-lite, lpastar, repeated-astar, potential-field, navigation-function, bug1, bug2, tangent-bug, homotopy, "
+       "tether, prm, lazyprm, rrt, rrtstar, rrtconnect, rotation, hybrid-astar, car-rrt, grid)"},
       {"--roadmap teleport", "--planner: unknown planner \"teleport\""},
       {"--resolution 40", "--resolution: the planner visibility has no option resolution (its options: search weight)"},
       {"--planner raster --resolution forty", "planner raster: option resolution=forty: expected a whole number"},
@@ -132,8 +139,8 @@ TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
 
 TEST(Plan, RotationPrintsPosesWithExactRotationsAndDrawsTheStrobe) {
   const fs::path svg = fs::temp_directory_path() / "polyplan_plan_rotation.svg";
-  const CliRun run = run_polyplan("plan " + world("rotation_piano.json") + " --planner rotation --rotation-step 10 --json - --svg " +
-                                  svg.string());
+  const CliRun run = run_polyplan("plan " + world("rotation_piano.json") +
+                                  " --planner rotation --rotation-step 10 --json - --svg " + svg.string());
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto plan = nlohmann::json::parse(run.out);
   EXPECT_TRUE(plan["found"].get<bool>());
@@ -168,13 +175,15 @@ TEST(Plan, ATurningWorldNeedsTheRotationPlannerAndBadAnglesAreNamed) {
                            "start": [5, 7, 0], "goal": [5, 6.5, 90]})";
   const CliRun upright = run_polyplan("plan " + bad.string() + " --planner rotation");
   EXPECT_EQ(upright.exit_code, 2);
-  EXPECT_NE(upright.err.find("goal [5, 13/2, 90°]: not free: the robot overlaps obstacles[0]"), std::string::npos) << upright.err;
+  EXPECT_NE(upright.err.find("goal [5, 13/2, 90°]: not free: the robot overlaps obstacles[0]"), std::string::npos)
+      << upright.err;
   fs::remove(bad);
 }
 
 TEST(Plan, TheRasterPictureShowsItsCellsAndTheTextSaysWhatWasSearched) {
   const fs::path svg = fs::temp_directory_path() / "polyplan_cli_test_raster.svg";
-  const CliRun run = run_polyplan("plan " + world("seed004.json") + " --planner raster --resolution 50 --svg '" + svg.string() + "'");
+  const CliRun run =
+      run_polyplan("plan " + world("seed004.json") + " --planner raster --resolution 50 --svg '" + svg.string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("start/goal: length "), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("astar expanded "), std::string::npos) << run.out;

@@ -21,12 +21,32 @@ TEST(Planners, ListsEveryPlannerOfEverySpaceWithOptionsAndDefaults) {
   EXPECT_EQ(spaces[2]["command"], "polyplan plan CAR_WORLD.json --planner NAME");
   std::vector<std::string> car_names;
   for (const auto& p : spaces[2]["planners"]) car_names.push_back(p["name"]);
-  EXPECT_EQ(car_names, (std::vector<std::string>{"hybrid-astar", "car-rrt", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));
+  EXPECT_EQ(car_names,
+            (std::vector<std::string>{"hybrid-astar", "car-rrt", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));
   EXPECT_EQ(spaces[3]["command"], "polyplan plan ARM.json --planner NAME");
   std::vector<std::string> names;
   for (const auto& p : spaces[0]["planners"]) names.push_back(p["name"]);
-  EXPECT_EQ(names, (std::vector<std::string>{"visibility", "visibility-full", "raster", "trapezoid", "voronoi", "gvd-grid", "dstar-lite",
-                                             "lpastar", "repeated-astar", "potential-field", "navigation-function", "bug1", "bug2", "tangent-bug", "homotopy", "tether", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"visibility",
+                                             "visibility-full",
+                                             "raster",
+                                             "trapezoid",
+                                             "voronoi",
+                                             "gvd-grid",
+                                             "dstar-lite",
+                                             "lpastar",
+                                             "repeated-astar",
+                                             "potential-field",
+                                             "navigation-function",
+                                             "bug1",
+                                             "bug2",
+                                             "tangent-bug",
+                                             "homotopy",
+                                             "tether",
+                                             "prm",
+                                             "lazyprm",
+                                             "rrt",
+                                             "rrtstar",
+                                             "rrtconnect"}));
   std::vector<std::string> arm_names;
   for (const auto& p : spaces[3]["planners"]) arm_names.push_back(p["name"]);
   EXPECT_EQ(arm_names, (std::vector<std::string>{"grid", "prm", "lazyprm", "rrt", "rrtstar", "rrtconnect"}));

@@ -1,6 +1,6 @@
-// polyplan potential, run as a user runs it: the course's planning problem set's wall has one critical point, the minimum at
-// (−0.68233, 0); the U-shaped trap's minimum lies above its bottom wall; the picture; one-line
-// errors for a bad box and bad weights.
+// polyplan potential, run as a user runs it: the course's planning problem set's wall has one critical point, the
+// minimum at (−0.68233, 0); the U-shaped trap's minimum lies above its bottom wall; the picture; one-line errors for a
+// bad box and bad weights.
 #include "cli_runner.hpp"
 
 #include <nlohmann/json.hpp>

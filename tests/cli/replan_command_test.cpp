@@ -18,7 +18,8 @@ const std::string den312d = "'" + kSource + "/data/movingai/maps/den312d.map'";
 const std::string closed_room = "'" + kSource + "/tests/data/replan/closed_room.map'";
 
 nlohmann::json drive(const std::string& algorithm) {
-  const CliRun run = run_polyplan("replan " + den312d + " --start 60,12 --goal 63,76 --sensor 1.5 --algorithm " + algorithm + " --json -");
+  const CliRun run = run_polyplan("replan " + den312d + " --start 60,12 --goal 63,76 --sensor 1.5 --algorithm " +
+                                  algorithm + " --json -");
   EXPECT_EQ(run.exit_code, 0) << run.err;
   return nlohmann::json::parse(run.out);
 }
@@ -53,7 +54,8 @@ TEST(Replan, AnUnreachableGoalEndsWithNoPath) {
   EXPECT_EQ(r["status"], "no_path");
   EXPECT_EQ(r["found"], false);
   EXPECT_EQ(r["steps"].back()["cost_to_goal"], nullptr);
-  EXPECT_EQ(r["why_not"], "the goal is unreachable on what the robot knows after " + std::to_string(r["moves"].get<int>()) + " moves");
+  EXPECT_EQ(r["why_not"], "the goal is unreachable on what the robot knows after " +
+                              std::to_string(r["moves"].get<int>()) + " moves");
 }
 
 TEST(Replan, RhsTraceWritesEveryPassAsJsonLinesOrAsTables) {
@@ -86,7 +88,8 @@ TEST(Replan, RhsTraceWritesEveryPassAsJsonLinesOrAsTables) {
   ASSERT_EQ(tables.exit_code, 0) << tables.err;
   EXPECT_NE(tables.out.find("replan 1 at (0,4)"), std::string::npos) << tables.out;
   // The goal first, its key the octile distance 5 + 4√2 from the start.
-  EXPECT_NE(tables.out.find("pass 1: pops (9,0) key [10.66; 0] (over): g ∞ -> 0, rhs 0"), std::string::npos) << tables.out;
+  EXPECT_NE(tables.out.find("pass 1: pops (9,0) key [10.66; 0] (over): g ∞ -> 0, rhs 0"), std::string::npos)
+      << tables.out;
   EXPECT_NE(tables.out.find("(under)"), std::string::npos) << "a replan raises some g to ∞";
   EXPECT_NE(tables.out.find("open list:"), std::string::npos);
 }
@@ -94,7 +97,8 @@ TEST(Replan, RhsTraceWritesEveryPassAsJsonLinesOrAsTables) {
 // --trace: one line per expansion of every replan, with search's keys: the steps of a replan
 // count 1, 2, ..., and f is the key (g's and rhs's min + h + k_m).
 TEST(Replan, TraceWritesEveryExpansionOfEveryReplan) {
-  const CliRun run = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --json - --trace /dev/null --rhs-trace /dev/null");
+  const CliRun run = run_polyplan("replan " + closed_room +
+                                  " --start 0,4 --goal 9,0 --json - --trace /dev/null --rhs-trace /dev/null");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::size_t expanded = nlohmann::json::parse(run.out)["expanded"].get<std::size_t>();
   const CliRun traced = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --trace -");
@@ -136,7 +140,8 @@ TEST(Replan, DrawsWhatTheRobotKnew) {
 
   // Animated: the robot's dot keyed once per cell it stood on (its start, each move, and the
   // hold at the end), and cells appearing as they are sensed.
-  const CliRun animated = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --json - --svg '" + svg + "' --animate");
+  const CliRun animated =
+      run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --json - --svg '" + svg + "' --animate");
   ASSERT_EQ(animated.exit_code, 0) << animated.err;
   const auto moves = nlohmann::json::parse(animated.out)["moves"].get<std::size_t>();
   const std::string frames = slurp(svg);
@@ -155,12 +160,15 @@ TEST(Replan, RefusesBadInputInOneLine) {
     std::string arguments;
     const char* expected;
   } cases[] = {
-      {"replan " + closed_room + " --start 0,0 --goal 4,4 --algorithm dijkstra", "--algorithm: unknown algorithm \"dijkstra\""},
+      {"replan " + closed_room + " --start 0,0 --goal 4,4 --algorithm dijkstra",
+       "--algorithm: unknown algorithm \"dijkstra\""},
       {"replan " + closed_room + " --start 0 --goal 4,4", "--start 0: expected X,Y"},
       {"replan " + closed_room + " --start 6,1 --goal 4,4", "the start (6, 1) is a blocked cell"},
       {"replan " + closed_room + " --start 0,0 --goal 10,4", "the goal (10, 4) is outside the 10 x 5 map"},
-      {"replan " + closed_room + " --start 0,0 --goal 4,4 --sensor 1", "sensor radius: must be a finite number of at least √2"},
-      {"replan " + closed_room + " --start 0,0 --goal 4,4 --json - --trace -", "only one of them can go to standard output"},
+      {"replan " + closed_room + " --start 0,0 --goal 4,4 --sensor 1",
+       "sensor radius: must be a finite number of at least √2"},
+      {"replan " + closed_room + " --start 0,0 --goal 4,4 --json - --trace -",
+       "only one of them can go to standard output"},
       {"replan /nonexistent.map --start 0,0 --goal 4,4", "/nonexistent.map"},
       {"replan " + closed_room + " --start 0,0 --goal 4,4 --animate", "--animate: give --svg OUT.svg"},
   };

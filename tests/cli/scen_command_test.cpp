@@ -15,8 +15,8 @@ namespace fs = std::filesystem;
 
 TEST(Scen, ArenaMatchesTheReference) {
   const std::string& data = kMovingAi;
-  const CliRun run = run_polyplan("scen '" + data + "/maps/arena.map' '" + data + "/scenarios/arena.map.scen' --reference '" + data +
-                              "/reference/arena.csv' --json -");
+  const CliRun run = run_polyplan("scen '" + data + "/maps/arena.map' '" + data +
+                                  "/scenarios/arena.map.scen' --reference '" + data + "/reference/arena.csv' --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto out = nlohmann::json::parse(run.out);
   EXPECT_EQ(out["summary"]["queries"], 160);
@@ -78,13 +78,18 @@ TEST(Scen, QueriesAndReferencesThatDoNotFitTheMapAreRefused) {
     std::string arguments, expected;
   };
   const std::vector<Case> cases = {
-      {map + " " + write("outside.scen", "version 1\n0\tm.map\t4\t3\t0\t0\t7\t2\t7\n"), "line 2: goal (7, 2) is outside the 4x3 map"},
-      {map + " " + write("negative.scen", "version 1\n0\tm.map\t4\t3\t-1\t0\t3\t2\t4\n"), "line 2: start (-1, 0) is outside the 4x3 map"},
-      {map + " " + write("other.scen", "version 1\n0\tm.map\t5\t3\t0\t0\t3\t2\t4\n"), "line 2: the query is for a 5x3 map"},
-      {map + " " + good + " --reference " + write("minus.csv", "index,length\n-1,5\n"), "line 2: expected 'index,length'"},
+      {map + " " + write("outside.scen", "version 1\n0\tm.map\t4\t3\t0\t0\t7\t2\t7\n"),
+       "line 2: goal (7, 2) is outside the 4x3 map"},
+      {map + " " + write("negative.scen", "version 1\n0\tm.map\t4\t3\t-1\t0\t3\t2\t4\n"),
+       "line 2: start (-1, 0) is outside the 4x3 map"},
+      {map + " " + write("other.scen", "version 1\n0\tm.map\t5\t3\t0\t0\t3\t2\t4\n"),
+       "line 2: the query is for a 5x3 map"},
+      {map + " " + good + " --reference " + write("minus.csv", "index,length\n-1,5\n"),
+       "line 2: expected 'index,length'"},
       {map + " " + good + " --reference " + write("far.csv", "index,length\n300000000,5\n"),
        "line 2: index 300000000 is beyond the scenario file's 1 queries"},
-      {write("terrain.map", "type octile\nheight 1\nwidth 2\nmap\n.?\n") + " " + good, "row 0, column 1: unknown terrain '?'"},
+      {write("terrain.map", "type octile\nheight 1\nwidth 2\nmap\n.?\n") + " " + good,
+       "row 0, column 1: unknown terrain '?'"},
       {write("huge.map", "type octile\nheight 100000\nwidth 100000\nmap\n") + " " + good, "at most 67108864 cells"},
   };
   for (const Case& c : cases) {

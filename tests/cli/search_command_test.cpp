@@ -1,6 +1,6 @@
-// polyplan search, run as a user runs it: the course's graph-search homework's graphs searched with each method, the summary
-// line, the JSON, the trace as JSON lines, the picture and its animation, and one-line errors for
-// bad graphs (naming the vertex) and bad options. Also plan's --trace for the graph planners.
+// polyplan search, run as a user runs it: the course's graph-search homework's graphs searched with each method, the
+// summary line, the JSON, the trace as JSON lines, the picture and its animation, and one-line errors for bad graphs
+// (naming the vertex) and bad options. Also plan's --trace for the graph planners.
 #include "cli_runner.hpp"
 
 #include <nlohmann/json.hpp>
@@ -62,7 +62,8 @@ TEST(Search, JsonHasPathCostCountsAndExpansionOrder) {
 
 TEST(Search, EveryMethodAnswers) {
   for (const char* method : {"astar", "dijkstra", "bfs", "dfs", "greedy", "wastar --weight 2"}) {
-    const CliRun run = run_polyplan("search " + graph("grid_medium.json") + " --start 0 --goal 37 --json - --method " + method);
+    const CliRun run =
+        run_polyplan("search " + graph("grid_medium.json") + " --start 0 --goal 37 --json - --method " + method);
     ASSERT_EQ(run.exit_code, 0) << method << ": " << run.err;
     const auto r = nlohmann::json::parse(run.out);
     EXPECT_EQ(r["found"], true) << method;
@@ -81,7 +82,8 @@ TEST(Search, NoPathIsAnAnswer) {
   EXPECT_EQ(r["found"], false);
   EXPECT_EQ(r["cost"], nullptr);
   EXPECT_EQ(r["path"], nlohmann::json::array());
-  EXPECT_EQ(run_polyplan("search '" + lonely + "' --start 0 --goal 1").out, "astar: no path, expanded 1 of 1 generated\n");
+  EXPECT_EQ(run_polyplan("search '" + lonely + "' --start 0 --goal 1").out,
+            "astar: no path, expanded 1 of 1 generated\n");
   fs::remove(lonely);
 }
 
@@ -96,14 +98,16 @@ TEST(Search, TraceHasOneLinePerExpansion) {
     EXPECT_EQ(lines[k]["vertex"], order[k]);
     EXPECT_DOUBLE_EQ(lines[k]["f"].get<double>(), lines[k]["g"].get<double>() + lines[k]["h"].get<double>());
   }
-  EXPECT_EQ(run.out.substr(0, run.out.find('\n')), R"({"step":1,"vertex":0,"g":0.0,"h":4.0,"f":4.0,"backpointer":null,"open":0})");
+  EXPECT_EQ(run.out.substr(0, run.out.find('\n')),
+            R"({"step":1,"vertex":0,"g":0.0,"h":4.0,"f":4.0,"backpointer":null,"open":0})");
   EXPECT_EQ(lines[1]["backpointer"], 0);
   EXPECT_EQ(lines[1]["open"], 1);  // 2 waits
   EXPECT_EQ(lines.back()["g"], 5.0);
   EXPECT_EQ(lines.back()["backpointer"], 4);
 
   const fs::path file = fs::temp_directory_path() / "polyplan_search_trace.jsonl";
-  const CliRun to_file = run_polyplan("search " + graph("small.json") + " --start 0 --goal 6 --trace '" + file.string() + "'");
+  const CliRun to_file =
+      run_polyplan("search " + graph("small.json") + " --start 0 --goal 6 --trace '" + file.string() + "'");
   ASSERT_EQ(to_file.exit_code, 0) << to_file.err;
   EXPECT_EQ(slurp(file), run.out);
   EXPECT_NE(to_file.out.find("astar: path 0 1 4 6"), std::string::npos);
@@ -112,8 +116,8 @@ TEST(Search, TraceHasOneLinePerExpansion) {
 
 TEST(Search, DrawsTheSearchAndItsAnimation) {
   const fs::path svg = fs::temp_directory_path() / "polyplan_search_test.svg";
-  const CliRun run = run_polyplan("search " + graph("grid_medium.json") + " --start 0 --goal 37 --svg '" + svg.string() +
-                                  "' --labels --backpointers --edge-weights --heuristic");
+  const CliRun run = run_polyplan("search " + graph("grid_medium.json") + " --start 0 --goal 37 --svg '" +
+                                  svg.string() + "' --labels --backpointers --edge-weights --heuristic");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("picture: " + svg.string()), std::string::npos);
   const std::string picture = slurp(svg);
@@ -121,11 +125,13 @@ TEST(Search, DrawsTheSearchAndItsAnimation) {
   EXPECT_NE(picture.find("backpointer"), std::string::npos);
   EXPECT_EQ(picture.find("<animate"), std::string::npos);
 
-  const CliRun animated = run_polyplan("search " + graph("grid_medium.json") + " --start 0 --goal 37 --svg '" + svg.string() + "' --animate");
+  const CliRun animated = run_polyplan("search " + graph("grid_medium.json") + " --start 0 --goal 37 --svg '" +
+                                       svg.string() + "' --animate");
   ASSERT_EQ(animated.exit_code, 0) << animated.err;
   const std::string frames = slurp(svg);
   std::size_t expanded = 0;
-  for (auto pos = frames.find("<circle class=\"expanded\""); pos != std::string::npos; pos = frames.find("<circle class=\"expanded\"", pos + 1))
+  for (auto pos = frames.find("<circle class=\"expanded\""); pos != std::string::npos;
+       pos = frames.find("<circle class=\"expanded\"", pos + 1))
     ++expanded;
   EXPECT_EQ(expanded, 33u);
   fs::remove(svg);
@@ -134,22 +140,26 @@ TEST(Search, DrawsTheSearchAndItsAnimation) {
 TEST(Search, RefusesBadGraphsAndOptionsInOneLine) {
   const std::string out_of_range = bad_graph("range.json", R"([{"x": [0, 0], "neighbors": [1], "neighbors_cost": [1]},
     {"x": [1, 0], "neighbors": [0, 9], "neighbors_cost": [1, 1]}])");
-  const std::string negative = bad_graph("negative.json", R"([{"x": [0, 0], "neighbors": [0], "neighbors_cost": [-1]}])");
+  const std::string negative =
+      bad_graph("negative.json", R"([{"x": [0, 0], "neighbors": [0], "neighbors_cost": [-1]}])");
   const std::string lengths = bad_graph("lengths.json", R"([{"x": [0, 0], "neighbors": [0], "neighbors_cost": []}])");
   const std::string no_x = bad_graph("no_x.json", R"([{"neighbors": [], "neighbors_cost": []}])");
   const struct {
     std::string arguments;
     std::string expected;
   } cases[] = {
-      {"search '" + out_of_range + "' --start 0 --goal 1", out_of_range + ": vertices[1].neighbors[1]: index 9 outside [0, 2)"},
+      {"search '" + out_of_range + "' --start 0 --goal 1",
+       out_of_range + ": vertices[1].neighbors[1]: index 9 outside [0, 2)"},
       {"search '" + negative + "' --start 0 --goal 0", negative + ": vertices[0].neighbors_cost[0]: negative cost -1"},
       {"search '" + lengths + "' --start 0 --goal 0", lengths + ": vertices[0]: 1 neighbors but 0 neighbors_cost"},
       {"search '" + no_x + "' --start 0 --goal 0", no_x + ": vertices[0]: missing field \"x\""},
       {"search " + graph("small.json") + " --start 0 --goal 7", "--goal 7: not a vertex of"},
-      {"search " + graph("small.json") + " --start 0 --goal 6 --method teleport", "--method teleport: unknown method (astar, dijkstra"},
+      {"search " + graph("small.json") + " --start 0 --goal 6 --method teleport",
+       "--method teleport: unknown method (astar, dijkstra"},
       {"search " + graph("small.json") + " --start 0 --goal 6 --method wastar --weight 0.5", "--weight 0.5"},
       {"search " + graph("small.json") + " --start 0 --goal 6 --animate", "--animate: give --svg OUT.svg"},
-      {"search " + graph("small.json") + " --start 0 --goal 6 --json - --trace -", "only one of them can go to standard output"},
+      {"search " + graph("small.json") + " --start 0 --goal 6 --json - --trace -",
+       "only one of them can go to standard output"},
       {"search /nonexistent.json --start 0 --goal 0", "/nonexistent.json: cannot open file"},
       {"search " + graph("small.json") + " --goal 6", "--start is required"},
   };

@@ -21,7 +21,8 @@ TEST(Steer, PrintsTheShortestCurveAsJson) {
   EXPECT_EQ(d["segments"][0]["steer"], "L");
   EXPECT_EQ(d["segments"][0]["gear"], 1);
   // Straight back: Reeds–Shepp reverses, Dubins must loop.
-  const auto rs = nlohmann::json::parse(run_polyplan("steer --model reeds-shepp --from 0,0,0 --to -3,0,0 --json -").out);
+  const auto rs =
+      nlohmann::json::parse(run_polyplan("steer --model reeds-shepp --from 0,0,0 --to -3,0,0 --json -").out);
   EXPECT_EQ(rs["word"], "S-");
   EXPECT_EQ(rs["segments"][0]["gear"], -1);
   EXPECT_DOUBLE_EQ(rs["length"].get<double>(), 3);

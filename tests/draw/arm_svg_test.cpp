@@ -84,8 +84,11 @@ ArmProblem problem_with_links(std::vector<double> links, double width) {
   p.arm.link_width = width;
   // A square obstacle with a square hole, right of the base, and two obstacle points.
   polyplan::PolygonWithHoles square;
-  square.outer = {{Rational(4), Rational(-1)}, {Rational(6), Rational(-1)}, {Rational(6), Rational(1)}, {Rational(4), Rational(1)}};
-  square.holes = {{{Rational(9, 2), Rational(-1, 2)}, {Rational(9, 2), Rational(1, 2)}, {Rational(11, 2), Rational(1, 2)},
+  square.outer = {
+      {Rational(4), Rational(-1)}, {Rational(6), Rational(-1)}, {Rational(6), Rational(1)}, {Rational(4), Rational(1)}};
+  square.holes = {{{Rational(9, 2), Rational(-1, 2)},
+                   {Rational(9, 2), Rational(1, 2)},
+                   {Rational(11, 2), Rational(1, 2)},
                    {Rational(11, 2), Rational(-1, 2)}}};
   p.obstacles = {square};
   p.obstacle_names = {"obstacles[0]"};
@@ -237,7 +240,7 @@ TEST(ArmAnimationSvg, CSpacePathIsCutWhereItCrossesASeam) {
   const auto& a = crossing[0];
   const auto& b = crossing[1];
   const double top = a[a.size() - 1], bottom = b[1];
-  EXPECT_GT(bottom - top, 400);  // the whole panel lies between the two ends (520 px)
+  EXPECT_GT(bottom - top, 400);              // the whole panel lies between the two ends (520 px)
   EXPECT_NEAR(a[a.size() - 2], b[0], 1e-6);  // at the same θ1
   for (std::size_t i = 1; i < a.size(); i += 2) EXPECT_GE(a[i], top - 1e-9);
   for (std::size_t i = 1; i < b.size(); i += 2) EXPECT_LE(b[i], bottom + 1e-9);
@@ -340,11 +343,9 @@ TEST(ArmAnimationSvg, InconsistentPicturesAreRefused) {
   const ArmProblem three = problem_with_links({2.0, 1.5, 1.0}, 0.2);
   EXPECT_THROW(polyplan::arm_animation_svg(ArmPlanPicture{}), std::invalid_argument);
   // A configuration with the wrong number of joints.
-  EXPECT_THROW(polyplan::arm_animation_svg(picture_of(two, {{0, 0}, {1, 1, 1}})),
-               std::invalid_argument);
+  EXPECT_THROW(polyplan::arm_animation_svg(picture_of(two, {{0, 0}, {1, 1, 1}})), std::invalid_argument);
   // A C-space picture of an arm that has not two joints, or whose states are not n·n or not states.
-  EXPECT_THROW(polyplan::arm_animation_svg(
-                   picture_of(three, {{0, 0, 0}}, uniform_image(4, CellGrid::free))),
+  EXPECT_THROW(polyplan::arm_animation_svg(picture_of(three, {{0, 0, 0}}, uniform_image(4, CellGrid::free))),
                std::invalid_argument);
   CellGrid short_image = uniform_image(4, CellGrid::free);
   short_image.states.pop_back();
@@ -395,14 +396,17 @@ TEST(ArmStrobeSvg, ColoursRampFromBlueAtTheStartToRedAtTheGoal) {
   const ArmProblem problem = problem_with_links({2.0, 1.5}, 0.2);
   const ArmPlanPicture picture = picture_of(problem, sweep({0.2, 0.4}, {2.0, -1.0}, 20));
   const std::string svg = polyplan::arm_strobe_svg(picture, 5);
-  const auto fill_of = [&](const std::string& group) { return attribute_at(svg, svg.find("<path", svg.find(group)), "fill"); };
+  const auto fill_of = [&](const std::string& group) {
+    return attribute_at(svg, svg.find("<path", svg.find(group)), "fill");
+  };
   EXPECT_EQ(fill_of("strobe-start"), "#1f77b4");
   EXPECT_EQ(fill_of("strobe-goal"), "#d62728");
   // Configurations 5, 10, 15 of 20: a quarter, half and three quarters of the way to red.
   const auto groups = positions(svg, "<g class=\"strobe-configuration\"");
   ASSERT_EQ(groups.size(), 3u);
   std::vector<int> reds;
-  for (std::size_t g : groups) reds.push_back(std::stoi(attribute_at(svg, svg.find("<path", g), "fill").substr(1, 2), nullptr, 16));
+  for (std::size_t g : groups)
+    reds.push_back(std::stoi(attribute_at(svg, svg.find("<path", g), "fill").substr(1, 2), nullptr, 16));
   // 0x1f + 183·t, rounded: 76.75, 122.5, 168.25.
   EXPECT_EQ(reds, (std::vector<int>{77, 123, 168}));
   EXPECT_NE(svg.find("every 5th configuration (3 of 21)"), std::string::npos) << svg;
@@ -455,7 +459,7 @@ TEST(ArmGraphSvg, TwoJointGraphIsDrawnOnThePanelCutAtTheSeamAndInTheWorkspace) {
     const auto pieces = subpaths_in_group(svg, "cspace-graph");
     ASSERT_EQ(pieces.size(), 4u) << strobe;
     for (const auto& piece : pieces) {
-      ASSERT_EQ(piece.size(), 4u);  // a straight line: two points
+      ASSERT_EQ(piece.size(), 4u);                    // a straight line: two points
       EXPECT_LT(std::abs(piece[3] - piece[1]), 260);  // half the 520 px panel
     }
     // The first edge: from θ2 = 5.9 up to the top edge, then from the bottom edge up to θ2 = 0.3, at θ1 = 1.

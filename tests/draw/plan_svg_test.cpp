@@ -85,15 +85,18 @@ TEST(DrawPlan, LegendNamesEveryPieceWithItsCount) {
   const std::string svg = draw_plan(c, three_reports()).str();
   EXPECT_EQ(nesting_error(svg), "");
   const Labels labels = legend_labels(svg);
-  for (const char* label : {"roadmap edges (4)", "roadmap vertices (5)", "free cells", "blocked cells",
-                            "grid graph vertices (free cell centres)", "expanded by the search (5)", "path 0", "path 2"})
+  for (const char* label :
+       {"roadmap edges (4)", "roadmap vertices (5)", "free cells", "blocked cells",
+        "grid graph vertices (free cell centres)", "expanded by the search (5)", "path 0", "path 2"})
     EXPECT_TRUE(has(labels, label)) << label;
   EXPECT_FALSE(has(labels, "path 1"));  // not found: nothing to draw
   EXPECT_FALSE(has(labels, "path"));
   // Cells first (under everything), then the C-space, the roadmap, the expanded vertices, the paths.
   EXPECT_EQ(labels.front(), "free cells");
   EXPECT_EQ(labels.back(), "path 2");
-  const auto at = [&](const std::string& label) { return std::find(labels.begin(), labels.end(), label) - labels.begin(); };
+  const auto at = [&](const std::string& label) {
+    return std::find(labels.begin(), labels.end(), label) - labels.begin();
+  };
   EXPECT_LT(at("obstacles"), at("roadmap edges (4)"));
   EXPECT_LT(at("roadmap vertices (5)"), at("expanded by the search (5)"));
   EXPECT_LT(at("expanded by the search (5)"), at("path 0"));
@@ -104,8 +107,8 @@ TEST(DrawPlan, PathsTakeThePalettesColourOfTheirReport) {
   const std::string body = body_of(draw_plan(c, three_reports()).str());
   EXPECT_EQ(count(body, stroke_is(theme::path_colour(0))), 1u);
   EXPECT_EQ(count(body, stroke_is(theme::path_colour(2))), 1u);
-  EXPECT_EQ(body.find(theme::path_colour(1)), std::string::npos);  // report 1 found nothing
-  EXPECT_EQ(dots_in_group(body, fill_is(theme::path_colour(0)) + " stroke=\"none\""), 4u);    // the paths' vertices
+  EXPECT_EQ(body.find(theme::path_colour(1)), std::string::npos);                           // report 1 found nothing
+  EXPECT_EQ(dots_in_group(body, fill_is(theme::path_colour(0)) + " stroke=\"none\""), 4u);  // the paths' vertices
   EXPECT_EQ(dots_in_group(body, fill_is(theme::path_colour(2)) + " stroke=\"none\""), 3u);
   EXPECT_EQ(count(body, stroke_is(theme::roadmap)), 1u);  // all edges in one path
   EXPECT_EQ(dots_in_group(body, fill_is(theme::roadmap)), 5u);
@@ -165,14 +168,15 @@ TEST(DrawPlan, OneReportIsJustPathAndReportsWithoutRecordsDrawTheirPathsOnly) {
 }
 
 TEST(DrawCells, CentresOnlyUpToSixtyCellsPerSide) {
-  for (const auto& [columns, rows, centres] :
-       {std::tuple{4u, 4u, true}, std::tuple{60u, 60u, true}, std::tuple{61u, 10u, false}, std::tuple{10u, 61u, false}}) {
+  for (const auto& [columns, rows, centres] : {std::tuple{4u, 4u, true}, std::tuple{60u, 60u, true},
+                                               std::tuple{61u, 10u, false}, std::tuple{10u, 61u, false}}) {
     svg::Drawing d({0, 0, static_cast<double>(columns), static_cast<double>(rows)});
     const auto grid = cells(columns, rows);
     draw_cells(d, *grid);
     const std::string svg = d.str();
     EXPECT_EQ(has(legend_labels(svg), "grid graph vertices (free cell centres)"), centres) << columns << " x " << rows;
-    EXPECT_EQ(dots_in_group(body_of(svg), fill_is(theme::cell_vertex)), centres ? free_cells(*grid) : 0u) << columns << " x " << rows;
+    EXPECT_EQ(dots_in_group(body_of(svg), fill_is(theme::cell_vertex)), centres ? free_cells(*grid) : 0u)
+        << columns << " x " << rows;
     EXPECT_TRUE(has(legend_labels(svg), "free cells"));
     EXPECT_TRUE(has(legend_labels(svg), "blocked cells"));
   }

@@ -42,7 +42,8 @@ TEST(PoseSvg, DrawsTheRobotAlongThePathAndMarksTheTurns) {
   const std::string svg = draw_plan(world, {turning_report()}).str();
   EXPECT_EQ(nesting_error(svg), "");
   const auto labels = legend_labels(svg);
-  for (const char* label : {"path (reference point)", "turns on the spot", "robot at start", "robot at goal", "obstacles"})
+  for (const char* label :
+       {"path (reference point)", "turns on the spot", "robot at start", "robot at goal", "obstacles"})
     EXPECT_TRUE(has(labels, label)) << label;
   // The strobe: the robot in the start's colour and in the goal's, and more than the five poses.
   EXPECT_GE(count(svg, "fill=\"" + theme::start_to_goal(0) + "\""), 2u);

@@ -20,7 +20,8 @@ struct Searched {
   SearchResult<DigraphVertexId> result;
 };
 
-Searched searched(const std::string& name, DigraphVertexId start, DigraphVertexId goal, Search algorithm = Search::astar) {
+Searched searched(const std::string& name, DigraphVertexId start, DigraphVertexId goal,
+                  Search algorithm = Search::astar) {
   std::vector<std::string> warnings;
   const GraphFile file = read_graph(std::string(POLYPLAN_SOURCE_DIR) + "/data/graphs/" + name, &warnings);
   Searched s{make_weighted_digraph(file.vertices), {}};
@@ -47,7 +48,8 @@ TEST(SearchSvg, AnimatesEachExpandedVertexOnce) {
   const std::string svg = draw_search_animation(s.graph, 0, 37, s.result, every_flag(), "medium").str();
   EXPECT_EQ(count(svg, "<circle class=\"expanded\""), s.result.expanded);
   // Each with its own <animate> inside, keyed at its step.
-  for (auto pos = svg.find("<circle class=\"expanded\""); pos != std::string::npos; pos = svg.find("<circle class=\"expanded\"", pos + 1)) {
+  for (auto pos = svg.find("<circle class=\"expanded\""); pos != std::string::npos;
+       pos = svg.find("<circle class=\"expanded\"", pos + 1)) {
     const auto end = svg.find("</circle>", pos);
     EXPECT_NE(svg.substr(pos, end - pos).find("<animate attributeName=\"opacity\""), std::string::npos);
   }
@@ -77,7 +79,8 @@ TEST(SearchSvg, DrawsTheFinalStateWithTheFlagsAsked) {
   EXPECT_EQ(plain.find("<animate"), std::string::npos);
 
   const std::string flagged = draw_search(s.graph, 0, 6, s.result, every_flag(), "small").str();
-  for (const char* label : {">g=1.5<", ">h=3.162<", ">f=4.662<"}) EXPECT_NE(flagged.find(label), std::string::npos) << label << " (vertex 1: h √10)";
+  for (const char* label : {">g=1.5<", ">h=3.162<", ">f=4.662<"})
+    EXPECT_NE(flagged.find(label), std::string::npos) << label << " (vertex 1: h √10)";
   EXPECT_NE(flagged.find(">2.2<"), std::string::npos) << "the one-way edge's weight";
   EXPECT_EQ(count(flagged, "<line class=\"backpointer\""), 6u) << "every vertex reached but the start";
   EXPECT_NE(flagged.find("h=4<"), std::string::npos) << "the start's heuristic";

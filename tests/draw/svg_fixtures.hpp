@@ -39,7 +39,8 @@ inline std::string attribute(const std::string& svg, const std::string& element,
 inline std::vector<double> numbers_in(const std::string& text) {
   std::string cleaned = text;
   for (char& c : cleaned)
-    if (c == 'M' || c == 'L' || c == 'H' || c == 'V' || c == 'Z' || c == ',' || c == ';' || c == '(' || c == ')') c = ' ';
+    if (c == 'M' || c == 'L' || c == 'H' || c == 'V' || c == 'Z' || c == ',' || c == ';' || c == '(' || c == ')')
+      c = ' ';
   std::vector<double> out;
   std::istringstream in(cleaned);
   for (double v; in >> v;) out.push_back(v);
@@ -58,7 +59,8 @@ inline std::string nesting_error(const std::string& xml) {
     if (tag[0] == '?') continue;
     if (tag[0] == '/') {
       const std::string name = tag.substr(1);
-      if (open.empty() || open.back() != name) return "</" + name + "> closes " + (open.empty() ? "nothing" : open.back());
+      if (open.empty() || open.back() != name)
+        return "</" + name + "> closes " + (open.empty() ? "nothing" : open.back());
       open.pop_back();
       continue;
     }

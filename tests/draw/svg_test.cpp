@@ -22,8 +22,8 @@ using polyplan::test::count;
 using polyplan::test::numbers_in;
 
 TEST(SvgDrawing, PictureShowsTheBoxWithASmallMargin) {
-  for (const Box2 box : {Box2{0, 0, 10, 5}, Box2{-3, 2, 1, 3}, Box2{1000, -2000, 1001, -1999.5},
-                         Box2{0, 0, 1e-6, 1e-6}}) {
+  for (const Box2 box :
+       {Box2{0, 0, 10, 5}, Box2{-3, 2, 1, 3}, Box2{1000, -2000, 1001, -1999.5}, Box2{0, 0, 1e-6, 1e-6}}) {
     const Drawing d(box, 640);
     const std::string svg = d.str();
     // The file is in the picture's pixel frame.
@@ -188,7 +188,9 @@ TEST(SvgDrawing, LegendAvoidsPointsOrMovesBelowThePicture) {
     EXPECT_TRUE(std::regex_search(svg, m, re)) << svg;
     return Box2{std::stod(m[1]), std::stod(m[2]), std::stod(m[1]) + std::stod(m[3]), std::stod(m[2]) + std::stod(m[4])};
   };
-  auto covers = [](const Box2& b, Point2 p) { return p.x >= b.xmin && p.x <= b.xmax && p.y >= b.ymin && p.y <= b.ymax; };
+  auto covers = [](const Box2& b, Point2 p) {
+    return p.x >= b.xmin && p.x <= b.xmax && p.y >= b.ymin && p.y <= b.ymax;
+  };
   {
     // A point in the top-left corner: the legend goes elsewhere, inside the picture.
     Drawing d({0, 0, 10, 10});
@@ -255,7 +257,8 @@ TEST(SvgDrawing, GroupsHoldWhatIsDrawnInsideThemAfterTheirChildren) {
   d.end_group();
   d.raw("<circle id=\"raw\" cx=\"1\" cy=\"2\" r=\"3\"/>");
   const std::string svg = d.str();
-  const auto group = svg.find("<g class=\"moving\" transform=\"rotate(30 5 5)\">\n<animate attributeName=\"opacity\"/>\n");
+  const auto group =
+      svg.find("<g class=\"moving\" transform=\"rotate(30 5 5)\">\n<animate attributeName=\"opacity\"/>\n");
   ASSERT_NE(group, std::string::npos) << svg;
   const auto circle = svg.find("<circle", group);
   const auto close = svg.find("</g>\n</g>\n", group);  // the points' own group, then ours

@@ -29,7 +29,8 @@ using Labels = std::vector<std::string>;
 
 // A unit square robot (reference at its lower-left corner) in [0, 6]^2 with the obstacle [2, 3]^2.
 const char* kRobotWorld = R"({"bounds": [0, 0, 6, 6], "obstacles": [[[2, 2], [3, 2], [3, 3], [2, 3]]],
-                              "robot": {"parts": [[[0, 0], [1, 0], [1, 1], [0, 1]]]}, "start": [0, 0], "goal": [5, 5]})";
+                              "robot": {"parts": [[[0, 0], [1, 0], [1, 1], [0, 1]]]}, "start": [0, 0], )"
+                          R"("goal": [5, 5]})";
 
 // A point robot whose free space is two squares meeting at (2, 2) (data/worlds/touching_corners.json).
 const char* kTwoComponents = R"({"bounds": [0, 0, 4, 4],
@@ -58,7 +59,8 @@ TEST(ViewBox, WithoutBoundsHoldsObstaclesCObstaclesQueriesAndTheRobotAtTheStart)
   // Obstacle [1, 2]^2; its C-obstacle for the robot [0, 1]^2 is [0, 2]^2; the goal (-3, 1); the
   // robot at the start (5, 5) reaches (6, 6).
   const World w = world_from(R"({"obstacles": [[[1, 1], [2, 1], [2, 2], [1, 2]]],
-                                 "robot": {"parts": [[[0, 0], [1, 0], [1, 1], [0, 1]]]}, "start": [5, 5], "goal": [-3, 1]})");
+                                 "robot": {"parts": [[[0, 0], [1, 0], [1, 1], [0, 1]]]}, "start": [5, 5], )"
+                             R"("goal": [-3, 1]})");
   const svg::Box2 box = view_box(w, CSpace(w));
   EXPECT_EQ(box.xmin, -3);
   EXPECT_EQ(box.ymin, 0);
@@ -149,7 +151,8 @@ TEST(DrawCspace, UnfilledLeavesTheFreeSpaceOut) {
   svg::Drawing d(view_box(c.world(), c));
   draw_cspace(d, c, FreeSpace::unfilled);
   const std::string svg = d.str();
-  EXPECT_EQ(legend_labels(svg), (Labels{"bounds", "C-obstacles (= obstacles, point robot)", "obstacles", "start", "goal"}));
+  EXPECT_EQ(legend_labels(svg),
+            (Labels{"bounds", "C-obstacles (= obstacles, point robot)", "obstacles", "start", "goal"}));
   for (const theme::Tint& tint : theme::free_tints) EXPECT_EQ(svg.find(tint.fill), std::string::npos) << tint.fill;
 }
 
@@ -160,8 +163,8 @@ TEST(DrawPath, LineAndDotsInTheGivenColour) {
   const std::string svg = d.str();
   EXPECT_EQ(legend_labels(svg), Labels{"touch and back"});
   const std::string body = body_of(svg);
-  EXPECT_EQ(count(body, stroke_is(theme::path_colour(3))), 1u);  // the line
-  EXPECT_EQ(dots_in_group(body, fill_is(theme::path_colour(3)) + " stroke=\"none\""), 3u);                         // its vertices
+  EXPECT_EQ(count(body, stroke_is(theme::path_colour(3))), 1u);                             // the line
+  EXPECT_EQ(dots_in_group(body, fill_is(theme::path_colour(3)) + " stroke=\"none\""), 3u);  // its vertices
 }
 
 TEST(DrawPath, EmptyPathDrawsNothing) {

@@ -25,7 +25,8 @@ std::string error_of(const std::string& text) {
 }
 
 // A good experiment with one field replaced by `field` (a JSON member, or "" for none).
-std::string with(const std::string& problems, const std::string& planners, const std::string& rest = R"("seeds": [1, 2], "time_limit": 1)") {
+std::string with(const std::string& problems, const std::string& planners,
+                 const std::string& rest = R"("seeds": [1, 2], "time_limit": 1)") {
   return R"({"name": "t", "problems": )" + problems + R"(, "planners": )" + planners + ", " + rest + "}";
 }
 
@@ -64,12 +65,16 @@ TEST(ExperimentFile, CostTimesDefaultToEvenStepsUpToTheLimit) {
 }
 
 TEST(ExperimentFile, AnUnknownOptionIsNamedWithThePlannersOptions) {
-  const std::string message = error_of(with(kOffice, R"([{"name": "a", "planner": "rrt"}, {"name": "b", "planner": "rrt", "options": {"k": 3}}])"));
-  EXPECT_EQ(message.rfind(kName + ": planners[1].options.k: unknown option for rrt (options: goal-bias, step, extend", 0), 0u) << message;
+  const std::string message = error_of(
+      with(kOffice, R"([{"name": "a", "planner": "rrt"}, {"name": "b", "planner": "rrt", "options": {"k": 3}}])"));
+  EXPECT_EQ(
+      message.rfind(kName + ": planners[1].options.k: unknown option for rrt (options: goal-bias, step, extend", 0), 0u)
+      << message;
 }
 
 TEST(ExperimentFile, ABadOptionValueIsTheRegistrysMessage) {
-  const std::string message = error_of(with(kOffice, R"([{"name": "a", "planner": "rrt", "options": {"goal-bias": "often"}}])"));
+  const std::string message =
+      error_of(with(kOffice, R"([{"name": "a", "planner": "rrt", "options": {"goal-bias": "often"}}])"));
   EXPECT_NE(message.find("planners[0]: planner rrt: option goal-bias=often"), std::string::npos) << message;
 }
 
@@ -82,15 +87,19 @@ TEST(ExperimentFile, SeedAndTimeAreTheExperimentsNotOptions) {
 
 TEST(ExperimentFile, APlannerMustPlanEveryProblem) {
   const std::string message = error_of(with(kArm, R"([{"name": "v", "planner": "visibility"}])"));
-  EXPECT_EQ(message.rfind(kName + ": planners[0].planner: no planner \"visibility\" plans problems[0]", 0), 0u) << message;
+  EXPECT_EQ(message.rfind(kName + ": planners[0].planner: no planner \"visibility\" plans problems[0]", 0), 0u)
+      << message;
   EXPECT_NE(message.find("its planners: grid, prm"), std::string::npos) << message;
 }
 
 TEST(ExperimentFile, ProblemsAreCheckedAgainstTheirFiles) {
-  EXPECT_EQ(error_of(with(R"([{"name": "o", "file": "../worlds/office.json", "query": "nowhere"}])", kRrt)).rfind(
-                kName + ": problems[0].query: no query named \"nowhere\" (queries: start/goal, queries[0], queries[1]", 0),
-            0u);
-  EXPECT_EQ(error_of(with(R"([{"name": "o", "file": "../worlds/office.json", "query": 9}])", kRrt)).rfind(kName + ": problems[0].query: no query 9", 0),
+  EXPECT_EQ(
+      error_of(with(R"([{"name": "o", "file": "../worlds/office.json", "query": "nowhere"}])", kRrt))
+          .rfind(kName + ": problems[0].query: no query named \"nowhere\" (queries: start/goal, queries[0], queries[1]",
+                 0),
+      0u);
+  EXPECT_EQ(error_of(with(R"([{"name": "o", "file": "../worlds/office.json", "query": 9}])", kRrt))
+                .rfind(kName + ": problems[0].query: no query 9", 0),
             0u);
   const std::string missing = error_of(with(R"([{"name": "o", "file": "missing.json"}])", kRrt));
   EXPECT_EQ(missing.rfind(kName + ": problems[0].file: ", 0), 0u) << missing;
@@ -102,13 +111,19 @@ TEST(ExperimentFile, ProblemsAreCheckedAgainstTheirFiles) {
 }
 
 TEST(ExperimentFile, KeysAndValuesAreChecked) {
-  EXPECT_EQ(error_of("[]"), kName + ": experiment: expected a JSON object with problems, planners, seeds and time_limit");
+  EXPECT_EQ(error_of("[]"),
+            kName + ": experiment: expected a JSON object with problems, planners, seeds and time_limit");
   EXPECT_EQ(error_of("{").rfind(kName + ": not JSON", 0), 0u);
-  EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [1], "time_limt": 1)")).rfind(kName + ": time_limt: unknown key", 0), 0u);
+  EXPECT_EQ(
+      error_of(with(kOffice, kRrt, R"("seeds": [1], "time_limt": 1)")).rfind(kName + ": time_limt: unknown key", 0),
+      0u);
   EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [1])")), kName + ": time_limit: missing");
-  EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [], "time_limit": 1)")), kName + ": seeds: expected a non-empty array");
-  EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [-1], "time_limit": 1)")), kName + ": seeds[0]: expected a whole number >= 0");
-  EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [1], "time_limit": 0)")), kName + ": time_limit: expected a positive number of seconds");
+  EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [], "time_limit": 1)")),
+            kName + ": seeds: expected a non-empty array");
+  EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [-1], "time_limit": 1)")),
+            kName + ": seeds[0]: expected a whole number >= 0");
+  EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [1], "time_limit": 0)")),
+            kName + ": time_limit: expected a positive number of seconds");
   EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [1], "time_limit": 1, "cost_times": [0.5, 2])")),
             kName + ": cost_times[1]: after the time limit (2 > 1)");
   EXPECT_EQ(error_of(with(kOffice, kRrt, R"("seeds": [1], "time_limit": 1, "cost_times": [0.5, 0.5])")),

@@ -13,7 +13,8 @@ const std::string kName = std::string(POLYPLAN_SOURCE_DIR) + "/data/experiments/
 
 Experiment small() {
   return parse_experiment(R"({"name": "small",
-      "problems": [{"name": "office", "file": "../worlds/office.json"}, {"name": "arm", "file": "../arms/three_link_forest.json"}],
+      "problems": [{"name": "office", "file": "../worlds/office.json"}, {"name": "arm", )"
+                          R"("file": "../arms/three_link_forest.json"}],
       "planners": [{"name": "rrt", "planner": "rrt", "options": {"iterations": 20000}},
                    {"name": "connect", "planner": "rrtconnect"}],
       "seeds": [1, 2, 3], "time_limit": 30, "cost_times": [10, 30]})",

@@ -19,8 +19,8 @@ namespace {
 
 const std::string kSource = POLYPLAN_SOURCE_DIR;
 
-ExperimentRun run(std::size_t planner, std::uint64_t seed, PlanStatus status, double seconds, double setup, double length,
-                  std::vector<SolutionImprovement> improvements) {
+ExperimentRun run(std::size_t planner, std::uint64_t seed, PlanStatus status, double seconds, double setup,
+                  double length, std::vector<SolutionImprovement> improvements) {
   ExperimentRun r;
   r.problem = 0, r.planner = planner, r.seed = seed;
   r.status = status;

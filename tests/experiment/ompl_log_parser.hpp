@@ -15,9 +15,9 @@ namespace polyplan::test {
 
 struct OmplLogPlanner {
   std::string name;
-  std::vector<std::string> settings;                   // the common properties' lines
-  std::vector<std::string> columns, types;             // per run property: the script's column and type
-  std::vector<std::vector<std::string>> runs;          // values, as many as columns (empty: NULL)
+  std::vector<std::string> settings;           // the common properties' lines
+  std::vector<std::string> columns, types;     // per run property: the script's column and type
+  std::vector<std::vector<std::string>> runs;  // values, as many as columns (empty: NULL)
   std::vector<std::string> progress_columns;
   std::vector<std::vector<std::vector<std::string>>> progress;  // per run, per sample, the values
 };
@@ -142,7 +142,8 @@ inline OmplLog parse_ompl_log(std::istream& in) {
   for (std::size_t p = 0; p < planners; ++p) {
     OmplLogPlanner planner;
     planner.name = lines.take();
-    for (std::size_t i = detail::count(detail::words(lines.take()).at(0)); i > 0; --i) planner.settings.push_back(lines.take());
+    for (std::size_t i = detail::count(detail::words(lines.take()).at(0)); i > 0; --i)
+      planner.settings.push_back(lines.take());
     for (std::size_t i = detail::count(detail::words(lines.take()).at(0)); i > 0; --i) {
       w = detail::words(lines.take());
       if (w.size() < 2) throw std::runtime_error(planner.name + ": a run property without a type");
@@ -154,8 +155,8 @@ inline OmplLog parse_ompl_log(std::istream& in) {
     for (std::size_t i = detail::count(detail::words(lines.take()).at(0)); i > 0; --i) {
       planner.runs.push_back(detail::split_before_last(lines.take(), "; "));
       if (planner.runs.back().size() != planner.columns.size())
-        throw std::runtime_error(planner.name + ": a run with " + std::to_string(planner.runs.back().size()) + " values for " +
-                                 std::to_string(planner.columns.size()) + " properties");
+        throw std::runtime_error(planner.name + ": a run with " + std::to_string(planner.runs.back().size()) +
+                                 " values for " + std::to_string(planner.columns.size()) + " properties");
     }
     const std::string next = lines.take();
     if (next != ".") {
@@ -169,7 +170,8 @@ inline OmplLog parse_ompl_log(std::istream& in) {
         std::vector<std::vector<std::string>> samples;
         for (const std::string& sample : detail::split_before_last(lines.take(), ";")) {
           samples.push_back(detail::split_before_last(sample, ","));
-          if (samples.back().size() != planner.progress_columns.size()) throw std::runtime_error(planner.name + ": a progress sample of the wrong size");
+          if (samples.back().size() != planner.progress_columns.size())
+            throw std::runtime_error(planner.name + ": a progress sample of the wrong size");
         }
         planner.progress.push_back(samples);
       }

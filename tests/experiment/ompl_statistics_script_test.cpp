@@ -19,9 +19,10 @@ namespace fs = std::filesystem;
 
 std::string find_script() {
   if (const char* given = std::getenv("OMPL_BENCHMARK_STATISTICS"); given && fs::exists(given)) return given;
-  for (const char* place : {"/usr/share/ompl/scripts/ompl_benchmark_statistics.py", "/usr/local/share/ompl/scripts/ompl_benchmark_statistics.py",
-                            "/usr/bin/ompl_benchmark_statistics.py", "/usr/local/bin/ompl_benchmark_statistics.py",
-                            "/usr/share/ompl/demos/ompl_benchmark_statistics.py"})
+  for (const char* place :
+       {"/usr/share/ompl/scripts/ompl_benchmark_statistics.py",
+        "/usr/local/share/ompl/scripts/ompl_benchmark_statistics.py", "/usr/bin/ompl_benchmark_statistics.py",
+        "/usr/local/bin/ompl_benchmark_statistics.py", "/usr/share/ompl/demos/ompl_benchmark_statistics.py"})
     if (fs::exists(place)) return place;
   return "";
 }
@@ -38,18 +39,21 @@ std::pair<bool, std::string> output_of(const std::string& command) {
 
 TEST(OmplStatisticsScript, ReadsTheLogIntoItsDatabaseWithEveryRun) {
   const std::string script = find_script();
-  if (script.empty()) GTEST_SKIP() << "ompl_benchmark_statistics.py not found (set OMPL_BENCHMARK_STATISTICS to run this test)";
+  if (script.empty())
+    GTEST_SKIP() << "ompl_benchmark_statistics.py not found (set OMPL_BENCHMARK_STATISTICS to run this test)";
   if (!output_of("python3 -c 'import sqlite3'").first) GTEST_SKIP() << "python3 with sqlite3 not found";
   const fs::path dir = fs::temp_directory_path() / ("polyplan_ompl_script_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   const std::string log = std::string(POLYPLAN_SOURCE_DIR) + "/tests/data/experiment/tiny.log";
   const std::string database = (dir / "tiny.db").string();
-  const auto [read, said] = output_of("cd '" + dir.string() + "' && python3 '" + script + "' '" + log + "' -d '" + database + "' 2>&1");
+  const auto [read, said] =
+      output_of("cd '" + dir.string() + "' && python3 '" + script + "' '" + log + "' -d '" + database + "' 2>&1");
   ASSERT_TRUE(read) << said;
   const auto [queried, rows] = output_of(
       "python3 -c \"import sqlite3, sys\n"
       "c = sqlite3.connect(sys.argv[1])\n"
-      "for name, runs, time in c.execute('SELECT plannerConfigs.name, count(*), sum(runs.time) FROM runs JOIN plannerConfigs "
+      "for name, runs, time in c.execute('SELECT plannerConfigs.name, count(*), sum(runs.time) FROM runs JOIN "
+      "plannerConfigs "
       "ON runs.plannerid = plannerConfigs.id GROUP BY plannerConfigs.name ORDER BY plannerConfigs.name'):\n"
       "    print(name, runs, repr(time))\n"
       "print(c.execute('SELECT name, runcount, timelimit FROM experiments').fetchall())\" '" +

@@ -105,7 +105,8 @@ World random_world(std::mt19937& rng, int kind) {
     }
     if (kind == 2) world.robot.parts = {rectangle(Rational(-1, 2), Rational(-1, 2), Rational(1, 2), Rational(1, 2))};
   }
-  for (std::size_t i = 0; i < world.obstacles.size(); ++i) world.obstacle_names.push_back("obstacles[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i)
+    world.obstacle_names.push_back("obstacles[" + std::to_string(i) + "]");
   // Orient the rings as the readers do (the triangles come in either orientation).
   for (PolygonWithHoles& o : world.obstacles)
     if (polyplan::test::signed_area(o.outer) < 0) std::reverse(o.outer.begin(), o.outer.end());
@@ -119,7 +120,8 @@ std::vector<ExactPoint> free_lattice_points(const CSpace& cspace) {
   std::vector<ExactPoint> out;
   for (int y = 0; y <= 20; ++y)
     for (int x = 0; x <= 20; ++x)
-      if (const ExactPoint p{half_units(x), half_units(y)}; cspace.locate(p).kind != Location::Kind::blocked) out.push_back(p);
+      if (const ExactPoint p{half_units(x), half_units(y)}; cspace.locate(p).kind != Location::Kind::blocked)
+        out.push_back(p);
   return out;
 }
 
@@ -202,13 +204,13 @@ TEST(FreeSpaceTriangulation, StartInsideAnObstacleOnATriangulationEdge) {
 
 TEST(FreeSpaceTriangulation, GrazingACornerIsValid) {
   const Triangulated t(kSquareInABox);
-  EXPECT_EQ(t.why_blocked(pt("1", "3"), pt("3", "1")), std::nullopt);  // touches (2, 2) only
+  EXPECT_EQ(t.why_blocked(pt("1", "3"), pt("3", "1")), std::nullopt);                        // touches (2, 2) only
   EXPECT_NE(t.why_blocked(pt("1", "2.9999999999"), pt("2.9999999999", "1")), std::nullopt);  // cuts it by 1e-10
 }
 
 TEST(FreeSpaceTriangulation, SlidingAlongAnEdgeIsValid) {
   const Triangulated t(kSquareInABox);
-  EXPECT_EQ(t.why_blocked(pt("0", "1"), pt("4", "1")), std::nullopt);  // along the bottom edge, past both corners
+  EXPECT_EQ(t.why_blocked(pt("0", "1"), pt("4", "1")), std::nullopt);      // along the bottom edge, past both corners
   EXPECT_EQ(t.why_blocked(pt("3/2", "2"), pt("3/2", "4")), std::nullopt);  // from the top edge away
   EXPECT_EQ(t.why_blocked(pt("0", "0"), pt("4", "0")), std::nullopt);      // along the bounds
   EXPECT_EQ(t.why_path_blocked({pt("0", "1"), pt("2", "1"), pt("2", "3")}), std::nullopt);  // and around the corner
@@ -225,7 +227,8 @@ TEST(FreeSpaceTriangulation, PinchPointIsAZeroWidthPassage) {
   EXPECT_EQ(t.why_blocked(pt("1", "1"), pt("3", "3")), "passes through the pinch point [2, 2] (zero-width passage)");
   // Touching the pinch point and turning back is a motion; turning into the other wedge is not.
   EXPECT_EQ(t.why_path_blocked({pt("1", "1"), pt("2", "2"), pt("1", "1.5")}), std::nullopt);
-  EXPECT_EQ(t.why_path_blocked({pt("0", "0"), pt("2", "2"), pt("2", "0")}), std::nullopt);  // along both walls of one wedge
+  EXPECT_EQ(t.why_path_blocked({pt("0", "0"), pt("2", "2"), pt("2", "0")}),
+            std::nullopt);  // along both walls of one wedge
   EXPECT_EQ(t.why_path_blocked({pt("1", "1"), pt("2", "2"), pt("3", "3")}),
             "turns at the pinch point [2, 2] into another free wedge");
   // Each half alone is a motion: to the pinch point, and from it.
@@ -327,7 +330,8 @@ TEST(FreeSpaceTriangulation, VisibleFromPointAgreesWithBruteForceUpToStraightCha
     for (const ExactPoint& p : viewpoints) {
       bool free = false;
       const std::set<std::size_t> seen = visible(t, p, &free);
-      EXPECT_EQ(free, t.cspace.locate(p).kind != Location::Kind::blocked) << "world " << round << " from " << to_string(p);
+      EXPECT_EQ(free, t.cspace.locate(p).kind != Location::Kind::blocked)
+          << "world " << round << " from " << to_string(p);
       const std::set<std::size_t> expected = brute_force_visible(t, p);
       std::string wrong;
       for (std::size_t v = 0; v < t.triangulation.vertex_count(); ++v) {
@@ -392,7 +396,7 @@ TEST(FreeSpaceTriangulation, ComponentsAtAPointAndAtAPinch) {
   std::sort(pinch.begin(), pinch.end());
   EXPECT_EQ(pinch, (std::vector<int>{std::min(low[0], high[0]), std::max(low[0], high[0])}));
   EXPECT_TRUE(t.triangulation.components_at(to_point(pt("1", "3"))).empty());  // inside an obstacle
-  EXPECT_EQ(t.triangulation.components_at(to_point(pt("0", "1"))), low);      // on the bounds
+  EXPECT_EQ(t.triangulation.components_at(to_point(pt("0", "1"))), low);       // on the bounds
 }
 
 TEST(FreeSpaceTriangulation, ComponentsAgreeWithCSpaceLocate) {
@@ -430,7 +434,8 @@ TEST(FreeSpaceTriangulation, VerticesAreTheFreeSpaceBoundarysVertices) {
   EXPECT_EQ(pinch.triangulation.vertex_count(), 7u);
   EXPECT_GT(pinch.triangulation.triangle_count(), 0u);
   std::size_t pinch_points = 0;
-  for (std::size_t v = 0; v < pinch.triangulation.vertex_count(); ++v) pinch_points += pinch.triangulation.wedges(v).is_pinch();
+  for (std::size_t v = 0; v < pinch.triangulation.vertex_count(); ++v)
+    pinch_points += pinch.triangulation.wedges(v).is_pinch();
   EXPECT_EQ(pinch_points, 1u);
   // In random worlds: the arrangement's vertices, each on the boundary of the free space, and
   // every vertex of the free components' rings among them.
@@ -452,7 +457,8 @@ TEST(FreeSpaceTriangulation, VerticesAreTheFreeSpaceBoundarysVertices) {
       std::vector<Ring> rings = c.holes;
       rings.push_back(c.outer);
       for (const Ring& ring : rings)
-        for (const ExactPoint& p : ring) EXPECT_TRUE(std::binary_search(points.begin(), points.end(), to_string(p))) << to_string(p);
+        for (const ExactPoint& p : ring)
+          EXPECT_TRUE(std::binary_search(points.begin(), points.end(), to_string(p))) << to_string(p);
     }
   }
 }

@@ -37,7 +37,8 @@ TEST(IntegerTriangulation, WalksGiveTheExactKernelsVerdicts) {
     IntegerTriangulation::Scratch scratch;
     for (int k = 0; k < 300; ++k) {
       const IntegerPoint a{x(random), y(random)}, b{x(random), y(random)};
-      const detail::Point pa(static_cast<double>(a.x), static_cast<double>(a.y)), pb(static_cast<double>(b.x), static_cast<double>(b.y));
+      const detail::Point pa(static_cast<double>(a.x), static_cast<double>(a.y)),
+          pb(static_cast<double>(b.x), static_cast<double>(b.y));
       const bool blocked = exact.why_blocked(pa, pb).has_value();
       (blocked ? blocked_segments : free_segments) += 1;
       for (const IntegerTriangulation* t : {&*converted, &from_cells}) {
@@ -48,8 +49,9 @@ TEST(IntegerTriangulation, WalksGiveTheExactKernelsVerdicts) {
       std::vector<std::size_t> seen;
       const bool free = exact.visible_from_point(pa, seen);
       std::set<std::pair<std::int64_t, std::int64_t>> expected;
-      for (std::size_t v : seen) expected.insert({static_cast<std::int64_t>(CGAL::to_double(exact.point(v).x())),
-                                                  static_cast<std::int64_t>(CGAL::to_double(exact.point(v).y()))});
+      for (std::size_t v : seen)
+        expected.insert({static_cast<std::int64_t>(CGAL::to_double(exact.point(v).x())),
+                         static_cast<std::int64_t>(CGAL::to_double(exact.point(v).y()))});
       for (const IntegerTriangulation* t : {&*converted, &from_cells}) {
         std::vector<int> visible;
         EXPECT_EQ(t->visible_from_point(a, t->locate(a), visible, scratch), free);

@@ -23,8 +23,10 @@ Ring cell_at(const TrapezoidalDecomposition& d, const ExactPoint& p) {
   return cells.empty() ? Ring{} : canonical(d.cells()[cells[0]]);
 }
 
-Ring box(int x0, int y0, int x1, int y1) { return {pt(std::to_string(x0), std::to_string(y0)), pt(std::to_string(x1), std::to_string(y0)),
-                                                   pt(std::to_string(x1), std::to_string(y1)), pt(std::to_string(x0), std::to_string(y1))}; }
+Ring box(int x0, int y0, int x1, int y1) {
+  return {pt(std::to_string(x0), std::to_string(y0)), pt(std::to_string(x1), std::to_string(y0)),
+          pt(std::to_string(x1), std::to_string(y1)), pt(std::to_string(x0), std::to_string(y1))};
+}
 
 // Walls as "x: lower..upper" texts, sorted, for whole-set comparisons.
 std::vector<std::string> wall_texts(const TrapezoidalDecomposition& d) {
@@ -67,12 +69,12 @@ TEST(TrapezoidalDecomposition, OneSquareInABoxMakesFourCellsAndFourWalls) {
 TEST(TrapezoidalDecomposition, WhereAPointLiesCountsTheCellsAroundIt) {
   const CSpace c(world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]]})"));
   const TrapezoidalDecomposition d(c);
-  EXPECT_EQ(d.cells_at(pt("4", "2")).size(), 2u);   // on a wall
-  EXPECT_EQ(d.cells_at(pt("4", "4")).size(), 2u);   // the square's corner: left and bottom cells
-  EXPECT_EQ(d.cells_at(pt("5", "4")).size(), 1u);   // on the square's bottom: the cell below
-  EXPECT_EQ(d.cells_at(pt("4", "0")).size(), 2u);   // a wall's foot on the bounds
-  EXPECT_TRUE(d.cells_at(pt("5", "5")).empty());    // inside the obstacle
-  EXPECT_TRUE(d.in_frame(pt("100", "100")));        // bounded: no frame
+  EXPECT_EQ(d.cells_at(pt("4", "2")).size(), 2u);  // on a wall
+  EXPECT_EQ(d.cells_at(pt("4", "4")).size(), 2u);  // the square's corner: left and bottom cells
+  EXPECT_EQ(d.cells_at(pt("5", "4")).size(), 1u);  // on the square's bottom: the cell below
+  EXPECT_EQ(d.cells_at(pt("4", "0")).size(), 2u);  // a wall's foot on the bounds
+  EXPECT_TRUE(d.cells_at(pt("5", "5")).empty());   // inside the obstacle
+  EXPECT_TRUE(d.in_frame(pt("100", "100")));       // bounded: no frame
 }
 
 TEST(TrapezoidalDecomposition, VerticesOnOneVerticalLineShareTheirWalls) {
@@ -81,7 +83,8 @@ TEST(TrapezoidalDecomposition, VerticesOnOneVerticalLineShareTheirWalls) {
       "obstacles": [[[4, 1], [6, 1], [6, 3], [4, 3]], [[4, 6], [6, 6], [6, 8], [4, 8]]]})"));
   const TrapezoidalDecomposition d(c);
   EXPECT_EQ(d.cells().size(), 5u);
-  EXPECT_EQ(wall_texts(d), (std::vector<std::string>{"4: 0..1", "4: 3..6", "4: 8..10", "6: 0..1", "6: 3..6", "6: 8..10"}));
+  EXPECT_EQ(wall_texts(d),
+            (std::vector<std::string>{"4: 0..1", "4: 3..6", "4: 8..10", "6: 0..1", "6: 3..6", "6: 8..10"}));
   EXPECT_EQ(cell_at(d, pt("5", "4")), box(4, 3, 6, 6));
   EXPECT_EQ(total_area(d), 92);
 }
@@ -182,7 +185,8 @@ TEST(TrapezoidalDecomposition, APolygonRobotDecomposesItsCSpace) {
 }
 
 TEST(TrapezoidalDecomposition, ARobotThatDoesNotFitHasNoCells) {
-  const CSpace c(world_from(R"({"bounds": [0, 0, 1, 1], "obstacles": [], "robot": {"parts": [[[-1, -1], [1, -1], [1, 1], [-1, 1]]]}})"));
+  const CSpace c(world_from(
+      R"({"bounds": [0, 0, 1, 1], "obstacles": [], "robot": {"parts": [[[-1, -1], [1, -1], [1, 1], [-1, 1]]]}})"));
   const TrapezoidalDecomposition d(c);
   EXPECT_TRUE(d.cells().empty());
   EXPECT_TRUE(d.cells_at(pt("0.5", "0.5")).empty());

@@ -53,7 +53,8 @@ TEST_P(VoronoiDiagramOfWorld, IsTheSameEveryTimeItIsBuilt) {
   expect_same(*first, again);
 }
 
-INSTANTIATE_TEST_SUITE_P(ShippedWorlds, VoronoiDiagramOfWorld, ::testing::Values("office", "maze", "seed004", "sphere_world"));
+INSTANTIATE_TEST_SUITE_P(ShippedWorlds, VoronoiDiagramOfWorld,
+                         ::testing::Values("office", "maze", "seed004", "sphere_world"));
 
 }  // namespace
 }  // namespace polyplan

@@ -16,16 +16,16 @@ const char* kSquareInABox = R"({"bounds": [0, 0, 10, 10], "obstacles": [[[4, 4],
 
 TEST(Clearance, AtAPointIsTheDistanceToTheNearestObstacleOrWall) {
   const CSpace c(world_from(kSquareInABox));
-  EXPECT_DOUBLE_EQ(clearance_at(c, pt("1", "5")), 1);      // the left wall
-  EXPECT_DOUBLE_EQ(clearance_at(c, pt("3", "5")), 1);      // the square's left side
+  EXPECT_DOUBLE_EQ(clearance_at(c, pt("1", "5")), 1);                              // the left wall
+  EXPECT_DOUBLE_EQ(clearance_at(c, pt("3", "5")), 1);                              // the square's left side
   EXPECT_DOUBLE_EQ(clearance_at(c, pt("3", "3")), std::min(std::sqrt(2.0), 3.0));  // the square's corner
-  EXPECT_DOUBLE_EQ(clearance_at(c, pt("4", "5")), 0);      // on the square
-  EXPECT_DOUBLE_EQ(clearance_at(c, pt("5", "5")), 1);      // inside it: 1 from its boundary
+  EXPECT_DOUBLE_EQ(clearance_at(c, pt("4", "5")), 0);                              // on the square
+  EXPECT_DOUBLE_EQ(clearance_at(c, pt("5", "5")), 1);                              // inside it: 1 from its boundary
 }
 
 TEST(Clearance, AlongAPathIsItsNarrowestPlaceNotOnlyItsCorners) {
   const CSpace c(world_from(kSquareInABox));
-  EXPECT_DOUBLE_EQ(path_clearance(c, {pt("2", "3"), pt("8", "3")}), 1);  // passes 1 under the square
+  EXPECT_DOUBLE_EQ(path_clearance(c, {pt("2", "3"), pt("8", "3")}), 1);                    // passes 1 under the square
   EXPECT_DOUBLE_EQ(path_clearance(c, {pt("2", "2.5"), pt("5", "1"), pt("8", "2.5")}), 1);  // dips to 1 above the wall
   // Grazing a corner: 0.
   EXPECT_DOUBLE_EQ(path_clearance(c, {pt("2", "2"), pt("8", "8")}), 0);

@@ -109,9 +109,14 @@ TEST(CSpace, BoundsAreWalls) {
 
 TEST(CSpace, ExactFitCorridorClosesAndOneBillionthMoreOpensIt) {
   // Two walls 1 apart across the whole box; a unit square robot fits only exactly.
-  const std::string walls = R"("bounds": [0, 0, 10, 9], "robot": {"parts": [[[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]]})";
-  const CSpace exact(world_from("{" + walls + R"(, "obstacles": [[[0, 3], [10, 3], [10, 4], [0, 4]], [[0, 5], [10, 5], [10, 6], [0, 6]]]})"));
-  const CSpace wider(world_from("{" + walls + R"(, "obstacles": [[[0, 3], [10, 3], [10, 4], [0, 4]], [[0, 5.000000001], [10, 5.000000001], [10, 6], [0, 6]]]})"));
+  const std::string walls =
+      R"("bounds": [0, 0, 10, 9], "robot": {"parts": [[[-0.5, -0.5], [0.5, -0.5], [0.5, 0.5], [-0.5, 0.5]]]})";
+  const CSpace exact(world_from(
+      "{" + walls + R"(, "obstacles": [[[0, 3], [10, 3], [10, 4], [0, 4]], [[0, 5], [10, 5], [10, 6], [0, 6]]]})"));
+  const CSpace wider(world_from(
+      "{" + walls +
+      R"(, "obstacles": [[[0, 3], [10, 3], [10, 4], [0, 4]], [[0, 5.000000001], [10, 5.000000001], [10, 6], )"
+      R"([0, 6]]]})"));
   EXPECT_EQ(exact.free_components().size(), 2u);  // below and above the walls
   EXPECT_EQ(wider.free_components().size(), 3u);  // plus the corridor
   EXPECT_EQ(exact.locate(pt("5", "4.5")).kind, Location::Kind::blocked);
@@ -238,7 +243,8 @@ TEST(Locate, NextToWhereObstaclesTouchReturns) {
   std::promise<Location::Kind> kind;
   std::future<Location::Kind> answer = kind.get_future();
   std::thread([c, kind = std::move(kind)]() mutable { kind.set_value(c->locate(pt("2", "3/2")).kind); }).detach();
-  ASSERT_EQ(answer.wait_for(std::chrono::seconds(10)), std::future_status::ready) << "CSpace::locate did not return in 10 s";
+  ASSERT_EQ(answer.wait_for(std::chrono::seconds(10)), std::future_status::ready)
+      << "CSpace::locate did not return in 10 s";
   EXPECT_EQ(answer.get(), Location::Kind::free);
 }
 
@@ -267,8 +273,9 @@ std::vector<Location::Kind> locate_lattice(const std::shared_ptr<const CSpace>& 
 // landmark walk): a triangle whose apex touches a box's top edge, and a hole touching its outer
 // boundary at a vertex. Every lattice point is located, and a few are checked by hand.
 TEST(Locate, WorldsThatHungInTheLandmarkWalkAnswer) {
-  const auto apex = std::make_shared<const CSpace>(world_from(
-      R"({"bounds": [-1, -1, 7, 7], "obstacles": [[[0, 0], [6, 0], [6, 2], [0, 2]], [[3, 2], [4, 4], [2, 4]]], "start": [3, -0.5], "goal": [6.5, 6.5]})"));
+  const auto apex = std::make_shared<const CSpace>(
+      world_from(R"({"bounds": [-1, -1, 7, 7], "obstacles": [[[0, 0], [6, 0], [6, 2], [0, 2]], [[3, 2], [4, 4], [2, )"
+                 R"(4]]], "start": [3, -0.5], "goal": [6.5, 6.5]})"));
   EXPECT_EQ(locate_lattice(apex, -1, 7).size(), 17u * 17u);
   EXPECT_EQ(apex->locate(pt("3", "-0.5")).kind, Location::Kind::free);
   EXPECT_EQ(apex->locate(pt("3", "2")).kind, Location::Kind::contact);
@@ -277,7 +284,8 @@ TEST(Locate, WorldsThatHungInTheLandmarkWalkAnswer) {
   EXPECT_EQ(apex->free_components().size(), 1u);
 
   const auto hole = std::make_shared<const CSpace>(world_from(
-      R"({"bounds": [0, 0, 10, 10], "obstacles": [{"outer": [[1, 1], [9, 1], [9, 9], [1, 9]], "holes": [[[1, 1], [3, 5], [5, 3]]]}]})"));
+      R"({"bounds": [0, 0, 10, 10], "obstacles": [{"outer": [[1, 1], [9, 1], [9, 9], [1, 9]], "holes": [[[1, )"
+      R"(1], [3, 5], [5, 3]]]}]})"));
   EXPECT_EQ(locate_lattice(hole, 0, 10).size(), 21u * 21u);
   EXPECT_EQ(hole->locate(pt("3", "3")).kind, Location::Kind::free);
   EXPECT_EQ(hole->locate(pt("1", "1")).kind, Location::Kind::contact);
@@ -292,7 +300,8 @@ TEST(Locate, WorldsThatHungInTheLandmarkWalkAnswer) {
 // CGAL kept the hole filled).
 TEST(Locate, HolesSharingAnEdgeAreOneFreeRegion) {
   const auto c = std::make_shared<const CSpace>(world_from(
-      R"({"bounds": [0, 0, 10, 10], "obstacles": [{"outer": [[1, 1], [9, 1], [9, 9], [1, 9]], "holes": [[[2, 2], [5, 2], [5, 5], [2, 5]], [[5, 2], [8, 2], [8, 5], [5, 5]]]}]})"));
+      R"({"bounds": [0, 0, 10, 10], "obstacles": [{"outer": [[1, 1], [9, 1], [9, 9], [1, 9]], "holes": [[[2, )"
+      R"(2], [5, 2], [5, 5], [2, 5]], [[5, 2], [8, 2], [8, 5], [5, 5]]]}]})"));
   EXPECT_EQ(locate_lattice(c, 0, 10).size(), 21u * 21u);
   ASSERT_EQ(c->free_components().size(), 2u);
   const Location left = c->locate(pt("3", "3")), right = c->locate(pt("6", "3")), seam = c->locate(pt("5", "3"));

@@ -48,7 +48,8 @@ TEST(CheckPath, ExactFitCorridorIsClosedAndOneBillionthWiderIsOpen) {
   const CSpace exact(world_from(
       "{" + walls + R"(, "obstacles": [[[2, 3], [8, 3], [8, 4], [2, 4]], [[2, 5], [8, 5], [8, 6], [2, 6]]]})"));
   const CSpace wider(world_from(
-      "{" + walls + R"(, "obstacles": [[[2, 3], [8, 3], [8, 4], [2, 4]], [[2, 5.000000001], [8, 5.000000001], [8, 6], [2, 6]]]})"));
+      "{" + walls +
+      R"(, "obstacles": [[[2, 3], [8, 3], [8, 4], [2, 4]], [[2, 5.000000001], [8, 5.000000001], [8, 6], [2, 6]]]})"));
   const std::vector<ExactPoint> through{pt("1", "4.5"), pt("9", "4.5")};
   const PathCheck closed = check(exact, through);
   EXPECT_FALSE(closed.valid);
@@ -99,7 +100,8 @@ TEST(CheckPath, PointsOutsideBoundsAreInvalid) {
 TEST(CheckSegment, AgreesWithCheckPathOfTheTwoPoints) {
   // The planners' segment test is the two-point path: same verdict, reason and segment.
   const CSpace pinch(world_from(R"({"bounds": [0, 0, 4, 4],
-                                    "obstacles": [[[0, 2], [2, 2], [2, 4], [0, 4]], [[2, 0], [4, 0], [4, 2], [2, 2]]]})"));
+                                    "obstacles": [[[0, 2], [2, 2], [2, 4], [0, 4]], [[2, 0], [4, 0], [4, 2], )"
+                                R"([2, 2]]]})"));
   const CSpace square(world_from(kUnitSquareAt1));
   struct Case {
     const CSpace* cspace;
@@ -107,15 +109,15 @@ TEST(CheckSegment, AgreesWithCheckPathOfTheTwoPoints) {
     bool valid;
   };
   const std::vector<Case> cases{
-      {&square, pt("1", "3"), pt("3", "1"), true},                      // grazes the corner (2, 2)
-      {&square, pt("0", "1"), pt("3", "1"), true},                      // slides along the bottom edge
-      {&square, pt("0", "0"), pt("0", "0"), true},                      // stays put in the free space
-      {&square, pt("0", "0"), pt("3", "3"), false},                     // through the obstacle
+      {&square, pt("1", "3"), pt("3", "1"), true},                         // grazes the corner (2, 2)
+      {&square, pt("0", "1"), pt("3", "1"), true},                         // slides along the bottom edge
+      {&square, pt("0", "0"), pt("0", "0"), true},                         // stays put in the free space
+      {&square, pt("0", "0"), pt("3", "3"), false},                        // through the obstacle
       {&square, pt("1", "2.9999999999"), pt("2.9999999999", "1"), false},  // cuts the corner
-      {&square, pt("3/2", "3/2"), pt("3", "3"), false},                 // starts inside
-      {&pinch, pt("1", "1"), pt("2", "2"), true},                       // reaches the pinch point
-      {&pinch, pt("1", "1"), pt("3", "3"), false},                      // passes through it
-      {&pinch, pt("1", "1"), pt("5", "1"), false},                      // leaves the bounds
+      {&square, pt("3/2", "3/2"), pt("3", "3"), false},                    // starts inside
+      {&pinch, pt("1", "1"), pt("2", "2"), true},                          // reaches the pinch point
+      {&pinch, pt("1", "1"), pt("3", "3"), false},                         // passes through it
+      {&pinch, pt("1", "1"), pt("5", "1"), false},                         // leaves the bounds
   };
   for (const Case& c : cases) {
     const PathCheck segment = check_segment(*c.cspace, c.a, c.b);

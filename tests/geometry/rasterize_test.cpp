@@ -125,11 +125,13 @@ TEST(Rasterize, ThinTriangleThroughACellCornerBlocksIt) {
 TEST(Rasterize, DecimalGridLinesAreExact) {
   // Cells 0.1 wide: in doubles 0.3 / 3 = 0.09999999999999999 and 2 * that = 0.19999999999999998,
   // so the obstacle's sides x = 0.1 and x = 0.2 would fall strictly inside neighbouring cells.
-  const World on_lines = world_from(R"({"bounds": [0, 0, 0.3, 0.3], "obstacles": [[[0.1, 0.1], [0.2, 0.1], [0.2, 0.2], [0.1, 0.2]]]})");
+  const World on_lines =
+      world_from(R"({"bounds": [0, 0, 0.3, 0.3], "obstacles": [[[0.1, 0.1], [0.2, 0.1], [0.2, 0.2], [0.1, 0.2]]]})");
   EXPECT_EQ(blocked_cells(rasterize(on_lines, 3)), (Cells{{1, 1}}));
   // 1e-17 beyond the grid line (the same double as 0.2): the next column and row are entered.
   const World beyond = world_from(R"({"bounds": [0, 0, 0.3, 0.3], "obstacles": [
-      [[0.1, 0.1], [0.20000000000000001, 0.1], [0.20000000000000001, 0.20000000000000001], [0.1, 0.20000000000000001]]]})");
+      [[0.1, 0.1], [0.20000000000000001, 0.1], [0.20000000000000001, 0.20000000000000001], [0.1, )"
+                                  R"(0.20000000000000001]]]})");
   EXPECT_EQ(blocked_cells(rasterize(beyond, 3)), (Cells{{1, 1}, {2, 1}, {1, 2}, {2, 2}}));
 }
 
@@ -163,7 +165,8 @@ TEST(Rasterize, CellsInsideAHoleAreFree) {
 
 TEST(Rasterize, ObstacleLargerThanACellBlocksTheCellsInside) {
   // Cells entirely inside the obstacle meet no edge: decided by their centre.
-  const World world = world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [[[1.5, 1.5], [8.5, 1.5], [8.5, 8.5], [1.5, 8.5]]]})");
+  const World world =
+      world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [[[1.5, 1.5], [8.5, 1.5], [8.5, 8.5], [1.5, 8.5]]]})");
   EXPECT_EQ(rasterize(world, 10).blocked_count(), 64u);  // cells 1..8 in each axis
   EXPECT_EQ(rasterize(world, 5).blocked_count(), 25u);   // every cell meets (1.5, 8.5)²
 }
@@ -171,7 +174,8 @@ TEST(Rasterize, ObstacleLargerThanACellBlocksTheCellsInside) {
 TEST(Rasterize, RobotWithExtentBlocksItsCObstaclesAndTheWalls) {
   const std::string obstacle = R"("bounds": [0, 0, 4, 4], "obstacles": [[[1, 1], [2, 1], [2, 2], [1, 2]]])";
   const World point = world_from("{" + obstacle + "}");
-  const World square = world_from("{" + obstacle + R"(, "robot": {"parts": [[[-0.25, -0.25], [0.25, -0.25], [0.25, 0.25], [-0.25, 0.25]]]}})");
+  const World square = world_from(
+      "{" + obstacle + R"(, "robot": {"parts": [[[-0.25, -0.25], [0.25, -0.25], [0.25, 0.25], [-0.25, 0.25]]]}})");
   const Raster p = rasterize(point, 8), s = rasterize(square, 8);
   // C-obstacle (0.75, 2.25)²: cells 1..4 in each axis (16); the reference point stays in
   // [0.25, 3.75]², which the border cells (0, 0.5) and (3.5, 4) leave (28 of them).

@@ -52,7 +52,10 @@ Robot robot_of(std::vector<Ring> parts) {
 }
 
 Robot house() {
-  return robot_of({{{Rational(-4), Rational(-2)}, {Rational(4), Rational(-2)}, {Rational(4), Rational(2)}, {Rational(-4), Rational(2)}},
+  return robot_of({{{Rational(-4), Rational(-2)},
+                    {Rational(4), Rational(-2)},
+                    {Rational(4), Rational(2)},
+                    {Rational(-4), Rational(2)}},
                    {{Rational(-4), Rational(2)}, {Rational(4), Rational(2)}, {Rational(0), Rational(6)}}});
 }
 
@@ -66,19 +69,26 @@ TEST(TurnEnclosure, ContainsAConvexRobotAtEveryAngleOfTheTurn) {
 TEST(TurnEnclosure, ContainsTheArcsBeyondTheChords) {
   // A rod's tip on a 10° turn bulges beyond the chord between its two ends by r(1 - cos 5°): the
   // tip's arc at 5° must be inside, which the chord alone would miss.
-  const Robot rod = robot_of({{{Rational(-5), Rational(-1, 10)}, {Rational(5), Rational(-1, 10)}, {Rational(5), Rational(1, 10)},
+  const Robot rod = robot_of({{{Rational(-5), Rational(-1, 10)},
+                               {Rational(5), Rational(-1, 10)},
+                               {Rational(5), Rational(1, 10)},
                                {Rational(-5), Rational(1, 10)}}});
   expect_contains_the_sweep(rod, 0, 10);
   const Robot enclosure = turn_enclosure(rod, exact_rotation(0), exact_rotation(10));
   bool tip_in = false;
-  for (const Ring& polygon : enclosure.parts) tip_in = tip_in || inside_convex(polygon, rotate({Rational(5), Rational(0)}, exact_rotation(5)));
+  for (const Ring& polygon : enclosure.parts)
+    tip_in = tip_in || inside_convex(polygon, rotate({Rational(5), Rational(0)}, exact_rotation(5)));
   EXPECT_TRUE(tip_in);
 }
 
 TEST(TurnEnclosure, SplitsANonConvexPartIntoConvexPieces) {
   // An L: its hull would enclose the notch; the enclosure is made of convex pieces instead.
-  const Robot l_shape = robot_of({{{Rational(0), Rational(0)}, {Rational(6), Rational(0)}, {Rational(6), Rational(1)},
-                                   {Rational(1), Rational(1)}, {Rational(1), Rational(6)}, {Rational(0), Rational(6)}}});
+  const Robot l_shape = robot_of({{{Rational(0), Rational(0)},
+                                   {Rational(6), Rational(0)},
+                                   {Rational(6), Rational(1)},
+                                   {Rational(1), Rational(1)},
+                                   {Rational(1), Rational(6)},
+                                   {Rational(0), Rational(6)}}});
   const Robot enclosure = turn_enclosure(l_shape, exact_rotation(0), exact_rotation(5));
   EXPECT_GE(enclosure.parts.size(), 2u);
   expect_contains_the_sweep(l_shape, 0, 5);

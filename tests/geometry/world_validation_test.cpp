@@ -24,7 +24,8 @@ World built(std::vector<PolygonWithHoles> obstacles) {
   World world;
   world.source = "built-in world";
   world.obstacles = std::move(obstacles);
-  for (std::size_t i = 0; i < world.obstacles.size(); ++i) world.obstacle_names.push_back("obstacles[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i)
+    world.obstacle_names.push_back("obstacles[" + std::to_string(i) + "]");
   return world;
 }
 
@@ -61,7 +62,8 @@ TEST(ValidateWorld, DropsRepeatedVertices) {
 }
 
 TEST(ValidateWorld, NamesTheCrossingEdges) {
-  EXPECT_EQ(problem_of(built({{{pt("0", "0"), pt("1", "0")}, {}}, {{pt("0", "0"), pt("2", "2"), pt("2", "0"), pt("0", "2")}, {}}})),
+  EXPECT_EQ(problem_of(built(
+                {{{pt("0", "0"), pt("1", "0")}, {}}, {{pt("0", "0"), pt("2", "2"), pt("2", "0"), pt("0", "2")}, {}}})),
             "built-in world: obstacles[0]: fewer than 3 distinct vertices");
   EXPECT_EQ(problem_of(built({{{pt("0", "0"), pt("2", "2"), pt("2", "0"), pt("0", "2")}, {}}})),
             "built-in world: obstacles[0]: self-intersecting: edge 0 [0, 0]-[2, 2] crosses edge 2 [2, 0]-[0, 2]");
@@ -69,8 +71,9 @@ TEST(ValidateWorld, NamesTheCrossingEdges) {
 
 TEST(ValidateWorld, SpikeIsNotSimple) {
   // Edges 0 and 1 fold back over each other along y = 0.
-  EXPECT_EQ(problem_of(built({{{pt("0", "0"), pt("2", "0"), pt("1", "0"), pt("1", "1")}, {}}})),
-            "built-in world: obstacles[0]: self-intersecting: edge 0 [0, 0]-[2, 0] folds back over edge 1 [2, 0]-[1, 0]");
+  EXPECT_EQ(
+      problem_of(built({{{pt("0", "0"), pt("2", "0"), pt("1", "0"), pt("1", "1")}, {}}})),
+      "built-in world: obstacles[0]: self-intersecting: edge 0 [0, 0]-[2, 0] folds back over edge 1 [2, 0]-[1, 0]");
 }
 
 TEST(ValidateWorld, ThreeEqualVerticesAreFewerThanThree) {
@@ -91,7 +94,8 @@ TEST(ValidateWorld, HoleOutsideItsOuterBoundary) {
 }
 
 TEST(ValidateWorld, HoleCrossingItsOuterBoundary) {
-  EXPECT_EQ(problem_of(built({{rectangle("0", "0", "6", "6"), {rectangle("1", "1", "2", "2"), rectangle("4", "4", "8", "5")}}})),
+  EXPECT_EQ(problem_of(built(
+                {{rectangle("0", "0", "6", "6"), {rectangle("1", "1", "2", "2"), rectangle("4", "4", "8", "5")}}})),
             "built-in world: obstacles[0] hole 1: not inside the outer boundary of obstacles[0]");
 }
 
@@ -102,17 +106,20 @@ TEST(ValidateWorld, HoleTouchingItsOuterBoundaryFromInsideIsAccepted) {
 }
 
 TEST(ValidateWorld, BadHoleIsNamedByItsNumber) {
-  EXPECT_EQ(problem_of(built({{rectangle("0", "0", "6", "6"), {rectangle("1", "1", "2", "2"), {pt("3", "3"), pt("4", "4")}}}})),
+  EXPECT_EQ(problem_of(built(
+                {{rectangle("0", "0", "6", "6"), {rectangle("1", "1", "2", "2"), {pt("3", "3"), pt("4", "4")}}}})),
             "built-in world: obstacles[0] hole 1: fewer than 3 distinct vertices");
 }
 
 TEST(ValidateWorld, InvertedOrEmptyBounds) {
   World inverted = built({});
   inverted.bounds = Bounds{4, 0, Rational(1, 2), 4};
-  EXPECT_EQ(problem_of(inverted), "built-in world: bounds: empty or inverted: [4, 0, 1/2, 4] needs xmin < xmax and ymin < ymax");
+  EXPECT_EQ(problem_of(inverted),
+            "built-in world: bounds: empty or inverted: [4, 0, 1/2, 4] needs xmin < xmax and ymin < ymax");
   World flat = built({});
   flat.bounds = Bounds{0, 2, 4, 2};
-  EXPECT_EQ(problem_of(flat), "built-in world: bounds: empty or inverted: [0, 2, 4, 2] needs xmin < xmax and ymin < ymax");
+  EXPECT_EQ(problem_of(flat),
+            "built-in world: bounds: empty or inverted: [0, 2, 4, 2] needs xmin < xmax and ymin < ymax");
 }
 
 TEST(ValidateWorld, BoundsAreCheckedBeforeObstacles) {
@@ -124,7 +131,8 @@ TEST(ValidateWorld, BoundsAreCheckedBeforeObstacles) {
 TEST(ValidateWorld, RobotPartThatIsABowTie) {
   World w = built({{rectangle("0", "0", "1", "1"), {}}});
   w.robot.parts = {rectangle("0", "0", "1", "1"), {pt("0", "0"), pt("1", "1"), pt("1", "0"), pt("0", "1")}};
-  EXPECT_EQ(problem_of(w), "built-in world: robot.parts[1]: self-intersecting: edge 0 [0, 0]-[1, 1] crosses edge 2 [1, 0]-[0, 1]");
+  EXPECT_EQ(problem_of(w),
+            "built-in world: robot.parts[1]: self-intersecting: edge 0 [0, 0]-[1, 1] crosses edge 2 [1, 0]-[0, 1]");
 }
 
 TEST(ValidateWorld, ValidWorldPassesUnchangedButForOrientation) {
@@ -146,13 +154,16 @@ TEST(ValidateWorld, HolesThatOverlapOrNestAreRefused) {
             "built-in world: obstacles[0] hole 1: overlaps hole 0 (holes may touch but not overlap or nest)");
   EXPECT_EQ(problem_of(built({{outer, {rectangle("2", "2", "8", "8"), rectangle("3", "3", "4", "4")}}})),
             "built-in world: obstacles[0] hole 1: overlaps hole 0 (holes may touch but not overlap or nest)");
-  EXPECT_EQ(problem_of(built({{outer, {rectangle("2", "2", "3", "3"), rectangle("6", "6", "8", "8"), rectangle("2", "2", "3", "3")}}})),
-            "built-in world: obstacles[0] hole 2: overlaps hole 0 (holes may touch but not overlap or nest)");
+  EXPECT_EQ(
+      problem_of(built(
+          {{outer, {rectangle("2", "2", "3", "3"), rectangle("6", "6", "8", "8"), rectangle("2", "2", "3", "3")}}})),
+      "built-in world: obstacles[0] hole 2: overlaps hole 0 (holes may touch but not overlap or nest)");
 }
 
 TEST(ValidateWorld, HolesThatTouchEachOtherOrTheOuterBoundaryAreAccepted) {
   const Ring outer = rectangle("1", "1", "9", "9");
-  World w = built({{outer, {rectangle("2", "2", "5", "5"), rectangle("5", "2", "8", "5"), rectangle("5", "5", "6", "6")}}});
+  World w =
+      built({{outer, {rectangle("2", "2", "5", "5"), rectangle("5", "2", "8", "5"), rectangle("5", "5", "6", "6")}}});
   EXPECT_NO_THROW(validate_world(w));
   World touching_at_a_corner = built({{outer, {{pt("1", "1"), pt("5", "3"), pt("3", "5")}}}});
   EXPECT_NO_THROW(validate_world(touching_at_a_corner));
@@ -160,12 +171,14 @@ TEST(ValidateWorld, HolesThatTouchEachOtherOrTheOuterBoundaryAreAccepted) {
 
 // CGAL kept such a hole filled (a point inside it was located as blocked): a silent wrong answer.
 TEST(ValidateWorld, AHoleSharingAnEdgeWithItsOuterBoundaryIsRefused) {
-  const std::string problem = "shares a boundary segment with the outer boundary of obstacles[0] (zero width there: make the "
-                              "hole a notch of the outer boundary instead)";
+  const std::string problem =
+      "shares a boundary segment with the outer boundary of obstacles[0] (zero width there: make the "
+      "hole a notch of the outer boundary instead)";
   EXPECT_EQ(problem_of(built({{rectangle("1", "1", "9", "9"), {rectangle("1", "1", "5", "5")}}})),
             "built-in world: obstacles[0] hole 0: " + problem);
   // Part of an edge is enough.
-  EXPECT_EQ(problem_of(built({{rectangle("1", "1", "9", "9"), {rectangle("2", "2", "3", "3"), {pt("4", "1"), pt("6", "1"), pt("5", "3")}}}})),
+  EXPECT_EQ(problem_of(built({{rectangle("1", "1", "9", "9"),
+                               {rectangle("2", "2", "3", "3"), {pt("4", "1"), pt("6", "1"), pt("5", "3")}}}})),
             "built-in world: obstacles[0] hole 1: " + problem);
 }
 
@@ -176,7 +189,8 @@ TEST(ValidateWorld, NamesTheCrossingEdgesOfALargePolygon) {
   Ring star;
   for (int i = 0; i < n; ++i) {
     const double angle = 2 * 3.14159265358979 * i / n, radius = i % 2 ? 150000 : 100000;
-    star.push_back({Rational(static_cast<long>(radius * std::cos(angle))), Rational(static_cast<long>(radius * std::sin(angle)))});
+    star.push_back(
+        {Rational(static_cast<long>(radius * std::cos(angle))), Rational(static_cast<long>(radius * std::sin(angle)))});
   }
   World valid = built({{star, {}}});
   EXPECT_NO_THROW(validate_world(valid));

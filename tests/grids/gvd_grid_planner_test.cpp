@@ -6,11 +6,11 @@
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/draw/theme.hpp>
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/gvd_grid_planner.hpp>
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include "world_fixtures.hpp"
 
@@ -101,7 +101,8 @@ TEST(GvdGridPlanner, ClimbsToTheGvdFollowsItAndDescends) {
   std::set<GridCell> climb_up(up.begin(), up.end()), climb_down(down.begin(), down.end());
   int stage = 0;  // 0 climbing, 1 on the GVD, 2 descending
   for (std::size_t k = 1; k + 1 < plan.path.size(); ++k) {
-    const auto [x, y] = std::pair{static_cast<std::size_t>(to_double(plan.path[k].x)), static_cast<std::size_t>(to_double(plan.path[k].y))};
+    const auto [x, y] = std::pair{static_cast<std::size_t>(to_double(plan.path[k].x)),
+                                  static_cast<std::size_t>(to_double(plan.path[k].y))};
     ASSERT_EQ(raster.cell_center(x, y), plan.path[k]) << k;
     const GridCell c = cell(x, y);
     if (stage == 0 && !climb_up.count(c)) stage = 1;
@@ -238,7 +239,8 @@ TEST(GvdGridPlanner, PictureIsTheDistanceFieldWithTheGvdAndRasterPicturesKeepThe
   EXPECT_NE(picture.find(theme::ridge_cell), std::string::npos);
   EXPECT_NE(picture.find("ridge cells"), std::string::npos);
   // A raster's cells have no values and no ridge: none of the new colours.
-  const Report raster = RasterPlanner(cspace, RasterOptions{20}).plan({pt("5.5", "10.5"), pt("14.5", "10.5"), "q"}, QueryOptions{true});
+  const Report raster =
+      RasterPlanner(cspace, RasterOptions{20}).plan({pt("5.5", "10.5"), pt("14.5", "10.5"), "q"}, QueryOptions{true});
   const std::string plain = draw_plan(cspace, {raster}).str();
   EXPECT_EQ(plain.find(theme::ridge_cell), std::string::npos);
   EXPECT_EQ(plain.find("ridge cells"), std::string::npos);

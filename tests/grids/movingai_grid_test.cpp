@@ -32,7 +32,8 @@ double printed_tolerance(const std::string& text) {
 
 // The path re-walked on the map: each step a king move between free cells that cuts no corner.
 // Returns the length summed here, or NaN (with a failure) for an invalid path.
-double checked_length(const GridMap& map, const GridGraph& graph, const std::vector<GridCell>& path, const ScenarioQuery& q) {
+double checked_length(const GridMap& map, const GridGraph& graph, const std::vector<GridCell>& path,
+                      const ScenarioQuery& q) {
   EXPECT_FALSE(path.empty());
   if (path.empty()) return NAN;
   const auto at = [&](GridCell c) { return graph.coordinates(c); };
@@ -107,7 +108,8 @@ TEST(MovingAiGrid, DijkstraFindsTheSameLengthsWithMoreExpansions) {
     const auto dijkstra = grid.search(scenarios[i], {Search::dijkstra});
     ASSERT_TRUE(astar.found && dijkstra.found) << "query " << i;
     EXPECT_NEAR(dijkstra.cost, astar.cost, 1e-9) << "query " << i;
-    EXPECT_NEAR(dijkstra.cost, scenarios[i].octile_length, printed_tolerance(scenarios[i].octile_text)) << "query " << i;
+    EXPECT_NEAR(dijkstra.cost, scenarios[i].octile_length, printed_tolerance(scenarios[i].octile_text))
+        << "query " << i;
     EXPECT_GT(dijkstra.expanded, astar.expanded) << "query " << i;
   }
 }
@@ -171,8 +173,8 @@ TEST(MovingAiGrid, PrintedPrecisionIsHalfAUnitInTheLastDecimal) {
   q.octile_length = 3.41421, q.octile_text = "3.41421";
   const OctileExpectation e = octile_expectation(q);
   EXPECT_TRUE(e.found);
-  EXPECT_TRUE(matches(e, true, 2 + std::sqrt(2.0)));    // 3.4142136 rounds to 3.41421
-  EXPECT_FALSE(matches(e, true, 3.414216));             // 6e-6 away
+  EXPECT_TRUE(matches(e, true, 2 + std::sqrt(2.0)));  // 3.4142136 rounds to 3.41421
+  EXPECT_FALSE(matches(e, true, 3.414216));           // 6e-6 away
   EXPECT_FALSE(matches(e, false, 0));
   // The files' lengths carry single-precision error: 235.76450199 printed "235.764" (lak303d query
   // 587) matches, 0.0005 + 2^-24 * 235.764 = 0.000514 being the limit.

@@ -3,11 +3,11 @@
 // independently), and on hand-made worlds where the answer is known exactly.
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/visibility_graph.hpp>
-#include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -63,7 +63,8 @@ std::vector<double> SphereWorld::optimum;
 
 using Report = PlanReport<ExactPoint>;
 
-Report plan_once(const CSpace& cspace, std::size_t n, const Query& query, Connectivity connectivity = Connectivity::full) {
+Report plan_once(const CSpace& cspace, std::size_t n, const Query& query,
+                 Connectivity connectivity = Connectivity::full) {
   return RasterPlanner(cspace, RasterOptions{n, connectivity, {}}).plan(query);
 }
 
@@ -108,7 +109,7 @@ TEST_F(SphereWorld, CoarseGridClosesTheGapsThatTheJustRightGridKeeps) {
   // Discs A (centre (-4.4, 2), r 3.4) and B ((1.6, 2), r 1.4) leave a gap x in (-1, 0.2) on
   // y = 2; disc C ((4, -6.3), r 2.5) leaves 1.2 under it above the bottom wall. Cells 2 wide
   // (n = 10) close both; cells 0.5 (n = 40) and 0.1 (n = 200) keep both.
-  const Query& below_gap_to_top = world->queries[1];       // (-0.4, -1.5) -> (-0.4, 8.5)
+  const Query& below_gap_to_top = world->queries[1];             // (-0.4, -1.5) -> (-0.4, 8.5)
   const Query& bottom_left_to_bottom_right = world->queries[5];  // (-9, -9) -> (8.5, -9)
   for (const std::size_t n : {10, 40, 200}) {
     SCOPED_TRACE("n = " + std::to_string(n));
@@ -118,14 +119,14 @@ TEST_F(SphereWorld, CoarseGridClosesTheGapsThatTheJustRightGridKeeps) {
     const double x_at_gap = *first_crossing_of_y(up.path, 2);
     const double y_under_c = *first_crossing_of_x(along.path, 4);
     if (n == 10) {
-      EXPECT_GT(x_at_gap, 3.0);     // round the right of B
-      EXPECT_GT(y_under_c, -3.8);   // over C
+      EXPECT_GT(x_at_gap, 3.0);    // round the right of B
+      EXPECT_GT(y_under_c, -3.8);  // over C
       EXPECT_GT(up.length, 1.8 * optimum[1]);
       EXPECT_GT(along.length, 1.8 * optimum[5]);
     } else {
-      EXPECT_GT(x_at_gap, -1.0);    // through the gap
+      EXPECT_GT(x_at_gap, -1.0);  // through the gap
       EXPECT_LT(x_at_gap, 0.2);
-      EXPECT_LT(y_under_c, -8.8);   // under C
+      EXPECT_LT(y_under_c, -8.8);  // under C
       EXPECT_LT(up.length, 1.1 * optimum[1]);
       EXPECT_LT(along.length, 1.1 * optimum[5]);
     }
@@ -145,7 +146,8 @@ TEST(RasterPlanner, JoinFromTheStartThroughAnObstacleIsRefusedWithTheReason) {
   // Cells 2 x 2; the square (0.5, 1.5)² blocks cell (0, 0). The start (0.2, 0.2) is equally near
   // the centres (3, 1) and (1, 3) (squared distance 8.48): the lower index, cell (1, 0), wins.
   // The join (0.2, 0.2) -> (3, 1) passes through the square (at x = 1.4 it is at y = 0.543).
-  const World world = world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [[[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]]]})");
+  const World world =
+      world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [[[0.5, 0.5], [1.5, 0.5], [1.5, 1.5], [0.5, 1.5]]]})");
   const CSpace cspace(world);
   const Query query{pt("0.2", "0.2"), pt("3.5", "3.5"), "q"};
   const Report plan = plan_once(cspace, 2, query);
@@ -232,7 +234,8 @@ TEST(RasterPlanner, NearestFreeCellIsExact) {
 
 TEST(RasterPlanner, NearestFreeCellSearchesPastBlockedRings) {
   // Everything blocked but the top-right cell: the search walks out to the last ring.
-  const World world = world_from(R"({"bounds": [0, 0, 5, 5], "obstacles": [[[0, 0], [5, 0], [5, 4], [4, 4], [4, 5], [0, 5]]]})");
+  const World world =
+      world_from(R"({"bounds": [0, 0, 5, 5], "obstacles": [[[0, 0], [5, 0], [5, 4], [4, 4], [4, 5], [0, 5]]]})");
   const CSpace cspace(world);
   const RasterPlanner planner(cspace, RasterOptions{5});
   ASSERT_EQ(planner.raster().blocked_count(), 24u);

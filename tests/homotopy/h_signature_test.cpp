@@ -28,7 +28,9 @@ World world_of(std::vector<Ring> squares) {
 }
 
 // A loop round the box [x0, x1] × [y0, y1], anticlockwise from its lower left corner.
-std::vector<ExactPoint> loop(Rational x0, Rational y0, Rational x1, Rational y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}}; }
+std::vector<ExactPoint> loop(Rational x0, Rational y0, Rational x1, Rational y1) {
+  return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}, {x0, y0}};
+}
 
 TEST(Words, ReduceInTheFreeGroupAndPrint) {
   Word w{1, 2};
@@ -52,7 +54,9 @@ TEST(Words, TheCommutatorRoundTwoHolesIsNotTrivial) {
   // a · b · a⁻¹ · b⁻¹ from a common point: go to b's corner and back along the same line.
   std::vector<ExactPoint> commutator = a;
   const std::vector<ExactPoint> to_b{{-3, -3}, {7, -3}}, from_b{{7, -3}, {-3, -3}};
-  const auto append = [&](const std::vector<ExactPoint>& part) { commutator.insert(commutator.end(), part.begin() + 1, part.end()); };
+  const auto append = [&](const std::vector<ExactPoint>& part) {
+    commutator.insert(commutator.end(), part.begin() + 1, part.end());
+  };
   append(to_b), append(b), append(from_b);
   std::vector<ExactPoint> a_back(a.rbegin(), a.rend()), b_back(b.rbegin(), b.rend());
   append(a_back), append(to_b), append(b_back), append(from_b);

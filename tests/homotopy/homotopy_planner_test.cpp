@@ -4,8 +4,8 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/homotopy/h_signature.hpp>
-#include <polyplan/registry/registry.hpp>
 #include <polyplan/homotopy/homotopy_facts.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <gtest/gtest.h>
 
@@ -61,10 +61,14 @@ TEST(HomotopyPlanner, TheFirstFourClassesRoundOneSquare) {
 TEST(HomotopyPlanner, FewerClassesWithinMaxLength) {
   const World world = one_square();
   const CSpace cspace(world);
-  const auto report = planners<TranslatingRobot>().find("homotopy")->make(cspace, {{"classes", "4"}, {"max-length", "10"}})->plan(world.queries[0]);
+  const auto report = planners<TranslatingRobot>()
+                          .find("homotopy")
+                          ->make(cspace, {{"classes", "4"}, {"max-length", "10"}})
+                          ->plan(world.queries[0]);
   ASSERT_TRUE(report.found);
   EXPECT_EQ(report.paths.size(), 2u);
-  const auto none = planners<TranslatingRobot>().find("homotopy")->make(cspace, {{"max-length", "5"}})->plan(world.queries[0]);
+  const auto none =
+      planners<TranslatingRobot>().find("homotopy")->make(cspace, {{"max-length", "5"}})->plan(world.queries[0]);
   EXPECT_EQ(none.status, PlanStatus::not_found);
 }
 

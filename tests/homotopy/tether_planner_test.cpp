@@ -1,16 +1,15 @@
-// The tethered robot of the course's sampling-planner homework in tether_pillar.json (a pillar [3, 9] × [−4, 6], the base at
-// (0, 0)): from behind the pillar with its tether round the bottom (16 long), to a goal above the
-// pillar, it goes straight up the near side when L allows the 24.6 that winds the tether round two
-// sides, and unwinds back under the pillar when L = 20 does not; the class of length exactly 16 is
-// allowed at L = 16 and not at 15.99; L below the start's tether is no_path. Every path is
-// re-checked exactly and its word recomputed from the polylines.
+// The tethered robot of the course's sampling-planner homework in tether_pillar.json (a pillar [3, 9] × [−4, 6], the
+// base at (0, 0)): from behind the pillar with its tether round the bottom (16 long), to a goal above the pillar, it
+// goes straight up the near side when L allows the 24.6 that winds the tether round two sides, and unwinds back under
+// the pillar when L = 20 does not; the class of length exactly 16 is allowed at L = 16 and not at 15.99; L below the
+// start's tether is no_path. Every path is re-checked exactly and its word recomputed from the polylines.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/homotopy/h_signature.hpp>
+#include <polyplan/homotopy/homotopy_facts.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
-#include <polyplan/homotopy/homotopy_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -45,7 +44,8 @@ std::vector<ExactPoint> points(const std::string& text) {
 
 // The tether at the goal is the taut tether of the robot's class: its word is the word of the
 // start's tether followed by the robot's path, and its length the fact's.
-void expect_consistent_tether(const CSpace& cspace, const PlanReport<ExactPoint>& report, const std::vector<ExactPoint>& start_tether) {
+void expect_consistent_tether(const CSpace& cspace, const PlanReport<ExactPoint>& report,
+                              const std::vector<ExactPoint>& start_tether) {
   const HSignature h(cspace);
   const auto at_goal = points(report.facts.at(TetherFacts::at_goal));
   ASSERT_GE(at_goal.size(), 2u);
@@ -66,13 +66,15 @@ TEST(TetherPlanner, UnwindsRoundThePillarWhenTheTetherIsTooShortForTheNearSide) 
   const auto free = tethered(cspace, q, "25");
   ASSERT_TRUE(free.found) << free.why_not;
   EXPECT_EQ(free.path, (std::vector<ExactPoint>{{12, 0}, {9, 6}, {6, 8}}));
-  EXPECT_NEAR(free.facts.at(TetherFacts::length), 5 + 6 + 10 + std::sqrt(13.0), 1e-12);  // round the bottom and the right side
+  EXPECT_NEAR(free.facts.at(TetherFacts::length), 5 + 6 + 10 + std::sqrt(13.0),
+              1e-12);  // round the bottom and the right side
   expect_consistent_tether(cspace, free, start_tether);
   const auto unwound = tethered(cspace, q, "20");
   ASSERT_TRUE(unwound.found) << unwound.why_not;
   EXPECT_EQ(unwound.path, (std::vector<ExactPoint>{{12, 0}, {9, -4}, {3, -4}, {3, 6}, {6, 8}}));
   EXPECT_NEAR(unwound.length, 5 + 6 + 10 + std::sqrt(13.0), 1e-12);
-  EXPECT_NEAR(unwound.facts.at(TetherFacts::length), std::sqrt(45.0) + std::sqrt(13.0), 1e-12);  // straight past the left side
+  EXPECT_NEAR(unwound.facts.at(TetherFacts::length), std::sqrt(45.0) + std::sqrt(13.0),
+              1e-12);  // straight past the left side
   EXPECT_LE(unwound.facts.at(TetherFacts::largest), 20);
   EXPECT_TRUE(check_path(cspace, unwound.path).valid);
   expect_consistent_tether(cspace, unwound, start_tether);
@@ -105,7 +107,8 @@ TEST(TetherPlanner, ABadBaseIsNamed) {
   const World world = pillar();
   const CSpace cspace(world);
   EXPECT_THROW(planners<TranslatingRobot>().find("tether")->make(cspace, {{"tether-base", "1;2"}}), InputError);
-  const auto inside = planners<TranslatingRobot>().find("tether")->make(cspace, {{"tether-base", "5,0"}})->plan(world.queries[0]);
+  const auto inside =
+      planners<TranslatingRobot>().find("tether")->make(cspace, {{"tether-base", "5,0"}})->plan(world.queries[0]);
   EXPECT_EQ(inside.status, PlanStatus::invalid_query);
   EXPECT_NE(inside.why_not.find("the tether base [5, 0] is not free"), std::string::npos) << inside.why_not;
 }

@@ -21,7 +21,8 @@ inline void PrintTo(const OctileLength& l, std::ostream* out) { *out << l.to_str
 namespace {
 
 GridMap map_of(const std::vector<std::string>& rows) {
-  std::string text = "type octile\nheight " + std::to_string(rows.size()) + "\nwidth " + std::to_string(rows[0].size()) + "\nmap\n";
+  std::string text =
+      "type octile\nheight " + std::to_string(rows.size()) + "\nwidth " + std::to_string(rows[0].size()) + "\nmap\n";
   for (const auto& row : rows) text += row + "\n";
   return parse_movingai_map(text, "test.map");
 }
@@ -87,7 +88,8 @@ void check_every_step(const GridMap& truth, GridPoint goal, double radius, const
     if (i + 1 < r.traversed.size()) {
       const GridPoint next = r.traversed[i + 1];
       const OctileLength move = belief.cost(at, next);
-      ASSERT_EQ(move + d[next.y * truth.width + next.x], d[at.y * truth.width + at.x]) << "move " << i << " is off every shortest path";
+      ASSERT_EQ(move + d[next.y * truth.width + next.x], d[at.y * truth.width + at.x])
+          << "move " << i << " is off every shortest path";
       ASSERT_FALSE(truth.is_blocked(next.x, next.y));
       traversed = traversed + move;
     }
@@ -100,9 +102,11 @@ void check_every_step(const GridMap& truth, GridPoint goal, double radius, const
   }
 }
 
-constexpr ReplanAlgorithm all_algorithms[] = {ReplanAlgorithm::dstar_lite, ReplanAlgorithm::lpastar, ReplanAlgorithm::astar};
+constexpr ReplanAlgorithm all_algorithms[] = {ReplanAlgorithm::dstar_lite, ReplanAlgorithm::lpastar,
+                                              ReplanAlgorithm::astar};
 
-ReplanResult drive(const GridMap& map, GridPoint start, GridPoint goal, ReplanAlgorithm algorithm, double radius = 1.5) {
+ReplanResult drive(const GridMap& map, GridPoint start, GridPoint goal, ReplanAlgorithm algorithm,
+                   double radius = 1.5) {
   ReplanOptions options;
   options.algorithm = algorithm;
   options.sensor_radius = radius;
@@ -124,7 +128,8 @@ TEST(DiscoveringRobot, EveryStepIsOptimalOnWhatItKnowsOnRandomMaps) {
     const GridMap map = random_map(25, 18, 0.3, seed);
     for (const ReplanAlgorithm algorithm : all_algorithms)
       for (const double radius : {1.5, 3.0}) {
-        SCOPED_TRACE("seed " + std::to_string(seed) + ", " + std::string(to_string(algorithm)) + ", R " + std::to_string(radius));
+        SCOPED_TRACE("seed " + std::to_string(seed) + ", " + std::string(to_string(algorithm)) + ", R " +
+                     std::to_string(radius));
         const ReplanResult r = drive(map, {0, 0}, {24, 17}, algorithm, radius);
         EXPECT_TRUE(r.status == PlanStatus::solved || r.status == PlanStatus::no_path);
         check_every_step(map, {24, 17}, radius, r);
@@ -147,8 +152,10 @@ TEST(DiscoveringRobot, TheThreeAlgorithmsPlanTheSameCostsAndDStarLiteDoesLessWor
     EXPECT_EQ(r.replans, results[0].replans) << to_string(r.algorithm);
   }
   EXPECT_GT(results[0].replans, 10u);
-  EXPECT_LT(3 * results[0].expanded, results[2].expanded) << "D* Lite " << results[0].expanded << ", A* " << results[2].expanded;
-  EXPECT_LT(results[1].expanded, results[2].expanded) << "LPA* " << results[1].expanded << ", A* " << results[2].expanded;
+  EXPECT_LT(3 * results[0].expanded, results[2].expanded)
+      << "D* Lite " << results[0].expanded << ", A* " << results[2].expanded;
+  EXPECT_LT(results[1].expanded, results[2].expanded)
+      << "LPA* " << results[1].expanded << ", A* " << results[2].expanded;
 }
 
 TEST(DiscoveringRobot, AGoalInAClosedRoomEndsWithNoPathAfterTheRobotHasSeenTheRoom) {
@@ -190,7 +197,8 @@ TEST(DiscoveringRobot, BadInputIsRefusedNamingWhatIsWrong) {
   };
   EXPECT_EQ(message({2, 0}, {0, 0}, 1.5), "test.map: the start (2, 0) is a blocked cell");
   EXPECT_EQ(message({0, 0}, {3, 1}, 1.5), "test.map: the goal (3, 1) is outside the 3 x 2 map");
-  EXPECT_NE(message({0, 0}, {1, 1}, 1.0).find("sensor radius: must be a finite number of at least √2"), std::string::npos);
+  EXPECT_NE(message({0, 0}, {1, 1}, 1.0).find("sensor radius: must be a finite number of at least √2"),
+            std::string::npos);
 }
 
 TEST(DiscoveringRobot, AnObstacleThatAppearsOnItsWayIsDrivenRound) {
@@ -212,18 +220,17 @@ TEST(DiscoveringRobot, AnObstacleThatAppearsOnItsWayIsDrivenRound) {
   EXPECT_EQ(r.truth.is_blocked(6, 0), true);
 }
 
-// The trace: passes numbered within each replan, and every open-list entry labelled as the course's planning problem set
-// labels it.
+// The trace: passes numbered within each replan, and every open-list entry labelled as the course's planning problem
+// set labels it.
 struct Recorder : ReplanTrace {
   std::size_t replans = 0, passes = 0, wrong = 0;
-  void replan_begins(std::size_t replan, GridPoint, std::size_t) override {
-    wrong += replan != ++replans;
-  }
+  void replan_begins(std::size_t replan, GridPoint, std::size_t) override { wrong += replan != ++replans; }
   void pass(const ReplanTracePass& p) override {
     ++passes;
     wrong += p.replan != replans;
     for (const auto& e : p.open) wrong += e.state != (e.g > e.rhs ? "over" : "under") || e.g == e.rhs;
-    for (const auto& u : p.updated) wrong += !(u.action == "add" || u.action == "readd" || u.action == "remove" || u.action.empty());
+    for (const auto& u : p.updated)
+      wrong += !(u.action == "add" || u.action == "readd" || u.action == "remove" || u.action.empty());
   }
 };
 

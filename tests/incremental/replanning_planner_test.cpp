@@ -6,11 +6,11 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/incremental/replan_facts.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/registry/world_queries.hpp>
-#include <polyplan/grids/grid_facts.hpp>
-#include <polyplan/incremental/replan_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -20,7 +20,9 @@
 namespace polyplan {
 namespace {
 
-World changing_world() { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/changing_worlds/door_closes.json"); }
+World changing_world() {
+  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/changing_worlds/door_closes.json");
+}
 
 // The world with its first `made` changes made, written out independently of the planner's own
 // bookkeeping: obstacles listed by hand.
@@ -70,7 +72,8 @@ TEST(ReplanningPlanners, DriveRoundTheChangesOfTheWorld) {
     EXPECT_TRUE(report.certificate.certified);
   }
   // The picture's world is the one the drive ended in: obstacle 0 gone, the door and the late wall there.
-  const auto recorded = planners<TranslatingRobot>().find("dstar-lite")->make(cspace, {})->plan(world.queries[0], QueryOptions{true});
+  const auto recorded =
+      planners<TranslatingRobot>().find("dstar-lite")->make(cspace, {})->plan(world.queries[0], QueryOptions{true});
   ASSERT_TRUE(recorded.world_at_end && recorded.cells);
   EXPECT_EQ(recorded.world_at_end->world().obstacles.size(), 4u);
   EXPECT_EQ(recorded.world_at_end->world().obstacle_names.front(), "obstacles[1]");
@@ -83,7 +86,8 @@ TEST(ReplanningPlanners, ASensorOfThreeCellsLearnsOfTheDoorAtTheDoor) {
   const World world = changing_world();
   const CSpace cspace(world);
   const CSpace last(with_changes(world, 3));
-  const auto seeing_all = plan_with("dstar-lite", cspace), seeing_near = plan_with("dstar-lite", cspace, {{"sensor", "3"}});
+  const auto seeing_all = plan_with("dstar-lite", cspace),
+             seeing_near = plan_with("dstar-lite", cspace, {{"sensor", "3"}});
   ASSERT_TRUE(seeing_all.found && seeing_near.found) << seeing_near.why_not;
   EXPECT_GT(seeing_near.facts.at(ReplanFacts::moves), seeing_all.facts.at(ReplanFacts::moves));
   EXPECT_GT(seeing_near.facts.at(ReplanFacts::replans), seeing_all.facts.at(ReplanFacts::replans));
@@ -109,12 +113,16 @@ TEST(ReplanningPlanners, AStillWorldCostsWhatTheRasterPlannerFinds) {
 // A wall that rises on the robot's cell, and one that shuts the goal off: not found, saying which.
 TEST(ReplanningPlanners, AnObstacleOnTheRobotOrAcrossTheWayIsAnAnswer) {
   World world = with_changes(changing_world(), 0);
-  world.changes = {WorldChange{0, PolygonWithHoles{{{1, 16}, {3, 16}, {3, 18}, {1, 18}}, {}}, std::nullopt, "changes[0]"}};
+  world.changes = {
+      WorldChange{0, PolygonWithHoles{{{1, 16}, {3, 16}, {3, 18}, {1, 18}}, {}}, std::nullopt, "changes[0]"}};
   const auto struck = plan_with("dstar-lite", CSpace(world));
   EXPECT_EQ(struck.status, PlanStatus::not_found);
-  EXPECT_NE(struck.why_not.find("after 0 moves, the world of changes[0] blocks the robot's own cell"), std::string::npos) << struck.why_not;
+  EXPECT_NE(struck.why_not.find("after 0 moves, the world of changes[0] blocks the robot's own cell"),
+            std::string::npos)
+      << struck.why_not;
 
-  world.changes = {WorldChange{5, PolygonWithHoles{{{8, 9.5}, {10, 9.5}, {10, 10.5}, {8, 10.5}}, {}}, std::nullopt, "changes[0]"}};
+  world.changes = {
+      WorldChange{5, PolygonWithHoles{{{8, 9.5}, {10, 9.5}, {10, 10.5}, {8, 10.5}}, {}}, std::nullopt, "changes[0]"}};
   const auto shut = plan_with("dstar-lite", CSpace(world));
   EXPECT_EQ(shut.status, PlanStatus::not_found);
   EXPECT_NE(shut.why_not.find("after 5 moves, no path on the 100 x 100 grid"), std::string::npos) << shut.why_not;
@@ -123,12 +131,15 @@ TEST(ReplanningPlanners, AnObstacleOnTheRobotOrAcrossTheWayIsAnAnswer) {
 
 TEST(ReplanningPlanners, OnlyTheyAreGivenAWorldThatChanges) {
   const World world = changing_world();
-  for (const char* planner : {"dstar-lite", "lpastar", "repeated-astar"}) EXPECT_NO_THROW(require_planner_for_robot(world, planner));
+  for (const char* planner : {"dstar-lite", "lpastar", "repeated-astar"})
+    EXPECT_NO_THROW(require_planner_for_robot(world, planner));
   try {
     require_planner_for_robot(world, "visibility");
     FAIL() << "visibility was given a world that changes";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("door_closes.json: changes[0]: the world changes as the robot drives"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("door_closes.json: changes[0]: the world changes as the robot drives"),
+              std::string::npos)
+        << e.what();
     EXPECT_NE(std::string(e.what()).find("(dstar-lite, lpastar, repeated-astar)"), std::string::npos) << e.what();
   }
 }

@@ -1,5 +1,5 @@
-// io/graph_reader: the course's graph-search homework's graph_vector files, the forms the seed's Python writes, and every bad
-// graph with its one-line message naming the vertex.
+// io/graph_reader: the course's graph-search homework's graph_vector files, the forms the seed's Python writes, and
+// every bad graph with its one-line message naming the vertex.
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/graph_reader.hpp>
 
@@ -23,7 +23,8 @@ std::string error_for(const std::string& text) {
   return "";
 }
 
-const std::string kTwoVertices = R"({"x": [0, 0], "neighbors": [1], "neighbors_cost": [1]}, {"x": [1, 0], "neighbors": [0], "neighbors_cost": [1]})";
+const std::string kTwoVertices =
+    R"({"x": [0, 0], "neighbors": [1], "neighbors_cost": [1]}, {"x": [1, 0], "neighbors": [0], "neighbors_cost": [1]})";
 
 }  // namespace
 
@@ -33,7 +34,8 @@ TEST(GraphReader, ReadsTheSeedsVertexList) {
     {"x": [0, 0.5], "neighbors": [1, 2], "neighbors_cost": [1, 1.4142135623730951], "g": 0.0, "backpointer": null},
     {"x": [1, 0.5], "neighbors": [], "neighbors_cost": [], "g": 2.5, "backpointer": 0.0},
     {"x": [[0], [1.5]], "neighbors": [[0]], "neighbors_cost": [["1/3"]], "colour": "red"}
-  ])", "graph.json", &warnings);
+  ])",
+                                      "graph.json", &warnings);
   EXPECT_EQ(graph.source, "graph.json");
   ASSERT_EQ(graph.vertices.size(), 3u);
   EXPECT_EQ(graph.vertices[0].x, 0);
@@ -54,8 +56,10 @@ TEST(GraphReader, ReadsTheSeedsVertexList) {
 // backpointer are ignored, a cost that is one is refused.
 TEST(GraphReader, ReadsPythonsInfinityAndNaNAsNull) {
   std::vector<std::string> warnings;
-  const GraphFile graph = parse_graph(R"([{"x": [0, 0], "neighbors": [], "neighbors_cost": [], "g": Infinity, "backpointer": NaN,
-    "note": "NaN stays text"}])", "graph.json", &warnings);
+  const GraphFile graph =
+      parse_graph(R"([{"x": [0, 0], "neighbors": [], "neighbors_cost": [], "g": Infinity, "backpointer": NaN,
+    "note": "NaN stays text"}])",
+                  "graph.json", &warnings);
   EXPECT_EQ(graph.vertices.size(), 1u);
   EXPECT_EQ(warnings.size(), 1u);  // the note, its text untouched
   EXPECT_EQ(error_for(R"([{"x": [0, 0], "neighbors": [0], "neighbors_cost": [-Infinity]}])"),
@@ -74,7 +78,9 @@ TEST(GraphReader, NamesTheVertexOfEveryBadGraph) {
     std::string text;
     const char* message;
   } cases[] = {
-      {"index out of range", R"([{"x": [0, 0], "neighbors": [1], "neighbors_cost": [1]}, {"x": [1, 0], "neighbors": [0, 9], "neighbors_cost": [1, 1]}])",
+      {"index out of range",
+       R"([{"x": [0, 0], "neighbors": [1], "neighbors_cost": [1]}, {"x": [1, 0], "neighbors": [0, 9], )"
+       R"("neighbors_cost": [1, 1]}])",
        "graph.json: vertices[1].neighbors[1]: index 9 outside [0, 2)"},
       {"negative index", R"([{"x": [0, 0], "neighbors": [-1], "neighbors_cost": [1]}])",
        "graph.json: vertices[0].neighbors[0]: index -1 outside [0, 1)"},
@@ -89,8 +95,10 @@ TEST(GraphReader, NamesTheVertexOfEveryBadGraph) {
       {"lists of different lengths", R"([{"x": [0, 0], "neighbors": [0, 0], "neighbors_cost": [1]}])",
        "graph.json: vertices[0]: 2 neighbors but 1 neighbors_cost (one cost per neighbour)"},
       {"missing x", R"([{"neighbors": [], "neighbors_cost": []}])", "graph.json: vertices[0]: missing field \"x\""},
-      {"missing neighbors", R"([{"x": [0, 0], "neighbors_cost": []}])", "graph.json: vertices[0]: missing field \"neighbors\""},
-      {"missing costs", R"([{"x": [0, 0], "neighbors": []}])", "graph.json: vertices[0]: missing field \"neighbors_cost\""},
+      {"missing neighbors", R"([{"x": [0, 0], "neighbors_cost": []}])",
+       "graph.json: vertices[0]: missing field \"neighbors\""},
+      {"missing costs", R"([{"x": [0, 0], "neighbors": []}])",
+       "graph.json: vertices[0]: missing field \"neighbors_cost\""},
       {"x not a point", R"([{"x": [0, 0, 0], "neighbors": [], "neighbors_cost": []}])",
        "graph.json: vertices[0].x: expected a point [x, y], got [0,0,0]"},
       {"neighbors not a list", R"([{"x": [0, 0], "neighbors": 3, "neighbors_cost": []}])",

@@ -75,9 +75,7 @@ bool has_solid(const World& world, const Ring& outer) {
   });
 }
 
-Ring square(int x, int y, int side = 1) {
-  return {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}};
-}
+Ring square(int x, int y, int side = 1) { return {{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}}; }
 
 }  // namespace
 
@@ -132,10 +130,12 @@ TEST(MovingAIMap, ArenaSolidsAreExactlyTheBlockedCells) {
 // touches the free cell (0, 2) at a pinch point, so the traced boundary of the one blocked
 // region passes that point twice. It is now cut there into simple loops.
 TEST(MovingAIMap, ABoundaryThroughAPinchPointTwiceIsCutIntoSimpleLoops) {
-  const GridMap map = read_movingai_map(write_temp_file("pinch_twice.map", map_text(4, 5, "@@@@\n@.@@\n.@@.\n@@..\n@@@@\n")));
+  const GridMap map =
+      read_movingai_map(write_temp_file("pinch_twice.map", map_text(4, 5, "@@@@\n@.@@\n.@@.\n@@..\n@@@@\n")));
   expect_solids_are_the_blocked_cells(map);
   // The fuzzer's own input, a mutated den312d.
-  expect_solids_are_the_blocked_cells(read_movingai_map(std::string(POLYPLAN_SOURCE_DIR) + "/tests/data/fuzz/map-crash-pinch-point-twice.map"));
+  expect_solids_are_the_blocked_cells(
+      read_movingai_map(std::string(POLYPLAN_SOURCE_DIR) + "/tests/data/fuzz/map-crash-pinch-point-twice.map"));
 }
 
 TEST(MovingAIMap, RowsCountUpFromTheFilesFirstRow) {
@@ -184,7 +184,8 @@ TEST(MovingAIMap, DiagonalNeighboursTouchAtAPinchPoint) {
 }
 
 TEST(MovingAIMap, WindowsLineEndingsAreRead) {
-  const GridMap map = read_movingai_map(write_temp_file("crlf.map", "type octile\r\nheight 2\r\nwidth 2\r\nmap\r\n.@\r\n..\r\n"));
+  const GridMap map =
+      read_movingai_map(write_temp_file("crlf.map", "type octile\r\nheight 2\r\nwidth 2\r\nmap\r\n.@\r\n..\r\n"));
   EXPECT_EQ(map.width, 2);
   EXPECT_EQ(map.height, 2);
   EXPECT_TRUE(map.is_blocked(1, 0));
@@ -212,20 +213,25 @@ TEST(MovingAIMap, MalformedHeaders) {
 // A 60-byte map whose header said 100000 x 100000 allocated 1.2 GB before it found no rows.
 TEST(MovingAIMap, AHugeHeaderIsRefusedBeforeAllocating) {
   const std::string size = "width and height must be positive, with at most 67108864 cells, got ";
-  EXPECT_EQ(problem_with("huge.map", "type octile\nheight 100000\nwidth 100000\nmap\n"), "line 4: " + size + "100000x100000");
+  EXPECT_EQ(problem_with("huge.map", "type octile\nheight 100000\nwidth 100000\nmap\n"),
+            "line 4: " + size + "100000x100000");
   EXPECT_EQ(problem_with("overflow.map", "type octile\nheight 4294967297\nwidth 4294967297\nmap\n"),
             "line 4: " + size + "4294967297x4294967297");
 }
 
 TEST(MovingAIMap, UnknownTerrainIsAnError) {
-  EXPECT_EQ(problem_with("unknown.map", map_text(3, 2, "...\n.x.\n")), "line 6: row 1, column 1: unknown terrain 'x' (free: . G; blocked: @ O T S W)");
-  EXPECT_EQ(problem_with("tab.map", map_text(3, 1, "..\t\n")), "line 5: row 0, column 2: unknown terrain 0x09 (free: . G; blocked: @ O T S W)");
+  EXPECT_EQ(problem_with("unknown.map", map_text(3, 2, "...\n.x.\n")),
+            "line 6: row 1, column 1: unknown terrain 'x' (free: . G; blocked: @ O T S W)");
+  EXPECT_EQ(problem_with("tab.map", map_text(3, 1, "..\t\n")),
+            "line 5: row 0, column 2: unknown terrain 0x09 (free: . G; blocked: @ O T S W)");
 }
 
 TEST(MovingAIMap, MalformedRows) {
   EXPECT_EQ(problem_with("short_row.map", map_text(3, 2, "...\n..\n")), "line 6: row 1 has 2 cells, the header says 3");
-  EXPECT_EQ(problem_with("long_row.map", map_text(3, 2, "....\n...\n")), "line 5: row 0 has 4 cells, the header says 3");
-  EXPECT_EQ(problem_with("missing_row.map", map_text(2, 3, "..\n..\n")), "line 6: the map has 2 rows, the header says 3");
+  EXPECT_EQ(problem_with("long_row.map", map_text(3, 2, "....\n...\n")),
+            "line 5: row 0 has 4 cells, the header says 3");
+  EXPECT_EQ(problem_with("missing_row.map", map_text(2, 3, "..\n..\n")),
+            "line 6: the map has 2 rows, the header says 3");
   EXPECT_EQ(problem_with("no_rows.map", map_text(2, 1, "")), "line 4: the map has 0 rows, the header says 1");
   EXPECT_EQ(problem_with("extra_row.map", map_text(2, 1, "..\n..\n")), "line 6: more rows than the header's 1");
 }

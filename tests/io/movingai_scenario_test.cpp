@@ -62,7 +62,8 @@ TEST(MovingAIScenario, ReadsTheArenaScenarios) {
   EXPECT_EQ(first.octile_text, "1");
   EXPECT_EQ(first.octile_length, 1.0);
   EXPECT_EQ(first.line, 2);
-  // "0	maps/dao/arena.map	49	49	1	13	4	12	3.41421": the length keeps its printed digits.
+  // "0	maps/dao/arena.map	49	49	1	13	4	12	3.41421": the length keeps its printed
+  // digits.
   EXPECT_EQ(queries[2].octile_text, "3.41421");
   EXPECT_EQ(queries[2].octile_length, 3.41421);
   // "15	maps/dao/arena.map	49	49	1	7	47	46	62.1543", the last line.
@@ -104,7 +105,8 @@ TEST(MovingAIScenario, ReadsTheArenaReferenceLengths) {
 }
 
 TEST(MovingAIScenario, BlankLinesAreSkippedButCounted) {
-  const std::string path = write_temp_file("blank_lines.scen", "version 1\n\n \t\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.24264\n");
+  const std::string path =
+      write_temp_file("blank_lines.scen", "version 1\n\n \t\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.24264\n");
   const auto queries = read_scenarios(path);
   ASSERT_EQ(queries.size(), 1u);
   EXPECT_EQ(queries[0].line, 4);
@@ -117,28 +119,38 @@ TEST(MovingAIScenario, MalformedFiles) {
   const std::string path = data_file("movingai/scenarios/does_not_exist.scen");
   EXPECT_EQ(input_error_of([&] { read_scenarios(path); }), path + ": cannot open file");
   EXPECT_EQ(scenario_problem("empty.scen", ""), "line 1: expected 'version 1' (a MovingAI scenario file)");
-  EXPECT_EQ(scenario_problem("a_map.scen", "type octile\nheight 4\n"), "line 1: expected 'version 1' (a MovingAI scenario file)");
+  EXPECT_EQ(scenario_problem("a_map.scen", "type octile\nheight 4\n"),
+            "line 1: expected 'version 1' (a MovingAI scenario file)");
 }
 
 TEST(MovingAIScenario, MalformedLines) {
   const std::string fields = "line 3: expected 'bucket map width height start_x start_y goal_x goal_y length'";
-  EXPECT_EQ(scenario_problem("eight_fields.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.24264\n0\tm.map\t4\t4\t0\t0\t3\t3\n"), fields);
-  EXPECT_EQ(scenario_problem("word_for_number.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.24264\n0\tm.map\t4\tfour\t0\t0\t3\t3\t4.2\n"), fields);
-  EXPECT_EQ(scenario_problem("length_word.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\tlong\n"), "line 2: length is not a number: long");
-  EXPECT_EQ(scenario_problem("length_partial.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.2x\n"), "line 2: length is not a number: 4.2x");
-  EXPECT_EQ(scenario_problem("length_nan.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\tnan\n"), "line 2: length is not a number: nan");
+  EXPECT_EQ(scenario_problem("eight_fields.scen",
+                             "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.24264\n0\tm.map\t4\t4\t0\t0\t3\t3\n"),
+            fields);
+  EXPECT_EQ(scenario_problem("word_for_number.scen",
+                             "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.24264\n0\tm.map\t4\tfour\t0\t0\t3\t3\t4.2\n"),
+            fields);
+  EXPECT_EQ(scenario_problem("length_word.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\tlong\n"),
+            "line 2: length is not a number: long");
+  EXPECT_EQ(scenario_problem("length_partial.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.2x\n"),
+            "line 2: length is not a number: 4.2x");
+  EXPECT_EQ(scenario_problem("length_nan.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\tnan\n"),
+            "line 2: length is not a number: nan");
   EXPECT_EQ(scenario_problem("ten_fields.scen", "version 1\n0\tm.map\t4\t4\t0\t0\t3\t3\t4.2\t7\n"),
             "line 2: expected 'bucket map width height start_x start_y goal_x goal_y length'");
 }
 
 TEST(MovingAIScenario, QueriesMustFitTheMap) {
-  const auto queries = read_scenarios(write_temp_file("fit.scen", "version 1\n0\tm.map\t4\t3\t0\t0\t3\t2\t4.2\n"
-                                                                   "0\tm.map\t4\t3\t0\t0\t4\t2\t4.2\n"));
+  const auto queries = read_scenarios(write_temp_file("fit.scen",
+                                                      "version 1\n0\tm.map\t4\t3\t0\t0\t3\t2\t4.2\n"
+                                                      "0\tm.map\t4\t3\t0\t0\t4\t2\t4.2\n"));
   EXPECT_EQ(input_error_of([&] { check_scenarios_match(queries, 4, 3, "m.map", "fit.scen"); }),
             "fit.scen: line 3: goal (4, 2) is outside the 4x3 map");
   EXPECT_EQ(input_error_of([&] { check_scenarios_match({queries[0]}, 5, 3, "m.map", "fit.scen"); }),
             "fit.scen: line 2: the query is for a 4x3 map, m.map is 5x3");
-  const auto negative = read_scenarios(write_temp_file("negative.scen", "version 1\n0\tm.map\t4\t3\t-1\t0\t3\t2\t4.2\n"));
+  const auto negative =
+      read_scenarios(write_temp_file("negative.scen", "version 1\n0\tm.map\t4\t3\t-1\t0\t3\t2\t4.2\n"));
   EXPECT_EQ(input_error_of([&] { check_scenarios_match(negative, 4, 3, "m.map", "negative.scen"); }),
             "negative.scen: line 2: start (-1, 0) is outside the 4x3 map");
 }
@@ -156,21 +168,28 @@ TEST(MovingAIReference, GapsAreMissingAndMinusOneIsNoPath) {
 TEST(MovingAIReference, MalformedLinesAndFiles) {
   const std::string path = data_file("movingai/reference/does_not_exist.csv");
   EXPECT_EQ(input_error_of([&] { read_reference_lengths(path, 1); }), path + ": cannot open file");
-  EXPECT_EQ(reference_problem("length_word.csv", "index,length\n0,1\n1,far\n"), "line 3: expected 'index,length', got \"1,far\"");
-  EXPECT_EQ(reference_problem("index_word.csv", "index,length\nfirst,1\n"), "line 2: expected 'index,length', got \"first,1\"");
-  EXPECT_EQ(reference_problem("no_comma.csv", "index,length\nnot a length\n"), "line 2: expected 'index,length', got \"not a length\"");
+  EXPECT_EQ(reference_problem("length_word.csv", "index,length\n0,1\n1,far\n"),
+            "line 3: expected 'index,length', got \"1,far\"");
+  EXPECT_EQ(reference_problem("index_word.csv", "index,length\nfirst,1\n"),
+            "line 2: expected 'index,length', got \"first,1\"");
+  EXPECT_EQ(reference_problem("no_comma.csv", "index,length\nnot a length\n"),
+            "line 2: expected 'index,length', got \"not a length\"");
   EXPECT_EQ(reference_problem("partial.csv", "index,length\n0,1x\n"), "line 2: expected 'index,length', got \"0,1x\"");
-  EXPECT_EQ(reference_problem("no_header.csv", "0,1\n"), "line 1: expected the header 'index,length' (a reference-lengths file)");
+  EXPECT_EQ(reference_problem("no_header.csv", "0,1\n"),
+            "line 1: expected the header 'index,length' (a reference-lengths file)");
 }
 
 // "-1" was read by std::stoul as the largest unsigned long: resize(index + 1) wrapped to 0 and
 // the length was written far out of bounds (a crash). 3·10^8 allocated 4.7 GB for a 30-byte file.
 TEST(MovingAIReference, AnIndexOutsideTheScenarioFileIsAnError) {
-  EXPECT_EQ(reference_problem("negative_index.csv", "index,length\n-1,5\n"), "line 2: expected 'index,length', got \"-1,5\"");
+  EXPECT_EQ(reference_problem("negative_index.csv", "index,length\n-1,5\n"),
+            "line 2: expected 'index,length', got \"-1,5\"");
   EXPECT_EQ(reference_problem("largest_index.csv", "index,length\n18446744073709551615,5\n"),
             "line 2: index 18446744073709551615 is beyond the scenario file's 4 queries");
   EXPECT_EQ(reference_problem("too_large_index.csv", "index,length\n18446744073709551616,5\n"),
             "line 2: expected 'index,length', got \"18446744073709551616,5\"");
-  EXPECT_EQ(reference_problem("far_index.csv", "index,length\n300000000,5\n"), "line 2: index 300000000 is beyond the scenario file's 4 queries");
-  EXPECT_EQ(reference_problem("next_index.csv", "index,length\n4,5\n"), "line 2: index 4 is beyond the scenario file's 4 queries");
+  EXPECT_EQ(reference_problem("far_index.csv", "index,length\n300000000,5\n"),
+            "line 2: index 300000000 is beyond the scenario file's 4 queries");
+  EXPECT_EQ(reference_problem("next_index.csv", "index,length\n4,5\n"),
+            "line 2: index 4 is beyond the scenario file's 4 queries");
 }

@@ -88,20 +88,26 @@ TEST(WktReader, EmptyMultipolygonIsMalformed) {
 // point of an empty ring.
 TEST(WktReader, EmptyRingsAreMalformedNotACrash) {
   const std::string malformed = "line 1: cannot read WKT: malformed ";
-  EXPECT_EQ(problem_with("empty.wkt", "POLYGON EMPTY\n"), prefix("empty.wkt") + malformed + "POLYGON: EMPTY holds no polygon");
-  EXPECT_EQ(problem_with("empty_ring.wkt", "POLYGON(())\n"), prefix("empty_ring.wkt") + malformed + "POLYGON: empty ring");
-  EXPECT_EQ(problem_with("empty_hole.wkt", "POLYGON((0 0,4 0,4 4,0 0),())\n"), prefix("empty_hole.wkt") + malformed + "POLYGON: empty ring");
+  EXPECT_EQ(problem_with("empty.wkt", "POLYGON EMPTY\n"),
+            prefix("empty.wkt") + malformed + "POLYGON: EMPTY holds no polygon");
+  EXPECT_EQ(problem_with("empty_ring.wkt", "POLYGON(())\n"),
+            prefix("empty_ring.wkt") + malformed + "POLYGON: empty ring");
+  EXPECT_EQ(problem_with("empty_hole.wkt", "POLYGON((0 0,4 0,4 4,0 0),())\n"),
+            prefix("empty_hole.wkt") + malformed + "POLYGON: empty ring");
   EXPECT_EQ(problem_with("empty_multi_ring.wkt", "MULTIPOLYGON((()))\n"),
             prefix("empty_multi_ring.wkt") + malformed + "MULTIPOLYGON: empty ring");
 }
 
 TEST(WktReader, NotANumberAndInfinityAreRefused) {
   const std::string malformed = "line 1: cannot read WKT: malformed POLYGON: ";
-  EXPECT_EQ(problem_with("nan.wkt", "POLYGON((0 0,NaN 0,1 1,0 0))\n"), prefix("nan.wkt") + malformed + "expected a number, got \"NaN\"");
-  EXPECT_EQ(problem_with("inf.wkt", "POLYGON((0 0,1 0,1 Inf,0 0))\n"), prefix("inf.wkt") + malformed + "expected a number, got \"Inf\"");
+  EXPECT_EQ(problem_with("nan.wkt", "POLYGON((0 0,NaN 0,1 1,0 0))\n"),
+            prefix("nan.wkt") + malformed + "expected a number, got \"NaN\"");
+  EXPECT_EQ(problem_with("inf.wkt", "POLYGON((0 0,1 0,1 Inf,0 0))\n"),
+            prefix("inf.wkt") + malformed + "expected a number, got \"Inf\"");
   EXPECT_EQ(problem_with("minus_inf.wkt", "POLYGON((0 0,1 0,1 -inf,0 0))\n"),
             prefix("minus_inf.wkt") + malformed + "number \"-\": not a number");
-  EXPECT_NE(problem_with("huge.wkt", "POLYGON((0 0,1e160 0,1 1,0 0))\n").find("malformed POLYGON: number \"1e160\": overflows the supported range"),
+  EXPECT_NE(problem_with("huge.wkt", "POLYGON((0 0,1e160 0,1 1,0 0))\n")
+                .find("malformed POLYGON: number \"1e160\": overflows the supported range"),
             std::string::npos);
 }
 
@@ -114,15 +120,19 @@ TEST(WktReader, AGeometryMaySpanLines) {
 
 TEST(WktReader, MissingFile) {
   const std::string path = std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/does_not_exist.wkt";
-  EXPECT_EQ(input_error_of([&] { read_wkt_obstacles(path, "w.json"); }), "w.json: obstacles_wkt \"" + path + "\": cannot open file");
+  EXPECT_EQ(input_error_of([&] { read_wkt_obstacles(path, "w.json"); }),
+            "w.json: obstacles_wkt \"" + path + "\": cannot open file");
 }
 
 TEST(WktReader, FileOfBlankLinesHoldsNoPolygon) {
-  EXPECT_EQ(problem_with("blank.wkt", "\n   \n\t\n"), prefix("blank.wkt") + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
-  EXPECT_EQ(problem_with("nothing.wkt", ""), prefix("nothing.wkt") + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
+  EXPECT_EQ(problem_with("blank.wkt", "\n   \n\t\n"),
+            prefix("blank.wkt") + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
+  EXPECT_EQ(problem_with("nothing.wkt", ""),
+            prefix("nothing.wkt") + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
 }
 
 TEST(WktReader, KeywordsAreCaseInsensitive) {
-  const std::string path = write_temp_file("lower_case.wkt", "polygon((0 0,1 0,1 1,0 0))\nMultiPolygon(((5 5,6 5,6 6,5 5)))\n");
+  const std::string path =
+      write_temp_file("lower_case.wkt", "polygon((0 0,1 0,1 1,0 0))\nMultiPolygon(((5 5,6 5,6 6,5 5)))\n");
   EXPECT_EQ(read_wkt_obstacles(path, "w.json").size(), 2u);
 }

@@ -20,7 +20,8 @@ TEST(WorldReader, ReadsEveryFieldExactly) {
     "start": [0.3, 0.3], "goal": [9, 9],
     "queries": [{"start": [1e-1, 5], "goal": [7, 8]}],
     "colour": "red"
-  })", "w.json", &warnings);
+  })",
+                              "w.json", &warnings);
   ASSERT_TRUE(w.bounds);
   EXPECT_EQ(w.bounds->xmax, w.bounds->ymax);
   EXPECT_EQ(w.obstacles.size(), 2u);
@@ -55,7 +56,7 @@ TEST(WorldReader, ReadsWktObstaclesBesideTheWorldFile) {
   const World w = read_world(polyplan::test::data_file("worlds/wkt_obstacles.json"));
   ASSERT_EQ(w.obstacles.size(), 3u);
   EXPECT_EQ(w.obstacle_names, (std::vector<std::string>{"wkt_obstacles.wkt polygon 0", "wkt_obstacles.wkt polygon 1",
-                                                         "wkt_obstacles.wkt polygon 2"}));
+                                                        "wkt_obstacles.wkt polygon 2"}));
   EXPECT_EQ(w.queries.size(), 2u);
   EXPECT_EQ(w.queries[1].start, pt("7", "3"));
 }
@@ -85,10 +86,12 @@ TEST(WorldReader, NumbersOutsideTheSupportedRangeNameTheirObject) {
   EXPECT_EQ(input_error_of([] { world_from(R"({"obstacles": [], "start": [1e-200, 0], "goal": [1, 1]})"); }),
             "test.json: start[0]: underflows " + range + ": \"1e-200\"");
   const std::string digits(100000, '9');
-  EXPECT_EQ(input_error_of([&] { world_from(R"({"obstacles": [], "start": [)" + digits + R"(, 0], "goal": [1, 1]})"); }),
-            "test.json: start[0]: number at byte 100028 overflows " + range);
-  EXPECT_EQ(input_error_of([&] { world_from(R"({"obstacles": [], "start": ["1.)" + digits + R"(", 0], "goal": [1, 1]})"); }),
-            "test.json: start[0]: longer than the supported 100 characters: \"1.9999999999999999999999999999999999...");
+  EXPECT_EQ(
+      input_error_of([&] { world_from(R"({"obstacles": [], "start": [)" + digits + R"(, 0], "goal": [1, 1]})"); }),
+      "test.json: start[0]: number at byte 100028 overflows " + range);
+  EXPECT_EQ(
+      input_error_of([&] { world_from(R"({"obstacles": [], "start": ["1.)" + digits + R"(", 0], "goal": [1, 1]})"); }),
+      "test.json: start[0]: longer than the supported 100 characters: \"1.9999999999999999999999999999999999...");
   EXPECT_EQ(world_from(R"({"obstacles": [], "start": [1e100, 1e-100], "goal": [1, 1]})").queries[0].start.y,
             Rational(mpz_class(1), mpz_class("1" + std::string(100, '0'))));
 }
@@ -99,7 +102,9 @@ TEST(WorldReader, DeepNestingIsRefusedBeforeAnythingRecurses) {
   const std::string message = input_error_of([&] { world_from(deep); });
   EXPECT_EQ(message.rfind("test.json: [0][0][0]", 0), 0u) << message.substr(0, 200);
   EXPECT_NE(message.find("]: nested deeper than the supported 32 levels"), std::string::npos) << message.substr(0, 200);
-  EXPECT_EQ(input_error_of([&] { world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0, )" + std::string(40, '[') + "]]]}}"); }),
+  EXPECT_EQ(input_error_of([&] {
+              world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0, )" + std::string(40, '[') + "]]]}}");
+            }),
             "test.json: robot.parts[0][0][2]" + repeated("[0]", 27) + ": nested deeper than the supported 32 levels");
 }
 
@@ -119,7 +124,8 @@ TEST(WorldReader, AHugeUnknownKeyIsWarnedAboutShortly) {
 
 TEST(WorldReader, FilesThatAreNotInputsEndAtOnce) {
   EXPECT_EQ(input_error_of([] { read_world("/dev/zero"); }), "/dev/zero: larger than the supported 64 MiB");
-  EXPECT_EQ(input_error_of([] { read_world(POLYPLAN_SOURCE_DIR); }), std::string(POLYPLAN_SOURCE_DIR) + ": is a directory, not a file");
+  EXPECT_EQ(input_error_of([] { read_world(POLYPLAN_SOURCE_DIR); }),
+            std::string(POLYPLAN_SOURCE_DIR) + ": is a directory, not a file");
 }
 
 TEST(WorldReader, ReadsACar) {
@@ -129,34 +135,42 @@ TEST(WorldReader, ReadsACar) {
   EXPECT_EQ(w.robot.car->turning_radius, 2.5);
   EXPECT_TRUE(w.robot.car->reverse);
   EXPECT_EQ(*w.queries[0].goal_theta, -90);
-  EXPECT_FALSE(world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0], [1, 0], [0, 1]]], "car": {"turning_radius": 1}},
-    "start": [0, 0, 0], "goal": [1, 1, 0]})").robot.car->reverse);
+  EXPECT_FALSE(
+      world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0], [1, 0], [0, 1]]], "car": {"turning_radius": 1}},
+    "start": [0, 0, 0], "goal": [1, 1, 0]})")
+          .robot.car->reverse);
   EXPECT_FALSE(world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0], [1, 0], [0, 1]]]}})").robot.car);
 }
 
 TEST(WorldReader, BadCarsNameTheirField) {
   const std::string body = R"("parts": [[[-1, -1], [3, -1], [3, 1], [-1, 1]]])";
   const auto car_world = [&](const std::string& car, const std::string& queries) {
-    return input_error_of([&] { world_from(R"({"obstacles": [], "robot": {)" + body + R"(, "car": )" + car + "}, " + queries + "}"); });
+    return input_error_of(
+        [&] { world_from(R"({"obstacles": [], "robot": {)" + body + R"(, "car": )" + car + "}, " + queries + "}"); });
   };
   const std::string poses = R"("start": [0, 0, 0], "goal": [5, 5, 90])";
-  EXPECT_EQ(car_world(R"({"turning_radius": 0})", poses), "test.json: robot.car.turning_radius: 0: expected a positive number");
-  EXPECT_EQ(car_world(R"({"turning_radius": -2})", poses), "test.json: robot.car.turning_radius: -2: expected a positive number");
+  EXPECT_EQ(car_world(R"({"turning_radius": 0})", poses),
+            "test.json: robot.car.turning_radius: 0: expected a positive number");
+  EXPECT_EQ(car_world(R"({"turning_radius": -2})", poses),
+            "test.json: robot.car.turning_radius: -2: expected a positive number");
   EXPECT_EQ(car_world(R"({"turning_radius": "fast"})", poses).rfind("test.json: robot.car.turning_radius: ", 0), 0u);
   EXPECT_EQ(car_world(R"({"turning_radius": true})", poses), "test.json: robot.car.turning_radius: not a number: true");
   EXPECT_EQ(car_world(R"({"reverse": true})", poses), "test.json: robot.car: missing field \"turning_radius\"");
-  EXPECT_EQ(car_world(R"({"turning_radius": 1, "reverse": "yes"})", poses), "test.json: robot.car.reverse: expected true or false, got \"yes\"");
+  EXPECT_EQ(car_world(R"({"turning_radius": 1, "reverse": "yes"})", poses),
+            "test.json: robot.car.reverse: expected true or false, got \"yes\"");
   EXPECT_EQ(car_world("[1]", poses).rfind("test.json: robot.car: expected {", 0), 0u);
   EXPECT_EQ(car_world(R"({"turning_radius": 1})", R"("start": [0, 0], "goal": [5, 5, 90])"),
             "test.json: start: a car's pose is [x, y, theta] (theta in degrees), got [0,0]");
   EXPECT_EQ(car_world(R"({"turning_radius": 1})", R"("queries": [{"start": [0, 0, 0], "goal": [5, 5]}])"),
             "test.json: queries[0].goal: a car's pose is [x, y, theta] (theta in degrees), got [5,5]");
   // An empty or self-intersecting body is refused as every robot's is.
-  EXPECT_NE(input_error_of([] { world_from(R"({"obstacles": [], "robot": {"parts": [], "car": {"turning_radius": 1}}})"); })
-                .find("robot.parts: empty"),
+  EXPECT_NE(input_error_of([] {
+              world_from(R"({"obstacles": [], "robot": {"parts": [], "car": {"turning_radius": 1}}})");
+            }).find("robot.parts: empty"),
             std::string::npos);
   EXPECT_NE(input_error_of([] {
-              world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0], [2, 2], [2, 0], [0, 2]]], "car": {"turning_radius": 1}}})");
+              world_from(R"({"obstacles": [], "robot": {"parts": [[[0, 0], [2, 2], [2, 0], [0, 2]]], )"
+                         R"("car": {"turning_radius": 1}}})");
             }).find("robot.parts[0]: self-intersecting"),
             std::string::npos);
 }
@@ -179,26 +193,32 @@ TEST(WorldReader, ReadsChanges) {
 
 TEST(WorldReader, BadChangesNameTheirField) {
   const auto changes = [](const std::string& list) {
-    return input_error_of([&] { world_from(R"({"obstacles": [[[0, 0], [1, 0], [1, 1], [0, 1]]], "changes": )" + list + "}"); });
+    return input_error_of(
+        [&] { world_from(R"({"obstacles": [[[0, 0], [1, 0], [1, 1], [0, 1]]], "changes": )" + list + "}"); });
   };
   EXPECT_EQ(changes("{}").rfind("test.json: changes: expected a list", 0), 0u);
-  EXPECT_EQ(changes(R"([{"add_obstacle": [[0, 0], [1, 0], [0, 1]]}])"), "test.json: changes[0]: missing field \"after_moves\"");
+  EXPECT_EQ(changes(R"([{"add_obstacle": [[0, 0], [1, 0], [0, 1]]}])"),
+            "test.json: changes[0]: missing field \"after_moves\"");
   EXPECT_EQ(changes(R"([{"after_moves": -1, "remove_obstacle": 0}])"),
             "test.json: changes[0].after_moves: expected a whole number of at least 0, got -1");
   EXPECT_EQ(changes(R"([{"after_moves": 1.5, "remove_obstacle": 0}])"),
             "test.json: changes[0].after_moves: expected a whole number of at least 0, got \"1.5\"");
-  EXPECT_EQ(changes(R"([{"after_moves": 1}])").rfind("test.json: changes[0]: give one of \"add_obstacle\" and \"remove_obstacle\"", 0), 0u);
+  EXPECT_EQ(changes(R"([{"after_moves": 1}])")
+                .rfind("test.json: changes[0]: give one of \"add_obstacle\" and \"remove_obstacle\"", 0),
+            0u);
   EXPECT_EQ(changes(R"([{"after_moves": 1, "remove_obstacle": 0, "add_obstacle": [[0, 0], [1, 0], [0, 1]]}])")
                 .rfind("test.json: changes[0]: give one of", 0),
             0u);
-  EXPECT_EQ(changes(R"([{"after_moves": 1, "add_obstacle": [[0, 0], [2, 2], [2, 0], [0, 2]]}])").rfind(
-                "test.json: changes[0].add_obstacle: self-intersecting", 0),
+  EXPECT_EQ(changes(R"([{"after_moves": 1, "add_obstacle": [[0, 0], [2, 2], [2, 0], [0, 2]]}])")
+                .rfind("test.json: changes[0].add_obstacle: self-intersecting", 0),
             0u);
   EXPECT_EQ(changes(R"([{"after_moves": 1, "remove_obstacle": 1}])"),
-            "test.json: changes[0].remove_obstacle: 1: there are 1 obstacles at that moment (numbered from 0: the world's, then those "
+            "test.json: changes[0].remove_obstacle: 1: there are 1 obstacles at that moment (numbered from 0: the "
+            "world's, then those "
             "the changes before added)");
   EXPECT_EQ(changes(R"([{"after_moves": 1, "remove_obstacle": 0}, {"after_moves": 2, "remove_obstacle": 0}])"),
             "test.json: changes[1].remove_obstacle: obstacle 0 was removed by an earlier change");
-  EXPECT_EQ(changes(R"([{"after_moves": 5, "remove_obstacle": 0}, {"after_moves": 2, "add_obstacle": [[0, 0], [1, 0], [0, 1]]}])"),
+  EXPECT_EQ(changes(R"([{"after_moves": 5, "remove_obstacle": 0}, {"after_moves": 2, "add_obstacle": [[0, 0], [1, 0], )"
+                    R"([0, 1]]}])"),
             "test.json: changes[1].after_moves: 2 after changes[0]'s 5: list the changes in the order they happen");
 }

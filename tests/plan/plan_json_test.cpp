@@ -1,5 +1,5 @@
-// plan/plan_json: the one writer of the object `polyplan plan --json` prints (docs/design.md), for reports over points and
-// over joint angles: the fixed keys, exact rationals for points, facts nested by their dots.
+// plan/plan_json: the one writer of the object `polyplan plan --json` prints (docs/design.md), for reports over points
+// and over joint angles: the fixed keys, exact rationals for points, facts nested by their dots.
 #include <polyplan/plan/plan_json.hpp>
 
 #include <nlohmann/json.hpp>

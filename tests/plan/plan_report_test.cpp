@@ -61,7 +61,8 @@ TEST(CellGrid, StatesAreIndexedColumnFirst) {
   CellGrid cells;
   cells.columns = 3;
   cells.rows = 2;
-  cells.states = {CellGrid::free, CellGrid::blocked, CellGrid::free, CellGrid::not_evaluated, CellGrid::free, CellGrid::blocked};
+  cells.states = {CellGrid::free,          CellGrid::blocked, CellGrid::free,
+                  CellGrid::not_evaluated, CellGrid::free,    CellGrid::blocked};
   EXPECT_EQ(cells.state(1, 0), CellGrid::blocked);
   EXPECT_EQ(cells.state(0, 1), CellGrid::not_evaluated);
   EXPECT_EQ(cells.state(2, 1), CellGrid::blocked);

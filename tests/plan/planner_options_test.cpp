@@ -29,7 +29,8 @@ OptionTable<Options> table() {
       .add("step", &Options::step, "a step")
       .add("wrap", &Options::wrap, "wraps round")
       .add("label", &Options::label, "a label")
-      .add("shape", &Options::shape, "a shape", std::vector<std::pair<std::string, Shape>>{{"round", Shape::round}, {"square", Shape::square}});
+      .add("shape", &Options::shape, "a shape",
+           std::vector<std::pair<std::string, Shape>>{{"round", Shape::round}, {"square", Shape::square}});
   add_search_options(t, &Options::search);
   return t;
 }
@@ -61,8 +62,14 @@ TEST(OptionTable, ListsEveryOptionWithItsKindAndDefault) {
 }
 
 TEST(OptionTable, SetsEveryKindFromText) {
-  const Options o = table().parse({{"cells", "40"}, {"offset", "-7"}, {"step", "2.5e-1"}, {"wrap", "no"}, {"label", "a=b"},
-                                   {"shape", "square"}, {"search", "wastar"}, {"weight", "3"}},
+  const Options o = table().parse({{"cells", "40"},
+                                   {"offset", "-7"},
+                                   {"step", "2.5e-1"},
+                                   {"wrap", "no"},
+                                   {"label", "a=b"},
+                                   {"shape", "square"},
+                                   {"search", "wastar"},
+                                   {"weight", "3"}},
                                   "demo");
   EXPECT_EQ(o.cells, 40u);
   EXPECT_EQ(o.offset, -7);
@@ -92,7 +99,8 @@ TEST(OptionTable, RefusalsNameThePlannerTheOptionAndTheValue) {
             "planner demo: option search=teleport: expected one of astar|dijkstra|bfs|dfs|greedy|wastar");
   EXPECT_EQ(refusal({{"weight", "0.9"}}), "planner demo: option weight=0.9: expected a number in [1, inf)");
   EXPECT_EQ(refusal({{"colour", "red"}}),
-            "planner demo: option colour=red: no such option (its options: cells, offset, step, wrap, label, shape, search, weight)");
+            "planner demo: option colour=red: no such option (its options: cells, offset, step, wrap, label, shape, "
+            "search, weight)");
   EXPECT_EQ(OptionTable<Options>().parse({}, "empty").cells, 100u);
   try {
     OptionTable<Options>().parse({{"cells", "1"}}, "empty");

@@ -75,13 +75,15 @@ TEST(MakePlanner, ANameRegisteredForSeveralSpacesPlansTheProblemsSpace) {
 
 TEST(MakePlanner, APlannerOfAnotherKindOfProblemIsRefusedWithTheReason) {
   const std::string arm_planner = refusal("grid", read("worlds/seed004.json"));
-  EXPECT_NE(arm_planner.find("planner grid plans in an Arm (a planar n-link arm), not in a World"), std::string::npos) << arm_planner;
+  EXPECT_NE(arm_planner.find("planner grid plans in an Arm (a planar n-link arm), not in a World"), std::string::npos)
+      << arm_planner;
   EXPECT_NE(arm_planner.find("its planners: visibility, visibility-full"), std::string::npos) << arm_planner;
   const std::string world_planner = refusal("visibility", read("arms/two_link_points.json"));
   EXPECT_NE(world_planner.find("plans in a World"), std::string::npos) << world_planner;
   EXPECT_NE(world_planner.find("its planners: grid, prm"), std::string::npos) << world_planner;
   EXPECT_NE(refusal("visibility", read("worlds/car_park.json")).find("steers like a car"), std::string::npos);
-  EXPECT_EQ(refusal("teleport", read("worlds/seed004.json")).rfind("unknown planner \"teleport\" (visibility, ", 0), 0u);
+  EXPECT_EQ(refusal("teleport", read("worlds/seed004.json")).rfind("unknown planner \"teleport\" (visibility, ", 0),
+            0u);
 }
 
 TEST(MakePlanner, ABadOptionIsRefusedBeforeAnythingIsBuilt) {
@@ -102,7 +104,8 @@ TEST(Report, ReadsAsThePlannersOwnReportWhateverTheSpace) {
   const auto& typed = std::get<PlanReport<ExactPoint>>(report.typed());
   EXPECT_EQ(report.to_json(), plan_json(typed, "start/goal"));
   ASSERT_EQ(report.path().size(), typed.path.size());
-  EXPECT_EQ(report.path().back(), (std::vector<double>{to_double(typed.path.back().x), to_double(typed.path.back().y)}));
+  EXPECT_EQ(report.path().back(),
+            (std::vector<double>{to_double(typed.path.back().x), to_double(typed.path.back().y)}));
   ASSERT_TRUE(report.exact_path());
   EXPECT_EQ(report.exact_path()->front(), (std::vector<Rational>{typed.path.front().x, typed.path.front().y}));
   EXPECT_EQ(report.summary().rfind("start/goal: length ", 0), 0u) << report.summary();
@@ -126,7 +129,8 @@ TEST(Report, ACallersQueryIsCheckedAsTheFilesQueriesAre) {
   const Problem arm = read("arms/two_link_points.json");
   const auto grid = make_planner("grid", arm);
   EXPECT_THROW(grid->plan(QuerySpec{"three", numbers({0, 0, 0}), numbers({1, 1}), {}, std::nullopt}), InputError);
-  EXPECT_THROW(grid->plan(QuerySpec{"both", numbers({0, 0}), numbers({1, 1}), numbers({1, 1}), std::nullopt}), InputError);
+  EXPECT_THROW(grid->plan(QuerySpec{"both", numbers({0, 0}), numbers({1, 1}), numbers({1, 1}), std::nullopt}),
+               InputError);
 }
 
 TEST(Report, PicturesAreDrawnForEveryKindOfProblem) {
@@ -154,7 +158,8 @@ std::optional<std::string> outside(const OptionRange& range) {
 }
 
 TEST(Catalog, EveryNumberOrChoiceOptionIsDeclaredWithItsRangeAndRefusedOutsideItBeforeAnythingIsBuilt) {
-  const Problem problems[] = {read("worlds/seed004.json"), read("worlds/car_park.json"), read("arms/two_link_points.json")};
+  const Problem problems[] = {read("worlds/seed004.json"), read("worlds/car_park.json"),
+                              read("arms/two_link_points.json")};
   std::size_t refused = 0;
   for (const PlannerListing& planner : planner_catalog()) {
     const Problem* problem = nullptr;

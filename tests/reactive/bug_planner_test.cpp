@@ -1,11 +1,11 @@
-// Bug1 and Bug2 on the exact C-space: round the course's planning problem set's wall and out of the U-shaped trap, paths
-// checked exactly, hit and leave points where the geometry puts them, the distance within the
-// textbook's bound computed here from the obstacle's own perimeter; unreachable goals no_path.
+// Bug1 and Bug2 on the exact C-space: round the course's planning problem set's wall and out of the U-shaped trap,
+// paths checked exactly, hit and leave points where the geometry puts them, the distance within the textbook's bound
+// computed here from the obstacle's own perimeter; unreachable goals no_path.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/registry/registry.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <gtest/gtest.h>
 
@@ -15,7 +15,9 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json"); }
+World shipped(const std::string& name) {
+  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
+}
 
 PlanReport<ExactPoint> walk(const char* bug, const CSpace& cspace, const Query& q) {
   return planners<TranslatingRobot>().find(bug)->make(cspace, {})->plan(q);
@@ -36,7 +38,8 @@ TEST(BugPlanners, GoRoundSeedTwosWallWithinTheirBounds) {
     EXPECT_EQ(report.path.back(), q.goal);
     EXPECT_TRUE(check_path(cspace, report.path).valid);
     EXPECT_EQ(report.facts.at(BugFacts::hits), "(0.000000, 0.200000)");
-    const double bound = std::string(bug) == "bug1" ? d + 1.5 * perimeter : d + 0.5 * 2 * perimeter;  // the m-line crosses the wall twice
+    const double bound = std::string(bug) == "bug1" ? d + 1.5 * perimeter
+                                                    : d + 0.5 * 2 * perimeter;  // the m-line crosses the wall twice
     EXPECT_NEAR(report.facts.at(BugFacts::bound), bound, 1e-9);
     EXPECT_LE(report.length, bound);
     EXPECT_GT(report.length, 200);  // round an end of the wall

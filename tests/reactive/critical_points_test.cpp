@@ -16,7 +16,9 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json"); }
+World shipped(const std::string& name) {
+  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
+}
 
 TEST(CriticalPoints, SeedTwosWallHasOneMinimum) {
   const CSpace cspace(shipped("seed002_wall"));
@@ -76,8 +78,9 @@ TEST(CriticalPoints, BetweenTwoSquaresTheSearchAgreesWithFiniteDifferences) {
   }
   EXPECT_GE(saddles, 1);
   // By symmetry one saddle lies on x = 10, at the top of the gap: the pull through it meets both squares' push.
-  EXPECT_TRUE(std::any_of(found.points.begin(), found.points.end(),
-                          [](const CriticalPoint& p) { return p.kind == "saddle" && std::abs(p.at.x - 10) < 1e-6 && p.at.y > 11; }));
+  EXPECT_TRUE(std::any_of(found.points.begin(), found.points.end(), [](const CriticalPoint& p) {
+    return p.kind == "saddle" && std::abs(p.at.x - 10) < 1e-6 && p.at.y > 11;
+  }));
   // Completeness on a fine scan: wherever the numeric gradient is nearly zero in the free space
   // away from the obstacles' ridges, a reported point is near.
   for (double y = 0.6; y < 19.4; y += 0.05)

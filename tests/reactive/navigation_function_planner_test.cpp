@@ -1,12 +1,12 @@
 // The navigation function of a sphere world: through the gap between two discs where the potential
-// field stops, and every query of the course's graph-search homework's sphere world, paths checked exactly and the κ used
-// reported; worlds that are not sphere worlds said so; a bad κ named.
+// field stops, and every query of the course's graph-search homework's sphere world, paths checked exactly and the κ
+// used reported; worlds that are not sphere worlds said so; a bad κ named.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/registry/registry.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <gtest/gtest.h>
 
@@ -15,9 +15,12 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json"); }
+World shipped(const std::string& name) {
+  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
+}
 
-PlanReport<ExactPoint> plan_with(const char* planner, const CSpace& cspace, const Query& q, const OptionValues& options = {}) {
+PlanReport<ExactPoint> plan_with(const char* planner, const CSpace& cspace, const Query& q,
+                                 const OptionValues& options = {}) {
   return planners<TranslatingRobot>().find(planner)->make(cspace, options)->plan(q);
 }
 

@@ -1,13 +1,13 @@
 // The potential-field planner on the exact C-space: solved where the field leads to the goal (the
-// path re-checked exactly), local_minimum in the U-shaped trap and at the course's planning problem set's minimum beside
-// the infinite wall, no_path proved between components, the step limit, bad options named.
+// path re-checked exactly), local_minimum in the U-shaped trap and at the course's planning problem set's minimum
+// beside the infinite wall, no_path proved between components, the step limit, bad options named.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/registry/registry.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <gtest/gtest.h>
 
@@ -18,7 +18,9 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json"); }
+World shipped(const std::string& name) {
+  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
+}
 
 PlanReport<ExactPoint> descend(const CSpace& cspace, const Query& query, const OptionValues& options = {}) {
   return planners<TranslatingRobot>().find("potential-field")->make(cspace, options)->plan(query);
@@ -35,7 +37,7 @@ TEST(PotentialFieldPlanner, DescendsToAGoalInTheOpenWithAnExactlyCheckedPath) {
   const World world = shipped("u_trap");
   const CSpace cspace(world);
   const Query beside{{3, 17}, {17, 17}, "beside"};  // above the U, the way clear
-  const Query round{{3, 3}, {17, 16}, "round"};      // past the U's corner: repelled, then past it
+  const Query round{{3, 3}, {17, 16}, "round"};     // past the U's corner: repelled, then past it
   for (const Query& q : {beside, round}) {
     SCOPED_TRACE(q.name);
     const auto report = descend(cspace, q);
@@ -63,7 +65,8 @@ TEST(PotentialFieldPlanner, TheUShapedTrapIsALocalMinimumAboveItsBottomWall) {
 // critical point, the minimum (−0.68233, 0).
 TEST(PotentialFieldPlanner, SeedTwosWallHoldsTheRobotAtItsMinimum) {
   const World world = shipped("seed002_wall");
-  const auto report = descend(CSpace(world), world.queries[0], {{"step", "0.01"}, {"patience", "2000"}, {"max-steps", "50000"}});
+  const auto report =
+      descend(CSpace(world), world.queries[0], {{"step", "0.01"}, {"patience", "2000"}, {"max-steps", "50000"}});
   EXPECT_EQ(report.status, PlanStatus::local_minimum) << report.why_not;
   const auto [x, y] = stopped_at(report);
   EXPECT_NEAR(x, -0.68233, 1e-4);
@@ -83,13 +86,16 @@ TEST(PotentialFieldPlanner, NoPathIsProvedAndTheStepLimitIsALimit) {
 TEST(PotentialFieldPlanner, BadOptionsAreNamed) {
   const CSpace cspace(shipped("u_trap"));
   const auto* entry = planners<TranslatingRobot>().find("potential-field");
-  for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{{"zeta", "-1"}, {"zeta", "0"}, {"q-star", "-2"}, {"patience", "0"}}) {
+  for (const auto& [name, value] : std::vector<std::pair<std::string, std::string>>{
+           {"zeta", "-1"}, {"zeta", "0"}, {"q-star", "-2"}, {"patience", "0"}}) {
     SCOPED_TRACE(name + "=" + value);
     try {
       entry->make(cspace, {{name, value}});
       FAIL() << "accepted";
     } catch (const InputError& e) {
-      EXPECT_EQ(std::string(e.what()).rfind("planner potential-field: option " + name + "=" + value + ": expected a ", 0), 0u) << e.what();
+      EXPECT_EQ(
+          std::string(e.what()).rfind("planner potential-field: option " + name + "=" + value + ": expected a ", 0), 0u)
+          << e.what();
     }
   }
 }

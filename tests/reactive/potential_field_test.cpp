@@ -1,6 +1,6 @@
 // The potential of the potential-field planner: gradients and Hessians against finite
-// differences, continuity across d* and Q*, and the course's planning problem set's infinite wall — one critical point, a
-// minimum at x ≈ −0.68233, whose Hessian is the seed's own formula.
+// differences, continuity across d* and Q*, and the course's planning problem set's infinite wall — one critical point,
+// a minimum at x ≈ −0.68233, whose Hessian is the seed's own formula.
 #include <polyplan/reactive/potential_field.hpp>
 
 #include <gtest/gtest.h>
@@ -14,7 +14,8 @@ namespace {
 
 const std::vector<Vec2> pentagon{{0, 0}, {3, -1}, {4, 2}, {1.5, 4}, {-1, 2}};
 
-Potential total(Vec2 q, Vec2 goal, const AttractiveParameters& a, const RepulsiveParameters& r, const std::vector<Vec2>& ring) {
+Potential total(Vec2 q, Vec2 goal, const AttractiveParameters& a, const RepulsiveParameters& r,
+                const std::vector<Vec2>& ring) {
   return attractive_potential(q, goal, a) + repulsive_potential(q, nearest_on_ring(q, ring), r);
 }
 
@@ -40,8 +41,10 @@ TEST(PotentialField, GradientAndHessianAreTheDerivatives) {
       ++checked;
       const double h = 1e-6;
       const Potential p = total(q, goal, a, r, pentagon);
-      const Potential px = total({q.x + h, q.y}, goal, a, r, pentagon), mx = total({q.x - h, q.y}, goal, a, r, pentagon);
-      const Potential py = total({q.x, q.y + h}, goal, a, r, pentagon), my = total({q.x, q.y - h}, goal, a, r, pentagon);
+      const Potential px = total({q.x + h, q.y}, goal, a, r, pentagon),
+                      mx = total({q.x - h, q.y}, goal, a, r, pentagon);
+      const Potential py = total({q.x, q.y + h}, goal, a, r, pentagon),
+                      my = total({q.x, q.y - h}, goal, a, r, pentagon);
       const double scale = 1 + std::abs(p.gradient.x) + std::abs(p.gradient.y);
       EXPECT_NEAR(p.gradient.x, (px.value - mx.value) / (2 * h), 1e-5 * scale);
       EXPECT_NEAR(p.gradient.y, (py.value - my.value) / (2 * h), 1e-5 * scale);
@@ -71,12 +74,13 @@ TEST(PotentialField, ValueAndGradientAreContinuousAcrossDStarAndQStar) {
   EXPECT_EQ(outside.gradient.y, 0);
   // The conic potential has no gradient at its point, and pulls with ζ everywhere else.
   EXPECT_EQ(attractive_potential(goal, goal, {1, 0}).gradient.x, 0);
-  EXPECT_NEAR(std::hypot(attractive_potential({3, 4}, goal, {1.5, 0}).gradient.x, attractive_potential({3, 4}, goal, {1.5, 0}).gradient.y), 1.5,
-              1e-12);
+  EXPECT_NEAR(std::hypot(attractive_potential({3, 4}, goal, {1.5, 0}).gradient.x,
+                         attractive_potential({3, 4}, goal, {1.5, 0}).gradient.y),
+              1.5, 1e-12);
 }
 
-// The course's planning problem set, problem 1: a point robot left of a wall at x = 0 (here a rectangle whose far ends lie
-// far beyond Q*), the goal at (2, 0), conic attraction ζ = 1, repulsion η = 1, Q* = 1.
+// The course's planning problem set, problem 1: a point robot left of a wall at x = 0 (here a rectangle whose far ends
+// lie far beyond Q*), the goal at (2, 0), conic attraction ζ = 1, repulsion η = 1, Q* = 1.
 TEST(PotentialField, SeedTwosInfiniteWallHasOneMinimumAtMinus068233) {
   const std::vector<Vec2> wall{{0, -1000}, {1, -1000}, {1, 1000}, {0, 1000}};
   const Vec2 goal{2, 0};

@@ -1,16 +1,16 @@
-// TangentBug on the course's planning problem set's walls (the endless one: limit with d_followed = 2, never a hang; the one
-// open at the top: the touch-sensing robot leaves at (1, √3), the far-seeing one takes the corner),
-// out of the U-shaped trap, the spiral and the maze, an unreachable goal inside a closed ring; the
-// visibility polygon's windows where the geometry puts them; the sensed regions in the picture.
+// TangentBug on the course's planning problem set's walls (the endless one: limit with d_followed = 2, never a hang;
+// the one open at the top: the touch-sensing robot leaves at (1, √3), the far-seeing one takes the corner), out of the
+// U-shaped trap, the spiral and the maze, an unreachable goal inside a closed ring; the visibility polygon's windows
+// where the geometry puts them; the sensed regions in the picture.
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/reactive/visibility_region.hpp>
-#include <polyplan/registry/registry.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
+#include <polyplan/reactive/visibility_region.hpp>
+#include <polyplan/registry/registry.hpp>
 
 #include <gtest/gtest.h>
 
@@ -21,10 +21,16 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) { return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json"); }
+World shipped(const std::string& name) {
+  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
+}
 
-PlanReport<ExactPoint> tangent_bug(const CSpace& cspace, const Query& q, const std::string& range, bool record = false) {
-  return planners<TranslatingRobot>().find("tangent-bug")->make(cspace, {{"sensor-range", range}})->plan(q, QueryOptions{record});
+PlanReport<ExactPoint> tangent_bug(const CSpace& cspace, const Query& q, const std::string& range,
+                                   bool record = false) {
+  return planners<TranslatingRobot>()
+      .find("tangent-bug")
+      ->make(cspace, {{"sensor-range", range}})
+      ->plan(q, QueryOptions{record});
 }
 
 // The course's planning problem set (b): the robot meets the wall at (0, 0), the wall's point nearest the goal, so
@@ -42,13 +48,14 @@ TEST(TangentBug, FollowsTheEndlessWallUntilItsDistanceLimitWithDFollowedTwo) {
     EXPECT_EQ(report.facts.at(BugFacts::leaves), "");
     EXPECT_NEAR(report.facts.at(BugFacts::distance), 10000, 1e-6);
     // Up, with the wall on its right: the wall's ends tie, so no discontinuity says otherwise.
-    EXPECT_NE(report.why_not.find("at (0.000000, 9997.000000) following the boundary, d_followed 2"), std::string::npos) << report.why_not;
+    EXPECT_NE(report.why_not.find("at (0.000000, 9997.000000) following the boundary, d_followed 2"), std::string::npos)
+        << report.why_not;
   }
 }
 
-// The course's planning problem set (c): the wall [0, 1] × [−10⁴, 3]. Touch only: up the wall's left side, over its top and
-// down its right side until the distance to (2, 0) falls below d_followed = 2, at (1, √3); then
-// straight to the goal: 3 + 3 + 1 + (3 − √3) + 2.
+// The course's planning problem set (c): the wall [0, 1] × [−10⁴, 3]. Touch only: up the wall's left side, over its top
+// and down its right side until the distance to (2, 0) falls below d_followed = 2, at (1, √3); then straight to the
+// goal: 3 + 3 + 1 + (3 − √3) + 2.
 TEST(TangentBug, LeavesTheHalfWallAtOneRootThreeTouchingIt) {
   const World world = shipped("seed002_half_wall");
   const CSpace cspace(world);
@@ -153,13 +160,15 @@ TEST(TangentBug, ThePictureShowsTheMLineHitsLeavesAndTheSensedRegions) {
   const World trap = shipped("u_trap");
   const CSpace trap_space(trap);
   const std::string picture = draw_plan(trap_space, {tangent_bug(trap_space, trap.queries[0], "4", true)}).str();
-  for (const char* legend : {"m-line (start to goal)", "hit points (1)", "leave points (1)", "sensed (visibility within range) at the first stops"})
+  for (const char* legend : {"m-line (start to goal)", "hit points (1)", "leave points (1)",
+                             "sensed (visibility within range) at the first stops"})
     EXPECT_NE(picture.find(legend), std::string::npos) << legend;
   const World wall = shipped("seed002_endless_wall");
   const CSpace wall_space(wall);
   const std::string stopped = draw_plan(wall_space, {tangent_bug(wall_space, wall.queries[0], "0", true)}).str();
   EXPECT_NE(stopped.find("the walk, stopped short of the goal"), std::string::npos);
-  const auto bug2 = planners<TranslatingRobot>().find("bug2")->make(trap_space, {})->plan(trap.queries[0], QueryOptions{true});
+  const auto bug2 =
+      planners<TranslatingRobot>().find("bug2")->make(trap_space, {})->plan(trap.queries[0], QueryOptions{true});
   const std::string bug_picture = draw_plan(trap_space, {bug2}).str();
   for (const char* legend : {"m-line (start to goal)", "hit points (1)", "leave points (1)"})
     EXPECT_NE(bug_picture.find(legend), std::string::npos) << legend;

@@ -9,6 +9,7 @@
 // one within reach never is. The report must print (plan_json) and draw (draw_plan), its status
 // must agree with it, and a second planner built alike must give the same answer.
 #include <polyplan/arm/arm_collision.hpp>
+#include <polyplan/arm/arm_facts.hpp>
 #include <polyplan/arm/arm_grid_planner.hpp>
 #include <polyplan/arm/arm_motion.hpp>
 #include <polyplan/draw/arm_svg.hpp>
@@ -17,7 +18,6 @@
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/registry/registry.hpp>
-#include <polyplan/arm/arm_facts.hpp>
 #include "arm/arm_fixtures.hpp"
 #include "registry/registry_fixtures.hpp"
 
@@ -71,7 +71,8 @@ TEST_P(EveryArmPlannerOnEveryArm, KeepsThePlannerPromises) {
     }
     if (q.goal_point && !within_reach(problem.arm.links, q.goal_point->point)) {
       EXPECT_EQ(report.status, PlanStatus::no_path);
-      EXPECT_NE(report.why_not.find(" is out of reach: the arm reaches distances "), std::string::npos) << report.why_not;
+      EXPECT_NE(report.why_not.find(" is out of reach: the arm reaches distances "), std::string::npos)
+          << report.why_not;
     } else {
       EXPECT_NE(report.status, PlanStatus::no_path) << report.why_not;
     }
@@ -97,20 +98,23 @@ TEST_P(EveryArmPlannerOnEveryArm, KeepsThePlannerPromises) {
 INSTANTIATE_TEST_SUITE_P(ArmRegistry, EveryArmPlannerOnEveryArm,
                          ::testing::Combine(::testing::ValuesIn(test::registered_planners<PlanarArm>()),
                                             ::testing::ValuesIn(test::shipped("arms"))),
-                         [](const auto& info) { return test::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
+                         [](const auto& info) {
+                           return test::test_name(std::get<0>(info.param), std::get<1>(info.param));
+                         });
 
 TEST(ArmRegistry, GridIsRegisteredWithItsOptions) {
   const auto* grid = planners<PlanarArm>().find("grid");
   ASSERT_NE(grid, nullptr);
   std::vector<std::string> names;
   for (const OptionInfo& o : grid->options) names.push_back(o.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"resolution", "torus", "evaluation", "search", "weight", "coarse", "corridor", "exact-cells",
-                                               "widenings", "memory-mb"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"resolution", "torus", "evaluation", "search", "weight", "coarse",
+                                             "corridor", "exact-cells", "widenings", "memory-mb"}));
   EXPECT_EQ(grid->options[1].flag, true);
   ArmProblem p;
   p.arm.links = {1, 1};
   p.queries = {{"q", {0, 0}, {1, 1}}};
-  const auto interval = grid->make(p, {{"torus", "false"}, {"evaluation", "eager"}, {"resolution", "10"}})->plan(p.queries[0]);
+  const auto interval =
+      grid->make(p, {{"torus", "false"}, {"evaluation", "eager"}, {"resolution", "10"}})->plan(p.queries[0]);
   EXPECT_EQ(interval.facts.at(ArmGridFacts::grid_torus), false);
   EXPECT_EQ(interval.facts.at(ArmGridFacts::grid_evaluation), "eager");
   EXPECT_EQ(interval.facts.at(ArmGridFacts::cells_evaluated), 36 * 36);
@@ -118,7 +122,8 @@ TEST(ArmRegistry, GridIsRegisteredWithItsOptions) {
     grid->make(p, {{"resolution", "7"}});
     ADD_FAILURE() << "7 degrees do not divide 360";
   } catch (const InputError& e) {
-    EXPECT_EQ(std::string(e.what()), "planner grid: the grid resolution 7 degrees must divide 360 into at least 3 cells");
+    EXPECT_EQ(std::string(e.what()),
+              "planner grid: the grid resolution 7 degrees must divide 360 into at least 3 cells");
   }
 }
 

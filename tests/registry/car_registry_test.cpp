@@ -9,13 +9,13 @@
 #include "car/car_path_check.hpp"
 #include "registry/registry_fixtures.hpp"
 
+#include <polyplan/car/car_facts.hpp>
 #include <polyplan/car/car_planner.hpp>
 #include <polyplan/car/dubins.hpp>
 #include <polyplan/car/reeds_shepp.hpp>
 #include <polyplan/draw/car_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/car/car_facts.hpp>
 
 #include <gtest/gtest.h>
 
@@ -26,10 +26,8 @@ namespace {
 
 // What each shipped car world's start/goal must give: hybrid A* finds every path that exists.
 const std::map<std::string, PlanStatus> kHybridAStarAnswers = {
-    {"car_no_path", PlanStatus::no_path},
-    {"car_park", PlanStatus::solved},
-    {"car_parallel_parking", PlanStatus::solved},
-    {"car_slalom", PlanStatus::solved},
+    {"car_no_path", PlanStatus::no_path},         {"car_park", PlanStatus::solved},
+    {"car_parallel_parking", PlanStatus::solved}, {"car_slalom", PlanStatus::solved},
     {"car_u_turn", PlanStatus::solved},
 };
 
@@ -74,14 +72,17 @@ TEST_P(EveryCarPlannerOnEveryWorld, KeepsThePlannerPromises) {
     ASSERT_FALSE(report.path.empty());
     EXPECT_EQ(report.path.front().pose, start);
     const CarPose end = report.path.back().pose;
-    const double miss = std::max(std::hypot(end.x - goal.x, end.y - goal.y), r * std::abs(std::remainder(end.theta - goal.theta, 2 * pi)));
+    const double miss = std::max(std::hypot(end.x - goal.x, end.y - goal.y),
+                                 r * std::abs(std::remainder(end.theta - goal.theta, 2 * pi)));
     if (report.facts.contains(CarFacts::goal_miss)) EXPECT_LE(miss, report.facts.at(CarFacts::goal_miss) + 1e-12);
     else EXPECT_LE(miss, 1e-9 * (1 + std::abs(goal.x) + std::abs(goal.y) + r));
     if (auto why = test::sampled_car_overlap(world, report.path)) ADD_FAILURE() << *why;
     double length = 0;
     for (const CarState& s : report.path) length += s.arrival.length;
-    EXPECT_NEAR(report.length, length, 1e-12 * length) << "the length is the segments' (summed as the planner sums them)";
-    const double shortest = world.robot.car->reverse ? reeds_shepp_distance(start, end, r) : dubins_distance(start, end, r);
+    EXPECT_NEAR(report.length, length, 1e-12 * length)
+        << "the length is the segments' (summed as the planner sums them)";
+    const double shortest =
+        world.robot.car->reverse ? reeds_shepp_distance(start, end, r) : dubins_distance(start, end, r);
     EXPECT_GE(report.length, shortest * (1 - 1e-9));
     const nlohmann::json json = plan_json(report, q.name);
     ASSERT_EQ(json["segments"].size(), report.path.size() - 1);
@@ -103,7 +104,9 @@ TEST_P(EveryCarPlannerOnEveryWorld, KeepsThePlannerPromises) {
 INSTANTIATE_TEST_SUITE_P(Registry, EveryCarPlannerOnEveryWorld,
                          ::testing::Combine(::testing::ValuesIn(test::registered_planners<SteeredCar>()),
                                             ::testing::ValuesIn(test::shipped("worlds"))),
-                         [](const auto& info) { return test::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
+                         [](const auto& info) {
+                           return test::test_name(std::get<0>(info.param), std::get<1>(info.param));
+                         });
 
 TEST(CarRegistry, ListsTheCarPlanners) {
   EXPECT_EQ(planners<SteeredCar>().names(), "hybrid-astar, car-rrt, prm, lazyprm, rrt, rrtstar, rrtconnect");

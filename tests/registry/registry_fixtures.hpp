@@ -1,9 +1,9 @@
 #pragma once
 // What the conformance tests of the registries iterate over (the shipped data files of a folder
 // and the names a registry holds) and the promises every report keeps whatever its space.
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/registry/registry.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -35,7 +35,8 @@ std::vector<std::string> registered_planners() {
 // A test name from a planner's and a file's names: letters, digits and underscores only.
 inline std::string test_name(const std::string& planner, const std::string& file) {
   std::string name = planner + "_on_" + file;
-  std::replace_if(name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
+  std::replace_if(
+      name.begin(), name.end(), [](char c) { return !std::isalnum(static_cast<unsigned char>(c)); }, '_');
   return name;
 }
 

@@ -11,15 +11,15 @@
 #include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/io/world_reader.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
-#include <polyplan/grids/grid_facts.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/rotation/rotation_facts.hpp>
-#include "rotation/pose_motion_check.hpp"
 #include "registry/registry_fixtures.hpp"
+#include "rotation/pose_motion_check.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -67,7 +67,8 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
   const ShippedWorld& w = shipped(world_name);
   const PlannerEntry<TranslatingRobot>* entry = planners<TranslatingRobot>().find(planner_name);
   ASSERT_NE(entry, nullptr);
-  if (w.world.robot.car) GTEST_SKIP() << "the robot is a car: a question for planners<SteeredCar>() (car_registry_test.cpp)";
+  if (w.world.robot.car)
+    GTEST_SKIP() << "the robot is a car: a question for planners<SteeredCar>() (car_registry_test.cpp)";
   if (turns_the_robot(w.world)) GTEST_SKIP() << "the robot must turn: a question for planners<RotatingRobot>()";
   // Defaults, but sampling planners stop after 1 s where a passage is too narrow to sample
   // (corridor_wide's is 10^-9 wide): an answer either way, and a quick one.
@@ -75,7 +76,8 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
   bool seeded = false;
   for (const OptionInfo& o : entry->options) {
     if (o.name == "time") options.emplace_back("time", "1");
-    if (o.name == "iterations" && entry->anytime) options.emplace_back("iterations", "20000");  // repeatable, and ends soon
+    if (o.name == "iterations" && entry->anytime)
+      options.emplace_back("iterations", "20000");  // repeatable, and ends soon
     seeded |= o.name == "seed";
   }
   std::unique_ptr<Planner<TranslatingRobot>> planner, again;
@@ -136,7 +138,9 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
 INSTANTIATE_TEST_SUITE_P(Registry, EveryPlannerOnEveryWorld,
                          ::testing::Combine(::testing::ValuesIn(test::registered_planners<TranslatingRobot>()),
                                             ::testing::ValuesIn(test::shipped("worlds"))),
-                         [](const auto& info) { return test::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
+                         [](const auto& info) {
+                           return test::test_name(std::get<0>(info.param), std::get<1>(info.param));
+                         });
 
 // The conformance test of rotating-robot planners: every planner of planners<RotatingRobot>() on
 // every shipped world and query (30° apart, to keep it quick: the rotation worlds' own tests try
@@ -151,8 +155,10 @@ TEST_P(EveryRotatingPlannerOnEveryWorld, KeepsThePlannerPromises) {
   const World world = read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + world_name + ".json");
   const PlannerEntry<RotatingRobot>* entry = planners<RotatingRobot>().find(planner_name);
   ASSERT_NE(entry, nullptr);
-  if (world.robot.car) GTEST_SKIP() << "the robot is a car: a question for planners<SteeredCar>() (car_registry_test.cpp)";
-  const auto planner = entry->make(world, {{"rotation-step", "30"}}), again = entry->make(world, {{"rotation-step", "30"}});
+  if (world.robot.car)
+    GTEST_SKIP() << "the robot is a car: a question for planners<SteeredCar>() (car_registry_test.cpp)";
+  const auto planner = entry->make(world, {{"rotation-step", "30"}}),
+             again = entry->make(world, {{"rotation-step", "30"}});
   std::vector<PlanReport<Pose>> reports;
   test::SameAnswers same;
   for (const Query& q : world.queries) {
@@ -175,7 +181,7 @@ TEST_P(EveryRotatingPlannerOnEveryWorld, KeepsThePlannerPromises) {
     }
     const nlohmann::json json = plan_json(report, q.name);
     EXPECT_EQ(json["path"].size(), report.path.size());
-    for (const auto& entry : json["path"]) EXPECT_EQ(entry.size(), 3u);  // [x, y, theta]
+    for (const auto& entry : json["path"]) EXPECT_EQ(entry.size(), 3u);        // [x, y, theta]
     for (const auto& entry : json["path_exact"]) EXPECT_EQ(entry.size(), 4u);  // x, y, sin, cos
     for (const auto& [name, value] : report.facts.entries()) EXPECT_TRUE(json.contains(dotted(name))) << name;
     reports.push_back(report);
@@ -186,7 +192,9 @@ TEST_P(EveryRotatingPlannerOnEveryWorld, KeepsThePlannerPromises) {
 INSTANTIATE_TEST_SUITE_P(Registry, EveryRotatingPlannerOnEveryWorld,
                          ::testing::Combine(::testing::ValuesIn(test::registered_planners<RotatingRobot>()),
                                             ::testing::ValuesIn(test::shipped("worlds"))),
-                         [](const auto& info) { return test::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
+                         [](const auto& info) {
+                           return test::test_name(std::get<0>(info.param), std::get<1>(info.param));
+                         });
 
 TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
   const auto& registry = planners<TranslatingRobot>();
@@ -197,7 +205,10 @@ TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
     EXPECT_EQ(entry->description.find('\n'), std::string::npos) << "one line";
   }
   EXPECT_EQ(registry.find("teleport"), nullptr);
-  EXPECT_EQ(registry.names(), "visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, potential-field, navigation-function, bug1, bug2, tangent-bug, homotopy, tether, prm, lazyprm, rrt, rrtstar, rrtconnect");
+  EXPECT_EQ(registry.names(),
+            "visibility, visibility-full, raster, trapezoid, voronoi, gvd-grid, dstar-lite, lpastar, repeated-astar, "
+            "potential-field, navigation-function, bug1, bug2, tangent-bug, homotopy, tether, prm, lazyprm, rrt, "
+            "rrtstar, rrtconnect");
   EXPECT_EQ(planners<RotatingRobot>().names(), "rotation");
   const auto* raster = registry.find("raster");
   ASSERT_EQ(raster->options.size(), 4u);
@@ -221,21 +232,25 @@ TEST(Registry, OptionsAreSetByNameAndBadOnesNameThePlannerAndTheOption) {
   };
   EXPECT_EQ(message({{"resolution", "ten"}}), "planner raster: option resolution=ten: expected a whole number");
   EXPECT_EQ(message({{"resolution", "-3"}}), "planner raster: option resolution=-3: expected a whole number >= 0");
-  EXPECT_EQ(message({{"colour", "red"}}),
-            "planner raster: option colour=red: no such option (its options: resolution, connectivity, search, weight)");
+  EXPECT_EQ(
+      message({{"colour", "red"}}),
+      "planner raster: option colour=red: no such option (its options: resolution, connectivity, search, weight)");
   EXPECT_EQ(message({{"connectivity", "6"}}), "planner raster: option connectivity=6: expected one of 8|4");
   EXPECT_EQ(message({{"weight", "0.5"}}), "planner raster: option weight=0.5: expected a number in [1, inf)");
-  EXPECT_EQ(message({{"resolution", "0"}}), "planner raster: option resolution=0: expected a whole number in [1, 2048]");
+  EXPECT_EQ(message({{"resolution", "0"}}),
+            "planner raster: option resolution=0: expected a whole number in [1, 2048]");
 }
 
 TEST(Registry, TwoEntriesOfOneNameAreRefused) {
-  EXPECT_THROW((PlannerRegistry<TranslatingRobot>{"visibility", {visibility_planner_entry(VisibilityKind::reduced),
-                                                                 visibility_planner_entry(VisibilityKind::reduced)}}),
+  EXPECT_THROW((PlannerRegistry<TranslatingRobot>{"visibility",
+                                                  {visibility_planner_entry(VisibilityKind::reduced),
+                                                   visibility_planner_entry(VisibilityKind::reduced)}}),
                std::logic_error);
 }
 
 TEST(Registry, ADefaultNobodyRegisteredIsRefused) {
-  EXPECT_THROW((PlannerRegistry<TranslatingRobot>{"raster", {visibility_planner_entry(VisibilityKind::reduced)}}), std::logic_error);
+  EXPECT_THROW((PlannerRegistry<TranslatingRobot>{"raster", {visibility_planner_entry(VisibilityKind::reduced)}}),
+               std::logic_error);
 }
 
 }  // namespace

@@ -18,7 +18,8 @@ namespace {
 
 std::vector<ExactPoint> exact(const std::vector<IntegerPoint>& path) {
   std::vector<ExactPoint> points;
-  for (const IntegerPoint& p : path) points.push_back({Rational(static_cast<long>(p.x)), Rational(static_cast<long>(p.y))});
+  for (const IntegerPoint& p : path)
+    points.push_back({Rational(static_cast<long>(p.x)), Rational(static_cast<long>(p.y))});
   return points;
 }
 
@@ -40,8 +41,10 @@ TEST(EuclideanShortestPaths, ShippedMapsMatchTheReferenceOnEveryQuery) {
       ASSERT_EQ(answer.found, *reference[i] >= 0) << name << " query " << i << ": " << answer.why_not;
       if (answer.found) {
         EXPECT_NEAR(answer.length, *reference[i], 1e-9 * std::max(1.0, *reference[i])) << name << " query " << i;
-        const EuclideanPathAnswer labelled = through_labels.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
-        EXPECT_NEAR(labelled.length, *reference[i], 1e-9 * std::max(1.0, *reference[i])) << name << " query " << i << " (labels)";
+        const EuclideanPathAnswer labelled =
+            through_labels.query({q.start_x, q.start_y}, {q.goal_x, q.goal_y}, scratch);
+        EXPECT_NEAR(labelled.length, *reference[i], 1e-9 * std::max(1.0, *reference[i]))
+            << name << " query " << i << " (labels)";
       }
       ++compared;
     }
@@ -74,7 +77,8 @@ TEST(EuclideanShortestPaths, RandomGridsAgreeWithTheExactVisibilityGraph) {
       for (const EuclideanPathAnswer& answer :
            {from_cells.query(start, goal, a), from_arrangement.query(start, goal, b), labelled.query(start, goal, c),
             searching.query(start, goal, d)}) {
-        ASSERT_EQ(answer.found, expected.found) << "trial " << trial << " query " << k << ": " << answer.why_not << " / " << expected.why_not;
+        ASSERT_EQ(answer.found, expected.found)
+            << "trial " << trial << " query " << k << ": " << answer.why_not << " / " << expected.why_not;
         if (!answer.found) {
           EXPECT_FALSE(answer.why_not.empty());
           continue;
@@ -89,8 +93,8 @@ TEST(EuclideanShortestPaths, RandomGridsAgreeWithTheExactVisibilityGraph) {
     }
     for (int py = 1; py < map.height; ++py)  // interior grid points whose diagonal cells alone are blocked
       for (int px = 1; px < map.width; ++px) {
-        const bool nw = map.is_blocked(px - 1, py - 1), ne = map.is_blocked(px, py - 1), sw = map.is_blocked(px - 1, py),
-                   se = map.is_blocked(px, py);
+        const bool nw = map.is_blocked(px - 1, py - 1), ne = map.is_blocked(px, py - 1),
+                   sw = map.is_blocked(px - 1, py), se = map.is_blocked(px, py);
         pinch_points += nw == se && ne == sw && nw != ne;
       }
   }
@@ -143,7 +147,8 @@ TEST(EuclideanShortestPaths, ThreadsShareOnePreprocessingAndGetTheSameAnswers) {
 // A world of large integer coordinates has too many integer points to table each one's corners:
 // its queries walk instead, in little memory.
 TEST(EuclideanShortestPaths, LargeIntegerCoordinatesWalkInsteadOfTablingEveryPoint) {
-  const CSpace cspace(world_from(R"({"obstacles": [[[1000000, 1000000], [3000000, 1000000], [3000000, 3000000], [1000000, 3000000]]],
+  const CSpace cspace(
+      world_from(R"({"obstacles": [[[1000000, 1000000], [3000000, 1000000], [3000000, 3000000], [1000000, 3000000]]],
                                     "bounds": [0, 0, 4000000, 4000000]})"));
   const EuclideanShortestPaths paths(cspace);
   EXPECT_LT(paths.memory_bytes(), std::size_t{1} << 20);
@@ -155,7 +160,8 @@ TEST(EuclideanShortestPaths, LargeIntegerCoordinatesWalkInsteadOfTablingEveryPoi
 }
 
 TEST(EuclideanShortestPaths, AWorldWithFractionalCornersIsRefusedByName) {
-  const CSpace cspace(world_from(R"({"name": "thirds", "obstacles": [[[1, 1], [2, 1], [2, "4/3"]]], "bounds": [0, 0, 3, 3]})"));
+  const CSpace cspace(
+      world_from(R"({"name": "thirds", "obstacles": [[[1, 1], [2, 1], [2, "4/3"]]], "bounds": [0, 0, 3, 3]})"));
   try {
     EuclideanShortestPaths paths(cspace);
     FAIL() << "a corner at 4/3 was accepted";

@@ -2,10 +2,10 @@
 // shortest path against the exact visibility-graph optimum on random worlds, and the answers
 // around pinch points, blocked ends and worlds without bounds.
 #include <polyplan/geometry/path_check.hpp>
-#include <polyplan/roadmaps/trapezoid_planner.hpp>
-#include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/roadmaps/roadmap_facts.hpp>
+#include <polyplan/roadmaps/trapezoid_planner.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 #include "movingai_fixtures.hpp"
 #include "world_fixtures.hpp"
 
@@ -58,7 +58,8 @@ TEST(TrapezoidPlanner, ZigzagPathRunsThroughCentroidsAndWallMidpoints) {
   // Below or above the square; the centroid (5, 2) or (5, 8) lies on the straight run between the
   // two wall midpoints, so the path does not list it.
   const std::string y = report.path[2].y < 5 ? "2" : "8";
-  EXPECT_EQ(report.path, (std::vector<ExactPoint>{pt("1", "5"), pt("2", "5"), pt("4", y), pt("6", y), pt("8", "5"), pt("9", "5")}));
+  EXPECT_EQ(report.path,
+            (std::vector<ExactPoint>{pt("1", "5"), pt("2", "5"), pt("4", y), pt("6", y), pt("8", "5"), pt("9", "5")}));
   EXPECT_TRUE(check_path(c, report.path).valid);
 }
 
@@ -192,7 +193,8 @@ double shortest_zigzag(const TrapezoidPlanner& planner, const ExactPoint& start,
     next[u].push_back({v, distance(g[u].exact, g[v].exact)});
     next[v].push_back({u, distance(g[u].exact, g[v].exact)});
   }
-  for (std::size_t c : planner.decomposition().cells_at(start)) next[source].push_back({c, distance(start, g[c].exact)});
+  for (std::size_t c : planner.decomposition().cells_at(start))
+    next[source].push_back({c, distance(start, g[c].exact)});
   for (std::size_t c : planner.decomposition().cells_at(goal)) next[c].push_back({target, distance(g[c].exact, goal)});
   std::vector<double> best(corners + 2, INFINITY);
   std::vector<bool> done(corners + 2, false);
@@ -240,8 +242,14 @@ TEST(TrapezoidPlanner, TheZigzagIsTheShortestPathOnTheRoadmapFromStartsOnWallsAn
   EXPECT_GT(compared, 60);
 }
 
-TEST(TrapezoidPlannerOnMovingAi, ArenaAnswersEveryScenario) { test::expect_answers_to_the_scenarios<TrapezoidPlanner>("arena", 1, 150); }
-TEST(TrapezoidPlannerOnMovingAi, Den312dAnswersEveryScenario) { test::expect_answers_to_the_scenarios<TrapezoidPlanner>("den312d", 1, 300); }
-TEST(TrapezoidPlannerOnMovingAi, Lak303dAnswersASample) { test::expect_answers_to_the_scenarios<TrapezoidPlanner>("lak303d", 10, 100); }
+TEST(TrapezoidPlannerOnMovingAi, ArenaAnswersEveryScenario) {
+  test::expect_answers_to_the_scenarios<TrapezoidPlanner>("arena", 1, 150);
+}
+TEST(TrapezoidPlannerOnMovingAi, Den312dAnswersEveryScenario) {
+  test::expect_answers_to_the_scenarios<TrapezoidPlanner>("den312d", 1, 300);
+}
+TEST(TrapezoidPlannerOnMovingAi, Lak303dAnswersASample) {
+  test::expect_answers_to_the_scenarios<TrapezoidPlanner>("lak303d", 10, 100);
+}
 
 }  // namespace

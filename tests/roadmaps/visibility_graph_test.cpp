@@ -5,8 +5,8 @@
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/movingai_scenario.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include <polyplan/roadmaps/visibility_graph.hpp>
 #include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/roadmaps/visibility_graph.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -103,7 +103,8 @@ TEST(VisibilityGraph, MatchesBruteForceOnRandomWorlds) {
   std::mt19937 rng(7);
   int compared = 0;
   for (int trial = 0; trial < 12; ++trial) {
-    const std::string robot = trial % 2 ? "" : R"(, "robot": {"parts": [[[-0.2, -0.2], [0.2, -0.2], [0.2, 0.2], [-0.2, 0.2]]]})";
+    const std::string robot =
+        trial % 2 ? "" : R"(, "robot": {"parts": [[[-0.2, -0.2], [0.2, -0.2], [0.2, 0.2], [-0.2, 0.2]]]})";
     const std::string text = random_world(rng, 4 + trial % 5, robot);
     SCOPED_TRACE(text);
     const World world = world_from(text);
@@ -113,7 +114,8 @@ TEST(VisibilityGraph, MatchesBruteForceOnRandomWorlds) {
     for (int q = 0; q < 5; ++q) {
       const ExactPoint s{Rational(coordinate(rng), 10), Rational(coordinate(rng), 10)};
       const ExactPoint g{Rational(coordinate(rng), 10), Rational(coordinate(rng), 10)};
-      if (cspace.locate(s).kind == Location::Kind::blocked || cspace.locate(g).kind == Location::Kind::blocked) continue;
+      if (cspace.locate(s).kind == Location::Kind::blocked || cspace.locate(g).kind == Location::Kind::blocked)
+        continue;
       SCOPED_TRACE("trial " + std::to_string(trial) + " query " + std::to_string(q));
       Report plan;
       try {
@@ -180,9 +182,7 @@ TEST(VisibilityGraph, ARobotThatFitsNowhereHasNoPathNotACrash) {
   EXPECT_NE(report.why_not.find("not free"), std::string::npos) << report.why_not;
 }
 
-TEST(VisibilityGraph, PinchPointIsNotAPassage) {
-  EXPECT_FALSE(plan_all(shipped("touching_corners.json"))[0].found);
-}
+TEST(VisibilityGraph, PinchPointIsNotAPassage) { EXPECT_FALSE(plan_all(shipped("touching_corners.json"))[0].found); }
 
 TEST(VisibilityGraph, EnclosedGoalIsNotFound) {
   const auto plans = plan_all(shipped("office.json"));

@@ -4,8 +4,8 @@
 // what is left — on hand-made worlds, the shipped worlds and random ones.
 #include <polyplan/geometry/detail/cgal_types.hpp>
 #include <polyplan/geometry/path_check.hpp>
-#include <polyplan/roadmaps/voronoi_planner.hpp>
 #include <polyplan/roadmaps/roadmap_facts.hpp>
+#include <polyplan/roadmaps/voronoi_planner.hpp>
 #include "movingai_fixtures.hpp"
 #include "world_fixtures.hpp"
 
@@ -36,8 +36,9 @@ double exact_clearance(const CSpace& c, const ExactPoint& p) {
   detail::FT nearest = -1;
   auto consider = [&](const Ring& ring) {
     for (std::size_t i = 0; i < ring.size(); ++i) {
-      const detail::FT d = CGAL::squared_distance(detail::to_point(p), detail::Segment(detail::to_point(ring[i]),
-                                                                                        detail::to_point(ring[(i + 1) % ring.size()])));
+      const detail::FT d =
+          CGAL::squared_distance(detail::to_point(p), detail::Segment(detail::to_point(ring[i]),
+                                                                      detail::to_point(ring[(i + 1) % ring.size()])));
       if (nearest < 0 || d < nearest) nearest = d;
     }
   };
@@ -59,7 +60,8 @@ Traits::Polygon_2 rectangle(const detail::FT& x0, const detail::FT& y0, const de
 bool joined_at(const CSpace& c, const ExactPoint& start, const ExactPoint& goal, double r) {
   const detail::FT radius(r);
   OffsetSet grown;
-  for (const PolygonWithHoles& o : c.cobstacles()) grown.join(CGAL::approximated_offset_2(detail::to_polygon(o), radius, 1e-10));
+  for (const PolygonWithHoles& o : c.cobstacles())
+    grown.join(CGAL::approximated_offset_2(detail::to_polygon(o), radius, 1e-10));
   OffsetSet clear;
   if (const auto& box = c.reference_box()) {
     const detail::FT x0 = detail::to_ft(box->xmin) + radius, y0 = detail::to_ft(box->ymin) + radius;
@@ -73,7 +75,8 @@ bool joined_at(const CSpace& c, const ExactPoint& start, const ExactPoint& goal,
   }
   std::vector<Traits::Polygon_with_holes_2> parts;
   clear.polygons_with_holes(std::back_inserter(parts));
-  const Traits::Point_2 s(detail::to_ft(start.x), detail::to_ft(start.y)), g(detail::to_ft(goal.x), detail::to_ft(goal.y));
+  const Traits::Point_2 s(detail::to_ft(start.x), detail::to_ft(start.y)),
+      g(detail::to_ft(goal.x), detail::to_ft(goal.y));
   for (const auto& part : parts) {
     const OffsetSet one(part);
     if (one.oriented_side(s) != CGAL::ON_NEGATIVE_SIDE && one.oriented_side(g) != CGAL::ON_NEGATIVE_SIDE) return true;
@@ -216,8 +219,14 @@ TEST(VoronoiPlanner, OnRandomWorldsTheClearanceIsTheBestPossible) {
   EXPECT_GT(compared, 20);
 }
 
-TEST(VoronoiPlannerOnMovingAi, ArenaAnswersEveryScenario) { test::expect_answers_to_the_scenarios<VoronoiPlanner>("arena", 1, 150); }
-TEST(VoronoiPlannerOnMovingAi, Den312dAnswersEveryScenario) { test::expect_answers_to_the_scenarios<VoronoiPlanner>("den312d", 1, 300); }
-TEST(VoronoiPlannerOnMovingAi, Lak303dAnswersASample) { test::expect_answers_to_the_scenarios<VoronoiPlanner>("lak303d", 10, 100); }
+TEST(VoronoiPlannerOnMovingAi, ArenaAnswersEveryScenario) {
+  test::expect_answers_to_the_scenarios<VoronoiPlanner>("arena", 1, 150);
+}
+TEST(VoronoiPlannerOnMovingAi, Den312dAnswersEveryScenario) {
+  test::expect_answers_to_the_scenarios<VoronoiPlanner>("den312d", 1, 300);
+}
+TEST(VoronoiPlannerOnMovingAi, Lak303dAnswersASample) {
+  test::expect_answers_to_the_scenarios<VoronoiPlanner>("lak303d", 10, 100);
+}
 
 }  // namespace

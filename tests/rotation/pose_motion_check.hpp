@@ -283,7 +283,8 @@ inline std::optional<std::string> sampled_overlap(const World& world, const std:
   const SampledWorld sampled(world, path);
   if (translation_step <= 0) translation_step = sampled.diagonal / 2000;
   if (path.size() == 1)
-    if (auto hit = overlap_at(sampled, {to_double(path[0].position.x), to_double(path[0].position.y), degrees_of(path[0].rotation)}))
+    if (auto hit = overlap_at(
+            sampled, {to_double(path[0].position.x), to_double(path[0].position.y), degrees_of(path[0].rotation)}))
       return "pose 0 " + to_string(path[0]) + ": " + *hit;
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
     for (const Sample& s : samples(path[i], path[i + 1], degrees_step, translation_step))

@@ -1,11 +1,11 @@
 // The sampled re-check of pose paths (pose_motion_check.hpp) must be able to fail: it reports a
 // turn and a translation that hit an obstacle, a pose outside the bounds and a step that both moves
-// and turns, measures non-convex robots and obstacles with holes, and accepts contact. Then the shipped rotation worlds (data/worlds/rotation_*.json),
-// independently of the rotation planner: a hand-made path with the turn each world needs passes,
-// and the motions that each world is built to forbid are reported.
+// and turns, measures non-convex robots and obstacles with holes, and accepts contact. Then the shipped rotation worlds
+// (data/worlds/rotation_*.json), independently of the rotation planner: a hand-made path with the turn each world needs
+// passes, and the motions that each world is built to forbid are reported.
+#include "rotation/pose_motion_check.hpp"
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/io/world_reader.hpp>
-#include "rotation/pose_motion_check.hpp"
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -22,9 +22,13 @@ using polyplan::test::world_from;
 
 namespace {
 
-Pose pose(const std::string& x, const std::string& y, double degrees) { return {pt(x, y), exact_rotation(degrees), degrees}; }
+Pose pose(const std::string& x, const std::string& y, double degrees) {
+  return {pt(x, y), exact_rotation(degrees), degrees};
+}
 
-Pose start_of(const Query& q) { return {q.start, exact_rotation(q.start_theta.value_or(0)), q.start_theta.value_or(0)}; }
+Pose start_of(const Query& q) {
+  return {q.start, exact_rotation(q.start_theta.value_or(0)), q.start_theta.value_or(0)};
+}
 Pose goal_of(const Query& q) { return {q.goal, exact_rotation(q.goal_theta.value_or(0)), q.goal_theta.value_or(0)}; }
 
 // A rod 10 x 1 centred on its reference point, in a corridor 2 wide (y 0..2) between two walls.
@@ -72,7 +76,8 @@ TEST(PoseMotionCheck, AcceptsContact) {
   // Sliding along the block's lower edge and along the box's walls, and turning away from the
   // block's corner that the square's corner touches.
   EXPECT_EQ(sampled_overlap(world, {pose("1", "3.5", 0), pose("9", "3.5", 0)}), std::nullopt);
-  EXPECT_EQ(sampled_overlap(world, {pose("0.5", "0.5", 0), pose("9.5", "0.5", 0), pose("9.5", "9.5", 0)}), std::nullopt);
+  EXPECT_EQ(sampled_overlap(world, {pose("0.5", "0.5", 0), pose("9.5", "0.5", 0), pose("9.5", "9.5", 0)}),
+            std::nullopt);
   EXPECT_EQ(sampled_overlap(world, {pose("3.5", "3.5", 0), pose("3.5", "3.5", 90)}), std::nullopt);
   // In a corridor exactly 1 wide the square slides but cannot turn: the sampling sees contact only
   // (whether the zero-width corridor may be used is the exact check's question, not this one's).
@@ -123,7 +128,8 @@ TEST(PoseMotionCheck, MeasuresNonConvexRobotsAndHoles) {
 }
 
 TEST(PoseMotionCheck, PointRobotTouchesButDoesNotEnter) {
-  const World world = world_from(R"({"obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]], "start": [0, 4], "goal": [9, 4]})");
+  const World world =
+      world_from(R"({"obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]], "start": [0, 4], "goal": [9, 4]})");
   EXPECT_EQ(sampled_overlap(world, {pose("0", "4", 0), pose("9", "4", 0)}), std::nullopt);
   EXPECT_TRUE(sampled_overlap(world, {pose("0", "5", 0), pose("9", "5", 0)}));
 }
@@ -141,9 +147,14 @@ TEST(RotationWorlds, Seed004FitsThroughTheSlotOnlyTurned) {
   ASSERT_EQ(start_of(q).degrees, 0);
   ASSERT_EQ(goal_of(q).degrees, 0);
   // Below the slot, on its axis; twice (8, 14) further on, above it.
-  const std::vector<Pose> path = {start_of(q),          pose("10", "36.5", 0), pose("45.4", "36.5", 0),
-                                  pose("45.4", "36.5", 60), pose("61.4", "64.5", 60), pose("61.4", "64.5", 0),
-                                  pose("90", "64.5", 0),    goal_of(q)};
+  const std::vector<Pose> path = {start_of(q),
+                                  pose("10", "36.5", 0),
+                                  pose("45.4", "36.5", 0),
+                                  pose("45.4", "36.5", 60),
+                                  pose("61.4", "64.5", 60),
+                                  pose("61.4", "64.5", 0),
+                                  pose("90", "64.5", 0),
+                                  goal_of(q)};
   EXPECT_EQ(sampled_overlap(world, path), std::nullopt);
   // Not at 0 degrees, nor at 50 or 70 (over 8.5 across).
   for (double degrees : {0.0, 50.0, 70.0})

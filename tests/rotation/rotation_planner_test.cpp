@@ -7,8 +7,8 @@
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
-#include <polyplan/rotation/rotation_planner.hpp>
 #include <polyplan/rotation/rotation_facts.hpp>
+#include <polyplan/rotation/rotation_planner.hpp>
 #include "rotation/pose_motion_check.hpp"
 
 #include <gtest/gtest.h>
@@ -39,14 +39,17 @@ void expect_certified(const World& world, const Query& query, const PlanReport<P
   EXPECT_TRUE(report.certificate.certified);
   EXPECT_EQ(report.path.front().position, query.start);
   EXPECT_EQ(report.path.back().position, query.goal);
-  EXPECT_LE(std::abs(std::remainder(degrees_of(report.path.front().rotation) - query.start_theta.value_or(0), 360)), 1e-8);
-  EXPECT_LE(std::abs(std::remainder(degrees_of(report.path.back().rotation) - query.goal_theta.value_or(0), 360)), 1e-8);
+  EXPECT_LE(std::abs(std::remainder(degrees_of(report.path.front().rotation) - query.start_theta.value_or(0), 360)),
+            1e-8);
+  EXPECT_LE(std::abs(std::remainder(degrees_of(report.path.back().rotation) - query.goal_theta.value_or(0), 360)),
+            1e-8);
   if (auto why = test::check_motions_are_single(report.path)) ADD_FAILURE() << *why;
   // The printed angles follow the motion: consecutive ones differ by the turn, the short way.
   EXPECT_EQ(report.path.front().degrees, query.start_theta.value_or(0));
   for (std::size_t i = 1; i < report.path.size(); ++i)
     EXPECT_NEAR(report.path[i].degrees - report.path[i - 1].degrees,
-                turn_degrees(report.path[i - 1].rotation, report.path[i].rotation), 1e-6) << "motion " << i;
+                turn_degrees(report.path[i - 1].rotation, report.path[i].rotation), 1e-6)
+        << "motion " << i;
 
   std::map<std::pair<Rational, Rational>, std::unique_ptr<CSpace>> cspaces;  // by (sin, cos)
   std::vector<World> worlds;
@@ -99,7 +102,8 @@ TEST(RotationPlanner, Seed004NeedsATurnAndGetsACertifiedOne) {
   EXPECT_GT(report.facts.at(RotationFacts::rotation), 20);
   EXPECT_GT(report.facts.at(RotationFacts::turn_layers_used), 0);
   EXPECT_LE(report.facts.at(RotationFacts::layers_max_error_radians), rotation_tolerance_radians);
-  EXPECT_EQ(report.facts.at(RotationFacts::layers_actual).find("0° is 0°"), 0u) << report.facts.at(RotationFacts::layers_actual);
+  EXPECT_EQ(report.facts.at(RotationFacts::layers_actual).find("0° is 0°"), 0u)
+      << report.facts.at(RotationFacts::layers_actual);
 }
 
 TEST(RotationPlanner, ThePianoTurnsInTheCorner) {
@@ -145,9 +149,12 @@ TEST(RotationPlanner, RefusesTheTurnThatSampledLayersWouldAllow) {
   world.bounds = Bounds{Rational(-6), Rational(-6), Rational(6), Rational(6)};
   const double c = 4.9 * std::cos(M_PI / 8), s = 4.9 * std::sin(M_PI / 8);
   const Rational x(static_cast<long>(std::round(c * 1000)), 1000), y(static_cast<long>(std::round(s * 1000)), 1000);
-  world.obstacles.push_back({{{x, y}, {x + Rational(1, 5), y}, {x + Rational(1, 5), y + Rational(1, 5)}, {x, y + Rational(1, 5)}}, {}});
+  world.obstacles.push_back(
+      {{{x, y}, {x + Rational(1, 5), y}, {x + Rational(1, 5), y + Rational(1, 5)}, {x, y + Rational(1, 5)}}, {}});
   world.obstacle_names.push_back("obstacles[0]");
-  world.robot.parts.push_back({{Rational(-5), Rational(-1, 20)}, {Rational(5), Rational(-1, 20)}, {Rational(5), Rational(1, 20)},
+  world.robot.parts.push_back({{Rational(-5), Rational(-1, 20)},
+                               {Rational(5), Rational(-1, 20)},
+                               {Rational(5), Rational(1, 20)},
                                {Rational(-5), Rational(1, 20)}});
   RotationOptions options = every(45);
   const RotationLayers layers(world, OrientationSet(options.orientations));
@@ -191,7 +198,9 @@ TEST(RotationPlanner, StartsBetweenLayersWithACertifiedTurnOntoTheNearest) {
 TEST(RotationPlanner, TurnsTheShortWayAcrossZeroAndSaysSoInItsAngles) {
   World world;
   world.bounds = Bounds{Rational(0), Rational(0), Rational(20), Rational(20)};
-  world.robot.parts.push_back({{Rational(-3), Rational(-1, 2)}, {Rational(3), Rational(-1, 2)}, {Rational(3), Rational(1, 2)},
+  world.robot.parts.push_back({{Rational(-3), Rational(-1, 2)},
+                               {Rational(3), Rational(-1, 2)},
+                               {Rational(3), Rational(1, 2)},
                                {Rational(-3), Rational(1, 2)}});
   world.queries.push_back({{Rational(10), Rational(10)}, {Rational(10), Rational(10)}, "start/goal", 350.0, 10.0});
   const auto report = RotationPlanner(world, every(5)).plan(world.queries.front());
@@ -219,7 +228,9 @@ TEST(RotationPlanner, TurningCostsTheWeightPerRadian) {
   const auto dear_turns = RotationPlanner(world, options).plan(world.queries.front());
   ASSERT_TRUE(free_turns.found && dear_turns.found);
   EXPECT_NEAR(free_turns.length, free_turns.facts.at(RotationFacts::translation_length), 1e-9);
-  EXPECT_NEAR(dear_turns.length, dear_turns.facts.at(RotationFacts::translation_length) + 10 * dear_turns.facts.at(RotationFacts::rotation) * M_PI / 180,
+  EXPECT_NEAR(dear_turns.length,
+              dear_turns.facts.at(RotationFacts::translation_length) +
+                  10 * dear_turns.facts.at(RotationFacts::rotation) * M_PI / 180,
               1e-9);
   EXPECT_EQ(RotationPlanner(world, every(5)).rotation_weight(), std::hypot(5.0, 0.5));  // the rod's radius
 }
@@ -264,7 +275,8 @@ TEST(RotationRegistry, OptionsReachThePlannerAndBadOnesAreNamed) {
   const World world = shipped_world("rotation_piano");
   const auto* entry = planners<RotatingRobot>().find("rotation");
   ASSERT_NE(entry, nullptr);
-  const auto report = entry->make(world, {{"rotation-step", "10"}, {"rotation-weight", "0"}})->plan(world.queries.front());
+  const auto report =
+      entry->make(world, {{"rotation-step", "10"}, {"rotation-weight", "0"}})->plan(world.queries.front());
   EXPECT_EQ(report.facts.at(RotationFacts::layers_count), 36);
   EXPECT_EQ(report.facts.at(RotationFacts::rotation_weight), 0);
   const auto message = [&](const OptionValues& values) {
@@ -277,8 +289,10 @@ TEST(RotationRegistry, OptionsReachThePlannerAndBadOnesAreNamed) {
   };
   EXPECT_EQ(message({{"rotation-step", "7"}}),
             "planner rotation: rotation-step 7° does not divide the range [0°, 360°] (51.42857142857143 steps)");
-  EXPECT_EQ(message({{"rotation-step", "x"}}), "planner rotation: option rotation-step=x: expected a number of degrees > 0");
-  EXPECT_EQ(message({{"rotation-weight", "-1"}}), "planner rotation: option rotation-weight=-1: expected a number >= 0 or radius");
+  EXPECT_EQ(message({{"rotation-step", "x"}}),
+            "planner rotation: option rotation-step=x: expected a number of degrees > 0");
+  EXPECT_EQ(message({{"rotation-weight", "-1"}}),
+            "planner rotation: option rotation-weight=-1: expected a number >= 0 or radius");
 }
 
 }  // namespace

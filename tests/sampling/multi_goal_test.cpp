@@ -4,6 +4,7 @@
 // goal.reached, present only where there are several goals; the goal tree of several roots.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/sampling/lazy_prm_planner.hpp>
 #include <polyplan/sampling/polygon_sampling_space.hpp>
@@ -11,7 +12,6 @@
 #include <polyplan/sampling/rrt_connect_planner.hpp>
 #include <polyplan/sampling/rrt_planner.hpp>
 #include <polyplan/sampling/rrt_star_planner.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -39,9 +39,14 @@ class GoalSetSpace final : public SamplingSpace<TranslatingRobot> {
   std::size_t index_dimension() const override { return space_->index_dimension(); }
   bool distance_is_metric() const override { return space_->distance_is_metric(); }
   bool symmetric() const override { return space_->symmetric(); }
-  double distance(std::span<const double> a, std::span<const double> b) const override { return space_->distance(a, b); }
-  double distance_bound(std::span<const double> a, std::span<const double> b) const override { return space_->distance_bound(a, b); }
-  void interpolate(std::span<const double> a, std::span<const double> b, double t, std::span<double> out) const override {
+  double distance(std::span<const double> a, std::span<const double> b) const override {
+    return space_->distance(a, b);
+  }
+  double distance_bound(std::span<const double> a, std::span<const double> b) const override {
+    return space_->distance_bound(a, b);
+  }
+  void interpolate(std::span<const double> a, std::span<const double> b, double t,
+                   std::span<double> out) const override {
     space_->interpolate(a, b, t, out);
   }
   double extent() const override { return space_->extent(); }
@@ -72,8 +77,8 @@ const std::array<std::pair<const char*, EntryOf>, 5> sampling_entries{{
 }};
 
 // The planner of `entry` on `cspace`, planning to `goals` whatever the query's goal.
-std::unique_ptr<Planner<TranslatingRobot>> planner_to(EntryOf entry, const CSpace& cspace, std::vector<ExactPoint> goals,
-                                                      const OptionValues& options) {
+std::unique_ptr<Planner<TranslatingRobot>> planner_to(EntryOf entry, const CSpace& cspace,
+                                                      std::vector<ExactPoint> goals, const OptionValues& options) {
   return entry([goals](const CSpace& c) { return std::make_unique<GoalSetSpace>(polygon_sampling_space(c), goals); })
       .make(cspace, options);
 }
@@ -180,8 +185,8 @@ TEST_F(MultiGoal, ASingleGoalReportsNeitherFact) {
 TEST_F(MultiGoal, AGoalSetOutOfReachEndsAtTheLimitCountingItsCandidates) {
   for (const auto& [name, entry] : sampling_entries) {
     SCOPED_TRACE(name);
-    const auto report =
-        planner_to(entry, cspace, {walled_in, test::pt("29/4", "31/4")}, {{"iterations", "300"}})->plan(world.queries[0]);
+    const auto report = planner_to(entry, cspace, {walled_in, test::pt("29/4", "31/4")}, {{"iterations", "300"}})
+                            ->plan(world.queries[0]);
     EXPECT_FALSE(report.found);
     EXPECT_EQ(report.facts.at(QueryFacts::stopped_by), "iteration limit");
     EXPECT_EQ(report.facts.at(GoalFacts::candidates), 2);

@@ -27,12 +27,9 @@ using Point = std::vector<double>;
 double torus_coordinate(SamplingRandom& random) {
   const double u = uniform01(random);
   switch (random() % 3) {
-    case 0:
-      return 0.05 * u;
-    case 1:
-      return normalize_angle(-0.05 * u);
-    default:
-      return two_pi * u;
+    case 0: return 0.05 * u;
+    case 1: return normalize_angle(-0.05 * u);
+    default: return two_pi * u;
   }
 }
 
@@ -90,8 +87,7 @@ void expect_brute_force(const NearestNeighbours& nn, SamplingMetric metric, cons
   for (const std::size_t k : {1, 5, 20}) {
     nn.nearest(query, k, out);
     const auto kth = sorted.begin() + static_cast<std::ptrdiff_t>(std::min(k, sorted.size()));
-    expect_distances(out, distance, std::vector<double>(sorted.begin(), kth),
-                     "k = " + std::to_string(k));
+    expect_distances(out, distance, std::vector<double>(sorted.begin(), kth), "k = " + std::to_string(k));
   }
   const auto at_most_last = [&](std::size_t rank) { return sorted[std::min(rank, sorted.size() - 1)]; };
   for (const double radius : {at_most_last(30), at_most_last(200) * uniform01(random)}) {
@@ -135,10 +131,14 @@ TEST(NearestNeighbours, BothRegimesMatchBruteForce) {
   // 4, 6) and in 1, 5 and 8 (where the scan's distance is not unrolled). The torus points crowd
   // the seam.
   const std::vector<std::size_t> checkpoints{1, 2, 15, 120, 249, 250, 251, 600, 1999, 2000, 2001, 4100, 8500};
-  for (const auto& [metric, dimension] : {std::pair{SamplingMetric::euclidean, 2}, {SamplingMetric::euclidean, 5},
-                                          {SamplingMetric::torus, 1}, {SamplingMetric::torus, 2},
-                                          {SamplingMetric::torus, 3}, {SamplingMetric::torus, 4},
-                                          {SamplingMetric::torus, 6}, {SamplingMetric::torus, 8}}) {
+  for (const auto& [metric, dimension] : {std::pair{SamplingMetric::euclidean, 2},
+                                          {SamplingMetric::euclidean, 5},
+                                          {SamplingMetric::torus, 1},
+                                          {SamplingMetric::torus, 2},
+                                          {SamplingMetric::torus, 3},
+                                          {SamplingMetric::torus, 4},
+                                          {SamplingMetric::torus, 6},
+                                          {SamplingMetric::torus, 8}}) {
     SamplingRandom random(8 + dimension);
     const std::vector<Point> points = random_points(metric, dimension, checkpoints.back(), random);
     NearestNeighbours nn(dimension, metric);

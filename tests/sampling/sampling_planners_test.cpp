@@ -6,11 +6,11 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/io/world_reader.hpp>
+#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/visibility_graph.hpp>
-#include <polyplan/sampling/sampling_planner.hpp>
-#include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
+#include <polyplan/sampling/sampling_planner.hpp>
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -72,7 +72,8 @@ TEST_P(SamplingPlannerOnWorld, ThreeSeedsGiveExactlyCheckedPathsAndOneSeedOnePat
       EXPECT_GE(report.length, best.length * (1 - 1e-12));
       EXPECT_LE(report.length, report.facts.at(SamplingFacts::raw_length) * (1 + 1e-12));  // shortcuts never lengthen
       EXPECT_GT(report.facts.at(SamplingFacts::motions_checked), 0);
-      EXPECT_EQ(report.facts.at(QueryFacts::stopped_by), planner == "rrtstar" ? "iteration limit" : "solution");  // RRT* is anytime
+      EXPECT_EQ(report.facts.at(QueryFacts::stopped_by),
+                planner == "rrtstar" ? "iteration limit" : "solution");  // RRT* is anytime
       EXPECT_GE(report.facts.at(SamplingFacts::first_solution_seconds), 0);
       // The same seed, a planner of its own, the same first query: the same path.
       if (i == 0) {  // braces: EXPECT_EQ is an if-else of its own
@@ -83,8 +84,10 @@ TEST_P(SamplingPlannerOnWorld, ThreeSeedsGiveExactlyCheckedPathsAndOneSeedOnePat
 }
 
 INSTANTIATE_TEST_SUITE_P(SamplingPlanners, SamplingPlannerOnWorld,
-                         ::testing::Combine(::testing::ValuesIn(std::vector<std::string>(sampling_planners.begin(), sampling_planners.end())),
-                                            ::testing::ValuesIn(std::vector<std::string>{"maze", "office", "seed004", "sphere_world", "corridor_exact"})),
+                         ::testing::Combine(::testing::ValuesIn(std::vector<std::string>(sampling_planners.begin(),
+                                                                                         sampling_planners.end())),
+                                            ::testing::ValuesIn(std::vector<std::string>{
+                                                "maze", "office", "seed004", "sphere_world", "corridor_exact"})),
                          [](const auto& info) { return std::get<0>(info.param) + "_on_" + std::get<1>(info.param); });
 
 TEST(SamplingPlanners, DifferentSeedsSampleDifferently) {
@@ -107,7 +110,8 @@ TEST(SamplingPlanners, EachQueryDrawsItsOwnRandomStream) {
     SCOPED_TRACE(name);
     const OptionValues options{{"shortcut", "false"}, {"time", "20"}};
     auto after_one = make(name, cspace, options), after_other = make(name, cspace, options);
-    ASSERT_NE(after_one->plan(world.queries[0]).facts.at(SamplingFacts::samples), after_other->plan(world.queries[2]).facts.at(SamplingFacts::samples));
+    ASSERT_NE(after_one->plan(world.queries[0]).facts.at(SamplingFacts::samples),
+              after_other->plan(world.queries[2]).facts.at(SamplingFacts::samples));
     const auto second = after_one->plan(world.queries[1]), second_too = after_other->plan(world.queries[1]);
     ASSERT_TRUE(second.found);
     EXPECT_EQ(second.path, second_too.path);
@@ -160,7 +164,8 @@ TEST(SamplingPlanners, RrtStarImprovesAsItRuns) {
 TEST(SamplingPlanners, ReportsItsImprovementsEndingAtTheReturnedLength) {
   const World world = shipped_world("office");
   const CSpace cspace(world);
-  const std::vector<std::pair<std::string, OptionValues>> runs{{"rrt", {}}, {"rrtstar", {{"iterations", "3000"}, {"k", "3"}}}};
+  const std::vector<std::pair<std::string, OptionValues>> runs{{"rrt", {}},
+                                                               {"rrtstar", {{"iterations", "3000"}, {"k", "3"}}}};
   for (const auto& [name, options] : runs) {
     const auto report = make(name, cspace, options)->plan(world.queries[0]);
     ASSERT_TRUE(report.found) << name;
@@ -209,7 +214,8 @@ TEST(SamplingPlanners, AStartInAnObstacleIsAnAnswerNamingIt) {
 }
 
 TEST(SamplingPlanners, StartAtTheGoalIsATwoConfigurationPath) {
-  const World world = test::world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [], "start": ["1/3", 2], "goal": ["1/3", 2]})");
+  const World world =
+      test::world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": [], "start": ["1/3", 2], "goal": ["1/3", 2]})");
   const CSpace cspace(world);
   for (const char* name : sampling_planners) {
     const auto report = make(name, cspace, {})->plan(world.queries[0]);
@@ -259,7 +265,8 @@ TEST(SamplingPlanners, TheirOptionsAreListedAndBadValuesNamed) {
   EXPECT_EQ(error("rrt", {{"extend", "e3"}}), "planner rrt: option extend=e3: expected one of e1|e2");
   EXPECT_EQ(error("rrtconnect", {{"step", "-1"}}), "planner rrtconnect: option step=-1: expected a number in [0, inf)");
   EXPECT_EQ(error("prm", {{"time", "0"}}), "planner prm: option time=0: expected a number in (0, inf)");
-  EXPECT_EQ(error("lazyprm", {{"iterations", "0"}}), "planner lazyprm: option iterations=0: expected a whole number in [1, inf)");
+  EXPECT_EQ(error("lazyprm", {{"iterations", "0"}}),
+            "planner lazyprm: option iterations=0: expected a whole number in [1, inf)");
   EXPECT_EQ(error("rrtstar", {{"rewire", "all"}}), "planner rrtstar: option rewire=all: expected one of k|radius");
   EXPECT_EQ(error("rrt", {{"seed", "-1"}}), "planner rrt: option seed=-1: expected a whole number >= 0");
 }
@@ -274,7 +281,8 @@ TEST(SamplingPlanners, ExtensionE2StepsAtMostTheStepAndE1GoesToTheSample) {
   ASSERT_TRUE(e2.found && e2.graph);
   for (const auto& [u, v] : e2.graph->edges)
     EXPECT_LE(euclidean_length({e2.graph->vertices[u], e2.graph->vertices[v]}), 0.5 * (1 + 1e-12));
-  for (std::size_t i = 0; i + 1 < e2.path.size(); ++i) EXPECT_LE(euclidean_length({e2.path[i], e2.path[i + 1]}), 0.5 * (1 + 1e-12));
+  for (std::size_t i = 0; i + 1 < e2.path.size(); ++i)
+    EXPECT_LE(euclidean_length({e2.path[i], e2.path[i + 1]}), 0.5 * (1 + 1e-12));
   const auto e1 = make("rrt", cspace, {{"extend", "e1"}, {"shortcut", "false"}})->plan(q, QueryOptions{true});
   ASSERT_TRUE(e1.found) << e1.why_not;
   EXPECT_EQ(e1.graph->kind, "tree");
@@ -299,7 +307,8 @@ TEST(SamplingPlanners, PrmSearchesBothWaysForTheSameCost) {
   const World world = shipped_world("maze");
   const CSpace cspace(world);
   const auto one_way = make("prm", cspace, {{"search", "dijkstra"}, {"shortcut", "false"}})->plan(world.queries[0]);
-  const auto both_ways = make("prm", cspace, {{"bidirectional", "true"}, {"shortcut", "false"}})->plan(world.queries[0]);
+  const auto both_ways =
+      make("prm", cspace, {{"bidirectional", "true"}, {"shortcut", "false"}})->plan(world.queries[0]);
   ASSERT_TRUE(one_way.found && both_ways.found);
   EXPECT_NEAR(both_ways.length, one_way.length, 1e-9 * one_way.length);
   EXPECT_EQ(both_ways.facts.at(SearchFacts::algorithm), "bidirectional dijkstra");

@@ -62,7 +62,9 @@ class Moves {
   }
 
  private:
-  bool free(long x, long y) const { return x >= 0 && y >= 0 && x < columns_ && y < rows_ && !(*blocked_)[x + y * columns_]; }
+  bool free(long x, long y) const {
+    return x >= 0 && y >= 0 && x < columns_ && y < rows_ && !(*blocked_)[x + y * columns_];
+  }
   long columns_, rows_;
   const std::vector<std::uint8_t>* blocked_;
 };
@@ -73,8 +75,8 @@ std::string cell_text(const Brushfire& b, std::size_t c) {
 
 // Whether any two GVD cells that moves between cells of `reference` join, moves between GVD cells
 // join too; `what` names the reference in the failure.
-::testing::AssertionResult gvd_joins_what(const std::vector<std::uint8_t>& reference, const char* what, const Brushfire& b,
-                                          const std::vector<std::uint8_t>& blocked) {
+::testing::AssertionResult gvd_joins_what(const std::vector<std::uint8_t>& reference, const char* what,
+                                          const Brushfire& b, const std::vector<std::uint8_t>& blocked) {
   const Moves moves(b.columns, b.rows, blocked);
   std::vector<std::uint8_t> seen(blocked.size(), 0);
   for (std::size_t c = 0; c < blocked.size(); ++c) {
@@ -84,8 +86,8 @@ std::string cell_text(const Brushfire& b, std::size_t c) {
       if (!b.gvd[other] || !joined[other]) continue;
       seen[other] = 1;
       if (!on_gvd[other])
-        return ::testing::AssertionFailure() << "GVD cells " << cell_text(b, c) << " and " << cell_text(b, other) << " share " << what
-                                             << " but not a GVD piece";
+        return ::testing::AssertionFailure() << "GVD cells " << cell_text(b, c) << " and " << cell_text(b, other)
+                                             << " share " << what << " but not a GVD piece";
     }
   }
   return ::testing::AssertionSuccess();
@@ -95,7 +97,8 @@ std::string cell_text(const Brushfire& b, std::size_t c) {
 // one piece under the moves (the search's graph), and the climb reaches them from every cell — a
 // cell off the GVD has a GVD neighbour or a neighbour of larger distance, one move away, so every
 // steepest ascent ends on the GVD of the cell's own component whatever its tie-breaking.
-::testing::AssertionResult gvd_connected_and_climbed_to(std::size_t columns, std::size_t rows, const std::vector<std::uint8_t>& blocked) {
+::testing::AssertionResult gvd_connected_and_climbed_to(std::size_t columns, std::size_t rows,
+                                                        const std::vector<std::uint8_t>& blocked) {
   const Brushfire b = brushfire(columns, rows, blocked);
   const Moves moves(columns, rows, blocked);
   for (std::size_t c = 0; c < blocked.size(); ++c) {
@@ -145,11 +148,7 @@ TEST(Brushfire, HandLabelledGridWithOneObstacle) {
   // 7 x 5, one obstacle of two cells; the outside is obstacle 0, the block obstacle 1. Distances
   // are chessboard steps; column 5 is 2 from both, and the tie goes to the lower id (0).
   const std::vector<std::string> rows = {
-      ".......",
-      ".......",
-      "..@@...",
-      ".......",
-      ".......",
+      ".......", ".......", "..@@...", ".......", ".......",
   };
   const Brushfire b = brushfire(7, 5, blocked_of(rows));
   const std::vector<std::uint32_t> distance = {
@@ -211,15 +210,11 @@ TEST(Brushfire, TheOutsideIsOneObstacleOneCellFromTheBorder) {
   // All four sides are the same obstacle: a grid cut by a wall from border to border has two
   // free components, each between the outside and the wall, each with its GVD in one piece.
   const std::vector<std::string> rows = {
-      "...@....",
-      "...@....",
-      "...@....",
-      "...@....",
-      "...@....",
+      "...@....", "...@....", "...@....", "...@....", "...@....",
   };
   const Brushfire cut = brushfire(8, 5, blocked_of(rows));
   EXPECT_EQ(cut.obstacle_count, 2u);
-  EXPECT_EQ(cut.obstacle[3], 1u);  // the wall touches the border and keeps its own id
+  EXPECT_EQ(cut.obstacle[3], 1u);          // the wall touches the border and keeps its own id
   EXPECT_EQ(cut.distance[2 * 8 + 2], 1u);  // next to the wall
   EXPECT_EQ(cut.distance[2 * 8 + 1], 2u);  // two from the wall, two from the left side
   EXPECT_EQ(cut.obstacle[2 * 8 + 1], 0u);  // a tie: the outside's
@@ -231,12 +226,7 @@ TEST(Brushfire, WallCellsMarkedOutsideAreTheOutside) {
   // A robot with extent cannot reach the border ring: those blocked cells are the outside (id 0),
   // and the wall touching them from the bottom keeps its own id, as it would touching the border.
   const std::vector<std::string> rows = {
-      "@@@@@@@",
-      "@..@..@",
-      "@..@..@",
-      "@.....@",
-      "@.....@",
-      "@@@@@@@",
+      "@@@@@@@", "@..@..@", "@..@..@", "@.....@", "@.....@", "@@@@@@@",
   };
   std::vector<std::uint8_t> ring(42, 0);
   for (std::size_t i = 0; i < ring.size(); ++i) ring[i] = i % 7 == 0 || i % 7 == 6 || i < 7 || i >= 35;
@@ -259,11 +249,7 @@ TEST(Brushfire, PassageOneCellWideBetweenTwoObstaclesIsOnTheGvd) {
   // Obstacles 1 (left) and 2 (right) leave column 3 free: each of its cells touches both, so
   // each is on the GVD whichever id it took, and the GVD runs through the passage.
   const std::vector<std::string> rows = {
-      "..........",
-      ".@@.@@@...",
-      ".@@.@@@...",
-      ".@@.@@@...",
-      "..........",
+      "..........", ".@@.@@@...", ".@@.@@@...", ".@@.@@@...", "..........",
   };
   const Brushfire b = brushfire(10, 5, blocked_of(rows));
   EXPECT_EQ(b.obstacle_count, 3u);
@@ -280,7 +266,8 @@ TEST(Brushfire, AxisParallelFrontIsOneCellWide) {
   rows[7] = rows[8] = std::string(30, '@');
   const Brushfire b = brushfire(30, 9, blocked_of(rows));
   for (std::size_t column = 6; column < 24; ++column)
-    for (std::size_t row = 2; row <= 6; ++row) EXPECT_EQ(b.gvd[b.index(column, row)] != 0, row == 4) << column << ", " << row;
+    for (std::size_t row = 2; row <= 6; ++row)
+      EXPECT_EQ(b.gvd[b.index(column, row)] != 0, row == 4) << column << ", " << row;
   EXPECT_EQ(b.distance[b.index(15, 4)], 3u);
   EXPECT_TRUE(gvd_connected_and_climbed_to(30, 9, blocked_of(rows)));
 }
@@ -291,7 +278,8 @@ std::vector<std::uint8_t> random_rectangles(std::mt19937& random, std::size_t co
   const auto clear_around = [&](long x0, long y0, long x1, long y1) {  // no blocked cell within one of the box
     for (long y = y0 - 1; y <= y1 + 1; ++y)
       for (long x = x0 - 1; x <= x1 + 1; ++x)
-        if (x >= 0 && y >= 0 && x < static_cast<long>(columns) && y < static_cast<long>(rows) && blocked[x + y * columns])
+        if (x >= 0 && y >= 0 && x < static_cast<long>(columns) && y < static_cast<long>(rows) &&
+            blocked[x + y * columns])
           return false;
     return true;
   };
@@ -312,7 +300,8 @@ TEST(Brushfire, ThinningKeepsEveryConnectionOfTheMeetingCellsOnRandomRectangles)
   std::mt19937 random(2026);
   for (int trial = 0; trial < 300; ++trial) {
     const std::size_t columns = 12 + random() % 30, rows = 10 + random() % 25;
-    EXPECT_TRUE(thin_gvd_joins_what_the_thick_one_joins(columns, rows, random_rectangles(random, columns, rows))) << "trial " << trial;
+    EXPECT_TRUE(thin_gvd_joins_what_the_thick_one_joins(columns, rows, random_rectangles(random, columns, rows)))
+        << "trial " << trial;
   }
 }
 
@@ -341,13 +330,8 @@ TEST(Brushfire, GvdIsConnectedInEachFreeComponentOfRoomsWithPosts) {
   // passage is between two obstacles (a wall and a post, or two walls), so each free component's
   // GVD is one piece.
   const std::vector<std::string> rows = {
-      "....@.........@......",
-      "....@....@....@......",
-      "....@.........@..@@..",
-      "..@.@.........@..@@..",
-      ".........@@..........",
-      "....@....@@...@......",
-      "....@.........@...@..",
+      "....@.........@......", "....@....@....@......", "....@.........@..@@..", "..@.@.........@..@@..",
+      ".........@@..........", "....@....@@...@......", "....@.........@...@..",
   };
   EXPECT_TRUE(gvd_connected_and_climbed_to(21, 7, blocked_of(rows)));
   EXPECT_TRUE(thin_gvd_joins_what_the_thick_one_joins(21, 7, blocked_of(rows)));
@@ -358,15 +342,8 @@ TEST(Brushfire, DoorInAWallIsOnTheGvdThatJoinsTheRoomToTheOutside) {
   // the same obstacle — origins (6, 1) and (8, 1), not 8-adjacent — so the door cell is on the
   // GVD and joins the GVD round the post to the GVD outside.
   const std::vector<std::string> rows = {
-      "...............",
-      ".@@@@@@.@@@@@@.",
-      ".@...........@.",
-      ".@...........@.",
-      ".@.....@.....@.",
-      ".@...........@.",
-      ".@...........@.",
-      ".@@@@@@@@@@@@@.",
-      "...............",
+      "...............", ".@@@@@@.@@@@@@.", ".@...........@.", ".@...........@.", ".@.....@.....@.",
+      ".@...........@.", ".@...........@.", ".@@@@@@@@@@@@@.", "...............",
   };
   const Brushfire b = brushfire(15, 9, blocked_of(rows));
   EXPECT_EQ(b.obstacle[b.index(7, 1)], b.obstacle[b.index(1, 1)]);
@@ -379,19 +356,8 @@ TEST(Brushfire, PocketOfOneObstacleIsOnTheGvdFromItsMouthToItsEnd) {
   // middle (columns 5 and 6, 3 from each arm), the outside's from above and below meet round it
   // — one piece of GVD, into the pocket and round the U.
   const std::vector<std::string> rows = {
-      "............",
-      "..@@@@@@@@..",
-      "..@......@..",
-      "..@......@..",
-      "..@......@..",
-      "..@......@..",
-      "..@......@..",
-      "..@......@..",
-      "..@......@..",
-      "..@......@..",
-      "..@......@..",
-      "............",
-      "............",
+      "............", "..@@@@@@@@..", "..@......@..", "..@......@..", "..@......@..", "..@......@..", "..@......@..",
+      "..@......@..", "..@......@..", "..@......@..", "..@......@..", "............", "............",
   };
   const Brushfire b = brushfire(12, 13, blocked_of(rows));
   EXPECT_EQ(b.obstacle_count, 2u);
@@ -407,12 +373,8 @@ TEST(Brushfire, TheOutsidesFrontsMeetBetweenTwoPostsFarApart) {
   // Two posts in a low room: between them only the outside's fronts, from above and from below,
   // meet — the GVD along the middle row joins the loops round the posts.
   const std::vector<std::string> rows = {
-      "....................",
-      "...@..........@.....",
-      "....................",
-      "....................",
-      "...@..........@.....",
-      "....................",
+      "....................", "...@..........@.....", "....................",
+      "....................", "...@..........@.....", "....................",
   };
   const Brushfire b = brushfire(20, 6, blocked_of(rows));
   for (std::size_t column = 6; column <= 11; ++column) {

@@ -55,7 +55,8 @@ TEST(GridGraph, EightConnectedNeverCutsACorner) {
 TEST(GridGraph, DiagonalMoveCostsSqrt2AndTheOctilePathIsOptimal) {
   const GridGraph g(plane(20, 10), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(200, 1));
   const GridCell s = g.cell({0, 0}), t = g.cell({9, 5});
-  const auto astar = shortest_path(g, s, t, {Search::astar}, GridDistanceTo(g, t, GridMetric::octile), GridMoveCost{&g});
+  const auto astar =
+      shortest_path(g, s, t, {Search::astar}, GridDistanceTo(g, t, GridMetric::octile), GridMoveCost{&g});
   ASSERT_TRUE(astar.found);
   EXPECT_DOUBLE_EQ(astar.cost, 5 * sqrt2 + 4);
   EXPECT_DOUBLE_EQ(GridDistanceTo(g, t, GridMetric::octile)(s), 5 * sqrt2 + 4);
@@ -63,7 +64,8 @@ TEST(GridGraph, DiagonalMoveCostsSqrt2AndTheOctilePathIsOptimal) {
   EXPECT_DOUBLE_EQ(GridDistanceTo(g, t, GridMetric::sum_of_axes)(s), 14.0);
   // On an empty grid the octile heuristic is exact: A* expands only cells on optimal paths.
   EXPECT_LE(astar.expanded, 10u + 20u);
-  const auto dijkstra = shortest_path(g, s, t, {Search::dijkstra}, GridDistanceTo(g, t, GridMetric::octile), GridMoveCost{&g});
+  const auto dijkstra =
+      shortest_path(g, s, t, {Search::dijkstra}, GridDistanceTo(g, t, GridMetric::octile), GridMoveCost{&g});
   EXPECT_DOUBLE_EQ(dijkstra.cost, astar.cost);
   EXPECT_GT(dijkstra.expanded, astar.expanded);
   const auto bfs = shortest_path(g, s, t, {Search::bfs}, GridDistanceTo(g, t, GridMetric::octile), GridMoveCost{&g});
@@ -132,18 +134,22 @@ TEST(GridGraph, RandomMapsMatchAnIndependentDijkstraForEveryAlgorithm) {
     std::vector<std::uint8_t> free(w * h);
     for (auto& f : free) f = std::bernoulli_distribution(0.7)(rng);
     const GridGraph g(plane(w, h), Connectivity::full, StepCost::euclidean, free);
-    SearchWorkspace<GridCell> dense;                           // automatic: a flat table (1200 cells)
-    SearchWorkspace<GridCell> hashed(VertexStorage::hashed);   // the same results from a hash map
+    SearchWorkspace<GridCell> dense;                          // automatic: a flat table (1200 cells)
+    SearchWorkspace<GridCell> hashed(VertexStorage::hashed);  // the same results from a hash map
     for (int q = 0; q < 40; ++q) {
       int s, t;
-      do s = std::uniform_int_distribution(0, w * h - 1)(rng); while (!free[s]);
-      do t = std::uniform_int_distribution(0, w * h - 1)(rng); while (!free[t]);
+      do s = std::uniform_int_distribution(0, w * h - 1)(rng);
+      while (!free[s]);
+      do t = std::uniform_int_distribution(0, w * h - 1)(rng);
+      while (!free[t]);
       const double expected = flat_dijkstra(free, w, h, s, t);
       const GridDistanceTo octile(g, t, GridMetric::octile);
       const auto astar = shortest_path(g, GridCell(s), GridCell(t), {Search::astar}, octile, GridMoveCost{&g}, dense);
       const auto again = shortest_path(g, GridCell(s), GridCell(t), {Search::astar}, octile, GridMoveCost{&g}, hashed);
-      const auto dijkstra = shortest_path(g, GridCell(s), GridCell(t), {Search::dijkstra}, octile, GridMoveCost{&g}, dense);
-      const auto wastar = shortest_path(g, GridCell(s), GridCell(t), {Search::wastar, 2.0}, octile, GridMoveCost{&g}, dense);
+      const auto dijkstra =
+          shortest_path(g, GridCell(s), GridCell(t), {Search::dijkstra}, octile, GridMoveCost{&g}, dense);
+      const auto wastar =
+          shortest_path(g, GridCell(s), GridCell(t), {Search::wastar, 2.0}, octile, GridMoveCost{&g}, dense);
       const auto greedy = shortest_path(g, GridCell(s), GridCell(t), {Search::greedy}, octile, GridMoveCost{&g}, dense);
       const auto bfs = shortest_path(g, GridCell(s), GridCell(t), {Search::bfs}, octile, GridMoveCost{&g}, dense);
       ASSERT_EQ(astar.found, expected >= 0);
@@ -180,13 +186,14 @@ TEST(GridGraph, LazyCellsAreEvaluatedOnceAndOnlyWhereTheSearchGoes) {
   const GridCell s = g.cell({40, 10}), t = g.cell({60, 10});
   const auto r = shortest_path(g, s, t, {Search::astar}, GridDistanceTo(g, t, GridMetric::octile), GridMoveCost{&g});
   ASSERT_TRUE(r.found);
-  EXPECT_NEAR(r.cost, flat_dijkstra(
-                          [] {
-                            std::vector<std::uint8_t> f(10000, 1);
-                            for (int y = 0; y < 90; ++y) f[y * 100 + 50] = 0;
-                            return f;
-                          }(),
-                          100, 100, 10 * 100 + 40, 10 * 100 + 60),
+  EXPECT_NEAR(r.cost,
+              flat_dijkstra(
+                  [] {
+                    std::vector<std::uint8_t> f(10000, 1);
+                    for (int y = 0; y < 90; ++y) f[y * 100 + 50] = 0;
+                    return f;
+                  }(),
+                  100, 100, 10 * 100 + 40, 10 * 100 + 60),
               1e-9);
   for (const auto& [cell, n] : calls) EXPECT_EQ(n, 1) << "cell evaluated twice";
   EXPECT_EQ(g.cells_evaluated(), calls.size());
@@ -226,7 +233,8 @@ TEST(GridGraph, MoveTestRejectsMovesBetweenFreeCells) {
     return !crosses || pa[1] == 9;
   });
   const GridCell s = g.cell({0, 0}), t = g.cell({9, 0});
-  const auto r = shortest_path(g, s, t, {Search::astar}, GridDistanceTo(g, t, GridMetric::sum_of_axes), GridMoveCost{&g});
+  const auto r =
+      shortest_path(g, s, t, {Search::astar}, GridDistanceTo(g, t, GridMetric::sum_of_axes), GridMoveCost{&g});
   ASSERT_TRUE(r.found);
   EXPECT_DOUBLE_EQ(r.cost, 9 + 2 * 9);
   EXPECT_GT(g.moves_checked(), 0u);
@@ -235,22 +243,27 @@ TEST(GridGraph, MoveTestRejectsMovesBetweenFreeCells) {
 TEST(GridGraph, RejectsMalformedGrids) {
   const auto lazy = [](std::span<const GridCoordinate>) { return true; };
   EXPECT_THROW(GridGraph({}, Connectivity::full, StepCost::euclidean, lazy), std::invalid_argument);
-  EXPECT_THROW(GridGraph({{2, AxisKind::wrapping}}, Connectivity::full, StepCost::euclidean, lazy), std::invalid_argument);
-  EXPECT_THROW(GridGraph({{0, AxisKind::bounded}}, Connectivity::full, StepCost::euclidean, lazy), std::invalid_argument);
-  EXPECT_THROW(GridGraph({{5, AxisKind::bounded, 0.0}}, Connectivity::full, StepCost::euclidean, lazy), std::invalid_argument);
+  EXPECT_THROW(GridGraph({{2, AxisKind::wrapping}}, Connectivity::full, StepCost::euclidean, lazy),
+               std::invalid_argument);
+  EXPECT_THROW(GridGraph({{0, AxisKind::bounded}}, Connectivity::full, StepCost::euclidean, lazy),
+               std::invalid_argument);
+  EXPECT_THROW(GridGraph({{5, AxisKind::bounded, 0.0}}, Connectivity::full, StepCost::euclidean, lazy),
+               std::invalid_argument);
   EXPECT_THROW(GridGraph(plane(3, 3), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(8, 1)),
                std::invalid_argument);
   EXPECT_THROW(GridGraph(std::vector<GridAxis>(13, GridAxis{3}), Connectivity::axis_aligned, StepCost::euclidean, lazy),
                std::invalid_argument);
-  EXPECT_THROW(GridGraph(std::vector<GridAxis>(12, GridAxis{1u << 20}), Connectivity::axis_aligned, StepCost::euclidean, lazy),
-               std::invalid_argument);  // 2^240 cells
+  EXPECT_THROW(
+      GridGraph(std::vector<GridAxis>(12, GridAxis{1u << 20}), Connectivity::axis_aligned, StepCost::euclidean, lazy),
+      std::invalid_argument);  // 2^240 cells
   const GridGraph g(plane(3, 3), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(9, 1));
   EXPECT_THROW(g.cell({3, 0}), std::out_of_range);
   EXPECT_THROW(g.cell({0}), std::out_of_range);
   const GridGraph cube(std::vector<GridAxis>(3, GridAxis{3}), Connectivity::full, StepCost::euclidean, lazy);
   EXPECT_EQ(cube.direction_count(), 26u);
   EXPECT_THROW(GridDistanceTo(cube, 0, GridMetric::octile), std::invalid_argument);
-  const GridGraph oblong({{3, AxisKind::bounded, 1.0}, {3, AxisKind::bounded, 0.1}}, Connectivity::full, StepCost::euclidean, lazy);
+  const GridGraph oblong({{3, AxisKind::bounded, 1.0}, {3, AxisKind::bounded, 0.1}}, Connectivity::full,
+                         StepCost::euclidean, lazy);
   EXPECT_THROW(GridDistanceTo(oblong, 0, GridMetric::octile), std::invalid_argument);
 }
 

@@ -74,10 +74,12 @@ TEST(HubLabels, DistancesAndPathsAreDijkstras) {
     ASSERT_TRUE(labels);
     const int n = static_cast<int>(g.begin.size()) - 1;
     ASSERT_EQ(labels->vertex_count(), static_cast<std::size_t>(n));
-    EXPECT_LT(labels->entry_count(), static_cast<std::size_t>(n) * static_cast<std::size_t>(n) / 2) << "labels prune nothing";
+    EXPECT_LT(labels->entry_count(), static_cast<std::size_t>(n) * static_cast<std::size_t>(n) / 2)
+        << "labels prune nothing";
     for (int s = 0; s < n; ++s) {
       const std::vector<double> dist = dijkstra(g, s);
-      for (int t = 0; t < n; ++t) EXPECT_DOUBLE_EQ(labels->distance(s, t), dist[static_cast<std::size_t>(t)]) << s << "-" << t;
+      for (int t = 0; t < n; ++t)
+        EXPECT_DOUBLE_EQ(labels->distance(s, t), dist[static_cast<std::size_t>(t)]) << s << "-" << t;
       for (const HubLabels::Entry* e = labels->label_begin(s); e != labels->label_end(s); ++e) {
         std::vector<int> path;
         labels->path_to_hub(s, e->hub, path);

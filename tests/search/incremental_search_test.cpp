@@ -64,7 +64,8 @@ OctileLength path_cost(const ChangingGrid& grid, const std::vector<GridCell>& pa
 template <class Search>
 void expect_optimal(const ChangingGrid& grid, const Search& search, const std::string& when) {
   const OctileLength expected = dijkstra(grid, search.start(), search.goal());
-  ASSERT_EQ(search.cost(), expected) << when << ": " << search.cost().to_string() << " against " << expected.to_string();
+  ASSERT_EQ(search.cost(), expected) << when << ": " << search.cost().to_string() << " against "
+                                     << expected.to_string();
   const auto path = search.path();
   if (expected == OctileLength::infinity()) {
     EXPECT_TRUE(path.empty()) << when;

@@ -1,9 +1,8 @@
-// search/search_trace.hpp and search/weighted_digraph.hpp: the course's graph-search homework's graphs searched by every
-// algorithm, checked against an independent A* written as the seed's Algorithm 1 (an open list
-// searched for its first minimum, so ties go to the vertex that entered it first) and an independent
-// Dijkstra; and every trace checked for consistency: f from g and h as the algorithm orders, each
-// label's g its backpointer's g plus the edge's cost, the expansions those of SearchResult, the
-// open list's size what was discovered and not yet expanded.
+// search/search_trace.hpp and search/weighted_digraph.hpp: the course's graph-search homework's graphs searched by
+// every algorithm, checked against an independent A* written as the seed's Algorithm 1 (an open list searched for its
+// first minimum, so ties go to the vertex that entered it first) and an independent Dijkstra; and every trace checked
+// for consistency: f from g and h as the algorithm orders, each label's g its backpointer's g plus the edge's cost, the
+// expansions those of SearchResult, the open list's size what was discovered and not yet expanded.
 #include <polyplan/io/graph_reader.hpp>
 #include <polyplan/search/weighted_digraph.hpp>
 
@@ -20,7 +19,8 @@
 namespace polyplan {
 namespace {
 
-constexpr Search all_algorithms[] = {Search::astar, Search::dijkstra, Search::bfs, Search::dfs, Search::greedy, Search::wastar};
+constexpr Search all_algorithms[] = {Search::astar, Search::dijkstra, Search::bfs,
+                                     Search::dfs,   Search::greedy,   Search::wastar};
 constexpr double inf = std::numeric_limits<double>::infinity();
 
 GraphFile shipped(const std::string& name) {
@@ -46,9 +46,8 @@ struct SeedAnswer {
   double cost = inf;
 };
 
-// The course's graph-search homework's Algorithm 1, Ver. 2, with its priority queue: a list in insertion order whose first
-// minimum is extracted; an improved vertex keeps its place with its new f. Closed vertices are
-// never reopened.
+// The course's graph-search homework's Algorithm 1, Ver. 2, with its priority queue: a list in insertion order whose
+// first minimum is extracted; an improved vertex keeps its place with its new f. Closed vertices are never reopened.
 SeedAnswer seed_astar(const GraphFile& graph, std::size_t start, std::size_t goal) {
   const std::size_t n = graph.vertices.size();
   std::vector<double> g(n, inf), f(n, inf);
@@ -109,7 +108,7 @@ double dijkstra_cost(const GraphFile& graph, std::size_t start, std::size_t goal
 }
 
 SearchResult<DigraphVertexId> run_search(const GraphFile& file, std::size_t start, std::size_t goal, Search algorithm,
-                                     bool seed_ties = true) {
+                                         bool seed_ties = true) {
   SearchOptions options;
   options.algorithm = algorithm;
   options.weight = 2;
@@ -146,7 +145,8 @@ void expect_consistent_trace(const GraphFile& graph, std::size_t start, std::siz
       const auto& l = r.trace.labels[next_label];
       if (l.backpointer) {
         ASSERT_TRUE(g_now.count(*l.backpointer)) << what;
-        EXPECT_EQ(l.g, g_now[*l.backpointer] + cheapest_edge(graph, *l.backpointer, l.vertex)) << what << " label " << next_label;
+        EXPECT_EQ(l.g, g_now[*l.backpointer] + cheapest_edge(graph, *l.backpointer, l.vertex))
+            << what << " label " << next_label;
       } else {
         EXPECT_EQ(l.vertex, start) << what;
         EXPECT_EQ(l.g, 0) << what;
@@ -191,8 +191,8 @@ struct GraphQuery {
   const char* file;
   std::size_t start, goal;
 };
-const GraphQuery queries[] = {{"small.json", 0, 6}, {"small.json", 6, 2}, {"small.json", 3, 0},
-                         {"grid_medium.json", 0, 37}, {"grid_medium.json", 37, 0}, {"grid_medium.json", 5, 30}};
+const GraphQuery queries[] = {{"small.json", 0, 6},        {"small.json", 6, 2},        {"small.json", 3, 0},
+                              {"grid_medium.json", 0, 37}, {"grid_medium.json", 37, 0}, {"grid_medium.json", 5, 30}};
 
 }  // namespace
 
@@ -218,7 +218,8 @@ TEST(SearchTrace, TheShippedGraphsHaveTheirDocumentedAnswers) {
   EXPECT_EQ(back.path, (std::vector<DigraphVertexId>{6, 5, 3, 2}));  // 2 → 5 is one-way
   EXPECT_EQ(back.cost, 5.5);
   const auto medium = run_search(shipped("grid_medium.json"), 0, 37, Search::astar);
-  EXPECT_EQ(medium.path, (std::vector<DigraphVertexId>{0, 8, 15, 20, 25, 26, 27, 21, 16, 10, 11, 12, 13, 18, 23, 30, 37}));
+  EXPECT_EQ(medium.path,
+            (std::vector<DigraphVertexId>{0, 8, 15, 20, 25, 26, 27, 21, 16, 10, 11, 12, 13, 18, 23, 30, 37}));
   EXPECT_NEAR(medium.cost, 14 + 2 * std::sqrt(2.0), 1e-12);
   EXPECT_EQ(medium.expanded, 33u);
 }
@@ -248,7 +249,8 @@ TEST(SearchTrace, EveryAlgorithmsTraceIsConsistent) {
 TEST(SearchTrace, BoostsOwnTieOrderExpandsTheSameVerticesBelowTheOptimum) {
   for (const GraphQuery& q : queries) {
     const GraphFile graph = shipped(q.file);
-    const auto heap = run_search(graph, q.start, q.goal, Search::astar, false), seed = run_search(graph, q.start, q.goal, Search::astar, true);
+    const auto heap = run_search(graph, q.start, q.goal, Search::astar, false),
+               seed = run_search(graph, q.start, q.goal, Search::astar, true);
     EXPECT_EQ(heap.cost, seed.cost);
     const auto below = [&](const SearchResult<DigraphVertexId>& r) {
       std::vector<DigraphVertexId> v;

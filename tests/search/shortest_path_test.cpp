@@ -340,8 +340,8 @@ TEST(SearchWorkspace, ReusedAcrossAThousandQueriesOnABigRoadmapGivesTheResultsOf
     auto [sx, sy] = free_near(0, 0, true);
     auto [gx, gy] = free_near(sx, sy, i % 50 == 0);
     if (i % 100 == 7) sx = box(random), sy = box(random);  // inside the box: the goal is out of reach
-    if (i % 100 == 13) sx = 25, sy = 30;                    // a wall vertex: no edges at all
-    if (i % 100 == 21) gx = sx, gy = sy;                    // start == goal
+    if (i % 100 == 13) sx = 25, sy = 30;                   // a wall vertex: no edges at all
+    if (i % 100 == 21) gx = sx, gy = sy;                   // start == goal
     const RoadmapVertexId start = sy * width + sx, goal = gy * width + gx;
     const SearchOptions options{all_algorithms[i % 6], 1.5};
     const auto a = shortest_path(g, start, goal, options, reused_dense);

@@ -53,8 +53,8 @@ class TrueArmBounds {
  private:
   using Range = std::array<double, 2>;  // [lo, hi]
   const Arm* arm_;
-  std::vector<Range> x_, y_;         // [k]: true joint k
-  std::vector<double> radius_;       // [k]: computed joint k to any point of its box
+  std::vector<Range> x_, y_;                // [k]: true joint k
+  std::vector<double> radius_;              // [k]: computed joint k to any point of its box
   std::vector<Range> normal_x_, normal_y_;  // [k]: (w/2)(−sin, cos) of link k's true heading
 };
 

@@ -115,18 +115,32 @@ class IntegerTriangulation {
 
   // Why a segment is not a valid motion (docs/design.md): reason none when it is.
   struct Blocked {
-    enum Reason : std::uint8_t { none, point_blocked, start_outside, starts_inside, frame, enters, enters_at, pinch_at, crosses, lost };
+    enum Reason : std::uint8_t {
+      none,
+      point_blocked,
+      start_outside,
+      starts_inside,
+      frame,
+      enters,
+      enters_at,
+      pinch_at,
+      crosses,
+      lost
+    };
     Reason reason = none;
     int vertex = -1;  // where, for enters_at and pinch_at
   };
   // The walk of free_space_triangulation.cpp's why_blocked; `from` is where a lies.
   Blocked walk(const IntegerPoint& a, const Location& from, const IntegerPoint& b) const;
-  bool segment_free(const IntegerPoint& a, const Location& from, const IntegerPoint& b) const { return walk(a, from, b).reason == Blocked::none; }
+  bool segment_free(const IntegerPoint& a, const Location& from, const IntegerPoint& b) const {
+    return walk(a, from, b).reason == Blocked::none;
+  }
   // nullopt when a-b is a valid motion, else why not, in words.
   std::optional<std::string> why_blocked(const IntegerPoint& a, const Location& from, const IntegerPoint& b) const;
   // The same for a polyline (locations of its points, or outside to have them located), with the
   // pinch rule at its turning points.
-  std::optional<std::string> why_path_blocked(const std::vector<IntegerPoint>& path, const std::vector<Location>& where) const;
+  std::optional<std::string> why_path_blocked(const std::vector<IntegerPoint>& path,
+                                              const std::vector<Location>& where) const;
   // The same verdict without words or allocation (for the hot path; why_path_blocked explains).
   bool path_free(const std::vector<IntegerPoint>& path, const std::vector<Location>& where) const;
 
@@ -147,7 +161,8 @@ class IntegerTriangulation {
 
   void report(int vertex, std::vector<int>& out, Scratch& scratch) const;
   void begin(Scratch& scratch) const;
-  void cross(const IntegerPoint& apex, int triangle, int edge, const IntegerPoint& right, const IntegerPoint& left, Scratch& scratch) const;
+  void cross(const IntegerPoint& apex, int triangle, int edge, const IntegerPoint& right, const IntegerPoint& left,
+             Scratch& scratch) const;
   void expand(const IntegerPoint& apex, std::vector<int>& out, Scratch& scratch) const;
   void expand_from(const IntegerPoint& apex, int triangle, std::vector<int>& out, Scratch& scratch) const;
   template <typename Visit>

@@ -20,7 +20,8 @@ namespace polyplan::detail {
 inline Bounds free_space_frame(const CSpace::Impl& cspace, const std::vector<ExactPoint>& inside) {
   std::vector<ExactPoint> points = inside;
   const auto& arrangement = cspace.free_set.arrangement();
-  for (auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v) points.push_back(to_exact(v->point()));
+  for (auto v = arrangement.vertices_begin(); v != arrangement.vertices_end(); ++v)
+    points.push_back(to_exact(v->point()));
   if (points.empty()) points.push_back({0, 0});
   Bounds box{points[0].x, points[0].y, points[0].x, points[0].y};
   for (const ExactPoint& p : points) {

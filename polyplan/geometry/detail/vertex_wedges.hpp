@@ -37,7 +37,8 @@ class VertexWedges {
   const Point& far(std::size_t k) const { return edges_[k].far; }
 
   std::size_t free_wedges() const {
-    return static_cast<std::size_t>(std::count_if(edges_.begin(), edges_.end(), [](const Edge& e) { return e.free_on_left; }));
+    return static_cast<std::size_t>(
+        std::count_if(edges_.begin(), edges_.end(), [](const Edge& e) { return e.free_on_left; }));
   }
 
   // Two or more free wedges meet here: the free space has zero width at this point.

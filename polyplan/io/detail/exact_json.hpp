@@ -51,10 +51,10 @@ class ExactNumberSax {
     const std::string at = " at byte " + std::to_string(position);
     // nlohmann converts numbers to double while lexing: one beyond double's range fails here,
     // before its text reaches number_float.
-    if (ex.id == 406)
-      error = where() + ": number" + at + " overflows " + limits::supported_number_range();
+    if (ex.id == 406) error = where() + ": number" + at + " overflows " + limits::supported_number_range();
     else
-      error = "invalid JSON" + at + (frames_.empty() ? "" : " (in " + where() + ")") + ": " + abbreviated_text(ex.what(), 160);
+      error = "invalid JSON" + at + (frames_.empty() ? "" : " (in " + where() + ")") + ": " +
+              abbreviated_text(ex.what(), 160);
     return false;
   }
   std::string error;
@@ -75,9 +75,7 @@ class ExactNumberSax {
         path += '[';
         path += std::to_string(f.index);
         path += ']';
-      }
-      else if (!f.key.empty())
-        path += (path.empty() ? "" : ".") + abbreviated_text(f.key);
+      } else if (!f.key.empty()) path += (path.empty() ? "" : ".") + abbreviated_text(f.key);
     }
     return path.empty() ? "top level" : path;
   }

@@ -1,7 +1,6 @@
 #pragma once
-// Reading a whole input file, and echoing its text in messages, within limits::file_bytes: every reader of polyplan goes through
-// here, so /dev/zero or a directory given as a file ends at once with a one-line message.
-// Not installed.
+// Reading a whole input file, and echoing its text in messages, within limits::file_bytes: every reader of polyplan
+// goes through here, so /dev/zero or a directory given as a file ends at once with a one-line message. Not installed.
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/input_limits.hpp>
 

@@ -19,7 +19,9 @@ class WorldDoor : public SpaceDoor<Space> {
  public:
   std::string_view kind() const override { return "World"; }
   std::string_view file() const override { return "WORLD.json"; }
-  Query own_query(const Problem& problem, std::size_t index) const override { return problem.world()->queries.at(index); }
+  Query own_query(const Problem& problem, std::size_t index) const override {
+    return problem.world()->queries.at(index);
+  }
   void require_fits(const Problem& problem, std::string_view planner) const override {
     require_planner_for_robot(*problem.world(), planner);
   }

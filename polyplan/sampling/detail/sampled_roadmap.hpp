@@ -54,8 +54,7 @@ class SampledRoadmap {
     boost::add_vertex(graph_);
     for (std::size_t n : near_)
       if (const Join how = join(n); how != Join::none)
-        boost::add_edge(n, id, SampledEdge{edge_length(n, at), how == Join::certified},
-                        graph_);
+        boost::add_edge(n, id, SampledEdge{edge_length(n, at), how == Join::certified}, graph_);
     return id;
   }
 
@@ -69,7 +68,8 @@ class SampledRoadmap {
   }
 
   SearchResult<Vertex> search_both_ways(std::size_t start, std::size_t goal) {
-    return bidirectional_dijkstra(graph_, start, goal, [&](const typename Graph::edge_descriptor& e) { return graph_[e].length; });
+    return bidirectional_dijkstra(graph_, start, goal,
+                                  [&](const typename Graph::edge_descriptor& e) { return graph_[e].length; });
   }
 
   // The cheapest of the paths that `search_one(start, goal)` (search or search_both_ways) finds to
