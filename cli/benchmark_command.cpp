@@ -7,8 +7,8 @@
 #include "cli/command.hpp"
 #include "cli/progress.hpp"
 
+#include <polyplan/draw/experiment_plots.hpp>
 #include <polyplan/experiment/experiment_file.hpp>
-#include <polyplan/experiment/experiment_plots.hpp>
 #include <polyplan/experiment/experiment_results.hpp>
 #include <polyplan/experiment/experiment_runner.hpp>
 #include <polyplan/experiment/experiment_statistics.hpp>

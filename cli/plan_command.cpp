@@ -1,14 +1,14 @@
 // polyplan plan PROBLEM.json [--planner NAME] [--option NAME=VALUE]... [--NAME VALUE]... [--query NAME]
 //                            [--json FILE|-] [--svg OUT.svg] [--strobe OUT.svg [--every K]] [--trace FILE|-]
 // The problem's queries (every one, or the one --query names) answered by one planner of the
-// registry, built once through the front door (problem/any_planner.hpp): a world's, whatever its
+// registry, built once through the front door (registry/any_planner.hpp): a world's, whatever its
 // robot, or an arm's. `polyplan arm` is the same command under its old name.
 #include "cli/command.hpp"
 #include "cli/planner_choice.hpp"
 #include "cli/trace_output.hpp"
 
+#include <polyplan/draw/report_pictures.hpp>
 #include <polyplan/geometry/input_error.hpp>
-#include <polyplan/problem/report_pictures.hpp>
 
 #include <cctype>
 #include <iostream>

@@ -2,11 +2,11 @@
 // How a command picks a planner and sets its options, for every planner of the registry alike:
 // `--planner NAME` (and the aliases older scripts use), `--option NAME=VALUE` (repeatable), and
 // `--NAME VALUE` for every option name some planner has (`--NAME` / `--no-NAME` for
-// true-or-false options). The flags come from the front door's catalog (problem/any_planner.hpp),
+// true-or-false options). The flags come from the front door's catalog (registry/any_planner.hpp),
 // so a new planner's options reach the command line without code here; which planner a name is,
 // and the default, the door settles for the problem read.
 #include <polyplan/plan/planner_options.hpp>
-#include <polyplan/problem/any_planner.hpp>
+#include <polyplan/registry/any_planner.hpp>
 
 #include <CLI/CLI.hpp>
 

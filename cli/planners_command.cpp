@@ -1,7 +1,7 @@
 // polyplan planners [--json FILE|-]: every registered planner with its description and options.
 #include "cli/command.hpp"
 
-#include <polyplan/problem/any_planner.hpp>
+#include <polyplan/registry/any_planner.hpp>
 
 #include <cmath>
 #include <cstdio>

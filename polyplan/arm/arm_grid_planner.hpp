@@ -4,8 +4,8 @@
 // free when the arm at that configuration is; a move between neighbouring cells (one joint turns one step) is allowed
 // when the motion is certified free (arm/arm_motion.hpp: conservative advancement, every intermediate configuration,
 // not samples). Cells and moves are decided when the search first touches them (lazy), or every cell up front (eager:
-// what seed 000's grid2graph does). The search is search/'s shortest_path on search/grid_graph. Registered as the arm
-// planner `grid`.
+// what the course's graph-search homework's grid2graph does). The search is search/'s shortest_path on
+// search/grid_graph. Registered as the arm planner `grid`.
 //
 // The returned path begins exactly at the start and ends exactly at the goal; they are joined to a
 // nearby free grid cell by a motion certified like every other. A goal in the workspace (the hand at

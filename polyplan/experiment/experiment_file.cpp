@@ -3,7 +3,7 @@
 #include <polyplan/experiment/experiment_problem.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/detail/text_file.hpp>
-#include <polyplan/problem/any_planner.hpp>
+#include <polyplan/registry/any_planner.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -198,24 +198,25 @@ class ExperimentReader {
       const std::string object = "planners[" + std::to_string(i) + "]";
       for (std::size_t j = 0; j < e.problems.size(); ++j) {
         const Problem& problem = loaded_[j];
-        const std::vector<OptionInfo>* known = nullptr;
+        const PlannerListing* listing = nullptr;
         try {
-          known = &planner_for(p.planner, problem).options;
+          listing = &planner_for(p.planner, problem);
         } catch (const InputError& error) {
           fail(object + ".planner",
                "no planner \"" + p.planner + "\" plans problems[" + std::to_string(j) + "]: " + error.what());
         }
+        const std::vector<OptionInfo>& known = listing->options;
         for (const auto& [key, value] : p.options)
-          if (std::none_of(known->begin(), known->end(), [&](const OptionInfo& o) { return o.name == key; }))
+          if (std::none_of(known.begin(), known.end(), [&](const OptionInfo& o) { return o.name == key; }))
             fail(object + ".options." + key,
-                 "unknown option for " + p.planner + " (options: " + option_names(*known) + ")");
+                 "unknown option for " + p.planner + " (options: " + option_names(known) + ")");
         try {
           // Building is what checks the values; a planner built on a problem costs little beside a run.
-          make_planner(p.planner, problem, options_for_run(p.options, *known, e.seeds.front(), e.time_limit));
+          make_planner(p.planner, problem, options_for_run(p.options, known, e.seeds.front(), e.time_limit));
         } catch (const InputError& error) {
           fail(object, std::string(error.what()) + " (on problems[" + std::to_string(j) + "])");
         }
-        p.anytime = p.anytime || planner_for(p.planner, problem).anytime;
+        p.anytime = p.anytime || listing->anytime;
       }
     }
   }

@@ -1,10 +1,10 @@
 #pragma once
 // One run of an experiment: a registry planner built through the front door for a problem and
-// asked one of its queries, timed (problem/any_planner.hpp). The runner gives each thread its own
+// asked one of its queries, timed (registry/any_planner.hpp). The runner gives each thread its own
 // Problem: planners and the exact numbers under them are not shared between threads.
 #include <polyplan/experiment/experiment.hpp>
 #include <polyplan/plan/planner_options.hpp>
-#include <polyplan/problem/problem.hpp>
+#include <polyplan/registry/problem.hpp>
 
 #include <cstdint>
 #include <string>

@@ -2,7 +2,7 @@
 
 #include <polyplan/experiment/experiment_problem.hpp>
 #include <polyplan/plan/stopwatch.hpp>
-#include <polyplan/problem/any_planner.hpp>
+#include <polyplan/registry/any_planner.hpp>
 
 #include <algorithm>
 #include <atomic>

@@ -1,11 +1,11 @@
-// Every planner of the registry in Python through the front door (problem/any_planner.hpp):
+// Every planner of the registry in Python through the front door (registry/any_planner.hpp):
 // polyplan.planner(name, problem, **options) builds the planner `name` for a World or an Arm, and
 // polyplan.planners() lists them. Nothing here names a planner, a space or a default: adding one
 // to the registry adds it to Python.
 #include "exact_values.hpp"
 #include "plans.hpp"
 
-#include <polyplan/problem/any_planner.hpp>
+#include <polyplan/registry/any_planner.hpp>
 
 #include <pybind11/stl.h>
 

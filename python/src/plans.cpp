@@ -4,8 +4,8 @@
 #include "plans.hpp"
 #include "exact_values.hpp"
 
+#include <polyplan/draw/report_pictures.hpp>
 #include <polyplan/plan/plan_json.hpp>
-#include <polyplan/problem/report_pictures.hpp>
 
 #include <pybind11/stl.h>
 #include <nlohmann/json.hpp>
@@ -16,7 +16,7 @@ namespace {
 py::array_t<double> rows_of(const Rows& rows, std::size_t columns) { return rows_array(rows, columns); }
 
 py::object graph(const PlanResult& r) {
-  const Recording recorded = r.report.recording();
+  const Recording& recorded = r.recorded();
   if (recorded.graph_kind.empty()) return py::none();
   std::vector<std::vector<double>> edges;
   for (const auto& [a, b] : recorded.graph_edges) edges.push_back({double(a), double(b)});
@@ -27,7 +27,7 @@ py::object graph(const PlanResult& r) {
 }
 
 py::object cells(const PlanResult& r) {
-  const std::shared_ptr<const CellGrid> grid = r.report.recording().cells;
+  const std::shared_ptr<const CellGrid> grid = r.recorded().cells;
   if (!grid) return py::none();
   const CellGrid& c = *grid;
   py::array_t<std::uint8_t> states({c.rows, c.columns});
@@ -43,7 +43,7 @@ py::object cells(const PlanResult& r) {
 }
 
 py::object decomposition(const PlanResult& r) {
-  const Recording recorded = r.report.recording();
+  const Recording& recorded = r.recorded();
   if (recorded.decomposition.empty()) return py::none();
   py::list out;
   for (const Rows& cell : recorded.decomposition) out.append(rows_of(cell, r.report.path_columns()));
@@ -172,8 +172,7 @@ the planner's counts and measures, nested as in the JSON.)")
                              "The roadmap or tree when the query recorded one: Graph(kind, vertices (V, k) float64, "
                              "edges (E, 2) int64); else None.")
       .def_property_readonly(
-          "expanded",
-          [](const PlanResult& r) { return rows_of(r.report.recording().expanded, r.report.path_columns()); },
+          "expanded", [](const PlanResult& r) { return rows_of(r.recorded().expanded, r.report.path_columns()); },
           "Where the search expanded, in order (recorded queries), an (M, k) float64 array.")
       .def_property_readonly(
           "cells", &cells,

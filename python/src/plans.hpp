@@ -2,12 +2,13 @@
 // A plan as Python holds it, and the bindings of the module's parts.
 #include "problems.hpp"
 
-#include <polyplan/problem/report.hpp>
+#include <polyplan/registry/report.hpp>
 
 #include <pybind11/pybind11.h>
 #include <nlohmann/json_fwd.hpp>
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,14 @@ namespace polyplan::python {
 struct PlanResult {
   Report report;
   pybind11::object problem;
+
+  // What the query recorded, converted once for the attributes that read it (graph, expanded,
+  // cells, decomposition).
+  const Recording& recorded() const {
+    if (!recording) recording = report.recording();
+    return *recording;
+  }
+  mutable std::optional<Recording> recording;
 };
 
 void bind_plans(pybind11::module_& m);

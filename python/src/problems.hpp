@@ -7,7 +7,7 @@
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/world.hpp>
-#include <polyplan/problem/problem.hpp>
+#include <polyplan/registry/problem.hpp>
 
 #include <pybind11/pybind11.h>
 
@@ -17,7 +17,7 @@
 
 namespace polyplan::python {
 
-// What Python's World and Arm share: the problem as the front door takes it (problem/problem.hpp)
+// What Python's World and Arm share: the problem as the front door takes it (registry/problem.hpp)
 // and its lock.
 class ProblemHandle {
  public:

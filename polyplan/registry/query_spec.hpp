@@ -1,7 +1,7 @@
 #pragma once
 // A query a caller asks in the problem file's own terms (Python's plan(start=..., goal=...)):
 // its numbers exact, as a file would write them. Each kind of problem reads it as its file reader
-// reads a query, with the same checks (problem/any_planner.hpp).
+// reads a query, with the same checks (registry/any_planner.hpp).
 #include <polyplan/geometry/rational.hpp>
 
 #include <optional>

@@ -1,7 +1,6 @@
 // The front door of a polygon robot that translates (docs/architecture.md "The front door").
-#include <polyplan/problem/detail/world_door.hpp>
+#include <polyplan/registry/detail/world_door.hpp>
 
-#include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
@@ -36,11 +35,6 @@ class TranslatingDoor final : public WorldDoor<TranslatingRobot> {
     if (turns_the_robot(world)) return planners<RotatingRobot>().default_planner();
     if (!world.changes.empty()) return planners_following_changes().front();
     return planners<TranslatingRobot>().default_planner();
-  }
-
-  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports,
-                            const PictureOptions&) const override {
-    return {Picture{"", draw_plan(problem.cspace(), typed_reports<ExactPoint>(reports))}};
   }
 
   std::size_t columns(const Problem&) const override { return 2; }

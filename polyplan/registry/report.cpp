@@ -1,8 +1,8 @@
-#include <polyplan/problem/report.hpp>
+#include <polyplan/registry/report.hpp>
 
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_json.hpp>
-#include <polyplan/problem/detail/space_door.hpp>
+#include <polyplan/registry/detail/space_door.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -47,8 +47,9 @@ std::string facts_summary(const Facts& facts) {
 
 }  // namespace
 
-Report::Report(Typed typed, std::string_view space, std::size_t columns, std::string query, std::string planner)
-    : typed_(std::move(typed)), space_(space), columns_(columns), query_(std::move(query)),
+Report::Report(Typed typed, const detail::SpaceWords& space, std::size_t columns, std::string query,
+               std::string planner)
+    : typed_(std::move(typed)), space_(&space), columns_(columns), query_(std::move(query)),
       planner_(std::move(planner)) {}
 
 bool Report::found() const {
@@ -121,6 +122,8 @@ std::vector<TracedExpansion> Report::trace() const {
       typed_);
 }
 
+std::string_view Report::space() const { return space_->description(); }
+
 nlohmann::json Report::to_json() const {
   return std::visit([&](const auto& r) { return plan_json(r, query_); }, typed_);
 }
@@ -135,21 +138,12 @@ nlohmann::json Report::facts_json() const {
 
 std::string Report::summary() const {
   if (!found()) return query_ + ": no path (" + why_not() + ")";
-  std::string_view steps = "segment", unit;
-  std::string more;  // the space's own words
-  detail::any_space([&](auto tag) {
-    using Space = typename decltype(tag)::Space;
-    if (Space::description != space_) return false;
-    steps = detail::space_door<Space>().steps();
-    unit = detail::space_door<Space>().unit();
-    more = detail::space_door<Space>().summary(facts());
-    return true;
-  });
   const std::size_t moves = std::visit([](const auto& r) { return r.path.size() - 1; }, typed_);
+  const std::string_view unit = space_->unit(), steps = space_->steps();
   char text[128];
   std::snprintf(text, sizeof text, "%s: length %.6f%.*s, %zu %.*s(s)", query_.c_str(), length(),
                 static_cast<int>(unit.size()), unit.data(), moves, static_cast<int>(steps.size()), steps.data());
-  std::string line = text + facts_summary(facts()) + more;
+  std::string line = text + facts_summary(facts()) + space_->summary(facts());
   if (const auto note = facts().find(QueryFacts::note)) line += "; " + *note;
   return line;
 }

@@ -20,6 +20,10 @@
 
 namespace polyplan {
 
+namespace detail {
+class SpaceWords;  // registry/detail/space_door.hpp
+}  // namespace detail
+
 // One expansion of a planner's graph search (QueryOptions::trace), with where its vertex is.
 struct TracedExpansion {
   std::size_t step = 0, vertex = 0;
@@ -47,9 +51,9 @@ class Report {
   // One alternative per kind of configuration a planner plans over.
   using Typed = std::variant<PlanReport<ExactPoint>, PlanReport<Pose>, PlanReport<JointAngles>, PlanReport<CarState>>;
 
-  // `space`: the description of the space its planner plans in (Space::description); `columns`:
-  // the numbers of one configuration in path().
-  Report(Typed typed, std::string_view space, std::size_t columns, std::string query, std::string planner);
+  // `space`: what the door says of the space its planner plans in (registry/detail/space_door.hpp);
+  // `columns`: the numbers of one configuration in path().
+  Report(Typed typed, const detail::SpaceWords& space, std::size_t columns, std::string query, std::string planner);
 
   bool found() const;
   PlanStatus status() const;
@@ -60,7 +64,8 @@ class Report {
   const std::vector<SolutionImprovement>& improvements() const;
   const std::string& query() const { return query_; }
   const std::string& planner() const { return planner_; }
-  std::string_view space() const { return space_; }
+  // The description of the space its planner plans in (Space::description).
+  std::string_view space() const;
 
   // The path as the JSON's "path" prints it: one row per configuration ([x, y], [x, y, θ°],
   // joint angles), `path_columns()` numbers each.
@@ -90,7 +95,7 @@ class Report {
 
  private:
   Typed typed_;
-  std::string_view space_;
+  const detail::SpaceWords* space_;
   std::size_t columns_;
   std::string query_, planner_;
 };

@@ -1,4 +1,4 @@
-#include <polyplan/experiment/experiment_plots.hpp>
+#include <polyplan/draw/experiment_plots.hpp>
 
 #include <polyplan/draw/theme.hpp>
 

@@ -1,14 +1,13 @@
 #pragma once
 // What the front door knows of each configuration space (plan/planner.hpp): which problems it
 // plans, what its planners are built from, how a caller's query and a problem's own queries
-// become its Query, and how its reports are drawn. One door per space, each in its own file
-// (problem/NAME_space.cpp); `Spaces` lists them. A new kind of problem is its family, its list in
+// become its Query, and the words its listings and summary lines use. One door per space, each in its own file
+// (registry/NAME_space.cpp); `Spaces` lists them. A new kind of problem is its family, its list in
 // registry/, and here one file, one declaration and one entry of `Spaces`. Not installed.
 #include <polyplan/plan/planner.hpp>
-#include <polyplan/problem/problem.hpp>
-#include <polyplan/problem/query_spec.hpp>
-#include <polyplan/problem/report.hpp>
-#include <polyplan/problem/report_pictures.hpp>
+#include <polyplan/registry/problem.hpp>
+#include <polyplan/registry/query_spec.hpp>
+#include <polyplan/registry/report.hpp>
 
 #include <cstddef>
 #include <string>
@@ -17,38 +16,44 @@
 
 namespace polyplan::detail {
 
-template <class Space>
-class SpaceDoor {
+// What a door says of its space whatever the space's types: for listings, messages and the
+// summary line of a report (Report keeps its space's words).
+class SpaceWords {
  public:
-  virtual ~SpaceDoor() = default;
+  virtual ~SpaceWords() = default;
+  // The space's description (Space::description).
+  virtual std::string_view description() const = 0;
   // The kind of problem its planners plan, as messages name it: "World", "Arm".
   virtual std::string_view kind() const = 0;
   // How usage lines name the file of such a problem: "WORLD.json", "ARM.json".
   virtual std::string_view file() const = 0;
   // Whether a planner of this space's registry plans `problem` (a car's world: the car's space).
   virtual bool plans(const Problem& problem) const = 0;
-  // What the space's planners are built from (a world's C-space, the world, an arm problem).
-  virtual const typename Space::Problem& built_from(const Problem& problem) const = 0;
-  virtual typename Space::Query own_query(const Problem& problem, std::size_t index) const = 0;
-  // InputError naming the field when the caller's query does not fit the problem.
-  virtual typename Space::Query query(const Problem& problem, const QuerySpec& spec) const = 0;
   // InputError when `planner`, registered for this space, cannot plan this problem all the same
   // (a world that changes, for a planner of a world that stands still).
   virtual void require_fits(const Problem&, std::string_view /*planner*/) const {}
-  // InputError unless every query of the problem's own can be asked of `planner`.
-  virtual void require_plannable(const Problem& problem, std::string_view planner) const = 0;
-  // The planner a problem of this space gets when none is named.
-  virtual std::string default_planner(const Problem& problem) const = 0;
-  // The pictures of reports this space's planners made for `problem`.
-  virtual std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports,
-                                    const PictureOptions& options) const = 0;
-  // The numbers of one configuration (Report::path_columns).
-  virtual std::size_t columns(const Problem& problem) const = 0;
   // The summary line's words: what a path's steps are ("segment"), the unit of its length (" rad").
   virtual std::string_view steps() const { return "segment"; }
   virtual std::string_view unit() const { return ""; }
   // What the summary line adds for this space after the shared facts (", 2 gear change(s)").
   virtual std::string summary(const Facts&) const { return ""; }
+};
+
+template <class Space>
+class SpaceDoor : public SpaceWords {
+ public:
+  std::string_view description() const final { return Space::description; }
+  // What the space's planners are built from (a world's C-space, the world, an arm problem).
+  virtual const typename Space::Problem& built_from(const Problem& problem) const = 0;
+  virtual typename Space::Query own_query(const Problem& problem, std::size_t index) const = 0;
+  // InputError naming the field when the caller's query does not fit the problem.
+  virtual typename Space::Query query(const Problem& problem, const QuerySpec& spec) const = 0;
+  // InputError unless every query of the problem's own can be asked of `planner`.
+  virtual void require_plannable(const Problem& problem, std::string_view planner) const = 0;
+  // The planner a problem of this space gets when none is named.
+  virtual std::string default_planner(const Problem& problem) const = 0;
+  // The numbers of one configuration (Report::path_columns).
+  virtual std::size_t columns(const Problem& problem) const = 0;
 };
 
 // Each space's door, defined in its file.

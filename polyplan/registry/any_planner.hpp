@@ -5,9 +5,9 @@
 // name no space, planner or default of their own.
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/plan/planner_options.hpp>
-#include <polyplan/problem/problem.hpp>
-#include <polyplan/problem/query_spec.hpp>
-#include <polyplan/problem/report.hpp>
+#include <polyplan/registry/problem.hpp>
+#include <polyplan/registry/query_spec.hpp>
+#include <polyplan/registry/report.hpp>
 
 #include <cstddef>
 #include <memory>

@@ -1,4 +1,4 @@
-#include <polyplan/problem/detail/world_door.hpp>
+#include <polyplan/registry/detail/world_door.hpp>
 
 #include <polyplan/geometry/input_error.hpp>
 

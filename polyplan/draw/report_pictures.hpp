@@ -3,8 +3,8 @@
 // reports' paths in one picture (the C-space, the roadmap or cells a report recorded), an arm's
 // motion one picture per report (an animation, or a strobe of its configurations).
 #include <polyplan/draw/svg.hpp>
-#include <polyplan/problem/problem.hpp>
-#include <polyplan/problem/report.hpp>
+#include <polyplan/registry/problem.hpp>
+#include <polyplan/registry/report.hpp>
 
 #include <cstddef>
 #include <string>

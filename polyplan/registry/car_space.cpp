@@ -1,8 +1,7 @@
 // The front door of a car steering among polygons.
-#include <polyplan/problem/detail/world_door.hpp>
+#include <polyplan/registry/detail/world_door.hpp>
 
 #include <polyplan/car/car_facts.hpp>
-#include <polyplan/draw/car_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
 
@@ -28,11 +27,6 @@ class CarDoor final : public WorldDoor<SteeredCar> {
   }
 
   std::string default_planner(const Problem&) const override { return planners<SteeredCar>().default_planner(); }
-
-  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports,
-                            const PictureOptions&) const override {
-    return {Picture{"", draw_plan(*problem.world(), typed_reports<CarState>(reports))}};
-  }
 };
 
 }  // namespace

@@ -1,4 +1,4 @@
-#include <polyplan/problem/problem.hpp>
+#include <polyplan/registry/problem.hpp>
 
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/cspace.hpp>

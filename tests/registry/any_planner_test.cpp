@@ -3,8 +3,7 @@
 // registry's, and every report reads alike whatever the space.
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/plan/plan_json.hpp>
-#include <polyplan/problem/any_planner.hpp>
-#include <polyplan/problem/report_pictures.hpp>
+#include <polyplan/registry/any_planner.hpp>
 #include <polyplan/registry/registry.hpp>
 
 #include <nlohmann/json.hpp>
@@ -131,23 +130,6 @@ TEST(Report, ACallersQueryIsCheckedAsTheFilesQueriesAre) {
   EXPECT_THROW(grid->plan(QuerySpec{"three", numbers({0, 0, 0}), numbers({1, 1}), {}, std::nullopt}), InputError);
   EXPECT_THROW(grid->plan(QuerySpec{"both", numbers({0, 0}), numbers({1, 1}), numbers({1, 1}), std::nullopt}),
                InputError);
-}
-
-TEST(Report, PicturesAreDrawnForEveryKindOfProblem) {
-  const Problem world = read("worlds/seed004.json");
-  const Report plan = make_planner("raster", world)->plan(0, QueryOptions{true});
-  const auto world_pictures = draw_reports(world, {&plan, &plan});
-  ASSERT_EQ(world_pictures.size(), 1u);  // a world: every report in one picture
-  EXPECT_NE(world_pictures.front().drawing.str().find("<svg"), std::string::npos);
-
-  const Problem arm = read("arms/two_link_points.json");
-  const auto grid = make_planner("grid", arm);
-  const Report easy = grid->plan(0), hard = grid->plan(2);
-  const auto arm_pictures = draw_reports(arm, {&easy, &hard}, {true, 3, " · resolution 5"});
-  ASSERT_EQ(arm_pictures.size(), 2u);  // an arm: one picture per report
-  EXPECT_EQ(arm_pictures[1].query, "hard");
-  EXPECT_NE(arm_pictures[0].drawing.str().find("two_link_points.json · easy · grid · resolution 5"), std::string::npos);
-  EXPECT_THROW(draw_reports(world, {&plan, &easy}), InputError);  // reports of two spaces
 }
 
 // A value just outside an option's range, as text: below its least value, or above its greatest.

@@ -1,7 +1,7 @@
-#include <polyplan/problem/any_planner.hpp>
+#include <polyplan/registry/any_planner.hpp>
 
 #include <polyplan/geometry/input_error.hpp>
-#include <polyplan/problem/detail/space_door.hpp>
+#include <polyplan/registry/detail/space_door.hpp>
 #include <polyplan/registry/registry.hpp>
 
 #include <set>
@@ -44,7 +44,7 @@ class PlannerIn final : public AnyPlanner {
 
  private:
   Report answer(const typename Space::Query& query, const QueryOptions& options) {
-    Report report(planner_->plan(query, options), Space::description, door_.columns(problem()), query.name, name());
+    Report report(planner_->plan(query, options), door_, door_.columns(problem()), query.name, name());
     if constexpr (requires { query.goal_point; }) report.target = query.goal_point;
     return report;
   }
@@ -73,27 +73,33 @@ std::string with_article(std::string_view word) {
   return (std::string_view("AEIOU").find(word.front()) != std::string_view::npos ? "an " : "a ") + std::string(word);
 }
 
+// The door of the space a listed planner plans in.
+const detail::SpaceWords& door_of(const PlannerListing& listing) {
+  const detail::SpaceWords* door = nullptr;
+  detail::any_space([&](auto tag) {
+    door = &space_door<typename decltype(tag)::Space>();
+    return listing.space == door->description();
+  });
+  return *door;
+}
+
 // Why nothing plans `problem` by `name`: nobody registered it, or its spaces plan other problems.
 [[noreturn]] void refuse(std::string_view name, const Problem& problem) {
   std::vector<PlannerListing> here;
   const PlannerListing* registered = nullptr;
-  std::string kind;  // the problem's
+  std::string_view kind;  // the problem's
   for (const PlannerListing& listing : planner_catalog()) {
     if (listing.name == name && !registered) registered = &listing;
-    detail::any_space([&](auto tag) {
-      using Space = typename decltype(tag)::Space;
-      if (listing.space != Space::description || !space_door<Space>().plans(problem)) return false;
-      here.push_back(listing);
-      kind = space_door<Space>().kind();
-      return true;
-    });
+    if (!door_of(listing).plans(problem)) continue;
+    here.push_back(listing);
+    kind = door_of(listing).kind();
   }
   if (!registered)
     throw InputError("unknown planner \"" + std::string(name) + "\" (" + planner_names(planner_catalog()) + ")");
   // A space's own words first: a car planner for a robot that does not steer, and the reverse.
   detail::any_space([&](auto tag) {
-    using Space = typename decltype(tag)::Space;
-    if (space_door<Space>().plans(problem)) space_door<Space>().require_fits(problem, name);
+    const auto& door = space_door<typename decltype(tag)::Space>();
+    if (door.plans(problem)) door.require_fits(problem, name);
     return false;
   });
   throw InputError("planner " + std::string(name) + " plans in " + with_article(registered->kind) + " (" +
@@ -114,14 +120,12 @@ std::unique_ptr<AnyPlanner> make_planner(std::string_view name, const Problem& p
 }
 
 const PlannerListing& planner_for(std::string_view name, const Problem& problem) {
-  const PlannerListing* listing = nullptr;
-  const bool found = find_entry(name, problem, [&](const auto& entry) {
-    using Space = typename std::decay_t<decltype(entry)>::SpaceType;
-    for (const PlannerListing& l : planner_catalog())
-      if (l.name == entry.name && l.space == Space::description) listing = &l;
-  });
-  if (!found) refuse(name, problem);
-  return *listing;
+  for (const PlannerListing& listing : planner_catalog())
+    if (listing.name == name && door_of(listing).plans(problem)) {
+      door_of(listing).require_fits(problem, name);
+      return listing;
+    }
+  refuse(name, problem);
 }
 
 std::string default_planner(const Problem& problem) {

@@ -2,7 +2,7 @@
 // The front door's problem (docs/architecture.md "The front door"): anything polyplan plans for,
 // read from its file by one call — a polygon world (a translating, turning or steered robot among
 // polygons; docs/design.md "World file") or a planar arm among obstacles ("Arm file").
-// make_planner (problem/any_planner.hpp) builds a registry planner for it; nothing above this
+// make_planner (registry/any_planner.hpp) builds a registry planner for it; nothing above this
 // folder asks which kind of problem it holds.
 #include <memory>
 #include <string>

@@ -3,10 +3,8 @@
 // car_space.cpp): the world's own queries, its checks, a caller's query read as (x, y) or
 // (x, y, θ) with θ in degrees. Not installed.
 #include <polyplan/geometry/world.hpp>
-#include <polyplan/problem/detail/space_door.hpp>
+#include <polyplan/registry/detail/space_door.hpp>
 #include <polyplan/registry/world_queries.hpp>
-
-#include <variant>
 
 namespace polyplan::detail {
 
@@ -30,13 +28,5 @@ class WorldDoor : public SpaceDoor<Space> {
   }
   std::size_t columns(const Problem&) const override { return 3; }  // x, y, θ
 };
-
-// The reports' typed answers, all of one space's configuration C.
-template <class Configuration>
-std::vector<PlanReport<Configuration>> typed_reports(const std::vector<const Report*>& reports) {
-  std::vector<PlanReport<Configuration>> typed;
-  for (const Report* r : reports) typed.push_back(std::get<PlanReport<Configuration>>(r->typed()));
-  return typed;
-}
 
 }  // namespace polyplan::detail

@@ -1,7 +1,6 @@
 // The front door of a planar n-link arm.
-#include <polyplan/problem/detail/space_door.hpp>
+#include <polyplan/registry/detail/space_door.hpp>
 
-#include <polyplan/draw/arm_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
 
@@ -30,9 +29,6 @@ WorkspaceGoal hand_goal(const QuerySpec& spec) {
   return goal;
 }
 
-// The file's name without its folders, for a picture's title.
-std::string file_name(const std::string& path) { return path.substr(path.find_last_of('/') + 1); }
-
 class ArmDoor final : public SpaceDoor<PlanarArm> {
  public:
   std::string_view kind() const override { return "Arm"; }
@@ -60,20 +56,6 @@ class ArmDoor final : public SpaceDoor<PlanarArm> {
     if (problem.arm()->queries.empty()) throw InputError(problem.source() + ": no start/goal and no queries to plan");
   }
   std::string default_planner(const Problem&) const override { return planners<PlanarArm>().default_planner(); }
-
-  // One picture per report: its motion animated, or strobed.
-  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports,
-                            const PictureOptions& options) const override {
-    std::vector<Picture> pictures;
-    for (const Report* r : reports) {
-      const ArmPictureOptions arm{options.strobe ? ArmPictureOptions::Kind::strobe : ArmPictureOptions::Kind::animation,
-                                  file_name(problem.source()) + " · " + r->query() + " · " + r->planner() +
-                                      options.settings,
-                                  options.every_kth, 1, r->target};
-      pictures.push_back({r->query(), draw_plan(*problem.arm(), std::get<PlanReport<JointAngles>>(r->typed()), arm)});
-    }
-    return pictures;
-  }
 
   std::size_t columns(const Problem& problem) const override { return problem.arm()->arm.joints(); }
   std::string_view steps() const override { return "motion"; }

@@ -1,7 +1,6 @@
 // The front door of a polygon robot that translates and turns.
-#include <polyplan/problem/detail/world_door.hpp>
+#include <polyplan/registry/detail/world_door.hpp>
 
-#include <polyplan/draw/pose_svg.hpp>
 #include <polyplan/registry/registry.hpp>
 
 namespace polyplan::detail {
@@ -14,11 +13,6 @@ class RotatingDoor final : public WorldDoor<RotatingRobot> {
   Query query(const Problem&, const QuerySpec& spec) const override { return world_query(spec); }
 
   std::string default_planner(const Problem&) const override { return planners<RotatingRobot>().default_planner(); }
-
-  std::vector<Picture> draw(const Problem& problem, const std::vector<const Report*>& reports,
-                            const PictureOptions&) const override {
-    return {Picture{"", draw_plan(*problem.world(), typed_reports<Pose>(reports))}};
-  }
 
   std::string_view steps() const override { return "motion"; }
 };
