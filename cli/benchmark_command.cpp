@@ -5,6 +5,7 @@
 // problem the pictures PROBLEM-success.svg, PROBLEM-cost.svg (anytime planners), PROBLEM-time.svg
 // and PROBLEM-length.svg. --seeds and --time-limit scale an experiment down (a quick look, a test).
 #include "cli/command.hpp"
+#include "cli/option_flags.hpp"
 #include "cli/progress.hpp"
 
 #include <polyplan/draw/experiment_plots.hpp>
@@ -30,17 +31,32 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct BenchmarkCommand {
-  std::string experiment;
-  std::string out;
+// --threads, --seeds and --time-limit.
+struct BenchmarkScale {
   unsigned threads = 1;
   std::size_t seeds = 0;  // 0: all of the experiment's
   double time_limit = 0;  // 0: the experiment's
 };
+OptionTable<BenchmarkScale> benchmark_scale_table() {
+  OptionTable<BenchmarkScale> table;
+  return table
+      .add("threads", &BenchmarkScale::threads, "runs at a time, each alone in its thread (0: one per core)",
+           in_range(0, 256))
+      .add("seeds", &BenchmarkScale::seeds, "only the experiment's first N seeds (0: all)", at_least(0))
+      .add("time-limit", &BenchmarkScale::time_limit,
+           "seconds per run instead of the experiment's, its cost_times scaled alike (0: the experiment's)",
+           at_least(0));
+}
+
+struct BenchmarkCommand {
+  std::string experiment;
+  std::string out;
+  std::unique_ptr<CommandOptions<BenchmarkScale>> scale;
+};
 
 // The experiment cut to the first `seeds` seeds and given another time limit, its cost times
 // scaled with it (the curve keeps its shape).
-void scale_down(Experiment& e, const BenchmarkCommand& command) {
+void scale_down(Experiment& e, const BenchmarkScale& command) {
   if (command.seeds) {
     if (command.seeds > e.seeds.size())
       throw InputError("--seeds " + std::to_string(command.seeds) + ": the experiment has " +
@@ -77,13 +93,14 @@ void write_picture(const svg::Drawing& drawing, const fs::path& path, std::vecto
 }
 
 int run_benchmark(const BenchmarkCommand& command) {
+  const BenchmarkScale scale = command.scale->parse();
   Experiment experiment = read_experiment(command.experiment);
-  scale_down(experiment, command);
+  scale_down(experiment, scale);
   const fs::path out = command.out.empty() ? fs::path(file_part(experiment.name) + "_results") : fs::path(command.out);
   std::error_code error;
   fs::create_directories(out, error);
   if (error || !fs::is_directory(out)) throw InputError("--out " + out.string() + ": cannot make the folder");
-  const unsigned threads = command.threads ? command.threads : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = scale.threads ? scale.threads : std::max(1u, std::thread::hardware_concurrency());
 
   std::fprintf(stderr,
                "%s: %zu runs (%zu problems x %zu planner entries x %zu seeds, %g s each at most) on %u thread(s)\n",
@@ -127,13 +144,7 @@ void add_benchmark_command(CLI::App& app, Action& run) {
       "Run an experiment (problems x planner entries x seeds): OMPL benchmark log, JSON, CSV, tables and plots");
   benchmark->add_option("experiment", command->experiment, "experiment file (JSON; docs/benchmark.md)")->required();
   benchmark->add_option("--out", command->out, "folder for the results (default: NAME_results, NAME the experiment's)");
-  benchmark->add_option("--threads", command->threads, "runs at a time, each alone in its thread (0: one per core)")
-      ->capture_default_str();
-  benchmark->add_option("--seeds", command->seeds, "only the experiment's first N seeds");
-  benchmark
-      ->add_option("--time-limit", command->time_limit,
-                   "seconds per run instead of the experiment's (its cost_times scaled alike)")
-      ->check(CLI::PositiveNumber);
+  command->scale = std::make_unique<CommandOptions<BenchmarkScale>>(*benchmark, benchmark_scale_table());
   benchmark->callback([command, &run] { run = [command] { return run_benchmark(*command); }; });
 }
 

@@ -2,6 +2,7 @@
 // query of a MovingAI scenario file answered on the 8-connected grid (the benchmark's own octile
 // problem, no corner cutting), compared with the file's optimal lengths.
 #include "cli/command.hpp"
+#include "cli/option_flags.hpp"
 #include "cli/progress.hpp"
 
 #include <polyplan/geometry/input_error.hpp>
@@ -14,28 +15,28 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
 namespace polyplan::cli {
 namespace {
 
+// The search: only those whose lengths the file's optimal ones can judge, optimal ones and
+// weighted A* with its bound.
+struct GridSearch {
+  SearchOptions search;
+};
+OptionTable<GridSearch> grid_search_table() {
+  OptionTable<GridSearch> table;
+  return add_search_options(table, &GridSearch::search, "search",
+                            {{"astar", Search::astar}, {"dijkstra", Search::dijkstra}, {"wastar", Search::wastar}});
+}
+
 struct GridOptions {
   std::string map;
   std::string scenarios;
-  std::string search = "astar";
-  double weight = 1.0;
   std::string json;
+  std::unique_ptr<CommandOptions<GridSearch>> search;  // --search, --weight
 };
-
-// Only the searches whose lengths the file's optimal ones can judge: optimal ones, and weighted A*
-// with its bound.
-SearchOptions search_options(const GridOptions& options) {
-  const auto algorithm = search_from_string(options.search);
-  if (!algorithm || (*algorithm != Search::astar && *algorithm != Search::dijkstra && *algorithm != Search::wastar))
-    throw InputError("--search: unknown algorithm \"" + options.search + "\" (astar, dijkstra, wastar)");
-  if (!(std::isfinite(options.weight) && options.weight >= 1.0))
-    throw InputError("--weight: must be a finite number of at least 1, got " + std::to_string(options.weight));
-  return {*algorithm, options.weight};
-}
 
 double mean(const std::vector<double>& values) {
   double sum = 0;
@@ -49,7 +50,7 @@ nlohmann::json length_or_null(bool found, double length) {
 
 int run_grid(const GridOptions& options) {
   // Every input is read and checked (any error reported, alone on stderr) before the long work.
-  const SearchOptions search = search_options(options);
+  const SearchOptions search = options.search->parse().search;
   const auto started = std::chrono::steady_clock::now();
   const GridMap map = read_movingai_map(options.map);
   const auto scenarios = read_scenarios(options.scenarios);
@@ -128,9 +129,7 @@ void add_grid_command(CLI::App& app, Action& run) {
       app.add_subcommand("grid", "Answer a MovingAI scenario file on the 8-connected grid (octile lengths)");
   command->add_option("map", options->map, "MovingAI map (.map)")->required();
   command->add_option("scenarios", options->scenarios, "MovingAI scenarios (.scen)")->required();
-  command->add_option("--search", options->search, "astar, dijkstra or wastar")->capture_default_str();
-  command->add_option("--weight", options->weight, "Weighted A*: f = g + weight * h (weight >= 1)")
-      ->capture_default_str();
+  options->search = std::make_unique<CommandOptions<GridSearch>>(*command, grid_search_table());
   command->add_option("--json", options->json, "Write the results as JSON to this file ('-' for standard output)");
   command->callback([options, &run] { run = [options] { return run_grid(*options); }; });
 }

@@ -45,8 +45,7 @@ void write_trace(const std::string& target, const std::vector<Report>& reports) 
   trace.finish();
   if (lines == 0 && !reports.empty())
     std::cerr << "warning: --trace: " << reports.front().planner()
-              << " ran no graph search for these queries (the graph planners "
-              << "record one: visibility, visibility-full, trapezoid, voronoi, raster, gvd-grid)\n";
+              << " ran no graph search for these queries (the roadmap and raster planners record one)\n";
 }
 
 // OUT.svg for a picture of every query; OUT-NAME.svg for each query's own.
@@ -147,8 +146,9 @@ void add_command(CLI::App& app, Action& run, const std::string& name, const std:
       std::make_unique<PlannerChoice>(*plan, "--planner", std::vector<std::string>{"--roadmap", "--method"});
   // The arm grid's evaluation as the flags older scripts use.
   auto* lazy = command->planner->add_alias(*plan, "--lazy", "evaluation", "lazy",
-                                           "grid: decide cells when the search reaches them (default)");
-  command->planner->add_alias(*plan, "--eager", "evaluation", "eager", "grid: evaluate every cell before searching")
+                                           "evaluation=lazy: decide cells when the search reaches them (default)");
+  command->planner
+      ->add_alias(*plan, "--eager", "evaluation", "eager", "evaluation=eager: evaluate every cell before searching")
       ->excludes(lazy);
   plan->callback([command, &run] { run = [command] { return run_plan(*command); }; });
 }

@@ -49,10 +49,7 @@ PlannerChoice::PlannerChoice(CLI::App& command, const std::string& flag, const s
     std::string help = info.description + " [" + info.kind + "] (";
     for (std::size_t i = 0; i < owners.size(); ++i) help += (i ? ", " : "") + owners[i];
     help += ")";
-    auto value = std::make_shared<std::string>();
-    CLI::Option* option = info.flag ? command.add_flag("--" + name + "{true},--no-" + name + "{false}", *value, help)
-                                    : command.add_option("--" + name, *value, help);
-    typed_.push_back({name, value, option});
+    flags_.add(command, info, help);
   }
 }
 
@@ -95,8 +92,7 @@ OptionValues PlannerChoice::given(const PlannerListing& planner) const {
       throw InputError("--option " + assignment + ": expected NAME=VALUE");
     add(assignment.substr(0, equals), assignment.substr(equals + 1), "--option " + assignment);
   }
-  for (const Typed& t : typed_)
-    if (t.option->count() > 0) add(t.name, *t.value, "--" + t.name);
+  for (const auto& [name, value] : flags_.given()) add(name, value, "--" + name);
   for (const Alias& a : aliases_)
     if (*a.given) add(a.option, a.value, a.flag);
   return values;

@@ -5,6 +5,8 @@
 // true-or-false options). The flags come from the front door's catalog (registry/any_planner.hpp),
 // so a new planner's options reach the command line without code here; which planner a name is,
 // and the default, the door settles for the problem read.
+#include "cli/option_flags.hpp"
+
 #include <polyplan/plan/planner_options.hpp>
 #include <polyplan/registry/any_planner.hpp>
 
@@ -43,11 +45,6 @@ class PlannerChoice {
  private:
   OptionValues given(const PlannerListing& planner) const;
 
-  struct Typed {
-    std::string name;
-    std::shared_ptr<std::string> value;
-    CLI::Option* option;
-  };
   struct Alias {
     std::string option, value;
     std::shared_ptr<bool> given;
@@ -59,7 +56,7 @@ class PlannerChoice {
   OptionValues values_;
   CLI::Option* chosen_ = nullptr;
   std::vector<std::string> assignments_;
-  std::vector<Typed> typed_;
+  OptionFlags flags_;  // one per option name, whichever planners have it
   std::vector<Alias> aliases_;
 };
 

@@ -3,6 +3,7 @@
 // planner's potential for the world's goal (its start/goal), classified by the Hessian, and its
 // picture — heat map, contour lines, descent arrows, critical points.
 #include "cli/command.hpp"
+#include "cli/option_flags.hpp"
 
 #include <polyplan/draw/potential_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
@@ -11,6 +12,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <optional>
 
 namespace polyplan::cli {
@@ -18,10 +20,9 @@ namespace {
 
 struct PotentialOptions {
   std::string world;
-  double zeta = 1, d_star = 0, eta = 1, q_star = 1;
   std::string box;
-  std::size_t cells = 256;
   std::string json, svg;
+  std::unique_ptr<CommandOptions<PotentialStudyOptions>> study;  // --zeta, --d-star, --eta, --q-star, --cells
 };
 
 // "XMIN,YMIN,XMAX,YMAX".
@@ -42,12 +43,11 @@ int run_potential(const PotentialOptions& o) {
   const World world = read_world(o.world, &warnings);
   print_warnings(warnings);
   const Vec2 goal = potential_goal(world);
-  const PotentialParameters parameters{{o.zeta, o.d_star}, {o.eta, o.q_star}};
-  check_potential_inputs(parameters, o.cells, {"--zeta", "--d-star", "--eta", "--q-star", "--cells"});
+  const PotentialStudyOptions options = o.study->parse();
   const CSpace cspace(world);
   const ObstacleField field(cspace);
-  const std::optional<BoxGrid> box = o.box.empty() ? std::nullopt : std::optional(box_option(o.box, o.cells));
-  const PotentialStudy study = study_potential(cspace, field, goal, parameters, box, o.cells, "--box " + o.box);
+  const std::optional<BoxGrid> box = o.box.empty() ? std::nullopt : std::optional(box_option(o.box, options.cells));
+  const PotentialStudy study = study_potential(cspace, field, goal, options, box, "--box " + o.box);
   if (!o.json.empty()) write_json(potential_json(study), o.json);
   if (!o.svg.empty()) draw_potential_study(cspace, field, study).write(o.svg);
   if (o.json != "-") {
@@ -69,17 +69,9 @@ void add_potential_command(CLI::App& app, Action& run) {
   CLI::App* command = app.add_subcommand(
       "potential", "The critical points of the potential-field planner's potential, and its picture");
   command->add_option("world", options->world, "world file (JSON); its start/goal gives the goal")->required();
-  command->add_option("--zeta", options->zeta, "weight of the goal's attraction")->capture_default_str();
-  command
-      ->add_option("--d-star", options->d_star,
-                   "quadratic attraction within this distance, conic beyond (0: conic everywhere)")
-      ->capture_default_str();
-  command->add_option("--eta", options->eta, "weight of each obstacle's repulsion")->capture_default_str();
-  command->add_option("--q-star", options->q_star, "an obstacle farther than this does not repel")
-      ->capture_default_str();
+  options->study = std::make_unique<CommandOptions<PotentialStudyOptions>>(*command, potential_study_options());
   command->add_option("--box", options->box,
                       "the box to search, XMIN,YMIN,XMAX,YMAX (default: the bounds, or the box around the world)");
-  command->add_option("--cells", options->cells, "cells per side of the box's subdivision")->capture_default_str();
   command->add_option("--json", options->json,
                       "write the critical points as JSON to this file ('-' for standard output)");
   command->add_option("--svg", options->svg,

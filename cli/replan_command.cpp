@@ -4,6 +4,7 @@
 // --trace writes one JSON line per expansion of every replan, with the keys of search's and plan's
 // --trace; --rhs-trace (what --trace wrote before) the course's planning problem set's g/rhs tables for every pass.
 #include "cli/command.hpp"
+#include "cli/option_flags.hpp"
 #include "cli/trace_output.hpp"
 
 #include <polyplan/draw/replan_svg.hpp>
@@ -21,10 +22,22 @@
 namespace polyplan::cli {
 namespace {
 
+// --algorithm and --sensor.
+struct Replanning {
+  ReplanAlgorithm algorithm = ReplanAlgorithm::dstar_lite;
+  double sensor = 1.5;
+};
+OptionTable<Replanning> replanning_table() {
+  OptionTable<Replanning> table;
+  return table.add("algorithm", &Replanning::algorithm, "D* Lite, LPA* or A* from scratch", replan_algorithm_choices())
+      .add("sensor", &Replanning::sensor,
+           "sensor radius in cells: at least sqrt(2), so that the robot sees every cell its next move touches",
+           at_least(std::sqrt(2.0)));
+}
+
 struct ReplanCommandOptions {
   std::string map, start, goal;
-  double sensor = 1.5;
-  std::string algorithm{to_string(ReplanAlgorithm::dstar_lite)};
+  std::unique_ptr<CommandOptions<Replanning>> replanning;
   std::string json, svg, trace, rhs_trace;
   bool animate = false;
 };
@@ -195,9 +208,10 @@ class TraceWriter : public ReplanTrace {
 };
 
 int run_replan(const ReplanCommandOptions& o) {
+  const Replanning replanning = o.replanning->parse();
   ReplanOptions options;
-  options.algorithm = parse_replan_algorithm(o.algorithm, "--algorithm");
-  options.sensor_radius = o.sensor;
+  options.algorithm = replanning.algorithm;
+  options.sensor_radius = replanning.sensor;
   if (o.animate && o.svg.empty()) throw InputError("--animate: give --svg OUT.svg for the animation");
   if ((o.json == "-") + (o.trace == "-") + (o.rhs_trace == "-") > 1)
     throw InputError("--json -, --trace - and --rhs-trace -: only one of them can go to standard output");
@@ -224,12 +238,12 @@ int run_replan(const ReplanCommandOptions& o) {
   if (trace_file && !trace_file.flush()) throw InputError(o.rhs_trace + ": cannot write the trace");
   if (expansions) expansions->finish();
 
-  if (!o.json.empty()) write_json(result_json(r, o.sensor), o.json);
+  if (!o.json.empty()) write_json(result_json(r, replanning.sensor), o.json);
   if (!o.svg.empty())
     (o.animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).write(o.svg);
   if (o.json != "-" && o.trace != "-" && o.rhs_trace != "-") {
     std::printf("%s: %s after %zu moves, cost %s (%.6g), %zu replans, %zu expanded, %.3g ms replanning\n",
-                o.algorithm.c_str(), std::string(to_string(r.status)).c_str(), r.moves,
+                std::string(to_string(r.algorithm)).c_str(), std::string(to_string(r.status)).c_str(), r.moves,
                 r.traversed_cost.to_string().c_str(), r.traversed_cost.to_double(), r.replans, r.expanded,
                 r.seconds * 1e3);
   }
@@ -245,9 +259,7 @@ void add_replan_command(CLI::App& app, Action& run) {
   command->add_option("map", options->map, "MovingAI map (.map)")->required();
   command->add_option("--start", options->start, "Start cell X,Y (column, row)")->required();
   command->add_option("--goal", options->goal, "Goal cell X,Y (column, row)")->required();
-  command->add_option("--sensor", options->sensor, "Sensor radius in cells (at least √2)")->capture_default_str();
-  command->add_option("--algorithm", options->algorithm, "dstar-lite, lpastar or astar (from scratch)")
-      ->capture_default_str();
+  options->replanning = std::make_unique<CommandOptions<Replanning>>(*command, replanning_table());
   command->add_option("--json", options->json, "Write the drive as JSON to this file ('-' for standard output)");
   command->add_option("--svg", options->svg, "Draw the map, what the robot knew and its path (SVG)");
   command->add_flag("--animate", options->animate, "Make the --svg picture an animation, one frame per move");

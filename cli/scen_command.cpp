@@ -2,6 +2,7 @@
 // MovingAI scenario file, answered from one preprocessing (roadmaps/euclidean_shortest_paths.hpp)
 // by N threads, compared with reference lengths.
 #include "cli/command.hpp"
+#include "cli/option_flags.hpp"
 #include "cli/progress.hpp"
 
 #include <polyplan/io/movingai_map.hpp>
@@ -13,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <thread>
 
 #include <sys/resource.h>
@@ -22,13 +24,28 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// --threads and --table-mb.
+struct ScenBudget {
+  unsigned threads = 0;  // every core
+  std::size_t table_mb = 1024;
+};
+OptionTable<ScenBudget> scen_budget_table() {
+  OptionTable<ScenBudget> table;
+  return table
+      .add("threads", &ScenBudget::threads,
+           "threads answering the queries, sharing one preprocessing (default 0: every core)", in_range(1, 256))
+      .add("table-mb", &ScenBudget::table_mb,
+           "largest corner-to-corner distance table, and hub labels, to build, in MB (else queries search the corner "
+           "graph)",
+           in_range(0, 1 << 20));
+}
+
 struct ScenOptions {
   std::string map;
   std::string scenarios;
   std::string reference;
   std::string json;
-  unsigned threads = 0;
-  std::size_t table_mb = 1024;
+  std::unique_ptr<CommandOptions<ScenBudget>> budget;
 };
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -41,17 +58,18 @@ double peak_memory_mb() {
 
 int run_scen(const ScenOptions& options) {
   // Every input is read (and any error reported, alone on stderr) before the long work starts.
+  const ScenBudget budget = options.budget->parse();
   const auto started = Clock::now();
   const GridMap map = read_movingai_map(options.map);
   const auto scenarios = read_scenarios(options.scenarios);
   check_scenarios_match(scenarios, map.width, map.height, map.source, options.scenarios);
   std::vector<std::optional<double>> reference;
   if (!options.reference.empty()) reference = read_reference_lengths(options.reference, scenarios.size());
-  const unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
+  const unsigned threads = budget.threads ? budget.threads : std::max(1u, std::thread::hardware_concurrency());
   std::fprintf(stderr, "building the corner graph and its distance table or hub labels for %s (%dx%d)...\n",
                options.map.c_str(), map.width, map.height);
   const EuclideanShortestPaths paths(
-      map, {.table_bytes = options.table_mb << 20, .label_bytes = options.table_mb << 20, .threads = threads});
+      map, {.table_bytes = budget.table_mb << 20, .label_bytes = budget.table_mb << 20, .threads = threads});
   const double preprocess = seconds_since(started);
 
   const auto batch = Clock::now();
@@ -132,16 +150,7 @@ void add_scen_command(CLI::App& app, Action& run) {
   command->add_option("scenarios", options->scenarios, "MovingAI scenarios (.scen)")->required();
   command->add_option("--reference", options->reference, "Reference lengths (index,length CSV) to compare with");
   command->add_option("--json", options->json, "Write the results as JSON to this file ('-' for standard output)");
-  command
-      ->add_option("--threads", options->threads,
-                   "Threads answering the queries, sharing one preprocessing (default: every core)")
-      ->check(CLI::Range(1u, 256u));
-  command
-      ->add_option("--table-mb", options->table_mb,
-                   "Largest corner-to-corner distance table, and hub labels, to build, in MB (else queries search the "
-                   "corner graph)")
-      ->check(CLI::Range(std::size_t{0}, std::size_t{1} << 20));
-  // (the same budget bounds the hub labels built for maps whose table does not fit)
+  options->budget = std::make_unique<CommandOptions<ScenBudget>>(*command, scen_budget_table());
   command->callback([options, &run] { run = [options] { return run_scen(*options); }; });
 }
 

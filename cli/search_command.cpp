@@ -4,6 +4,7 @@
 // graph_vector (io/graph_reader.hpp) with the Euclidean heuristic, to watch: every expansion as a JSON line, the final
 // state or the whole search as a picture.
 #include "cli/command.hpp"
+#include "cli/option_flags.hpp"
 #include "cli/trace_output.hpp"
 
 #include <polyplan/draw/search_svg.hpp>
@@ -21,22 +22,23 @@
 namespace polyplan::cli {
 namespace {
 
+// --method and --weight (h: the Euclidean distance to the goal).
+struct GraphSearch {
+  SearchOptions search{Search::astar, 1.5};
+};
+OptionTable<GraphSearch> graph_search_table() {
+  OptionTable<GraphSearch> table;
+  return add_search_options(table, &GraphSearch::search, "method");
+}
+
 struct SearchCommandOptions {
   std::string graph;
   long long start = -1, goal = -1;
-  std::string method{to_string(Search::astar)};
-  double weight = 1.5;
+  std::unique_ptr<CommandOptions<GraphSearch>> search;
   std::string json, svg, trace;
   bool animate = false;
   SearchPictureOptions picture;
 };
-
-Search method_option(const std::string& name) {
-  if (const auto algorithm = search_from_string(name)) return *algorithm;
-  std::string known;
-  for (const auto& [value, text] : detail::search_names) known += (known.empty() ? "" : ", ") + std::string(text);
-  throw InputError("--method " + name + ": unknown method (" + known + ")");
-}
 
 DigraphVertexId vertex_option(long long index, const char* option, const GraphFile& file) {
   const std::size_t n = file.vertices.size();
@@ -47,13 +49,7 @@ DigraphVertexId vertex_option(long long index, const char* option, const GraphFi
 }
 
 SearchOptions search_options(const SearchCommandOptions& o) {
-  SearchOptions options;
-  options.algorithm = method_option(o.method);
-  if (options.algorithm == Search::wastar) {
-    if (!(std::isfinite(o.weight) && o.weight >= 1.0))
-      throw InputError("--weight " + std::to_string(o.weight) + ": weighted A* needs a finite weight >= 1");
-    options.weight = o.weight;
-  }
+  SearchOptions options = o.search->parse().search;
   options.record_expanded = true;
   options.record_trace = true;  // the picture's open list, labels and arrows come from it
   options.ties_first_discovered =
@@ -143,11 +139,7 @@ void add_search_command(CLI::App& app, Action& run) {
       ->required();
   command->add_option("--start", o->start, "Start vertex (0-based index)")->required();
   command->add_option("--goal", o->goal, "Goal vertex (0-based index)")->required();
-  command
-      ->add_option("--method", o->method,
-                   "astar, dijkstra, bfs, dfs, greedy or wastar (h: Euclidean distance to the goal)")
-      ->capture_default_str();
-  command->add_option("--weight", o->weight, "wastar's weight w in f = g + w h (finite, >= 1)")->capture_default_str();
+  o->search = std::make_unique<CommandOptions<GraphSearch>>(*command, graph_search_table());
   command->add_option("--json", o->json,
                       "Write the result as JSON to this file ('-' for standard output): found, path, cost, expanded, "
                       "generated, expansion_order, expansions");

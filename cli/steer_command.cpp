@@ -2,6 +2,7 @@
 // [--json FILE|-] [--svg OUT.svg]: the shortest steering curve between two poses (theta in
 // degrees), its word and segments, and its picture.
 #include "cli/command.hpp"
+#include "cli/option_flags.hpp"
 
 #include <polyplan/car/dubins.hpp>
 #include <polyplan/car/reeds_shepp.hpp>
@@ -11,13 +12,26 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 
 namespace polyplan::cli {
 namespace {
 
-struct SteerOptions {
-  std::string model = "dubins";
+// --model and --radius.
+struct Steering {
+  enum class Model { dubins, reeds_shepp } model = Model::dubins;
   double radius = 1;
+};
+OptionTable<Steering> steering_table() {
+  OptionTable<Steering> table;
+  return table
+      .add("model", &Steering::model, "dubins (forward only) or reeds-shepp (may reverse)",
+           Choices<Steering::Model>{{"dubins", Steering::Model::dubins}, {"reeds-shepp", Steering::Model::reeds_shepp}})
+      .add("radius", &Steering::radius, "turning radius", above(0));
+}
+
+struct SteerOptions {
+  std::unique_ptr<CommandOptions<Steering>> steering;
   std::string from, to;
   std::string json, svg;
 };
@@ -38,14 +52,17 @@ nlohmann::json steering_json(const SteeringPath& path) {
 }
 
 int run_steer(const SteerOptions& o) {
+  const Steering steering = o.steering->parse();
+  const double radius = steering.radius;
   const CarPose from = pose_option(o.from, "--from"), to = pose_option(o.to, "--to");
-  const SteeringPath path =
-      o.model == "dubins" ? shortest_dubins_path(from, to, o.radius) : shortest_reeds_shepp_path(from, to, o.radius);
+  const SteeringPath path = steering.model == Steering::Model::reeds_shepp ? shortest_reeds_shepp_path(from, to, radius)
+                                                                           : shortest_dubins_path(from, to, radius);
   if (!o.json.empty()) write_json(steering_json(path), o.json);
   char length[32];
   std::snprintf(length, sizeof length, "%.6g", path.length());
-  const std::string summary = o.model + " " + (path.word.empty() ? "(no motion)" : path.word) + ": length " + length;
-  if (!o.svg.empty()) draw_steering(path, from, to, o.radius, summary).write(o.svg);
+  const std::string summary = std::string(steering.model == Steering::Model::reeds_shepp ? "reeds-shepp" : "dubins") +
+                              " " + (path.word.empty() ? "(no motion)" : path.word) + ": length " + length;
+  if (!o.svg.empty()) draw_steering(path, from, to, radius, summary).write(o.svg);
   if (o.json != "-") std::cout << summary << '\n';
   return ok;
 }
@@ -56,10 +73,7 @@ void add_steer_command(CLI::App& app, Action& run) {
   auto options = std::make_shared<SteerOptions>();
   CLI::App* command =
       app.add_subcommand("steer", "The shortest Dubins or Reeds-Shepp curve between two poses of a car");
-  command->add_option("--model", options->model, "dubins (forward only) or reeds-shepp (may reverse)")
-      ->check(CLI::IsMember({"dubins", "reeds-shepp"}))
-      ->capture_default_str();
-  command->add_option("--radius", options->radius, "turning radius")->capture_default_str();
+  options->steering = std::make_unique<CommandOptions<Steering>>(*command, steering_table());
   command->add_option("--from", options->from, "start pose X,Y,THETA (theta in degrees)")->required();
   command->add_option("--to", options->to, "goal pose X,Y,THETA (theta in degrees)")->required();
   command->add_option("--json", options->json,

@@ -76,7 +76,7 @@ int main(int argc, char** argv) {
       for (std::size_t i = 0; i < world.queries.size(); ++i) {
         const Query& q = world.queries[i];
         PlanReport<ExactPoint> plan = planner.plan(q, QueryOptions{true});
-        plan.expanded.clear();  // ten searches' expansions would hide the cells
+        plan.recording.expanded.clear();  // ten searches' expansions would hide the cells
         const std::string cells =
             plan.facts.contains(RasterFacts::start_cell)
                 ? plan.facts.at(RasterFacts::start_cell) + ">" + plan.facts.at(RasterFacts::goal_cell)

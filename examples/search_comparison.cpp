@@ -40,7 +40,7 @@ int main(int argc, char** argv) {
     const PlanReport<ExactPoint> first = graph.plan(query, QueryOptions{true});
     svg::Drawing drawing(view_box(world, cspace));
     draw_cspace(drawing, cspace);
-    draw_graph(drawing, *first.graph);
+    draw_graph(drawing, *first.recording.graph);
     std::printf("%s: visibility graph with %lld vertices and %lld edges\n\n", world_file.c_str(),
                 static_cast<long long>(first.facts.at(RoadmapFacts::vertices)),
                 static_cast<long long>(first.facts.at(RoadmapFacts::edges)));

@@ -218,7 +218,7 @@ struct Planning {
     cells->states.reserve(static_cast<std::size_t>(grid.n * grid.n));
     for (GridCoordinate y = 0; y < grid.n; ++y)
       for (GridCoordinate x = 0; x < grid.n; ++x) cells->states.push_back(static_cast<std::uint8_t>(state_of(x, y)));
-    report.cells = std::move(cells);
+    report.recording.cells = std::move(cells);
   }
   std::string not_connected(std::size_t goals) const {
     const std::string ends = goals == 1 ? "start and goal are not connected"
@@ -303,7 +303,7 @@ void plan_on_grid_graph(Planning& p, const GridQuery& query) {
   }
   p.expanded = result.expanded;
   p.generated = result.generated;
-  for (const GridCell c : result.expanded_order) p.report.expanded.push_back(grid.configuration(g, c));
+  for (const GridCell c : result.expanded_order) p.report.recording.expanded.push_back(grid.configuration(g, c));
   if (!result.found) {
     p.report.fail(PlanStatus::not_found, p.not_connected(query.goals.size()));
     return;
@@ -509,7 +509,7 @@ void plan_compactly(Planning& p, const GridQuery& query) {
     p.report.facts.set(ArmGridFacts::grid_corridor, radius);
     p.report.facts.set(ArmGridFacts::grid_rounds, rounds);
   }
-  for (const auto& c : result.expanded_order) p.report.expanded.push_back(grid.configuration(c));
+  for (const auto& c : result.expanded_order) p.report.recording.expanded.push_back(grid.configuration(c));
   p.keep_cells([&](GridCoordinate x, GridCoordinate y) { return search.state(std::array{x, y}); });
   if (result.over_budget) {
     p.stop_at_budget("evaluating " + std::to_string(result.cells_evaluated) + " cells",

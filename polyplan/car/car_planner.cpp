@@ -37,7 +37,7 @@ PlanReport<CarState> CarPlanner::plan(const Query& query, const QueryOptions& op
   Attempt attempt;
   if (start == goal) attempt.path = {CarState{start, {}}};
   else attempt = search(start, goal, report.facts, options.record);
-  report.graph = std::move(attempt.graph);
+  report.recording.graph = std::move(attempt.graph);
   if (attempt.path.empty()) {
     report.fail(attempt.failure, attempt.why_not);
     return finish();

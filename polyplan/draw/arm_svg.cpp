@@ -982,13 +982,13 @@ svg::Drawing draw_plan(const ArmProblem& problem, const PlanReport<JointAngles>&
     picture.motion.insert(picture.motion.end(), samples.begin() + (k == 0 ? 0 : 1), samples.end());
   }
   if (report.path.size() == 1) picture.motion = report.path;
-  if (report.cells && problem.arm.joints() == 2) picture.cspace = *report.cells;
-  picture.graph = report.graph;
+  if (report.recording.cells && problem.arm.joints() == 2) picture.cspace = *report.recording.cells;
+  picture.graph = report.recording.graph;
   // The graph of a planner without a grid still shows on the C-space, among the C-obstacles.
-  if (shows_graph(picture) && !report.cells && problem.arm.joints() == 2) {
+  if (shows_graph(picture) && !report.recording.cells && problem.arm.joints() == 2) {
     picture.cspace = checked_cspace(problem, kCheckedCSpaceCells);
   }
-  if (report.cells) picture.torus = report.cells->wraps;
+  if (report.recording.cells) picture.torus = report.recording.cells->wraps;
   if (options.kind == ArmPictureOptions::Kind::animation) return animation_drawing(picture);
   const std::size_t about_a_dozen = std::max<std::size_t>(1, picture.motion.size() / 12);
   return strobe_drawing(picture, options.every_kth ? options.every_kth : about_a_dozen);

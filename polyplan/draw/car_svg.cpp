@@ -78,8 +78,8 @@ svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<CarState
   svg::Drawing d(box);
   draw_surroundings(d, world);
   for (const auto& report : reports)
-    if (report.graph) {
-      draw_tree(d, *report.graph, steering);
+    if (report.recording.graph) {
+      draw_tree(d, *report.recording.graph, steering);
       break;
     }
   const double diagonal = std::hypot(box.xmax - box.xmin, box.ymax - box.ymin);

@@ -227,28 +227,29 @@ void draw_marks(svg::Drawing& drawing, const std::vector<PlanMark<ExactPoint>>& 
 svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactPoint>>& reports,
                        const std::vector<std::string>& labels) {
   svg::Drawing drawing(view_box(cspace.world(), cspace));
-  const PlanReport<ExactPoint>* with_cells = nullptr;
-  const PlanReport<ExactPoint>* with_graph = nullptr;
-  const PlanReport<ExactPoint>* with_decomposition = nullptr;
+  const PlanRecording<ExactPoint>* with_cells = nullptr;
+  const PlanRecording<ExactPoint>* with_graph = nullptr;
+  const PlanRecording<ExactPoint>* with_decomposition = nullptr;
   for (const auto& r : reports) {
-    if (!with_cells && r.cells) with_cells = &r;
-    if (!with_graph && r.graph) with_graph = &r;
-    if (!with_decomposition && r.decomposition) with_decomposition = &r;
+    if (!with_cells && r.recording.cells) with_cells = &r.recording;
+    if (!with_graph && r.recording.graph) with_graph = &r.recording;
+    if (!with_decomposition && r.recording.decomposition) with_decomposition = &r.recording;
   }
   if (with_cells) draw_cells(drawing, *with_cells->cells);
   if (with_decomposition) draw_decomposition(drawing, *with_decomposition->decomposition);
   // A world that changed as the robot drove is drawn as it ended, where the cells show it too.
   const CSpace* drawn = &cspace;
   for (const auto& r : reports)
-    if (r.world_at_end) {
-      drawn = r.world_at_end.get();
+    if (r.recording.world_at_end) {
+      drawn = r.recording.world_at_end.get();
       break;
     }
   draw_cspace(drawing, *drawn, with_cells || with_decomposition ? FreeSpace::unfilled : FreeSpace::filled);
   if (with_graph) draw_graph(drawing, *with_graph->graph);
 
   std::vector<ExactPoint> expanded;
-  for (const auto& r : reports) expanded.insert(expanded.end(), r.expanded.begin(), r.expanded.end());
+  for (const auto& r : reports)
+    expanded.insert(expanded.end(), r.recording.expanded.begin(), r.recording.expanded.end());
   draw_points(drawing, expanded, "expanded by the search");
 
   for (const auto& r : reports)
@@ -258,7 +259,7 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   // The marks of every query together, one legend entry per word.
   std::vector<PlanMark<ExactPoint>> marks;
   for (const auto& r : reports)
-    for (const auto& mark : r.marks) {
+    for (const auto& mark : r.recording.marks) {
       auto same = std::find_if(marks.begin(), marks.end(),
                                [&](const auto& m) { return m.kind == mark.kind && m.legend == mark.legend; });
       if (same == marks.end()) marks.push_back(mark);

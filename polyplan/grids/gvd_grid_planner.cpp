@@ -96,7 +96,7 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
   Impl& r = *impl_;
   return grid_query(r.raster, [&](PlanReport<ExactPoint>& report, SearchResult<GridCell>& search) {
     r.record_facts(report.facts);
-    if (options.record) report.cells = r.cells();
+    if (options.record) report.recording.cells = r.cells();
 
     const auto snapped = snap_query(*r.cspace, r.raster, query, report);
     if (!snapped) return;

@@ -120,8 +120,8 @@ void report_search(const Raster& r, const SearchResult<GridCell>& search, PlanRe
     const auto [x, y] = xy_of(r, c);
     return r.cell_center(x, y);
   };
-  for (const GridCell c : search.expanded_order) report.expanded.push_back(centre(c));
-  report.trace = plan_trace<ExactPoint>(search.trace, centre);
+  for (const GridCell c : search.expanded_order) report.recording.expanded.push_back(centre(c));
+  report.recording.trace = plan_trace<ExactPoint>(search.trace, centre);
 }
 
 CellGrid raster_cell_grid(const Raster& r) {

@@ -87,7 +87,7 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
   report.certificate = {true, "exact path check (arrangement zone walk) of visibility-graph segments"};
   facts.set(HomotopyFacts::word, report.paths.front().label);
   if (query_options.record)
-    report.marks.push_back(
+    report.recording.marks.push_back(
         {PlanMark<ExactPoint>::Kind::lines, "h-signature rays (t1, t2, ...)", r.graph.signature().ray_segments()});
   // What the program prints after its summary line: every class, by length.
   std::string note = std::to_string(report.paths.size()) + " class(es) by length:";

@@ -168,9 +168,9 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   facts.set(QueryFacts::note, note);
   if (query_options.record) {
     using Kind = PlanMark<ExactPoint>::Kind;
-    report.marks.push_back({Kind::lines, "taut tether at the path's corners", shapes});
-    report.marks.push_back({Kind::lines, "h-signature rays (t1, t2, ...)", graph.signature().ray_segments()});
-    report.marks.push_back({Kind::points, "tether base", {{base}}});
+    report.recording.marks.push_back({Kind::lines, "taut tether at the path's corners", shapes});
+    report.recording.marks.push_back({Kind::lines, "h-signature rays (t1, t2, ...)", graph.signature().ray_segments()});
+    report.recording.marks.push_back({Kind::points, "tether base", {{base}}});
   }
   const PathCheck check = check_path(*r.cspace, report.path);
   if (!check.valid) throw std::logic_error("tether: the robot's path is not valid: " + check.reason);

@@ -198,6 +198,12 @@ std::optional<ReplanAlgorithm> replan_algorithm_from_string(std::string_view nam
   return std::nullopt;
 }
 
+std::vector<std::pair<std::string, ReplanAlgorithm>> replan_algorithm_choices() {
+  std::vector<std::pair<std::string, ReplanAlgorithm>> choices;
+  for (const auto& [value, name] : algorithm_names) choices.emplace_back(std::string(name), value);
+  return choices;
+}
+
 ReplanAlgorithm parse_replan_algorithm(std::string_view name, const std::string& what) {
   if (const auto algorithm = replan_algorithm_from_string(name)) return *algorithm;
   std::string known;

@@ -30,6 +30,8 @@ enum class ReplanAlgorithm { dstar_lite, lpastar, astar };
 // "dstar-lite", "lpastar", "astar": the command line's and the JSON's words.
 std::string_view to_string(ReplanAlgorithm);
 std::optional<ReplanAlgorithm> replan_algorithm_from_string(std::string_view);
+// Every algorithm with its word, in that order (an option's choices).
+std::vector<std::pair<std::string, ReplanAlgorithm>> replan_algorithm_choices();
 // The same, throwing InputError "`what`: unknown algorithm "NAME" (dstar-lite, lpastar, astar)".
 ReplanAlgorithm parse_replan_algorithm(std::string_view name, const std::string& what);
 

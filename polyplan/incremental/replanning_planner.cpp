@@ -212,8 +212,8 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
   r.record_facts(drive, lived, facts);
   const Phase& last = r.phases[lived - 1];
   if (options.record) {
-    report.cells = std::make_shared<const CellGrid>(raster_cell_grid(last.raster));
-    report.world_at_end = last.owned;
+    report.recording.cells = std::make_shared<const CellGrid>(raster_cell_grid(last.raster));
+    report.recording.world_at_end = last.owned;
   }
   if (drive.found) r.return_drive(query, drive, lived, report);
   else r.report_stop(drive, last, report);

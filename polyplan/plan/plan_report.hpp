@@ -199,6 +199,25 @@ struct SolutionImprovement {
   double length = 0;   // in the planner's metric, as PlanReport::length
 };
 
+// What a picture shows of how a planner answered, apart from the answer a caller branches on
+// (PlanReport): kept when the query asks for it (QueryOptions::record, QueryOptions::trace), empty
+// otherwise. The graph, the cells and the decomposition are the planner's, shared by the reports of
+// its queries.
+template <class Configuration>
+struct PlanRecording {
+  std::shared_ptr<const PlanGraph<Configuration>> graph;
+  std::vector<Configuration> expanded;  // where the search expanded, in order
+  // Every expansion of the graph search (QueryOptions::trace), by the planners that search a graph
+  // with search/'s shortest_path; empty for the others.
+  std::vector<PlanExpansion<Configuration>> trace;
+  std::shared_ptr<const CellGrid> cells;
+  std::shared_ptr<const PlanDecomposition<Configuration>> decomposition;
+  // The C-space of the world the answer ends in, when the world changed on the way (a world
+  // file's "changes"): the picture draws it instead of the problem's. Null: the problem's.
+  std::shared_ptr<const CSpace> world_at_end;
+  std::vector<PlanMark<Configuration>> marks;
+};
+
 template <class Configuration>
 struct PlanReport {
   bool found = false;
@@ -219,21 +238,11 @@ struct PlanReport {
   // answers once, when its whole query is its one solution.
   std::vector<SolutionImprovement> improvements;
 
-  // What a picture shows beyond the path, kept when the query asks for it (QueryOptions::record).
-  // The graph, the cells and the decomposition are the planner's, shared by the reports of its queries.
-  std::shared_ptr<const PlanGraph<Configuration>> graph;
-  std::vector<Configuration> expanded;  // where the search expanded, in order
-  // Every expansion of the graph search, kept when the query asks for it (QueryOptions::trace) by
-  // the planners that search a graph with search/'s shortest_path; empty for the others.
-  std::vector<PlanExpansion<Configuration>> trace;
-  std::shared_ptr<const CellGrid> cells;
-  std::shared_ptr<const PlanDecomposition<Configuration>> decomposition;
-  // The C-space of the world the answer ends in, when the world changed on the way (a world
-  // file's "changes"): the picture draws it instead of the problem's. Null: the problem's.
-  std::shared_ptr<const CSpace> world_at_end;
-  std::vector<PlanMark<Configuration>> marks;
   // Several answers, for a planner that gives several: paths[0] is `path`; empty for the others.
   std::vector<PlanPath<Configuration>> paths;
+
+  // What only a picture needs, apart from the answer: empty unless the query asks for it.
+  PlanRecording<Configuration> recording;
 
   // An answer without a path: why, as a status and as a sentence.
   void fail(PlanStatus failure, std::string why) {

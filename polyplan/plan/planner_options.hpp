@@ -61,7 +61,7 @@ using Choices = std::vector<std::pair<std::string, T>>;
 // The graph searches by the names of search/search_result.hpp's one table.
 inline Choices<Search> search_choices() {
   Choices<Search> choices;
-  for (const auto& [value, name] : detail::search_names) choices.emplace_back(std::string(name), value);
+  for (const auto& s : detail::search_names) choices.emplace_back(std::string(s.name), s.algorithm);
   return choices;
 }
 
@@ -159,14 +159,28 @@ class OptionTable {
   // A default-constructed Options with `values` set in order. Throws InputError
   // "planner NAME: option KEY=VALUE: problem" for an unknown name or a value of the wrong kind.
   Options parse(const OptionValues& values, std::string_view planner) const {
+    const std::string who = "planner " + std::string(planner) + ": option ";
+    return parse_as(
+        values, [&who](const std::string& key, const std::string& value) { return who + key + "=" + value + ": "; });
+  }
+
+  // The same for a command's own options, given as flags: InputError "--KEY VALUE: problem".
+  Options parse_flags(const OptionValues& values) const {
+    return parse_as(values,
+                    [](const std::string& key, const std::string& value) { return "--" + key + " " + value + ": "; });
+  }
+
+  // The same, each problem's message beginning with `where(KEY, VALUE)`: how the caller's users
+  // spell the option.
+  template <class Where>
+  Options parse_as(const OptionValues& values, const Where& where) const {
     Options options{};
     for (const auto& [key, value] : values) {
-      const std::string where = "planner " + std::string(planner) + ": option " + key + "=" + value + ": ";
       const Entry* entry = nullptr;
       for (const Entry& e : entries_)
         if (e.info.name == key) entry = &e;
-      if (!entry) throw InputError(where + "no such option (" + known() + ")");
-      if (auto why = entry->set(options, value)) throw InputError(where + *why);
+      if (!entry) throw InputError(where(key, value) + "no such option (" + known() + ")");
+      if (auto why = entry->set(options, value)) throw InputError(where(key, value) + *why);
     }
     return options;
   }
@@ -241,13 +255,18 @@ class OptionTable {
   std::vector<Entry> entries_;
 };
 
-// The options of a planner that searches a graph, kept in a SearchOptions member: "search" (the
-// algorithm) and "weight" (weighted A*'s w, at least 1).
+// The options of a planner that searches a graph, kept in a SearchOptions member: `name` (the
+// algorithm, "search" unless a command calls it otherwise) among `choices`, and "weight" (weighted
+// A*'s w, at least 1).
 template <class Options>
-OptionTable<Options>& add_search_options(OptionTable<Options>& table, SearchOptions Options::*member) {
+OptionTable<Options>& add_search_options(OptionTable<Options>& table, SearchOptions Options::*member,
+                                         std::string name = "search", Choices<Search> choices = search_choices()) {
+  std::string described;
+  for (const auto& [text, value] : choices)
+    described += (described.empty() ? "" : ", ") + std::string(listing_name(value));
   table.add_choice(
-      "search", "graph search: A*, Dijkstra, BFS, DFS, greedy best-first, weighted A*",
-      [member](auto& o) -> auto& { return (o.*member).algorithm; }, search_choices());
+      std::move(name), "graph search: " + described, [member](auto& o) -> auto& { return (o.*member).algorithm; },
+      std::move(choices));
   const OptionRange weights = at_least(1);
   table.add(
       "weight", "weighted A*: f = g + weight * h", "number in " + weights.text(),

@@ -97,7 +97,7 @@ bool answered_before_descent(const CSpace& cspace, const Query& query, PlanRepor
 
 void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record,
                     const std::string& why_suffix, PlanReport<ExactPoint>& report) {
-  if (record) report.expanded = descent.path;  // the picture shows the descent, wherever it stopped
+  if (record) report.recording.expanded = descent.path;  // the picture shows the descent, wherever it stopped
   report.facts.set(keys.steps, descent.path.size() - 1);
   report.facts.set(keys.stopped_at, point_text(approximate(descent.path.back())));
   if (descent.status != PlanStatus::solved) {

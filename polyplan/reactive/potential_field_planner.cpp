@@ -5,6 +5,7 @@
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/reactive/gradient_descent.hpp>
 #include <polyplan/reactive/potential_map.hpp>
+#include <polyplan/reactive/potential_study.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
 
 #include <algorithm>
@@ -85,7 +86,7 @@ PlanReport<ExactPoint> PotentialFieldPlanner::plan(const Query& query, const Que
     facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
-  if (options.record) report.cells = r.heat_map(query);
+  if (options.record) report.recording.cells = r.heat_map(query);
   if (answered_before_descent(*r.cspace, query, report)) return finish();
   Descent descent = r.descend(query);
   facts.set(PotentialFacts::gradient, std::hypot(descent.last.gradient.x, descent.last.gradient.y));
@@ -96,11 +97,7 @@ PlanReport<ExactPoint> PotentialFieldPlanner::plan(const Query& query, const Que
 
 PlannerEntry<TranslatingRobot> potential_field_planner_entry() {
   OptionTable<PotentialFieldOptions> table;
-  table.add("zeta", &PotentialFieldOptions::zeta, "weight of the goal's attraction", above(0))
-      .add("d-star", &PotentialFieldOptions::d_star,
-           "quadratic attraction within this distance of the goal, conic beyond (0: conic everywhere)", at_least(0))
-      .add("eta", &PotentialFieldOptions::eta, "weight of each obstacle's repulsion", at_least(0))
-      .add("q-star", &PotentialFieldOptions::q_star, "an obstacle farther than this does not repel", at_least(0))
+  add_potential_weights(table)
       .add("step", &PotentialFieldOptions::step, "the longest step (0: 1/200 of the world's diagonal)", at_least(0))
       .add("goal-tolerance", &PotentialFieldOptions::goal_tolerance,
            "solved within this distance of the goal (0: the step)", at_least(0))

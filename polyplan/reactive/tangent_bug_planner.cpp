@@ -183,7 +183,7 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
     if (record) facts.set(TangentBugFacts::d_followed, std::sqrt(to_double(*record)));
     facts.set(TangentBugFacts::stops, stops);
     if (query_options.record && !sensed.empty())
-      report.marks.push_back(
+      report.recording.marks.push_back(
           {PlanMark<ExactPoint>::Kind::regions, "sensed (visibility within range) at the first stops", sensed});
     report_walk(report, r.boundary.cspace(), walk, q, arrived, query_options.record, "tangent-bug");
     facts.set(QueryFacts::seconds, querying.seconds());

@@ -15,10 +15,10 @@ std::string texts(const std::vector<Point>& points) {
 
 void mark(PlanReport<ExactPoint>& report, const Walk& walk, const Query& query, bool arrived) {
   using Kind = PlanMark<ExactPoint>::Kind;
-  report.marks.push_back({Kind::lines, "m-line (start to goal)", {{query.start, query.goal}}});
-  if (!arrived) report.marks.push_back({Kind::lines, "the walk, stopped short of the goal", {walk.path}});
-  if (!walk.hits.empty()) report.marks.push_back({Kind::points, "hit points", {walk.hits}});
-  if (!walk.leaves.empty()) report.marks.push_back({Kind::points, "leave points", {walk.leaves}});
+  report.recording.marks.push_back({Kind::lines, "m-line (start to goal)", {{query.start, query.goal}}});
+  if (!arrived) report.recording.marks.push_back({Kind::lines, "the walk, stopped short of the goal", {walk.path}});
+  if (!walk.hits.empty()) report.recording.marks.push_back({Kind::points, "hit points", {walk.hits}});
+  if (!walk.leaves.empty()) report.recording.marks.push_back({Kind::points, "leave points", {walk.leaves}});
 }
 
 }  // namespace

@@ -97,15 +97,15 @@ Recording Report::recording() const {
   return std::visit(
       [](const auto& r) {
         Recording recorded;
-        if (r.graph) {
-          recorded.graph_kind = r.graph->kind;
-          recorded.graph_vertices = rows_of(r.graph->vertices);
-          recorded.graph_edges = r.graph->edges;
+        if (r.recording.graph) {
+          recorded.graph_kind = r.recording.graph->kind;
+          recorded.graph_vertices = rows_of(r.recording.graph->vertices);
+          recorded.graph_edges = r.recording.graph->edges;
         }
-        recorded.expanded = rows_of(r.expanded);
-        recorded.cells = r.cells;
-        if (r.decomposition)
-          for (const auto& cell : r.decomposition->cells) recorded.decomposition.push_back(rows_of(cell));
+        recorded.expanded = rows_of(r.recording.expanded);
+        recorded.cells = r.recording.cells;
+        if (r.recording.decomposition)
+          for (const auto& cell : r.recording.decomposition->cells) recorded.decomposition.push_back(rows_of(cell));
         return recorded;
       },
       typed_);
@@ -115,7 +115,7 @@ std::vector<TracedExpansion> Report::trace() const {
   return std::visit(
       [](const auto& r) {
         std::vector<TracedExpansion> expansions;
-        for (const auto& e : r.trace)
+        for (const auto& e : r.recording.trace)
           expansions.push_back({e.step, e.vertex, coordinates(e.at), e.g, e.h, e.f, e.backpointer, e.open});
         return expansions;
       },

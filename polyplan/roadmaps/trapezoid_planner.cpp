@@ -72,8 +72,9 @@ struct TrapezoidPlanner::Impl {
     auto result = shortest_path(roadmap, start_slot, goal_slot, searching, workspace);
     boost::clear_vertex(start_slot, roadmap);
     boost::clear_vertex(goal_slot, roadmap);
-    for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(roadmap[v].exact);
-    report.trace = plan_trace<ExactPoint>(result.trace, [this](RoadmapVertexId v) { return roadmap[v].exact; });
+    for (RoadmapVertexId v : result.expanded_order) report.recording.expanded.push_back(roadmap[v].exact);
+    report.recording.trace =
+        plan_trace<ExactPoint>(result.trace, [this](RoadmapVertexId v) { return roadmap[v].exact; });
     return result;
   }
 
@@ -145,8 +146,8 @@ PlanReport<ExactPoint> TrapezoidPlanner::plan(const Query& query, const QueryOpt
   return tallied_query<ExactPoint>([&](PlanReport<ExactPoint>& report, QueryTally& tally) {
     g.record_facts(report.facts);
     if (options.record) {
-      report.graph = g.graph();
-      report.decomposition = g.cells();
+      report.recording.graph = g.graph();
+      report.recording.decomposition = g.cells();
     }
     const std::vector<std::size_t> from = g.decomposition.cells_at(query.start),
                                    to = g.decomposition.cells_at(query.goal);

@@ -181,7 +181,7 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, SearchOptions s
   PlanReport<ExactPoint> answer = tallied_query<ExactPoint>([&](PlanReport<ExactPoint>& report, QueryTally& tally) {
     g.record_facts(report.facts);
     report.facts.set(SearchFacts::algorithm, to_string(search.algorithm));
-    if (options.record) report.graph = g.graph_picture();
+    if (options.record) report.recording.graph = g.graph_picture();
     if (!g.share_a_component(query)) return g.refuse_unconnected(query, report);  // nothing to search
 
     if (!g.triangulation.why_blocked(to_point(query.start), to_point(query.goal))) {  // start sees goal: the segment
@@ -189,8 +189,9 @@ PlanReport<ExactPoint> VisibilityGraph::plan(const Query& query, SearchOptions s
     } else {
       search.record_expanded = options.record;
       search.record_trace = options.trace;
-      const auto result = g.search_corners(query, search, report.expanded);
-      report.trace = plan_trace<ExactPoint>(result.trace, [&g](RoadmapVertexId v) { return g.roadmap[v].exact; });
+      const auto result = g.search_corners(query, search, report.recording.expanded);
+      report.recording.trace =
+          plan_trace<ExactPoint>(result.trace, [&g](RoadmapVertexId v) { return g.roadmap[v].exact; });
       tally.count(result);
       if (!result.found)  // cannot happen: one component means one path through its corners
         return report.fail(PlanStatus::no_path, "no path in the visibility graph between start and goal");

@@ -247,7 +247,7 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
   Impl& g = *impl_;
   return tallied_query<ExactPoint>([&](PlanReport<ExactPoint>& report, QueryTally& tally) {
     g.record_facts(report.facts);
-    if (options.record) report.graph = g.graph();
+    if (options.record) report.recording.graph = g.graph();
     if (auto blocked = g.cspace->query_not_free(query)) return report.fail(PlanStatus::invalid_query, *blocked);
     const auto from = g.diagram.retract(query.start), to = g.diagram.retract(query.goal);
     if (!from || !to)
@@ -273,8 +273,9 @@ PlanReport<ExactPoint> VoronoiPlanner::plan(const Query& query, const QueryOptio
     searching.record_expanded = options.record;
     searching.record_trace = options.trace;
     const auto result = shortest_path(clear.roadmap, g.start_vertex(), g.goal_vertex(), searching);
-    for (RoadmapVertexId v : result.expanded_order) report.expanded.push_back(clear.roadmap[v].exact);
-    report.trace = plan_trace<ExactPoint>(result.trace, [&clear](RoadmapVertexId v) { return clear.roadmap[v].exact; });
+    for (RoadmapVertexId v : result.expanded_order) report.recording.expanded.push_back(clear.roadmap[v].exact);
+    report.recording.trace =
+        plan_trace<ExactPoint>(result.trace, [&clear](RoadmapVertexId v) { return clear.roadmap[v].exact; });
     tally.count(result);
     if (!result.found)  // cannot happen: the bottleneck joined them
       return report.fail(PlanStatus::not_found, "no path on the Voronoi diagram at the bottleneck clearance");

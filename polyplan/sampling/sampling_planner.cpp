@@ -171,7 +171,7 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   Attempt attempt = solve(query, goals, budget, facts, options.record);
   facts.set(SamplingFacts::iterations, budget.used());
   facts.set(QueryFacts::stopped_by, budget.stopped_by());
-  report.graph = std::move(attempt.graph);
+  report.recording.graph = std::move(attempt.graph);
   if (attempt.path.empty()) {
     report.fail(PlanStatus::limit, std::move(attempt.why_not));
     return finish();

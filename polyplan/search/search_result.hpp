@@ -23,27 +23,39 @@ enum class Search {
 };
 
 namespace detail {
-inline constexpr std::array<std::pair<Search, std::string_view>, 6> search_names{{
-    {Search::astar, "astar"},
-    {Search::dijkstra, "dijkstra"},
-    {Search::bfs, "bfs"},
-    {Search::dfs, "dfs"},
-    {Search::greedy, "greedy"},
-    {Search::wastar, "wastar"},
+struct SearchName {
+  Search algorithm;
+  std::string_view name;   // the command line's and JSON's
+  std::string_view title;  // a listing's
+};
+inline constexpr std::array<SearchName, 6> search_names{{
+    {Search::astar, "astar", "A*"},
+    {Search::dijkstra, "dijkstra", "Dijkstra"},
+    {Search::bfs, "bfs", "BFS"},
+    {Search::dfs, "dfs", "DFS"},
+    {Search::greedy, "greedy", "greedy best-first"},
+    {Search::wastar, "wastar", "weighted A*"},
 }};
 }  // namespace detail
 
 // "astar", "dijkstra", "bfs", "dfs", "greedy", "wastar": the names the command line and JSON use.
 constexpr std::string_view to_string(Search algorithm) {
-  for (const auto& [value, name] : detail::search_names)
-    if (value == algorithm) return name;
+  for (const auto& s : detail::search_names)
+    if (s.algorithm == algorithm) return s.name;
+  return "unknown";
+}
+
+// "A*", "Dijkstra", ..., "weighted A*": the algorithm's name in a listing.
+constexpr std::string_view listing_name(Search algorithm) {
+  for (const auto& s : detail::search_names)
+    if (s.algorithm == algorithm) return s.title;
   return "unknown";
 }
 
 // The inverse of to_string; nullopt for any other text (case-sensitive).
 constexpr std::optional<Search> search_from_string(std::string_view name) {
-  for (const auto& [value, text] : detail::search_names)
-    if (text == name) return value;
+  for (const auto& s : detail::search_names)
+    if (s.name == name) return s.algorithm;
   return std::nullopt;
 }
 

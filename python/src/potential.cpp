@@ -6,12 +6,14 @@
 
 #include <polyplan/draw/potential_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/reactive/potential_study.hpp>
 #include <polyplan/registry/potential_json.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <optional>
 
 namespace py = pybind11;
@@ -22,7 +24,7 @@ namespace {
 std::size_t cells_of(const py::handle& value) {
   const Rational n = exact_number(value, "cells");
   if (n.get_den() != 1 || n < 0 || !n.get_num().fits_ulong_p())
-    throw InputError("cells: expected an integer from 1 to 4096, got " + std::string(py::str(value)));
+    throw InputError("cells: expected an integer, got " + std::string(py::str(value)));
   return n.get_num().get_ui();
 }
 
@@ -45,18 +47,26 @@ void bind_potential(py::module_& m) {
          const py::object& picture) {
         const std::shared_ptr<WorldHandle> world = world_of(given, "potential");
         const Vec2 goal = potential_goal(world->world());
-        const PotentialParameters parameters{{finite_number(zeta, "zeta"), finite_number(d_star, "d_star")},
-                                             {finite_number(eta, "eta"), finite_number(q_star, "q_star")}};
         const std::size_t cells = cells_of(cells_given);
-        check_potential_inputs(parameters, cells, {"zeta", "d_star", "eta", "q_star", "cells"});
-        const std::optional<BoxGrid> box = box_of(box_given, cells);
+        // Checked by the study's one table, named as Python spells them (d_star for d-star).
+        const OptionValues values{{"zeta", detail::show_number(finite_number(zeta, "zeta"))},
+                                  {"d-star", detail::show_number(finite_number(d_star, "d_star"))},
+                                  {"eta", detail::show_number(finite_number(eta, "eta"))},
+                                  {"q-star", detail::show_number(finite_number(q_star, "q_star"))},
+                                  {"cells", std::to_string(cells)}};
+        const PotentialStudyOptions options =
+            potential_study_options().parse_as(values, [](std::string key, const std::string& value) {
+              std::replace(key.begin(), key.end(), '-', '_');
+              return key + " " + value + ": ";
+            });
+        const std::optional<BoxGrid> box = box_of(box_given, options.cells);
         const bool draw = flag_of(picture, "svg");
         nlohmann::json out;
         std::string svg;
         locked(world->lock(), [&] {
           const CSpace& cspace = world->cspace();
           const ObstacleField field(cspace);
-          const PotentialStudy study = study_potential(cspace, field, goal, parameters, box, cells, "box");
+          const PotentialStudy study = study_potential(cspace, field, goal, options, box, "box");
           out = potential_json(study);
           if (draw) svg = draw_potential_study(cspace, field, study).str();
         });

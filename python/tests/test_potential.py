@@ -51,10 +51,11 @@ def test_the_picture_is_the_programs(tmp_path):
 
 
 @pytest.mark.parametrize("parameters, message", [
-    (dict(eta=-1), "eta -1: expected a finite number of at least 0"),
+    (dict(eta=-1), r"eta -1: expected a number in \[0, inf\)"),
+    (dict(d_star=-2), r"d_star -2: expected a number in \[0, inf\)"),
     (dict(q_star=float("nan")), "q_star: not a finite number"),
     (dict(zeta=True), "zeta: expected a number, got a bool"),
-    (dict(cells=0), "cells 0: expected 1 to 4096"),
+    (dict(cells=0), r"cells 0: expected a whole number in \[1, 4096\]"),
     (dict(cells=2.5), "cells: expected an integer"),
     (dict(box=(1, 0, 0, 1)), "box: expected XMIN < XMAX"),
     (dict(box=(0, 0, 1)), r"box: expected \(xmin, ymin, xmax, ymax\)"),

@@ -74,8 +74,8 @@ TEST(Grid, BadInputIsOneLineNamingTheFileAndExitTwo) {
        scen.string() + ": line 2: start (1, 0) is a blocked cell"},
       {arena_with_scen, "0\tarena.map\t49\t49\t1\t11\t1\t49\t38",
        scen.string() + ": line 2: goal (1, 49) is outside the 49x49 map"},
-      {"grid " + kArena + " --search bfs", "", "--search: unknown algorithm \"bfs\""},
-      {"grid " + kArena + " --search wastar --weight 0.5", "", "--weight: must be"},
+      {"grid " + kArena + " --search bfs", "", "--search bfs: expected one of astar|dijkstra|wastar"},
+      {"grid " + kArena + " --search wastar --weight 0.5", "", "--weight 0.5: expected a number in [1, inf)"},
   };
   for (const Case& c : cases) {
     SCOPED_TRACE(c.arguments + " " + c.scen_query);

@@ -40,8 +40,10 @@ TEST(Potential, MistakesAreOneLineAndExitTwo) {
            {"--box=1,2,3", "--box 1,2,3: expected XMIN,YMIN,XMAX,YMAX"},
            {"--box=3,0,1,1", "--box 3,0,1,1: expected XMIN < XMAX and YMIN < YMAX"},
            {"--box=0,0,x,1", "\"x\" is not a finite number"},
-           {"--eta -1", "--eta -1: expected a finite number of at least 0"},
-           {"--cells 0", "--cells 0: expected 1 to 4096"}}) {
+           {"--eta -1", "--eta -1: expected a number in [0, inf)"},
+           {"--zeta 0", "--zeta 0: expected a number in (0, inf)"},
+           {"--cells 0", "--cells 0: expected a whole number in [1, 4096]"},
+           {"--cells x", "--cells x: expected a whole number"}}) {
     SCOPED_TRACE(arguments);
     const CliRun run = run_polyplan("potential " + world("u_trap.json") + " " + arguments);
     EXPECT_EQ(run.exit_code, 2) << run.err;

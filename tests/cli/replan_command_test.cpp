@@ -161,12 +161,12 @@ TEST(Replan, RefusesBadInputInOneLine) {
     const char* expected;
   } cases[] = {
       {"replan " + closed_room + " --start 0,0 --goal 4,4 --algorithm dijkstra",
-       "--algorithm: unknown algorithm \"dijkstra\""},
+       "--algorithm dijkstra: expected one of dstar-lite|lpastar|astar"},
       {"replan " + closed_room + " --start 0 --goal 4,4", "--start 0: expected X,Y"},
       {"replan " + closed_room + " --start 6,1 --goal 4,4", "the start (6, 1) is a blocked cell"},
       {"replan " + closed_room + " --start 0,0 --goal 10,4", "the goal (10, 4) is outside the 10 x 5 map"},
       {"replan " + closed_room + " --start 0,0 --goal 4,4 --sensor 1",
-       "sensor radius: must be a finite number of at least √2"},
+       "--sensor 1: expected a number in [1.4142135623730951, inf)"},
       {"replan " + closed_room + " --start 0,0 --goal 4,4 --json - --trace -",
        "only one of them can go to standard output"},
       {"replan /nonexistent.map --start 0,0 --goal 4,4", "/nonexistent.map"},

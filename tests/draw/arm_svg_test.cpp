@@ -413,7 +413,7 @@ TEST(ArmStrobeSvg, ColoursRampFromBlueAtTheStartToRedAtTheGoal) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// A planner's graph (report.graph) under the path
+// A planner's graph (report.recording.graph) under the path
 
 std::shared_ptr<const PlanGraph<JointAngles>> graph_of(std::vector<JointAngles> vertices,
                                                        std::vector<std::pair<std::size_t, std::size_t>> edges) {
@@ -571,7 +571,7 @@ TEST(ArmGraphSvg, DrawPlanDrawsTheReportsGraphOnACheckedCSpace) {
   using Kind = polyplan::ArmPictureOptions::Kind;
   const std::string without = polyplan::draw_plan(two, report, {Kind::animation, "t"}).str();
   EXPECT_EQ(without.find("C-space"), std::string::npos);
-  report.graph = graph_of(report.path, {{0, 1}, {1, 2}});
+  report.recording.graph = graph_of(report.path, {{0, 1}, {1, 2}});
   for (const Kind kind : {Kind::animation, Kind::strobe}) {
     const std::string svg = polyplan::draw_plan(two, report, {kind, "t"}).str();
     EXPECT_EQ(nesting_error(svg), "");
@@ -584,7 +584,7 @@ TEST(ArmGraphSvg, DrawPlanDrawsTheReportsGraphOnACheckedCSpace) {
   }
   const ArmProblem three = problem_with_links({2.0, 1.5, 1.0}, 0.15);
   report.path = {{0.3, 1.0, 0.0}, {1.0, 0.5, 0.2}};
-  report.graph = graph_of(report.path, {{0, 1}});
+  report.recording.graph = graph_of(report.path, {{0, 1}});
   const std::string svg = polyplan::draw_plan(three, report, {Kind::strobe, "t"}).str();
   EXPECT_EQ(svg.find("C-space"), std::string::npos);
   EXPECT_TRUE(has_label(svg, "tree edges (1): end-effector traces"));

@@ -66,15 +66,15 @@ std::vector<Report> three_reports() {
   std::vector<Report> reports(3);
   reports[0].found = true;
   reports[0].path = {pt("0", "0"), pt("2", "1"), pt("2", "2"), pt("4", "4")};
-  reports[0].graph = roadmap();
-  reports[0].cells = cells(4, 4);
-  reports[0].expanded = {pt("0", "0"), pt("2", "1"), pt("2", "2")};
+  reports[0].recording.graph = roadmap();
+  reports[0].recording.cells = cells(4, 4);
+  reports[0].recording.expanded = {pt("0", "0"), pt("2", "1"), pt("2", "2")};
   reports[1].found = false;
   reports[1].why_not = "start and goal lie in different components of the free space";
   reports[1].path = {pt("0", "4"), pt("4", "0")};  // ignored: not found
   reports[2].found = true;
   reports[2].path = {pt("0", "0"), pt("1", "2"), pt("4", "4")};
-  reports[2].expanded = {pt("0", "0"), pt("1", "2")};
+  reports[2].recording.expanded = {pt("0", "0"), pt("1", "2")};
   return reports;
 }
 
@@ -126,7 +126,7 @@ TEST(DrawPlan, CellsReplaceTheFreeSpaceFill) {
             std::string::npos);
 
   std::vector<Report> without_cells = three_reports();
-  without_cells[0].cells.reset();
+  without_cells[0].recording.cells.reset();
   const std::string svg = draw_plan(c, without_cells).str();
   const Labels labels = legend_labels(svg);
   EXPECT_TRUE(has(labels, "free space (1 component)"));
@@ -141,7 +141,7 @@ TEST(DrawPlan, OnlyTheFirstGraphIsDrawn) {
   tree->kind = "tree";
   tree->vertices = {pt("0", "0"), pt("3", "0")};
   tree->edges = {{0, 1}};
-  reports[2].graph = tree;
+  reports[2].recording.graph = tree;
   const Labels labels = legend_labels(draw_plan(c, reports).str());
   EXPECT_TRUE(has(labels, "roadmap edges (4)"));
   EXPECT_FALSE(has(labels, "tree edges (1)"));

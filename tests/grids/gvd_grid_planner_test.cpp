@@ -227,12 +227,12 @@ TEST(GvdGridPlanner, PictureIsTheDistanceFieldWithTheGvdAndRasterPicturesKeepThe
   const CSpace cspace(world);
   GvdGridPlanner planner(cspace, GvdGridOptions{20});
   const Report plan = planner.plan({pt("5.5", "10.5"), pt("14.5", "10.5"), "q"}, QueryOptions{true});
-  ASSERT_TRUE(plan.cells);
-  EXPECT_EQ(plan.cells->values.size(), 400u);
-  EXPECT_EQ(plan.cells->values[cell(10, 10)], 3.0f);
-  EXPECT_EQ(plan.cells->state(10, 10), CellGrid::ridge);
-  EXPECT_EQ(plan.cells->state(10, 9), CellGrid::free);
-  EXPECT_EQ(plan.cells->state(10, 3), CellGrid::blocked);
+  ASSERT_TRUE(plan.recording.cells);
+  EXPECT_EQ(plan.recording.cells->values.size(), 400u);
+  EXPECT_EQ(plan.recording.cells->values[cell(10, 10)], 3.0f);
+  EXPECT_EQ(plan.recording.cells->state(10, 10), CellGrid::ridge);
+  EXPECT_EQ(plan.recording.cells->state(10, 9), CellGrid::free);
+  EXPECT_EQ(plan.recording.cells->state(10, 3), CellGrid::blocked);
   const std::string picture = draw_plan(cspace, {plan}).str();
   EXPECT_NE(picture.find(theme::heat[0]), std::string::npos);
   EXPECT_NE(picture.find(theme::heat[theme::heat_steps - 1]), std::string::npos);

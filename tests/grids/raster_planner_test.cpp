@@ -256,13 +256,13 @@ TEST(RasterPlanner, RecordsTheCellsAndTheExpandedCentresForPictures) {
   const CSpace cspace(world_from(R"({"bounds": [0, 0, 4, 4], "obstacles": [[[1, 1], [2, 1], [2, 2], [1, 2]]]})"));
   RasterPlanner planner(cspace, RasterOptions{4});
   const Report plain = planner.plan({pt("0.5", "0.5"), pt("3.5", "3.5"), "q"});
-  EXPECT_FALSE(plain.cells);
-  EXPECT_TRUE(plain.expanded.empty());
+  EXPECT_FALSE(plain.recording.cells);
+  EXPECT_TRUE(plain.recording.expanded.empty());
   const Report recorded = planner.plan({pt("0.5", "0.5"), pt("3.5", "3.5"), "q"}, QueryOptions{true});
-  ASSERT_TRUE(recorded.cells);
-  EXPECT_EQ(recorded.cells->columns, 4u);
-  EXPECT_EQ(recorded.cells->state(1, 1), CellGrid::blocked);
-  EXPECT_EQ(recorded.cells->state(0, 0), CellGrid::free);
-  EXPECT_EQ(static_cast<std::int64_t>(recorded.expanded.size()), recorded.facts.at(SearchFacts::expanded));
+  ASSERT_TRUE(recorded.recording.cells);
+  EXPECT_EQ(recorded.recording.cells->columns, 4u);
+  EXPECT_EQ(recorded.recording.cells->state(1, 1), CellGrid::blocked);
+  EXPECT_EQ(recorded.recording.cells->state(0, 0), CellGrid::free);
+  EXPECT_EQ(static_cast<std::int64_t>(recorded.recording.expanded.size()), recorded.facts.at(SearchFacts::expanded));
   EXPECT_EQ(recorded.path, plain.path);
 }

@@ -74,10 +74,11 @@ TEST(ReplanningPlanners, DriveRoundTheChangesOfTheWorld) {
   // The picture's world is the one the drive ended in: obstacle 0 gone, the door and the late wall there.
   const auto recorded =
       planners<TranslatingRobot>().find("dstar-lite")->make(cspace, {})->plan(world.queries[0], QueryOptions{true});
-  ASSERT_TRUE(recorded.world_at_end && recorded.cells);
-  EXPECT_EQ(recorded.world_at_end->world().obstacles.size(), 4u);
-  EXPECT_EQ(recorded.world_at_end->world().obstacle_names.front(), "obstacles[1]");
-  EXPECT_FALSE(plan_with("dstar-lite", CSpace(with_changes(world, 0))).world_at_end);  // a still world is the problem's
+  ASSERT_TRUE(recorded.recording.world_at_end && recorded.recording.cells);
+  EXPECT_EQ(recorded.recording.world_at_end->world().obstacles.size(), 4u);
+  EXPECT_EQ(recorded.recording.world_at_end->world().obstacle_names.front(), "obstacles[1]");
+  EXPECT_FALSE(plan_with("dstar-lite", CSpace(with_changes(world, 0)))
+                   .recording.world_at_end);  // a still world is the problem's
 }
 
 // The same drive sensing 3 cells around the robot: it learns of the closed door only in front of

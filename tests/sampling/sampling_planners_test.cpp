@@ -278,15 +278,15 @@ TEST(SamplingPlanners, ExtensionE2StepsAtMostTheStepAndE1GoesToTheSample) {
   const CSpace cspace(world);
   const Query& q = world.queries[0];
   const auto e2 = make("rrt", cspace, {{"step", "0.5"}, {"shortcut", "false"}})->plan(q, QueryOptions{true});
-  ASSERT_TRUE(e2.found && e2.graph);
-  for (const auto& [u, v] : e2.graph->edges)
-    EXPECT_LE(euclidean_length({e2.graph->vertices[u], e2.graph->vertices[v]}), 0.5 * (1 + 1e-12));
+  ASSERT_TRUE(e2.found && e2.recording.graph);
+  for (const auto& [u, v] : e2.recording.graph->edges)
+    EXPECT_LE(euclidean_length({e2.recording.graph->vertices[u], e2.recording.graph->vertices[v]}), 0.5 * (1 + 1e-12));
   for (std::size_t i = 0; i + 1 < e2.path.size(); ++i)
     EXPECT_LE(euclidean_length({e2.path[i], e2.path[i + 1]}), 0.5 * (1 + 1e-12));
   const auto e1 = make("rrt", cspace, {{"extend", "e1"}, {"shortcut", "false"}})->plan(q, QueryOptions{true});
   ASSERT_TRUE(e1.found) << e1.why_not;
-  EXPECT_EQ(e1.graph->kind, "tree");
-  EXPECT_EQ(e1.graph->vertices.size(), static_cast<std::size_t>(e1.facts.at(SamplingFacts::tree_size)));
+  EXPECT_EQ(e1.recording.graph->kind, "tree");
+  EXPECT_EQ(e1.recording.graph->vertices.size(), static_cast<std::size_t>(e1.facts.at(SamplingFacts::tree_size)));
 }
 
 TEST(SamplingPlanners, PrmKeepsItsRoadmapAcrossQueries) {
