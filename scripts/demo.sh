@@ -3,7 +3,10 @@
 # the exact shortest path of the course's C-space and visibility-graph problem set's two-part robot and draws it in seed004-plan.svg.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/setup.sh
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+scripts/setup.sh program
+# The program alone: no tests, examples or Python module, which need packages the demo does not
+# install (scripts/test.sh turns them on again in the same tree).
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_BUILD_TESTS=OFF -DPOLYPLAN_BUILD_EXAMPLES=OFF \
+  -DPOLYPLAN_PYTHON=OFF >/dev/null
 cmake --build build -j"${JOBS:-2}" --target polyplan_cli
 build/cli/polyplan plan data/worlds/seed004.json --svg seed004-plan.svg

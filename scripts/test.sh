@@ -3,9 +3,9 @@
 # then prints how long each step took.
 #
 #   scripts/test.sh          the Release build and every test (a newcomer's command)
-#   scripts/test.sh --deep   the C++ tests under AddressSanitizer + UndefinedBehaviorSanitizer instead
-#                            (Release then runs only the Python and example tests), and each
-#                            reader's libFuzzer target for FUZZ_SECONDS (15) s (.ci/run asks for this)
+#   scripts/test.sh --deep   every test under AddressSanitizer + UndefinedBehaviorSanitizer instead
+#                            (one sanitized tree, no Release one), and each reader's libFuzzer
+#                            target for FUZZ_SECONDS (15) s (.ci/run asks for this)
 #
 # SANITIZE=1|0 and FUZZ=1|0 turn either deep step on or off whatever the flag says; JOBS (2) is
 # the build's parallelism.
@@ -31,26 +31,22 @@ step() {  # step NAME COMMAND...: runs the command and keeps its time for the su
   timings+=("$name $((SECONDS - from)) s")
 }
 
+# Every part on, whatever an earlier scripts/demo.sh or scripts/python.sh left in the tree's cache.
+release="-DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_BUILD_TESTS=ON -DPOLYPLAN_BUILD_EXAMPLES=ON -DPOLYPLAN_PYTHON=ON"
 step setup scripts/setup.sh
 # The style first: it takes seconds, and a file clang-format would change fails the run.
 step format scripts/check_format.sh
 if [ "$sanitize" = 1 ]; then
-  # The sanitized build below builds and runs every C++ test; the Release tree builds and runs only
-  # what that one does not: the program, the Python module and the examples, and their tests
-  # (the C++ test programs' Release build and run, some eight minutes of the deep run, saved).
-  step build bash -c "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null && \
-    cmake --build build -j$jobs --target polyplan_cli polyplan_examples \
-      \$(cmake --build build --target help | grep -w _polyplan >/dev/null && echo _polyplan)"
-  step tests ctest --test-dir build --output-on-failure -j"$jobs" -R '^(python_|example_)'
-else
-  step build bash -c "cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null && cmake --build build -j$jobs"
-  step tests ctest --test-dir build --output-on-failure -j"$jobs"
-fi
-if [ "$sanitize" = 1 ]; then
-  step sanitizer-build bash -c "cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_SANITIZE=ON \
-    -DPOLYPLAN_BUILD_EXAMPLES=OFF >/dev/null && cmake --build build-sanitize -j$jobs"
+  # One tree, sanitized, builds and runs everything: the C++ tests, the examples, and the Python
+  # module, whose tests preload AddressSanitizer's runtime into the interpreter
+  # (python/CMakeLists.txt). No Release tree: it built the whole library a second time.
+  step sanitizer-build bash -c "cmake -S . -B build-sanitize $release -DPOLYPLAN_SANITIZE=ON >/dev/null && \
+    cmake --build build-sanitize -j$jobs"
   step sanitizer-tests env ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
+else
+  step build bash -c "cmake -S . -B build $release >/dev/null && cmake --build build -j$jobs"
+  step tests ctest --test-dir build --output-on-failure -j"$jobs"
 fi
 if [ "$fuzz" = 1 ]; then
   step fuzz scripts/fuzz.sh "${FUZZ_SECONDS:-15}"

@@ -25,7 +25,15 @@ namespace polyplan::test {
 
 inline World world_from(const std::string& json) { return parse_world(json, "test.json"); }
 
+// A world of data/worlds by its name ("u_trap").
+inline World shipped(const std::string& name) {
+  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
+}
+
 inline ExactPoint pt(const std::string& x, const std::string& y) { return {*parse_rational(x), *parse_rational(y)}; }
+
+// A query named "q" from start to goal.
+inline Query between(const ExactPoint& start, const ExactPoint& goal) { return Query{start, goal, "q"}; }
 
 // A ring rotated to start at its lexicographically smallest vertex, so that two descriptions of
 // the same cycle compare equal.

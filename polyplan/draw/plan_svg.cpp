@@ -11,8 +11,6 @@
 namespace polyplan {
 namespace {
 
-svg::Point2 point(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
-
 // Maximal horizontal runs of cells that `in_run(column, row)` accepts, as boxes: far fewer than
 // columns · rows squares.
 template <class InRun>
@@ -88,8 +86,8 @@ void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph) {
   for (std::size_t i = 0; i < graph.edges.size(); ++i) {
     const auto& [u, v] = graph.edges[i];
     if (i < graph.bends.size() && graph.bends[i])
-      arcs.push_back({point(graph.vertices[u]), point(*graph.bends[i]), point(graph.vertices[v])});
-    else edges.push_back({point(graph.vertices[u]), point(graph.vertices[v])});
+      arcs.push_back({svg_point(graph.vertices[u]), svg_point(*graph.bends[i]), svg_point(graph.vertices[v])});
+    else edges.push_back({svg_point(graph.vertices[u]), svg_point(graph.vertices[v])});
   }
   svg::Style edge_style;
   edge_style.stroke = theme::roadmap;
@@ -101,7 +99,7 @@ void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph) {
 
   std::vector<svg::Point2> vertices;
   vertices.reserve(graph.vertices.size());
-  for (const ExactPoint& p : graph.vertices) vertices.push_back(point(p));
+  for (const ExactPoint& p : graph.vertices) vertices.push_back(svg_point(p));
   svg::Style vertex_style;
   vertex_style.fill = theme::roadmap;
   vertex_style.stroke = "none";
@@ -148,7 +146,7 @@ void draw_decomposition(svg::Drawing& drawing, const PlanDecomposition<ExactPoin
     std::vector<std::vector<svg::Point2>> rings;
     for (std::size_t i = tint; i < decomposition.cells.size(); i += 2) {
       std::vector<svg::Point2> ring;
-      for (const ExactPoint& p : decomposition.cells[i]) ring.push_back(point(p));
+      for (const ExactPoint& p : decomposition.cells[i]) ring.push_back(svg_point(p));
       rings.push_back(std::move(ring));
     }
     const svg::Style style = svg::filled(theme::free_tints[tint].fill, 1.0, theme::free_tints[tint].edge, 0.5);
@@ -156,7 +154,7 @@ void draw_decomposition(svg::Drawing& drawing, const PlanDecomposition<ExactPoin
     if (tint == 0) drawing.legend(decomposition.kind + " (" + std::to_string(decomposition.cells.size()) + ")", style);
   }
   std::vector<std::pair<svg::Point2, svg::Point2>> walls;
-  for (const auto& [a, b] : decomposition.walls) walls.push_back({point(a), point(b)});
+  for (const auto& [a, b] : decomposition.walls) walls.push_back({svg_point(a), svg_point(b)});
   svg::Style wall_style;
   wall_style.stroke = theme::wall_line;
   wall_style.stroke_px = 0.9;
@@ -181,7 +179,7 @@ void draw_points(svg::Drawing& drawing, const std::vector<ExactPoint>& points, c
   if (points.empty()) return;
   std::vector<svg::Point2> dots;
   dots.reserve(points.size());
-  for (const ExactPoint& p : points) dots.push_back(point(p));
+  for (const ExactPoint& p : points) dots.push_back(svg_point(p));
   drawing.points(dots, 3.0, svg::filled(theme::expanded_fill, 1.0, theme::expanded_edge, 0.8));
   drawing.legend(label + " (" + std::to_string(points.size()) + ")",
                  svg::filled(theme::expanded_fill, 1.0, theme::expanded_edge, 0.8), svg::Swatch::dot);
@@ -199,7 +197,7 @@ void draw_marks(svg::Drawing& drawing, const std::vector<PlanMark<ExactPoint>>& 
       std::size_t count = 0;
       for (const auto& part : mark.parts) {
         parts.emplace_back();
-        for (const ExactPoint& p : part) parts.back().push_back(point(p));
+        for (const ExactPoint& p : part) parts.back().push_back(svg_point(p));
         count += part.size();
       }
       // Each kind from its own place in the palette: a sensed region is not drawn like a C-obstacle.

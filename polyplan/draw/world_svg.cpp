@@ -13,12 +13,10 @@ namespace {
 
 using Rings = std::vector<std::vector<svg::Point2>>;
 
-svg::Point2 point(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
-
 std::vector<svg::Point2> ring(const Ring& r) {
   std::vector<svg::Point2> out;
   out.reserve(r.size());
-  for (const ExactPoint& p : r) out.push_back(point(p));
+  for (const ExactPoint& p : r) out.push_back(svg_point(p));
   return out;
 }
 
@@ -100,8 +98,8 @@ void draw_queries(svg::Drawing& drawing, const World& world) {
   if (world.queries.empty()) return;
   std::vector<svg::Point2> starts, goals;
   for (const Query& q : world.queries) {
-    starts.push_back(point(q.start));
-    goals.push_back(point(q.goal));
+    starts.push_back(svg_point(q.start));
+    goals.push_back(svg_point(q.goal));
   }
   const svg::Style start = filled(theme::start, 1.0, "#fff", 1.5);
   const svg::Style goal = filled(theme::goal, 1.0, "#fff", 1.5);
@@ -161,11 +159,13 @@ void draw_free_space(svg::Drawing& drawing, const CSpace& cspace) {
 
 }  // namespace
 
+svg::Point2 svg_point(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
+
 svg::Box2 view_box(const World& world, const CSpace& cspace) {
   if (world.bounds) return to_box(*world.bounds);
   svg::BoxAround box;
   auto extend = [&](const ExactPoint& p) {
-    const svg::Point2 q = point(p);
+    const svg::Point2 q = svg_point(p);
     box.add(q.x, q.y);
   };
   // Holes lie inside their outer ring, so outer rings suffice.
@@ -177,7 +177,7 @@ svg::Box2 view_box(const World& world, const CSpace& cspace) {
   for (const Query& q : world.queries)
     for (const ExactPoint& p : {q.start, q.goal}) {
       extend(p);
-      around_queries.add(point(p).x, point(p).y);
+      around_queries.add(svg_point(p).x, svg_point(p).y);
     }
   if (!world.queries.empty()) {
     for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start))
@@ -252,7 +252,7 @@ void draw_path(svg::Drawing& drawing, const std::vector<ExactPoint>& path, const
   if (path.empty()) return;
   std::vector<svg::Point2> line;
   line.reserve(path.size());
-  for (const ExactPoint& p : path) line.push_back(point(p));
+  for (const ExactPoint& p : path) line.push_back(svg_point(p));
   svg::Style style;
   style.stroke = colour;
   style.stroke_px = 2.5;

@@ -11,6 +11,10 @@
 
 namespace polyplan {
 
+// Where a picture puts an exact point: its coordinates rounded to doubles (a picture's, never a
+// decision's).
+svg::Point2 svg_point(const ExactPoint& p);
+
 // The world's bounds, or else the box around the obstacles, the C-obstacles, the starts and goals
 // and the robot at the first start ({0, 0, 1, 1} when there is nothing at all), cut to twice the
 // queries' extent round them.

@@ -3,6 +3,8 @@
 // orientation, n links by damped least squares (and FABRIK), joint limits kept, and an unreachable
 // target answered with the arm stretched towards it. Every solution's error is measured here by
 // forward kinematics.
+#include "arm/arm_fixtures.hpp"
+
 #include <polyplan/arm/arm.hpp>
 #include <polyplan/arm/inverse_kinematics.hpp>
 
@@ -14,11 +16,7 @@
 namespace polyplan {
 namespace {
 
-Arm arm_of(std::vector<double> links) {
-  Arm arm;
-  arm.links = std::move(links);
-  return arm;
-}
+using test::arm_of;
 
 double error_of(const Arm& arm, const JointAngles& q, Eigen::Vector2d target) {
   return (joint_positions(arm, q).back() - target).norm();

@@ -9,7 +9,7 @@
 namespace polyplan {
 namespace {
 
-const std::string kName = std::string(POLYPLAN_SOURCE_DIR) + "/data/experiments/test.json";
+const std::string kExperimentName = std::string(POLYPLAN_SOURCE_DIR) + "/data/experiments/test.json";
 
 Experiment small() {
   return parse_experiment(R"({"name": "small",
@@ -18,7 +18,7 @@ Experiment small() {
       "planners": [{"name": "rrt", "planner": "rrt", "options": {"iterations": 20000}},
                    {"name": "connect", "planner": "rrtconnect"}],
       "seeds": [1, 2, 3], "time_limit": 30, "cost_times": [10, 30]})",
-                          kName);
+                          kExperimentName);
 }
 
 TEST(ExperimentRunner, RunsEveryCellOnceInCellOrder) {

@@ -68,7 +68,7 @@ Report plan_once(const CSpace& cspace, std::size_t n, const Query& query,
   return RasterPlanner(cspace, RasterOptions{n, connectivity, {}}).plan(query);
 }
 
-std::string cell(std::size_t x, std::size_t y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
+std::string cell_text(std::size_t x, std::size_t y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
 
 }  // namespace
 
@@ -100,8 +100,8 @@ TEST_F(SphereWorld, JustRightResolutionFindsCheckedPathsWithinTwentyPercentOfThe
     const auto start_cell = planner.nearest_free_cell(q.start), goal_cell = planner.nearest_free_cell(q.goal);
     ASSERT_TRUE(start_cell && goal_cell);
     EXPECT_FALSE(planner.raster().is_blocked(start_cell->first, start_cell->second));
-    EXPECT_EQ(plan.facts.at(RasterFacts::start_cell), cell(start_cell->first, start_cell->second));
-    EXPECT_EQ(plan.facts.at(RasterFacts::goal_cell), cell(goal_cell->first, goal_cell->second));
+    EXPECT_EQ(plan.facts.at(RasterFacts::start_cell), cell_text(start_cell->first, start_cell->second));
+    EXPECT_EQ(plan.facts.at(RasterFacts::goal_cell), cell_text(goal_cell->first, goal_cell->second));
   }
 }
 

@@ -61,7 +61,7 @@ std::string map_text(int width, int height, const std::string& rows) {
 }
 
 // The message for the map file `text`, after "<its path>: ", which it must start with.
-std::string problem_with(const std::string& name, const std::string& text) {
+std::string map_problem(const std::string& name, const std::string& text) {
   const std::string path = write_temp_file(name, text);
   const std::string message = input_error_of([&] { read_movingai_map(path); });
   return message.rfind(path + ": ", 0) == 0 ? message.substr(path.size() + 2) : "not naming the file: " + message;
@@ -198,40 +198,39 @@ TEST(MovingAIMap, MissingFile) {
 }
 
 TEST(MovingAIMap, MalformedHeaders) {
-  EXPECT_EQ(problem_with("height_word.map", "type octile\nheight two\nwidth 3\nmap\n...\n...\n"),
+  EXPECT_EQ(map_problem("height_word.map", "type octile\nheight two\nwidth 3\nmap\n...\n...\n"),
             "line 2: expected the header lines 'type', 'height H', 'width W', 'map', got \"height two\"");
-  EXPECT_EQ(problem_with("unknown_line.map", "type octile\nheight 1\ndepth 3\nwidth 1\nmap\n.\n"),
+  EXPECT_EQ(map_problem("unknown_line.map", "type octile\nheight 1\ndepth 3\nwidth 1\nmap\n.\n"),
             "line 3: expected the header lines 'type', 'height H', 'width W', 'map', got \"depth 3\"");
-  EXPECT_EQ(problem_with("no_map_line.map", "type octile\nheight 1\nwidth 1\n"), "line 3: missing the 'map' line");
+  EXPECT_EQ(map_problem("no_map_line.map", "type octile\nheight 1\nwidth 1\n"), "line 3: missing the 'map' line");
   const std::string size = "width and height must be positive, with at most 67108864 cells, got ";
-  EXPECT_EQ(problem_with("zero_height.map", "type octile\nheight 0\nwidth 3\nmap\n"), "line 4: " + size + "3x0");
-  EXPECT_EQ(problem_with("no_width.map", "type octile\nheight 2\nmap\n..\n..\n"), "line 3: " + size + "0x2");
-  EXPECT_EQ(problem_with("partial_number.map", "type octile\nheight 1x\nwidth 1\nmap\n.\n"),
+  EXPECT_EQ(map_problem("zero_height.map", "type octile\nheight 0\nwidth 3\nmap\n"), "line 4: " + size + "3x0");
+  EXPECT_EQ(map_problem("no_width.map", "type octile\nheight 2\nmap\n..\n..\n"), "line 3: " + size + "0x2");
+  EXPECT_EQ(map_problem("partial_number.map", "type octile\nheight 1x\nwidth 1\nmap\n.\n"),
             "line 2: expected the header lines 'type', 'height H', 'width W', 'map', got \"height 1x\"");
 }
 
 // A 60-byte map whose header said 100000 x 100000 allocated 1.2 GB before it found no rows.
 TEST(MovingAIMap, AHugeHeaderIsRefusedBeforeAllocating) {
   const std::string size = "width and height must be positive, with at most 67108864 cells, got ";
-  EXPECT_EQ(problem_with("huge.map", "type octile\nheight 100000\nwidth 100000\nmap\n"),
+  EXPECT_EQ(map_problem("huge.map", "type octile\nheight 100000\nwidth 100000\nmap\n"),
             "line 4: " + size + "100000x100000");
-  EXPECT_EQ(problem_with("overflow.map", "type octile\nheight 4294967297\nwidth 4294967297\nmap\n"),
+  EXPECT_EQ(map_problem("overflow.map", "type octile\nheight 4294967297\nwidth 4294967297\nmap\n"),
             "line 4: " + size + "4294967297x4294967297");
 }
 
 TEST(MovingAIMap, UnknownTerrainIsAnError) {
-  EXPECT_EQ(problem_with("unknown.map", map_text(3, 2, "...\n.x.\n")),
+  EXPECT_EQ(map_problem("unknown.map", map_text(3, 2, "...\n.x.\n")),
             "line 6: row 1, column 1: unknown terrain 'x' (free: . G; blocked: @ O T S W)");
-  EXPECT_EQ(problem_with("tab.map", map_text(3, 1, "..\t\n")),
+  EXPECT_EQ(map_problem("tab.map", map_text(3, 1, "..\t\n")),
             "line 5: row 0, column 2: unknown terrain 0x09 (free: . G; blocked: @ O T S W)");
 }
 
 TEST(MovingAIMap, MalformedRows) {
-  EXPECT_EQ(problem_with("short_row.map", map_text(3, 2, "...\n..\n")), "line 6: row 1 has 2 cells, the header says 3");
-  EXPECT_EQ(problem_with("long_row.map", map_text(3, 2, "....\n...\n")),
-            "line 5: row 0 has 4 cells, the header says 3");
-  EXPECT_EQ(problem_with("missing_row.map", map_text(2, 3, "..\n..\n")),
+  EXPECT_EQ(map_problem("short_row.map", map_text(3, 2, "...\n..\n")), "line 6: row 1 has 2 cells, the header says 3");
+  EXPECT_EQ(map_problem("long_row.map", map_text(3, 2, "....\n...\n")), "line 5: row 0 has 4 cells, the header says 3");
+  EXPECT_EQ(map_problem("missing_row.map", map_text(2, 3, "..\n..\n")),
             "line 6: the map has 2 rows, the header says 3");
-  EXPECT_EQ(problem_with("no_rows.map", map_text(2, 1, "")), "line 4: the map has 0 rows, the header says 1");
-  EXPECT_EQ(problem_with("extra_row.map", map_text(2, 1, "..\n..\n")), "line 6: more rows than the header's 1");
+  EXPECT_EQ(map_problem("no_rows.map", map_text(2, 1, "")), "line 4: the map has 0 rows, the header says 1");
+  EXPECT_EQ(map_problem("extra_row.map", map_text(2, 1, "..\n..\n")), "line 6: more rows than the header's 1");
 }

@@ -15,7 +15,7 @@ using polyplan::test::write_temp_file;
 namespace {
 
 // The message for the WKT file `text`, read for the world file "w.json".
-std::string problem_with(const std::string& file_name, const std::string& text) {
+std::string wkt_problem(const std::string& file_name, const std::string& text) {
   const std::string path = write_temp_file(file_name, text);
   return input_error_of([&] { read_wkt_obstacles(path, "w.json"); });
 }
@@ -56,31 +56,31 @@ TEST(WktReader, CoordinatesAreTheDoublesExactValues) {
 
 TEST(WktReader, BlankLinesAreSkippedButCounted) {
   const std::string text = "\n  \nPOLYGON((0 0,1 0,1 1,0 0))\n\nPOLYGON((5 5,6 5,6 6,5 5))\nLINESTRING(0 0,1 1)\n";
-  EXPECT_EQ(problem_with("counted.wkt", text),
+  EXPECT_EQ(wkt_problem("counted.wkt", text),
             prefix("counted.wkt") + "line 6: cannot read WKT: expected POLYGON or MULTIPOLYGON, got \"LINESTRING\"");
 }
 
 TEST(WktReader, UnknownTypeIsNamed) {
-  EXPECT_EQ(problem_with("line.wkt", "LINESTRING(0 0,1 1,2 0)\n"),
+  EXPECT_EQ(wkt_problem("line.wkt", "LINESTRING(0 0,1 1,2 0)\n"),
             prefix("line.wkt") + "line 1: cannot read WKT: expected POLYGON or MULTIPOLYGON, got \"LINESTRING\"");
-  EXPECT_EQ(problem_with("words.wkt", "this is not WKT\n"),
+  EXPECT_EQ(wkt_problem("words.wkt", "this is not WKT\n"),
             prefix("words.wkt") + "line 1: cannot read WKT: expected POLYGON or MULTIPOLYGON, got \"THIS\"");
 }
 
 TEST(WktReader, MalformedPolygon) {
   const std::string malformed = "line 1: cannot read WKT: malformed ";
-  EXPECT_EQ(problem_with("truncated.wkt", "POLYGON((4 4,6 4,6 6,4\n"),
+  EXPECT_EQ(wkt_problem("truncated.wkt", "POLYGON((4 4,6 4,6 6,4\n"),
             prefix("truncated.wkt") + malformed + "POLYGON: expected a number, got the end of the file");
-  EXPECT_EQ(problem_with("letters.wkt", "POLYGON((0 0,a 0,1 1,0 0))\n"),
+  EXPECT_EQ(wkt_problem("letters.wkt", "POLYGON((0 0,a 0,1 1,0 0))\n"),
             prefix("letters.wkt") + malformed + "POLYGON: expected a number, got \"a\"");
-  EXPECT_EQ(problem_with("multi.wkt", "MULTIPOLYGON(((0 0,1 0,1 1,0 0))\n"),
+  EXPECT_EQ(wkt_problem("multi.wkt", "MULTIPOLYGON(((0 0,1 0,1 1,0 0))\n"),
             prefix("multi.wkt") + malformed + "MULTIPOLYGON: expected ')', got the end of the file");
-  EXPECT_EQ(problem_with("z.wkt", "POLYGON((0 0 1,1 0 1,1 1 1,0 0 1))\n"),
+  EXPECT_EQ(wkt_problem("z.wkt", "POLYGON((0 0 1,1 0 1,1 1 1,0 0 1))\n"),
             prefix("z.wkt") + malformed + "POLYGON: a point has more than two coordinates");
 }
 
 TEST(WktReader, EmptyMultipolygonIsMalformed) {
-  EXPECT_EQ(problem_with("empty_multi.wkt", "MULTIPOLYGON EMPTY\n"),
+  EXPECT_EQ(wkt_problem("empty_multi.wkt", "MULTIPOLYGON EMPTY\n"),
             prefix("empty_multi.wkt") + "line 1: cannot read WKT: malformed MULTIPOLYGON: EMPTY holds no polygon");
 }
 
@@ -88,25 +88,25 @@ TEST(WktReader, EmptyMultipolygonIsMalformed) {
 // point of an empty ring.
 TEST(WktReader, EmptyRingsAreMalformedNotACrash) {
   const std::string malformed = "line 1: cannot read WKT: malformed ";
-  EXPECT_EQ(problem_with("empty.wkt", "POLYGON EMPTY\n"),
+  EXPECT_EQ(wkt_problem("empty.wkt", "POLYGON EMPTY\n"),
             prefix("empty.wkt") + malformed + "POLYGON: EMPTY holds no polygon");
-  EXPECT_EQ(problem_with("empty_ring.wkt", "POLYGON(())\n"),
+  EXPECT_EQ(wkt_problem("empty_ring.wkt", "POLYGON(())\n"),
             prefix("empty_ring.wkt") + malformed + "POLYGON: empty ring");
-  EXPECT_EQ(problem_with("empty_hole.wkt", "POLYGON((0 0,4 0,4 4,0 0),())\n"),
+  EXPECT_EQ(wkt_problem("empty_hole.wkt", "POLYGON((0 0,4 0,4 4,0 0),())\n"),
             prefix("empty_hole.wkt") + malformed + "POLYGON: empty ring");
-  EXPECT_EQ(problem_with("empty_multi_ring.wkt", "MULTIPOLYGON((()))\n"),
+  EXPECT_EQ(wkt_problem("empty_multi_ring.wkt", "MULTIPOLYGON((()))\n"),
             prefix("empty_multi_ring.wkt") + malformed + "MULTIPOLYGON: empty ring");
 }
 
 TEST(WktReader, NotANumberAndInfinityAreRefused) {
   const std::string malformed = "line 1: cannot read WKT: malformed POLYGON: ";
-  EXPECT_EQ(problem_with("nan.wkt", "POLYGON((0 0,NaN 0,1 1,0 0))\n"),
+  EXPECT_EQ(wkt_problem("nan.wkt", "POLYGON((0 0,NaN 0,1 1,0 0))\n"),
             prefix("nan.wkt") + malformed + "expected a number, got \"NaN\"");
-  EXPECT_EQ(problem_with("inf.wkt", "POLYGON((0 0,1 0,1 Inf,0 0))\n"),
+  EXPECT_EQ(wkt_problem("inf.wkt", "POLYGON((0 0,1 0,1 Inf,0 0))\n"),
             prefix("inf.wkt") + malformed + "expected a number, got \"Inf\"");
-  EXPECT_EQ(problem_with("minus_inf.wkt", "POLYGON((0 0,1 0,1 -inf,0 0))\n"),
+  EXPECT_EQ(wkt_problem("minus_inf.wkt", "POLYGON((0 0,1 0,1 -inf,0 0))\n"),
             prefix("minus_inf.wkt") + malformed + "number \"-\": not a number");
-  EXPECT_NE(problem_with("huge.wkt", "POLYGON((0 0,1e160 0,1 1,0 0))\n")
+  EXPECT_NE(wkt_problem("huge.wkt", "POLYGON((0 0,1e160 0,1 1,0 0))\n")
                 .find("malformed POLYGON: number \"1e160\": overflows the supported range"),
             std::string::npos);
 }
@@ -114,7 +114,7 @@ TEST(WktReader, NotANumberAndInfinityAreRefused) {
 TEST(WktReader, AGeometryMaySpanLines) {
   const std::string path = write_temp_file("lines.wkt", "POLYGON(\n (0 0, 1 0,\n  1 1, 0 0)\n)\n");
   ASSERT_EQ(read_wkt_obstacles(path, "w.json").size(), 1u);
-  EXPECT_EQ(problem_with("late.wkt", "POLYGON((0 0,1 0,1 1,0 0))\n\nPOLYGON(\n(0 0,\nx 1))\n"),
+  EXPECT_EQ(wkt_problem("late.wkt", "POLYGON((0 0,1 0,1 1,0 0))\n\nPOLYGON(\n(0 0,\nx 1))\n"),
             prefix("late.wkt") + "line 3: cannot read WKT: malformed POLYGON: expected a number, got \"x\"");
 }
 
@@ -125,9 +125,9 @@ TEST(WktReader, MissingFile) {
 }
 
 TEST(WktReader, FileOfBlankLinesHoldsNoPolygon) {
-  EXPECT_EQ(problem_with("blank.wkt", "\n   \n\t\n"),
+  EXPECT_EQ(wkt_problem("blank.wkt", "\n   \n\t\n"),
             prefix("blank.wkt") + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
-  EXPECT_EQ(problem_with("nothing.wkt", ""),
+  EXPECT_EQ(wkt_problem("nothing.wkt", ""),
             prefix("nothing.wkt") + "cannot read WKT: the file holds no POLYGON or MULTIPOLYGON");
 }
 

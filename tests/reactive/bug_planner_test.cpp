@@ -1,6 +1,8 @@
 // Bug1 and Bug2 on the exact C-space: round the course's planning problem set's wall and out of the U-shaped trap,
 // paths checked exactly, hit and leave points where the geometry puts them, the distance within the textbook's bound
 // computed here from the obstacle's own perimeter; unreachable goals no_path.
+#include "world_fixtures.hpp"
+
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
@@ -15,9 +17,7 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) {
-  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
-}
+using test::shipped;
 
 PlanReport<ExactPoint> walk(const char* bug, const CSpace& cspace, const Query& q) {
   return planners<TranslatingRobot>().find(bug)->make(cspace, {})->plan(q);

@@ -16,9 +16,7 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) {
-  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
-}
+using test::shipped;
 
 TEST(CriticalPoints, SeedTwosWallHasOneMinimum) {
   const CSpace cspace(shipped("seed002_wall"));

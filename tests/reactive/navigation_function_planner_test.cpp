@@ -1,6 +1,8 @@
 // The navigation function of a sphere world: through the gap between two discs where the potential
 // field stops, and every query of the course's graph-search homework's sphere world, paths checked exactly and the κ
 // used reported; worlds that are not sphere worlds said so; a bad κ named.
+#include "world_fixtures.hpp"
+
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
@@ -15,9 +17,7 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) {
-  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
-}
+using test::shipped;
 
 PlanReport<ExactPoint> plan_with(const char* planner, const CSpace& cspace, const Query& q,
                                  const OptionValues& options = {}) {

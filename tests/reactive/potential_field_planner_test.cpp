@@ -1,6 +1,8 @@
 // The potential-field planner on the exact C-space: solved where the field leads to the goal (the
 // path re-checked exactly), local_minimum in the U-shaped trap and at the course's planning problem set's minimum
 // beside the infinite wall, no_path proved between components, the step limit, bad options named.
+#include "world_fixtures.hpp"
+
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
@@ -18,9 +20,7 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) {
-  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
-}
+using test::shipped;
 
 PlanReport<ExactPoint> descend(const CSpace& cspace, const Query& query, const OptionValues& options = {}) {
   return planners<TranslatingRobot>().find("potential-field")->make(cspace, options)->plan(query);

@@ -2,6 +2,8 @@
 // the one open at the top: the touch-sensing robot leaves at (1, √3), the far-seeing one takes the corner), out of the
 // U-shaped trap, the spiral and the maze, an unreachable goal inside a closed ring; the visibility polygon's windows
 // where the geometry puts them; the sensed regions in the picture.
+#include "world_fixtures.hpp"
+
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
@@ -21,9 +23,7 @@
 namespace polyplan {
 namespace {
 
-World shipped(const std::string& name) {
-  return read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json");
-}
+using test::shipped;
 
 PlanReport<ExactPoint> tangent_bug(const CSpace& cspace, const Query& q, const std::string& range,
                                    bool record = false) {

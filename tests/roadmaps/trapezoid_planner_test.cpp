@@ -16,12 +16,11 @@
 #include <sstream>
 
 using namespace polyplan;
+using polyplan::test::between;
 using polyplan::test::pt;
 using polyplan::test::world_from;
 
 namespace {
-
-Query between(const ExactPoint& start, const ExactPoint& goal) { return Query{start, goal, "q"}; }
 
 const char* kSquareInABox = R"({"bounds": [0, 0, 10, 10], "obstacles": [[[4, 4], [6, 4], [6, 6], [4, 6]]]})";
 

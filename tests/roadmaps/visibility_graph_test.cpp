@@ -17,6 +17,7 @@
 #include <sstream>
 
 using namespace polyplan;
+using polyplan::test::between;
 using polyplan::test::pt;
 using polyplan::test::world_from;
 
@@ -27,8 +28,6 @@ double length(const ExactPoint& a, const ExactPoint& b) {
 }
 
 using Report = PlanReport<ExactPoint>;
-
-Query between(const ExactPoint& start, const ExactPoint& goal) { return Query{start, goal, "q"}; }
 
 double path_length(const std::vector<ExactPoint>& path) {
   double total = 0;

@@ -21,6 +21,7 @@
 #include <sstream>
 
 using namespace polyplan;
+using polyplan::test::between;
 using polyplan::test::pt;
 using polyplan::test::world_from;
 
@@ -28,8 +29,6 @@ namespace {
 
 using Traits = CGAL::Gps_circle_segment_traits_2<detail::Kernel>;
 using OffsetSet = CGAL::General_polygon_set_2<Traits>;
-
-Query between(const ExactPoint& start, const ExactPoint& goal) { return Query{start, goal, "q"}; }
 
 // The exact distance from p to the free space's boundary (C-obstacles and walls), rounded once.
 double exact_clearance(const CSpace& c, const ExactPoint& p) {

@@ -20,9 +20,9 @@
 namespace polyplan {
 namespace {
 
-const double sqrt2 = std::sqrt(2.0);
+const double root2 = std::sqrt(2.0);
 
-std::vector<GridAxis> plane(int w, int h) { return {{w, AxisKind::bounded, 1.0}, {h, AxisKind::bounded, 1.0}}; }
+std::vector<GridAxis> plane_axes(int w, int h) { return {{w, AxisKind::bounded, 1.0}, {h, AxisKind::bounded, 1.0}}; }
 
 // A w x h bitmap from rows of text, '.' free and '@' blocked, row 0 = y 0.
 std::vector<std::uint8_t> bitmap(const std::vector<std::string>& rows) {
@@ -43,23 +43,24 @@ std::set<GridCell> neighbours(const GridGraph& g, GridCell c) {
 
 TEST(GridGraph, EightConnectedNeverCutsACorner) {
   // (1,1) in the middle; (2,1) blocked: moves to (2,0) and (2,2) would brush it.
-  const GridGraph g(plane(3, 3), Connectivity::full, StepCost::euclidean, bitmap({"...", "..@", "..."}));
+  const GridGraph g(plane_axes(3, 3), Connectivity::full, StepCost::euclidean, bitmap({"...", "..@", "..."}));
   const GridCell centre = g.cell({1, 1});
   EXPECT_EQ(neighbours(g, centre),
             (std::set<GridCell>{g.cell({0, 0}), g.cell({1, 0}), g.cell({0, 1}), g.cell({0, 2}), g.cell({1, 2})}));
   EXPECT_EQ(out_degree(g.cell({0, 0}), g), 3u);  // a corner of a bounded grid
-  const GridGraph four(plane(3, 3), Connectivity::axis_aligned, StepCost::euclidean, bitmap({"...", "..@", "..."}));
+  const GridGraph four(plane_axes(3, 3), Connectivity::axis_aligned, StepCost::euclidean,
+                       bitmap({"...", "..@", "..."}));
   EXPECT_EQ(neighbours(four, centre), (std::set<GridCell>{four.cell({1, 0}), four.cell({0, 1}), four.cell({1, 2})}));
 }
 
 TEST(GridGraph, DiagonalMoveCostsSqrt2AndTheOctilePathIsOptimal) {
-  const GridGraph g(plane(20, 10), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(200, 1));
+  const GridGraph g(plane_axes(20, 10), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(200, 1));
   const GridCell s = g.cell({0, 0}), t = g.cell({9, 5});
   const auto astar =
       shortest_path(g, s, t, {Search::astar}, GridDistanceTo(g, t, GridMetric::octile), GridMoveCost{&g});
   ASSERT_TRUE(astar.found);
-  EXPECT_DOUBLE_EQ(astar.cost, 5 * sqrt2 + 4);
-  EXPECT_DOUBLE_EQ(GridDistanceTo(g, t, GridMetric::octile)(s), 5 * sqrt2 + 4);
+  EXPECT_DOUBLE_EQ(astar.cost, 5 * root2 + 4);
+  EXPECT_DOUBLE_EQ(GridDistanceTo(g, t, GridMetric::octile)(s), 5 * root2 + 4);
   EXPECT_DOUBLE_EQ(GridDistanceTo(g, t, GridMetric::euclidean)(s), std::sqrt(81.0 + 25.0));
   EXPECT_DOUBLE_EQ(GridDistanceTo(g, t, GridMetric::sum_of_axes)(s), 14.0);
   // On an empty grid the octile heuristic is exact: A* expands only cells on optimal paths.
@@ -119,7 +120,7 @@ double flat_dijkstra(const std::vector<std::uint8_t>& free, int w, int h, int s,
       for (int dx = -1; dx <= 1; ++dx) {
         if ((!dx && !dy) || !ok(x + dx, y + dy)) continue;
         if (dx && dy && (!ok(x + dx, y) || !ok(x, y + dy))) continue;
-        const double nd = d + (dx && dy ? sqrt2 : 1.0);
+        const double nd = d + (dx && dy ? root2 : 1.0);
         const int v = (y + dy) * w + x + dx;
         if (nd < dist[v]) dist[v] = nd, open.push({nd, v});
       }
@@ -133,7 +134,7 @@ TEST(GridGraph, RandomMapsMatchAnIndependentDijkstraForEveryAlgorithm) {
   for (int map = 0; map < 5; ++map) {
     std::vector<std::uint8_t> free(w * h);
     for (auto& f : free) f = std::bernoulli_distribution(0.7)(rng);
-    const GridGraph g(plane(w, h), Connectivity::full, StepCost::euclidean, free);
+    const GridGraph g(plane_axes(w, h), Connectivity::full, StepCost::euclidean, free);
     SearchWorkspace<GridCell> dense;                          // automatic: a flat table (1200 cells)
     SearchWorkspace<GridCell> hashed(VertexStorage::hashed);  // the same results from a hash map
     for (int q = 0; q < 40; ++q) {
@@ -168,7 +169,7 @@ TEST(GridGraph, RandomMapsMatchAnIndependentDijkstraForEveryAlgorithm) {
         for (std::size_t i = 0; i + 1 < r->path.size(); ++i) {
           EXPECT_TRUE(neighbours(g, r->path[i]).count(r->path[i + 1]));
           const auto a = g.coordinates(r->path[i]), b = g.coordinates(r->path[i + 1]);
-          sum += a[0] != b[0] && a[1] != b[1] ? sqrt2 : 1.0;
+          sum += a[0] != b[0] && a[1] != b[1] ? root2 : 1.0;
         }
         EXPECT_NEAR(r->cost, sum, 1e-9);
       }
@@ -179,7 +180,7 @@ TEST(GridGraph, RandomMapsMatchAnIndependentDijkstraForEveryAlgorithm) {
 TEST(GridGraph, LazyCellsAreEvaluatedOnceAndOnlyWhereTheSearchGoes) {
   std::map<std::vector<GridCoordinate>, int> calls;
   // 100 x 100 with a wall x = 50 for y < 90.
-  GridGraph g(plane(100, 100), Connectivity::full, StepCost::euclidean, [&](std::span<const GridCoordinate> at) {
+  GridGraph g(plane_axes(100, 100), Connectivity::full, StepCost::euclidean, [&](std::span<const GridCoordinate> at) {
     ++calls[{at.begin(), at.end()}];
     return !(at[0] == 50 && at[1] < 90);
   });
@@ -226,7 +227,7 @@ TEST(GridGraph, SevenJointsAtFiveDegreesPlanWithMemoryForTouchedCellsOnly) {
 
 TEST(GridGraph, MoveTestRejectsMovesBetweenFreeCells) {
   // A fence between x = 4 and x = 5 except at y = 9, visible only to the move test.
-  GridGraph g(plane(10, 10), Connectivity::axis_aligned, StepCost::euclidean, std::vector<std::uint8_t>(100, 1));
+  GridGraph g(plane_axes(10, 10), Connectivity::axis_aligned, StepCost::euclidean, std::vector<std::uint8_t>(100, 1));
   g.set_move_test([&](GridCell a, GridCell b) {
     const auto pa = g.coordinates(a), pb = g.coordinates(b);
     const bool crosses = std::min(pa[0], pb[0]) == 4 && std::max(pa[0], pb[0]) == 5;
@@ -249,14 +250,14 @@ TEST(GridGraph, RejectsMalformedGrids) {
                std::invalid_argument);
   EXPECT_THROW(GridGraph({{5, AxisKind::bounded, 0.0}}, Connectivity::full, StepCost::euclidean, lazy),
                std::invalid_argument);
-  EXPECT_THROW(GridGraph(plane(3, 3), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(8, 1)),
+  EXPECT_THROW(GridGraph(plane_axes(3, 3), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(8, 1)),
                std::invalid_argument);
   EXPECT_THROW(GridGraph(std::vector<GridAxis>(13, GridAxis{3}), Connectivity::axis_aligned, StepCost::euclidean, lazy),
                std::invalid_argument);
   EXPECT_THROW(
       GridGraph(std::vector<GridAxis>(12, GridAxis{1u << 20}), Connectivity::axis_aligned, StepCost::euclidean, lazy),
       std::invalid_argument);  // 2^240 cells
-  const GridGraph g(plane(3, 3), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(9, 1));
+  const GridGraph g(plane_axes(3, 3), Connectivity::full, StepCost::euclidean, std::vector<std::uint8_t>(9, 1));
   EXPECT_THROW(g.cell({3, 0}), std::out_of_range);
   EXPECT_THROW(g.cell({0}), std::out_of_range);
   const GridGraph cube(std::vector<GridAxis>(3, GridAxis{3}), Connectivity::full, StepCost::euclidean, lazy);
