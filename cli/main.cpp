@@ -38,13 +38,23 @@ int main(int argc, char** argv) {
   add_check_command(app, run);
   add_plan_command(app, run);
   add_scen_command(app, run);
+#if POLYPLAN_WITH_GRIDS  // the commands of a family this build leaves out (cmake -DPOLYPLAN_FAMILIES) are not in it
   add_grid_command(app, run);
+#endif
   add_arm_command(app, run);
   add_planners_command(app, run);
+#if POLYPLAN_WITH_CAR
   add_steer_command(app, run);
+#endif
+#if POLYPLAN_WITH_INCREMENTAL
   add_replan_command(app, run);
+#endif
+#if POLYPLAN_WITH_REACTIVE
   add_potential_command(app, run);
+#endif
+#if POLYPLAN_WITH_ARM
   add_ik_command(app, run);
+#endif
   add_search_command(app, run);
   add_benchmark_command(app, run);
   try {
@@ -59,6 +69,9 @@ int main(int argc, char** argv) {
       for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; }))
         message += " " + c->get_name();
       message += ")";
+      if (!POLYPLAN_WITH_GRIDS || !POLYPLAN_WITH_CAR || !POLYPLAN_WITH_INCREMENTAL || !POLYPLAN_WITH_REACTIVE ||
+          !POLYPLAN_WITH_ARM)
+        message += "; this polyplan is built without some planner families (cmake -DPOLYPLAN_FAMILIES=all)";
     }
     std::cerr << "error: " << message << " (see polyplan --help)\n";
     return bad_input;

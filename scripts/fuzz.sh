@@ -10,8 +10,8 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(world arm path wkt map scenario)
 jobs=${JOBS:-2}
-CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_FUZZ=ON -DPOLYPLAN_BUILD_TESTS=OFF \
-  -DPOLYPLAN_BUILD_EXAMPLES=OFF >/dev/null
+CXX=clang++ scripts/configure.sh build-fuzz -DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_FUZZ=ON -DPOLYPLAN_BUILD_TESTS=OFF \
+  -DPOLYPLAN_BUILD_EXAMPLES=OFF
 cmake --build build-fuzz -j"$jobs" --target polyplan_fuzzers
 
 # Seeds: the shipped files each reader reads (small maps only: mutating a megabyte map is slow)

@@ -9,8 +9,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 python=${PYTHON:-/usr/bin/python3}
 scripts/setup.sh program python
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_PYTHON=ON -DPOLYPLAN_BUILD_TESTS=OFF \
-  -DPython_EXECUTABLE="$python" >/dev/null
+# Every planner family, whatever scripts/demo.sh left in the tree's cache.
+scripts/configure.sh build -DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_FAMILIES=all -DPOLYPLAN_PYTHON=ON \
+  -DPOLYPLAN_BUILD_TESTS=OFF -DPython_EXECUTABLE="$python"
 cmake --build build -j"${JOBS:-2}" --target _polyplan
 target=$(grep '^POLYPLAN_PYTHON_DIR:' build/CMakeCache.txt | cut -d= -f2-)
 sudo=""

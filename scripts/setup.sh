@@ -12,8 +12,8 @@ set -euo pipefail
 
 packages_of() {
   case "$1" in
-    program)  # the library and the program
-      echo cmake g++ make pkg-config \
+    program)  # the library and the program (clang and ninja: scripts/configure.sh says why)
+      echo cmake clang ninja-build make pkg-config \
         libcgal-dev libgmp-dev libmpfr-dev \
         libboost-dev libboost-graph-dev \
         libeigen3-dev \
@@ -24,8 +24,8 @@ packages_of() {
         python3-numpy python3-matplotlib python3-pytest ;;
     tests)  # the C++ tests, the style check, and rsvg-convert to look at the pictures as PNGs
       echo libgtest-dev clang-format librsvg2-bin ;;
-    fuzz)  # libFuzzer, for the readers' fuzz targets (scripts/test.sh --deep)
-      echo clang libclang-rt-14-dev ;;
+    fuzz)  # the deep run (scripts/test.sh --deep): g++ for the sanitized tree, libFuzzer for the readers'
+      echo g++ libclang-rt-14-dev ;;
     bench)  # the Google Benchmark programs (-DPOLYPLAN_BUILD_BENCH=ON)
       echo libbenchmark-dev ;;
     *)

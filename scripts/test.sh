@@ -31,8 +31,10 @@ step() {  # step NAME COMMAND...: runs the command and keeps its time for the su
   timings+=("$name $((SECONDS - from)) s")
 }
 
-# Every part on, whatever an earlier scripts/demo.sh or scripts/python.sh left in the tree's cache.
-release="-DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_BUILD_TESTS=ON -DPOLYPLAN_BUILD_EXAMPLES=ON -DPOLYPLAN_PYTHON=ON"
+# Every part and family on, whatever an earlier scripts/demo.sh or scripts/python.sh left in the
+# tree's cache.
+release="-DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_FAMILIES=all -DPOLYPLAN_BUILD_TESTS=ON -DPOLYPLAN_BUILD_EXAMPLES=ON \
+  -DPOLYPLAN_PYTHON=ON"
 step setup scripts/setup.sh
 # The style first: it takes seconds, and a file clang-format would change fails the run.
 step format scripts/check_format.sh
@@ -40,12 +42,13 @@ if [ "$sanitize" = 1 ]; then
   # One tree, sanitized, builds and runs everything: the C++ tests, the examples, and the Python
   # module, whose tests preload AddressSanitizer's runtime into the interpreter
   # (python/CMakeLists.txt). No Release tree: it built the whole library a second time.
-  step sanitizer-build bash -c "cmake -S . -B build-sanitize $release -DPOLYPLAN_SANITIZE=ON >/dev/null && \
+  # g++: the Python tests preload g++'s AddressSanitizer runtime (python/CMakeLists.txt).
+  step sanitizer-build bash -c "CXX=g++ scripts/configure.sh build-sanitize $release -DPOLYPLAN_SANITIZE=ON && \
     cmake --build build-sanitize -j$jobs"
   step sanitizer-tests env ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build-sanitize --output-on-failure -j"$jobs"
 else
-  step build bash -c "cmake -S . -B build $release >/dev/null && cmake --build build -j$jobs"
+  step build bash -c "scripts/configure.sh build $release && cmake --build build -j$jobs"
   step tests ctest --test-dir build --output-on-failure -j"$jobs"
 fi
 if [ "$fuzz" = 1 ]; then

@@ -206,10 +206,12 @@ class ExperimentReader {
                "no planner \"" + p.planner + "\" plans problems[" + std::to_string(j) + "]: " + error.what());
         }
         const std::vector<OptionInfo>& known = listing->options;
-        for (const auto& [key, value] : p.options)
+        for (const auto& option : p.options) {
+          const std::string& key = option.first;  // not a structured binding: clang 14 cannot capture one
           if (std::none_of(known.begin(), known.end(), [&](const OptionInfo& o) { return o.name == key; }))
             fail(object + ".options." + key,
                  "unknown option for " + p.planner + " (options: " + option_names(known) + ")");
+        }
         try {
           // Building is what checks the values; a planner built on a problem costs little beside a run.
           make_planner(p.planner, problem, options_for_run(p.options, known, e.seeds.front(), e.time_limit));

@@ -91,7 +91,8 @@ class OptionTable {
       Entry e{
           {std::move(name), std::move(description), kind_of<T>(range), {}, std::is_same_v<T, bool>, range, {}}, {}, {}};
       e.show = [member](const Options& o) { return show(o.*member); };
-      e.set = [member, range](Options& o, std::string_view text) -> std::optional<std::string> {
+      // [=]: the range is used only when T is a number, and clang warns of an unused capture.
+      e.set = [=](Options& o, std::string_view text) -> std::optional<std::string> {
         if (auto why = assign(o.*member, text)) return why;
         if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>)
           if (!range->holds(static_cast<double>(o.*member))) return "expected a " + kind_of<T>(range);

@@ -5,6 +5,7 @@
 // so a new planner is its header, its source and one registration line in the list of its space
 // (registry/polygon_planners.cpp for TranslatingRobot and RotatingRobot, registry/arm_planners.cpp
 // for PlanarArm, registry/car_planners.cpp for SteeredCar). These files are the only ones that name every planner.
+#include <polyplan/geometry/input_error.hpp>
 #include <polyplan/plan/planner_entry.hpp>
 
 #include <initializer_list>
@@ -29,7 +30,24 @@ class PlannerRegistry {
     if (!find(default_)) throw std::logic_error("the default planner " + default_ + " is not registered");
   }
 
-  const std::string& default_planner() const { return default_; }
+  // The registry of a space whose family this build leaves out (cmake -DPOLYPLAN_FAMILIES): no
+  // planners, and a default planner that is refused naming the family.
+  static PlannerRegistry left_out(const std::string& family) {
+    PlannerRegistry registry;
+    registry.left_out_ =
+        "this polyplan is built without the " + family + " planners (cmake -DPOLYPLAN_FAMILIES=" + family + " or all)";
+    return registry;
+  }
+
+  // InputError when this build leaves the space's planners out.
+  void require_planners() const {
+    if (!left_out_.empty()) throw InputError(left_out_);
+  }
+
+  const std::string& default_planner() const {
+    require_planners();
+    return default_;
+  }
 
   const std::vector<PlannerEntry<Space>>& entries() const { return entries_; }
 
@@ -48,7 +66,10 @@ class PlannerRegistry {
   }
 
  private:
+  PlannerRegistry() = default;
+
   std::string default_;
+  std::string left_out_;  // why there are no planners
   std::vector<PlannerEntry<Space>> entries_;
 };
 

@@ -1,10 +1,14 @@
 #include <polyplan/registry/world_queries.hpp>
 
-#include <polyplan/car/car_collision.hpp>
-#include <polyplan/car/car_query.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/registry.hpp>
+#if POLYPLAN_WITH_CAR
+#include <polyplan/car/car_collision.hpp>
+#include <polyplan/car/car_query.hpp>
+#endif
+#if POLYPLAN_WITH_ROTATION
 #include <polyplan/rotation/rotation_layers.hpp>
+#endif
 
 #include <algorithm>
 #include <stdexcept>
@@ -37,6 +41,7 @@ std::vector<std::string> planners_following_changes() {
 void require_planner_for_robot(const World& world, std::string_view planner) {
   const bool car_planner = planners<SteeredCar>().find(planner) != nullptr;
   const bool world_planner = planners<TranslatingRobot>().find(planner) || planners<RotatingRobot>().find(planner);
+  if (world.robot.car) planners<SteeredCar>().require_planners();
   if (world.robot.car && !car_planner)
     throw InputError(world.source + ": robot.car: the robot steers like a car, and the planner " +
                      std::string(planner) + " neither steers nor keeps to a turning radius: use a car planner (" +
@@ -50,17 +55,23 @@ void require_planner_for_robot(const World& world, std::string_view planner) {
 
 // A car's starts and goals: its body inside the bounds and clear of every obstacle.
 void require_free_car_poses(const World& world) {
+#if POLYPLAN_WITH_CAR
   const CarCollision collision(world);
   for (const Query& q : world.queries)
     if (auto why = car_query_not_free(collision, q)) throw InputError(world.source + ": " + q.name + ": " + *why);
+#else
+  planners<SteeredCar>().require_planners();  // refuses: this build has no car
+#endif
 }
 
 void require_plannable_queries(const World& world, const CSpace* cspace, std::string_view planner) {
   require_planner_for_robot(world, planner);
   if (world.queries.empty()) throw InputError(world.source + ": world: no start/goal and no queries to plan");
   if (world.robot.car) return require_free_car_poses(world);
-  // A rotating robot's planner builds the C-space of each orientation itself.
+    // A rotating robot's planner builds the C-space of each orientation itself.
+#if POLYPLAN_WITH_ROTATION
   if (planners<RotatingRobot>().find(planner)) return require_free_poses(world);
+#endif
   if (turns_the_robot(world))
     throw InputError(
         world.source + ": a start or goal has an orientation other than 0 degrees ([x, y, theta]); the planner " +

@@ -80,7 +80,7 @@ struct PlannerHandle {
     return static_cast<std::size_t>(i);
   }
 
-  PlanResult answer(Report report) const { return {std::move(report), problem}; }
+  PlanResult answer(Report report) const { return {std::move(report), problem, std::nullopt}; }
 
   // `ask(planner)` with the problem's lock held and the GIL released; the door's InputError as the
   // message of plan().

@@ -73,12 +73,10 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
   // Defaults, but sampling planners stop after 1 s where a passage is too narrow to sample
   // (corridor_wide's is 10^-9 wide): an answer either way, and a quick one.
   OptionValues options;
-  bool seeded = false;
   for (const OptionInfo& o : entry->options) {
     if (o.name == "time") options.emplace_back("time", "1");
     if (o.name == "iterations" && entry->anytime)
       options.emplace_back("iterations", "20000");  // repeatable, and ends soon
-    seeded |= o.name == "seed";
   }
   std::unique_ptr<Planner<TranslatingRobot>> planner, again;
   try {

@@ -16,10 +16,10 @@ asked() {  # the sets a script passes to scripts/setup.sh
 
 program=$(scripts/setup.sh --list program)
 for unneeded in python3 python3-dev python3-matplotlib python3-numpy python3-pytest pybind11-dev \
-  libgtest-dev libbenchmark-dev clang libclang-rt-14-dev clang-format librsvg2-bin; do
+  libgtest-dev libbenchmark-dev g++ libclang-rt-14-dev clang-format librsvg2-bin; do
   ! grep -qx -- "$unneeded" <<<"$program" || fail "the program's set holds $unneeded, which the demo does not need"
 done
-for needed in libcgal-dev libboost-graph-dev libcli11-dev nlohmann-json3-dev libeigen3-dev; do
+for needed in clang libcgal-dev libboost-graph-dev libcli11-dev nlohmann-json3-dev libeigen3-dev; do
   grep -qx -- "$needed" <<<"$program" || fail "the program's set lacks $needed"
 done
 grep -qx python3-matplotlib <<<"$(scripts/setup.sh --list python)" || fail "the Python set lacks matplotlib"

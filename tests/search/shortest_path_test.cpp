@@ -97,7 +97,7 @@ TEST(CourseGraph, LengthsAreTheHandValues) {
 // expanded 4 (S A B G), generated 7 (all but V: W, the only way to V, is never expanded).
 TEST(CourseGraph, AStar) {
   const CourseGraph c = course_graph();
-  const auto r = shortest_path(c.g, c.S, c.G, {Search::astar});
+  const auto r = shortest_path(c.g, c.S, c.G, Search::astar);
   ASSERT_TRUE(r.found);
   EXPECT_EQ(r.path, (std::vector{c.S, c.A, c.B, c.G}));
   EXPECT_DOUBLE_EQ(r.cost, 2 + 2 * sqrt5);
@@ -113,7 +113,7 @@ TEST(CourseGraph, AStar) {
 // 8 are generated and expanded; G's g is final when B is expanded (via T: 10, via X: 8.993).
 TEST(CourseGraph, Dijkstra) {
   const CourseGraph c = course_graph();
-  const auto r = shortest_path(c.g, c.S, c.G, {Search::dijkstra});
+  const auto r = shortest_path(c.g, c.S, c.G, Search::dijkstra);
   ASSERT_TRUE(r.found);
   EXPECT_EQ(r.path, (std::vector{c.S, c.A, c.B, c.G}));
   EXPECT_DOUBLE_EQ(r.cost, 2 + 2 * sqrt5);
@@ -132,7 +132,7 @@ TEST(CourseGraph, Dijkstra) {
 // expanded 7 (all but B), generated 8. Path S-T-G: 2 edges, cost 10.
 TEST(CourseGraph, BreadthFirst) {
   const CourseGraph c = course_graph();
-  const auto r = shortest_path(c.g, c.S, c.G, {Search::bfs});
+  const auto r = shortest_path(c.g, c.S, c.G, Search::bfs);
   ASSERT_TRUE(r.found);
   EXPECT_EQ(r.path, (std::vector{c.S, c.T, c.G}));
   EXPECT_DOUBLE_EQ(r.cost, 10.0);
@@ -146,7 +146,7 @@ TEST(CourseGraph, BreadthFirst) {
 // Discovered, in order: S W V T G: expanded = generated = 5. Path S-T-G, cost 10.
 TEST(CourseGraph, DepthFirst) {
   const CourseGraph c = course_graph();
-  const auto r = shortest_path(c.g, c.S, c.G, {Search::dfs});
+  const auto r = shortest_path(c.g, c.S, c.G, Search::dfs);
   ASSERT_TRUE(r.found);
   EXPECT_EQ(r.path, (std::vector{c.S, c.T, c.G}));
   EXPECT_DOUBLE_EQ(r.cost, 10.0);
@@ -162,13 +162,13 @@ TEST(CourseGraph, DepthFirst) {
 // lured by X, the neighbour of S nearest the goal, behind the long edge S-X.
 TEST(CourseGraph, GreedyIsLuredAndSuboptimal) {
   const CourseGraph c = course_graph();
-  const auto r = shortest_path(c.g, c.S, c.G, {Search::greedy});
+  const auto r = shortest_path(c.g, c.S, c.G, Search::greedy);
   ASSERT_TRUE(r.found);
   EXPECT_EQ(r.path, (std::vector{c.S, c.X, c.G}));
   EXPECT_DOUBLE_EQ(r.cost, sqrt34 + sqrt10);
   EXPECT_EQ(r.expanded, 3u);
   EXPECT_EQ(r.generated, 6u);
-  const auto optimal = shortest_path(c.g, c.S, c.G, {Search::dijkstra});
+  const auto optimal = shortest_path(c.g, c.S, c.G, Search::dijkstra);
   EXPECT_GT(r.cost, optimal.cost + 2.5);
 }
 
@@ -219,7 +219,7 @@ TEST(CourseGraph, WeightedAStarWithWeightOneIsAStar) {
   const CourseGraph c = course_graph();
   for (RoadmapVertexId s = 0; s < num_vertices(c.g); ++s)
     for (RoadmapVertexId t = 0; t < num_vertices(c.g); ++t)
-      expect_same(shortest_path(c.g, s, t, {Search::wastar, 1.0}), shortest_path(c.g, s, t, {Search::astar}));
+      expect_same(shortest_path(c.g, s, t, {Search::wastar, 1.0}), shortest_path(c.g, s, t, Search::astar));
 }
 
 TEST(CourseGraph, StartEqualsGoalIsAOneVertexPathOfCostZero) {
@@ -255,7 +255,7 @@ TEST(CourseGraph, UnreachableGoalIsNotFoundAfterExhaustingTheComponent) {
   }
   // And an isolated start: only itself.
   const RoadmapVertexId alone = add_point(c.g, -10, -10);
-  const auto r = shortest_path(c.g, alone, c.G, {Search::astar});
+  const auto r = shortest_path(c.g, alone, c.G, Search::astar);
   EXPECT_FALSE(r.found);
   EXPECT_EQ(r.expanded, 1u);
   EXPECT_EQ(r.generated, 1u);
