@@ -425,8 +425,9 @@ TEST(ReusedClearances, NeverFreeWhereDenseSamplingCollidesAndMeasureLess) {
         ASSERT_FALSE(dense_sampling_finds_a_collision(checker, from, to, 0.001)) << "certified a colliding motion";
       } else {
         ++refused;
-        if (reused.verdict == MotionCertificate::Verdict::collides)
+        if (reused.verdict == MotionCertificate::Verdict::collides) {  // braces: ASSERT_FALSE is an if-else
           ASSERT_FALSE(checker.is_free(interpolate_angles(from, to, reused.at)));
+        }
       }
       agree += plain.free() == reused.free();
       if (plain.free() && reused.free()) plain_steps += plain.steps, reused_steps += reused.steps, ++both_free;

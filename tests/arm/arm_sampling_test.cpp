@@ -44,7 +44,7 @@ TEST_P(SamplingPlannerOnArm, ThreeSeedsGiveIndependentlyCheckedPathsAndOneSeedOn
     // RRT* is anytime and stops at its time limit by default: an iteration limit makes its runs
     // repeatable.
     OptionValues options{{"seed", seed}, {"time", "20"}};
-    if (planner == "rrtstar") options.emplace_back("iterations", "20000");
+    if (planner == "rrtstar") options.emplace_back("iterations", "8000");
     auto planner_of_seed = make(planner, problem, options);
     for (const ArmQuery& q : problem.queries) {
       SCOPED_TRACE(q.name);

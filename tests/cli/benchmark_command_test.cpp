@@ -89,12 +89,13 @@ void check_outputs(const Outputs& outputs, std::size_t problems, std::size_t ent
       pictures += " '" + svg.string() + "'";
     }
   }
-  if (python_can_parse_xml())
+  if (python_can_parse_xml()) {  // braces: EXPECT_EQ is an if-else of its own
     EXPECT_EQ(std::system(
                   ("python3 -c 'import sys, xml.etree.ElementTree as E; [E.parse(f) for f in sys.argv[1:]]'" + pictures)
                       .c_str()),
               0)
         << "a picture is not well-formed XML:" << pictures;
+  }
   fs::remove_all(outputs.dir);
 }
 

@@ -55,7 +55,7 @@ TEST_P(EveryArmPlannerOnEveryArm, KeepsThePlannerPromises) {
   for (const OptionInfo& o : entry->options)
     if (o.name == "time") options.emplace_back("time", "30");
   // RRT* is anytime and stops at its time limit by default: an iteration limit ends it soon.
-  if (entry->anytime) options.emplace_back("iterations", "20000");
+  if (entry->anytime) options.emplace_back("iterations", "8000");
   const auto planner = entry->make(problem, options), again = entry->make(problem, options);
   const ArmCollisionChecker checker(problem);
   ASSERT_FALSE(problem.queries.empty());
