@@ -2,6 +2,7 @@
 #include "cli/command.hpp"
 
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/registry/any_planner.hpp>
 
 #include <fstream>
 #include <iostream>
@@ -69,9 +70,8 @@ int main(int argc, char** argv) {
       for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; }))
         message += " " + c->get_name();
       message += ")";
-      if (!POLYPLAN_WITH_GRIDS || !POLYPLAN_WITH_CAR || !POLYPLAN_WITH_INCREMENTAL || !POLYPLAN_WITH_REACTIVE ||
-          !POLYPLAN_WITH_ARM)
-        message += "; this polyplan is built without some planner families (cmake -DPOLYPLAN_FAMILIES=all)";
+      if (const std::string left_out = polyplan::families_left_out(); !left_out.empty())
+        message += "; this polyplan is built without the " + left_out + " planners (cmake -DPOLYPLAN_FAMILIES=all)";
     }
     std::cerr << "error: " << message << " (see polyplan --help)\n";
     return bad_input;

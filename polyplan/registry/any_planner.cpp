@@ -94,8 +94,13 @@ const detail::SpaceWords& door_of(const PlannerListing& listing) {
     here.push_back(listing);
     kind = door_of(listing).kind();
   }
-  if (!registered)
-    throw InputError("unknown planner \"" + std::string(name) + "\" (" + planner_names(planner_catalog()) + ")");
+  if (!registered) {
+    const std::string left_out = families_left_out();
+    throw InputError("unknown planner \"" + std::string(name) + "\" (" + planner_names(planner_catalog()) + ")" +
+                     (left_out.empty() ? ""
+                                       : "; this polyplan is built without the " + left_out +
+                                             " planners (cmake -DPOLYPLAN_FAMILIES=all)"));
+  }
   // A space's own words first: a car planner for a robot that does not steer, and the reverse.
   detail::any_space([&](auto tag) {
     const auto& door = space_door<typename decltype(tag)::Space>();

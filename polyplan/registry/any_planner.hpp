@@ -80,4 +80,8 @@ const std::vector<PlannerListing>& planner_catalog();
 // Each listing's name once, for messages: "visibility, visibility-full, raster, ...".
 std::string planner_names(const std::vector<PlannerListing>& listings);
 
+// The planner families this build leaves out (cmake -DPOLYPLAN_FAMILIES), for messages: "" when
+// it has every one, else "grids, incremental, ...".
+std::string families_left_out();
+
 }  // namespace polyplan
