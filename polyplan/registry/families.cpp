@@ -9,10 +9,10 @@ namespace polyplan {
 
 std::string families_left_out() {
   constexpr std::pair<std::string_view, bool> families[] = {
-      {"grids", POLYPLAN_WITH_GRIDS},         {"incremental", POLYPLAN_WITH_INCREMENTAL},
-      {"reactive", POLYPLAN_WITH_REACTIVE},   {"homotopy", POLYPLAN_WITH_HOMOTOPY},
-      {"rotation", POLYPLAN_WITH_ROTATION},   {"sampling", POLYPLAN_WITH_SAMPLING},
-      {"arm", POLYPLAN_WITH_ARM},             {"car", POLYPLAN_WITH_CAR},
+      {"grids", POLYPLAN_WITH_GRIDS},       {"incremental", POLYPLAN_WITH_INCREMENTAL},
+      {"reactive", POLYPLAN_WITH_REACTIVE}, {"homotopy", POLYPLAN_WITH_HOMOTOPY},
+      {"rotation", POLYPLAN_WITH_ROTATION}, {"sampling", POLYPLAN_WITH_SAMPLING},
+      {"arm", POLYPLAN_WITH_ARM},           {"car", POLYPLAN_WITH_CAR},
   };
   std::string names;
   for (const auto& [name, built] : families)

@@ -68,8 +68,8 @@ void require_plannable_queries(const World& world, const CSpace* cspace, std::st
   require_planner_for_robot(world, planner);
   if (world.queries.empty()) throw InputError(world.source + ": world: no start/goal and no queries to plan");
   if (world.robot.car) return require_free_car_poses(world);
-    // A rotating robot's planner builds the C-space of each orientation itself.
 #if POLYPLAN_WITH_ROTATION
+  // A rotating robot's planner builds the C-space of each orientation itself.
   if (planners<RotatingRobot>().find(planner)) return require_free_poses(world);
 #endif
   if (turns_the_robot(world))
