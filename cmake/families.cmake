@@ -18,6 +18,7 @@ endforeach()
 
 set(POLYPLAN_BUILT_FAMILIES "")
 set(POLYPLAN_FAMILY_DEFINITIONS "")
+set(left_out "")
 foreach(family ${POLYPLAN_OPTIONAL_FAMILIES})  # in their order: a family after those it needs
   string(TOUPPER ${family} upper)
   if(family IN_LIST wanted)
@@ -27,8 +28,22 @@ foreach(family ${POLYPLAN_OPTIONAL_FAMILIES})  # in their order: a family after 
   else()
     set(POLYPLAN_WITH_${upper} OFF)
     list(APPEND POLYPLAN_FAMILY_DEFINITIONS POLYPLAN_WITH_${upper}=0)
+    list(APPEND left_out ${family})
   endif()
 endforeach()
+# Their names for messages (registry/families.cpp): "grids, incremental, ...", or "".
+list(JOIN left_out ", " left_out)
+list(APPEND POLYPLAN_FAMILY_DEFINITIONS "POLYPLAN_FAMILIES_LEFT_OUT=\"${left_out}\"")
+
+# polyplan_family_sources(TARGET FAMILY SOURCE...): sources of TARGET compiled only when FAMILY is
+# built, recorded for tests/layout/families_left_out.cmake (which lets them include the family).
+function(polyplan_family_sources target family)
+  list(TRANSFORM ARGN PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/ OUTPUT_VARIABLE sources)
+  set_property(GLOBAL APPEND PROPERTY POLYPLAN_FAMILY_ONLY_SOURCES ${sources})
+  if(family IN_LIST POLYPLAN_BUILT_FAMILIES)
+    target_sources(${target} PRIVATE ${sources})
+  endif()
+endfunction()
 list(LENGTH POLYPLAN_BUILT_FAMILIES built)
 list(LENGTH POLYPLAN_OPTIONAL_FAMILIES every)
 if(built LESS every)

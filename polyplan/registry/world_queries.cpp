@@ -53,21 +53,21 @@ void require_planner_for_robot(const World& world, std::string_view planner) {
   if (!world.changes.empty()) require_planner_for_changes(world, planner);
 }
 
+#if POLYPLAN_WITH_CAR
 // A car's starts and goals: its body inside the bounds and clear of every obstacle.
 void require_free_car_poses(const World& world) {
-#if POLYPLAN_WITH_CAR
   const CarCollision collision(world);
   for (const Query& q : world.queries)
     if (auto why = car_query_not_free(collision, q)) throw InputError(world.source + ": " + q.name + ": " + *why);
-#else
-  planners<SteeredCar>().require_planners();  // refuses: this build has no car
-#endif
 }
+#endif
 
 void require_plannable_queries(const World& world, const CSpace* cspace, std::string_view planner) {
   require_planner_for_robot(world, planner);
   if (world.queries.empty()) throw InputError(world.source + ": world: no start/goal and no queries to plan");
+#if POLYPLAN_WITH_CAR  // without it, require_planner_for_robot refused the car
   if (world.robot.car) return require_free_car_poses(world);
+#endif
 #if POLYPLAN_WITH_ROTATION
   // A rotating robot's planner builds the C-space of each orientation itself.
   if (planners<RotatingRobot>().find(planner)) return require_free_poses(world);
