@@ -1,6 +1,7 @@
 #include "cli/command.hpp"
 
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/rational.hpp>
 
 #include <cmath>
 #include <sstream>
@@ -24,6 +25,13 @@ std::vector<double> comma_numbers(const std::string& text, const std::string& op
     values.push_back(value);
   }
   return values;
+}
+
+double degrees_option(const std::string& text, const std::string& option) {
+  std::string why;
+  const auto degrees = parse_rational(text, &why);
+  if (!degrees) throw InputError(option + " " + text + ": " + why);
+  return to_double(reduce_degrees(*degrees));
 }
 
 }  // namespace polyplan::cli

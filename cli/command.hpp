@@ -37,6 +37,11 @@ void write_json_text(const std::string& text, const std::string& target);
 // "1,2.5,-3" as numbers; throws InputError "OPTION TEXT: "PART" is not a finite number".
 std::vector<double> comma_numbers(const std::string& text, const std::string& option);
 
+// "THETA" in degrees as written, reduced exactly into (-180, 180] and then made a double (1e300
+// is 0 exactly: 1e300 is a multiple of 360); throws InputError "OPTION TEXT: ..." for text that is
+// not a number within the supported range.
+double degrees_option(const std::string& text, const std::string& option);
+
 // Prints warnings of the world reader on stderr.
 void print_warnings(const std::vector<std::string>& warnings);
 

@@ -20,7 +20,7 @@ namespace {
 
 struct IkCommandOptions {
   std::string arm, target;
-  double orientation = std::nan("");  // degrees; NaN: not asked
+  std::string orientation;  // degrees as written; empty: not asked
   bool all = false, collision_free = false;
   std::string json, svg;
 };
@@ -37,7 +37,7 @@ std::optional<ExactPoint> exact_target(const std::string& text) {
 
 IkOptions ik_options(const Arm& arm, const IkCommandOptions& o) {
   IkOptions options;
-  if (!std::isnan(o.orientation)) options.orientation = o.orientation * M_PI / 180;
+  if (!o.orientation.empty()) options.orientation = degrees_option(o.orientation, "--orientation") * M_PI / 180;
   options.limits = arm.limits;
   options.all = o.all;
   options.seeds = o.all ? 32 : 8;
@@ -72,7 +72,8 @@ int run_ik(const IkCommandOptions& o) {
       solutions.push_back(
           {{"angles", answer.solutions[i].angles}, {"error", answer.solutions[i].error}, {"free", bool(free[i])}});
     nlohmann::json out = {{"target", {target.x(), target.y()}}, {"found", answer.found}, {"solutions", solutions}};
-    out["orientation"] = std::isnan(o.orientation) ? nlohmann::json(nullptr) : nlohmann::json(o.orientation);
+    out["orientation"] = o.orientation.empty() ? nlohmann::json(nullptr)
+                                               : nlohmann::json(degrees_option(o.orientation, "--orientation"));
     if (!answer.found) out["why_not"] = answer.why_not;
     write_json(out, o.json);
   }
@@ -114,7 +115,8 @@ void add_ik_command(CLI::App& app, Action& run) {
   CLI::App* command = app.add_subcommand("ik", "Joint angles that put an arm's hand at a point (inverse kinematics)");
   command->add_option("arm", options->arm, "arm file (JSON)")->required();
   command->add_option("--target", options->target, "where the hand goes, X,Y")->required();
-  command->add_option("--orientation", options->orientation, "the last link's absolute angle there, degrees");
+  command->add_option("--orientation", options->orientation,
+                      "the last link's absolute angle there, degrees (reduced exactly into (-180, 180])");
   command->add_flag("--all", options->all,
                     "every distinct solution found (numeric: from 32 seeds), not only the first");
   command->add_flag("--collision-free", options->collision_free, "only solutions free of the arm file's obstacles");

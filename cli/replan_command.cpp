@@ -12,8 +12,11 @@
 #include <polyplan/incremental/discovering_robot.hpp>
 #include <polyplan/io/movingai_map.hpp>
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <optional>
+#include <string_view>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -42,13 +45,21 @@ struct ReplanCommandOptions {
   bool animate = false;
 };
 
-// "X,Y" with integers.
+// "X,Y" with integers, each read whole and checked for overflow (sscanf's %d wraps 4294967336 to 40).
 GridPoint cell_option(const std::string& text, const char* option) {
-  int x = 0, y = 0;
-  char rest = 0;
-  if (std::sscanf(text.c_str(), "%d,%d%c", &x, &y, &rest) != 2)
-    throw InputError(std::string(option) + " " + text + ": expected X,Y (a column and a row, integers)");
-  return {x, y};
+  const auto comma = text.find(',');
+  const auto whole = [&](std::string_view part) -> std::optional<int> {
+    int value = 0;
+    const auto [end, error] = std::from_chars(part.data(), part.data() + part.size(), value);
+    if (error != std::errc() || end != part.data() + part.size() || part.empty()) return std::nullopt;
+    return value;
+  };
+  const std::string_view all(text);
+  const auto x = comma == std::string::npos ? std::nullopt : whole(all.substr(0, comma));
+  const auto y = comma == std::string::npos ? std::nullopt : whole(all.substr(comma + 1));
+  if (!x || !y)
+    throw InputError(std::string(option) + " " + text + ": expected X,Y (a column and a row, whole numbers of the map)");
+  return {*x, *y};
 }
 
 nlohmann::json cost_json(const OctileLength& c) {
@@ -235,7 +246,7 @@ int run_replan(const ReplanCommandOptions& o) {
                   : tables ? static_cast<ReplanTrace*>(tables.get())
                            : static_cast<ReplanTrace*>(expansions.get());
   const ReplanResult r = drive_through_unknown_map(std::move(map), start, goal, options);
-  if (trace_file && !trace_file.flush()) throw InputError(o.rhs_trace + ": cannot write the trace");
+  if (trace_file.is_open() && !trace_file.flush()) throw InputError(o.rhs_trace + ": cannot write the trace");
   if (expansions) expansions->finish();
 
   if (!o.json.empty()) write_json(result_json(r, replanning.sensor), o.json);

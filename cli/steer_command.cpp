@@ -27,7 +27,7 @@ OptionTable<Steering> steering_table() {
   return table
       .add("model", &Steering::model, "dubins (forward only) or reeds-shepp (may reverse)",
            Choices<Steering::Model>{{"dubins", Steering::Model::dubins}, {"reeds-shepp", Steering::Model::reeds_shepp}})
-      .add("radius", &Steering::radius, "turning radius", above(0));
+      .add("radius", &Steering::radius, "turning radius", in_range(1e-100, 1e100));
 }
 
 struct SteerOptions {
@@ -36,12 +36,12 @@ struct SteerOptions {
   std::string json, svg;
 };
 
-// "X,Y,THETA" with theta in degrees.
+// "X,Y,THETA" with theta in degrees, reduced exactly.
 CarPose pose_option(const std::string& text, const char* option) {
   const std::vector<double> values = comma_numbers(text, std::string(option));
   if (values.size() != 3)
     throw InputError(std::string(option) + " " + text + ": expected X,Y,THETA (theta in degrees)");
-  return {values[0], values[1], values[2] * M_PI / 180};
+  return {values[0], values[1], degrees_option(text.substr(text.rfind(',') + 1), std::string(option) + " " + text + ": theta") * M_PI / 180};
 }
 
 nlohmann::json steering_json(const SteeringPath& path) {

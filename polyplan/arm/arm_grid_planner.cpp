@@ -148,8 +148,8 @@ ArmGridPlanner::ArmGridPlanner(const ArmProblem& problem, ArmGridOptions options
   if (options_.coarse_degrees != 0) cells_per_axis(options_.coarse_degrees);  // the same rule: it divides 360
   if (options_.corridor < 0 || options_.widenings < 0)
     throw std::invalid_argument("the corridor's half-width and the number of widenings must not be negative");
-  if (!(options_.memory_mb > 0) || !std::isfinite(options_.memory_mb))
-    throw std::invalid_argument("the memory budget memory-mb must be a positive number of megabytes");
+  if (!(options_.memory_mb > 0 && options_.memory_mb <= 1e7))
+    throw std::invalid_argument("the memory budget memory-mb must be a number of megabytes in (0, 1e+07]");
 }
 
 namespace {
@@ -599,7 +599,8 @@ PlannerEntry<PlanarArm> arm_grid_planner_entry() {
   table.add("widenings", &ArmGridOptions::widenings,
             "times the corridor may double while it cannot prove its path shortest", at_least(0));
   table.add("memory-mb", &ArmGridOptions::memory_mb,
-            "the memory one query's tables may take before it stops, saying so", above(0));
+            "the memory one query's tables may take before it stops, saying so",
+            OptionRange{0, 1e7, true, false});  // up to 10 TB: its bytes fit a size_t
   return make_planner_entry<PlanarArm, ArmGridOptions>(
       "grid",
       "the course's graph-search homework's grid over the joint angles (a torus), searched lazily; every move a "

@@ -28,7 +28,7 @@ struct DubinsFrame {
 
 DubinsFrame frame(const CarPose& from, const CarPose& to, double radius) {
   const double dx = to.x - from.x, dy = to.y - from.y;
-  const double d = std::hypot(dx, dy) / radius;
+  const double d = std::hypot(dx, dy) / radius;  // up to 1e200 (require_steerable): no overflow below
   // Poses at one point: any line through it serves; the start's heading makes alpha 0 exactly.
   const double line = d > 0 ? std::atan2(dy, dx) : from.theta;
   const double alpha = turn(from.theta - line), beta = turn(to.theta - line);
@@ -46,25 +46,26 @@ struct Word {
 std::optional<Word> lsl(const DubinsFrame& f) {
   const double x = f.d - f.sb + f.sa, y = f.cb - f.ca;
   const double line = std::atan2(y, x);
-  return Word{"LSL", turn(line - f.alpha), std::sqrt(x * x + y * y), turn(f.beta - line)};
+  return Word{"LSL", turn(line - f.alpha), std::hypot(x, y), turn(f.beta - line)};
 }
 
 std::optional<Word> rsr(const DubinsFrame& f) {
   const double x = f.d + f.sb - f.sa, y = f.ca - f.cb;
   const double line = std::atan2(y, x);
-  return Word{"RSR", turn(f.alpha - line), std::sqrt(x * x + y * y), turn(line - f.beta)};
+  return Word{"RSR", turn(f.alpha - line), std::hypot(x, y), turn(line - f.beta)};
 }
 
 // The inner tangent between circles whose centres are `centres` apart: none when they overlap.
-// (D - 2)(D + 2), not D^2 - 4: no cancellation near tangent circles.
+// sqrt(D - 2) sqrt(D + 2), not sqrt(D^2 - 4): no cancellation near tangent circles, no overflow
+// for centres far apart.
 std::optional<double> inner_tangent(double centres) {
   if (centres < 2 - 1e-12) return std::nullopt;
-  return std::sqrt(std::max(0.0, (centres - 2) * (centres + 2)));
+  return std::sqrt(std::max(0.0, centres - 2)) * std::sqrt(centres + 2);
 }
 
 std::optional<Word> lsr(const DubinsFrame& f) {
   const double x = f.d + f.sa + f.sb, y = -f.ca - f.cb;
-  const auto p = inner_tangent(std::sqrt(x * x + y * y));
+  const auto p = inner_tangent(std::hypot(x, y));
   if (!p) return std::nullopt;
   const double line = std::atan2(y, x) - std::atan2(-2.0, *p);
   return Word{"LSR", turn(line - f.alpha), *p, turn(line - f.beta)};
@@ -72,7 +73,7 @@ std::optional<Word> lsr(const DubinsFrame& f) {
 
 std::optional<Word> rsl(const DubinsFrame& f) {
   const double x = f.d - f.sa - f.sb, y = f.ca + f.cb;
-  const auto p = inner_tangent(std::sqrt(x * x + y * y));
+  const auto p = inner_tangent(std::hypot(x, y));
   if (!p) return std::nullopt;
   const double line = std::atan2(y, x) - std::atan2(2.0, *p);
   return Word{"RSL", turn(f.alpha - line), *p, turn(f.beta - line)};
@@ -88,7 +89,7 @@ std::optional<double> middle_turn(double centres) {
 
 std::optional<Word> rlr(const DubinsFrame& f) {
   const double x = f.d + f.sb - f.sa, y = f.ca - f.cb;
-  const auto p = middle_turn(std::sqrt(x * x + y * y));
+  const auto p = middle_turn(std::hypot(x, y));
   if (!p) return std::nullopt;
   const double t = turn(f.alpha - std::atan2(y, x) + *p / 2);
   return Word{"RLR", t, *p, turn(f.alpha - f.beta - t + *p)};
@@ -96,49 +97,46 @@ std::optional<Word> rlr(const DubinsFrame& f) {
 
 std::optional<Word> lrl(const DubinsFrame& f) {
   const double x = f.d - f.sb + f.sa, y = f.cb - f.ca;
-  const auto p = middle_turn(std::sqrt(x * x + y * y));
+  const auto p = middle_turn(std::hypot(x, y));
   if (!p) return std::nullopt;
   const double t = turn(std::atan2(y, x) - f.alpha + *p / 2);
   return Word{"LRL", t, *p, turn(f.beta - f.alpha - t + *p)};
 }
 
-SteeringPath path_of(const Word& w, double radius) {
+SteeringPath path_of(const Word& w, double radius, bool snap) {
   SteeringPath path;
   const double lengths[] = {w.t, w.p, w.q};
   for (int i = 0; i < 3; ++i)
-    append_segment(path, static_cast<Steer>(w.letters[i]), 1, lengths[i] * radius, radius, false);
+    append_segment(path, static_cast<Steer>(w.letters[i]), 1, lengths[i] * radius, radius, false, snap);
   return path;
 }
 
 constexpr std::optional<Word> (*every_word[])(const DubinsFrame&) = {lsl, rsr, lsr, rsl, rlr, lrl};
 
-// The least word (LSL always exists); a distance query makes no path.
-Word shortest_word(const CarPose& from, const CarPose& to, double radius) {
+std::vector<Word> words(const CarPose& from, const CarPose& to, double radius) {
   require_steerable(from, to, radius, "dubins");
   const DubinsFrame f = frame(from, to, radius);
-  Word best = *lsl(f);
+  std::vector<Word> found;
   for (auto word : every_word)
-    if (const auto w = word(f); w && w->length() < best.length()) best = *w;
-  return best;
+    if (const auto w = word(f)) found.push_back(*w);
+  return found;
 }
 
 }  // namespace
 
 std::vector<SteeringPath> dubins_paths(const CarPose& from, const CarPose& to, double radius) {
-  require_steerable(from, to, radius, "dubins");
-  const DubinsFrame f = frame(from, to, radius);
   std::vector<SteeringPath> paths;
-  for (auto word : every_word)
-    if (const auto w = word(f)) paths.push_back(path_of(*w, radius));
+  for (const Word& w : words(from, to, radius)) paths.push_back(path_of(w, radius, true));
   return paths;
 }
 
 SteeringPath shortest_dubins_path(const CarPose& from, const CarPose& to, double radius) {
-  return path_of(shortest_word(from, to, radius), radius);
+  return shortest_reaching(words(from, to, radius), from, to, radius, "dubins",
+                           [radius](const Word& w, bool snap) { return path_of(w, radius, snap); });
 }
 
 double dubins_distance(const CarPose& from, const CarPose& to, double radius) {
-  return shortest_word(from, to, radius).length() * radius;
+  return shortest_dubins_path(from, to, radius).length();
 }
 
 }  // namespace polyplan

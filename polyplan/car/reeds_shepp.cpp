@@ -40,6 +40,7 @@ void polar(double x, double y, double& r, double& theta) {
 struct Word {
   std::array<char, 5> letters{};  // 'L', 'S', 'R'; 0 past the end
   std::array<double, 5> lengths{};
+  std::array<double, 5> computed{};  // the lengths before those within `zero` of 0 were made 0
   int size = 0;
   double length() const {
     double sum = 0;
@@ -74,9 +75,8 @@ bool lp_sp_lp(double x, double y, double phi, double& t, double& u, double& v) {
 bool lp_sp_rp(double x, double y, double phi, double& t, double& u, double& v) {
   double r, theta;
   polar(x + std::sin(phi), y - 1 - std::cos(phi), r, theta);
-  const double r2 = r * r;
-  if (r2 < 4) return false;
-  u = std::sqrt(r2 - 4);
+  if (r < 2) return false;
+  u = std::sqrt(r - 2) * std::sqrt(r + 2);  // sqrt(r^2 - 4) without overflow
   t = wrap(theta + std::atan2(2.0, u));
   v = wrap(t - phi);
   return t >= -zero && v >= -zero;
@@ -113,7 +113,7 @@ bool lp_rup_lum_rm(double x, double y, double phi, double& t, double& u, double&
 
 // 8.8: L+ R- L- R+
 bool lp_rum_lum_rp(double x, double y, double phi, double& t, double& u, double& v) {
-  const double xi = x + std::sin(phi), eta = y - 1 - std::cos(phi), rho = (20 - xi * xi - eta * eta) / 16;
+  const double xi = x + std::sin(phi), eta = y - 1 - std::cos(phi), rho = (20 - xi * xi - eta * eta) / 16;  // -inf far away
   if (rho < 0 || rho > 1) return false;
   u = -std::acos(rho);
   if (u < -pi / 2) return false;
@@ -126,7 +126,7 @@ bool lp_rm_sm_lm(double x, double y, double phi, double& t, double& u, double& v
   double rho, theta;
   polar(x - std::sin(phi), y - 1 + std::cos(phi), rho, theta);
   if (rho < 2) return false;
-  const double r = std::sqrt(rho * rho - 4);
+  const double r = std::sqrt(rho - 2) * std::sqrt(rho + 2);
   u = 2 - r;
   t = wrap(theta + std::atan2(r, -2.0));
   v = wrap(phi - pi / 2 - t);
@@ -150,7 +150,7 @@ bool lp_rm_slm_rp(double x, double y, double phi, double& t, double& u, double& 
   double rho, theta;
   polar(xi, eta, rho, theta);
   if (rho < 2) return false;
-  u = 4 - std::sqrt(rho * rho - 4);
+  u = 4 - std::sqrt(rho - 2) * std::sqrt(rho + 2);
   if (u > zero) return false;
   t = wrap(std::atan2((4 - u) * xi - 2 * eta, -2 * xi + (u - 4) * eta));
   v = wrap(t - phi);
@@ -167,9 +167,13 @@ void symmetric(std::vector<Word>& out, Formula formula, Letters letters, Letters
                double phi, Make make) {
   double t, u, v;
   const auto snapped = [&](Letters l, double sign) {
+    Word w = make(l, sign, t, u, v);
+    w.computed = w.lengths;
     for (double* length : {&t, &u, &v})
       if (std::abs(*length) < zero) *length = 0;
-    return make(l, sign, t, u, v);
+    const Word snapped = make(l, sign, t, u, v);
+    w.lengths = snapped.lengths;
+    return w;
   };
   if (formula(x, y, phi, t, u, v)) out.push_back(snapped(letters, 1));
   if (formula(-x, y, -phi, t, u, v)) out.push_back(snapped(letters, -1));
@@ -230,11 +234,12 @@ void ccscc(std::vector<Word>& out, double x, double y, double phi) {
   });
 }
 
-SteeringPath path_of(const Word& w, double radius) {
+SteeringPath path_of(const Word& w, double radius, bool snap) {
   SteeringPath path;
+  const auto& lengths = snap ? w.lengths : w.computed;
   for (int i = 0; i < w.size; ++i)
-    append_segment(path, static_cast<Steer>(w.letters[i]), w.lengths[i] < 0 ? -1 : 1, std::abs(w.lengths[i]) * radius,
-                   radius, true);
+    append_segment(path, static_cast<Steer>(w.letters[i]), lengths[i] < 0 ? -1 : 1, std::abs(lengths[i]) * radius,
+                   radius, true, snap);
   return path;
 }
 
@@ -253,28 +258,23 @@ std::vector<Word> every_word(const CarPose& from, const CarPose& to, double radi
   return words;
 }
 
-// The least word: L+S+L+ under one of its symmetries always solves (8.1 needs only a circle
-// through the goal).
-Word shortest_word(const CarPose& from, const CarPose& to, double radius) {
-  const std::vector<Word> words = every_word(from, to, radius);
-  return *std::min_element(words.begin(), words.end(),
-                           [](const Word& a, const Word& b) { return a.length() < b.length(); });
-}
-
 }  // namespace
 
 std::vector<SteeringPath> reeds_shepp_paths(const CarPose& from, const CarPose& to, double radius) {
   std::vector<SteeringPath> paths;
-  for (const Word& w : every_word(from, to, radius)) paths.push_back(path_of(w, radius));
+  for (const Word& w : every_word(from, to, radius)) paths.push_back(path_of(w, radius, true));
   return paths;
 }
 
+// The least word that reaches the goal: L+S+L+ under one of its symmetries always solves (8.1
+// needs only a circle through the goal).
 SteeringPath shortest_reeds_shepp_path(const CarPose& from, const CarPose& to, double radius) {
-  return path_of(shortest_word(from, to, radius), radius);
+  return shortest_reaching(every_word(from, to, radius), from, to, radius, "reeds-shepp",
+                           [radius](const Word& w, bool snap) { return path_of(w, radius, snap); });
 }
 
 double reeds_shepp_distance(const CarPose& from, const CarPose& to, double radius) {
-  return shortest_word(from, to, radius).length() * radius;
+  return shortest_reeds_shepp_path(from, to, radius).length();
 }
 
 }  // namespace polyplan

@@ -2,6 +2,7 @@
 
 #include <polyplan/experiment/experiment_problem.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/plan/thread_pool.hpp>
 #include <polyplan/registry/any_planner.hpp>
 
 #include <algorithm>
@@ -89,7 +90,7 @@ ExperimentResults run_experiment(const Experiment& experiment, unsigned threads,
   std::atomic<std::size_t> next{0};
   std::size_t done = 0;
   std::mutex reporting;
-  const auto work = [&] {
+  const auto work = [&](unsigned) {
     Worker worker(experiment);
     for (std::size_t cell = next++; cell < total; cell = next++) {
       ExperimentRun run = worker.run(cell);
@@ -99,10 +100,7 @@ ExperimentResults run_experiment(const Experiment& experiment, unsigned threads,
       if (progress) progress(done, total);
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < results.threads; ++t) pool.emplace_back(work);
-  work();
-  for (std::thread& thread : pool) thread.join();
+  results.threads = run_on_threads(results.threads, work);  // fewer when the system cannot start them all
   results.total_seconds = whole.seconds();
   return results;
 }

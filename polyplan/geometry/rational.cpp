@@ -128,6 +128,14 @@ std::string to_string(const ExactPoint& point) {
   return text;
 }
 
+Rational reduce_degrees(const Rational& degrees) {
+  // The turns to take off: k = ceil((degrees - 180) / 360), so that degrees - 360 k is in (-180, 180].
+  const Rational turns = (degrees - 180) / 360;
+  mpz_class k;
+  mpz_cdiv_q(k.get_mpz_t(), turns.get_num_mpz_t(), turns.get_den_mpz_t());
+  return degrees - 360 * Rational(k);
+}
+
 double to_double(const Rational& value) {
   mpfr_t rounded;
   mpfr_init2(rounded, 53);

@@ -30,6 +30,10 @@ std::string to_string(const Rational& value);
 // "[p/q, r/s]": a point as messages name it.
 std::string to_string(const ExactPoint& point);
 
+// An angle in degrees reduced exactly into (-180, 180]: 1e9 is -80, 540 is 180 (a heading's
+// double is then taken from the reduced value, so no rounding of a huge angle turns the car).
+Rational reduce_degrees(const Rational& degrees);
+
 // The double nearest to the value (GMP's own get_d truncates: 21/5 would print 4.199999999999999).
 double to_double(const Rational& value);
 

@@ -5,6 +5,7 @@
 #include <polyplan/geometry/detail/cspace_impl.hpp>
 #include <polyplan/geometry/detail/free_space_frame.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/plan/thread_pool.hpp>
 #include <polyplan/search/compressed_graph.hpp>
 #include <polyplan/search/hub_labels.hpp>
 
@@ -42,18 +43,6 @@ double distance(const IntegerPoint& a, const IntegerPoint& b) {
 }
 
 unsigned thread_count(unsigned asked) { return asked ? asked : std::max(1u, std::thread::hardware_concurrency()); }
-
-// Runs work(i) for i in [0, n) on `threads` threads, each taking every threads-th index.
-void parallel_for(std::size_t n, unsigned threads, const std::function<void(std::size_t, unsigned)>& work) {
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1)));
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t)
-    pool.emplace_back([&, t] {
-      for (std::size_t i = t; i < n; i += threads) work(i, t);
-    });
-  for (std::size_t i = 0; i < n; i += threads) work(i, 0);
-  for (std::thread& thread : pool) thread.join();
-}
 
 struct Reached {
   int node;
@@ -151,7 +140,7 @@ struct EuclideanShortestPaths::Impl {
     std::vector<std::vector<std::tuple<int, int, double>>> found(threads);
     std::vector<IntegerTriangulation::Scratch> scratch(threads);
     std::vector<std::vector<int>> visible(threads);
-    parallel_for(nodes(), threads, [&](std::size_t u, unsigned t) {
+    for_each_piece(nodes(), threads, [&](std::size_t u, unsigned t) {
       const auto v = static_cast<std::size_t>(node_vertex[u]);
       std::size_t k = 0;
       while (node_at[wedge_offset[v] + k] != static_cast<int>(u)) ++k;
@@ -174,7 +163,7 @@ struct EuclideanShortestPaths::Impl {
     table_distance.assign(n * n, kInfinity);
     table_parent.assign(n * n, -1);
     std::vector<std::vector<std::pair<double, int>>> heaps(threads);
-    parallel_for(n, threads, [&](std::size_t s, unsigned t) {
+    for_each_piece(n, threads, [&](std::size_t s, unsigned t) {
       dijkstra(graph, static_cast<int>(s), &table_distance[s * n], &table_parent[s * n], heaps[t]);
     });
   }
@@ -198,7 +187,7 @@ struct EuclideanShortestPaths::Impl {
     std::vector<std::vector<int>> row_corners(static_cast<std::size_t>(rows));
     std::vector<std::vector<std::uint32_t>> row_counts(static_cast<std::size_t>(rows));
     std::vector<Scratch::Impl> scratch(threads);
-    parallel_for(static_cast<std::size_t>(rows), threads, [&](std::size_t r, unsigned t) {
+    for_each_piece(static_cast<std::size_t>(rows), threads, [&](std::size_t r, unsigned t) {
       std::vector<Reached> reached;
       for (std::int64_t x = box_low.x; x <= box_high.x; ++x) {
         const IntegerPoint p{x, box_low.y + static_cast<std::int64_t>(r)};
@@ -510,7 +499,8 @@ std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
                                         unsigned threads, const std::function<void(std::size_t done)>& progress) {
   std::vector<TimedPathAnswer> answers(queries.size());
   std::atomic<std::size_t> next{0}, done{0};
-  auto work = [&](bool reports) {
+  auto work = [&](unsigned worker) {
+    const bool reports = worker == 0;
     EuclideanShortestPaths::Scratch scratch;
     for (std::size_t i; (i = next.fetch_add(1)) < queries.size();) {
       const Stopwatch clock;
@@ -520,10 +510,7 @@ std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
       if (reports && progress && finished < queries.size()) progress(finished);  // the last comes once, below
     }
   };
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < thread_count(threads); ++t) pool.emplace_back(work, false);
-  work(true);
-  for (std::thread& thread : pool) thread.join();
+  run_on_threads(thread_count(threads), work);
   if (progress) progress(queries.size());
   return answers;
 }

@@ -1,0 +1,44 @@
+#pragma once
+// Work shared by a few threads, each taking its next piece from a common counter: the pool of
+// the experiment runner and of the Euclidean shortest paths' preprocessing and queries.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+namespace polyplan {
+
+// Runs `work(worker)` on up to `threads` threads at once, the caller's own among them as worker
+// 0, and returns how many ran. A thread the system cannot start (too many threads for its limits,
+// no memory for a stack) is not an error: the pool runs with those that started, so `work` must
+// take its pieces from a shared counter (for_each_piece), never a fixed slice per worker.
+template <class Work>
+unsigned run_on_threads(unsigned threads, const Work& work) {
+  std::vector<std::thread> pool;
+  pool.reserve(threads);
+  for (unsigned worker = 1; worker < threads; ++worker) {
+    try {
+      pool.emplace_back(work, worker);
+    } catch (const std::system_error&) {
+      break;
+    }
+  }
+  work(0u);
+  for (std::thread& thread : pool) thread.join();
+  return static_cast<unsigned>(pool.size() + 1);
+}
+
+// Calls piece(i, worker) for every i in [0, n) once, on up to `threads` threads; returns the
+// threads that ran.
+template <class Piece>
+unsigned for_each_piece(std::size_t n, unsigned threads, const Piece& piece) {
+  std::atomic<std::size_t> next{0};
+  const auto share = [&](unsigned worker) {
+    for (std::size_t i; (i = next.fetch_add(1)) < n;) piece(i, worker);
+  };
+  return run_on_threads(static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(n, 1))), share);
+}
+
+}  // namespace polyplan

@@ -1,0 +1,75 @@
+// The hostile inputs of the hardening issues, one command line each (tests/data/hostile/
+// commands.tsv): each must exit as the table says, within a time limit and (outside the
+// sanitizers, whose shadow memory needs the address space) a 4 GiB memory cap. Exit 2 is one line
+// on stderr containing the expected text; exit 0 prints it on stdout. Never a crash, an abort,
+// exit 3 with a library's message, or a silent success.
+#include "cli_runner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace polyplan::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct HostileCase {
+  int line = 0;
+  int exit_code = 0;
+  std::string expected, arguments;
+};
+
+void PrintTo(const HostileCase& c, std::ostream* os) { *os << "line " << c.line << ": " << c.arguments; }
+
+std::string replaced(std::string text, const std::string& from, const std::string& to) {
+  for (std::size_t at = text.find(from); at != std::string::npos; at = text.find(from, at + to.size()))
+    text.replace(at, from.size(), to);
+  return text;
+}
+
+// The table: EXIT <tab> EXPECTED <tab> ARGUMENTS; '#' starts a comment line.
+std::vector<HostileCase> hostile_cases() {
+  std::ifstream in(kSource + "/tests/data/hostile/commands.tsv");
+  std::vector<HostileCase> cases;
+  std::string text;
+  for (int line = 1; std::getline(in, text); ++line) {
+    if (text.empty() || text[0] == '#') continue;
+    const auto first = text.find('\t'), second = text.find('\t', first + 1);
+    if (second == std::string::npos) throw std::runtime_error("commands.tsv line " + std::to_string(line) + ": 3 columns");
+    cases.push_back({line, std::stoi(text.substr(0, first)), text.substr(first + 1, second - first - 1),
+                     text.substr(second + 1)});
+  }
+  return cases;
+}
+
+class HostileCommand : public ::testing::TestWithParam<HostileCase> {};
+
+TEST_P(HostileCommand, ExitsAsTheTableSays) {
+  const HostileCase& c = GetParam();
+  const fs::path tmp = fs::temp_directory_path() / ("polyplan_hostile_" + std::to_string(c.line));
+  fs::remove_all(tmp);
+  fs::create_directories(tmp);
+  std::string arguments = replaced(c.arguments, "{data}", kSource + "/data");
+  arguments = replaced(arguments, "{tests}", kSource + "/tests/data");
+  arguments = replaced(arguments, "{tmp}", tmp.string());
+  SCOPED_TRACE("commands.tsv line " + std::to_string(c.line) + ": polyplan " + arguments);
+  const CliRun run = run_polyplan(arguments, {.seconds = 120, .memory_cap = POLYPLAN_MEMORY_CAP});
+  EXPECT_EQ(run.exit_code, c.exit_code) << run.err;
+  if (c.exit_code == 2) {
+    EXPECT_EQ(lines(run.err), 1u) << run.err;
+    EXPECT_NE(run.err.find(c.expected), std::string::npos) << "expected \"" << c.expected << "\" in: " << run.err;
+  } else {
+    EXPECT_NE(run.out.find(c.expected), std::string::npos) << "expected \"" << c.expected << "\" in: " << run.out;
+  }
+  fs::remove_all(tmp);
+}
+
+INSTANTIATE_TEST_SUITE_P(Table, HostileCommand, ::testing::ValuesIn(hostile_cases()),
+                         [](const auto& info) { return "line_" + std::to_string(info.param.line); });
+
+}  // namespace
+}  // namespace polyplan::test
