@@ -110,8 +110,10 @@ int run_benchmark(const BenchmarkCommand& command) {
   const ExperimentResults results =
       run_experiment(experiment, threads, [&](std::size_t done, std::size_t total) { progress.update(done, total); });
   if (results.threads < std::min<std::size_t>(threads, experiment.cells()))
-    std::fprintf(stderr, "warning: only %u of the %u threads asked could start (the system's limits); the runs went on "
-                 "with those\n", results.threads, threads);
+    std::fprintf(stderr,
+                 "warning: only %u of the %u threads asked could start (the system's limits); the runs went on "
+                 "with those\n",
+                 results.threads, threads);
 
   std::vector<fs::path> written{out / "results.log", out / "results.json", out / "results.csv", out / "tables.md"};
   write_text(written[0], [&](std::ostream& o) { write_ompl_benchmark_log(o, experiment, results); });

@@ -1,10 +1,15 @@
-// polyplan check WORLD.json PATH.json [--json -]: is this polyline a valid motion? Exit 0 when
-// it is, 1 when it is not, 2 on bad input.
+// polyplan check WORLD.json PATH.json [--json -]: is this path a valid motion (a polyline; a car's
+// segments)? Exit 0 when it is, 1 when it is not, 2 on bad input.
 #include "cli/command.hpp"
 
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
+#if POLYPLAN_WITH_CAR
+#include <polyplan/car/car_path_check.hpp>
+#include <polyplan/io/car_path_reader.hpp>
+#endif
 
 #include <iostream>
 
@@ -17,13 +22,27 @@ struct CheckOptions {
   std::string json;
 };
 
+// A car's path is its segments (arcs and straights along its heading), a translating robot's a
+// polyline: each checked by its own motion model.
+PathCheck check_motion(const World& world, const std::string& path) {
+  if (world.robot.car) {
+#if POLYPLAN_WITH_CAR
+    return check_car_path(world, read_car_path(path));
+#else
+    throw InputError(world.source +
+                     ": a car's path is checked by the car planners' library, which this polyplan is "
+                     "built without (cmake -DPOLYPLAN_FAMILIES=car or all)");
+#endif
+  }
+  const CSpace cspace(world);
+  return check_path(cspace, read_path(path));
+}
+
 int run_check(const CheckOptions& options) {
   std::vector<std::string> warnings;
   const World world = read_world(options.world, &warnings);
   print_warnings(warnings);
-  const std::vector<ExactPoint> path = read_path(options.path);
-  const CSpace cspace(world);
-  const PathCheck result = check_path(cspace, path);
+  const PathCheck result = check_motion(world, options.path);
   nlohmann::json out{{"valid", result.valid}, {"reason", result.reason}};
   if (result.segment) out["segment"] = *result.segment;
   if (!options.json.empty()) write_json(out, options.json);
@@ -37,7 +56,10 @@ void add_check_command(CLI::App& app, Action& run) {
   auto options = std::make_shared<CheckOptions>();
   CLI::App* command = app.add_subcommand("check", "Check exactly whether a path is free in a world");
   command->add_option("world", options->world, "World file (JSON)")->required();
-  command->add_option("path", options->path, "Path file: {\"path\": [[x, y], ...]}")->required();
+  command
+      ->add_option("path", options->path,
+                   "Path file: {\"path\": [[x, y], ...]}; for a car, its segments as plan --json writes them")
+      ->required();
   command->add_option("--json", options->json,
                       "Write {\"valid\", \"reason\"} as JSON to this file ('-' for standard output)");
   command->callback([options, &run] { run = [options] { return run_check(*options); }; });

@@ -15,11 +15,11 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
-#include <optional>
-#include <string_view>
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <string_view>
 #include <vector>
 
 namespace polyplan::cli {
@@ -29,13 +29,18 @@ namespace {
 struct Replanning {
   ReplanAlgorithm algorithm = ReplanAlgorithm::dstar_lite;
   double sensor = 1.5;
+  double memory_mb = ReplanOptions{}.memory_mb, time_limit = ReplanOptions{}.time_limit;
 };
 OptionTable<Replanning> replanning_table() {
   OptionTable<Replanning> table;
   return table.add("algorithm", &Replanning::algorithm, "D* Lite, LPA* or A* from scratch", replan_algorithm_choices())
       .add("sensor", &Replanning::sensor,
            "sensor radius in cells: at least sqrt(2), so that the robot sees every cell its next move touches",
-           at_least(std::sqrt(2.0)));
+           at_least(std::sqrt(2.0)))
+      .add("memory-mb", &Replanning::memory_mb, "the memory the drive's tables may take (a larger map is refused)",
+           OptionRange{0, 1e7, true, false})
+      .add("time-limit", &Replanning::time_limit, "seconds before the drive stops with status limit (0: none)",
+           at_least(0));
 }
 
 struct ReplanCommandOptions {
@@ -58,7 +63,8 @@ GridPoint cell_option(const std::string& text, const char* option) {
   const auto x = comma == std::string::npos ? std::nullopt : whole(all.substr(0, comma));
   const auto y = comma == std::string::npos ? std::nullopt : whole(all.substr(comma + 1));
   if (!x || !y)
-    throw InputError(std::string(option) + " " + text + ": expected X,Y (a column and a row, whole numbers of the map)");
+    throw InputError(std::string(option) + " " + text +
+                     ": expected X,Y (a column and a row, whole numbers of the map)");
   return {*x, *y};
 }
 
@@ -223,6 +229,8 @@ int run_replan(const ReplanCommandOptions& o) {
   ReplanOptions options;
   options.algorithm = replanning.algorithm;
   options.sensor_radius = replanning.sensor;
+  options.memory_mb = replanning.memory_mb;
+  options.time_limit = replanning.time_limit;
   if (o.animate && o.svg.empty()) throw InputError("--animate: give --svg OUT.svg for the animation");
   if ((o.json == "-") + (o.trace == "-") + (o.rhs_trace == "-") > 1)
     throw InputError("--json -, --trace - and --rhs-trace -: only one of them can go to standard output");

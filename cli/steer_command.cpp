@@ -41,7 +41,8 @@ CarPose pose_option(const std::string& text, const char* option) {
   const std::vector<double> values = comma_numbers(text, std::string(option));
   if (values.size() != 3)
     throw InputError(std::string(option) + " " + text + ": expected X,Y,THETA (theta in degrees)");
-  return {values[0], values[1], degrees_option(text.substr(text.rfind(',') + 1), std::string(option) + " " + text + ": theta") * M_PI / 180};
+  return {values[0], values[1],
+          degrees_option(text.substr(text.rfind(',') + 1), std::string(option) + " " + text + ": theta") * M_PI / 180};
 }
 
 nlohmann::json steering_json(const SteeringPath& path) {

@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:-30}
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(world arm path wkt map scenario)
+[ ${#targets[@]} -gt 0 ] || targets=(world arm path wkt map scenario graph car_path)
 jobs=${JOBS:-2}
 CXX=clang++ scripts/configure.sh build-fuzz -DCMAKE_BUILD_TYPE=Release -DPOLYPLAN_FUZZ=ON -DPOLYPLAN_BUILD_TESTS=OFF \
   -DPOLYPLAN_BUILD_EXAMPLES=OFF
@@ -18,12 +18,14 @@ cmake --build build-fuzz -j"$jobs" --target polyplan_fuzzers
 # and the inputs that made a target fail before (tests/data/fuzz/, each also a regression test).
 seeds() {
   case "$1" in
-    world) ls data/worlds/*.json tests/data/bad/*.json ;;
+    world) ls data/worlds/*.json data/changing_worlds/*.json tests/data/bad/*.json ;;
     arm) ls data/arms/*.json ;;
     path) ls tests/data/paths/*.json ;;
     wkt) ls data/worlds/*.wkt tests/data/bad/*.wkt ;;
     map) ls data/movingai/maps/arena.map data/movingai/maps/den312d.map tests/data/fuzz/*.map ;;
     scenario) ls data/movingai/scenarios/arena.map.scen ;;
+    graph) ls data/graphs/small.json ;;
+    car_path) ls tests/data/paths/car_*.json ;;
   esac
 }
 

@@ -20,7 +20,7 @@ namespace {
 //
 // The motion certified is the exact one: from the double pose (x, y, θ), the reference point
 // drives the double length L along the exact straight or about the exact centre, with exact sines
-// and cosines. Let S = max(|x|, |y|) + L + R + ρ + 1 (R the turning radius, ρ the largest distance
+// and cosines. Let S = max(|x|, |y|) + L + R + ρ (R the turning radius, ρ the largest distance
 // of a body vertex from the reference point): every coordinate below is at most a few S. Each
 // enclosure point (a body vertex turned and moved by the pose, the turning centre, a vertex
 // turned about it by a double angle, a tangent apex: the same divided by cos(h) ≥ cos(22.5°) >
@@ -103,7 +103,9 @@ struct CarCollision::Impl {
 
   // The pose's body pieces (world coordinates, doubles) and the margin for a motion of `length`.
   double margin(const CarPose& pose, double length) const {
-    return kMarginPerScale * (std::max(std::abs(pose.x), std::abs(pose.y)) + length + radius + body_radius + 1);
+    // No absolute term: a world drawn in units of 1e-60 gets margins of its own scale (S >= R > 0,
+    // and 2^-40 S stays a normal double for every S the supported range allows).
+    return kMarginPerScale * (std::max(std::abs(pose.x), std::abs(pose.y)) + length + radius + body_radius);
   }
   std::vector<Vec> placed(const std::vector<Vec>& piece, const CarPose& pose) const {
     const double c = std::cos(pose.theta), s = std::sin(pose.theta);

@@ -63,7 +63,7 @@ std::size_t gear_changes(const std::vector<CarState>& path) {
 }
 
 bool arrives(const CarPose& end, const CarPose& at, double radius) {
-  const double scale = 1e-9 * (1 + std::max({std::abs(at.x), std::abs(at.y), radius}));
+  const double scale = 1e-9 * std::max({std::abs(at.x), std::abs(at.y), radius});  // the world's own scale
   return std::hypot(end.x - at.x, end.y - at.y) <= scale &&
          radius * std::abs(std::remainder(end.theta - at.theta, 2 * pi)) <= scale;
 }

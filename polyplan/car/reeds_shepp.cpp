@@ -113,7 +113,8 @@ bool lp_rup_lum_rm(double x, double y, double phi, double& t, double& u, double&
 
 // 8.8: L+ R- L- R+
 bool lp_rum_lum_rp(double x, double y, double phi, double& t, double& u, double& v) {
-  const double xi = x + std::sin(phi), eta = y - 1 - std::cos(phi), rho = (20 - xi * xi - eta * eta) / 16;  // -inf far away
+  const double xi = x + std::sin(phi), eta = y - 1 - std::cos(phi),
+               rho = (20 - xi * xi - eta * eta) / 16;  // -inf far away
   if (rho < 0 || rho > 1) return false;
   u = -std::acos(rho);
   if (u < -pi / 2) return false;

@@ -59,8 +59,7 @@ SteeringPath shortest_reaching(std::vector<Word> candidates, const CarPose& from
 template <class Word, class Make>
 SteeringPath shortest_reaching(std::vector<Word> candidates, const CarPose& from, const CarPose& to, double radius,
                                const char* what, Make make) {
-  std::sort(candidates.begin(), candidates.end(),
-            [](const Word& a, const Word& b) { return a.length() < b.length(); });
+  std::sort(candidates.begin(), candidates.end(), [](const Word& a, const Word& b) { return a.length() < b.length(); });
   std::optional<SteeringPath> best;
   for (const Word& word : candidates) {
     // Words as long as the best within rounding (a straight, or three arcs of 1e-11 radians

@@ -1,6 +1,7 @@
 #include <polyplan/draw/search_svg.hpp>
 
 #include <polyplan/draw/theme.hpp>
+#include <polyplan/geometry/input_error.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -214,6 +215,11 @@ svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, Di
 svg::Drawing draw_search_animation(const WeightedDigraph& graph, DigraphVertexId start, DigraphVertexId goal,
                                    const Result& result, const SearchPictureOptions& options,
                                    const std::string& title) {
+  if (num_vertices(graph) > max_animated_vertices)
+    throw InputError("an animation of a search over " + std::to_string(num_vertices(graph)) +
+                     " vertices would take about " + std::to_string(num_vertices(graph) / 1000) +
+                     " MB; animations draw at most " + std::to_string(max_animated_vertices) +
+                     " vertices (a still picture draws any graph)");
   svg::Drawing drawing(graph_box(graph, options));
   const SearchStyles styles;
   drawing.raw(arrow_defs());

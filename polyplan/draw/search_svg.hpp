@@ -36,7 +36,10 @@ svg::Drawing draw_search(const WeightedDigraph& graph, DigraphVertexId start, Di
 // vertex expanded, each vertex entering the open list when it is discovered and leaving it when it
 // is expanded, and the labels and backpointer arrows changing as shorter ways are found; the path
 // appears after the last step, and the whole picture holds for a step before the loop begins again.
-// Each expanded vertex is one <circle class="expanded"> with its own <animate>.
+// Each expanded vertex is one <circle class="expanded"> with its own <animate>. About 1 kB of
+// SVG a vertex, so a graph of more than max_animated_vertices is refused (InputError): a still
+// picture draws it.
+inline constexpr std::size_t max_animated_vertices = 20000;
 svg::Drawing draw_search_animation(const WeightedDigraph& graph, DigraphVertexId start, DigraphVertexId goal,
                                    const SearchResult<DigraphVertexId>& result, const SearchPictureOptions& options,
                                    const std::string& title);

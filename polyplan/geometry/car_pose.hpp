@@ -41,6 +41,12 @@ struct CarState {
   friend bool operator==(const CarState&, const CarState&) = default;
 };
 
+// One segment of a car's path as a file gives it: driven from `start` (plan --json's "segments").
+struct CarPathSegment {
+  CarPose start;
+  SteeringSegment segment;
+};
+
 // "L+", "S-": a segment's letter and gear.
 std::string segment_word(const SteeringSegment& segment);
 

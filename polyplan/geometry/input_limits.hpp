@@ -33,6 +33,10 @@ inline std::string supported_number_range() {
   return "the supported range (0 or a magnitude from 1e-" + e + " to 1e" + e + ")";
 }
 
+// Points of a path or polygon given as an array (Python): a million is more than any drawing of a
+// world needs, and each is an exact rational pair.
+inline constexpr std::size_t points = std::size_t{1} << 20;
+
 // Cells of a MovingAI map (width × height): the largest benchmark map is 1024 × 1024.
 inline constexpr std::uint64_t map_cells = std::uint64_t{1} << 26;  // 8192 × 8192
 

@@ -59,10 +59,11 @@ void ClassSearch::offer(std::size_t vertex, Word word, double distance, std::opt
     open_.emplace(distance, found->second);
     return;
   }
-  if (states_.size() >= max_states_) {
+  if (states_.size() >= max_states_ || letters_ + word.size() > kLettersPerState * max_states_) {
     truncated_ = true;
     return;
   }
+  letters_ += word.size();
   ids_.emplace(std::move(key), states_.size());
   open_.emplace(distance, states_.size());
   states_.push_back({vertex, std::move(word), distance, parent});

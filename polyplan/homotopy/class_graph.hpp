@@ -51,7 +51,11 @@ class ClassGraph {
 
 // Dijkstra over (vertex, reduced word) from one vertex and starting word, settling states in order
 // of distance: next() gives the next settled state. `admit(vertex, word, distance)` may refuse a
-// state (the tether's bound); states beyond `max_length` or past `max_states` are not made.
+// state (the tether's bound); states beyond `max_length` or past `max_states` are not made, nor
+// states whose words would hold more than kLettersPerState × max_states letters in all: a word
+// grows with every winding, so a bound on states alone bounds no memory (10,000 classes round a
+// pillar took gigabytes).
+inline constexpr std::size_t kLettersPerState = 32;
 class ClassSearch {
  public:
   struct State {
@@ -74,7 +78,7 @@ class ClassSearch {
   // The state (vertex, word), if it was made.
   std::optional<std::size_t> find(std::size_t vertex, const Word& word) const;
   std::size_t states() const { return states_.size(); }
-  // Whether max_states stopped states from being made.
+  // Whether max_states (or its letters) stopped states from being made.
   bool truncated() const { return truncated_; }
 
  private:
@@ -82,6 +86,7 @@ class ClassSearch {
   const ClassGraph* graph_;
   double max_length_;
   std::size_t max_states_;
+  std::size_t letters_ = 0;  // in the words of states_
   Admit admit_;
   bool truncated_ = false;
   std::vector<State> states_;

@@ -101,9 +101,12 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
 PlannerEntry<TranslatingRobot> homotopy_planner_entry() {
   OptionTable<HomotopyOptions> table;
   table.add("classes", &HomotopyOptions::classes,
-            "how many homotopy classes: the shortest path of each, in order of length", at_least(1));
+            "how many homotopy classes: the shortest path of each, in order of length (the k-th may wind k times "
+            "round an obstacle, so K classes hold about K^2/2 vertices: at most 100)",
+            in_range(1, 100));
   table.add("max-length", &HomotopyOptions::max_length, "no path longer than this (0: no bound)", at_least(0));
-  table.add("max-states", &HomotopyOptions::max_states, "(vertex, word) states the search may make", at_least(1));
+  table.add("max-states", &HomotopyOptions::max_states,
+            "(vertex, word) states the search may make (their words 32 letters each on average)", at_least(1));
   return make_planner_entry<TranslatingRobot, HomotopyOptions>(
       "homotopy",
       "the shortest path of each of the K shortest homotopy classes (h-signature words over the visibility graph)",

@@ -192,7 +192,8 @@ PlannerEntry<TranslatingRobot> tether_planner_entry() {
             "the tether's length L: its taut shape is never longer (0: no bound)", at_least(0));
   table.add("list-classes", &TetherOptions::list_classes,
             "list every class of tether the goal is reached in within L (fact tether.classes)");
-  table.add("max-states", &TetherOptions::max_states, "(vertex, word) states each search may make", at_least(1));
+  table.add("max-states", &TetherOptions::max_states,
+            "(vertex, word) states each search may make (their words 32 letters each on average)", at_least(1));
   return make_planner_entry<TranslatingRobot, TetherOptions>(
       "tether",
       "a robot on a taut tether of bounded length from a base: the shortest path keeping the tether within L "

@@ -76,6 +76,11 @@ struct ReplanOptions {
   ReplanAlgorithm algorithm = ReplanAlgorithm::dstar_lite;
   double sensor_radius = 1.5;  // finite and >= 0 (InputError otherwise)
   std::size_t max_moves = 0;   // 0: 4 x the map's cells; then status limit
+  // The drive's bounds: its tables (about 75 bytes a cell, all allocated at the start) may take
+  // `memory_mb` (a map that needs more is refused up front, InputError), and it stops with status
+  // limit after `time_limit` seconds (0: none).
+  double memory_mb = 4096;
+  double time_limit = 300;
   ReplanTrace* trace = nullptr;
   // Called before the robot senses, with the moves made so far: a world that changes as the robot
   // drives (the truth may change; the robot learns of it only where it senses).

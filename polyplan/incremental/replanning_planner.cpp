@@ -202,6 +202,7 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
   replanning.algorithm = r.algorithm;
   replanning.sensor_radius = r.sensor_radius();
   replanning.max_moves = r.options.max_moves;
+  replanning.time_limit = r.options.time;
   replanning.world_changes = [&](std::size_t moves, GridMap& truth) {
     for (; lived < r.phases.size() && r.phases[lived].from_moves <= moves; ++lived)
       truth.blocked.assign(r.phases[lived].raster.blocked.begin(), r.phases[lived].raster.blocked.end());
@@ -228,7 +229,8 @@ PlannerEntry<TranslatingRobot> replanning_planner_entry(ReplanAlgorithm algorith
       .add("sensor", &ReplanningOptions::sensor,
            "sensing radius in cells (at least 1.41421357), 0: the robot sees the whole raster", at_least(0))
       .add("max-moves", &ReplanningOptions::max_moves,
-           "moves before the drive stops with status limit (0: 4 x the cells)", at_least(1));
+           "moves before the drive stops with status limit (0: 4 x the cells)", at_least(1))
+      .add("time", &ReplanningOptions::time, "time limit per query, seconds", above(0));
   static constexpr const char* how[] = {"D* Lite (Koenig & Likhachev), the start moving with the robot",
                                         "LPA*, re-keyed each time the robot has moved",
                                         "A* from scratch at every replan"};

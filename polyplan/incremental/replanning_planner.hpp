@@ -27,6 +27,7 @@ struct ReplanningOptions {
   std::size_t resolution = 100;  // cells per side of the bounds
   double sensor = 0;             // the sensing radius in cells (at least √2), or 0: the whole raster
   std::size_t max_moves = 0;     // 0: 4 × the raster's cells; then status limit
+  double time = 300;             // seconds per query before the drive stops with status limit
 };
 
 class ReplanningPlanner final : public Planner<TranslatingRobot> {

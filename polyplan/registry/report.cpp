@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 
 namespace polyplan {
@@ -140,10 +141,14 @@ std::string Report::summary() const {
   if (!found()) return query_ + ": no path (" + why_not() + ")";
   const std::size_t moves = std::visit([](const auto& r) { return r.path.size() - 1; }, typed_);
   const std::string_view unit = space_->unit(), steps = space_->steps();
-  char text[128];
-  std::snprintf(text, sizeof text, "%s: length %.6f%.*s, %zu %.*s(s)", query_.c_str(), length(),
-                static_cast<int>(unit.size()), unit.data(), moves, static_cast<int>(steps.size()), steps.data());
-  std::string line = text + facts_summary(facts()) + space_->summary(facts());
+  // Six decimals, as courses print lengths; a world drawn in units of 1e-60 (or 1e60) in six
+  // significant digits rather than as 0.000000.
+  const double l = length();
+  char number[32], text[96];
+  std::snprintf(number, sizeof number, l != 0 && (std::abs(l) < 1e-3 || std::abs(l) >= 1e15) ? "%.6g" : "%.6f", l);
+  std::snprintf(text, sizeof text, "%.*s(s)", static_cast<int>(steps.size()), steps.data());
+  std::string line = query_ + ": length " + number + std::string(unit) + ", " + std::to_string(moves) + " " + text +
+                     facts_summary(facts()) + space_->summary(facts());
   if (const auto note = facts().find(QueryFacts::note)) line += "; " + *note;
   return line;
 }

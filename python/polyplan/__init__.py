@@ -152,29 +152,50 @@ def plan(problem, planner: Optional[str] = None, *, record: bool = True, **optio
     return _polyplan._planner(planner, problem, options).plan_all(record)
 
 
-def _json_value(value, where):
-    """A Python value of a world or arm dict as the file's JSON holds it (numbers exact)."""
+# What the file readers allow (geometry/input_limits.hpp): nesting and the digits of a number.
+_JSON_DEPTH = 32
+_INTEGER_BITS = 400  # 100 digits and more are refused as text; str() refuses 4300 digits itself
+
+
+def _integer(value, where):
+    if value.bit_length() > _INTEGER_BITS:
+        raise InputError(f"{where}: an integer of more than 100 digits: longer than the supported 100 characters")
+    return value
+
+
+def _json_value(value, where, exact=True, depth=0):
+    """A Python value of a world, arm or graph as the file's JSON holds it: numbers exact (a float
+    as the Fraction of its double) or, with exact=False, floats as floats. Nesting deeper than a
+    file may (a list that holds itself among them) is an InputError, as are non-finite numbers."""
+    if depth > _JSON_DEPTH:
+        raise InputError(f"{where or 'value'}: nested deeper than the supported {_JSON_DEPTH} levels "
+                         "(or a list or dict that holds itself)")
     if isinstance(value, bool) or value is None or isinstance(value, str):
         return value
     if isinstance(value, _numbers.Integral):  # beyond 64 bits as text, which the readers take exactly
-        return int(value) if abs(int(value)) < 2**63 else str(int(value))
+        value = _integer(int(value), where)
+        return value if abs(value) < 2**63 else str(value)
     if isinstance(value, _fractions.Fraction):
+        _integer(value.numerator, where), _integer(value.denominator, where)
+        if not exact:
+            return float(value)
         return f"{value.numerator}/{value.denominator}" if value.denominator != 1 else value.numerator
     if isinstance(value, _decimal.Decimal):
         if not value.is_finite():
             raise InputError(f"{where}: {value} is not a finite number")
-        return str(value)
+        return str(value) if exact else float(value)
     if isinstance(value, _numbers.Real):
         x = float(value)
         if not _math.isfinite(x):
             raise InputError(f"{where}: {x} is not a finite number")
-        return _json_value(_fractions.Fraction(x), where)
+        return _json_value(_fractions.Fraction(x), where) if exact else x
+    deeper = depth + 1
     if isinstance(value, dict):
-        return {str(k): _json_value(v, f"{where}.{k}" if where else str(k)) for k, v in value.items()}
+        return {str(k): _json_value(v, f"{where}.{k}" if where else str(k), exact, deeper) for k, v in value.items()}
     if hasattr(value, "tolist") and not isinstance(value, (list, tuple)):  # numpy arrays and scalars
-        return _json_value(value.tolist(), where)
+        return _json_value(value.tolist(), where, exact, depth)
     if isinstance(value, (list, tuple)):
-        return [_json_value(v, f"{where}[{i}]") for i, v in enumerate(value)]
+        return [_json_value(v, f"{where}[{i}]", exact, deeper) for i, v in enumerate(value)]
     raise InputError(f"{where}: expected a number, a string, a list or a dict, got {type(value).__name__}")
 
 

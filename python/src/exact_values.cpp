@@ -1,5 +1,7 @@
 #include "exact_values.hpp"
 
+#include <polyplan/geometry/input_limits.hpp>
+
 #include <cmath>
 
 namespace polyplan::python {
@@ -10,6 +12,16 @@ Rational parsed(const std::string& text, const std::string& what) {
   auto value = parse_rational(text, &why);
   if (!value) throw InputError(what + ": " + why + ": " + text);
   return *value;
+}
+
+// An integer's decimal text. One of more than 100 digits is refused as the reader refuses its text
+// (geometry/input_limits.hpp), and before str() is asked for it: Python refuses to write an int of
+// more than 4300 digits with a ValueError of its own.
+std::string decimal_text(py::handle integer, const std::string& what) {
+  if (py::int_(integer.attr("bit_length")()).cast<long long>() > 400)
+    throw InputError(what + ": an integer of more than 100 digits: longer than the supported " +
+                     std::to_string(limits::number_characters) + " characters");
+  return py::str(integer);
 }
 
 bool is_instance_of(py::handle value, const char* module, const char* name) {
@@ -42,11 +54,11 @@ Rational exact_number(py::handle value, const std::string& what) {
     throw InputError(what + ": expected a number, got a bool (" + std::string(py::str(value)) + ")");
   if (py::isinstance<py::str>(value)) return parsed(value.cast<std::string>(), what);
   if (is_instance_of(value, "fractions", "Fraction"))
-    return parsed(std::string(py::str(value.attr("numerator"))) + "/" + std::string(py::str(value.attr("denominator"))),
+    return parsed(decimal_text(value.attr("numerator"), what) + "/" + decimal_text(value.attr("denominator"), what),
                   what);
   if (is_instance_of(value, "decimal", "Decimal")) return parsed(py::str(value), what);
   if (PyIndex_Check(value.ptr()))
-    return parsed(py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()))), what);
+    return parsed(decimal_text(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())), what), what);
   if (PyFloat_Check(value.ptr()) || is_instance_of(value, "numpy", "floating")) {
     const double d = py::float_(py::reinterpret_borrow<py::object>(value));
     if (!std::isfinite(d)) throw InputError(what + ": not a finite number (" + std::string(py::str(value)) + ")");
@@ -74,6 +86,10 @@ ExactPoint exact_point(py::handle value, const std::string& what) {
 
 std::vector<ExactPoint> exact_points(py::handle value, const std::string& what) {
   std::vector<ExactPoint> points;
+  if (const py::ssize_t n = PyObject_Length(value.ptr()); n > static_cast<py::ssize_t>(limits::points))
+    throw InputError(what + ": " + std::to_string(n) + " points, more than the supported " +
+                     std::to_string(limits::points));
+  PyErr_Clear();  // PyObject_Length of something without a length
   if (py::isinstance<py::array>(value)) {
     const auto array = py::reinterpret_borrow<py::array>(value);
     if (array.ndim() != 2 || array.shape(1) != 2)

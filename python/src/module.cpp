@@ -8,6 +8,8 @@
 
 #include <pybind11/pybind11.h>
 
+#include <string>
+
 namespace py = pybind11;
 
 PYBIND11_MODULE(_polyplan, m) {
@@ -19,7 +21,12 @@ PYBIND11_MODULE(_polyplan, m) {
     try {
       std::rethrow_exception(thrown);
     } catch (const polyplan::InputError& e) {
-      input_error(e.what());
+      // A message may quote a file's bytes that are not UTF-8: they are shown as \xNN escapes,
+      // never turned into a UnicodeDecodeError or an empty message.
+      const std::string text = e.what();
+      const py::object message = py::reinterpret_steal<py::object>(
+          PyUnicode_DecodeUTF8(text.data(), static_cast<Py_ssize_t>(text.size()), "backslashreplace"));
+      PyErr_SetObject(input_error.ptr(), message.ptr());
     }
   });
   polyplan::python::bind_problems(m);

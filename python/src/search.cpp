@@ -23,8 +23,9 @@ namespace {
 GraphFile graph_of(const py::object& graph) {
   if (py::isinstance<py::str>(graph) || py::hasattr(graph, "__fspath__"))
     return read_graph(py::str(py::module_::import("os").attr("fspath")(graph)).cast<std::string>());
-  const auto text = py::module_::import("json").attr("dumps")(graph).cast<std::string>();
-  return parse_graph(text, "graph");
+  // Numpy fields and scalars, nesting and cycles as for a world given as a dict; floats stay floats.
+  const py::object plain = py::module_::import("polyplan").attr("_json_value")(graph, "graph", false);
+  return parse_graph(py::module_::import("json").attr("dumps")(plain).cast<std::string>(), "graph");
 }
 
 py::object optional_vertex(const std::optional<DigraphVertexId>& v) {
@@ -55,7 +56,10 @@ py::dict result_dict(const SearchResult<DigraphVertexId>& r, const WeightedDigra
   }
   d["trace"] = trace;
   d["svg"] = draw_search(graph, start, goal, r, {}, "polyplan.search_graph").str();
-  d["animation"] = draw_search_animation(graph, start, goal, r, {}, "polyplan.search_graph").str();
+  d["animation"] =
+      num_vertices(graph) > max_animated_vertices
+          ? py::object(py::none())
+          : py::object(py::str(draw_search_animation(graph, start, goal, r, {}, "polyplan.search_graph").str()));
   return d;
 }
 
@@ -64,13 +68,25 @@ py::dict result_dict(const SearchResult<DigraphVertexId>& r, const WeightedDigra
 void bind_search(py::module_& m) {
   m.def(
       "search_graph",
-      [](const py::object& graph, long long start, long long goal, const std::string& method, double weight) {
+      [](const py::object& graph, const py::object& start_index, const py::object& goal_index,
+         const std::string& method, double weight) {
         const GraphFile file = graph_of(graph);
-        const auto n = static_cast<long long>(file.vertices.size());
-        for (const auto& [value, what] : {std::pair{start, "start"}, std::pair{goal, "goal"}})
-          if (value < 0 || value >= n)
-            throw InputError(std::string(what) + " " + std::to_string(value) + ": not a vertex of " + file.source +
-                             " (0-based indices [0, " + std::to_string(n) + "))");
+        const auto vertex = [&](const py::object& index, const char* what) {
+          // Any integer (numpy's among them), checked against the vertices before it is narrowed.
+          if (!PyIndex_Check(index.ptr()) || PyBool_Check(index.ptr()))
+            throw InputError(std::string(what) + ": expected a vertex index (an int), got " + type_name(index));
+          const py::int_ value = py::reinterpret_steal<py::int_>(PyNumber_Index(index.ptr()));
+          if (value < py::int_(0) || value >= py::int_(file.vertices.size())) {
+            // Named by its bits past 64 of them: str() refuses an int of more than 4300 digits.
+            const auto bits = value.attr("bit_length")().cast<long long>();
+            const std::string shown =
+                bits > 64 ? "(an integer of " + std::to_string(bits) + " bits)" : py::repr(value).cast<std::string>();
+            throw InputError(std::string(what) + " " + shown + ": not a vertex of " + file.source +
+                             " (0-based indices [0, " + std::to_string(file.vertices.size()) + "))");
+          }
+          return value.cast<DigraphVertexId>();
+        };
+        const DigraphVertexId start = vertex(start_index, "start"), goal = vertex(goal_index, "goal");
         SearchOptions options;
         const auto algorithm = search_from_string(method);
         if (!algorithm)
@@ -81,8 +97,7 @@ void bind_search(py::module_& m) {
         options.weight = weight;
         options.record_expanded = options.record_trace = options.ties_first_discovered = true;
         const WeightedDigraph g = make_weighted_digraph(file.vertices);
-        const auto from = static_cast<DigraphVertexId>(start), to = static_cast<DigraphVertexId>(goal);
-        return result_dict(shortest_path(g, from, to, options), g, from, to);
+        return result_dict(shortest_path(g, start, goal, options), g, start, goal);
       },
       py::arg("graph"), py::arg("start"), py::arg("goal"), py::arg("method") = "astar", py::arg("weight") = 1.5,
       R"(Searches a graph in the course's graph-search homework's format, a file's path or the list of dicts

@@ -75,8 +75,7 @@ TEST(SteeringRange, ANearlyEqualHeadingIsALoopForwardOnlyAndAWiggleWithReverse) 
 
 TEST(SteeringRange, OutsideTheRangeIsRefusedWithTheRange) {
   for (const Model& model : kModels) {
-    for (double radius : {1e-101, 1e101, 0.0, -1.0, std::nan("")})
-      try {
+    for (double radius : {1e-101, 1e101, 0.0, -1.0, std::nan("")}) try {
         model.shortest({0, 0, 0}, {1, 0, 0}, radius);
         ADD_FAILURE() << model.name << " radius " << radius;
       } catch (const InputError& e) {

@@ -39,9 +39,10 @@ std::vector<HostileCase> hostile_cases() {
   for (int line = 1; std::getline(in, text); ++line) {
     if (text.empty() || text[0] == '#') continue;
     const auto first = text.find('\t'), second = text.find('\t', first + 1);
-    if (second == std::string::npos) throw std::runtime_error("commands.tsv line " + std::to_string(line) + ": 3 columns");
-    cases.push_back({line, std::stoi(text.substr(0, first)), text.substr(first + 1, second - first - 1),
-                     text.substr(second + 1)});
+    if (second == std::string::npos)
+      throw std::runtime_error("commands.tsv line " + std::to_string(line) + ": 3 columns");
+    cases.push_back(
+        {line, std::stoi(text.substr(0, first)), text.substr(first + 1, second - first - 1), text.substr(second + 1)});
   }
   return cases;
 }

@@ -53,7 +53,8 @@ TEST(Steer, RefusesBadInputInOneLine) {
       {"steer --from 0,0,0 --to 1,y,0", "--to 1,y,0: \"y\" is not a finite number"},
       {"steer --from 0,0,nan --to 1,1,0", "is not a finite number"},
       {"steer --radius 0 --from 0,0,0 --to 1,1,0", "--radius 0: expected a number in [1e-100, 1e+100]"},
-      {"steer --radius -2 --model reeds-shepp --from 0,0,0 --to 1,1,0", "--radius -2: expected a number in [1e-100, 1e+100]"},
+      {"steer --radius -2 --model reeds-shepp --from 0,0,0 --to 1,1,0",
+       "--radius -2: expected a number in [1e-100, 1e+100]"},
       {"steer --model car --from 0,0,0 --to 1,1,0", "--model car: expected one of dubins|reeds-shepp"},
       {"steer --to 1,1,0", "--from is required"},
   };

@@ -1,6 +1,7 @@
 // draw/search_svg: the final state of a search and its animation, with Graph.plot's flags: one
 // animated element per expanded vertex, labels g / h / f, backpointer arrows, the path.
 #include <polyplan/draw/search_svg.hpp>
+#include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/graph_reader.hpp>
 
 #include "draw/svg_fixtures.hpp"
@@ -101,4 +102,27 @@ TEST(SearchSvg, ASearchWithoutPathDrawsNoPath) {
   const std::string svg = draw_search_animation(graph, 0, 1, none, {}, "none").str();
   EXPECT_NE(svg.find("no path, 1 expanded"), std::string::npos);
   EXPECT_EQ(count(svg, "<circle class=\"expanded\""), 1u);
+}
+
+// An animation is about 1 kB a vertex: a graph past the limit is refused up front, naming it, and
+// its still picture is drawn.
+TEST(SearchAnimation, AGraphPastTheLimitIsRefusedAndItsStillPictureDrawn) {
+  GraphFile chain;
+  for (std::size_t v = 0; v <= max_animated_vertices; ++v) {
+    const double x = static_cast<double>(v);
+    chain.vertices.push_back({x, 0, {}, {}});
+    if (v > 0) chain.vertices[v - 1].neighbors = {v}, chain.vertices[v - 1].neighbors_cost = {1.0};
+  }
+  const WeightedDigraph graph = make_weighted_digraph(chain.vertices);
+  SearchOptions options;
+  options.record_trace = true;
+  const auto result = shortest_path(graph, 0, max_animated_vertices, options);
+  ASSERT_TRUE(result.found);
+  try {
+    draw_search_animation(graph, 0, max_animated_vertices, result, {}, "chain");
+    ADD_FAILURE() << "an animation of " << max_animated_vertices + 1 << " vertices was drawn";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("animations draw at most 20000 vertices"), std::string::npos) << e.what();
+  }
+  EXPECT_NE(draw_search(graph, 0, max_animated_vertices, result, {}, "chain").str().find("<svg"), std::string::npos);
 }
