@@ -98,30 +98,19 @@ std::size_t Raster::blocked_count() const {
   return static_cast<std::size_t>(std::count(blocked.begin(), blocked.end(), std::uint8_t{1}));
 }
 
-Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
-  const World& world = cspace.world();
-  require_rasterizable(world, cells_per_axis);
+namespace {
 
-  const long n = static_cast<long>(cells_per_axis);
-  Raster raster{*world.bounds, cells_per_axis, std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0),
-                std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0)};
-  const GridFrame frame(raster.bounds, cells_per_axis);
+// The cells i0 <= i <= i1, j0 <= j <= j1.
+struct CellWindow {
+  long i0, j0, i1, j1;
+};
 
-  // The bounds are walls: a cell is blocked unless its square lies in the closed box where the
-  // reference point may be (the whole grid for a point robot). A box the robot does not fit in
-  // (xmin >= xmax) holds no open square, so every cell is blocked.
-  const Bounds& box = *cspace.reference_box();
-  const GridPoint box_low = frame.to_grid({box.xmin, box.ymin}), box_high = frame.to_grid({box.xmax, box.ymax});
-  std::vector<std::uint8_t> column_inside(cells_per_axis), row_inside(cells_per_axis);
-  for (long k = 0; k < n; ++k) {
-    column_inside[k] = box_low.u <= k && k + 1 <= box_high.u;
-    row_inside[k] = box_low.v <= k && k + 1 <= box_high.v;
-  }
-  for (long j = 0; j < n; ++j)
-    for (long i = 0; i < n; ++i)
-      if (!column_inside[i] || !row_inside[j]) raster.blocked[i + j * n] = raster.walls[i + j * n] = 1;
-
-  // (a) Cells an edge of a C-obstacle passes through.
+// Decides every cell of `window` whose square lies inside the reference box (the walls were set
+// already): blocked when its square meets the interior of a C-obstacle of `cspace`.
+void decide_cells(const CSpace& cspace, const GridFrame& frame, const CellWindow& window, Raster& raster) {
+  const long n = static_cast<long>(raster.cells_per_axis);
+  // (a) Cells an edge of a C-obstacle passes through. (Edges outside the window block the cells
+  // they blocked before: outside it the C-obstacles are the same point set.)
   struct GridBox {
     Rational umin, vmin, umax, vmax;
   };
@@ -150,8 +139,8 @@ Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
   // it lies in one face of the free space's arrangement, free or inside a C-obstacle. Its centre
   // decides, by exact point location; only centres inside some C-obstacle's bounding box can be
   // inside it.
-  for (long j = 0; j < n; ++j)
-    for (long i = 0; i < n; ++i) {
+  for (long j = window.j0; j <= window.j1; ++j)
+    for (long i = window.i0; i <= window.i1; ++i) {
       const std::size_t cell = static_cast<std::size_t>(i + j * n);
       if (raster.blocked[cell]) continue;
       const Rational cu = Rational(2 * i + 1, 2), cv = Rational(2 * j + 1, 2);
@@ -161,6 +150,67 @@ Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
       if (maybe_inside && cspace.locate(raster.cell_center(i, j)).kind == Location::Kind::blocked)
         raster.blocked[cell] = 1;
     }
+}
+
+// The box of the C-obstacle of an obstacle whose box is `obstacle`: it grown by the robot
+// reflected through its reference point (O ⊕ −R), as every C-obstacle is.
+Bounds cobstacle_box(const Bounds& obstacle, const Robot& robot) {
+  Bounds grown = obstacle;
+  for (const Ring& part : robot.parts)
+    for (const ExactPoint& p : part) {
+      const Rational xmin = obstacle.xmin - p.x, xmax = obstacle.xmax - p.x;
+      const Rational ymin = obstacle.ymin - p.y, ymax = obstacle.ymax - p.y;
+      grown.xmin = std::min(grown.xmin, xmin), grown.xmax = std::max(grown.xmax, xmax);
+      grown.ymin = std::min(grown.ymin, ymin), grown.ymax = std::max(grown.ymax, ymax);
+    }
+  return grown;
+}
+
+}  // namespace
+
+Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
+  const World& world = cspace.world();
+  require_rasterizable(world, cells_per_axis);
+
+  const long n = static_cast<long>(cells_per_axis);
+  Raster raster{*world.bounds, cells_per_axis, std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0),
+                std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0)};
+  const GridFrame frame(raster.bounds, cells_per_axis);
+
+  // The bounds are walls: a cell is blocked unless its square lies in the closed box where the
+  // reference point may be (the whole grid for a point robot). A box the robot does not fit in
+  // (xmin >= xmax) holds no open square, so every cell is blocked.
+  const Bounds& box = *cspace.reference_box();
+  const GridPoint box_low = frame.to_grid({box.xmin, box.ymin}), box_high = frame.to_grid({box.xmax, box.ymax});
+  std::vector<std::uint8_t> column_inside(cells_per_axis), row_inside(cells_per_axis);
+  for (long k = 0; k < n; ++k) {
+    column_inside[k] = box_low.u <= k && k + 1 <= box_high.u;
+    row_inside[k] = box_low.v <= k && k + 1 <= box_high.v;
+  }
+  for (long j = 0; j < n; ++j)
+    for (long i = 0; i < n; ++i)
+      if (!column_inside[i] || !row_inside[j]) raster.blocked[i + j * n] = raster.walls[i + j * n] = 1;
+  decide_cells(cspace, frame, {0, 0, n - 1, n - 1}, raster);
+  return raster;
+}
+
+Raster rasterize_change(const CSpace& after, const Raster& before, const std::vector<Bounds>& changed) {
+  Raster raster = before;
+  const long n = static_cast<long>(raster.cells_per_axis);
+  const GridFrame frame(raster.bounds, raster.cells_per_axis);
+  for (const Bounds& obstacle : changed) {
+    // Cells whose closed square meets the C-obstacle's closed box: elsewhere a square and a
+    // neighbourhood of it miss the change, so the union's interior there is as it was.
+    const Bounds c = cobstacle_box(obstacle, after.world().robot);
+    const GridPoint low = frame.to_grid({c.xmin, c.ymin}), high = frame.to_grid({c.xmax, c.ymax});
+    const auto clamp = [n](long k) { return std::clamp(k, 0L, n - 1); };
+    if (high.u < 0 || high.v < 0 || low.u > n || low.v > n) continue;
+    const CellWindow window{clamp(floor_of(low.u) - 1), clamp(floor_of(low.v) - 1), clamp(ceil_of(high.u)),
+                            clamp(ceil_of(high.v))};
+    for (long j = window.j0; j <= window.j1; ++j)
+      for (long i = window.i0; i <= window.i1; ++i) raster.blocked[i + j * n] = raster.walls[i + j * n];
+    decide_cells(after, frame, window, raster);
+  }
   return raster;
 }
 

@@ -43,6 +43,31 @@ World world_after(const World& world, std::size_t made) {
   return after;
 }
 
+// The box of an obstacle: its outer ring's.
+Bounds box_of(const PolygonWithHoles& obstacle) {
+  Bounds b{obstacle.outer[0].x, obstacle.outer[0].y, obstacle.outer[0].x, obstacle.outer[0].y};
+  for (const ExactPoint& p : obstacle.outer) {
+    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
+    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
+  }
+  return b;
+}
+
+// The boxes of the obstacles that changes [from, to) add or remove.
+std::vector<Bounds> changed_boxes(const World& world, std::size_t from, std::size_t to) {
+  std::vector<const PolygonWithHoles*> obstacles;  // the world's, then those added, in order
+  for (const PolygonWithHoles& o : world.obstacles) obstacles.push_back(&o);
+  std::vector<Bounds> boxes;
+  for (std::size_t i = 0; i < to; ++i) {
+    const WorldChange& change = world.changes[i];
+    if (change.added) obstacles.push_back(&*change.added);
+    if (i < from) continue;
+    if (change.added) boxes.push_back(box_of(*change.added));
+    if (change.removed) boxes.push_back(box_of(*obstacles[*change.removed]));
+  }
+  return boxes;
+}
+
 // The world between two moments of change: from the move `from_moves` on, `made` changes made.
 struct Phase {
   std::size_t from_moves = 0, made = 0;
@@ -88,10 +113,12 @@ struct ReplanningPlanner::Impl {
     phases.push_back({0, 0, nullptr, &c, rasterize(c, o.resolution)});
     const World& world = c.world();
     // One world for each moment of change: the changes listed with one after_moves happen at once.
+    // Each raster is the one before it decided again where the moment's changes are: a world that
+    // changes at every move of a long drive at 2048 cells per axis took minutes rasterised whole.
     for (std::size_t i = 0; i < world.changes.size(); ++i) {
       if (i + 1 < world.changes.size() && world.changes[i + 1].after_moves == world.changes[i].after_moves) continue;
       auto changed = std::make_shared<const CSpace>(world_after(world, i + 1));
-      Raster raster = rasterize(*changed, o.resolution);
+      Raster raster = rasterize_change(*changed, phases.back().raster, changed_boxes(world, phases.back().made, i + 1));
       const CSpace* view = changed.get();
       phases.push_back({world.changes[i].after_moves, i + 1, std::move(changed), view, std::move(raster)});
     }

@@ -241,3 +241,57 @@ TEST(Rasterize, RejectsWorldsWithoutBoundsAndZeroCells) {
   EXPECT_THROW(rasterize(CSpace(world_from(kUnitSquare)), max_cells_per_axis + 1), InputError);
   EXPECT_EQ(rasterize(world_from(kUnitSquare), 1).blocked_count(), 1u);
 }
+
+// A world that changes: the raster decided again only near the obstacles a change adds or removes
+// is the raster of the changed world made whole, for a robot with extent, obstacles that merge
+// with and split from others, and changes beyond the bounds.
+TEST(RasterizeChange, EqualsTheChangedWorldRasterisedWhole) {
+  std::mt19937 random(44);
+  std::uniform_int_distribution<int> lattice(-4, 84);
+  const auto triangle = [&] {
+    int c[6];
+    do {
+      for (int& v : c) v = lattice(random);
+    } while ((c[2] - c[0]) * (c[5] - c[1]) == (c[4] - c[0]) * (c[3] - c[1]));
+    Ring ring;
+    for (int v = 0; v < 3; ++v) ring.push_back({Rational(c[2 * v], 20), Rational(c[2 * v + 1], 20)});
+    if (test::signed_area(ring) < 0) std::reverse(ring.begin(), ring.end());
+    return PolygonWithHoles{ring, {}};
+  };
+  for (const char* robot : {"", R"(, "robot": {"parts": [[[-0.15, -0.1], [0.2, -0.1], [0.2, 0.25], [-0.15, 0.25]]]})"})
+    for (int trial = 0; trial < 6; ++trial) {
+      World world =
+          world_from(std::string(R"({"bounds": [0, 0, 4, 4], "obstacles": [)") +
+                     R"([[1, 1], [2, 1], [2, 2], [1, 2]], [[2.5, 0.5], [3.5, 0.5], [3, 1.5]]])" + robot + "}");
+      for (std::size_t n : {7u, 16u}) {
+        SCOPED_TRACE("robot " + std::string(robot) + ", trial " + std::to_string(trial) + ", n " + std::to_string(n));
+        World before = world;
+        Raster raster = rasterize(CSpace(before), n);
+        for (int step = 0; step < 4; ++step) {
+          World after = before;
+          std::vector<Bounds> changed;
+          const auto box = [](const PolygonWithHoles& o) {
+            Bounds b{o.outer[0].x, o.outer[0].y, o.outer[0].x, o.outer[0].y};
+            for (const ExactPoint& p : o.outer)
+              b = {std::min(b.xmin, p.x), std::min(b.ymin, p.y), std::max(b.xmax, p.x), std::max(b.ymax, p.y)};
+            return b;
+          };
+          if (step % 2 == 1 && !after.obstacles.empty()) {
+            const std::size_t k = random() % after.obstacles.size();
+            changed.push_back(box(after.obstacles[k]));
+            after.obstacles.erase(after.obstacles.begin() + static_cast<long>(k));
+            after.obstacle_names.erase(after.obstacle_names.begin() + static_cast<long>(k));
+          } else {
+            after.obstacles.push_back(triangle());
+            after.obstacle_names.push_back("added");
+            changed.push_back(box(after.obstacles.back()));
+          }
+          const CSpace cspace(after);
+          raster = rasterize_change(cspace, raster, changed);
+          EXPECT_EQ(blocked_cells(raster), blocked_cells(rasterize(cspace, n))) << "step " << step;
+          EXPECT_EQ(raster.walls, rasterize(cspace, n).walls);
+          before = after;
+        }
+      }
+    }
+}
