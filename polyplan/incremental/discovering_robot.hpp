@@ -83,8 +83,9 @@ struct ReplanOptions {
   double time_limit = 300;
   ReplanTrace* trace = nullptr;
   // Called before the robot senses, with the moves made so far: a world that changes as the robot
-  // drives (the truth may change; the robot learns of it only where it senses).
-  std::function<void(std::size_t moves, GridMap& truth)> world_changes;
+  // drives (the truth may change; the robot learns of it only where it senses). Returns whether it
+  // changed the truth: a robot that sees the whole map senses again only then.
+  std::function<bool(std::size_t moves, GridMap& truth)> world_changes;
 };
 
 struct ReplanStep {

@@ -231,8 +231,10 @@ PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOp
   replanning.max_moves = r.options.max_moves;
   replanning.time_limit = r.options.time;
   replanning.world_changes = [&](std::size_t moves, GridMap& truth) {
+    const std::size_t before = lived;
     for (; lived < r.phases.size() && r.phases[lived].from_moves <= moves; ++lived)
       truth.blocked.assign(r.phases[lived].raster.blocked.begin(), r.phases[lived].raster.blocked.end());
+    return lived != before;
   };
   const ReplanResult drive =
       drive_through_unknown_map(grid_map(first, r.cspace->world().source), point_of(first, snapped->first),

@@ -210,8 +210,9 @@ TEST(DiscoveringRobot, AnObstacleThatAppearsOnItsWayIsDrivenRound) {
   ReplanOptions options;
   // After three moves a wall rises across the middle row ahead of it, but for one gap.
   options.world_changes = [](std::size_t moves, GridMap& truth) {
-    if (moves != 3) return;
+    if (moves != 3) return false;
     for (int y = 0; y < 3; ++y) truth.blocked[y * truth.width + 6] = y != 2;
+    return true;
   };
   const ReplanResult r = drive_through_unknown_map(map, {0, 1}, {9, 1}, options);
   ASSERT_TRUE(r.found);
