@@ -2,14 +2,8 @@
 // segments)? Exit 0 when it is, 1 when it is not, 2 on bad input.
 #include "cli/command.hpp"
 
-#include <polyplan/geometry/cspace.hpp>
-#include <polyplan/geometry/input_error.hpp>
-#include <polyplan/geometry/path_check.hpp>
 #include <polyplan/io/world_reader.hpp>
-#if POLYPLAN_WITH_CAR
-#include <polyplan/car/car_path_check.hpp>
-#include <polyplan/io/car_path_reader.hpp>
-#endif
+#include <polyplan/registry/robot_path_check.hpp>
 
 #include <iostream>
 
@@ -22,27 +16,11 @@ struct CheckOptions {
   std::string json;
 };
 
-// A car's path is its segments (arcs and straights along its heading), a translating robot's a
-// polyline: each checked by its own motion model.
-PathCheck check_motion(const World& world, const std::string& path) {
-  if (world.robot.car) {
-#if POLYPLAN_WITH_CAR
-    return check_car_path(world, read_car_path(path));
-#else
-    throw InputError(world.source +
-                     ": a car's path is checked by the car planners' library, which this polyplan is "
-                     "built without (cmake -DPOLYPLAN_FAMILIES=car or all)");
-#endif
-  }
-  const CSpace cspace(world);
-  return check_path(cspace, read_path(path));
-}
-
 int run_check(const CheckOptions& options) {
   std::vector<std::string> warnings;
   const World world = read_world(options.world, &warnings);
   print_warnings(warnings);
-  const PathCheck result = check_motion(world, options.path);
+  const PathCheck result = check_path_file(world, options.path);
   nlohmann::json out{{"valid", result.valid}, {"reason", result.reason}};
   if (result.segment) out["segment"] = *result.segment;
   if (!options.json.empty()) write_json(out, options.json);

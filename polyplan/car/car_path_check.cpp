@@ -6,6 +6,7 @@
 #include <string>
 
 namespace polyplan {
+
 PathCheck check_car_path(const World& world, const std::vector<CarPathSegment>& path) {
   const CarCollision car(world);
   for (std::size_t i = 0; i < path.size(); ++i) {

@@ -74,3 +74,29 @@ INSTANTIATE_TEST_SUITE_P(Table, HostileCommand, ::testing::ValuesIn(hostile_case
 
 }  // namespace
 }  // namespace polyplan::test
+
+namespace polyplan::test {
+namespace {
+
+// Threads the system cannot start (here: no address space for their stacks) shrink the pool with
+// a message; the experiment still runs every run.
+TEST(HostileThreads, ThreadsThatCannotStartShrinkThePool) {
+  if (!POLYPLAN_MEMORY_CAP) GTEST_SKIP() << "the sanitizers reserve the address space the cap would take";
+  const fs::path out = fs::temp_directory_path() / "polyplan_hostile_threads";
+  std::string command = "ulimit -v 1200000; '";
+  command += POLYPLAN_CLI;
+  command += "' benchmark '" + kSource +
+             "/data/experiments/seed001_kprm.json' --threads 200 --seeds 10 --time-limit 0.2 --out '" + out.string() +
+             "' >/dev/null 2>'" + out.string() + ".err'";
+  const int status = std::system(command.c_str());
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status << ": " << slurp(out.string() + ".err");
+  const std::string err = slurp(out.string() + ".err");
+  EXPECT_NE(err.find("threads asked could start (the system's limits); the runs went on with those"), std::string::npos)
+      << err;
+  EXPECT_NE(slurp(out / "results.json").find("\"runs\""), std::string::npos);
+  fs::remove_all(out);
+  fs::remove(out.string() + ".err");
+}
+
+}  // namespace
+}  // namespace polyplan::test
