@@ -15,7 +15,8 @@ PathCheck check_path_file(const World& world, const std::string& path_file) {
 #if POLYPLAN_WITH_CAR
     return check_car_path(world, read_car_path(path_file));
 #else
-    throw InputError(world.source + ": a car's path is checked by the car planners' library, which this polyplan is "
+    throw InputError(world.source +
+                     ": a car's path is checked by the car planners' library, which this polyplan is "
                      "built without (cmake -DPOLYPLAN_FAMILIES=car or all)");
 #endif
   }
