@@ -1,11 +1,13 @@
 // polyplan: the command-line program. Each subcommand lives in its own file.
 #include "cli/command.hpp"
+#include "cli/process_limits.hpp"
 
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/any_planner.hpp>
 
 #include <fstream>
 #include <iostream>
+#include <new>
 
 namespace polyplan::cli {
 
@@ -35,6 +37,7 @@ int main(int argc, char** argv) {
   CLI::App app{"polyplan: exact motion planning in polygon worlds"};
   app.require_subcommand(1);
   Action run;
+  const auto limits = add_process_limits(app);  // first: the commands added after it pass them up
   add_cspace_command(app, run);
   add_check_command(app, run);
   add_plan_command(app, run);
@@ -76,10 +79,14 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << message << " (see polyplan --help)\n";
     return bad_input;
   }
+  apply_process_limits(*limits);
   try {
     return run();
   } catch (const polyplan::InputError& e) {
     std::cerr << "error: " << e.what() << '\n';
+    return bad_input;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: " << out_of_memory_message(*limits) << '\n';
     return bad_input;
   } catch (const std::exception& e) {
     std::cerr << "internal error (please report): " << e.what() << '\n';

@@ -100,3 +100,27 @@ TEST(HostileThreads, ThreadsThatCannotStartShrinkThePool) {
 
 }  // namespace
 }  // namespace polyplan::test
+
+namespace polyplan::test {
+namespace {
+
+// Past --max-memory-mb an allocation fails, and the program says so in one line, exit 2.
+TEST(HostileLimits, AMemoryBudgetEndsTheProgramWithOneLine) {
+  if (!POLYPLAN_MEMORY_CAP) GTEST_SKIP() << "the sanitizers reserve the address space the cap would take";
+  const fs::path map = fs::temp_directory_path() / "polyplan_hostile_open_2000.map";
+  {
+    std::ofstream out(map);
+    out << "type octile\nheight 2000\nwidth 2000\nmap\n";
+    for (int row = 0; row < 2000; ++row) out << std::string(2000, '.') << '\n';
+  }
+  const CliRun run = run_polyplan("replan '" + map.string() + "' --start 1,1 --goal 1990,1990 --max-memory-mb 100");
+  EXPECT_EQ(run.exit_code, 2) << run.err;
+  EXPECT_EQ(lines(run.err), 1u) << run.err;
+  EXPECT_NE(run.err.find("out of memory: the command needed more than it may take (100 MB, --max-memory-mb"),
+            std::string::npos)
+      << run.err;
+  fs::remove(map);
+}
+
+}  // namespace
+}  // namespace polyplan::test
