@@ -41,8 +41,7 @@ std::shared_ptr<ProcessLimits> add_process_limits(CLI::App& app) {
       value = *parsed;
     };
   };
-  app.add_option_function<std::string>("--max-memory-mb",
-                                       number(limits->max_memory_mb, 16, 1e7, "--max-memory-mb"),
+  app.add_option_function<std::string>("--max-memory-mb", number(limits->max_memory_mb, 16, 1e7, "--max-memory-mb"),
                                        "every command: the memory the program may take, MB (default 16384)");
   app.add_option_function<std::string>("--max-seconds", number(limits->max_seconds, 0.001, 1e7, "--max-seconds"),
                                        "every command: the seconds the program may run (default 3600)");

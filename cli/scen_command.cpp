@@ -33,7 +33,7 @@ OptionTable<ScenBudget> scen_budget_table() {
   OptionTable<ScenBudget> table;
   return table
       .add("threads", &ScenBudget::threads,
-           "threads answering the queries, sharing one preprocessing (default 0: every core)", in_range(1, 256))
+           "threads answering the queries, sharing one preprocessing (0: one per core)", in_range(0, 256))
       .add("table-mb", &ScenBudget::table_mb,
            "largest corner-to-corner distance table, and hub labels, to build, in MB (else queries search the corner "
            "graph)",
@@ -76,8 +76,14 @@ int run_scen(const ScenOptions& options) {
   std::vector<std::pair<IntegerPoint, IntegerPoint>> asked;
   for (const ScenarioQuery& q : scenarios) asked.push_back({{q.start_x, q.start_y}, {q.goal_x, q.goal_y}});
   Progress progress("queries");
-  const std::vector<TimedPathAnswer> answers =
-      answer_all(paths, asked, threads, [&](std::size_t done) { progress.update(done, asked.size()); });
+  bool short_of_threads = false;
+  const std::vector<TimedPathAnswer> answers = answer_all(
+      paths, asked, threads, [&](std::size_t done) { progress.update(done, asked.size()); }, &short_of_threads);
+  if (short_of_threads || paths.short_of_threads())
+    std::fprintf(stderr,
+                 "warning: not all of the %u threads asked could start (the system's limits); the work went "
+                 "on with those that did\n",
+                 threads);
   const double batch_seconds = seconds_since(batch);
 
   nlohmann::json queries = nlohmann::json::array();

@@ -100,7 +100,7 @@ ExperimentResults run_experiment(const Experiment& experiment, unsigned threads,
       if (progress) progress(done, total);
     }
   };
-  results.threads = run_on_threads(results.threads, work);  // fewer when the system cannot start them all
+  results.threads = run_on_threads(results.threads, work).started;  // fewer when the system cannot start them all
   results.total_seconds = whole.seconds();
   return results;
 }

@@ -10,12 +10,18 @@
 
 namespace polyplan {
 
+// How many threads a pool asked for, and how many ran.
+struct ThreadsRun {
+  unsigned asked = 0, started = 0;
+  bool short_of_threads() const { return started < asked; }
+};
+
 // Runs `work(worker)` on up to `threads` threads at once, the caller's own among them as worker
-// 0, and returns how many ran. A thread the system cannot start (too many threads for its limits,
-// no memory for a stack) is not an error: the pool runs with those that started, so `work` must
-// take its pieces from a shared counter (for_each_piece), never a fixed slice per worker.
+// 0. A thread the system cannot start (too many threads for its limits, no memory for a stack) is
+// not an error: the pool runs with those that started, so `work` must take its pieces from a
+// shared counter (for_each_piece), never a fixed slice per worker.
 template <class Work>
-unsigned run_on_threads(unsigned threads, const Work& work) {
+ThreadsRun run_on_threads(unsigned threads, const Work& work) {
   std::vector<std::thread> pool;
   pool.reserve(threads);
   for (unsigned worker = 1; worker < threads; ++worker) {
@@ -27,13 +33,12 @@ unsigned run_on_threads(unsigned threads, const Work& work) {
   }
   work(0u);
   for (std::thread& thread : pool) thread.join();
-  return static_cast<unsigned>(pool.size() + 1);
+  return {std::max(threads, 1u), static_cast<unsigned>(pool.size() + 1)};
 }
 
-// Calls piece(i, worker) for every i in [0, n) once, on up to `threads` threads; returns the
-// threads that ran.
+// Calls piece(i, worker) for every i in [0, n) once, on up to `threads` threads (no more than n).
 template <class Piece>
-unsigned for_each_piece(std::size_t n, unsigned threads, const Piece& piece) {
+ThreadsRun for_each_piece(std::size_t n, unsigned threads, const Piece& piece) {
   std::atomic<std::size_t> next{0};
   const auto share = [&](unsigned worker) {
     for (std::size_t i; (i = next.fetch_add(1)) < n;) piece(i, worker);

@@ -87,6 +87,10 @@ EuclideanShortestPaths::Scratch::~Scratch() = default;
 EuclideanShortestPaths::Scratch::Scratch(Scratch&&) noexcept = default;
 
 struct EuclideanShortestPaths::Impl {
+  // Whether a step of the preprocessing ran on fewer threads than it asked for (the system could
+  // not start them all).
+  bool short_of_threads = false;
+  void note_threads(ThreadsRun run) { short_of_threads = short_of_threads || run.short_of_threads(); }
   IntegerTriangulation triangulation;
   // node_at[wedge_offset[v] + k]: the corner of free wedge k at vertex v, or -1.
   std::vector<std::size_t> wedge_offset;
@@ -140,7 +144,7 @@ struct EuclideanShortestPaths::Impl {
     std::vector<std::vector<std::tuple<int, int, double>>> found(threads);
     std::vector<IntegerTriangulation::Scratch> scratch(threads);
     std::vector<std::vector<int>> visible(threads);
-    for_each_piece(nodes(), threads, [&](std::size_t u, unsigned t) {
+    note_threads(for_each_piece(nodes(), threads, [&](std::size_t u, unsigned t) {
       const auto v = static_cast<std::size_t>(node_vertex[u]);
       std::size_t k = 0;
       while (node_at[wedge_offset[v] + k] != static_cast<int>(u)) ++k;
@@ -152,7 +156,7 @@ struct EuclideanShortestPaths::Impl {
         if (arrival_node(v, triangulation.point(static_cast<std::size_t>(c))) != static_cast<int>(u)) continue;
         found[t].emplace_back(static_cast<int>(u), target, distance(position(static_cast<int>(u)), position(target)));
       }
-    });
+    }));
     std::vector<std::tuple<int, int, double>> edges;
     for (const auto& part : found) edges.insert(edges.end(), part.begin(), part.end());
     graph = CompressedGraph::from_edges(nodes(), edges);
@@ -163,9 +167,9 @@ struct EuclideanShortestPaths::Impl {
     table_distance.assign(n * n, kInfinity);
     table_parent.assign(n * n, -1);
     std::vector<std::vector<std::pair<double, int>>> heaps(threads);
-    for_each_piece(n, threads, [&](std::size_t s, unsigned t) {
+    note_threads(for_each_piece(n, threads, [&](std::size_t s, unsigned t) {
       dijkstra(graph, static_cast<int>(s), &table_distance[s * n], &table_parent[s * n], heaps[t]);
-    });
+    }));
   }
 
   // Every integer point's reach(): the box's area times the corners each point sees (random512:
@@ -187,7 +191,7 @@ struct EuclideanShortestPaths::Impl {
     std::vector<std::vector<int>> row_corners(static_cast<std::size_t>(rows));
     std::vector<std::vector<std::uint32_t>> row_counts(static_cast<std::size_t>(rows));
     std::vector<Scratch::Impl> scratch(threads);
-    for_each_piece(static_cast<std::size_t>(rows), threads, [&](std::size_t r, unsigned t) {
+    note_threads(for_each_piece(static_cast<std::size_t>(rows), threads, [&](std::size_t r, unsigned t) {
       std::vector<Reached> reached;
       for (std::int64_t x = box_low.x; x <= box_high.x; ++x) {
         const IntegerPoint p{x, box_low.y + static_cast<std::int64_t>(r)};
@@ -195,7 +199,7 @@ struct EuclideanShortestPaths::Impl {
         for (const Reached& c : reached) row_corners[r].push_back(c.node);
         row_counts[r].push_back(static_cast<std::uint32_t>(reached.size()));
       }
-    });
+    }));
     std::size_t total = 0;
     for (const auto& corners : row_corners) total += corners.size();
     if (total > max_bytes / sizeof(int) || total >= std::numeric_limits<std::uint32_t>::max()) return;
@@ -413,6 +417,8 @@ bool EuclideanShortestPaths::has_table() const { return !impl_->table_distance.e
 bool EuclideanShortestPaths::has_labels() const { return impl_->labels.has_value(); }
 std::size_t EuclideanShortestPaths::label_entries() const { return impl_->labels ? impl_->labels->entry_count() : 0; }
 double EuclideanShortestPaths::build_seconds() const { return impl_->build_seconds; }
+bool EuclideanShortestPaths::short_of_threads() const { return impl_->short_of_threads; }
+
 std::size_t EuclideanShortestPaths::memory_bytes() const {
   const Impl& g = *impl_;
   return g.triangulation.memory_bytes() + (g.wedge_offset.capacity() + g.graph.begin.capacity()) * sizeof(std::size_t) +
@@ -496,7 +502,8 @@ EuclideanPathAnswer EuclideanShortestPaths::query(const IntegerPoint& start, con
 
 std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
                                         const std::vector<std::pair<IntegerPoint, IntegerPoint>>& queries,
-                                        unsigned threads, const std::function<void(std::size_t done)>& progress) {
+                                        unsigned threads, const std::function<void(std::size_t done)>& progress,
+                                        bool* short_of_threads) {
   std::vector<TimedPathAnswer> answers(queries.size());
   std::atomic<std::size_t> next{0}, done{0};
   auto work = [&](unsigned worker) {
@@ -510,7 +517,8 @@ std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
       if (reports && progress && finished < queries.size()) progress(finished);  // the last comes once, below
     }
   };
-  run_on_threads(thread_count(threads), work);
+  const ThreadsRun ran = run_on_threads(thread_count(threads), work);
+  if (short_of_threads) *short_of_threads = ran.short_of_threads();
   if (progress) progress(queries.size());
   return answers;
 }

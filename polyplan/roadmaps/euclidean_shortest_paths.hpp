@@ -79,6 +79,9 @@ class EuclideanShortestPaths {
   // Bytes of the triangulation, the graph and the table.
   std::size_t memory_bytes() const;
   double build_seconds() const;
+  // Whether a step of the preprocessing ran on fewer threads than asked (the system could not
+  // start them all: the work went on with those that started).
+  bool short_of_threads() const;
 
  private:
   struct Impl;
@@ -89,13 +92,16 @@ class EuclideanShortestPaths {
 // A batch of (start, goal) queries answered on `threads` threads sharing `paths`, each thread with
 // its own scratch. Answer i, with the µs its query took in its thread, lands in slot i: the answers
 // do not depend on the number of threads. `progress(done)` is called on the calling thread after
-// each query it answers while some are left, and once at the end with every query done.
+// each query it answers while some are left, and once at the end with every query done;
+// `short_of_threads`, when given, says whether fewer threads ran than asked (the system could not
+// start them all).
 struct TimedPathAnswer {
   EuclideanPathAnswer answer;
   double us = 0;
 };
 std::vector<TimedPathAnswer> answer_all(const EuclideanShortestPaths& paths,
                                         const std::vector<std::pair<IntegerPoint, IntegerPoint>>& queries,
-                                        unsigned threads, const std::function<void(std::size_t done)>& progress = {});
+                                        unsigned threads, const std::function<void(std::size_t done)>& progress = {},
+                                        bool* short_of_threads = nullptr);
 
 }  // namespace polyplan
