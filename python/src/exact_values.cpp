@@ -40,6 +40,16 @@ py::sequence sequence_of(py::handle value, const std::string& what, const std::s
   return py::reinterpret_borrow<py::sequence>(value);
 }
 
+// A numpy row or column vector ((1, n) or (n, 1): the course writes points as np.array([[x], [y]]))
+// as the 1-d array it stands for; anything else as it is.
+py::object as_vector(py::handle value) {
+  if (py::isinstance<py::array>(value)) {
+    const auto array = py::reinterpret_borrow<py::array>(value);
+    if (array.ndim() == 2 && (array.shape(0) == 1 || array.shape(1) == 1)) return value.attr("ravel")();
+  }
+  return py::reinterpret_borrow<py::object>(value);
+}
+
 }  // namespace
 
 std::string type_name(py::handle value) {
@@ -77,7 +87,11 @@ double finite_number(py::handle value, const std::string& what) {
   return to_double(exact_number(value, what));
 }
 
-ExactPoint exact_point(py::handle value, const std::string& what) {
+ExactPoint exact_point(py::handle given, const std::string& what) {
+  const py::object value = as_vector(given);
+  if (py::isinstance<py::array>(value) && py::reinterpret_borrow<py::array>(value).ndim() != 1)
+    throw InputError(what + ": expected a point (x, y): an array of shape (2,), (1, 2) or (2, 1), got shape " +
+                     std::string(py::str(value.attr("shape"))));
   const py::sequence pair = sequence_of(value, what, "a point (x, y)");
   if (py::len(pair) != 2)
     throw InputError(what + ": expected a point (x, y), got " + std::to_string(py::len(pair)) + " numbers");
@@ -122,7 +136,8 @@ namespace {
 
 // Each element of a sequence or 1-d array of numbers read by `read`.
 template <class Read>
-auto numbers_of(py::handle value, const std::string& what, Read read) {
+auto numbers_of(py::handle given, const std::string& what, Read read) {
+  const py::object value = as_vector(given);
   if (py::isinstance<py::array>(value) && py::reinterpret_borrow<py::array>(value).ndim() != 1)
     throw InputError(what + ": expected a 1-d array of numbers, got shape " +
                      std::string(py::str(value.attr("shape"))));

@@ -88,6 +88,16 @@ def test_start_and_goal_in_any_form(world):
     assert len(lengths) == 1
 
 
+def test_points_as_column_and_row_vectors(world):
+    # The course writes points as column vectors, np.array([[x], [y]]).
+    p = polyplan.planner("visibility", world)
+    expected = p.plan(start=(1, 1), goal=(9, 9)).length
+    for start, goal in [(np.array([[1.0], [1.0]]), np.array([[9.0], [9.0]])), (np.array([[1, 1]]), np.array([[9, 9]]))]:
+        assert p.plan(start=start, goal=goal).length == expected
+    with pytest.raises(polyplan.InputError, match=r"start: expected a 1-d array of numbers, got shape \(2, 2\)"):
+        p.plan(start=np.ones((2, 2)), goal=(9, 9))
+
+
 def test_a_big_array_is_read_exactly(world):
     # 10001 points along the left edge: a long path, every point exact.
     ys = np.linspace(1, 9, 10001)
