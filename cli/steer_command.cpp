@@ -8,6 +8,7 @@
 #include <polyplan/car/reeds_shepp.hpp>
 #include <polyplan/draw/steering_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/registry/steering_json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -45,13 +46,6 @@ CarPose pose_option(const std::string& text, const char* option) {
           degrees_option(text.substr(text.rfind(',') + 1), std::string(option) + " " + text + ": theta") * M_PI / 180};
 }
 
-nlohmann::json steering_json(const SteeringPath& path) {
-  nlohmann::json segments = nlohmann::json::array();
-  for (const SteeringSegment& s : path.segments)
-    segments.push_back({{"steer", std::string(1, static_cast<char>(s.steer))}, {"gear", s.gear}, {"length", s.length}});
-  return {{"length", path.length()}, {"word", path.word}, {"segments", segments}};
-}
-
 int run_steer(const SteerOptions& o) {
   const Steering steering = o.steering->parse();
   const double radius = steering.radius;
@@ -59,10 +53,8 @@ int run_steer(const SteerOptions& o) {
   const SteeringPath path = steering.model == Steering::Model::reeds_shepp ? shortest_reeds_shepp_path(from, to, radius)
                                                                            : shortest_dubins_path(from, to, radius);
   if (!o.json.empty()) write_json(steering_json(path), o.json);
-  char length[32];
-  std::snprintf(length, sizeof length, "%.6g", path.length());
-  const std::string summary = std::string(steering.model == Steering::Model::reeds_shepp ? "reeds-shepp" : "dubins") +
-                              " " + (path.word.empty() ? "(no motion)" : path.word) + ": length " + length;
+  const std::string summary =
+      steering_summary(steering.model == Steering::Model::reeds_shepp ? "reeds-shepp" : "dubins", path);
   if (!o.svg.empty()) draw_steering(path, from, to, radius, summary).write(o.svg);
   if (o.json != "-") std::cout << summary << '\n';
   return ok;

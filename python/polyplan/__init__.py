@@ -42,6 +42,7 @@ from ._polyplan import (  # noqa: F401 (the public names)
     read_world,
     replan,
     search_graph,
+    steer,
     svg,
 )
 from . import _polyplan
@@ -49,7 +50,7 @@ from . import _polyplan
 __all__ = [
     "Arm", "CSpace", "Cells", "Drive", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
     "PlannerInfo", "World", "check", "cspace", "plan", "planner", "planners", "plot", "potential", "read_arm",
-    "read_world", "replan", "search_graph", "svg",
+    "read_world", "replan", "search_graph", "steer", "svg",
 ]
 
 

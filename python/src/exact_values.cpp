@@ -72,7 +72,13 @@ Rational exact_number(py::handle value, const std::string& what) {
   if (PyFloat_Check(value.ptr()) || is_instance_of(value, "numpy", "floating")) {
     const double d = py::float_(py::reinterpret_borrow<py::object>(value));
     if (!std::isfinite(d)) throw InputError(what + ": not a finite number (" + std::string(py::str(value)) + ")");
-    return parsed(to_string(Rational(d)), what);  // the double's exact value, within the limits of every number read
+    // The double's exact value, within the range of every number read (its exact decimal text can
+    // be far longer than a number's 100 characters: the range is what is checked).
+    const double magnitude = std::abs(d);
+    if (magnitude > 1e100 || (magnitude != 0 && magnitude < 1e-100))
+      throw InputError(what + ": " + std::string(py::repr(value)) + ": " +
+                       (magnitude > 1 ? "overflows " : "underflows ") + limits::supported_number_range());
+    return Rational(d);
   }
   throw InputError(what + ": expected a number (int, Fraction, float or a decimal string), got " + type_name(value));
 }

@@ -35,4 +35,5 @@ PYBIND11_MODULE(_polyplan, m) {
   polyplan::python::bind_replan(m);
   polyplan::python::bind_potential(m);
   polyplan::python::bind_search(m);
+  polyplan::python::bind_steer(m);
 }

@@ -1,0 +1,18 @@
+#pragma once
+// The JSON document of a steering curve (car/steering_path.hpp), which `polyplan steer --json`
+// prints and Python's polyplan.steer returns as a dict: {length, word, segments [{steer, gear,
+// length}]}.
+#include <polyplan/car/steering_path.hpp>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+
+namespace polyplan {
+
+nlohmann::json steering_json(const SteeringPath& path);
+
+// The line people read: "dubins LSL: length 12.3457" ("(no motion)" for an empty word).
+std::string steering_summary(const std::string& model, const SteeringPath& path);
+
+}  // namespace polyplan
