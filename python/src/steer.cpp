@@ -39,8 +39,8 @@ void bind_steer(py::module_& m) {
         const double radius = finite_number(radius_given, "radius");
         if (model != "dubins" && model != "reeds-shepp")
           throw InputError("model " + model + ": expected dubins or reeds-shepp");
-        const SteeringPath path = model == "dubins" ? shortest_dubins_path(from, to, radius)
-                                                    : shortest_reeds_shepp_path(from, to, radius);
+        const SteeringPath path =
+            model == "dubins" ? shortest_dubins_path(from, to, radius) : shortest_reeds_shepp_path(from, to, radius);
         py::dict result = from_json(steering_json(path));
         result["svg"] = draw_steering(path, from, to, radius, steering_summary(model, path)).str();
         return result;
