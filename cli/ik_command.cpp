@@ -5,11 +5,11 @@
 // those free of the obstacles; the picture draws every solution at once.
 #include "cli/command.hpp"
 
-#include <polyplan/arm/arm_collision.hpp>
-#include <polyplan/arm/inverse_kinematics.hpp>
+#include <polyplan/arm/ik_study.hpp>
 #include <polyplan/draw/arm_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/io/arm_reader.hpp>
+#include <polyplan/registry/ik_json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -35,73 +35,33 @@ std::optional<ExactPoint> exact_target(const std::string& text) {
   return ExactPoint{*x, *y};
 }
 
-IkOptions ik_options(const Arm& arm, const IkCommandOptions& o) {
-  IkOptions options;
-  if (!o.orientation.empty()) options.orientation = degrees_option(o.orientation, "--orientation") * M_PI / 180;
-  options.limits = arm.limits;
-  options.all = o.all;
-  options.seeds = o.all ? 32 : 8;
-  return options;
-}
-
 int run_ik(const IkCommandOptions& o) {
   std::vector<std::string> warnings;
   const ArmProblem problem = read_arm_problem(o.arm, &warnings);
   print_warnings(warnings);
   const std::vector<double> t = comma_numbers(o.target, "--target");
   if (t.size() != 2) throw InputError("--target " + o.target + ": expected X,Y");
-  const Eigen::Vector2d target(t[0], t[1]);
-  IkOptions options = ik_options(problem.arm, o);
-  options.exact_target = exact_target(o.target);
-  IkAnswer answer = inverse_kinematics(problem.arm, target, options);
-  std::vector<bool> free;
-  const ArmCollisionChecker checker(problem);
-  for (const IkSolution& s : answer.solutions) free.push_back(checker.is_free(s.angles));
-  if (o.collision_free && answer.found) {
-    IkAnswer kept{false, {}, ""};
-    for (std::size_t i = 0; i < answer.solutions.size(); ++i)
-      if (free[i]) kept.solutions.push_back(answer.solutions[i]);
-    kept.found = !kept.solutions.empty();
-    if (!kept.found) kept.why_not = "every solution collides", kept.solutions = answer.solutions;
-    else free.assign(kept.solutions.size(), true);
-    answer = std::move(kept);
-  }
-  if (!o.json.empty()) {
-    nlohmann::json solutions = nlohmann::json::array();
-    for (std::size_t i = 0; i < answer.solutions.size(); ++i)
-      solutions.push_back(
-          {{"angles", answer.solutions[i].angles}, {"error", answer.solutions[i].error}, {"free", bool(free[i])}});
-    nlohmann::json out = {{"target", {target.x(), target.y()}}, {"found", answer.found}, {"solutions", solutions}};
-    out["orientation"] = o.orientation.empty() ? nlohmann::json(nullptr)
-                                               : nlohmann::json(degrees_option(o.orientation, "--orientation"));
-    if (!answer.found) out["why_not"] = answer.why_not;
-    write_json(out, o.json);
-  }
-  if (!o.svg.empty()) {
-    ArmPlanPicture picture;
-    picture.problem = &problem;
-    picture.target = WorkspaceGoal{target, options.orientation};
-    std::vector<std::string> labels;
-    for (std::size_t i = 0; i < answer.solutions.size(); ++i) {
-      picture.motion.push_back(answer.solutions[i].angles);
-      char label[96];
-      std::snprintf(label, sizeof label, "%s %zu, error %.2g%s", answer.found ? "solution" : "closest", i + 1,
-                    answer.solutions[i].error, free[i] ? "" : ", collides");
-      labels.push_back(label);
-    }
-    picture.title = "inverse kinematics: the hand at " + o.target;
-    draw_arm_configurations(picture, labels).write(o.svg);
-  }
+  IkRequest request;
+  request.target = {t[0], t[1]};
+  request.exact_target = exact_target(o.target);
+  if (!o.orientation.empty()) request.orientation_degrees = degrees_option(o.orientation, "--orientation");
+  request.all = o.all;
+  request.collision_free = o.collision_free;
+  const IkStudy study = study_ik(problem, request);
+  const IkAnswer& answer = study.answer;
+  if (!o.json.empty()) write_json(ik_json(request, study), o.json);
+  if (!o.svg.empty())
+    draw_ik_study(problem, request, study, "inverse kinematics: the hand at " + o.target).write(o.svg);
   if (o.json != "-") {
     std::cout << (answer.found ? std::to_string(answer.solutions.size()) + " solution(s)"
                                : "no solution (" + answer.why_not + "); the closest")
-              << " for the hand at (" << target.x() << ", " << target.y() << "):\n";
+              << " for the hand at (" << request.target.x() << ", " << request.target.y() << "):\n";
     for (std::size_t i = 0; i < answer.solutions.size(); ++i) {
       std::cout << " ";
       for (const double a : answer.solutions[i].angles) std::cout << ' ' << a;
       char error[32];
       std::snprintf(error, sizeof error, "%.3g", answer.solutions[i].error);
-      std::cout << " rad, error " << error << (free[i] ? "" : ", collides") << '\n';
+      std::cout << " rad, error " << error << (study.free[i] ? "" : ", collides") << '\n';
     }
     if (!o.svg.empty()) std::cout << "picture: " << o.svg << '\n';
   }

@@ -1002,4 +1002,23 @@ void write_arm_strobe_svg(const std::string& path, const ArmPlanPicture& picture
   strobe_drawing(picture, every_kth).write(path);
 }
 
+svg::Drawing draw_ik_study(const ArmProblem& problem, const IkRequest& request, const IkStudy& study,
+                           const std::string& title) {
+  ArmPlanPicture picture;
+  picture.problem = &problem;
+  const std::optional<double> radians =
+      request.orientation_degrees ? std::optional<double>(*request.orientation_degrees * M_PI / 180) : std::nullopt;
+  picture.target = WorkspaceGoal{request.target, radians};
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < study.answer.solutions.size(); ++i) {
+    picture.motion.push_back(study.answer.solutions[i].angles);
+    char label[96];
+    std::snprintf(label, sizeof label, "%s %zu, error %.2g%s", study.answer.found ? "solution" : "closest", i + 1,
+                  study.answer.solutions[i].error, study.free[i] ? "" : ", collides");
+    labels.push_back(label);
+  }
+  picture.title = title;
+  return draw_arm_configurations(picture, labels);
+}
+
 }  // namespace polyplan

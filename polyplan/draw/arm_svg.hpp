@@ -5,6 +5,7 @@
 // configuration drawn at once (the course's arm and car planning report's figure), and for two joints the torus C-space
 // θ1 × θ2 beside the workspace with the path on it (the course's graph-search homework's Figure 2); either with the
 // planner's roadmap or tree drawn faint under the path. draw_plan makes either from any arm planner's report.
+#include <polyplan/arm/ik_study.hpp>
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/plan/plan_report.hpp>
@@ -73,6 +74,11 @@ std::string arm_strobe_svg(const ArmPlanPicture& picture, std::size_t every_kth)
 // Configurations that are not a motion (inverse kinematics' solutions) drawn at once, each in a
 // colour of its own with its label (the first eight in the legend); the workspace only.
 svg::Drawing draw_arm_configurations(const ArmPlanPicture& picture, const std::vector<std::string>& labels);
+
+// An inverse-kinematics study's solutions at once (draw_arm_configurations), each labelled
+// "solution 2, error 1e-13, collides" ("closest 1, ..." when none reaches), the target marked.
+svg::Drawing draw_ik_study(const ArmProblem& problem, const IkRequest& request, const IkStudy& study,
+                           const std::string& title);
 
 // Any arm planner's report as a picture: the path's motions drawn densely (every joint at most
 // `degrees_per_frame` between frames, as the planners interpolate: each joint the short way), the

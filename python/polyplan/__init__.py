@@ -37,6 +37,7 @@ from ._polyplan import (  # noqa: F401 (the public names)
     World,
     check,
     cspace,
+    ik,
     potential,
     read_arm,
     read_world,
@@ -49,7 +50,7 @@ from . import _polyplan
 
 __all__ = [
     "Arm", "CSpace", "Cells", "Drive", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
-    "PlannerInfo", "World", "check", "cspace", "plan", "planner", "planners", "plot", "potential", "read_arm",
+    "PlannerInfo", "World", "check", "cspace", "ik", "plan", "planner", "planners", "plot", "potential", "read_arm",
     "read_world", "replan", "search_graph", "steer", "svg",
 ]
 
