@@ -19,8 +19,8 @@ struct IkRequest {
 };
 
 struct IkStudy {
-  IkAnswer answer;        // with collision_free and none free: not found, the solutions as they were
-  std::vector<bool> free; // one per solution
+  IkAnswer answer;         // with collision_free and none free: not found, the solutions as they were
+  std::vector<bool> free;  // one per solution
 };
 
 IkStudy study_ik(const ArmProblem& problem, const IkRequest& request);

@@ -10,9 +10,8 @@ nlohmann::json ik_json(const IkRequest& request, const IkStudy& study) {
     solutions.push_back({{"angles", study.answer.solutions[i].angles},
                          {"error", study.answer.solutions[i].error},
                          {"free", bool(study.free[i])}});
-  nlohmann::json out = {{"target", {request.target.x(), request.target.y()}},
-                        {"found", study.answer.found},
-                        {"solutions", solutions}};
+  nlohmann::json out = {
+      {"target", {request.target.x(), request.target.y()}}, {"found", study.answer.found}, {"solutions", solutions}};
   out["orientation"] = request.orientation_degrees ? nlohmann::json(*request.orientation_degrees) : nullptr;
   if (!study.answer.found) out["why_not"] = study.answer.why_not;
   return out;
