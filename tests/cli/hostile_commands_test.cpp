@@ -51,7 +51,8 @@ class HostileCommand : public ::testing::TestWithParam<HostileCase> {};
 
 TEST_P(HostileCommand, ExitsAsTheTableSays) {
   const HostileCase& c = GetParam();
-  const fs::path tmp = fs::temp_directory_path() / ("polyplan_hostile_" + std::to_string(c.line));
+  const fs::path tmp =
+      fs::temp_directory_path() / ("polyplan_hostile_" + std::to_string(::getpid()) + "_" + std::to_string(c.line));
   fs::remove_all(tmp);
   fs::create_directories(tmp);
   std::string arguments = replaced(c.arguments, "{data}", kSource + "/data");
@@ -82,7 +83,7 @@ namespace {
 // a message; the experiment still runs every run.
 TEST(HostileThreads, ThreadsThatCannotStartShrinkThePool) {
   if (!POLYPLAN_MEMORY_CAP) GTEST_SKIP() << "the sanitizers reserve the address space the cap would take";
-  const fs::path out = fs::temp_directory_path() / "polyplan_hostile_threads";
+  const fs::path out = fs::temp_directory_path() / ("polyplan_hostile_threads_" + std::to_string(::getpid()));
   std::string command = "ulimit -v 1200000; '";
   command += POLYPLAN_CLI;
   command += "' benchmark '" + kSource +
@@ -107,7 +108,8 @@ namespace {
 // Past --max-memory-mb an allocation fails, and the program says so in one line, exit 2.
 TEST(HostileLimits, AMemoryBudgetEndsTheProgramWithOneLine) {
   if (!POLYPLAN_MEMORY_CAP) GTEST_SKIP() << "the sanitizers reserve the address space the cap would take";
-  const fs::path map = fs::temp_directory_path() / "polyplan_hostile_open_2000.map";
+  const fs::path map =
+      fs::temp_directory_path() / ("polyplan_hostile_open_2000_" + std::to_string(::getpid()) + ".map");
   {
     std::ofstream out(map);
     out << "type octile\nheight 2000\nwidth 2000\nmap\n";
