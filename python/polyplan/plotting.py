@@ -56,10 +56,15 @@ def _plot_world(world, plans, ax):
             _polygon(ax, ring, facecolor=COBSTACLE, edgecolor="none", label=None)
     for ring in world.obstacles:
         _polygon(ax, ring, facecolor=OBSTACLE, edgecolor="black", lw=0.5)
-    for p in plans:
+    for i, p in enumerate(plans):
         _plot_record(p, ax)
-        _plot_path(p, ax, world)
+        _plot_path(p, ax, world, _colour(i, len(plans)))
     ax.autoscale_view()
+
+
+def _colour(i, count):
+    """The i-th plan's colour: the path colour for one plan, matplotlib's cycle for several."""
+    return PATH if count == 1 else f"C{i % 10}"
 
 
 def _plot_record(p, ax):
@@ -82,13 +87,27 @@ def _plot_record(p, ax):
         ax.scatter(p.expanded[:, 0], p.expanded[:, 1], s=6, color=EXPANDED, zorder=2)
 
 
-def _plot_path(p, ax, world):
-    if not p.found:
+def _query_ends(world, name):
+    """The start and goal (x, y) of the world's query called `name`, as floats."""
+    for query, start, goal in world.queries:
+        if query == name:
+            return [float(v) for v in start[:2]], [float(v) for v in goal[:2]]
+    return None
+
+
+def _plot_path(p, ax, world, colour=PATH):
+    if not p.found:  # its start and goal, and why it has no path, in the legend
+        ends = _query_ends(world, p.query)
+        if ends is not None:
+            (sx, sy), (gx, gy) = ends
+            ax.plot([sx], [sy], "o", color=colour, zorder=4, label=f"{p.planner} {p.query}: {p.status}")
+            ax.plot([gx], [gy], "*", color=colour, ms=12, zorder=4)
+        ax.legend(loc="best", fontsize="small")
         return
     path = p.path
-    ax.plot(path[:, 0], path[:, 1], color=PATH, lw=2, zorder=3, label=f"{p.planner} {p.query}: {p.length:.4g}")
-    ax.plot(path[0, 0], path[0, 1], "o", color=PATH, zorder=4)
-    ax.plot(path[-1, 0], path[-1, 1], "*", color=PATH, ms=12, zorder=4)
+    ax.plot(path[:, 0], path[:, 1], color=colour, lw=2, zorder=3, label=f"{p.planner} {p.query}: {p.length:.4g}")
+    ax.plot(path[0, 0], path[0, 1], "o", color=colour, zorder=4)
+    ax.plot(path[-1, 0], path[-1, 1], "*", color=colour, ms=12, zorder=4)
     if path.shape[1] == 3 and world.robot:  # the rotating robot at some poses along the path
         for x, y, theta in path[:: max(1, len(path) // 12)]:
             c, s = math.cos(math.radians(theta)), math.sin(math.radians(theta))

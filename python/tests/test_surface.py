@@ -123,3 +123,18 @@ def test_reprs_say_what_they_are():
     r = polyplan.plan(w)[0]
     assert "seed004" in repr(w) and "visibility" in repr(r) and "solved" in repr(r)
     assert "visibility" in repr(polyplan.planner("visibility", w))
+
+
+def test_several_plans_each_in_its_colour_and_a_failed_one_with_its_ends_and_status():
+    w = polyplan.read_world(data("worlds", "seed004.json"))
+    plans = [polyplan.planner(name, w).plan() for name in ("visibility", "trapezoid", "voronoi")]
+    ax = polyplan.plot(plans)
+    paths = [line for line in ax.get_lines() if line.get_label().startswith(("visibility", "trapezoid", "voronoi"))]
+    assert len(paths) == 3 and len({line.get_color() for line in paths}) == 3
+    trap = polyplan.read_world(data("worlds", "u_trap.json"))
+    failed = polyplan.plan(trap, planner="potential-field")[0]  # stuck in the trap: local_minimum
+    assert not failed.found
+    ax = polyplan.plot(failed)
+    labels = [line.get_label() for line in ax.get_lines()]
+    assert any(label.endswith(": " + failed.status) for label in labels), labels
+    assert len([line for line in ax.get_lines() if line.get_marker() in ("o", "*")]) == 2
