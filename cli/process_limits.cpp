@@ -3,8 +3,6 @@
 #include <polyplan/plan/planner_options.hpp>
 
 #include <chrono>
-#include <cmath>
-#include <cstring>
 #include <string>
 #include <thread>
 

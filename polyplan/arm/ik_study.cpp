@@ -2,13 +2,11 @@
 
 #include <polyplan/arm/arm_collision.hpp>
 
-#include <cmath>
-
 namespace polyplan {
 
 IkStudy study_ik(const ArmProblem& problem, const IkRequest& request) {
   IkOptions options;
-  if (request.orientation_degrees) options.orientation = *request.orientation_degrees * M_PI / 180;
+  options.orientation = request.orientation_radians();
   options.limits = problem.arm.limits;
   options.all = request.all;
   options.seeds = request.all ? 32 : 8;

@@ -5,6 +5,7 @@
 #include <polyplan/arm/inverse_kinematics.hpp>
 #include <polyplan/geometry/arm_problem.hpp>
 
+#include <cmath>
 #include <optional>
 #include <vector>
 
@@ -16,6 +17,9 @@ struct IkRequest {
   std::optional<double> orientation_degrees;  // the last link's absolute angle, reduced already
   bool all = false;                           // every distinct solution found (32 seeds), not only the first
   bool collision_free = false;                // only the solutions free of the obstacles
+  std::optional<double> orientation_radians() const {
+    return orientation_degrees ? std::optional<double>(*orientation_degrees * M_PI / 180) : std::nullopt;
+  }
 };
 
 struct IkStudy {

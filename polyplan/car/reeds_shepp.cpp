@@ -167,13 +167,13 @@ template <class Make>
 void symmetric(std::vector<Word>& out, Formula formula, Letters letters, Letters mirrored, double x, double y,
                double phi, Make make) {
   double t, u, v;
+  // A length is within `zero` of 0 exactly when the t, u or v it is made of is (the words' other
+  // lengths are fixed quarter turns): snapped where it lies, the computed ones kept beside.
   const auto snapped = [&](Letters l, double sign) {
     Word w = make(l, sign, t, u, v);
     w.computed = w.lengths;
-    for (double* length : {&t, &u, &v})
-      if (std::abs(*length) < zero) *length = 0;
-    const Word snapped = make(l, sign, t, u, v);
-    w.lengths = snapped.lengths;
+    for (int i = 0; i < w.size; ++i)
+      if (std::abs(w.lengths[i]) < zero) w.lengths[i] = 0;
     return w;
   };
   if (formula(x, y, phi, t, u, v)) out.push_back(snapped(letters, 1));

@@ -1006,9 +1006,7 @@ svg::Drawing draw_ik_study(const ArmProblem& problem, const IkRequest& request, 
                            const std::string& title) {
   ArmPlanPicture picture;
   picture.problem = &problem;
-  const std::optional<double> radians =
-      request.orientation_degrees ? std::optional<double>(*request.orientation_degrees * M_PI / 180) : std::nullopt;
-  picture.target = WorkspaceGoal{request.target, radians};
+  picture.target = WorkspaceGoal{request.target, request.orientation_radians()};
   std::vector<std::string> labels;
   for (std::size_t i = 0; i < study.answer.solutions.size(); ++i) {
     picture.motion.push_back(study.answer.solutions[i].angles);

@@ -152,9 +152,15 @@ void decide_cells(const CSpace& cspace, const GridFrame& frame, const CellWindow
     }
 }
 
-// The box of the C-obstacle of an obstacle whose box is `obstacle`: it grown by the robot
-// reflected through its reference point (O ⊕ −R), as every C-obstacle is.
-Bounds cobstacle_box(const Bounds& obstacle, const Robot& robot) {
+// A box holding the C-obstacle of `obstacle`: its outer ring's box grown by the robot reflected
+// through its reference point (O ⊕ −R), as every C-obstacle is.
+Bounds cobstacle_box(const PolygonWithHoles& polygon, const Robot& robot) {
+  const ExactPoint& first = polygon.outer.front();
+  Bounds obstacle{first.x, first.y, first.x, first.y};
+  for (const ExactPoint& p : polygon.outer) {
+    obstacle.xmin = std::min(obstacle.xmin, p.x), obstacle.ymin = std::min(obstacle.ymin, p.y);
+    obstacle.xmax = std::max(obstacle.xmax, p.x), obstacle.ymax = std::max(obstacle.ymax, p.y);
+  }
   Bounds grown = obstacle;
   for (const Ring& part : robot.parts)
     for (const ExactPoint& p : part) {
@@ -194,14 +200,15 @@ Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
   return raster;
 }
 
-Raster rasterize_change(const CSpace& after, const Raster& before, const std::vector<Bounds>& changed) {
+Raster rasterize_change(const CSpace& after, const Raster& before,
+                        const std::vector<const PolygonWithHoles*>& changed) {
   Raster raster = before;
   const long n = static_cast<long>(raster.cells_per_axis);
   const GridFrame frame(raster.bounds, raster.cells_per_axis);
-  for (const Bounds& obstacle : changed) {
+  for (const PolygonWithHoles* obstacle : changed) {
     // Cells whose closed square meets the C-obstacle's closed box: elsewhere a square and a
     // neighbourhood of it miss the change, so the union's interior there is as it was.
-    const Bounds c = cobstacle_box(obstacle, after.world().robot);
+    const Bounds c = cobstacle_box(*obstacle, after.world().robot);
     const GridPoint low = frame.to_grid({c.xmin, c.ymin}), high = frame.to_grid({c.xmax, c.ymax});
     const auto clamp = [n](long k) { return std::clamp(k, 0L, n - 1); };
     if (high.u < 0 || high.v < 0 || low.u > n || low.v > n) continue;

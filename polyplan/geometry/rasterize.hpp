@@ -50,10 +50,10 @@ Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis);
 Raster rasterize(const World& world, std::size_t cells_per_axis);
 
 // The raster of `after`'s world, which differs from the world `before` rasterised only by the
-// obstacles whose boxes are `changed` (added or removed; workspace boxes): `before` with the cells
-// near each one's C-obstacle decided again. Equal to rasterize(after, n), at the cost of the cells
-// a change touches (a world that changes at every move of a drive at 2048 cells per axis).
-Raster rasterize_change(const CSpace& after, const Raster& before, const std::vector<Bounds>& changed);
+// `changed` obstacles (added or removed): `before` with the cells near each one's C-obstacle
+// decided again. Equal to rasterize(after, n), at the cost of the cells a change touches (a world
+// that changes at every move of a drive at 2048 cells per axis).
+Raster rasterize_change(const CSpace& after, const Raster& before, const std::vector<const PolygonWithHoles*>& changed);
 
 // The free cell (x, y) whose centre is nearest to p (exact Euclidean distance; among equally near
 // cells the one of lowest index x + y·n); nullopt when every cell is blocked. Where the grid

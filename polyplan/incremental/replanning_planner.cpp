@@ -43,29 +43,19 @@ World world_after(const World& world, std::size_t made) {
   return after;
 }
 
-// The box of an obstacle: its outer ring's.
-Bounds box_of(const PolygonWithHoles& obstacle) {
-  Bounds b{obstacle.outer[0].x, obstacle.outer[0].y, obstacle.outer[0].x, obstacle.outer[0].y};
-  for (const ExactPoint& p : obstacle.outer) {
-    b.xmin = std::min(b.xmin, p.x), b.ymin = std::min(b.ymin, p.y);
-    b.xmax = std::max(b.xmax, p.x), b.ymax = std::max(b.ymax, p.y);
-  }
-  return b;
-}
-
-// The boxes of the obstacles that changes [from, to) add or remove.
-std::vector<Bounds> changed_boxes(const World& world, std::size_t from, std::size_t to) {
+// The obstacles that changes [from, to) add or remove.
+std::vector<const PolygonWithHoles*> changed_obstacles(const World& world, std::size_t from, std::size_t to) {
   std::vector<const PolygonWithHoles*> obstacles;  // the world's, then those added, in order
   for (const PolygonWithHoles& o : world.obstacles) obstacles.push_back(&o);
-  std::vector<Bounds> boxes;
+  std::vector<const PolygonWithHoles*> changed;
   for (std::size_t i = 0; i < to; ++i) {
     const WorldChange& change = world.changes[i];
     if (change.added) obstacles.push_back(&*change.added);
     if (i < from) continue;
-    if (change.added) boxes.push_back(box_of(*change.added));
-    if (change.removed) boxes.push_back(box_of(*obstacles[*change.removed]));
+    if (change.added) changed.push_back(&*change.added);
+    if (change.removed) changed.push_back(obstacles[*change.removed]);
   }
-  return boxes;
+  return changed;
 }
 
 // The world between two moments of change: from the move `from_moves` on, `made` changes made.
@@ -118,7 +108,8 @@ struct ReplanningPlanner::Impl {
     for (std::size_t i = 0; i < world.changes.size(); ++i) {
       if (i + 1 < world.changes.size() && world.changes[i + 1].after_moves == world.changes[i].after_moves) continue;
       auto changed = std::make_shared<const CSpace>(world_after(world, i + 1));
-      Raster raster = rasterize_change(*changed, phases.back().raster, changed_boxes(world, phases.back().made, i + 1));
+      Raster raster =
+          rasterize_change(*changed, phases.back().raster, changed_obstacles(world, phases.back().made, i + 1));
       const CSpace* view = changed.get();
       phases.push_back({world.changes[i].after_moves, i + 1, std::move(changed), view, std::move(raster)});
     }

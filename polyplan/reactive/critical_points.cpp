@@ -37,34 +37,6 @@ struct Newton {
   }
 };
 
-}  // namespace
-
-namespace {
-CriticalPoints find_critical_points_of_scale(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
-                                             const PotentialParameters& parameters, const BoxGrid& search);
-}  // namespace
-
-// s·U has the critical points of U: the weights are scaled by a power of two (exactly) so that the
-// larger is in [1, 2), and the values found scaled back. Newton's tolerances and the gradients'
-// sign tests then see the same numbers whether the weights are 1 or 1e200 (which found none).
-CriticalPoints find_critical_points(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
-                                    const PotentialParameters& parameters, const BoxGrid& search) {
-  const double largest = std::max(parameters.attractive.zeta, parameters.repulsive.eta);
-  const int scale = largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
-  PotentialParameters unit = parameters;
-  unit.attractive.zeta = std::ldexp(unit.attractive.zeta, -scale);
-  unit.repulsive.eta = std::ldexp(unit.repulsive.eta, -scale);
-  CriticalPoints found = find_critical_points_of_scale(cspace, field, goal, unit, search);
-  for (CriticalPoint& p : found.points) {
-    p.value = std::ldexp(p.value, scale);
-    p.gradient = std::ldexp(p.gradient, scale);
-    p.eigenvalues.smaller = std::ldexp(p.eigenvalues.smaller, scale);
-    p.eigenvalues.larger = std::ldexp(p.eigenvalues.larger, scale);
-  }
-  return found;
-}
-
-namespace {
 CriticalPoints find_critical_points_of_scale(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
                                              const PotentialParameters& parameters, const BoxGrid& search) {
   search.check();
@@ -109,5 +81,25 @@ CriticalPoints find_critical_points_of_scale(const CSpace& cspace, const Obstacl
 }
 
 }  // namespace
+
+// s·U has the critical points of U: the weights are scaled by a power of two (exactly) so that the
+// larger is in [1, 2), and the values found scaled back. Newton's tolerances and the gradients'
+// sign tests then see the same numbers whether the weights are 1 or 1e200 (which found none).
+CriticalPoints find_critical_points(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
+                                    const PotentialParameters& parameters, const BoxGrid& search) {
+  const double largest = std::max(parameters.attractive.zeta, parameters.repulsive.eta);
+  const int scale = largest > 0 && std::isfinite(largest) ? std::ilogb(largest) : 0;
+  PotentialParameters unit = parameters;
+  unit.attractive.zeta = std::ldexp(unit.attractive.zeta, -scale);
+  unit.repulsive.eta = std::ldexp(unit.repulsive.eta, -scale);
+  CriticalPoints found = find_critical_points_of_scale(cspace, field, goal, unit, search);
+  for (CriticalPoint& p : found.points) {
+    p.value = std::ldexp(p.value, scale);
+    p.gradient = std::ldexp(p.gradient, scale);
+    p.eigenvalues.smaller = std::ldexp(p.eigenvalues.smaller, scale);
+    p.eigenvalues.larger = std::ldexp(p.eigenvalues.larger, scale);
+  }
+  return found;
+}
 
 }  // namespace polyplan

@@ -28,6 +28,22 @@ GraphFile graph_of(const py::object& graph) {
   return parse_graph(py::module_::import("json").attr("dumps")(plain).cast<std::string>(), "graph");
 }
 
+// A vertex index: any integer (numpy's among them), checked against the graph before it is narrowed.
+DigraphVertexId vertex_of(const GraphFile& file, const py::object& index, const char* what) {
+  if (!PyIndex_Check(index.ptr()) || PyBool_Check(index.ptr()))
+    throw InputError(std::string(what) + ": expected a vertex index (an int), got " + type_name(index));
+  const py::int_ value = py::reinterpret_steal<py::int_>(PyNumber_Index(index.ptr()));
+  if (value < py::int_(0) || value >= py::int_(file.vertices.size())) {
+    // Named by its bits past 64 of them: str() refuses an int of more than 4300 digits.
+    const auto bits = value.attr("bit_length")().cast<long long>();
+    const std::string shown =
+        bits > 64 ? "(an integer of " + std::to_string(bits) + " bits)" : py::repr(value).cast<std::string>();
+    throw InputError(std::string(what) + " " + shown + ": not a vertex of " + file.source + " (0-based indices [0, " +
+                     std::to_string(file.vertices.size()) + "))");
+  }
+  return value.cast<DigraphVertexId>();
+}
+
 py::object optional_vertex(const std::optional<DigraphVertexId>& v) {
   return v ? py::object(py::int_(*v)) : py::object(py::none());
 }
@@ -71,22 +87,7 @@ void bind_search(py::module_& m) {
       [](const py::object& graph, const py::object& start_index, const py::object& goal_index,
          const std::string& method, double weight) {
         const GraphFile file = graph_of(graph);
-        const auto vertex = [&](const py::object& index, const char* what) {
-          // Any integer (numpy's among them), checked against the vertices before it is narrowed.
-          if (!PyIndex_Check(index.ptr()) || PyBool_Check(index.ptr()))
-            throw InputError(std::string(what) + ": expected a vertex index (an int), got " + type_name(index));
-          const py::int_ value = py::reinterpret_steal<py::int_>(PyNumber_Index(index.ptr()));
-          if (value < py::int_(0) || value >= py::int_(file.vertices.size())) {
-            // Named by its bits past 64 of them: str() refuses an int of more than 4300 digits.
-            const auto bits = value.attr("bit_length")().cast<long long>();
-            const std::string shown =
-                bits > 64 ? "(an integer of " + std::to_string(bits) + " bits)" : py::repr(value).cast<std::string>();
-            throw InputError(std::string(what) + " " + shown + ": not a vertex of " + file.source +
-                             " (0-based indices [0, " + std::to_string(file.vertices.size()) + "))");
-          }
-          return value.cast<DigraphVertexId>();
-        };
-        const DigraphVertexId start = vertex(start_index, "start"), goal = vertex(goal_index, "goal");
+        const DigraphVertexId start = vertex_of(file, start_index, "start"), goal = vertex_of(file, goal_index, "goal");
         SearchOptions options;
         const auto algorithm = search_from_string(method);
         if (!algorithm)

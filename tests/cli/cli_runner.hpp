@@ -26,11 +26,11 @@ inline std::string slurp(const std::filesystem::path& path) {
   return ss.str();
 }
 
-// Bounds on a run: seconds before `timeout` stops it (0: none), and whether its address space
-// is capped at 4 GiB (not under the sanitizers, whose shadow memory reserves terabytes).
+// Bounds on a run: seconds before `timeout` stops it, and its address space in KiB (`ulimit -v`;
+// never under the sanitizers, whose shadow memory reserves terabytes); 0: none.
 struct RunLimits {
   int seconds = 0;
-  bool memory_cap = false;
+  std::size_t memory_kb = 0;
 };
 
 // `arguments` is pasted into a shell command line: quote paths with '...'.
@@ -38,7 +38,7 @@ inline CliRun run_polyplan(const std::string& arguments, RunLimits limits = {}) 
   namespace fs = std::filesystem;
   const fs::path dir = fs::temp_directory_path() / ("polyplan_cli_test_" + std::to_string(::getpid()));
   fs::create_directories(dir);
-  std::string command = limits.memory_cap ? "ulimit -v 4194304; " : "";
+  std::string command = limits.memory_kb ? "ulimit -v " + std::to_string(limits.memory_kb) + "; " : "";
   if (limits.seconds > 0) command += "timeout " + std::to_string(limits.seconds) + " ";
   command += "'";  // appended: GCC 12 takes "'" + string for an out-of-bounds copy
   for (const std::string& piece :

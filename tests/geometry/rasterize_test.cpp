@@ -269,22 +269,16 @@ TEST(RasterizeChange, EqualsTheChangedWorldRasterisedWhole) {
         Raster raster = rasterize(CSpace(before), n);
         for (int step = 0; step < 4; ++step) {
           World after = before;
-          std::vector<Bounds> changed;
-          const auto box = [](const PolygonWithHoles& o) {
-            Bounds b{o.outer[0].x, o.outer[0].y, o.outer[0].x, o.outer[0].y};
-            for (const ExactPoint& p : o.outer)
-              b = {std::min(b.xmin, p.x), std::min(b.ymin, p.y), std::max(b.xmax, p.x), std::max(b.ymax, p.y)};
-            return b;
-          };
+          std::vector<const PolygonWithHoles*> changed;
           if (step % 2 == 1 && !after.obstacles.empty()) {
             const std::size_t k = random() % after.obstacles.size();
-            changed.push_back(box(after.obstacles[k]));
+            changed.push_back(&before.obstacles[k]);
             after.obstacles.erase(after.obstacles.begin() + static_cast<long>(k));
             after.obstacle_names.erase(after.obstacle_names.begin() + static_cast<long>(k));
           } else {
             after.obstacles.push_back(triangle());
             after.obstacle_names.push_back("added");
-            changed.push_back(box(after.obstacles.back()));
+            changed.push_back(&after.obstacles.back());
           }
           const CSpace cspace(after);
           raster = rasterize_change(cspace, raster, changed);
