@@ -9,6 +9,7 @@
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/plan/plan_facts.hpp>
@@ -77,10 +78,13 @@ int main(int argc, char** argv) {
         const Query& q = world.queries[i];
         PlanReport<ExactPoint> plan = planner.plan(q, QueryOptions{true});
         plan.recording.expanded.clear();  // ten searches' expansions would hide the cells
-        const std::string cells =
-            plan.facts.contains(RasterFacts::start_cell)
-                ? plan.facts.at(RasterFacts::start_cell) + ">" + plan.facts.at(RasterFacts::goal_cell)
-                : "-";
+        const auto cell = [&](FactKey<FactCell> key) {
+          const FactCell c = plan.facts.at(key);
+          return cell_text(c[0], c[1]);
+        };
+        const std::string cells = plan.facts.contains(RasterFacts::start_cell)
+                                      ? cell(RasterFacts::start_cell) + ">" + cell(RasterFacts::goal_cell)
+                                      : "-";
         if (!plan.found) {
           std::printf("  %-11s %-6s %-18s %s\n", q.name.c_str(), "no", cells.c_str(), plan.why_not.c_str());
         } else {

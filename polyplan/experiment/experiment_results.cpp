@@ -82,7 +82,8 @@ std::string csv_fact(const FactValue& value) {
   if (const auto* flag = std::get_if<bool>(&value)) return *flag ? "true" : "false";
   if (const auto* count = std::get_if<std::int64_t>(&value)) return std::to_string(*count);
   if (const auto* measure = std::get_if<double>(&value)) return csv_number(*measure);
-  return csv_field(std::get<std::string>(value));
+  if (const auto* word = std::get_if<std::string>(&value)) return csv_field(*word);
+  return csv_field(std::visit([](const auto& v) { return json(v).dump(); }, value));  // a point's "[x,y]"
 }
 
 }  // namespace

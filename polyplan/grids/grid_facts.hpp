@@ -12,8 +12,8 @@ namespace polyplan {
 struct RasterFacts {
   static constexpr FactKey<std::int64_t> cells_per_axis{"raster.cells_per_axis"};
   static constexpr FactKey<std::int64_t> blocked_cells{"raster.blocked_cells"};
-  static constexpr FactKey<std::string> start_cell{"raster.start_cell"};
-  static constexpr FactKey<std::string> goal_cell{"raster.goal_cell"};
+  static constexpr FactKey<FactCell> start_cell{"raster.start_cell"};
+  static constexpr FactKey<FactCell> goal_cell{"raster.goal_cell"};
   static constexpr FactKey<double> grid_cost{"raster.grid_cost"};
 };
 
@@ -22,8 +22,8 @@ struct GvdFacts {
   static constexpr FactKey<std::int64_t> cells{"gvd.cells"};
   static constexpr FactKey<double> max_distance{"gvd.max_distance"};
   static constexpr FactKey<double> clearance_bound{"gvd.clearance_bound"};
-  static constexpr FactKey<std::string> start_cell{"gvd.start_cell"};
-  static constexpr FactKey<std::string> goal_cell{"gvd.goal_cell"};
+  static constexpr FactKey<FactCell> start_cell{"gvd.start_cell"};
+  static constexpr FactKey<FactCell> goal_cell{"gvd.goal_cell"};
 };
 
 }  // namespace polyplan

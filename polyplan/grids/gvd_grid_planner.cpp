@@ -109,8 +109,8 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
                       ", a local maximum off the GVD (the brushfire's GVD failed to reach it: a bug to report)");
       return;
     }
-    report.facts.set(GvdFacts::start_cell, cell_text(r.raster, up.back()));
-    report.facts.set(GvdFacts::goal_cell, cell_text(r.raster, down.back()));
+    report.facts.set(GvdFacts::start_cell, cell_fact(r.raster, up.back()));
+    report.facts.set(GvdFacts::goal_cell, cell_fact(r.raster, down.back()));
 
     const auto search_between = [&](const GridGraph& g, const SearchOptions& searching) {
       return shortest_path(g, up.back(), down.back(), searching,

@@ -57,6 +57,13 @@ std::string cell_text(const Raster& r, GridCell c) {
   return cell_text(x, y);
 }
 
+FactCell cell_fact(std::size_t x, std::size_t y) { return {std::int64_t(x), std::int64_t(y)}; }
+
+FactCell cell_fact(const Raster& r, GridCell c) {
+  const auto [x, y] = xy_of(r, c);
+  return cell_fact(x, y);
+}
+
 std::optional<std::pair<GridCell, GridCell>> snap_query(const CSpace& cspace, const Raster& r, const Query& query,
                                                         PlanReport<ExactPoint>& report) {
   if (auto why = cspace.query_not_free(query)) {
@@ -68,8 +75,8 @@ std::optional<std::pair<GridCell, GridCell>> snap_query(const CSpace& cspace, co
     report.fail(PlanStatus::not_found, "every cell of the raster is blocked");
     return std::nullopt;
   }
-  report.facts.set(RasterFacts::start_cell, cell_text(start_cell->first, start_cell->second));
-  report.facts.set(RasterFacts::goal_cell, cell_text(goal_cell->first, goal_cell->second));
+  report.facts.set(RasterFacts::start_cell, cell_fact(start_cell->first, start_cell->second));
+  report.facts.set(RasterFacts::goal_cell, cell_fact(goal_cell->first, goal_cell->second));
   const auto index = [&](std::pair<std::size_t, std::size_t> c) {
     return GridCell{c.first + c.second * r.cells_per_axis};
   };

@@ -38,9 +38,12 @@ GridMetric raster_metric(const Raster& raster, Connectivity connectivity);
 // its reverse).
 std::size_t move_count(const GridGraph& graph);
 
-// "(x, y)": how facts and messages name a cell.
+// "(x, y)": how messages name a cell.
 std::string cell_text(std::size_t x, std::size_t y);
 std::string cell_text(const Raster& raster, GridCell cell);
+// The same cells as a fact's (column, row).
+FactCell cell_fact(std::size_t x, std::size_t y);
+FactCell cell_fact(const Raster& raster, GridCell cell);
 
 // The counts of a grid search as the facts every planner reports (search.expanded, ...), and the
 // centres of the cells it expanded (for the picture) and its trace (when recorded).

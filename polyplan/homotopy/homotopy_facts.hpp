@@ -19,7 +19,7 @@ struct HomotopyFacts {
 
 // A tethered robot's classes and its tether at the goal.
 struct TetherFacts {
-  static constexpr FactKey<std::string> at_goal{"tether.at_goal"};
+  static constexpr FactKey<FactPoints> at_goal{"tether.at_goal"};
   static constexpr FactKey<std::string> classes{"tether.classes"};
   static constexpr FactKey<double> largest{"tether.largest"};
   static constexpr FactKey<double> length{"tether.length"};

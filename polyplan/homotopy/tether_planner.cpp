@@ -5,6 +5,7 @@
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/homotopy/class_graph.hpp>
 #include <polyplan/homotopy/homotopy_facts.hpp>
+#include <polyplan/plan/fact_points.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 
@@ -26,12 +27,6 @@ std::optional<ExactPoint> parse_base(const std::string& text) {
   const auto y = comma == std::string::npos ? std::nullopt : parse_rational(text.substr(comma + 1));
   if (!x || !y) throw std::invalid_argument("option tether-base=" + text + ": expected X,Y");
   return ExactPoint{*x, *y};
-}
-
-std::string points_text(const std::vector<ExactPoint>& points) {
-  std::string out;
-  for (const ExactPoint& p : points) out += (out.empty() ? "" : " ") + to_string(p);
-  return out;
 }
 
 // The tether's taut shapes: a Dijkstra over (vertex, word) from the base, run to its bound.
@@ -152,7 +147,7 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   facts.set(TetherFacts::word, word_text(end.word));
   facts.set(TetherFacts::length, *tether->length(g, end.word));
   facts.set(TetherFacts::largest, largest);
-  facts.set(TetherFacts::at_goal, points_text(shapes.back()));
+  facts.set(TetherFacts::at_goal, fact_points(shapes.back()));
   facts.set(TetherFacts::reachable, tether->search.states());
   std::string note = "tether [" + word_text(end.word) + "] " + std::to_string(*tether->length(g, end.word)) +
                      " long at the goal, at most " + std::to_string(largest) + " on the way";

@@ -7,6 +7,7 @@
 #include <polyplan/plan/fact_key.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -23,8 +24,16 @@ namespace polyplan {
 
 class CSpace;  // geometry/cspace.hpp
 
-// A fact's value: a flag, a count, a measure or a word.
-using FactValue = std::variant<bool, std::int64_t, double, std::string>;
+// A point of the plane as a fact: (x, y), where a walk stopped.
+using FactPoint = std::array<double, 2>;
+// Points in order: a walk's hit points, a tether's polyline.
+using FactPoints = std::vector<FactPoint>;
+// A grid cell as a fact: (column, row).
+using FactCell = std::array<std::int64_t, 2>;
+
+// A fact's value: a flag, a count, a measure, a word, or a point, points or a cell (JSON: arrays
+// of numbers, never text, so that a reader gets numbers back).
+using FactValue = std::variant<bool, std::int64_t, double, std::string, FactPoint, FactPoints, FactCell>;
 
 // The facts a planner reports beside its path, set and read through the keys its family declares
 // (plan/fact_key.hpp; the shared ones, search.expanded, roadmap.vertices, query_seconds,
@@ -33,7 +42,7 @@ using FactValue = std::variant<bool, std::int64_t, double, std::string>;
 class Facts {
  public:
   // Sets a fact, replacing an earlier value: a flag from a bool, a count from any integer, a
-  // measure from any number, a word from text.
+  // measure from any number, a word from text, a point, points or a cell from its own type.
   template <class T, class V>
   void set(FactKey<T> key, const V& value) {
     put(key.name, FactValue(converted<T>(value)));
@@ -75,9 +84,12 @@ class Facts {
     } else if constexpr (std::is_same_v<T, double>) {
       static_assert(number, "a measure is set from a number");
       return static_cast<double>(value);
-    } else {
+    } else if constexpr (std::is_same_v<T, std::string>) {
       static_assert(std::is_convertible_v<const V&, std::string_view>, "a word is set from text");
       return std::string(std::string_view(value));
+    } else {
+      static_assert(std::is_same_v<V, T>, "a point, points or a cell is set from its own type");
+      return value;
     }
   }
 
@@ -225,7 +237,10 @@ struct PlanReport {
   // When not found: one sentence saying what stopped the planner ("the start [3, 4] is not free:
   // it is inside obstacles[2]", "start and goal lie in different components of the free space").
   std::string why_not;
-  // When found: the query's start exactly, ..., the query's goal exactly; empty otherwise.
+  // When found: the query's start exactly, ..., the query's goal exactly. When a reactive planner
+  // stopped short of the goal (local_minimum, limit): the walk from the start to where it stopped,
+  // every motion of it proved free as a found path's is, so that a caller can show where the robot
+  // got stuck. Empty otherwise.
   std::vector<Configuration> path;
   // In the planner's metric: Euclidean for points, the sum of the joints' turns for arms. A
   // double: irrational by nature.

@@ -99,18 +99,22 @@ void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& k
                     const std::string& why_suffix, PlanReport<ExactPoint>& report) {
   if (record) report.recording.expanded = descent.path;  // the picture shows the descent, wherever it stopped
   report.facts.set(keys.steps, descent.path.size() - 1);
-  report.facts.set(keys.stopped_at, point_text(approximate(descent.path.back())));
+  const Vec2 end = approximate(descent.path.back());
+  report.facts.set(keys.stopped_at, FactPoint{end.x, end.y});
+  // Each step was tested as it was taken; the whole path is tested again, found or not, so that a
+  // mistake is an answer that says so, never a path through an obstacle.
+  const PathCheck whole = check_path(cspace, descent.path);
+  if (whole.valid) report.path = std::move(descent.path);
   if (descent.status != PlanStatus::solved) {
     if (descent.status == PlanStatus::limit) report.facts.set(QueryFacts::stopped_by, "step limit");
     report.fail(descent.status, descent.why + why_suffix);
     return;
   }
-  if (const PathCheck whole = check_path(cspace, descent.path); !whole.valid) {
+  if (!whole.valid) {
     report.fail(PlanStatus::not_found, "the descent's path is not a valid motion: " + whole.reason);
     return;
   }
   report.succeed();
-  report.path = std::move(descent.path);
   report.length = euclidean_length(report.path);
   report.certificate = {
       true, "exact segment test of every step as it was taken, and of the whole path (arrangement zone walk)"};

@@ -11,15 +11,15 @@ namespace polyplan {
 // A gradient descent's steps and where it stopped, under its planner's prefix.
 struct DescentFacts {
   FactKey<std::int64_t> steps;
-  FactKey<std::string> stopped_at;
+  FactKey<FactPoint> stopped_at;
 };
 
 // A Bug's walk.
 struct BugFacts {
   static constexpr FactKey<double> bound{"bug.bound"};
   static constexpr FactKey<double> distance{"bug.distance"};
-  static constexpr FactKey<std::string> hits{"bug.hits"};
-  static constexpr FactKey<std::string> leaves{"bug.leaves"};
+  static constexpr FactKey<FactPoints> hits{"bug.hits"};
+  static constexpr FactKey<FactPoints> leaves{"bug.leaves"};
 };
 
 // A descent of the potential field.

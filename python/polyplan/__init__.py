@@ -42,7 +42,6 @@ from ._polyplan import (  # noqa: F401 (the public names)
     read_arm,
     read_world,
     replan,
-    search_graph,
     steer,
     svg,
 )
@@ -50,8 +49,8 @@ from . import _polyplan
 
 __all__ = [
     "Arm", "CSpace", "Cells", "Drive", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
-    "PlannerInfo", "World", "check", "cspace", "ik", "plan", "planner", "planners", "plot", "potential", "read_arm",
-    "read_world", "replan", "search_graph", "steer", "svg",
+    "PlannerInfo", "World", "animate", "check", "cspace", "ik", "plan", "planner", "planners", "plot", "potential",
+    "read_arm", "read_world", "replan", "search_graph", "steer", "svg",
 ]
 
 
@@ -234,8 +233,63 @@ def plot(r, ax=None):
 
     A world's plans: the obstacles, the C-obstacles, the bounds, the recorded roadmap or tree,
     cells and expanded configurations, and the path from start (o) to goal (*); the rotation
-    planner's path also draws the robot along it. An arm's plan: the workspace with the arm at
-    configurations along the path (light to dark). Returns the Axes (a new figure when ax is
-    None)."""
+    planner's path also draws the robot along it. A plan that stopped short (not found, with the
+    path it walked) is dashed, ends at x and has its status in the legend, where each plan is named
+    by its planner and the options it was given ("rrt goal_bias=0.2 seed=3"). An arm's plan: the
+    workspace with the arm at configurations along the path (light to dark). Returns the Axes (a
+    new figure when ax is None)."""
     from .plotting import plot as _plot
     return _plot(r, ax)
+
+
+def animate(obj, ax=None, frames=None, interval=50, *, what="path", graph=None, world=None):
+    """Watch a plan, a search, a drive or a descent move: a matplotlib FuncAnimation.
+
+    What obj becomes:
+      - a Plan of a World: the robot (its polygon, turning for a rotating robot; a car driving its
+        arcs; a dot when the world has no robot) moving along the path, over the plan as plot draws it;
+      - a Plan of an Arm: the arm moving through its configurations;
+      - a Plan with what="search": the configurations its search expanded appearing in order, then
+        the path (plan with record=True, which polyplan.plan does);
+      - what search_graph returns, with graph= the graph it was given: expansion by expansion, the
+        closed vertices, the open list (green) and the vertex expanded, then the path;
+      - a Drive (polyplan.replan): the robot driving cell by cell over the map, a cross where it replanned;
+      - what potential returns, with world= its world: the potential-field planner descending with
+        the same parameters over the field, the critical points marked.
+    Anything else raises InputError.
+
+    frames: how many pictures (default: 100 poses along a path; every step of a search or a drive,
+    at most 200 of them evenly spaced). interval: milliseconds between pictures. ax: draw there
+    (default: a new figure). Keep the animation in a variable until it is shown or saved:
+        a = polyplan.animate(plans[0])
+        a.save("plan.gif", writer="pillow")     # or "plan.mp4" where ffmpeg is installed
+    In Jupyter: from IPython.display import HTML; HTML(a.to_jshtml())."""
+    from .animation import animate as _animate
+    return _animate(obj, ax, frames, interval, what=what, graph=graph, world=world)
+
+
+def search_graph(graph, start, goal, method: str = "astar", weight: float = 1.5, frames=None) -> dict:
+    """Searches a graph in the course's graph-search homework's format, a file's path or the list of dicts
+    itself ({"x": [x, y], "neighbors": [...], "neighbors_cost": [...]}, 0-based; "g" and "backpointer"
+    ignored), from vertex `start` to `goal` with `method` (astar, dijkstra, bfs, dfs, greedy, wastar
+    with `weight`) and the Euclidean heuristic, as `polyplan search` does. Returns a dict: found,
+    method, path (indices), cost (None without a path), expanded, generated, expansion_order, trace (one
+    dict per expansion: step, vertex, g, h, f, backpointer, open), svg and animation (the pictures as
+    SVG text). Raises InputError for a bad graph (naming the vertex), vertex or method.
+
+    frames: a folder (created if need be) to draw a plot after every node expansion into,
+    step_0001.png, step_0002.png, ...: the graph, the closed vertices, the open list and the vertex
+    expanded, its step, g, h and f in the title; the dict then also holds "frames", the PNGs'
+    paths. For graphs of at most 2000 vertices and searches of at most 5000 steps (InputError
+    beyond). polyplan.animate(result, graph=graph) shows the same as an animation."""
+    result = _polyplan.search_graph(graph, start, goal, method, weight)
+    if frames is not None:
+        from .animation import search_frames
+        result["frames"] = search_frames(graph, result, frames, goal)
+    return result
+
+
+# Jupyter shows a World, and a Plan in its problem, as the program's picture. An Arm has none of
+# its own: svg draws an arm's plans only.
+World._repr_svg_ = lambda self: svg(self)
+Plan._repr_svg_ = lambda self: svg(self.problem, self)

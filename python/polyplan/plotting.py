@@ -1,4 +1,5 @@
-"""polyplan.plot: plans drawn with matplotlib (imported only when plot is called)."""
+"""polyplan.plot: plans drawn with matplotlib (imported only when plot is called). The drawing
+helpers without an underscore are polyplan.animate's too (animation.py)."""
 
 import math
 
@@ -13,19 +14,26 @@ EXPANDED = "#f0a030"
 PATH = "#c01020"
 ROBOT = "#2060c0"
 CELL_COLOURS = ["#ffffff00", "#ffffff00", "#b0b0b0", "#60a060"]  # not evaluated, free, blocked, ridge
+CAR_CURVE_POSES = 400  # a car's drawn path: poses evenly spaced along its arcs, besides each segment's ends
 
 
 def plot(r, ax=None):
-    import matplotlib.pyplot as plt
-
     plans, problem = _plans_and_problem(r)
-    if ax is None:
-        _, ax = plt.subplots(figsize=(7, 7))
+    ax = new_axes(ax)
     if isinstance(problem, _polyplan.Arm):
         _plot_arm(problem, plans, ax)
     else:
         _plot_world(problem, plans, ax)
     ax.set_aspect("equal")
+    return ax
+
+
+def new_axes(ax=None, inches=7, dpi=100):
+    """ax, or the Axes of a new square figure."""
+    if ax is not None:
+        return ax
+    import matplotlib.pyplot as plt
+    _, ax = plt.subplots(figsize=(inches, inches), dpi=dpi)
     return ax
 
 
@@ -41,24 +49,30 @@ def _plans_and_problem(r):
     return plans, problem
 
 
-def _polygon(ax, ring, **style):
+def polygon(ax, ring, **style):
+    """A closed polygon through the rows of `ring`, added to ax; returns the patch."""
     from matplotlib.patches import Polygon
-    ax.add_patch(Polygon(ring, closed=True, **style))
+    return ax.add_patch(Polygon(ring, closed=True, **style))
 
 
-def _plot_world(world, plans, ax):
+def draw_world(world, ax, cobstacles=True):
+    """The world's bounds and obstacles; with cobstacles, the C-obstacles of its robot translating."""
     if world.bounds is not None:
         xmin, ymin, xmax, ymax = (float(v) for v in world.bounds)
         ax.plot([xmin, xmax, xmax, xmin, xmin], [ymin, ymin, ymax, ymax, ymin], color="black", lw=1)
-    translating = any(p.path.shape[1] == 2 for p in plans) or not plans
-    if world.robot and translating:
+    if world.robot and cobstacles:
         for ring in _polyplan.cspace(world).obstacles:
-            _polygon(ax, ring, facecolor=COBSTACLE, edgecolor="none", label=None)
+            polygon(ax, ring, facecolor=COBSTACLE, edgecolor="none", label=None)
     for ring in world.obstacles:
-        _polygon(ax, ring, facecolor=OBSTACLE, edgecolor="black", lw=0.5)
+        polygon(ax, ring, facecolor=OBSTACLE, edgecolor="black", lw=0.5)
+
+
+def _plot_world(world, plans, ax):
+    # The C-obstacles are those of the robot translating: a rotating robot's or a car's change as it turns.
+    draw_world(world, ax, cobstacles=any(p.path.shape[1] == 2 for p in plans) or not plans)
     for i, p in enumerate(plans):
         _plot_record(p, ax)
-        _plot_path(p, ax, world, _colour(i, len(plans)))
+        draw_path(p, ax, world, _colour(i, len(plans)))
     ax.autoscale_view()
 
 
@@ -70,21 +84,38 @@ def _colour(i, count):
 def _plot_record(p, ax):
     """What the plan recorded: cells, the roadmap or tree, the expanded configurations."""
     from matplotlib.collections import LineCollection
-    from matplotlib.colors import ListedColormap
 
     if p.cells is not None and not p.cells.wraps:
-        c = p.cells
-        rows, columns = c.states.shape
-        extent = (c.x0, c.x0 + columns * c.cell_width, c.y0, c.y0 + rows * c.cell_height)
-        ax.imshow(c.states, origin="lower", extent=extent, cmap=ListedColormap(CELL_COLOURS), vmin=0, vmax=3,
-                  interpolation="nearest", zorder=0)
+        _plot_cells(p.cells, ax)
     for cell in p.decomposition or []:
-        _polygon(ax, cell[:, :2], facecolor="none", edgecolor="#9ab", lw=0.4)
+        polygon(ax, cell[:, :2], facecolor="none", edgecolor="#9ab", lw=0.4)
     if p.graph is not None and len(p.graph.edges):
         v = p.graph.vertices[:, :2]
         ax.add_collection(LineCollection(v[p.graph.edges], colors=ROADMAP, linewidths=0.5, zorder=1))
     if len(p.expanded):
         ax.scatter(p.expanded[:, 0], p.expanded[:, 1], s=6, color=EXPANDED, zorder=2)
+
+
+def _plot_cells(c, ax):
+    """The cells' states and, when the planner gives a value per cell (a potential, a distance), its
+    heat map over the free and ridge cells, as the program's pictures show it."""
+    import matplotlib
+    from matplotlib.colors import Normalize, to_rgba_array
+
+    rows, columns = c.states.shape
+    extent = (c.x0, c.x0 + columns * c.cell_width, c.y0, c.y0 + rows * c.cell_height)
+    rgba = to_rgba_array(CELL_COLOURS)[c.states]
+    heated = (c.states == 1) | (c.states == 3)
+    if c.values is not None and heated.any():
+        values = c.values[heated]
+        rgba[heated] = matplotlib.colormaps["viridis"](Normalize(values.min(), values.max())(values), alpha=0.6)
+    ax.imshow(image_bytes(rgba), origin="lower", extent=extent, interpolation="nearest", zorder=0)
+
+
+def image_bytes(rgba):
+    """An RGBA image of floats in [0, 1] as bytes, which matplotlib redraws four times faster (an
+    animation redraws it in every frame)."""
+    return (rgba * 255).round().astype(np.uint8)
 
 
 def _query_ends(world, name):
@@ -95,45 +126,105 @@ def _query_ends(world, name):
     return None
 
 
-def _plot_path(p, ax, world, colour=PATH):
-    if not p.found:  # its start and goal, and why it has no path, in the legend
-        ends = _query_ends(world, p.query)
-        if ends is not None:
-            (sx, sy), (gx, gy) = ends
-            ax.plot([sx], [sy], "o", color=colour, zorder=4, label=f"{p.planner} {p.query}: {p.status}")
-            ax.plot([gx], [gy], "*", color=colour, ms=12, zorder=4)
-        ax.legend(loc="best", fontsize="small")
-        return
-    path = p.path
-    ax.plot(path[:, 0], path[:, 1], color=colour, lw=2, zorder=3, label=f"{p.planner} {p.query}: {p.length:.4g}")
-    ax.plot(path[0, 0], path[0, 1], "o", color=colour, zorder=4)
-    ax.plot(path[-1, 0], path[-1, 1], "*", color=colour, ms=12, zorder=4)
-    if path.shape[1] == 3 and world.robot:  # the rotating robot at some poses along the path
-        for x, y, theta in path[:: max(1, len(path) // 12)]:
-            c, s = math.cos(math.radians(theta)), math.sin(math.radians(theta))
-            for part in world.robot:
-                placed = part @ np.array([[c, s], [-s, c]]) + (x, y)
-                _polygon(ax, placed, facecolor="none", edgecolor=ROBOT, lw=0.6, zorder=3)
+def plan_label(p):
+    """The planner's name and the options the plan was planned with that differ from their defaults
+    ("rrt goal_bias=0.2 seed=3"), for a legend."""
+    options = getattr(p, "options", None) or {}
+    return " ".join([p.planner] + [f"{name}={value}" for name, value in options.items()])
+
+
+def draw_path(p, ax, world, colour=PATH):
+    """The plan's path from start (o) to goal (*), labelled in the legend with its length; a rotating
+    robot or a car drawn at some poses along it. A plan that stopped short (not found, with the path
+    it walked) is dashed, ends at x and has its status in the label; a plan without a path: its
+    query's start and goal, with its status. Returns the artists drawn."""
+    path = drawn_path(p, world)
+    ends = _query_ends(world, p.query)
+    label = f"{plan_label(p)} {p.query}: " + (f"{p.length:.4g}" if p.found else p.status)
+    artists = []
+    if len(path):
+        artists += ax.plot(path[:, 0], path[:, 1], color=colour, lw=2, ls="-" if p.found else "--", zorder=3,
+                           label=label)
+        artists += ax.plot(path[0, 0], path[0, 1], "o", color=colour, zorder=4)
+        artists += ax.plot(path[-1, 0], path[-1, 1], "*" if p.found else "x", color=colour, ms=12, zorder=4)
+    elif ends is not None:
+        artists += ax.plot(*ends[0], "o", color=colour, zorder=4, label=label)
+    if not p.found and ends is not None:
+        artists += ax.plot(*ends[1], "*", color=colour, ms=12, zorder=4)
+    if path.shape[1] == 3 and world.robot:  # the rotating robot or the car at some poses along the path
+        for pose in path[:: max(1, len(path) // 12)]:
+            artists += [polygon(ax, ring, facecolor="none", edgecolor=ROBOT, lw=0.6, zorder=3)
+                        for ring in placed_robot(world.robot, pose)]
     ax.legend(loc="best", fontsize="small")
+    return artists
+
+
+def drawn_path(p, world):
+    """The plan's path as drawn: a car's through its arcs, sampled finely; others' as planned."""
+    if not (p.segments and world.car):
+        return p.path
+    lengths = [s["length"] for s in p.segments]
+    distances = np.union1d(np.linspace(0, sum(lengths), CAR_CURVE_POSES), np.cumsum([0] + lengths))
+    return car_poses(p.segments, world.car["turning_radius"], distances)
+
+
+def car_poses(segments, radius, distances):
+    """The car's poses (x, y, degrees) after driving each of `distances` (sorted, from 0 to the
+    segments' total length) along its segments, turning with `radius`."""
+    starts = np.cumsum([0] + [s["length"] for s in segments[:-1]])
+    which = np.clip(np.searchsorted(starts, distances, side="right") - 1, 0, len(segments) - 1)
+    return np.array([_driven(segments[i], radius, d - starts[i]) for i, d in zip(which, distances)])
+
+
+def _driven(segment, radius, distance):
+    """The pose after driving `distance` along one segment from its start: straight, or on a circle of
+    `radius` to the left (L) or right (R) of the heading; in reverse gear backwards."""
+    x, y, degrees = segment["start"]
+    heading, d = math.radians(degrees), distance * segment["gear"]
+    curvature = {"L": 1, "S": 0, "R": -1}[segment["steer"]] / radius
+    if curvature == 0:
+        return x + d * math.cos(heading), y + d * math.sin(heading), degrees
+    after = heading + curvature * d
+    return (x + (math.sin(after) - math.sin(heading)) / curvature,
+            y - (math.cos(after) - math.cos(heading)) / curvature, math.degrees(after))
+
+
+def placed_robot(robot, pose):
+    """The robot's parts (rings in its own frame) at pose (x, y) or (x, y, degrees)."""
+    x, y = pose[0], pose[1]
+    theta = math.radians(pose[2]) if len(pose) > 2 else 0.0
+    c, s = math.cos(theta), math.sin(theta)
+    return [part @ np.array([[c, s], [-s, c]]) + (x, y) for part in robot]
+
+
+def draw_arm_workspace(arm, ax):
+    """The arm's obstacles and obstacle points, in a square the arm reaches across."""
+    for ring in arm.obstacles:
+        polygon(ax, ring, facecolor=OBSTACLE, edgecolor="black", lw=0.5)
+    if len(arm.points):
+        ax.scatter(arm.points[:, 0], arm.points[:, 1], s=8, color=OBSTACLE)
+    reach = sum(arm.links)
+    ax.set_xlim(-reach * 1.05, reach * 1.05)
+    ax.set_ylim(-reach * 1.05, reach * 1.05)
+
+
+def draw_arm(arm, angles, ax, colour):
+    """The arm at joint angles `angles`: its links and joints; returns the line, to move it."""
+    joints = arm.joint_positions(angles)
+    (line,) = ax.plot(joints[:, 0], joints[:, 1], "-o", ms=2, lw=max(1.5, 2 * arm.link_width), color=colour,
+                      zorder=3)
+    return line
 
 
 def _plot_arm(arm, plans, ax):
     from matplotlib import cm
 
-    for ring in arm.obstacles:
-        _polygon(ax, ring, facecolor=OBSTACLE, edgecolor="black", lw=0.5)
-    if len(arm.points):
-        ax.scatter(arm.points[:, 0], arm.points[:, 1], s=8, color=OBSTACLE)
-    reach = sum(arm.links)
+    draw_arm_workspace(arm, ax)
     for p in plans:
         if not p.found:
             continue
         path = p.path
         shown = path[:: max(1, len(path) // 16)].tolist() + [path[-1].tolist()]
         for i, q in enumerate(shown):
-            joints = arm.joint_positions(q)
-            ax.plot(joints[:, 0], joints[:, 1], "-o", ms=2, lw=max(1.5, 2 * arm.link_width),
-                    color=cm.Blues(0.3 + 0.7 * i / max(1, len(shown) - 1)), zorder=3)
-        ax.set_title(f"{p.planner} {p.query}: {p.status}")
-    ax.set_xlim(-reach * 1.05, reach * 1.05)
-    ax.set_ylim(-reach * 1.05, reach * 1.05)
+            draw_arm(arm, q, ax, cm.Blues(0.3 + 0.7 * i / max(1, len(shown) - 1)))
+        ax.set_title(f"{plan_label(p)} {p.query}: {p.status}")

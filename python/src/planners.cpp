@@ -5,6 +5,7 @@
 #include "exact_values.hpp"
 #include "plans.hpp"
 
+#include <polyplan/geometry/rational.hpp>
 #include <polyplan/registry/any_planner.hpp>
 
 #include <pybind11/stl.h>
@@ -58,7 +59,8 @@ OptionValues option_values(const PlannerListing& planner, const py::dict& option
 struct PlannerHandle {
   std::unique_ptr<AnyPlanner> planner;
   std::shared_ptr<ProblemHandle> handle;
-  py::object problem;  // the World or Arm
+  py::object problem;    // the World or Arm
+  OptionValues options;  // those given that differ from the defaults
 
   // The problem's own query number `query` names (its name or index; None: the first).
   std::size_t own_query(py::handle query) const {
@@ -80,7 +82,7 @@ struct PlannerHandle {
     return static_cast<std::size_t>(i);
   }
 
-  PlanResult answer(Report report) const { return {std::move(report), problem, std::nullopt}; }
+  PlanResult answer(Report report) const { return {std::move(report), problem, options, std::nullopt}; }
 
   // `ask(planner)` with the problem's lock held and the GIL released; the door's InputError as the
   // message of plan().
@@ -134,10 +136,30 @@ std::vector<PlanResult> plan_all(const PlannerHandle& p, bool record) {
   return results;
 }
 
+// "0" and "0.0" are one number; texts that are not numbers compare as text.
+bool same_value(const std::string& a, const std::string& b) {
+  const auto x = parse_rational(a), y = parse_rational(b);
+  return x && y ? *x == *y : a == b;
+}
+
+// The options whose value differs from the option's default (seed=1 given for a default seed of 1 is
+// not worth a label).
+OptionValues not_defaults(const PlannerListing& planner, const OptionValues& values) {
+  OptionValues out;
+  for (const auto& [name, value] : values) {
+    const auto option = std::find_if(planner.options.begin(), planner.options.end(),
+                                     [&](const OptionInfo& o) { return o.name == name; });
+    if (option == planner.options.end() || !same_value(option->default_value, value)) out.emplace_back(name, value);
+  }
+  return out;
+}
+
 PlannerHandle make(const std::string& name, const py::object& problem, const py::dict& options) {
-  PlannerHandle p{nullptr, problem_of(problem, "planner"), problem};
+  PlannerHandle p{nullptr, problem_of(problem, "planner"), problem, {}};
   const std::string planner = name.empty() ? default_planner(p.handle->door()) : name;
-  const OptionValues values = option_values(planner_for(planner, p.handle->door()), options);
+  const PlannerListing& listing = planner_for(planner, p.handle->door());
+  const OptionValues values = option_values(listing, options);
+  p.options = not_defaults(listing, values);
   p.planner = locked(p.handle->lock(), [&] { return make_planner(planner, p.handle->door(), values); });
   return p;
 }

@@ -62,6 +62,46 @@ py::object exact_path(const PlanResult& r) {
   return out;
 }
 
+// A point, points or a cell as numbers: (2,) and (N, 2) float64 arrays, a tuple of two ints; none
+// for the facts the JSON already gives as Python values.
+py::object numbers_of(const FactValue& value) {
+  if (const auto* p = std::get_if<FactPoint>(&value)) return rows_array({{(*p)[0], (*p)[1]}}, 2).attr("reshape")(2);
+  if (const auto* points = std::get_if<FactPoints>(&value)) {
+    Rows rows;
+    for (const FactPoint& q : *points) rows.push_back({q[0], q[1]});
+    return rows_array(rows, 2);
+  }
+  if (const auto* cell = std::get_if<FactCell>(&value)) return py::make_tuple((*cell)[0], (*cell)[1]);
+  return py::none();
+}
+
+// The report's facts nested as the JSON nests them ("bug.hits" is facts["bug"]["hits"]), with numbers_of's
+// arrays where the JSON has lists.
+py::object facts_of(const Report& report) {
+  py::object out = from_json(report.facts_json());
+  for (const auto& [name, value] : report.facts().entries()) {
+    py::object numbers = numbers_of(value);
+    if (numbers.is_none()) continue;
+    py::object at = out;
+    std::size_t begin = 0;
+    for (std::size_t dot = name.find('.'); dot != std::string::npos; dot = name.find('.', begin)) {
+      at = at[py::str(name.substr(begin, dot - begin))];
+      begin = dot + 1;
+    }
+    at[py::str(name.substr(begin))] = numbers;
+  }
+  return out;
+}
+
+py::dict options_of(const PlanResult& r) {
+  py::dict out;
+  for (auto [name, value] : r.options) {
+    std::replace(name.begin(), name.end(), '-', '_');
+    out[py::str(name)] = value;
+  }
+  return out;
+}
+
 // The program's picture of `plans` (all of one problem and space) in `problem`.
 std::string svg_of(py::handle problem, const std::vector<const PlanResult*>& plans, bool strobe) {
   const std::shared_ptr<ProblemHandle> handle = problem_of(problem, "svg");
@@ -157,10 +197,13 @@ the planner's counts and measures, nested as in the JSON.)")
           },
           "How the path was proved free, e.g. \"exact path check (triangulation walk)\"; None when not certified.")
       .def_property_readonly(
-          "facts", [](const PlanResult& r) { return from_json(r.report.facts_json()); },
+          "facts", [](const PlanResult& r) { return facts_of(r.report); },
           "Everything the JSON holds beside the answer, as a dict nested as there: the planner's facts "
           "(facts[\"search\"][\"expanded\"], facts[\"roadmap\"][\"vertices\"], ...), clearance and bottleneck, "
           "a planner's further paths")
+      .def_property_readonly("options", &options_of,
+                             "The planner's options it was planned with that differ from their defaults, "
+                             "{\"goal_bias\": \"0.2\"} (values as the program prints them): for labels.")
       .def_property_readonly(
           "query", [](const PlanResult& r) { return r.report.query(); },
           "The query's name (\"start/goal\", \"queries[2]\", ...).")

@@ -2,6 +2,7 @@
 // A plan as Python holds it, and the bindings of the module's parts.
 #include "problems.hpp"
 
+#include <polyplan/plan/planner_options.hpp>
 #include <polyplan/registry/report.hpp>
 
 #include <pybind11/pybind11.h>
@@ -19,6 +20,9 @@ namespace polyplan::python {
 struct PlanResult {
   Report report;
   pybind11::object problem;
+  // The options it was planned with that differ from the planner's defaults, as the registry
+  // names them (goal-bias), for labels.
+  OptionValues options;
 
   // What the query recorded, converted once for the attributes that read it (graph, expanded,
   // cells, decomposition).

@@ -35,16 +35,8 @@ const char* kCorridor = R"({"bounds": [0, 0, 20, 20], "obstacles": [
 
 GridCell cell(std::size_t x, std::size_t y) { return x + y * 20; }
 
-// "(x, y)" of a cell of the 20 x 20 grid, as the facts write it (appended piece by piece: GCC 12
-// warns falsely, -Wrestrict, on a literal + std::to_string chain).
-std::string cell_name(GridCell c) {
-  std::string name = "(";
-  name += std::to_string(c % 20);
-  name += ", ";
-  name += std::to_string(c / 20);
-  name += ")";
-  return name;
-}
+// (column, row) of a cell of the 20 x 20 grid, as the facts give it.
+FactCell cell_of(GridCell c) { return {std::int64_t(c % 20), std::int64_t(c / 20)}; }
 
 }  // namespace
 
@@ -68,7 +60,7 @@ TEST(GvdGridPlanner, AlongTheMiddleOfACorridorWithItsExactClearance) {
   EXPECT_EQ(along.facts.at(GvdFacts::max_distance), 3);
   EXPECT_EQ(along.facts.at(GvdFacts::cells), along.facts.at(RoadmapFacts::vertices));
   EXPECT_GT(along.facts.at(RoadmapFacts::edges), 0);
-  EXPECT_EQ(along.facts.at(GvdFacts::start_cell), "(5, 10)");
+  EXPECT_EQ(along.facts.at(GvdFacts::start_cell), (FactCell{5, 10}));
   EXPECT_EQ(along.facts.at(SearchFacts::path_edges), 9);
   EXPECT_TRUE(check_path(cspace, along.path).valid);
 }
@@ -93,8 +85,8 @@ TEST(GvdGridPlanner, ClimbsToTheGvdFollowsItAndDescends) {
   EXPECT_EQ(plan.path.front(), query.start);
   EXPECT_EQ(plan.path.back(), query.goal);
   EXPECT_TRUE(check_path(cspace, plan.path).valid);
-  EXPECT_EQ(plan.facts.at(GvdFacts::start_cell), cell_name(up.back()));
-  EXPECT_EQ(plan.facts.at(GvdFacts::goal_cell), cell_name(down.back()));
+  EXPECT_EQ(plan.facts.at(GvdFacts::start_cell), cell_of(up.back()));
+  EXPECT_EQ(plan.facts.at(GvdFacts::goal_cell), cell_of(down.back()));
   // Every corner between start and goal is a cell centre of the start's climb, of the GVD, or of
   // the goal's climb, in that order: once on the GVD, the path leaves it only for the descent.
   const Raster& raster = planner.raster();

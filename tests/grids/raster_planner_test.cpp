@@ -4,6 +4,7 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/rasterize.hpp>
 #include <polyplan/grids/grid_facts.hpp>
+#include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/grids/raster_planner.hpp>
 #include <polyplan/io/world_reader.hpp>
 #include <polyplan/plan/plan_facts.hpp>
@@ -100,8 +101,8 @@ TEST_F(SphereWorld, JustRightResolutionFindsCheckedPathsWithinTwentyPercentOfThe
     const auto start_cell = planner.nearest_free_cell(q.start), goal_cell = planner.nearest_free_cell(q.goal);
     ASSERT_TRUE(start_cell && goal_cell);
     EXPECT_FALSE(planner.raster().is_blocked(start_cell->first, start_cell->second));
-    EXPECT_EQ(plan.facts.at(RasterFacts::start_cell), cell_text(start_cell->first, start_cell->second));
-    EXPECT_EQ(plan.facts.at(RasterFacts::goal_cell), cell_text(goal_cell->first, goal_cell->second));
+    EXPECT_EQ(plan.facts.at(RasterFacts::start_cell), cell_fact(start_cell->first, start_cell->second));
+    EXPECT_EQ(plan.facts.at(RasterFacts::goal_cell), cell_fact(goal_cell->first, goal_cell->second));
   }
 }
 
@@ -153,7 +154,7 @@ TEST(RasterPlanner, JoinFromTheStartThroughAnObstacleIsRefusedWithTheReason) {
   const Report plan = plan_once(cspace, 2, query);
   EXPECT_FALSE(plan.found);
   EXPECT_TRUE(plan.path.empty());
-  EXPECT_EQ(plan.facts.at(RasterFacts::start_cell), "(1, 0)");
+  EXPECT_EQ(plan.facts.at(RasterFacts::start_cell), (FactCell{1, 0}));
   // The refused polyline, checked here independently, is what the reason quotes.
   const PathCheck check = check_path(cspace, {pt("0.2", "0.2"), pt("3", "1"), pt("3", "3"), pt("3.5", "3.5")});
   ASSERT_FALSE(check.valid);
@@ -162,7 +163,7 @@ TEST(RasterPlanner, JoinFromTheStartThroughAnObstacleIsRefusedWithTheReason) {
   // Four times finer, the start's own cell (0, 0) = (0, 0.5)² is free: the join is short and free.
   const Report fine = plan_once(cspace, 8, query);
   EXPECT_TRUE(fine.found) << fine.why_not;
-  EXPECT_EQ(fine.facts.at(RasterFacts::start_cell), "(0, 0)");
+  EXPECT_EQ(fine.facts.at(RasterFacts::start_cell), (FactCell{0, 0}));
 }
 
 TEST(RasterPlanner, StraightRunsKeepOnlyTheirEndsAndLengthsAreExactMultiples) {

@@ -9,12 +9,12 @@
 #include <polyplan/homotopy/h_signature.hpp>
 #include <polyplan/homotopy/homotopy_facts.hpp>
 #include <polyplan/io/world_reader.hpp>
+#include <polyplan/plan/fact_points.hpp>
 #include <polyplan/registry/registry.hpp>
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <sstream>
 #include <string>
 
 namespace polyplan {
@@ -26,20 +26,15 @@ PlanReport<ExactPoint> tethered(const CSpace& cspace, const Query& q, const std:
   return planners<TranslatingRobot>()
       .find("tether")
       ->make(cspace, {{"tether-base", "0,0"}, {"tether-length", length}, {"list-classes", "true"}})
-      ->plan(q);
+      ->plan(q, QueryOptions{true});  // recorded: the marks hold the taut tethers exactly
 }
 
-// "[0, 0] [3, -4] ..." back to points.
-std::vector<ExactPoint> points(const std::string& text) {
-  std::vector<ExactPoint> out;
-  std::istringstream in(text);
-  char bracket = 0;
-  std::string x, y;
-  while (in >> bracket >> x >> y) {
-    x.pop_back(), y.pop_back();  // the comma after x, the bracket after y
-    out.push_back({*parse_rational(x), *parse_rational(y)});
-  }
-  return out;
+// The tether at the goal exactly: the last of the taut tethers the picture marks.
+std::vector<ExactPoint> tether_at_goal(const PlanReport<ExactPoint>& report) {
+  for (const auto& mark : report.recording.marks)
+    if (mark.legend == "taut tether at the path's corners" && !mark.parts.empty()) return mark.parts.back();
+  ADD_FAILURE() << "no taut tether marked";
+  return {};
 }
 
 // The tether at the goal is the taut tether of the robot's class: its word is the word of the
@@ -47,8 +42,9 @@ std::vector<ExactPoint> points(const std::string& text) {
 void expect_consistent_tether(const CSpace& cspace, const PlanReport<ExactPoint>& report,
                               const std::vector<ExactPoint>& start_tether) {
   const HSignature h(cspace);
-  const auto at_goal = points(report.facts.at(TetherFacts::at_goal));
+  const auto at_goal = tether_at_goal(report);
   ASSERT_GE(at_goal.size(), 2u);
+  EXPECT_EQ(report.facts.at(TetherFacts::at_goal), fact_points(at_goal));
   EXPECT_TRUE(check_path(cspace, at_goal).valid);
   std::vector<ExactPoint> dragged = start_tether;
   dragged.insert(dragged.end(), report.path.begin() + 1, report.path.end());

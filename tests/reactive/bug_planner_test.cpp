@@ -37,7 +37,7 @@ TEST(BugPlanners, GoRoundSeedTwosWallWithinTheirBounds) {
     EXPECT_EQ(report.path.front(), q.start);
     EXPECT_EQ(report.path.back(), q.goal);
     EXPECT_TRUE(check_path(cspace, report.path).valid);
-    EXPECT_EQ(report.facts.at(BugFacts::hits), "(0.000000, 0.200000)");
+    EXPECT_EQ(report.facts.at(BugFacts::hits), (FactPoints{{0, 0.2}}));
     const double bound = std::string(bug) == "bug1" ? d + 1.5 * perimeter
                                                     : d + 0.5 * 2 * perimeter;  // the m-line crosses the wall twice
     EXPECT_NEAR(report.facts.at(BugFacts::bound), bound, 1e-9);
@@ -45,30 +45,32 @@ TEST(BugPlanners, GoRoundSeedTwosWallWithinTheirBounds) {
     EXPECT_GT(report.length, 200);  // round an end of the wall
   }
   // Bug2 leaves where the m-line comes out of the wall's far side, x = 0.5: y = 0.5 − 0.1·3.5.
-  EXPECT_EQ(walk("bug2", cspace, q).facts.at(BugFacts::leaves), "(0.500000, 0.150000)");
+  EXPECT_EQ(walk("bug2", cspace, q).facts.at(BugFacts::leaves), (FactPoints{{0.5, 0.15}}));
   // Bug1 leaves from the wall's point nearest the goal, the foot of the perpendicular on x = 0.5.
-  EXPECT_EQ(walk("bug1", cspace, q).facts.at(BugFacts::leaves), "(0.500000, 0.000000)");
+  EXPECT_EQ(walk("bug1", cspace, q).facts.at(BugFacts::leaves), (FactPoints{{0.5, 0}}));
 }
 
 // Both Bugs reach the goal of the world's first query along an exactly valid path within their
 // bound, the first hit point where `first_hit` says.
-void expect_both_walk_out(const CSpace& cspace, const Query& q, const std::string& first_hit) {
+void expect_both_walk_out(const CSpace& cspace, const Query& q, const FactPoint& first_hit) {
   for (const char* bug : {"bug1", "bug2"}) {
     SCOPED_TRACE(bug);
     const auto report = walk(bug, cspace, q);
     ASSERT_TRUE(report.found) << report.why_not;
     EXPECT_TRUE(check_path(cspace, report.path).valid);
     EXPECT_LE(report.length, report.facts.at(BugFacts::bound));
-    EXPECT_EQ(report.facts.at(BugFacts::hits).rfind(first_hit, 0), 0u) << report.facts.at(BugFacts::hits);
+    const FactPoints hits = report.facts.at(BugFacts::hits);
+    ASSERT_FALSE(hits.empty());
+    EXPECT_EQ(hits.front(), first_hit);
   }
 }
 
 TEST(BugPlanners, WalkOutOfTheTrap) {
   const World world = shipped("u_trap");
   const CSpace cspace(world);
-  expect_both_walk_out(cspace, world.queries[0], "(10.000000, 7.000000)");  // the inside of the U's bottom
+  expect_both_walk_out(cspace, world.queries[0], (FactPoint{10, 7}));  // the inside of the U's bottom
   // Bug2 leaves where the m-line x = 10 meets the U's outside bottom, y = 6.
-  EXPECT_EQ(walk("bug2", cspace, world.queries[0]).facts.at(BugFacts::leaves), "(10.000000, 6.000000)");
+  EXPECT_EQ(walk("bug2", cspace, world.queries[0]).facts.at(BugFacts::leaves), (FactPoints{{10, 6}}));
 }
 
 // Out of the spiral's heart (eight overlapping walls, one C-obstacle): both walk it out within
@@ -76,7 +78,7 @@ TEST(BugPlanners, WalkOutOfTheTrap) {
 TEST(BugPlanners, WalkOutOfTheSpiral) {
   const World world = shipped("spiral");
   const CSpace cspace(world);
-  expect_both_walk_out(cspace, world.queries[0], "(7.500000, 7.500000)");  // the first wall the line to (1, 1) meets
+  expect_both_walk_out(cspace, world.queries[0], (FactPoint{7.5, 7.5}));  // the first wall the line to (1, 1) meets
   const auto field = planners<TranslatingRobot>().find("potential-field")->make(cspace, {})->plan(world.queries[0]);
   EXPECT_EQ(field.status, PlanStatus::local_minimum) << field.why_not;
 }

@@ -26,11 +26,10 @@ PlanReport<ExactPoint> descend(const CSpace& cspace, const Query& query, const O
   return planners<TranslatingRobot>().find("potential-field")->make(cspace, options)->plan(query);
 }
 
-// "(x, y)" of the fact potential.stopped_at.
+// The fact potential.stopped_at.
 std::pair<double, double> stopped_at(const PlanReport<ExactPoint>& report) {
-  double x = 0, y = 0;
-  EXPECT_EQ(std::sscanf(report.facts.at(PotentialFacts::descent.stopped_at).c_str(), "(%lf, %lf)", &x, &y), 2);
-  return {x, y};
+  const FactPoint at = report.facts.at(PotentialFacts::descent.stopped_at);
+  return {at[0], at[1]};
 }
 
 TEST(PotentialFieldPlanner, DescendsToAGoalInTheOpenWithAnExactlyCheckedPath) {

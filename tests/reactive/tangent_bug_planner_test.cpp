@@ -44,8 +44,8 @@ TEST(TangentBug, FollowsTheEndlessWallUntilItsDistanceLimitWithDFollowedTwo) {
     EXPECT_EQ(report.status, PlanStatus::limit) << report.why_not;
     EXPECT_EQ(report.facts.at(QueryFacts::stopped_by), "distance limit");
     EXPECT_EQ(report.facts.at(TangentBugFacts::d_followed), 2);
-    EXPECT_EQ(report.facts.at(BugFacts::hits), "(0.000000, 0.000000)");
-    EXPECT_EQ(report.facts.at(BugFacts::leaves), "");
+    EXPECT_EQ(report.facts.at(BugFacts::hits), (FactPoints{{0, 0}}));
+    EXPECT_EQ(report.facts.at(BugFacts::leaves), FactPoints{});
     EXPECT_NEAR(report.facts.at(BugFacts::distance), 10000, 1e-6);
     // Up, with the wall on its right: the wall's ends tie, so no discontinuity says otherwise.
     EXPECT_NE(report.why_not.find("at (0.000000, 9997.000000) following the boundary, d_followed 2"), std::string::npos)
@@ -62,9 +62,9 @@ TEST(TangentBug, LeavesTheHalfWallAtOneRootThreeTouchingIt) {
   const auto report = tangent_bug(cspace, world.queries[0], "0");
   ASSERT_TRUE(report.found) << report.why_not;
   EXPECT_TRUE(check_path(cspace, report.path).valid);
-  EXPECT_EQ(report.facts.at(BugFacts::hits), "(0.000000, 0.000000)");
+  EXPECT_EQ(report.facts.at(BugFacts::hits), (FactPoints{{0, 0}}));
   EXPECT_EQ(report.facts.at(TangentBugFacts::d_followed), 2);
-  EXPECT_EQ(report.facts.at(BugFacts::leaves), "(1.000000, 1.732051)");
+  EXPECT_EQ(report.facts.at(BugFacts::leaves), (FactPoints{{1, std::sqrt(3.0)}}));
   ASSERT_EQ(report.path.size(), 6u);  // start, (0, 0), (0, 3), (1, 3), the leave point, the goal
   EXPECT_EQ(report.path[4].x, 1);
   EXPECT_NEAR(to_double(report.path[4].y), std::sqrt(3.0), 1e-14);
@@ -80,7 +80,7 @@ TEST(TangentBug, SeeingFarItHeadsForTheHalfWallsCorners) {
   ASSERT_TRUE(report.found) << report.why_not;
   const std::vector<ExactPoint> expected{{-3, 0}, {0, 3}, {1, 3}, {2, 0}};
   EXPECT_EQ(report.path, expected);
-  EXPECT_EQ(report.facts.at(BugFacts::hits), "");
+  EXPECT_EQ(report.facts.at(BugFacts::hits), FactPoints{});
   EXPECT_NEAR(report.length, 3 * std::sqrt(2.0) + 1 + std::sqrt(10.0), 1e-12);
 }
 
@@ -109,8 +109,8 @@ TEST(TangentBug, WalksOutOfTheTrap) {
   const auto report = tangent_bug(cspace, world.queries[0], "inf");
   ASSERT_TRUE(report.found) << report.why_not;
   EXPECT_TRUE(check_path(cspace, report.path).valid);
-  EXPECT_EQ(report.facts.at(BugFacts::hits), "(10.000000, 7.000000)");
-  EXPECT_EQ(report.facts.at(BugFacts::leaves), "(14.000000, 6.000000)");
+  EXPECT_EQ(report.facts.at(BugFacts::hits), (FactPoints{{10, 7}}));
+  EXPECT_EQ(report.facts.at(BugFacts::leaves), (FactPoints{{14, 6}}));
   EXPECT_NEAR(report.length, 3 + 3 + 7 + 1 + 8 + std::sqrt(32.0), 1e-12);
 }
 

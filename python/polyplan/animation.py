@@ -1,0 +1,370 @@
+"""polyplan.animate and search_graph's frames: plans, searches, drives and descents as matplotlib
+animations and pictures (imported only when asked for, as plotting is; they draw with its helpers)."""
+
+import json
+import os
+from typing import List, NamedTuple, Optional
+
+import numpy as np
+
+from . import _polyplan, plotting
+
+MAX_FRAMES = 200  # a longer sequence of steps (expansions, cells driven) is shown every so many steps
+MOTION_FRAMES = 100  # poses along a path, evenly spaced by distance
+FIGURE = (6, 80)  # inches and dots per inch: 480 pixels square, which a GIF encodes twice as fast as plot's 700
+MAX_FRAME_VERTICES = 2000  # search_graph(frames=...): beyond these, hours of PNGs nobody meant to write
+MAX_FRAME_STEPS = 5000
+EDGE = "#d0d0d0"
+VERTEX = "#b8b8b8"
+CLOSED = plotting.EXPANDED
+OPEN = "#30a060"
+KNOWLEDGE_COLOURS = ["#d8d8d8", "#ffffff", "#404040"]  # a Drive's knowledge: unknown, free, blocked
+CRITICAL_MARKERS = {"minimum": "v", "maximum": "^", "saddle": "X", "degenerate": "s"}
+
+
+def animate(obj, ax=None, frames=None, interval=50, *, what="path", graph=None, world=None):
+    """polyplan.animate: its docstring says what each kind of object becomes."""
+    if what not in ("path", "search"):
+        raise _polyplan.InputError(f'animate: what={what!r}: expected "path" or "search"')
+    if frames is not None and (isinstance(frames, bool) or not isinstance(frames, int) or frames < 1):
+        raise _polyplan.InputError(f"animate: frames={frames!r}: expected a whole number of at least 1")
+    scene = _scene(obj, what, graph, world)
+    ax = plotting.new_axes(ax, *FIGURE)
+    update, steps = scene(obj, ax, frames)
+    _pin_legend(ax)
+    from matplotlib.animation import FuncAnimation
+    return FuncAnimation(ax.figure, update, frames=list(steps), interval=interval, cache_frame_data=False)
+
+
+def _pin_legend(ax):
+    """Keep the legend where loc="best" put it in the first picture: seeking that place again takes
+    half the drawing of every frame."""
+    legend = ax.get_legend()
+    if legend is None:
+        return
+    ax.figure.canvas.draw()
+    corner = legend.get_window_extent().transformed(ax.transAxes.inverted()).p0
+    handles, labels = ax.get_legend_handles_labels()
+    ax.legend(handles, labels, loc="lower left", bbox_to_anchor=tuple(corner), borderaxespad=0, fontsize="small")
+
+
+def _scene(obj, what, graph, world):
+    """The function that draws obj's scene on an Axes, scene(obj, ax, frames), returning update(step)
+    and the steps to show."""
+    if isinstance(obj, _polyplan.Plan):
+        if what == "search":
+            return _plan_search
+        return _arm_motion if isinstance(obj.problem, _polyplan.Arm) else _world_motion
+    if isinstance(obj, _polyplan.Drive):
+        return _drive
+    if isinstance(obj, dict) and "trace" in obj:
+        return lambda result, ax, frames: _graph_search(result, graph, ax, frames)
+    if isinstance(obj, dict) and "critical_points" in obj:
+        return lambda result, ax, frames: _descent(result, world, ax, frames)
+    raise _polyplan.InputError("animate: expected a Plan, a Drive, or a dict of search_graph or potential, got "
+                               + type(obj).__name__)
+
+
+def _shown(count, frames):
+    """Which of `count` states to show: all of them, or `frames` (at most MAX_FRAMES) evenly
+    spaced ones, the last among them."""
+    wanted = min(count, frames or MAX_FRAMES)
+    return np.linspace(count - 1, 0, wanted).round().astype(int)[::-1].tolist()
+
+
+def _along(points, count, step_lengths):
+    """`count` rows evenly spaced along the polyline through the rows of `points`, whose steps are
+    `step_lengths` long; each column interpolated linearly."""
+    travelled = np.concatenate([[0.0], np.cumsum(step_lengths)])
+    at = np.linspace(0.0, travelled[-1], count)
+    return np.column_stack([np.interp(at, travelled, column) for column in points.T])
+
+
+def _path_of(plan):
+    if not len(plan.path):
+        raise _polyplan.InputError(f"animate: the plan {plan.planner} {plan.query} has no path ({plan.status}); "
+                                   'animate(plan, what="search") shows its search')
+    return plan.path
+
+
+def _poses(plan, count):
+    """`count` poses evenly spaced along the plan's path: a car's along its arcs; a rotating robot
+    also turning on the spot, a turn as long as the way its farthest corner sweeps."""
+    world, path = plan.problem, _path_of(plan)
+    if plan.segments and world.car:
+        total = sum(s["length"] for s in plan.segments)
+        return plotting.car_poses(plan.segments, world.car["turning_radius"], np.linspace(0, total, count))
+    steps = np.hypot(*np.diff(path[:, :2], axis=0).T)
+    if path.shape[1] == 3:
+        path = path.copy()
+        path[:, 2] = np.unwrap(path[:, 2], period=360)  # from 350 to 10 degrees turns by 20, not back by 340
+        radius = max((np.hypot(*ring.T).max() for ring in world.robot), default=0.0)
+        steps = steps + radius * np.radians(np.abs(np.diff(path[:, 2])))
+    return _along(path, count, steps)
+
+
+def _world_motion(plan, ax, frames):
+    """The robot (its polygon turned with its heading, or a dot) moving along the plan as plot draws it."""
+    world = plan.problem
+    poses = _poses(plan, frames or MOTION_FRAMES)
+    plotting.plot(plan, ax)
+    if world.robot:
+        parts = [plotting.polygon(ax, ring, facecolor=plotting.ROBOT, edgecolor="black", lw=0.5, alpha=0.7, zorder=5)
+                 for ring in plotting.placed_robot(world.robot, poses[0])]
+
+        def update(i):
+            for part, ring in zip(parts, plotting.placed_robot(world.robot, poses[i])):
+                part.set_xy(ring)
+    else:
+        (dot,) = ax.plot([poses[0, 0]], [poses[0, 1]], "o", color=plotting.ROBOT, ms=9, zorder=5)
+
+        def update(i):
+            dot.set_data([poses[i, 0]], [poses[i, 1]])
+    return update, range(len(poses))
+
+
+def _arm_motion(plan, ax, frames):
+    """The arm moving through the plan's configurations, its start and goal drawn faintly."""
+    arm, path = plan.problem, _path_of(plan)
+    if arm.limits is None:  # the joints turn freely: the short way round, as the planners' torus has it
+        path = np.unwrap(path, axis=0)
+    angles = _along(path, frames or MOTION_FRAMES, np.abs(np.diff(path, axis=0)).sum(axis=1))
+    plotting.draw_arm_workspace(arm, ax)
+    for end in (path[0], path[-1]):
+        plotting.draw_arm(arm, end, ax, "#c8d4e8")
+    line = plotting.draw_arm(arm, angles[0], ax, plotting.ROBOT)
+    ax.set_aspect("equal")
+    ax.set_title(f"{plotting.plan_label(plan)} {plan.query}: {plan.status}")
+
+    def update(i):
+        line.set_data(*arm.joint_positions(angles[i]).T)
+    return update, range(len(angles))
+
+
+def _plan_search(plan, ax, frames):
+    """The configurations the plan's search expanded appearing in order (over the world, or in an
+    arm's first two joint angles), then its path."""
+    expanded, problem = plan.expanded, plan.problem
+    if not len(expanded) or expanded.shape[1] < 2:
+        raise _polyplan.InputError(f"animate: the plan {plan.planner} {plan.query} recorded no expanded "
+                                   "configurations to show (plan with record=True, with a planner that expands "
+                                   "some; an arm of two joints or more)")
+    if isinstance(problem, _polyplan.Arm):
+        ax.set_xlabel("joint 1 (radians)")
+        ax.set_ylabel("joint 2 (radians)")
+        finale = ax.plot(plan.path[:, 0], plan.path[:, 1], ".", color=plotting.PATH, zorder=3)
+    else:
+        plotting.draw_world(problem, ax, cobstacles=expanded.shape[1] == 2)
+        finale = plotting.draw_path(plan, ax, problem)
+    dots = ax.scatter(expanded[:, 0], expanded[:, 1], s=14, color=CLOSED, zorder=2)  # all of them: the limits
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    count = len(expanded)
+
+    def update(i):  # i + 1 expanded; i == count: all of them and the path
+        dots.set_offsets(expanded[: i + 1, :2])
+        for artist in finale:
+            artist.set_visible(i == count)
+        ax.set_title(f"{plotting.plan_label(plan)} {plan.query}: {min(i + 1, count)} of {count} expanded")
+    return update, _shown(count + 1, frames)
+
+
+class SearchSteps(NamedTuple):
+    """What pictures of a search_graph result draw, found once: the vertices' positions (V, 2), the
+    edges as segments (E, 2, 2), the trace, the vertices expanded in order, the index in the trace
+    after which each vertex entered the open list and left it (len(trace): never), each vertex's
+    backpointer when first expanded (-1: none) and whether the search is depth-first, the path,
+    its cost and the goal (None when unknown)."""
+
+    xy: np.ndarray
+    edges: np.ndarray
+    trace: list
+    expanded: np.ndarray
+    opened: np.ndarray
+    closed: np.ndarray
+    backpointers: np.ndarray
+    depth_first: bool
+    path: List[int]
+    cost: Optional[float]
+    goal: Optional[int]
+
+
+def graph_vertices(graph):
+    """The graph search_graph is given (a JSON file's path, or its list of dicts, numpy fields
+    allowed) as a list of dicts of plain values."""
+    from . import _json_value
+
+    if isinstance(graph, (str, os.PathLike)):
+        with open(graph) as f:
+            graph = json.load(f)
+    vertices = _json_value(graph, "graph", exact=False)
+    if not isinstance(vertices, list) or not all(isinstance(v, dict) and "x" in v for v in vertices):
+        raise _polyplan.InputError('graph: expected a list of dicts {"x": [x, y], "neighbors": [...], ...}')
+    return vertices
+
+
+def search_steps(graph, result, goal=None):
+    """The SearchSteps of search_graph's `result` on `graph` (what search_graph was given)."""
+    vertices = graph_vertices(graph)
+    trace = result["trace"]
+    if not trace:
+        raise _polyplan.InputError("search_graph's result: its trace is empty")
+    xy = np.array([v["x"][:2] for v in vertices], dtype=float).reshape(-1, 2)
+    neighbours = [v.get("neighbors", []) for v in vertices]
+    pairs = sorted({(min(a, b), max(a, b)) for a, ns in enumerate(neighbours) for b in ns})
+    expanded = np.array([t["vertex"] for t in trace], dtype=int)
+    if expanded.max() >= len(vertices):
+        raise _polyplan.InputError(f"graph: not the graph searched: it has {len(vertices)} vertices, and the search "
+                                   f"expanded vertex {expanded.max()}")
+    opened, closed = _open_intervals(neighbours, expanded)
+    backpointers = np.full(len(vertices), -1)
+    for t in reversed(trace):
+        backpointers[t["vertex"]] = -1 if t["backpointer"] is None else t["backpointer"]
+    path = result["path"]
+    goal = goal if goal is not None else (path[-1] if path else None)
+    return SearchSteps(xy, xy[np.array(pairs, dtype=int).reshape(-1, 2)], trace, expanded, opened, closed,
+                       backpointers, result.get("method") == "dfs", path, result.get("cost"), goal)
+
+
+def _open_intervals(neighbours, expanded):
+    """For each vertex, the trace index after which it was in the open list (the start from before
+    the first; any other once a neighbour was expanded: each search but the depth-first one puts
+    every vertex it reaches that is not closed in its open list) and the index at which it was
+    first expanded."""
+    never = len(expanded)
+    opened = np.full(len(neighbours), never)
+    closed = np.full(len(neighbours), never)
+    np.minimum.at(closed, expanded, np.arange(never))
+    opened[expanded[0]] = -1
+    for i, v in enumerate(expanded):
+        for u in neighbours[v]:
+            opened[u] = min(opened[u], i)
+    return opened, closed
+
+
+def _open_after(steps, i):
+    """The vertices in the open list after the expansion trace[i]: the trace's own list when it has
+    one; else (a trace holding the open list's size) those reached and not yet expanded, or for a
+    depth-first search its stack, the vertices from the start to the one expanded."""
+    given = steps.trace[i]["open"]
+    if isinstance(given, (list, tuple, np.ndarray)):
+        return np.asarray(given, dtype=int)
+    if steps.depth_first:
+        stack, v = [], steps.backpointers[steps.expanded[i]]
+        while v >= 0:
+            stack.append(v)
+            v = steps.backpointers[v]
+        return np.array(stack, dtype=int)
+    return np.flatnonzero((steps.opened <= i) & (steps.closed > i))
+
+
+def draw_search_state(ax, steps, i):
+    """Draw on ax (cleared first) the search of `steps` (a SearchSteps) after the expansion
+    trace[i]: the edges, the closed vertices, the open list and the vertex expanded, its step,
+    vertex, g, h and f in the title; i == len(trace): the end, with the path."""
+    from matplotlib.collections import LineCollection
+
+    ax.clear()
+    count = len(steps.trace)
+    last = min(i, count - 1)
+    ax.add_collection(LineCollection(steps.edges, colors=EDGE, linewidths=0.8, zorder=1))
+    ax.scatter(*steps.xy.T, s=10, color=VERTEX, zorder=2)
+    ax.scatter(*steps.xy[steps.expanded[: last + 1]].T, s=28, color=CLOSED, zorder=3, label="closed")
+    ax.scatter(*steps.xy[_open_after(steps, last)].T, s=28, color=OPEN, zorder=3, label="open")
+    if i < count:
+        t = steps.trace[i]
+        ax.scatter(*steps.xy[t["vertex"]], s=140, facecolor="none", edgecolor="black", lw=1.5, zorder=4,
+                   label="expanded now")
+        ax.set_title(f"step {t['step']}: vertex {t['vertex']}   g {t['g']:.4g}   h {t['h']:.4g}   f {t['f']:.4g}")
+    elif steps.path:
+        ax.plot(*steps.xy[steps.path].T, color=plotting.PATH, lw=2.5, zorder=4, label="path")
+        ax.set_title(f"path of cost {steps.cost:.4g} after {count} expansions")
+    else:
+        ax.set_title(f"no path after {count} expansions")
+    ax.plot(*steps.xy[steps.expanded[0]], "o", color="black", ms=8, zorder=5, label="start")
+    if steps.goal is not None:
+        ax.plot(*steps.xy[steps.goal], "*", color="black", ms=14, zorder=5, label="goal")
+    ax.set_aspect("equal")
+    ax.autoscale_view()
+    ax.legend(loc="best", fontsize="small")
+
+
+def _graph_search(result, graph, ax, frames):
+    """search_graph's search expansion by expansion, then its path."""
+    if graph is None:
+        raise _polyplan.InputError("animate: a search_graph result needs its graph's vertex positions: "
+                                   "animate(result, graph=...), the graph search_graph was given")
+    steps = search_steps(graph, result)
+
+    def update(i):
+        draw_search_state(ax, steps, i)
+    return update, _shown(len(steps.trace) + 1, frames)
+
+
+def search_frames(graph, result, folder, goal=None):
+    """search_graph(frames=folder): one PNG per expansion, folder/step_0001.png, ... (created or
+    overwritten) drawn by draw_search_state; returns their paths. Refuses a graph of more than
+    MAX_FRAME_VERTICES vertices or a trace of more than MAX_FRAME_STEPS steps."""
+    from matplotlib.figure import Figure
+
+    vertices = graph_vertices(graph)
+    if len(vertices) > MAX_FRAME_VERTICES:
+        raise _polyplan.InputError(f"search_graph: frames: the graph has {len(vertices)} vertices, more than the "
+                                   f"{MAX_FRAME_VERTICES} drawn a frame per expansion")
+    if len(result["trace"]) > MAX_FRAME_STEPS:
+        raise _polyplan.InputError(f"search_graph: frames: the search took {len(result['trace'])} steps, more than "
+                                   f"the {MAX_FRAME_STEPS} drawn a frame each")
+    steps = search_steps(vertices, result, goal)
+    os.makedirs(folder, exist_ok=True)
+    figure = Figure(figsize=(7, 7))  # no pyplot: nothing to show, nothing left open
+    ax = figure.add_subplot()
+    written = []
+    for i, t in enumerate(steps.trace):
+        draw_search_state(ax, steps, i)
+        written.append(os.path.join(folder, f"step_{t['step']:04d}.png"))
+        figure.savefig(written[-1])
+    return written
+
+
+def _drive(drive, ax, frames):
+    """The robot driving cell by cell over what it knew of the map at the end; a cross where it replanned."""
+    from matplotlib.colors import to_rgba_array
+
+    cells = np.array(drive.traversed, dtype=float).reshape(-1, 2)
+    # Step j planned from cell j of the drive; the replans among them, by the cell they were made at.
+    replans = np.array([j for j, s in enumerate(drive.steps) if s["replanned"]], dtype=int)
+    # Row 0 on top, as in the map file; cell (x, y) centred on (x, y).
+    ax.imshow(plotting.image_bytes(to_rgba_array(KNOWLEDGE_COLOURS)[drive.knowledge]), interpolation="nearest")
+    (trail,) = ax.plot([], [], color=plotting.PATH, lw=1.5, zorder=3)
+    (robot,) = ax.plot([], [], "o", color=plotting.ROBOT, ms=7, zorder=5)
+    marks = ax.scatter(*cells[replans].T, marker="x", color="black", s=30, zorder=4, label="replanned")
+    if drive.last_plan:
+        ax.plot(*drive.last_plan[-1], "*", color=plotting.PATH, ms=14, zorder=5, label="goal")
+    ax.legend(loc="best", fontsize="small")
+
+    def update(i):
+        trail.set_data(*cells[: i + 1].T)
+        robot.set_data([cells[i, 0]], [cells[i, 1]])
+        done = replans[replans <= i]
+        marks.set_offsets(cells[done])
+        ax.set_title(f"{drive.algorithm}: move {i} of {len(cells) - 1}, {len(done)} replans")
+    return update, _shown(len(cells), frames)
+
+
+def _descent(result, world, ax, frames):
+    """The potential-field planner descending with the result's parameters over the field (plan
+    records it), the result's critical points marked."""
+    from . import planner
+
+    if world is None:
+        raise _polyplan.InputError("animate: polyplan.potential's result holds critical points, not a path: "
+                                   "animate(result, world=w), w the world it was computed for, follows the "
+                                   "potential-field planner down with its parameters")
+    plan = planner("potential-field", world, **result["parameters"]).plan(record=True)
+    update, steps = _world_motion(plan, ax, frames)
+    for kind, marker in CRITICAL_MARKERS.items():
+        points = np.array([p["at"] for p in result["critical_points"] if p["kind"] == kind]).reshape(-1, 2)
+        if len(points):
+            ax.scatter(*points.T, marker=marker, s=70, color="white", edgecolor="black", zorder=6, label=kind)
+    ax.legend(loc="best", fontsize="small")
+    return update, steps
