@@ -8,28 +8,17 @@
 #include "cli/option_flags.hpp"
 #include "cli/progress.hpp"
 
-#include <polyplan/draw/experiment_plots.hpp>
+#include <polyplan/draw/experiment_outputs.hpp>
 #include <polyplan/experiment/experiment_file.hpp>
-#include <polyplan/experiment/experiment_results.hpp>
 #include <polyplan/experiment/experiment_runner.hpp>
-#include <polyplan/experiment/experiment_statistics.hpp>
-#include <polyplan/experiment/experiment_tables.hpp>
-#include <polyplan/experiment/ompl_benchmark_log.hpp>
 #include <polyplan/geometry/input_error.hpp>
 
 #include <algorithm>
-#include <cctype>
-#include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <functional>
 #include <iostream>
 #include <thread>
 
 namespace polyplan::cli {
 namespace {
-
-namespace fs = std::filesystem;
 
 // --threads, --seeds and --time-limit.
 struct BenchmarkScale {
@@ -54,52 +43,11 @@ struct BenchmarkCommand {
   std::unique_ptr<CommandOptions<BenchmarkScale>> scale;
 };
 
-// The experiment cut to the first `seeds` seeds and given another time limit, its cost times
-// scaled with it (the curve keeps its shape).
-void scale_down(Experiment& e, const BenchmarkScale& command) {
-  if (command.seeds) {
-    if (command.seeds > e.seeds.size())
-      throw InputError("--seeds " + std::to_string(command.seeds) + ": the experiment has " +
-                       std::to_string(e.seeds.size()) + " seeds");
-    e.seeds.resize(command.seeds);
-  }
-  if (command.time_limit > 0) {
-    for (double& t : e.cost_times) t *= command.time_limit / e.time_limit;
-    e.time_limit = command.time_limit;
-  }
-}
-
-// A problem's name as part of a file name: letters, digits, '.', '-' and '_' kept.
-std::string file_part(const std::string& name) {
-  std::string part;
-  for (char c : name) part += std::isalnum(static_cast<unsigned char>(c)) || c == '.' || c == '-' || c == '_' ? c : '_';
-  return part;
-}
-
-void write_text(const fs::path& path, const std::function<void(std::ostream&)>& write) {
-  std::ofstream out(path);
-  if (out) write(out);
-  if (out) out.close();
-  if (!out) throw InputError(path.string() + ": cannot write");
-}
-
-void write_picture(const svg::Drawing& drawing, const fs::path& path, std::vector<fs::path>& written) {
-  try {
-    drawing.write(path.string());
-  } catch (const std::runtime_error& e) {
-    throw InputError(e.what());
-  }
-  written.push_back(path);
-}
-
 int run_benchmark(const BenchmarkCommand& command) {
   const BenchmarkScale scale = command.scale->parse();
   Experiment experiment = read_experiment(command.experiment);
-  scale_down(experiment, scale);
-  const fs::path out = command.out.empty() ? fs::path(file_part(experiment.name) + "_results") : fs::path(command.out);
-  std::error_code error;
-  fs::create_directories(out, error);
-  if (error || !fs::is_directory(out)) throw InputError("--out " + out.string() + ": cannot make the folder");
+  scale_experiment(experiment, scale.seeds, scale.time_limit, "--seeds");
+  const std::string out = command.out.empty() ? file_name_part(experiment.name) + "_results" : command.out;
   const unsigned threads = scale.threads ? scale.threads : std::max(1u, std::thread::hardware_concurrency());
 
   std::fprintf(stderr,
@@ -115,28 +63,13 @@ int run_benchmark(const BenchmarkCommand& command) {
                  "with those\n",
                  results.threads, threads);
 
-  std::vector<fs::path> written{out / "results.log", out / "results.json", out / "results.csv", out / "tables.md"};
-  write_text(written[0], [&](std::ostream& o) { write_ompl_benchmark_log(o, experiment, results); });
-  write_json(experiment_results_json(experiment, results), written[1].string());
-  write_text(written[2], [&](std::ostream& o) { write_experiment_results_csv(o, experiment, results); });
-  write_text(written[3], [&](std::ostream& o) { write_experiment_tables(o, experiment, results); });
-  const auto statistics = experiment_statistics(experiment, results);
-  for (std::size_t problem = 0; problem < experiment.problems.size(); ++problem) {
-    const std::string name = file_part(experiment.problems[problem].name);
-    write_picture(success_rate_plot(experiment, problem, statistics[problem]), out / (name + "-success.svg"), written);
-    if (auto cost = cost_over_time_plot(experiment, problem, statistics[problem]))
-      write_picture(*cost, out / (name + "-cost.svg"), written);
-    write_picture(box_plot(experiment, problem, statistics[problem], BoxPlotOf::time), out / (name + "-time.svg"),
-                  written);
-    write_picture(box_plot(experiment, problem, statistics[problem], BoxPlotOf::length), out / (name + "-length.svg"),
-                  written);
-  }
+  const std::vector<std::string> written = write_experiment_outputs(out, experiment, results);
 
   std::size_t solved = 0;
   for (const ExperimentRun& run : results.runs) solved += run.solved;
   std::cout << experiment.name << ": " << results.runs.size() << " runs, " << solved << " solved, "
             << results.total_seconds << " s\n";
-  for (const fs::path& path : written) std::cout << "wrote " << path.string() << '\n';
+  for (const std::string& path : written) std::cout << "wrote " << path << '\n';
   return ok;
 }
 

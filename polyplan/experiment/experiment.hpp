@@ -76,4 +76,10 @@ struct ExperimentResults {
   std::string host;
 };
 
+// The experiment cut to its first `seeds` seeds (0: all of them) and given another time limit (0:
+// its own), its cost times scaled with it (the curve keeps its shape): a quick look, a test.
+// InputError "<seeds_name> N: the experiment has M seeds" when it has fewer.
+void scale_experiment(Experiment& experiment, std::size_t seeds, double time_limit,
+                      const std::string& seeds_name = "seeds");
+
 }  // namespace polyplan

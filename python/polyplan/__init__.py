@@ -46,11 +46,12 @@ from ._polyplan import (  # noqa: F401 (the public names)
     svg,
 )
 from . import _polyplan
+from .experiment import Experiment, Results
 
 __all__ = [
-    "Arm", "CSpace", "Cells", "Drive", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
+    "Arm", "CSpace", "Cells", "Drive", "Experiment", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
     "PlannerInfo", "World", "animate", "check", "cspace", "ik", "plan", "planner", "planners", "plot", "potential",
-    "read_arm", "read_world", "replan", "search_graph", "steer", "svg",
+    "read_arm", "read_world", "replan", "Results", "search_graph", "steer", "svg",
 ]
 
 

@@ -37,4 +37,5 @@ PYBIND11_MODULE(_polyplan, m) {
   polyplan::python::bind_search(m);
   polyplan::python::bind_steer(m);
   polyplan::python::bind_ik(m);
+  polyplan::python::bind_experiment(m);
 }

@@ -1,0 +1,204 @@
+"""polyplan.Experiment and polyplan.Results: `polyplan benchmark` from Python.
+
+An experiment is problems x planner entries x seeds (the experiment file's format, docs/benchmark.md);
+each cell is one run: the planner built for its problem with its options and seed, and asked the
+problem's query once. Runs go on threads, each alone in its thread; the results are the records of
+results.json, as numpy columns or a pandas DataFrame, and the files the program writes.
+"""
+
+import json as _json
+import math
+import os
+import sys
+import time
+
+import numpy as np
+
+from . import _polyplan
+from ._polyplan import InputError
+
+
+class Experiment:
+    """An experiment, from a dict in the experiment file's format or from a file::
+
+        exp = polyplan.Experiment({
+            "name": "rrt-vs-rrtstar",
+            "problems": [{"name": "office", "file": "data/worlds/office.json"}],
+            "planners": [{"name": "rrt", "planner": "rrt"},
+                         {"name": "rrtstar", "planner": "rrtstar", "options": {"k": 11}}],
+            "seeds": [1, 2, 3], "time_limit": 1})
+        results = exp.run(threads=2)
+
+    A dict's problem files are relative to `folder` (the working folder when None), a file's to
+    the file's folder. Bad input raises InputError naming the object, as the program does."""
+
+    def __init__(self, spec, folder=None):
+        if isinstance(spec, _polyplan._ExperimentSpec):
+            self._spec = spec
+            return
+        if not isinstance(spec, dict):
+            raise InputError(f"Experiment: expected a dict in the experiment file's format, got {type(spec).__name__}")
+        from . import _json_value
+        text = _json.dumps(_json_value(spec, "", exact=False))
+        name = os.path.join(os.fspath(folder), "<dict>") if folder is not None else "<dict>"
+        self._spec = _polyplan._parse_experiment(text, name)
+
+    @classmethod
+    def from_file(cls, path):
+        """The experiment file at `path` (JSON)."""
+        return cls(_polyplan._read_experiment(path))
+
+    @property
+    def name(self):
+        """The experiment's name (its file's "name")."""
+        return self._spec.name
+
+    @property
+    def runs(self):
+        """How many runs it has: problems x planner entries x seeds."""
+        return self._spec.runs
+
+    @property
+    def problems(self):
+        """The problems' names, in the experiment's order."""
+        return self._spec.problems
+
+    @property
+    def planners(self):
+        """The planner entries' names."""
+        return self._spec.planners
+
+    def run(self, threads=1, progress=True, out=None, seeds=None, time_limit=None):
+        """Runs every cell on `threads` threads (0: one per core) and returns its Results.
+
+        progress: a line on stderr that counts the runs (True), a function progress(done, total)
+        called after each run, or False. out: a folder to write the program's files to as well
+        (Results.write). seeds: only the first N seeds; time_limit: seconds per run instead of the
+        experiment's, its cost times scaled alike (as `polyplan benchmark --seeds --time-limit`)."""
+        threads = _whole(threads, "threads", 0, 256)
+        seeds = 0 if seeds is None else _whole(seeds, "seeds", 1, None)
+        if time_limit is None:
+            time_limit = 0.0
+        elif isinstance(time_limit, bool) or not isinstance(time_limit, (int, float)) or not time_limit > 0 \
+                or not math.isfinite(time_limit):
+            raise InputError(f"time_limit {time_limit!r}: expected a number of seconds > 0")
+        report = _ProgressLine("runs") if progress is True else (progress or None)
+        if report is not None and not callable(report):
+            raise InputError(f"progress: expected True, False or a function (done, total), got {type(progress).__name__}")
+        results = Results(_polyplan._run_experiment(self._spec, threads, seeds, float(time_limit), report))
+        if out is not None:
+            results.write(out)
+        return results
+
+    def __repr__(self):
+        return (f"<polyplan.Experiment {self.name}: {len(self.problems)} problem(s) x {len(self.planners)} "
+                f"planner entr(ies) x {len(self._spec.seeds)} seed(s), {self._spec.time_limit:g} s each>")
+
+
+class Results:
+    """An experiment's runs: `records` (one dict per run, as results.json's "runs": problem, planner,
+    log_planner, seed, solved, status, time, setup_time, length, first_solution_time, improvements,
+    cost_at, why_not, facts), `summary` (per problem and planner entry), `columns` (numpy arrays),
+    `to_pandas()`, and `write(folder)` for the files `polyplan benchmark` writes."""
+
+    def __init__(self, outcome):
+        self._outcome = outcome
+        everything = outcome.json()
+        self.records = everything["runs"]
+        self.summary = everything["summary"]
+        self.experiment = everything["experiment"]
+        self.total_seconds = everything["total_seconds"]
+        self.threads = everything["threads"]
+
+    @property
+    def columns(self):
+        """One numpy array per field, a row per run: text as str arrays, seed as int64, solved as
+        bool, times and lengths as float64 (NaN where a run has none), cost_at as (runs, cost
+        times), and every numeric fact as "facts.NAME" (dotted as the CSV's columns)."""
+        runs = self.records
+        out = {name: np.array([r[name] for r in runs], dtype=str)
+               for name in ("problem", "planner", "log_planner", "status")}
+        out["why_not"] = np.array([r.get("why_not", "") for r in runs], dtype=str)
+        out["seed"] = np.array([r["seed"] for r in runs], dtype=np.int64)
+        out["solved"] = np.array([r["solved"] for r in runs], dtype=bool)
+        for name in ("time", "setup_time", "length", "first_solution_time"):
+            out[name] = _floats(r.get(name) for r in runs)
+        out["cost_at"] = np.array([[_float(c) for c in r["cost_at"]] for r in runs], dtype=float).reshape(
+            len(runs), len(self.experiment["cost_times"]))
+        facts = [_numeric_facts(r.get("facts", {})) for r in runs]
+        for name in dict.fromkeys(name for f in facts for name in f):
+            out["facts." + name] = _floats(f.get(name) for f in facts)
+        return out
+
+    def to_pandas(self):
+        """The runs as a pandas DataFrame, a row per run and a column per 1-d column (cost_at as
+        cost_at_T, one per cost time T). Needs pandas (Debian: python3-pandas)."""
+        try:
+            import pandas
+        except ImportError as e:
+            raise ImportError("Results.to_pandas needs pandas (Debian: python3-pandas)") from e
+        columns = self.columns
+        cost_at = columns.pop("cost_at")
+        for i, t in enumerate(self.experiment["cost_times"]):
+            columns[f"cost_at_{t:g}"] = cost_at[:, i]
+        return pandas.DataFrame(columns)
+
+    def write(self, folder):
+        """Writes results.log (OMPL's benchmark log), results.json, results.csv, tables.md and the
+        plots into `folder` (made when missing), as `polyplan benchmark --out` does; returns the
+        paths written."""
+        return self._outcome.write(folder)
+
+    def __len__(self):
+        return len(self.records)
+
+    def __repr__(self):
+        solved = sum(r["solved"] for r in self.records)
+        return f"<polyplan.Results {len(self.records)} runs, {solved} solved, {self.total_seconds:.3g} s>"
+
+
+def _whole(value, name, least, most):
+    if isinstance(value, bool) or not isinstance(value, int) and not hasattr(value, "__index__"):
+        raise InputError(f"{name}: expected a whole number, got {type(value).__name__}")
+    value = int(value.__index__())
+    if value < least or most is not None and value > most:
+        raise InputError(f"{name} {value}: expected a whole number in [{least}, {most if most is not None else 'inf'}]")
+    return value
+
+
+def _float(value):
+    return math.nan if value is None else float(value)
+
+
+def _floats(values):
+    return np.array([_float(v) for v in values], dtype=float)
+
+
+def _numeric_facts(facts, prefix=""):
+    """The facts' numbers (not flags, words, points) by dotted name."""
+    out = {}
+    for key, value in facts.items():
+        if isinstance(value, dict):
+            out.update(_numeric_facts(value, prefix + key + "."))
+        elif isinstance(value, (int, float)) and not isinstance(value, bool):
+            out[prefix + key] = value
+    return out
+
+
+class _ProgressLine:
+    """"runs: done/total, 12 s elapsed, about 30 s left" on stderr, at most once a second and at
+    the end, as the program's progress bar."""
+
+    def __init__(self, what):
+        self.what, self.started, self.last = what, time.monotonic(), 0.0
+
+    def __call__(self, done, total):
+        now = time.monotonic()
+        if now - self.last < 1.0 and done != total:
+            return
+        self.last = now
+        elapsed = now - self.started
+        left = f", about {elapsed / done * (total - done):.0f} s left" if 0 < done < total else ""
+        end = "\n" if done == total else ""
+        sys.stderr.write(f"\r{self.what}: {done}/{total}, {elapsed:.0f} s elapsed{left}   {end}")
+        sys.stderr.flush()
