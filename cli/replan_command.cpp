@@ -10,10 +10,11 @@
 #include <polyplan/draw/replan_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/incremental/discovering_robot.hpp>
+#include <polyplan/incremental/replan_options.hpp>
 #include <polyplan/io/movingai_map.hpp>
+#include <polyplan/registry/replan_json.hpp>
 
 #include <charconv>
-#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -25,27 +26,9 @@
 namespace polyplan::cli {
 namespace {
 
-// --algorithm and --sensor.
-struct Replanning {
-  ReplanAlgorithm algorithm = ReplanAlgorithm::dstar_lite;
-  double sensor = 1.5;
-  double memory_mb = ReplanOptions{}.memory_mb, time_limit = ReplanOptions{}.time_limit;
-};
-OptionTable<Replanning> replanning_table() {
-  OptionTable<Replanning> table;
-  return table.add("algorithm", &Replanning::algorithm, "D* Lite, LPA* or A* from scratch", replan_algorithm_choices())
-      .add("sensor", &Replanning::sensor,
-           "sensor radius in cells: at least sqrt(2), so that the robot sees every cell its next move touches",
-           at_least(std::sqrt(2.0)))
-      .add("memory-mb", &Replanning::memory_mb, "the memory the drive's tables may take (a larger map is refused)",
-           OptionRange{0, 1e7, true, false})
-      .add("time-limit", &Replanning::time_limit, "seconds before the drive stops with status limit (0: none)",
-           at_least(0));
-}
-
 struct ReplanCommandOptions {
   std::string map, start, goal;
-  std::unique_ptr<CommandOptions<Replanning>> replanning;
+  std::unique_ptr<CommandOptions<ReplanOptions>> replanning;
   std::string json, svg, trace, rhs_trace;
   bool animate = false;
 };
@@ -66,44 +49,6 @@ GridPoint cell_option(const std::string& text, const char* option) {
     throw InputError(std::string(option) + " " + text +
                      ": expected X,Y (a column and a row, whole numbers of the map)");
   return {*x, *y};
-}
-
-nlohmann::json cost_json(const OctileLength& c) {
-  return c == OctileLength::infinity() ? nlohmann::json(nullptr) : nlohmann::json(c.to_double());
-}
-nlohmann::json point_json(GridPoint p) { return nlohmann::json::array({p.x, p.y}); }
-
-nlohmann::json result_json(const ReplanResult& r, double sensor) {
-  nlohmann::json traversed = nlohmann::json::array(), steps = nlohmann::json::array(), plan = nlohmann::json::array();
-  for (const GridPoint& p : r.traversed) traversed.push_back(point_json(p));
-  for (const GridPoint& p : r.last_plan) plan.push_back(point_json(p));
-  for (const ReplanStep& s : r.steps)
-    steps.push_back({{"at", point_json(s.at)},
-                     {"cost_to_goal", cost_json(s.cost_to_goal)},
-                     {"cost_to_goal_exact", s.cost_to_goal.to_string()},
-                     {"expanded", s.expanded},
-                     {"changed_cells", s.changed_cells},
-                     {"replanned", s.replanned}});
-  nlohmann::json out{{"found", r.found},
-                     {"status", std::string(to_string(r.status))},
-                     {"algorithm", std::string(to_string(r.algorithm))},
-                     {"sensor_radius", sensor},
-                     {"traversed", traversed},
-                     {"traversed_cost", r.traversed_cost.to_double()},
-                     {"traversed_cost_exact", r.traversed_cost.to_string()},
-                     {"moves", r.moves},
-                     {"replans", r.replans},
-                     {"expanded", r.expanded},
-                     {"generated", r.generated},
-                     {"heap_operations", r.heap_operations},
-                     {"seconds", r.seconds},
-                     {"last_plan", plan},
-                     {"steps", steps}};
-  if (r.status == PlanStatus::no_path)
-    out["why_not"] = "the goal is unreachable on what the robot knows after " + std::to_string(r.moves) + " moves";
-  if (r.status == PlanStatus::limit)
-    out["why_not"] = "the robot made its limit of " + std::to_string(r.moves) + " moves";
-  return out;
 }
 
 // Every pass of every replan as an expansion line (cli/trace_output.hpp): the popped cell, its g after
@@ -152,35 +97,14 @@ class TraceWriter : public ReplanTrace {
   TraceWriter(std::ostream& out, bool tables) : out_(&out), tables_(tables) {}
   void replan_begins(std::size_t replan, GridPoint at, std::size_t changed) override {
     if (!tables_) {
-      *out_ << nlohmann::json{{"replan", replan}, {"at", point_json(at)}, {"changed_cells", changed}}.dump() << '\n';
+      *out_ << replan_begins_json(replan, at, changed).dump() << '\n';
       return;
     }
     *out_ << "replan " << replan << " at " << cell(at) << ": " << changed << " cell(s) changed\n";
   }
   void pass(const ReplanTracePass& p) override {
     if (tables_) return print(p);
-    nlohmann::json updated = nlohmann::json::array(), open = nlohmann::json::array();
-    for (const auto& u : p.updated)
-      updated.push_back(
-          {{"cell", point_json(u.at)}, {"g", cost_json(u.g)}, {"rhs", cost_json(u.rhs)}, {"list", u.action}});
-    for (const auto& e : p.open)
-      open.push_back({{"cell", point_json(e.at)},
-                      {"g", cost_json(e.g)},
-                      {"rhs", cost_json(e.rhs)},
-                      {"key", {cost_json(e.key_first), cost_json(e.key_second)}},
-                      {"state", e.state}});
-    *out_ << nlohmann::json{{"replan", p.replan},
-                            {"pass", p.pass},
-                            {"popped", point_json(p.popped)},
-                            {"key", {cost_json(p.key_first), cost_json(p.key_second)}},
-                            {"kind", p.kind},
-                            {"g_before", cost_json(p.g_before)},
-                            {"g_after", cost_json(p.g_after)},
-                            {"rhs", cost_json(p.rhs)},
-                            {"updated", updated},
-                            {"open", open}}
-                 .dump()
-          << '\n';
+    *out_ << replan_pass_json(p).dump() << '\n';
   }
 
  private:
@@ -225,12 +149,7 @@ class TraceWriter : public ReplanTrace {
 };
 
 int run_replan(const ReplanCommandOptions& o) {
-  const Replanning replanning = o.replanning->parse();
-  ReplanOptions options;
-  options.algorithm = replanning.algorithm;
-  options.sensor_radius = replanning.sensor;
-  options.memory_mb = replanning.memory_mb;
-  options.time_limit = replanning.time_limit;
+  ReplanOptions options = o.replanning->parse();
   if (o.animate && o.svg.empty()) throw InputError("--animate: give --svg OUT.svg for the animation");
   if ((o.json == "-") + (o.trace == "-") + (o.rhs_trace == "-") > 1)
     throw InputError("--json -, --trace - and --rhs-trace -: only one of them can go to standard output");
@@ -257,7 +176,7 @@ int run_replan(const ReplanCommandOptions& o) {
   if (trace_file.is_open() && !trace_file.flush()) throw InputError(o.rhs_trace + ": cannot write the trace");
   if (expansions) expansions->finish();
 
-  if (!o.json.empty()) write_json(result_json(r, replanning.sensor), o.json);
+  if (!o.json.empty()) write_json(replan_json(r, options.sensor_radius), o.json);
   if (!o.svg.empty())
     (o.animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).write(o.svg);
   if (o.json != "-" && o.trace != "-" && o.rhs_trace != "-") {
@@ -278,7 +197,7 @@ void add_replan_command(CLI::App& app, Action& run) {
   command->add_option("map", options->map, "MovingAI map (.map)")->required();
   command->add_option("--start", options->start, "Start cell X,Y (column, row)")->required();
   command->add_option("--goal", options->goal, "Goal cell X,Y (column, row)")->required();
-  options->replanning = std::make_unique<CommandOptions<Replanning>>(*command, replanning_table());
+  options->replanning = std::make_unique<CommandOptions<ReplanOptions>>(*command, replan_option_table());
   command->add_option("--json", options->json, "Write the drive as JSON to this file ('-' for standard output)");
   command->add_option("--svg", options->svg, "Draw the map, what the robot knew and its path (SVG)");
   command->add_flag("--animate", options->animate, "Make the --svg picture an animation, one frame per move");

@@ -80,6 +80,7 @@ class Replanner {
   virtual void changed(const std::vector<ChangedMove>& moves) = 0;
   virtual void replan(std::size_t replan) = 0;
   virtual OctileLength cost_from(GridCell at) const = 0;
+  virtual OctileLength rhs(GridCell at) const = 0;
   virtual std::vector<GridCell> path_from(GridCell at) const = 0;
   virtual const IncrementalCounts& counts() const = 0;
 };
@@ -118,6 +119,7 @@ class SearchReplanner : public Replanner {
     search_.compute_shortest_path();
   }
   OctileLength cost_from(GridCell at) const override { return search_.g(at); }
+  OctileLength rhs(GridCell at) const override { return search_.rhs(at); }
   std::vector<GridCell> path_from(GridCell at) const override { return search_.path_to_root(at); }
   const IncrementalCounts& counts() const override { return search_.counts(); }
 
@@ -232,6 +234,17 @@ ReplanAlgorithm parse_replan_algorithm(std::string_view name, const std::string&
   throw InputError(what + ": unknown algorithm \"" + std::string(name) + "\" (" + known + ")");
 }
 
+void trace_tables(ReplanTrace& trace, const Replanner& replanner, std::size_t replan, std::size_t cells) {
+  ReplanTables tables{replan, {}, {}};
+  tables.g.reserve(cells);
+  tables.rhs.reserve(cells);
+  for (GridCell c = 0; c < cells; ++c) {
+    tables.g.push_back(replanner.cost_from(c));
+    tables.rhs.push_back(replanner.rhs(c));
+  }
+  trace.tables(tables);
+}
+
 ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint goal, const ReplanOptions& options) {
   check_options(options, truth);
   const Stopwatch clock;
@@ -267,6 +280,8 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
       replanner->changed(changed);
       replanner->replan(++result.replans);
       result.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      if (options.trace && options.trace->wants_tables())  // not timed: the tables are the caller's
+        trace_tables(*options.trace, *replanner, result.replans, known.cells.size());
       step.replanned = true;
       step.expanded = replanner->counts().expanded - expanded;
       route = replanner->path_from(at);

@@ -64,14 +64,27 @@ struct ReplanTracePass {
   std::vector<Open> open;                // the open list after the pass, by key
 };
 
+// The g and rhs of every cell after a replan, row-major (index y · width + x): the course's tables
+// whole, for a trace that asks for them (ReplanTrace::wants_tables).
+struct ReplanTables {
+  std::size_t replan = 0;
+  std::vector<OctileLength> g, rhs;
+};
+
 class ReplanTrace {
  public:
   virtual ~ReplanTrace() = default;
   // Before a replan's first pass: where the robot is and how many cells its sensing changed.
   virtual void replan_begins(std::size_t replan, GridPoint at, std::size_t changed_cells) = 0;
   virtual void pass(const ReplanTracePass&) = 0;
+  // After each replan, when wants_tables(): every cell's g and rhs (a pass per cell to collect, so
+  // only asked for).
+  virtual bool wants_tables() const { return false; }
+  virtual void tables(const ReplanTables&) {}
 };
 
+// The drive's options; replan_option_table() (incremental/replan_options.hpp) reads the first four
+// by name, for the command line and Python alike.
 struct ReplanOptions {
   ReplanAlgorithm algorithm = ReplanAlgorithm::dstar_lite;
   double sensor_radius = 1.5;  // finite and >= 0 (InputError otherwise)

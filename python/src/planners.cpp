@@ -3,6 +3,7 @@
 // polyplan.planners() lists them. Nothing here names a planner, a space or a default: adding one
 // to the registry adds it to Python.
 #include "exact_values.hpp"
+#include "keyword_options.hpp"
 #include "plans.hpp"
 
 #include <polyplan/geometry/rational.hpp>
@@ -14,46 +15,6 @@
 
 namespace polyplan::python {
 namespace {
-
-// A keyword argument as the option text the registry parses: True/False, an int, a float (its
-// shortest round-trip text), a Fraction (as a float), a string, or for a point option a pair of
-// numbers ("x,y"); nothing else.
-std::string option_text(const std::string& planner, const OptionInfo& option, const std::string& key,
-                        py::handle value) {
-  if (PyBool_Check(value.ptr())) return value.ptr() == Py_True ? "true" : "false";
-  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  if (PyIndex_Check(value.ptr())) return py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())));
-  if (PyFloat_Check(value.ptr()) || py::isinstance(value, py::module_::import("numbers").attr("Real")))
-    return py::repr(py::float_(py::reinterpret_borrow<py::object>(value)));
-  if (option.kind.rfind("point", 0) == 0 && (PySequence_Check(value.ptr()) || py::isinstance<py::array>(value))) {
-    std::string text;
-    for (const Rational& x : exact_numbers(value, "planner " + planner + ": option " + key))
-      text += (text.empty() ? "" : ",") + to_string(x);
-    return text;
-  }
-  throw InputError("planner " + planner + ": option " + key + "=" + std::string(py::repr(value)) +
-                   ": expected a number, text, True or False, got " + type_name(value));
-}
-
-// Keyword arguments as the options of `planner`: goal_bias is the option goal-bias. InputError
-// naming the argument as the caller spelt it when the planner has no such option.
-OptionValues option_values(const PlannerListing& planner, const py::dict& options) {
-  OptionValues values;
-  std::string known;
-  for (const OptionInfo& o : planner.options) known += (known.empty() ? "" : ", ") + o.name;
-  for (const auto& [key, value] : options) {
-    const std::string given = py::str(key);
-    std::string name = given;
-    std::replace(name.begin(), name.end(), '_', '-');
-    const auto option = std::find_if(planner.options.begin(), planner.options.end(),
-                                     [&](const OptionInfo& o) { return o.name == name; });
-    if (option == planner.options.end())
-      throw InputError("planner " + planner.name + ": option " + given + ": no such option (" +
-                       (known.empty() ? "it takes none" : "its options: " + known) + ")");
-    values.emplace_back(name, option_text(planner.name, *option, given, value));
-  }
-  return values;
-}
 
 // Python's Planner: a planner of the registry built once for one World or Arm.
 struct PlannerHandle {
@@ -158,7 +119,7 @@ PlannerHandle make(const std::string& name, const py::object& problem, const py:
   PlannerHandle p{nullptr, problem_of(problem, "planner"), problem, {}};
   const std::string planner = name.empty() ? default_planner(p.handle->door()) : name;
   const PlannerListing& listing = planner_for(planner, p.handle->door());
-  const OptionValues values = option_values(listing, options);
+  const OptionValues values = keyword_options("planner " + listing.name, listing.options, options);
   p.options = not_defaults(listing, values);
   p.planner = locked(p.handle->lock(), [&] { return make_planner(planner, p.handle->door(), values); });
   return p;

@@ -1,21 +1,57 @@
-// polyplan.replan: the robot that discovers a MovingAI map as it drives (polyplan replan), its drive
-// as a Drive object, and its picture.
+// polyplan.replan: the robot that discovers a map as it drives (polyplan replan) — a MovingAI map
+// file or a numpy occupancy grid — its drive as a Drive object with the program's JSON, the
+// course's g/rhs tables when asked, and its picture.
 #include "exact_values.hpp"
+#include "keyword_options.hpp"
 #include "plans.hpp"
 
 #include <polyplan/draw/replan_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/incremental/discovering_robot.hpp>
+#include <polyplan/incremental/replan_options.hpp>
 #include <polyplan/io/movingai_map.hpp>
+#include <polyplan/registry/replan_json.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
+#include <nlohmann/json.hpp>
+
+#include <limits>
 
 namespace py = pybind11;
 
 namespace polyplan::python {
 namespace {
+
+// The g/rhs tables are whole maps, one per replan: kept for maps a course draws, not for a
+// benchmark's 512 x 512.
+constexpr std::size_t max_table_cells = 65536;
+
+// A drive as Python holds it: the result, the sensor it drove with (for the JSON) and, when asked,
+// the --rhs-trace lines and every replan's tables.
+struct Drive {
+  ReplanResult result;
+  double sensor = 0;
+  std::vector<nlohmann::json> trace;
+  std::vector<ReplanTables> tables;
+};
+
+// Collects the trace while the drive runs without the GIL; converted to Python afterwards.
+class CollectedTrace : public ReplanTrace {
+ public:
+  explicit CollectedTrace(Drive& drive) : drive_(&drive) {}
+  void replan_begins(std::size_t replan, GridPoint at, std::size_t changed) override {
+    drive_->trace.push_back(replan_begins_json(replan, at, changed));
+  }
+  void pass(const ReplanTracePass& p) override { drive_->trace.push_back(replan_pass_json(p)); }
+  bool wants_tables() const override { return true; }
+  void tables(const ReplanTables& t) override { drive_->tables.push_back(t); }
+
+ private:
+  Drive* drive_;
+};
 
 GridPoint cell_of(const py::handle& value, const char* what) {
   try {
@@ -24,6 +60,52 @@ GridPoint cell_of(const py::handle& value, const char* what) {
   } catch (const py::cast_error&) {
     throw InputError(std::string(what) + ": expected (x, y), a column and a row (integers)");
   }
+}
+
+// A boolean array [row, column], True where blocked (integers 0 and 1 too), as a MovingAI map.
+GridMap grid_of(const py::handle& value) {
+  const py::array a = py::module_::import("numpy").attr("asarray")(value);
+  std::string shape;
+  for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
+  const std::string given = "a " + std::string(py::str(a.dtype())) + " array of shape (" + shape + ")";
+  if (a.ndim() != 2 || a.shape(0) == 0 || a.shape(1) == 0)
+    throw InputError(
+        "replan: map: expected a .map file's path or a 2-d boolean array [row, column], True where "
+        "blocked, got " +
+        given);
+  const char kind = a.dtype().kind();
+  if (kind != 'b' && kind != 'i' && kind != 'u')
+    throw InputError("replan: map: expected booleans (True where blocked) or the integers 0 and 1, got " + given);
+  const auto rows = static_cast<std::uint64_t>(a.shape(0)), columns = static_cast<std::uint64_t>(a.shape(1));
+  if (rows * columns > limits::map_cells)
+    throw InputError("replan: map: " + given + " has more than the supported " + std::to_string(limits::map_cells) +
+                     " cells");
+  const py::array_t<std::int64_t> cells = a.attr("astype")("int64");
+  const auto v = cells.unchecked<2>();
+  GridMap map{"grid (" + shape + ")", static_cast<int>(columns), static_cast<int>(rows), {}};
+  map.blocked.resize(rows * columns);
+  for (py::ssize_t y = 0; y < v.shape(0); ++y)
+    for (py::ssize_t x = 0; x < v.shape(1); ++x) {
+      if (v(y, x) != 0 && v(y, x) != 1)
+        throw InputError("replan: map[" + std::to_string(y) + ", " + std::to_string(x) +
+                         "]: " + std::to_string(v(y, x)) + " is neither 0 (free) nor 1 (blocked)");
+      map.blocked[static_cast<std::size_t>(y) * columns + x] = v(y, x) == 1;
+    }
+  return map;
+}
+
+GridMap map_of(const py::object& map) {
+  if (py::isinstance<py::str>(map) || py::hasattr(map, "__fspath__"))
+    return read_movingai_map(path_of(map, "replan: map"));
+  return grid_of(map);
+}
+
+py::array_t<double> table_array(const std::vector<OctileLength>& values, int height, int width) {
+  py::array_t<double> a({height, width});
+  double* out = a.mutable_data();
+  for (const OctileLength& c : values)
+    *out++ = c == OctileLength::infinity() ? std::numeric_limits<double>::infinity() : c.to_double();
+  return a;
 }
 
 py::object cost_or_none(const OctileLength& c) {
@@ -36,57 +118,79 @@ py::list cells(const std::vector<GridPoint>& points) {
   return out;
 }
 
+Drive drive(const py::object& map, const py::object& start, const py::object& goal, py::kwargs options) {
+  const bool tables = options.contains("tables") && flag_of(options.attr("pop")("tables"), "replan: tables");
+  Drive out;
+  ReplanOptions replanning = replan_option_table().parse_as(
+      keyword_options("replan", replan_option_table().info(), options), [](std::string key, const std::string& value) {
+        std::replace(key.begin(), key.end(), '-', '_');
+        return "replan: " + key + "=" + value + ": ";
+      });
+  out.sensor = replanning.sensor_radius;
+  const GridPoint from = cell_of(start, "start"), to = cell_of(goal, "goal");
+  GridMap grid = map_of(map);
+  if (tables && static_cast<std::size_t>(grid.width) * grid.height > max_table_cells)
+    throw InputError("replan: tables=True: " + grid.source + " has " +
+                     std::to_string(static_cast<std::size_t>(grid.width) * grid.height) +
+                     " cells; the g/rhs tables are kept for maps of at most " + std::to_string(max_table_cells));
+  CollectedTrace trace(out);
+  if (tables) replanning.trace = &trace;
+  py::gil_scoped_release released;
+  out.result = drive_through_unknown_map(std::move(grid), from, to, replanning);
+  return out;
+}
+
 }  // namespace
 
 void bind_replan(py::module_& m) {
-  py::class_<ReplanResult>(m, "Drive", "A robot's drive through a map it discovered (polyplan.replan).")
+  py::class_<Drive>(m, "Drive", "A robot's drive through a map it discovered (polyplan.replan).")
       .def_property_readonly(
-          "found", [](const ReplanResult& r) { return r.found; }, "Whether it reached the goal.")
+          "found", [](const Drive& d) { return d.result.found; }, "Whether it reached the goal.")
       .def_property_readonly(
-          "status", [](const ReplanResult& r) { return std::string(to_string(r.status)); },
+          "status", [](const Drive& d) { return std::string(to_string(d.result.status)); },
           "\"solved\", \"no_path\" (the goal unreachable on what it knew) or \"limit\".")
       .def_property_readonly(
-          "algorithm", [](const ReplanResult& r) { return std::string(to_string(r.algorithm)); },
+          "algorithm", [](const Drive& d) { return std::string(to_string(d.result.algorithm)); },
           "\"dstar-lite\", \"lpastar\" or \"astar\".")
       .def_property_readonly(
-          "traversed", [](const ReplanResult& r) { return cells(r.traversed); },
+          "traversed", [](const Drive& d) { return cells(d.result.traversed); },
           "The cells it stood on, (x, y) tuples, the start first.")
       .def_property_readonly(
-          "traversed_cost", [](const ReplanResult& r) { return r.traversed_cost.to_double(); },
+          "traversed_cost", [](const Drive& d) { return d.result.traversed_cost.to_double(); },
           "The cost it drove (moves 1 and √2).")
       .def_property_readonly(
-          "traversed_cost_exact", [](const ReplanResult& r) { return r.traversed_cost.to_string(); },
+          "traversed_cost_exact", [](const Drive& d) { return d.result.traversed_cost.to_string(); },
           "The same, exactly: \"a + b√2\".")
       .def_property_readonly(
-          "moves", [](const ReplanResult& r) { return r.moves; }, "Moves made.")
+          "moves", [](const Drive& d) { return d.result.moves; }, "Moves made.")
       .def_property_readonly(
-          "replans", [](const ReplanResult& r) { return r.replans; },
+          "replans", [](const Drive& d) { return d.result.replans; },
           "Searches run: the first, and one after each sensing that changed what it knew.")
       .def_property_readonly(
-          "expanded", [](const ReplanResult& r) { return r.expanded; }, "Vertices expanded, all replans.")
+          "expanded", [](const Drive& d) { return d.result.expanded; }, "Vertices expanded, all replans.")
       .def_property_readonly(
-          "generated", [](const ReplanResult& r) { return r.generated; }, "Vertices put in an open list.")
+          "generated", [](const Drive& d) { return d.result.generated; }, "Vertices put in an open list.")
       .def_property_readonly(
-          "heap_operations", [](const ReplanResult& r) { return r.heap_operations; },
+          "heap_operations", [](const Drive& d) { return d.result.heap_operations; },
           "Pushes, pops, key updates and removals, all replans.")
       .def_property_readonly(
-          "seconds", [](const ReplanResult& r) { return r.seconds; }, "Time spent replanning.")
+          "seconds", [](const Drive& d) { return d.result.seconds; }, "Time spent replanning.")
       .def_property_readonly(
-          "last_plan", [](const ReplanResult& r) { return cells(r.last_plan); },
+          "last_plan", [](const Drive& d) { return cells(d.result.last_plan); },
           "The last planned path, from where it was made.")
       .def_property_readonly(
           "steps",
-          [](const ReplanResult& r) {
+          [](const Drive& d) {
             py::list out;
-            for (const ReplanStep& s : r.steps) {
-              py::dict d;
-              d["at"] = py::make_tuple(s.at.x, s.at.y);
-              d["cost_to_goal"] = cost_or_none(s.cost_to_goal);
-              d["cost_to_goal_exact"] = s.cost_to_goal.to_string();
-              d["expanded"] = s.expanded;
-              d["changed_cells"] = s.changed_cells;
-              d["replanned"] = s.replanned;
-              out.append(d);
+            for (const ReplanStep& s : d.result.steps) {
+              py::dict step;
+              step["at"] = py::make_tuple(s.at.x, s.at.y);
+              step["cost_to_goal"] = cost_or_none(s.cost_to_goal);
+              step["cost_to_goal_exact"] = s.cost_to_goal.to_string();
+              step["expanded"] = s.expanded;
+              step["changed_cells"] = s.changed_cells;
+              step["replanned"] = s.replanned;
+              out.append(step);
             }
             return out;
           },
@@ -94,7 +198,8 @@ void bind_replan(py::module_& m) {
           "replanned).")
       .def_property_readonly(
           "knowledge",
-          [](const ReplanResult& r) {
+          [](const Drive& d) {
+            const ReplanResult& r = d.result;
             py::array_t<std::uint8_t> a({r.height, r.width});
             auto v = a.mutable_unchecked<2>();
             for (int y = 0; y < r.height; ++y)
@@ -103,34 +208,58 @@ void bind_replan(py::module_& m) {
             return a;
           },
           "What it knew at the end, knowledge[row, column]: 0 unknown, 1 free, 2 blocked (uint8).")
+      .def_property_readonly(
+          "trace",
+          [](const Drive& d) -> py::object {
+            if (d.tables.empty()) return py::none();
+            py::list out;
+            for (const nlohmann::json& line : d.trace) out.append(from_json(line));
+            return out;
+          },
+          "With tables=True: the course's g/rhs trace, a dict per replan's start {replan, at, changed_cells} and per "
+          "pass {replan, pass, popped, key, kind, g_before, g_after, rhs, updated, open} (None for infinity), as "
+          "`polyplan replan --rhs-trace FILE` writes its lines; else None.")
+      .def_property_readonly(
+          "tables",
+          [](const Drive& d) -> py::object {
+            if (d.tables.empty()) return py::none();
+            py::list out;
+            for (const ReplanTables& t : d.tables) {
+              py::dict one;
+              one["replan"] = t.replan;
+              one["g"] = table_array(t.g, d.result.height, d.result.width);
+              one["rhs"] = table_array(t.rhs, d.result.height, d.result.width);
+              out.append(one);
+            }
+            return out;
+          },
+          "With tables=True: after each replan, {replan, g, rhs}: every cell's g and rhs as (rows, columns) float64 "
+          "arrays indexed [row, column] (inf for infinity); else None.")
+      .def(
+          "to_json", [](const Drive& d) { return replan_json(d.result, d.sensor).dump(2); },
+          "The JSON text `polyplan replan --json -` prints for this drive.")
       .def(
           "svg",
-          [](const ReplanResult& r, bool animate) {
+          [](const Drive& d, bool animate) {
+            const ReplanResult& r = d.result;
             return (animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).str();
           },
           py::arg("animate") = false, "The picture (or, animate=True, the animation) as SVG text.")
-      .def("__repr__", [](const ReplanResult& r) {
+      .def("__repr__", [](const Drive& d) {
+        const ReplanResult& r = d.result;
         return "<polyplan.Drive " + std::string(to_string(r.algorithm)) + " " + std::string(to_string(r.status)) +
                " after " + std::to_string(r.moves) + " moves, " + std::to_string(r.replans) + " replans>";
       });
 
-  m.def(
-      "replan",
-      [](const py::object& map, const py::object& start, const py::object& goal, double sensor,
-         const std::string& algorithm) {
-        ReplanOptions options;
-        options.algorithm = parse_replan_algorithm(algorithm, "algorithm");
-        options.sensor_radius = sensor;
-        const GridPoint from = cell_of(start, "start"), to = cell_of(goal, "goal");
-        const std::string path = path_of(map, "replan: map");
-        py::gil_scoped_release released;
-        return drive_through_unknown_map(read_movingai_map(path), from, to, options);
-      },
-      py::arg("map"), py::arg("start"), py::arg("goal"), py::arg("sensor") = 1.5, py::arg("algorithm") = "dstar-lite",
-      R"(A robot drives from start to goal, (x, y) cells of the MovingAI map file (x the column, y the
-row), discovering the map as it goes: it senses the cells within `sensor` (at least √2) of its own
-and replans with D* Lite, LPA* or A* from scratch (algorithm "dstar-lite", "lpastar", "astar") on
-exact costs. Raises InputError for a bad map, a blocked or outside cell, a sensor below √2.)");
+  m.def("replan", &drive, py::arg("map"), py::arg("start"), py::arg("goal"),
+        R"(A robot drives from start to goal, (x, y) cells (x the column, y the row), through `map` — a
+MovingAI .map file's path, or a numpy array indexed [row, column], True (or 1) where blocked —
+discovering the map as it goes: it senses the cells within `sensor` of its own and replans on exact
+costs. Options, as `polyplan replan` takes them: algorithm ("dstar-lite", "lpastar", "astar"),
+sensor (cells, at least √2; 1.5), memory_mb (4096), time_limit (seconds, 0 none; 300); tables=True
+keeps the course's g/rhs trace and every replan's g and rhs arrays (Drive.trace, Drive.tables; maps
+of at most 65,536 cells). Raises InputError for a bad map, a blocked or outside cell, an option the
+program refuses.)");
 }
 
 }  // namespace polyplan::python

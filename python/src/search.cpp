@@ -1,5 +1,6 @@
 // polyplan.search_graph: a search on the course's graph-search homework's graph_vector (polyplan search), its path,
 // cost, counts and trace as a dict, and its picture.
+#include "exact_values.hpp"
 #include "plans.hpp"
 
 #include <polyplan/draw/search_svg.hpp>

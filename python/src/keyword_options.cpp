@@ -1,0 +1,55 @@
+#include "keyword_options.hpp"
+#include "exact_values.hpp"
+
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/rational.hpp>
+
+#include <pybind11/numpy.h>
+
+#include <algorithm>
+
+namespace py = pybind11;
+
+namespace polyplan::python {
+namespace {
+
+// A keyword argument as the option text the registry parses: True/False, an int, a float (its
+// shortest round-trip text), a Fraction (as a float), a string, or for a point option a pair of
+// numbers ("x,y"); nothing else.
+std::string option_text(const std::string& owner, const OptionInfo& option, const std::string& key, py::handle value) {
+  if (PyBool_Check(value.ptr())) return value.ptr() == Py_True ? "true" : "false";
+  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
+  if (PyIndex_Check(value.ptr())) return py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())));
+  if (PyFloat_Check(value.ptr()) || py::isinstance(value, py::module_::import("numbers").attr("Real")))
+    return py::repr(py::float_(py::reinterpret_borrow<py::object>(value)));
+  if (option.kind.rfind("point", 0) == 0 && (PySequence_Check(value.ptr()) || py::isinstance<py::array>(value))) {
+    std::string text;
+    for (const Rational& x : exact_numbers(value, owner + ": option " + key))
+      text += (text.empty() ? "" : ",") + to_string(x);
+    return text;
+  }
+  throw InputError(owner + ": option " + key + "=" + std::string(py::repr(value)) +
+                   ": expected a number, text, True or False, got " + type_name(value));
+}
+
+}  // namespace
+
+OptionValues keyword_options(const std::string& owner, const std::vector<OptionInfo>& options, const py::dict& given) {
+  OptionValues values;
+  std::string known;
+  for (const OptionInfo& o : options) known += (known.empty() ? "" : ", ") + o.name;
+  for (const auto& [key, value] : given) {
+    const std::string spelt = py::str(key);
+    std::string name = spelt;
+    std::replace(name.begin(), name.end(), '_', '-');
+    const auto option =
+        std::find_if(options.begin(), options.end(), [&](const OptionInfo& o) { return o.name == name; });
+    if (option == options.end())
+      throw InputError(owner + ": option " + spelt + ": no such option (" +
+                       (known.empty() ? "it takes none" : "its options: " + known) + ")");
+    values.emplace_back(name, option_text(owner, *option, spelt, value));
+  }
+  return values;
+}
+
+}  // namespace polyplan::python
