@@ -42,6 +42,7 @@ from ._polyplan import (  # noqa: F401 (the public names)
     read_arm,
     read_world,
     replan,
+    scen,
     steer,
     svg,
 )
@@ -51,7 +52,7 @@ from .experiment import Experiment, Results
 __all__ = [
     "Arm", "CSpace", "Cells", "Drive", "Experiment", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
     "PlannerInfo", "World", "animate", "check", "cspace", "ik", "plan", "planner", "planners", "plot", "potential",
-    "read_arm", "read_world", "replan", "Results", "search_graph", "steer", "svg",
+    "read_arm", "read_world", "replan", "Results", "scen", "search_graph", "steer", "svg",
 ]
 
 

@@ -3,14 +3,13 @@
 // course's g/rhs tables when asked, and its picture.
 #include "exact_values.hpp"
 #include "keyword_options.hpp"
+#include "occupancy_grid.hpp"
 #include "plans.hpp"
 
 #include <polyplan/draw/replan_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
-#include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/incremental/discovering_robot.hpp>
 #include <polyplan/incremental/replan_options.hpp>
-#include <polyplan/io/movingai_map.hpp>
 #include <polyplan/registry/replan_json.hpp>
 
 #include <pybind11/numpy.h>
@@ -62,44 +61,6 @@ GridPoint cell_of(const py::handle& value, const char* what) {
   }
 }
 
-// A boolean array [row, column], True where blocked (integers 0 and 1 too), as a MovingAI map.
-GridMap grid_of(const py::handle& value) {
-  const py::array a = py::module_::import("numpy").attr("asarray")(value);
-  std::string shape;
-  for (py::ssize_t i = 0; i < a.ndim(); ++i) shape += (i ? ", " : "") + std::to_string(a.shape(i));
-  const std::string given = "a " + std::string(py::str(a.dtype())) + " array of shape (" + shape + ")";
-  if (a.ndim() != 2 || a.shape(0) == 0 || a.shape(1) == 0)
-    throw InputError(
-        "replan: map: expected a .map file's path or a 2-d boolean array [row, column], True where "
-        "blocked, got " +
-        given);
-  const char kind = a.dtype().kind();
-  if (kind != 'b' && kind != 'i' && kind != 'u')
-    throw InputError("replan: map: expected booleans (True where blocked) or the integers 0 and 1, got " + given);
-  const auto rows = static_cast<std::uint64_t>(a.shape(0)), columns = static_cast<std::uint64_t>(a.shape(1));
-  if (rows * columns > limits::map_cells)
-    throw InputError("replan: map: " + given + " has more than the supported " + std::to_string(limits::map_cells) +
-                     " cells");
-  const py::array_t<std::int64_t> cells = a.attr("astype")("int64");
-  const auto v = cells.unchecked<2>();
-  GridMap map{"grid (" + shape + ")", static_cast<int>(columns), static_cast<int>(rows), {}};
-  map.blocked.resize(rows * columns);
-  for (py::ssize_t y = 0; y < v.shape(0); ++y)
-    for (py::ssize_t x = 0; x < v.shape(1); ++x) {
-      if (v(y, x) != 0 && v(y, x) != 1)
-        throw InputError("replan: map[" + std::to_string(y) + ", " + std::to_string(x) +
-                         "]: " + std::to_string(v(y, x)) + " is neither 0 (free) nor 1 (blocked)");
-      map.blocked[static_cast<std::size_t>(y) * columns + x] = v(y, x) == 1;
-    }
-  return map;
-}
-
-GridMap map_of(const py::object& map) {
-  if (py::isinstance<py::str>(map) || py::hasattr(map, "__fspath__"))
-    return read_movingai_map(path_of(map, "replan: map"));
-  return grid_of(map);
-}
-
 py::array_t<double> table_array(const std::vector<OctileLength>& values, int height, int width) {
   py::array_t<double> a({height, width});
   double* out = a.mutable_data();
@@ -128,7 +89,7 @@ Drive drive(const py::object& map, const py::object& start, const py::object& go
       });
   out.sensor = replanning.sensor_radius;
   const GridPoint from = cell_of(start, "start"), to = cell_of(goal, "goal");
-  GridMap grid = map_of(map);
+  GridMap grid = grid_map_of(map, "replan: map");
   if (tables && static_cast<std::size_t>(grid.width) * grid.height > max_table_cells)
     throw InputError("replan: tables=True: " + grid.source + " has " +
                      std::to_string(static_cast<std::size_t>(grid.width) * grid.height) +

@@ -1,0 +1,114 @@
+// polyplan.scen: a MovingAI scenario answered with Euclidean shortest paths (polyplan scen) — the
+// map as a file or an occupancy grid, the queries as a .scen file or an (N, 4) array — as the dict
+// `polyplan scen --json -` prints, with the lengths as numpy arrays beside it.
+#include "exact_values.hpp"
+#include "keyword_options.hpp"
+#include "occupancy_grid.hpp"
+#include "plans.hpp"
+
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/registry/scenario_answers.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <limits>
+
+namespace py = pybind11;
+
+namespace polyplan::python {
+namespace {
+
+bool is_path(const py::handle& value) { return py::isinstance<py::str>(value) || py::hasattr(value, "__fspath__"); }
+
+// A .scen file (checked against the map), or rows (start_x, start_y, goal_x, goal_y) of integers.
+std::vector<ScenarioQuery> queries_of(const py::object& given, const GridMap& map) {
+  if (is_path(given)) {
+    const std::string path = path_of(given, "scen: scenarios");
+    std::vector<ScenarioQuery> queries = read_scenarios(path);
+    check_scenarios_match(queries, map.width, map.height, map.source, path);
+    return queries;
+  }
+  const py::array a = py::module_::import("numpy").attr("asarray")(given);
+  const char kind = a.ndim() == 2 ? a.dtype().kind() : '?';
+  if ((a.ndim() != 2 || a.shape(1) != 4) || (kind != 'i' && kind != 'u'))
+    throw InputError(
+        "scen: scenarios: expected a .scen file's path or an (N, 4) integer array of (start_x, start_y, "
+        "goal_x, goal_y), got " +
+        type_name(given) + " of shape " + std::string(py::str(a.attr("shape"))) + " and dtype " +
+        std::string(py::str(a.dtype())));
+  const py::array_t<std::int64_t> rows = a.attr("astype")("int64");
+  const auto v = rows.unchecked<2>();
+  std::vector<ScenarioQuery> queries;
+  for (py::ssize_t i = 0; i < v.shape(0); ++i) {
+    for (py::ssize_t k = 0; k < 4; ++k)
+      if (v(i, k) < 0 || v(i, k) > (k % 2 ? map.height : map.width))
+        throw InputError("scen: scenarios[" + std::to_string(i) + "]: " + std::to_string(v(i, k)) + " is outside the " +
+                         std::to_string(map.width) + " x " + std::to_string(map.height) + " map");
+    queries.push_back({0, map.width, map.height, int(v(i, 0)), int(v(i, 1)), int(v(i, 2)), int(v(i, 3))});
+  }
+  return queries;
+}
+
+// A reference CSV (index,length), or one length per query (None or NaN: none; negative: no path).
+std::optional<std::vector<std::optional<double>>> reference_of(const py::object& given, std::size_t queries) {
+  if (given.is_none()) return std::nullopt;
+  if (is_path(given)) return read_reference_lengths(path_of(given, "scen: reference"), queries);
+  std::vector<std::optional<double>> lengths;
+  const py::object real = py::module_::import("numbers").attr("Real");
+  for (const py::handle item : py::iter(given)) {
+    const bool none =
+        item.is_none() ||
+        (py::isinstance(item, real) && std::isnan(py::float_(py::reinterpret_borrow<py::object>(item)).cast<double>()));
+    lengths.push_back(none ? std::nullopt : std::optional<double>(finite_number(item, "scen: reference")));
+  }
+  if (lengths.size() != queries)
+    throw InputError("scen: reference: " + std::to_string(lengths.size()) + " lengths for " + std::to_string(queries) +
+                     " queries");
+  return lengths;
+}
+
+py::dict scen(const py::object& map_given, const py::object& scenarios, const py::object& reference,
+              const py::kwargs& options) {
+  ScenarioBudget budget = scenario_budget_table().parse_as(
+      keyword_options("scen", scenario_budget_table().info(), options), [](std::string key, const std::string& value) {
+        std::replace(key.begin(), key.end(), '-', '_');
+        return "scen: " + key + "=" + value + ": ";
+      });
+  const GridMap map = grid_map_of(map_given, "scen: map");
+  const std::vector<ScenarioQuery> queries = queries_of(scenarios, map);
+  const auto lengths = reference_of(reference, queries.size());
+  const nlohmann::json answered = [&] {
+    py::gil_scoped_release released;
+    return answer_scenarios(map, queries, lengths, budget);
+  }();
+  py::dict out = from_json(answered);
+  py::array_t<double> length(static_cast<py::ssize_t>(queries.size()));
+  py::array_t<bool> found(static_cast<py::ssize_t>(queries.size()));
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    const nlohmann::json& q = answered["queries"][i];
+    found.mutable_at(i) = q["found"].get<bool>();
+    length.mutable_at(i) =
+        q["found"].get<bool>() ? q["length"].get<double>() : std::numeric_limits<double>::quiet_NaN();
+  }
+  out["length"] = length;
+  out["found"] = found;
+  return out;
+}
+
+}  // namespace
+
+void bind_scen(py::module_& m) {
+  m.def("scen", &scen, py::arg("map"), py::arg("scenarios"), py::arg("reference") = py::none(),
+        R"(Every query of a MovingAI scenario answered with its Euclidean shortest path (any-angle, among
+the map's blocked cells; the corners of cells are the vertices), from one preprocessing of the
+map, as `polyplan scen` does. map: a .map file's path or an occupancy grid [row, column], True
+where blocked; scenarios: a .scen file's path or an (N, 4) integer array (start_x, start_y,
+goal_x, goal_y); reference: a CSV of index,length or one length per query (None: none) to compare
+with. Options: threads (0: one per core), table_mb (1024). Returns the program's dict ("queries",
+"summary") with "length" (float64, NaN where no path) and "found" (bool) arrays.)");
+}
+
+}  // namespace polyplan::python
