@@ -16,4 +16,9 @@ namespace polyplan {
 // std::invalid_argument when the world's robot is not a car.
 PathCheck check_car_path(const World& world, const std::vector<CarPathSegment>& path);
 
+// The segments a car drove through `poses` (its planner's path: a pose at each segment's end):
+// between each two, the shortest straight or arc of `radius`, in either gear, whose end arrives at
+// the next pose (car_motion.hpp's arrives). InputError naming the pair that no one segment joins.
+std::vector<CarPathSegment> car_segments_through(const std::vector<CarPose>& poses, double radius);
+
 }  // namespace polyplan

@@ -39,4 +39,5 @@ PYBIND11_MODULE(_polyplan, m) {
   polyplan::python::bind_ik(m);
   polyplan::python::bind_experiment(m);
   polyplan::python::bind_scen(m);
+  polyplan::python::bind_check(m);
 }

@@ -42,6 +42,7 @@ void bind_steer(pybind11::module_& m);
 void bind_ik(pybind11::module_& m);
 void bind_experiment(pybind11::module_& m);
 void bind_scen(pybind11::module_& m);
+void bind_check(pybind11::module_& m);
 
 // A JSON value as Python's json.loads reads it (dicts, lists, numbers, strings).
 pybind11::object from_json(const nlohmann::json& value);

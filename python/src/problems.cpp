@@ -286,18 +286,6 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
         return CSpaceView{world};
       },
       py::arg("world"), "The world's exact C-space (built once per World, shared by its planners).");
-  m.def(
-      "check",
-      [](const py::object& given, const py::object& path) {
-        const WorldPtr world = world_of(given, "check");
-        const std::vector<ExactPoint> points = exact_points(path, "path");
-        if (points.empty()) throw InputError("path: expected at least one point");
-        const PathCheck result = locked(world->lock(), [&] { return check_path(world->cspace(), points); });
-        return py::make_tuple(result.valid, result.reason);
-      },
-      py::arg("world"), py::arg("path"),
-      R"(Whether the polyline `path` ((N, 2) array-like; exact numbers as in World) is a free motion of
-the world's robot, decided exactly: (valid, reason), reason "" when valid.)");
 }
 
 }  // namespace polyplan::python
