@@ -291,7 +291,8 @@ def search_graph(graph, start, goal, method: str = "astar", weight: float = 1.5,
     return result
 
 
-# Jupyter shows a World, and a Plan in its problem, as the program's picture. An Arm has none of
-# its own: svg draws an arm's plans only.
+# Jupyter shows a World, an Arm (at its first query's start) and a Plan in its problem as the
+# program's picture.
 World._repr_svg_ = lambda self: svg(self)
+Arm._repr_svg_ = lambda self: svg(self)
 Plan._repr_svg_ = lambda self: svg(self.problem, self)

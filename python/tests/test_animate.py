@@ -138,11 +138,14 @@ def test_search_frames_refuse_large_graphs_and_long_searches(tmp_path):
         animation.search_frames(SMALL, result, tmp_path / "long")
 
 
-def test_jupyter_shows_worlds_and_plans_as_svg():
+def test_jupyter_shows_worlds_arms_and_plans_as_svg():
     plan = first_plan("worlds", "seed004.json")
     arm_plan = first_plan("arms", "two_link_points.json")
-    for shown in (plan.problem, plan, arm_plan):
+    for shown in (plan.problem, plan, arm_plan, arm_plan.problem):
         assert shown._repr_svg_().lstrip().startswith(("<svg", "<?xml"))
+    # The arm alone: its obstacle points drawn, and no animation (it stands at its start).
+    alone = arm_plan.problem._repr_svg_()
+    assert alone.count("<circle") >= 24 and "<animate" not in alone
 
 
 @pytest.mark.parametrize("arguments, message", [

@@ -108,6 +108,10 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
       EXPECT_NEAR(report.length, euclidean_length(report.path), 1e-9 * std::max(1.0, report.length));
       ASSERT_TRUE(w.shortest[i].has_value()) << "a path where the exact shortest path finds none";
       EXPECT_GE(report.length, *w.shortest[i] - 1e-9 * std::max(1.0, *w.shortest[i]));
+    } else if (!report.path.empty()) {  // a walk that stopped short: from the start, and free
+      EXPECT_EQ(report.path.front(), q.start);
+      const PathCheck check = check_path(w.cspace, report.path);
+      EXPECT_TRUE(check.valid) << check.reason;
     }
     // A status that claims a proof is checked against the exact C-space.
     if (report.status == PlanStatus::invalid_query) {  // braces: EXPECT_TRUE is an if-else of its own
