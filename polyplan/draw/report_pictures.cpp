@@ -29,7 +29,8 @@ std::vector<Picture> arm_pictures(const ArmProblem& arm, const std::vector<const
   if (reports.empty()) {  // the arm alone: at its first query's start (or stretched out), among its obstacles
     PlanReport<JointAngles> standing;
     standing.path = {arm.queries.empty() ? JointAngles(arm.arm.joints(), 0.0) : arm.queries.front().start};
-    return {{"", draw_plan(arm, standing, {ArmPictureOptions::Kind::strobe, file_name(arm.source), 1, 1, std::nullopt})}};
+    return {
+        {"", draw_plan(arm, standing, {ArmPictureOptions::Kind::strobe, file_name(arm.source), 1, 1, std::nullopt})}};
   }
   std::vector<Picture> pictures;
   for (const Report* r : reports) {
@@ -60,7 +61,8 @@ std::vector<Picture> draw_reports(const Problem& problem, const std::vector<cons
                        ", " + std::string(r->space()) + ")");
   const bool arm_reports =
       !reports.empty() && std::holds_alternative<PlanReport<JointAngles>>(reports.front()->typed());
-  if (!reports.empty() && arm_reports != (problem.arm() != nullptr)) throw InputError("the plans were not planned in " + problem.source());
+  if (!reports.empty() && arm_reports != (problem.arm() != nullptr))
+    throw InputError("the plans were not planned in " + problem.source());
   if (problem.arm()) return arm_pictures(*problem.arm(), reports, options);
   if (reports.empty())  // the world alone
     return {Picture{"", problem.world()->robot.car ? world_picture<CarState>(problem, {})
