@@ -37,6 +37,7 @@ from ._polyplan import (  # noqa: F401 (the public names)
     World,
     check,
     cspace,
+    grid,
     ik,
     potential,
     read_arm,
@@ -51,7 +52,7 @@ from .experiment import Experiment, Results
 
 __all__ = [
     "Arm", "CSpace", "Cells", "Drive", "Experiment", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
-    "PlannerInfo", "World", "animate", "check", "cspace", "ik", "plan", "planner", "planners", "plot", "potential",
+    "PlannerInfo", "World", "animate", "check", "cspace", "grid", "ik", "plan", "planner", "planners", "plot", "potential",
     "read_arm", "read_world", "replan", "Results", "scen", "search_graph", "steer", "svg",
 ]
 

@@ -1,18 +1,21 @@
-// polyplan.scen: a MovingAI scenario answered with Euclidean shortest paths (polyplan scen) — the
-// map as a file or an occupancy grid, the queries as a .scen file or an (N, 4) array — as the dict
-// `polyplan scen --json -` prints, with the lengths as numpy arrays beside it.
+// polyplan.scen and polyplan.grid: a MovingAI scenario answered with Euclidean shortest paths
+// (polyplan scen: the map as a file or an occupancy grid, the queries as a .scen file or an (N, 4)
+// array) or on the map's 8-connected grid (polyplan grid, against the file's optimal lengths), as
+// the dicts the program prints with --json -, with the lengths as numpy arrays beside them.
 #include "exact_values.hpp"
 #include "keyword_options.hpp"
 #include "occupancy_grid.hpp"
 #include "plans.hpp"
 
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/registry/grid_scenario_answers.hpp>
 #include <polyplan/registry/scenario_answers.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -70,6 +73,47 @@ std::optional<std::vector<std::optional<double>>> reference_of(const py::object&
   return lengths;
 }
 
+// The JSON's queries' lengths as a float64 array (NaN where none) and their `found` as bools.
+void add_length_arrays(py::dict& out, const nlohmann::json& answered) {
+  const nlohmann::json& queries = answered["queries"];
+  py::array_t<double> length(static_cast<py::ssize_t>(queries.size()));
+  py::array_t<bool> found(static_cast<py::ssize_t>(queries.size()));
+  for (std::size_t i = 0; i < queries.size(); ++i) {
+    found.mutable_at(i) = queries[i]["found"].get<bool>();
+    length.mutable_at(i) =
+        queries[i]["found"].get<bool>() ? queries[i]["length"].get<double>() : std::numeric_limits<double>::quiet_NaN();
+  }
+  out["length"] = length;
+  out["found"] = found;
+}
+
+template <class Options>
+Options python_options(const OptionTable<Options>& table, const std::string& owner, const py::kwargs& given) {
+  return table.parse_as(keyword_options(owner, table.info(), given), [&](std::string key, const std::string& value) {
+    std::replace(key.begin(), key.end(), '-', '_');
+    return owner + ": " + key + "=" + value + ": ";
+  });
+}
+
+py::dict grid(const py::object& map_given, const py::object& scenarios, const py::kwargs& options) {
+  const GridScenarioSearch search = python_options(grid_scenario_table(), "grid", options);
+  const GridMap map = grid_map_of(map_given, "grid: map");
+  if (!is_path(scenarios))
+    throw InputError(
+        "grid: scenarios: expected a .scen file's path (its optimal lengths are what the answers are "
+        "compared with), got " +
+        type_name(scenarios));
+  const std::string file = path_of(scenarios, "grid: scenarios");
+  const std::vector<ScenarioQuery> queries = read_scenarios(file);
+  const nlohmann::json answered = [&] {
+    py::gil_scoped_release released;
+    return answer_grid_scenarios(map, queries, file, search);
+  }();
+  py::dict out = from_json(answered);
+  add_length_arrays(out, answered);
+  return out;
+}
+
 py::dict scen(const py::object& map_given, const py::object& scenarios, const py::object& reference,
               const py::kwargs& options) {
   ScenarioBudget budget = scenario_budget_table().parse_as(
@@ -85,22 +129,20 @@ py::dict scen(const py::object& map_given, const py::object& scenarios, const py
     return answer_scenarios(map, queries, lengths, budget);
   }();
   py::dict out = from_json(answered);
-  py::array_t<double> length(static_cast<py::ssize_t>(queries.size()));
-  py::array_t<bool> found(static_cast<py::ssize_t>(queries.size()));
-  for (std::size_t i = 0; i < queries.size(); ++i) {
-    const nlohmann::json& q = answered["queries"][i];
-    found.mutable_at(i) = q["found"].get<bool>();
-    length.mutable_at(i) =
-        q["found"].get<bool>() ? q["length"].get<double>() : std::numeric_limits<double>::quiet_NaN();
-  }
-  out["length"] = length;
-  out["found"] = found;
+  add_length_arrays(out, answered);
   return out;
 }
 
 }  // namespace
 
 void bind_scen(py::module_& m) {
+  m.def("grid", &grid, py::arg("map"), py::arg("scenarios"),
+        R"(Every query of a MovingAI scenario file answered on the map's 8-connected grid (octile lengths, no
+corner cutting) and compared with the file's optimal lengths, as `polyplan grid` does. map: a .map
+file's path or an occupancy grid [row, column], True where blocked (of the file's size);
+scenarios: the .scen file's path. Options: search ("astar", "dijkstra", "wastar"), weight (for
+wastar). Returns the program's dict ("queries", "summary") with "length" (float64, NaN where no
+path) and "found" (bool) arrays.)");
   m.def("scen", &scen, py::arg("map"), py::arg("scenarios"), py::arg("reference") = py::none(),
         R"(Every query of a MovingAI scenario answered with its Euclidean shortest path (any-angle, among
 the map's blocked cells; the corners of cells are the vertices), from one preprocessing of the

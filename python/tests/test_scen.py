@@ -90,3 +90,31 @@ def test_options_and_references_are_checked():
     r = polyplan.scen(grid, [[0, 0, 1, 1]], reference=[2.0])
     assert r["summary"]["mismatches"] == 1 and r["queries"][0]["mismatch"] is True
     assert json.dumps(r["queries"])  # the queries stay plain JSON values
+
+
+@pytest.mark.parametrize("options, arguments", [
+    ({}, []),
+    ({"search": "dijkstra"}, ["--search", "dijkstra"]),
+    ({"search": "wastar", "weight": 2}, ["--search", "wastar", "--weight", "2"]),
+])
+def test_the_grid_answers_are_the_programs(options, arguments):
+    expected, error = cli_json("grid", MAP, SCEN, *arguments)
+    assert error is None
+    for given in (MAP, grid_of_map(MAP)):
+        answered = polyplan.grid(given, SCEN, **options)
+        assert clockless(answered) == clockless(expected)
+        assert answered["found"].all() and len(answered["length"]) == answered["summary"]["queries"]
+    if "weight" in options:  # w-suboptimal: within twice the file's optimum, never below it
+        assert answered["summary"]["bound_violations"] == 0
+        assert all(q["length"] >= q["expected"] - 1e-4 for q in answered["queries"])
+    else:  # optimal: the file's lengths
+        assert answered["summary"]["mismatches"] == 0
+
+
+def test_grid_wants_a_scenario_file_of_the_maps_size():
+    with pytest.raises(polyplan.InputError, match=r"grid: scenarios: expected a \.scen file"):
+        polyplan.grid(MAP, [[0, 0, 1, 1]])
+    with pytest.raises(polyplan.InputError, match="arena"):
+        polyplan.grid(np.zeros((3, 3), bool), SCEN)
+    with pytest.raises(polyplan.InputError, match="grid: search=bfs"):
+        polyplan.grid(MAP, SCEN, search="bfs")
