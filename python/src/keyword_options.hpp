@@ -6,6 +6,7 @@
 
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -16,5 +17,16 @@ namespace polyplan::python {
 // text, True or False (or, for a point option, a pair of numbers).
 OptionValues keyword_options(const std::string& owner, const std::vector<OptionInfo>& options,
                              const pybind11::dict& given);
+
+// A command's own options (replan's, scen's) from keyword arguments, read by the program's table:
+// its checks and its messages, "OWNER: time_limit=-1: ..." as Python spells the names.
+template <class Options>
+Options keyword_command_options(const OptionTable<Options>& table, const std::string& owner,
+                                const pybind11::dict& given) {
+  return table.parse_as(keyword_options(owner, table.info(), given), [&](std::string key, const std::string& value) {
+    std::replace(key.begin(), key.end(), '-', '_');
+    return owner + ": " + key + "=" + value + ": ";
+  });
+}
 
 }  // namespace polyplan::python

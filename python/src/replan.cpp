@@ -82,11 +82,7 @@ py::list cells(const std::vector<GridPoint>& points) {
 Drive drive(const py::object& map, const py::object& start, const py::object& goal, py::kwargs options) {
   const bool tables = options.contains("tables") && flag_of(options.attr("pop")("tables"), "replan: tables");
   Drive out;
-  ReplanOptions replanning = replan_option_table().parse_as(
-      keyword_options("replan", replan_option_table().info(), options), [](std::string key, const std::string& value) {
-        std::replace(key.begin(), key.end(), '-', '_');
-        return "replan: " + key + "=" + value + ": ";
-      });
+  ReplanOptions replanning = keyword_command_options(replan_option_table(), "replan", options);
   out.sensor = replanning.sensor_radius;
   const GridPoint from = cell_of(start, "start"), to = cell_of(goal, "goal");
   GridMap grid = grid_map_of(map, "replan: map");

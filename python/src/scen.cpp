@@ -73,8 +73,10 @@ std::optional<std::vector<std::optional<double>>> reference_of(const py::object&
   return lengths;
 }
 
-// The JSON's queries' lengths as a float64 array (NaN where none) and their `found` as bools.
-void add_length_arrays(py::dict& out, const nlohmann::json& answered) {
+// The program's JSON as Python's dict, with the queries' lengths as a float64 array (NaN where
+// none) and their `found` as bools beside it.
+py::dict with_length_arrays(const nlohmann::json& answered) {
+  py::dict out = from_json(answered);
   const nlohmann::json& queries = answered["queries"];
   py::array_t<double> length(static_cast<py::ssize_t>(queries.size()));
   py::array_t<bool> found(static_cast<py::ssize_t>(queries.size()));
@@ -85,18 +87,11 @@ void add_length_arrays(py::dict& out, const nlohmann::json& answered) {
   }
   out["length"] = length;
   out["found"] = found;
-}
-
-template <class Options>
-Options python_options(const OptionTable<Options>& table, const std::string& owner, const py::kwargs& given) {
-  return table.parse_as(keyword_options(owner, table.info(), given), [&](std::string key, const std::string& value) {
-    std::replace(key.begin(), key.end(), '-', '_');
-    return owner + ": " + key + "=" + value + ": ";
-  });
+  return out;
 }
 
 py::dict grid(const py::object& map_given, const py::object& scenarios, const py::kwargs& options) {
-  const GridScenarioSearch search = python_options(grid_scenario_table(), "grid", options);
+  const GridScenarioSearch search = keyword_command_options(grid_scenario_table(), "grid", options);
   const GridMap map = grid_map_of(map_given, "grid: map");
   if (!is_path(scenarios))
     throw InputError(
@@ -109,18 +104,12 @@ py::dict grid(const py::object& map_given, const py::object& scenarios, const py
     py::gil_scoped_release released;
     return answer_grid_scenarios(map, queries, file, search);
   }();
-  py::dict out = from_json(answered);
-  add_length_arrays(out, answered);
-  return out;
+  return with_length_arrays(answered);
 }
 
 py::dict scen(const py::object& map_given, const py::object& scenarios, const py::object& reference,
               const py::kwargs& options) {
-  ScenarioBudget budget = scenario_budget_table().parse_as(
-      keyword_options("scen", scenario_budget_table().info(), options), [](std::string key, const std::string& value) {
-        std::replace(key.begin(), key.end(), '-', '_');
-        return "scen: " + key + "=" + value + ": ";
-      });
+  const ScenarioBudget budget = keyword_command_options(scenario_budget_table(), "scen", options);
   const GridMap map = grid_map_of(map_given, "scen: map");
   const std::vector<ScenarioQuery> queries = queries_of(scenarios, map);
   const auto lengths = reference_of(reference, queries.size());
@@ -128,9 +117,7 @@ py::dict scen(const py::object& map_given, const py::object& scenarios, const py
     py::gil_scoped_release released;
     return answer_scenarios(map, queries, lengths, budget);
   }();
-  py::dict out = from_json(answered);
-  add_length_arrays(out, answered);
-  return out;
+  return with_length_arrays(answered);
 }
 
 }  // namespace
