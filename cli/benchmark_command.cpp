@@ -46,7 +46,7 @@ struct BenchmarkCommand {
 int run_benchmark(const BenchmarkCommand& command) {
   const BenchmarkScale scale = command.scale->parse();
   Experiment experiment = read_experiment(command.experiment);
-  scale_experiment(experiment, scale.seeds, scale.time_limit, "--seeds");
+  scale_experiment(experiment, scale.seeds, scale.time_limit, "--seeds", "--time-limit");
   const std::string out = command.out.empty() ? file_name_part(experiment.name) + "_results" : command.out;
   const unsigned threads = scale.threads ? scale.threads : std::max(1u, std::thread::hardware_concurrency());
 

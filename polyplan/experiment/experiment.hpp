@@ -78,8 +78,10 @@ struct ExperimentResults {
 
 // The experiment cut to its first `seeds` seeds (0: all of them) and given another time limit (0:
 // its own), its cost times scaled with it (the curve keeps its shape): a quick look, a test.
-// InputError "<seeds_name> N: the experiment has M seeds" when it has fewer.
+// InputError "<seeds_name> N: the experiment has M seeds" when it has fewer, and "<limit_name> T:
+// ..." for a time limit that scales the cost times out of what doubles hold apart. The names are
+// the caller's spelling of the two (the program's --seeds, Python's seeds).
 void scale_experiment(Experiment& experiment, std::size_t seeds, double time_limit,
-                      const std::string& seeds_name = "seeds");
+                      const std::string& seeds_name = "seeds", const std::string& limit_name = "time_limit");
 
 }  // namespace polyplan

@@ -40,6 +40,9 @@ class ExperimentReader {
     e.seeds = seeds(required(root, "seeds"));
     e.cost_times =
         root.contains("cost_times") ? cost_times(root["cost_times"], e.time_limit) : even_steps(e.time_limit);
+    if (e.cost_times.front() <= 0)  // 5e-324 s split in 20 rounds to 0
+      fail("time_limit",
+           "too small to split into cost times a double holds apart: " + detail::show_number(e.time_limit));
     const json& problems = non_empty_array(required(root, "problems"), "problems");
     for (std::size_t i = 0; i < problems.size(); ++i)
       e.problems.push_back(problem(problems[i], "problems[" + std::to_string(i) + "]"));
@@ -107,6 +110,8 @@ class ExperimentReader {
     ExperimentProblem p;
     p.name = text(required(value, "name", object), object + ".name");
     const std::string file = text(required(value, "file", object), object + ".file");
+    // The file system would stop at a NUL and open another file than the one named.
+    if (file.find('\0') != std::string::npos) fail(object + ".file", "a path with a NUL character");
     p.file = (fs::path(file).is_absolute() ? fs::path(file) : folder_ / file).lexically_normal().string();
     Problem loaded = [&] {
       try {

@@ -178,7 +178,7 @@ def _json_value(value, where, exact=True, depth=0):
         return value
     if isinstance(value, _numbers.Integral):  # beyond 64 bits as text, which the readers take exactly
         value = _integer(int(value), where)
-        return value if abs(value) < 2**63 else str(value)
+        return value if -2**63 <= value < 2**64 else str(value)  # the readers' int64 and uint64
     if isinstance(value, _fractions.Fraction):
         _integer(value.numerator, where), _integer(value.denominator, where)
         if not exact:

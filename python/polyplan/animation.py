@@ -2,6 +2,8 @@
 animations and pictures (imported only when asked for, as plotting is; they draw with its helpers)."""
 
 import json
+import math
+import numbers
 import os
 from typing import List, NamedTuple, Optional
 
@@ -14,6 +16,9 @@ MOTION_FRAMES = 100  # poses along a path, evenly spaced by distance
 FIGURE = (6, 80)  # inches and dots per inch: 480 pixels square, which a GIF encodes twice as fast as plot's 700
 MAX_FRAME_VERTICES = 2000  # search_graph(frames=...): beyond these, hours of PNGs nobody meant to write
 MAX_FRAME_STEPS = 5000
+MAX_ASKED_FRAMES = 10000  # animate(frames=...): beyond these, an animation nobody meant to draw
+MAX_INTERVAL = 2**31 - 1  # milliseconds: a GUI timer's C int
+MAX_GRAPH_FILE = 64 << 20  # bytes, as the program's readers (geometry/input_limits.hpp)
 EDGE = "#d0d0d0"
 VERTEX = "#b8b8b8"
 CLOSED = plotting.EXPANDED
@@ -24,10 +29,18 @@ CRITICAL_MARKERS = {"minimum": "v", "maximum": "^", "saddle": "X", "degenerate":
 
 def animate(obj, ax=None, frames=None, interval=50, *, what="path", graph=None, world=None):
     """polyplan.animate: its docstring says what each kind of object becomes."""
-    if what not in ("path", "search"):
+    if not isinstance(what, str) or what not in ("path", "search"):
         raise _polyplan.InputError(f'animate: what={what!r}: expected "path" or "search"')
-    if frames is not None and (isinstance(frames, bool) or not isinstance(frames, int) or frames < 1):
-        raise _polyplan.InputError(f"animate: frames={frames!r}: expected a whole number of at least 1")
+    if frames is not None:
+        if _whole(frames) is None or not 1 <= _whole(frames) <= MAX_ASKED_FRAMES:
+            raise _polyplan.InputError(f"animate: frames={_shown_value(frames)}: expected a whole number in "
+                                       f"[1, {MAX_ASKED_FRAMES}]")
+        frames = _whole(frames)
+    if not _is_real(interval) or not 0 <= interval <= MAX_INTERVAL:
+        raise _polyplan.InputError(f"animate: interval={_shown_value(interval)}: expected a number of milliseconds "
+                                   f"in [0, {MAX_INTERVAL}]")
+    if ax is not None and not _is_axes(ax):
+        raise _polyplan.InputError(f"animate: ax: expected a matplotlib Axes, got {type(ax).__name__}")
     scene = _scene(obj, what, graph, world)
     ax = plotting.new_axes(ax, *FIGURE)
     update, steps = scene(obj, ax, frames)
@@ -46,6 +59,48 @@ def _pin_legend(ax):
     corner = legend.get_window_extent().transformed(ax.transAxes.inverted()).p0
     handles, labels = ax.get_legend_handles_labels()
     ax.legend(handles, labels, loc="lower left", bbox_to_anchor=tuple(corner), borderaxespad=0, fontsize="small")
+
+
+def _whole(value):
+    """value as an int when it is a whole number (numpy's too; not a bool), else None."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        return None
+    return int(value)
+
+
+def _is_real(value):
+    """Whether value is a finite real number (numpy's too; not a bool)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return False
+    try:
+        return math.isfinite(value)
+    except OverflowError:  # an int beyond a double: finite, if huge
+        return True
+
+
+def _number(value):
+    """value as a float when it is a real number (not a bool) that is not NaN, a double (inf
+    allowed); else None."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        return None
+    try:
+        x = float(value)
+    except (OverflowError, ValueError, TypeError):
+        return None
+    return None if math.isnan(x) else x
+
+
+def _shown_value(value):
+    """repr(value), an integer too long to write named by its bits (str() refuses 4300 digits)."""
+    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 64:
+        return f"(an integer of {value.bit_length()} bits)"
+    text = repr(value)
+    return text if len(text) <= 80 else text[:77] + "..."
+
+
+def _is_axes(ax):
+    from matplotlib.axes import Axes
+    return isinstance(ax, Axes)
 
 
 def _scene(obj, what, graph, world):
@@ -191,39 +246,160 @@ class SearchSteps(NamedTuple):
 
 def graph_vertices(graph):
     """The graph search_graph is given (a JSON file's path, or its list of dicts, numpy fields
-    allowed) as a list of dicts of plain values."""
+    allowed) as a list of dicts of plain values, checked as the program's reader checks it: each
+    vertex's "x" a point [x, y], its "neighbors" indices of vertices."""
     from . import _json_value
 
     if isinstance(graph, (str, os.PathLike)):
-        with open(graph) as f:
-            graph = json.load(f)
+        graph = _graph_file(graph)
     vertices = _json_value(graph, "graph", exact=False)
     if not isinstance(vertices, list) or not all(isinstance(v, dict) and "x" in v for v in vertices):
         raise _polyplan.InputError('graph: expected a list of dicts {"x": [x, y], "neighbors": [...], ...}')
+    count = len(vertices)
+    for i, v in enumerate(vertices):
+        x = v["x"]
+        if not isinstance(x, list) or len(x) != 2 or not all(_is_real(c) for c in x):
+            raise _polyplan.InputError(f"graph[{i}].x: expected a point [x, y], got {_shown_value(x)}")
+        neighbours = v.get("neighbors", [])
+        if not isinstance(neighbours, list):
+            raise _polyplan.InputError(f"graph[{i}].neighbors: expected a list of vertex indices, got "
+                                       f"{_shown_value(neighbours)}")
+        for j, u in enumerate(neighbours):
+            if not _is_real(u) or u != int(u) or not 0 <= u < count:
+                raise _polyplan.InputError(f"graph[{i}].neighbors[{j}]: {_shown_value(u)} is not a vertex "
+                                           f"(0-based indices [0, {count}))")
+        v["neighbors"] = [int(u) for u in neighbours]
     return vertices
+
+
+def _graph_file(path):
+    """The JSON of the graph file at `path`, refused (InputError naming it) as the program refuses
+    a file: missing, a folder, larger than 64 MiB, not UTF-8, not JSON."""
+    try:
+        name = os.fspath(path)
+    except TypeError as e:
+        raise _polyplan.InputError(f"graph: expected a file's path or a list of dicts: {e}") from None
+    if not isinstance(name, str):
+        raise _polyplan.InputError("graph: expected a file's path (a str or a pathlib.Path), got "
+                                   + type(name).__name__)
+    shown = repr(name)[1:-1]
+    if os.path.isdir(name):
+        raise _polyplan.InputError(f"graph: {shown}: is a directory, not a file")
+    try:
+        with open(name, "rb") as f:
+            text = f.read(MAX_GRAPH_FILE + 1)
+    except (OSError, ValueError) as e:  # ValueError: a NUL in the name
+        raise _polyplan.InputError(f"graph: {shown}: cannot open file ({getattr(e, 'strerror', None) or e})") from None
+    if len(text) > MAX_GRAPH_FILE:
+        raise _polyplan.InputError(f"graph: {shown}: larger than the supported 64 MiB")
+    try:
+        return json.loads(text.decode("utf-8"))
+    except UnicodeDecodeError as e:
+        raise _polyplan.InputError(f"graph: {shown}: not UTF-8 (byte {e.start})") from None
+    except (ValueError, RecursionError) as e:
+        raise _polyplan.InputError(f"graph: {shown}: not JSON: {str(e)[:200]}") from None
 
 
 def search_steps(graph, result, goal=None):
     """The SearchSteps of search_graph's `result` on `graph` (what search_graph was given)."""
     vertices = graph_vertices(graph)
-    trace = result["trace"]
-    if not trace:
-        raise _polyplan.InputError("search_graph's result: its trace is empty")
-    xy = np.array([v["x"][:2] for v in vertices], dtype=float).reshape(-1, 2)
-    neighbours = [v.get("neighbors", []) for v in vertices]
+    trace, path, cost = _checked_result(result, len(vertices))
+    xy = np.array([v["x"] for v in vertices], dtype=float).reshape(-1, 2)
+    neighbours = [v["neighbors"] for v in vertices]
     pairs = sorted({(min(a, b), max(a, b)) for a, ns in enumerate(neighbours) for b in ns})
     expanded = np.array([t["vertex"] for t in trace], dtype=int)
-    if expanded.max() >= len(vertices):
-        raise _polyplan.InputError(f"graph: not the graph searched: it has {len(vertices)} vertices, and the search "
-                                   f"expanded vertex {expanded.max()}")
     opened, closed = _open_intervals(neighbours, expanded)
     backpointers = np.full(len(vertices), -1)
     for t in reversed(trace):
         backpointers[t["vertex"]] = -1 if t["backpointer"] is None else t["backpointer"]
-    path = result["path"]
+    depth_first = result.get("method") == "dfs"
+    if depth_first and any(isinstance(t["open"], int) for t in trace):
+        _acyclic(backpointers)  # the stack drawn is the way back from the vertex expanded
+    if goal is not None:
+        goal = _whole(goal)
+        if goal is None or not 0 <= goal < len(vertices):
+            raise _polyplan.InputError(f"goal: not a vertex of graph (0-based indices [0, {len(vertices)}))")
     goal = goal if goal is not None else (path[-1] if path else None)
     return SearchSteps(xy, xy[np.array(pairs, dtype=int).reshape(-1, 2)], trace, expanded, opened, closed,
-                       backpointers, result.get("method") == "dfs", path, result.get("cost"), goal)
+                       backpointers, depth_first, path, cost, goal)
+
+
+def _checked_result(result, count):
+    """The trace (one dict per expansion: step, vertex, g, h, f, backpointer, open), path and cost of
+    a search_graph result, checked against a graph of `count` vertices, as plain values; an
+    InputError naming what is wrong for anything else (a result not from search_graph, or from
+    another graph)."""
+    what = "search_graph's result"
+    if not isinstance(result, dict):
+        raise _polyplan.InputError(f"{what}: expected the dict search_graph returns, got {type(result).__name__}")
+
+    def vertex(value, where):
+        index = _whole(value)
+        if index is None or not 0 <= index < count:
+            raise _polyplan.InputError(f"{what}: {where}: {_shown_value(value)} is not a vertex of graph, which has "
+                                       f"{count} vertices (0-based indices [0, {count}))")
+        return index
+
+    trace = result.get("trace")
+    if not isinstance(trace, (list, tuple)) or not trace:
+        raise _polyplan.InputError(f"{what}: its trace is empty" if not trace and isinstance(trace, (list, tuple))
+                                   else f"{what}: trace: expected a non-empty list of dicts, got "
+                                   f"{type(trace).__name__}")
+    checked = []
+    for i, t in enumerate(trace):
+        where = f"trace[{i}]"
+        if not isinstance(t, dict):
+            raise _polyplan.InputError(f"{what}: {where}: expected a dict (step, vertex, g, h, f, backpointer, open), "
+                                       f"got {type(t).__name__}")
+        missing = [k for k in ("step", "vertex", "g", "h", "f", "backpointer", "open") if k not in t]
+        if missing:
+            raise _polyplan.InputError(f"{what}: {where}: missing {', '.join(missing)}")
+        line = dict(t, vertex=vertex(t["vertex"], where + ".vertex"),
+                    backpointer=None if t["backpointer"] is None else vertex(t["backpointer"], where + ".backpointer"))
+        for key in ("g", "h", "f"):
+            line[key] = _number(t[key])
+            if line[key] is None:
+                raise _polyplan.InputError(f"{what}: {where}.{key}: expected a number, got {_shown_value(t[key])}")
+        step = _whole(t["step"])
+        if step is None or step < 0:
+            raise _polyplan.InputError(f"{what}: {where}.step: expected a whole number >= 0, got "
+                                       f"{_shown_value(t['step'])}")
+        line["step"] = step
+        given = t["open"]
+        if _whole(given) is not None:
+            line["open"] = _whole(given)
+        elif isinstance(given, (list, tuple, np.ndarray)):
+            line["open"] = [vertex(u, f"{where}.open[{j}]") for j, u in enumerate(np.asarray(given).ravel().tolist())]
+        else:
+            raise _polyplan.InputError(f"{what}: {where}.open: expected the open list's size or its vertices, got "
+                                       f"{_shown_value(given)}")
+        checked.append(line)
+    path = result.get("path", [])
+    if path is None:
+        path = []
+    if not isinstance(path, (list, tuple, np.ndarray)):
+        raise _polyplan.InputError(f"{what}: path: expected a list of vertex indices, got {_shown_value(path)}")
+    path = [vertex(v, f"path[{i}]") for i, v in enumerate(list(path))]
+    cost = result.get("cost")
+    if cost is not None and _number(cost) is None:
+        raise _polyplan.InputError(f"{what}: cost: expected a number or None, got {_shown_value(cost)}")
+    return checked, path, None if cost is None else _number(cost)
+
+
+def _acyclic(backpointers):
+    """Refuses backpointers that lead round in a circle (a depth-first search's stack is the way
+    back from the vertex expanded to the start)."""
+    state = np.zeros(len(backpointers), dtype=np.int8)  # 0 unseen, 1 on the way being followed, 2 done
+    for v in range(len(backpointers)):
+        way = []
+        while v >= 0 and state[v] == 0:
+            state[v] = 1
+            way.append(v)
+            v = backpointers[v]
+        if v >= 0 and state[v] == 1:
+            raise _polyplan.InputError(f"search_graph's result: trace: the backpointers go round in a circle "
+                                       f"through vertex {v}")
+        state[way] = 2
 
 
 def _open_intervals(neighbours, expanded):
@@ -278,7 +454,8 @@ def draw_search_state(ax, steps, i):
         ax.set_title(f"step {t['step']}: vertex {t['vertex']}   g {t['g']:.4g}   h {t['h']:.4g}   f {t['f']:.4g}")
     elif steps.path:
         ax.plot(*steps.xy[steps.path].T, color=plotting.PATH, lw=2.5, zorder=4, label="path")
-        ax.set_title(f"path of cost {steps.cost:.4g} after {count} expansions")
+        cost = "" if steps.cost is None else f" of cost {steps.cost:.4g}"
+        ax.set_title(f"path{cost} after {count} expansions")
     else:
         ax.set_title(f"no path after {count} expansions")
     ax.plot(*steps.xy[steps.expanded[0]], "o", color="black", ms=8, zorder=5, label="start")
@@ -307,23 +484,51 @@ def search_frames(graph, result, folder, goal=None):
     MAX_FRAME_VERTICES vertices or a trace of more than MAX_FRAME_STEPS steps."""
     from matplotlib.figure import Figure
 
+    folder = _folder(folder, "search_graph: frames")
     vertices = graph_vertices(graph)
     if len(vertices) > MAX_FRAME_VERTICES:
         raise _polyplan.InputError(f"search_graph: frames: the graph has {len(vertices)} vertices, more than the "
                                    f"{MAX_FRAME_VERTICES} drawn a frame per expansion")
-    if len(result["trace"]) > MAX_FRAME_STEPS:
-        raise _polyplan.InputError(f"search_graph: frames: the search took {len(result['trace'])} steps, more than "
-                                   f"the {MAX_FRAME_STEPS} drawn a frame each")
     steps = search_steps(vertices, result, goal)
-    os.makedirs(folder, exist_ok=True)
+    if len(steps.trace) > MAX_FRAME_STEPS:
+        raise _polyplan.InputError(f"search_graph: frames: the search took {len(steps.trace)} steps, more than "
+                                   f"the {MAX_FRAME_STEPS} drawn a frame each")
+    shown = repr(folder)[1:-1]
+    try:
+        os.makedirs(folder, exist_ok=True)
+    except (OSError, ValueError) as e:
+        raise _polyplan.InputError(f"search_graph: frames: {shown}: cannot make the folder "
+                                   f"({getattr(e, 'strerror', None) or e})") from None
     figure = Figure(figsize=(7, 7))  # no pyplot: nothing to show, nothing left open
     ax = figure.add_subplot()
     written = []
     for i, t in enumerate(steps.trace):
         draw_search_state(ax, steps, i)
         written.append(os.path.join(folder, f"step_{t['step']:04d}.png"))
-        figure.savefig(written[-1])
+        try:
+            figure.savefig(written[-1])
+        except OSError as e:
+            raise _polyplan.InputError(f"search_graph: frames: {repr(written[-1])[1:-1]}: cannot write "
+                                       f"({e.strerror or e})") from None
     return written
+
+
+def _folder(folder, what):
+    """A folder's path given as a str or an os.PathLike (not bytes, as every path polyplan takes),
+    as a str; InputError naming `what` for anything else."""
+    if isinstance(folder, os.PathLike):
+        try:
+            folder = os.fspath(folder)
+        except TypeError as e:
+            raise _polyplan.InputError(f"{what}: {e}") from None
+    if not isinstance(folder, str):
+        raise _polyplan.InputError(f"{what}: expected a folder's path (a str or a pathlib.Path), got "
+                                   f"{type(folder).__name__}")
+    if not folder:
+        raise _polyplan.InputError(f"{what}: expected a folder's path, got an empty str")
+    if "\0" in folder:
+        raise _polyplan.InputError(f"{what}: {repr(folder)[1:-1]}: a path cannot hold a NUL character")
+    return folder
 
 
 def _drive(drive, ax, frames):
@@ -360,10 +565,26 @@ def _descent(result, world, ax, frames):
         raise _polyplan.InputError("animate: polyplan.potential's result holds critical points, not a path: "
                                    "animate(result, world=w), w the world it was computed for, follows the "
                                    "potential-field planner down with its parameters")
-    plan = planner("potential-field", world, **result["parameters"]).plan(record=True)
+    if not isinstance(world, _polyplan.World):
+        raise _polyplan.InputError(f"animate: world: expected the polyplan.World the potential was computed for, "
+                                   f"got {type(world).__name__}")
+    parameters, critical = result.get("parameters"), result["critical_points"]
+    if not isinstance(parameters, dict) or not all(isinstance(k, str) for k in parameters):
+        raise _polyplan.InputError("animate: polyplan.potential's result: parameters: expected the dict of the "
+                                   f"potential-field planner's options it returns, got {_shown_value(parameters)}")
+    if not isinstance(critical, (list, tuple)):
+        raise _polyplan.InputError("animate: polyplan.potential's result: critical_points: expected a list of dicts "
+                                   f"{{at, kind}}, got {_shown_value(critical)}")
+    for i, p in enumerate(critical):
+        at = p.get("at") if isinstance(p, dict) else None
+        point = isinstance(at, (list, tuple, np.ndarray)) and len(at) == 2 and all(_number(c) is not None for c in at)
+        if not point or not isinstance(p.get("kind"), str):
+            raise _polyplan.InputError(f"animate: polyplan.potential's result: critical_points[{i}]: expected a dict "
+                                       f"{{at: [x, y], kind: str}}, got {_shown_value(p)}")
+    plan = planner("potential-field", world, **parameters).plan(record=True)
     update, steps = _world_motion(plan, ax, frames)
     for kind, marker in CRITICAL_MARKERS.items():
-        points = np.array([p["at"] for p in result["critical_points"] if p["kind"] == kind]).reshape(-1, 2)
+        points = np.array([p["at"] for p in critical if p["kind"] == kind], dtype=float).reshape(-1, 2)
         if len(points):
             ax.scatter(*points.T, marker=marker, s=70, color="white", edgecolor="black", zorder=6, label=kind)
     ax.legend(loc="best", fontsize="small")

@@ -6,8 +6,12 @@ problem's query once. Runs go on threads, each alone in its thread; the results 
 results.json, as numpy columns or a pandas DataFrame, and the files the program writes.
 """
 
+import decimal
+import inspect
 import json as _json
 import math
+import numbers
+import operator
 import os
 import sys
 import time
@@ -39,14 +43,16 @@ class Experiment:
         if not isinstance(spec, dict):
             raise InputError(f"Experiment: expected a dict in the experiment file's format, got {type(spec).__name__}")
         from . import _json_value
-        text = _json.dumps(_json_value(spec, "", exact=False))
-        name = os.path.join(os.fspath(folder), "<dict>") if folder is not None else "<dict>"
+        plain = _json_value(spec, "", exact=False)
+        _check_texts(plain, "")
+        text = _json.dumps(plain)
+        name = os.path.join(_path(folder, "Experiment: folder"), "<dict>") if folder is not None else "<dict>"
         self._spec = _polyplan._parse_experiment(text, name)
 
     @classmethod
     def from_file(cls, path):
         """The experiment file at `path` (JSON)."""
-        return cls(_polyplan._read_experiment(path))
+        return cls(_polyplan._read_experiment(_path(path, "Experiment.from_file", "file")))
 
     @property
     def name(self):
@@ -77,18 +83,31 @@ class Experiment:
         experiment's, its cost times scaled alike (as `polyplan benchmark --seeds --time-limit`)."""
         threads = _whole(threads, "threads", 0, 256)
         seeds = 0 if seeds is None else _whole(seeds, "seeds", 1, None)
-        if time_limit is None:
-            time_limit = 0.0
-        elif isinstance(time_limit, bool) or not isinstance(time_limit, (int, float)) or not time_limit > 0 \
-                or not math.isfinite(time_limit):
-            raise InputError(f"time_limit {time_limit!r}: expected a number of seconds > 0")
-        report = _ProgressLine("runs") if progress is True else (progress or None)
-        if report is not None and not callable(report):
-            raise InputError(f"progress: expected True, False or a function (done, total), got {type(progress).__name__}")
-        results = Results(_polyplan._run_experiment(self._spec, threads, seeds, float(time_limit), report))
+        if seeds > len(self._spec.seeds):  # here: an int beyond 64 bits cannot reach the compiled half
+            raise InputError(f"seeds {_shown(seeds)}: the experiment has {len(self._spec.seeds)} seeds")
+        time_limit = 0.0 if time_limit is None else self._time_limit(time_limit)
+        report = _progress(progress)
+        if out is not None:
+            out = _path(out, "Experiment.run: out")
+            if os.path.exists(out) and not os.path.isdir(out):
+                raise InputError(f"Experiment.run: out: {out}: not a folder")
+        results = Results(_polyplan._run_experiment(self._spec, threads, seeds, time_limit, report))
         if out is not None:
             results.write(out)
         return results
+
+    def _time_limit(self, given):
+        """A run's time limit: a finite number of seconds > 0 (numpy's, a Fraction or a Decimal too);
+        the compiled half refuses one that scales the cost times out of a double's range."""
+        number = None
+        if not isinstance(given, (bool, np.bool_)) and isinstance(given, (numbers.Real, decimal.Decimal)):
+            try:
+                number = float(given)
+            except (OverflowError, ValueError, ArithmeticError):  # beyond a double; a signalling NaN
+                number = math.inf
+        if number is None or not number > 0 or not math.isfinite(number):
+            raise InputError(f"time_limit {_shown(given)}: expected a finite number of seconds > 0")
+        return number
 
     def __repr__(self):
         return (f"<polyplan.Experiment {self.name}: {len(self.problems)} problem(s) x {len(self.planners)} "
@@ -102,6 +121,8 @@ class Results:
     `to_pandas()`, and `write(folder)` for the files `polyplan benchmark` writes."""
 
     def __init__(self, outcome):
+        if not isinstance(outcome, _polyplan._ExperimentOutcome):
+            raise InputError(f"Results: made by Experiment.run, not from {type(outcome).__name__}")
         self._outcome = outcome
         everything = outcome.json()
         self.records = everything["runs"]
@@ -147,7 +168,7 @@ class Results:
         """Writes results.log (OMPL's benchmark log), results.json, results.csv, tables.md and the
         plots into `folder` (made when missing), as `polyplan benchmark --out` does; returns the
         paths written."""
-        return self._outcome.write(folder)
+        return self._outcome.write(_path(folder, "Results.write: folder"))
 
     def __len__(self):
         return len(self.records)
@@ -158,12 +179,81 @@ class Results:
 
 
 def _whole(value, name, least, most):
-    if isinstance(value, bool) or not isinstance(value, int) and not hasattr(value, "__index__"):
+    if isinstance(value, (bool, np.bool_)) or isinstance(value, np.ndarray) and value.ndim:
         raise InputError(f"{name}: expected a whole number, got {type(value).__name__}")
-    value = int(value.__index__())
+    try:
+        value = operator.index(value)
+    except TypeError:
+        raise InputError(f"{name}: expected a whole number, got {type(value).__name__}") from None
     if value < least or most is not None and value > most:
-        raise InputError(f"{name} {value}: expected a whole number in [{least}, {most if most is not None else 'inf'}]")
+        raise InputError(f"{name} {_shown(value)}: expected a whole number in "
+                         f"[{least}, {most if most is not None else 'inf'}]")
     return value
+
+
+def _shown(value):
+    """repr(value); an integer too long to write (str() refuses 4300 digits) by its bits."""
+    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 64:
+        return f"(an integer of {value.bit_length()} bits)"
+    text = repr(value)
+    return text if len(text) <= 300 else text[:297] + "..."
+
+
+def _path(value, what, kind="folder"):
+    """A file's or folder's path as the compiled half takes it: a str, or an os.PathLike giving one;
+    without NUL (the C++ side would read or write the path cut short there) and in UTF-8 (a file
+    name of bytes that are not UTF-8, decoded with surrogates, cannot be passed on)."""
+    if isinstance(value, os.PathLike):
+        try:
+            value = os.fspath(value)
+        except TypeError as e:
+            raise InputError(f"{what}: {e}") from None
+    if not isinstance(value, str):
+        raise InputError(f"{what}: expected a {kind}'s path (a str or a pathlib.Path), got {type(value).__name__}")
+    if "\0" in value:
+        raise InputError(f"{what}: {_shown(value)}: a path cannot hold a NUL character")
+    try:
+        value.encode("utf-8")
+    except UnicodeEncodeError:
+        raise InputError(f"{what}: {_shown(value)}: not UTF-8 (a name of bytes the file system did not decode; "
+                         "rename the file or folder)") from None
+    return value
+
+
+def _check_texts(value, where):
+    """Refuses the strings of an experiment dict (plain JSON values) that cannot be passed on: not
+    UTF-8 (a lone surrogate), or a problem's file with a NUL."""
+    if isinstance(value, dict):
+        for key, item in value.items():
+            _check_texts(key, where or "experiment")
+            _check_texts(item, f"{where}.{key}" if where else key)
+    elif isinstance(value, list):
+        for i, item in enumerate(value):
+            _check_texts(item, f"{where}[{i}]")
+    elif isinstance(value, str):
+        try:
+            value.encode("utf-8")
+        except UnicodeEncodeError:
+            raise InputError(f"Experiment: {where}: {_shown(value)}: not UTF-8 (a lone surrogate)") from None
+        if "\0" in value and where.endswith(".file"):
+            raise InputError(f"Experiment: {where}: {_shown(value)}: a path cannot hold a NUL character")
+
+
+def _progress(progress):
+    """What reports progress: a _ProgressLine for True, the function given, or None."""
+    if progress is True or isinstance(progress, np.bool_) and progress:
+        return _ProgressLine("runs")
+    if progress is None or progress is False or isinstance(progress, np.bool_):
+        return None
+    if not callable(progress):
+        raise InputError(f"progress: expected True, False or a function (done, total), got {type(progress).__name__}")
+    try:
+        inspect.signature(progress).bind(0, 0)
+    except TypeError:
+        raise InputError(f"progress: {_shown(progress)}: cannot be called as progress(done, total)") from None
+    except ValueError:  # a builtin without a signature: called as given
+        pass
+    return progress
 
 
 def _float(value):

@@ -30,9 +30,12 @@ def plot(r, ax=None):
 
 def new_axes(ax=None, inches=7, dpi=100):
     """ax, or the Axes of a new square figure."""
-    if ax is not None:
-        return ax
     import matplotlib.pyplot as plt
+    from matplotlib.axes import Axes
+    if ax is not None:
+        if not isinstance(ax, Axes):
+            raise _polyplan.InputError(f"ax: expected a matplotlib Axes, got {type(ax).__name__}")
+        return ax
     _, ax = plt.subplots(figsize=(inches, inches), dpi=dpi)
     return ax
 

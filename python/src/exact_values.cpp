@@ -28,11 +28,10 @@ bool is_instance_of(py::handle value, const char* module, const char* name) {
   return py::isinstance(value, py::module_::import(module).attr(name));
 }
 
-bool is_boolean(py::handle value) { return PyBool_Check(value.ptr()) || is_instance_of(value, "numpy", "bool_"); }
-
-// A sequence that is not text (a str is a sequence of characters, never of numbers).
+// A sequence that is not text or bytes (a str is a sequence of characters, never of numbers).
 bool is_sequence(py::handle value) {
-  return PySequence_Check(value.ptr()) && !py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value);
+  return PySequence_Check(value.ptr()) && !py::isinstance<py::str>(value) && !py::isinstance<py::bytes>(value) &&
+         !PyByteArray_Check(value.ptr());
 }
 
 py::sequence sequence_of(py::handle value, const std::string& what, const std::string& expected) {
@@ -52,6 +51,8 @@ py::object as_vector(py::handle value) {
 
 }  // namespace
 
+bool is_boolean(py::handle value) { return PyBool_Check(value.ptr()) || is_instance_of(value, "numpy", "bool_"); }
+
 std::string type_name(py::handle value) {
   const py::handle type = py::type::handle_of(value);
   const std::string module = py::str(type.attr("__module__"));
@@ -60,15 +61,28 @@ std::string type_name(py::handle value) {
 }
 
 Rational exact_number(py::handle value, const std::string& what) {
+  if (py::isinstance<py::array>(value)) {  // numpy's 0-d arrays are numbers; others are not
+    const auto array = py::reinterpret_borrow<py::array>(value);
+    if (array.ndim() != 0 || array.dtype().kind() == 'O')
+      throw InputError(what + ": expected a number, got an array of shape " +
+                       std::string(py::str(value.attr("shape"))));
+    return exact_number(value.attr("item")(), what);
+  }
   if (is_boolean(value))
     throw InputError(what + ": expected a number, got a bool (" + std::string(py::str(value)) + ")");
-  if (py::isinstance<py::str>(value)) return parsed(value.cast<std::string>(), what);
+  if (py::isinstance<py::str>(value)) return parsed(text_of(value, what), what);
   if (is_instance_of(value, "fractions", "Fraction"))
     return parsed(decimal_text(value.attr("numerator"), what) + "/" + decimal_text(value.attr("denominator"), what),
                   what);
   if (is_instance_of(value, "decimal", "Decimal")) return parsed(py::str(value), what);
-  if (PyIndex_Check(value.ptr()))
-    return parsed(decimal_text(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())), what), what);
+  if (PyIndex_Check(value.ptr())) {
+    const auto index = py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr()));
+    if (!index) {
+      PyErr_Clear();
+      throw InputError(what + ": expected a number, got " + type_name(value));
+    }
+    return parsed(decimal_text(index, what), what);
+  }
   if (PyFloat_Check(value.ptr()) || is_instance_of(value, "numpy", "floating")) {
     const double d = py::float_(py::reinterpret_borrow<py::object>(value));
     if (!std::isfinite(d)) throw InputError(what + ": not a finite number (" + std::string(py::str(value)) + ")");
@@ -165,15 +179,24 @@ std::vector<Rational> exact_numbers(py::handle value, const std::string& what) {
 
 std::string text_of(py::handle value, const std::string& what) {
   if (!py::isinstance<py::str>(value)) throw InputError(what + ": expected a str, got " + type_name(value));
-  return value.cast<std::string>();
+  Py_ssize_t size = 0;
+  const char* utf8 = PyUnicode_AsUTF8AndSize(value.ptr(), &size);
+  if (!utf8) {  // a lone surrogate: not text UTF-8 can hold
+    PyErr_Clear();
+    throw InputError(what + ": " + std::string(py::str(py::repr(value))) +
+                     ": not valid Unicode (a lone surrogate: a file name that is not UTF-8?)");
+  }
+  return {utf8, static_cast<std::size_t>(size)};
 }
 
 std::string path_of(py::handle value, const std::string& what) {
-  if (py::isinstance(value, py::module_::import("os").attr("PathLike")))
-    return text_of(py::module_::import("os").attr("fspath")(value), what);
-  if (!py::isinstance<py::str>(value))
+  const bool path_like = py::isinstance(value, py::module_::import("os").attr("PathLike"));
+  if (!path_like && !py::isinstance<py::str>(value))
     throw InputError(what + ": expected a file's path (a str or a pathlib.Path), got " + type_name(value));
-  return value.cast<std::string>();
+  const std::string path = text_of(path_like ? py::module_::import("os").attr("fspath")(value) : value, what);
+  // The file system would stop at a NUL and open another file than the one named.
+  if (path.find('\0') != std::string::npos) throw InputError(what + ": a path with a NUL character");
+  return path;
 }
 
 bool flag_of(py::handle value, const std::string& what) {

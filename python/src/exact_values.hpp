@@ -43,5 +43,7 @@ py::array_t<double> points_array(const std::vector<ExactPoint>& points);
 
 // "list", "numpy.ndarray": how messages name what a caller passed.
 std::string type_name(py::handle value);
+// True or False, Python's or numpy's.
+bool is_boolean(py::handle value);
 
 }  // namespace polyplan::python

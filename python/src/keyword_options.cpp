@@ -17,9 +17,11 @@ namespace {
 // shortest round-trip text), a Fraction (as a float), a string, or for a point option a pair of
 // numbers ("x,y"); nothing else.
 std::string option_text(const std::string& owner, const OptionInfo& option, const std::string& key, py::handle value) {
-  if (PyBool_Check(value.ptr())) return value.ptr() == Py_True ? "true" : "false";
-  if (py::isinstance<py::str>(value)) return value.cast<std::string>();
-  if (PyIndex_Check(value.ptr())) return py::str(py::reinterpret_steal<py::object>(PyNumber_Index(value.ptr())));
+  const std::string where = owner + ": option " + key;
+  if (is_boolean(value)) return py::bool_(py::reinterpret_borrow<py::object>(value)) ? "true" : "false";
+  if (py::isinstance<py::str>(value)) return text_of(value, where);
+  // An integer as the exact reader takes it: within its digits (str() itself refuses 4300 digits).
+  if (PyIndex_Check(value.ptr()) && !py::isinstance<py::array>(value)) return to_string(exact_number(value, where));
   if (PyFloat_Check(value.ptr()) || py::isinstance(value, py::module_::import("numbers").attr("Real")))
     return py::repr(py::float_(py::reinterpret_borrow<py::object>(value)));
   if (option.kind.rfind("point", 0) == 0 && (PySequence_Check(value.ptr()) || py::isinstance<py::array>(value))) {
@@ -39,7 +41,7 @@ OptionValues keyword_options(const std::string& owner, const std::vector<OptionI
   std::string known;
   for (const OptionInfo& o : options) known += (known.empty() ? "" : ", ") + o.name;
   for (const auto& [key, value] : given) {
-    const std::string spelt = py::str(key);
+    const std::string spelt = text_of(key, owner + ": an option's name");
     std::string name = spelt;
     std::replace(name.begin(), name.end(), '_', '-');
     const auto option =

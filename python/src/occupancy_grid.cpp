@@ -35,17 +35,23 @@ GridMap grid_of(const py::handle& value, const std::string& what) {
   if (rows * columns > limits::map_cells)
     throw InputError(what + ": " + given + " has more than the supported " + std::to_string(limits::map_cells) +
                      " cells");
-  const py::array_t<std::int64_t> cells = a.attr("astype")("int64");
+  // Checked in the array's own type, before any conversion could wrap a large value round to 0 or 1.
+  const py::module_ np = py::module_::import("numpy");
+  const py::object bad =
+      np.attr("argwhere")(np.attr("logical_and")(np.attr("not_equal")(a, 0), np.attr("not_equal")(a, 1)));
+  if (py::len(bad) > 0) {
+    const py::object at = bad[py::int_(0)];
+    const std::string y = py::str(at[py::int_(0)]), x = py::str(at[py::int_(1)]);
+    throw InputError(what + "[" + y + ", " + x +
+                     "]: " + std::string(py::str(a[py::make_tuple(at[py::int_(0)], at[py::int_(1)])])) +
+                     " is neither 0 (free) nor 1 (blocked)");
+  }
+  const py::array_t<std::uint8_t> cells = a.attr("astype")("uint8");
   const auto v = cells.unchecked<2>();
   GridMap map{"grid (" + shape + ")", static_cast<int>(columns), static_cast<int>(rows), {}};
   map.blocked.resize(rows * columns);
   for (py::ssize_t y = 0; y < v.shape(0); ++y)
-    for (py::ssize_t x = 0; x < v.shape(1); ++x) {
-      if (v(y, x) != 0 && v(y, x) != 1)
-        throw InputError(what + "[" + std::to_string(y) + ", " + std::to_string(x) + "]: " + std::to_string(v(y, x)) +
-                         " is neither 0 (free) nor 1 (blocked)");
-      map.blocked[static_cast<std::size_t>(y) * columns + x] = v(y, x) == 1;
-    }
+    for (py::ssize_t x = 0; x < v.shape(1); ++x) map.blocked[static_cast<std::size_t>(y) * columns + x] = v(y, x) == 1;
   return map;
 }
 

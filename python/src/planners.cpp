@@ -30,8 +30,9 @@ struct PlannerHandle {
     if (names.empty()) throw InputError("plan: " + source + " has no query: give start and goal");
     if (query.is_none()) return 0;
     if (py::isinstance<py::str>(query)) {
-      const auto at = std::find(names.begin(), names.end(), query.cast<std::string>());
-      if (at == names.end()) throw InputError("plan: " + source + " has no query named " + query.cast<std::string>());
+      const std::string name = text_of(query, "plan: query");
+      const auto at = std::find(names.begin(), names.end(), name);
+      if (at == names.end()) throw InputError("plan: " + source + " has no query named " + name);
       return static_cast<std::size_t>(at - names.begin());
     }
     if (!PyIndex_Check(query.ptr()) || PyBool_Check(query.ptr()))

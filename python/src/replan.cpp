@@ -33,6 +33,7 @@ constexpr std::size_t max_table_cells = 65536;
 struct Drive {
   ReplanResult result;
   double sensor = 0;
+  bool tables_asked = false;
   std::vector<nlohmann::json> trace;
   std::vector<ReplanTables> tables;
 };
@@ -52,13 +53,21 @@ class CollectedTrace : public ReplanTrace {
   Drive* drive_;
 };
 
+// (x, y), a column and a row: two integers (numpy's too), not bools, text or bytes.
 GridPoint cell_of(const py::handle& value, const char* what) {
+  const auto refuse = [&] { throw InputError(std::string(what) + ": expected (x, y), a column and a row (integers)"); };
+  if (!py::isinstance<py::sequence>(value) && !py::isinstance<py::array>(value)) refuse();
+  if (py::isinstance<py::str>(value) || py::isinstance<py::bytes>(value) || PyByteArray_Check(value.ptr())) refuse();
+  std::vector<Rational> xy;
   try {
-    const auto pair = value.cast<std::pair<int, int>>();
-    return {pair.first, pair.second};
-  } catch (const py::cast_error&) {
-    throw InputError(std::string(what) + ": expected (x, y), a column and a row (integers)");
+    xy = exact_numbers(value, what);
+  } catch (const InputError&) {
+    refuse();
   }
+  if (xy.size() != 2) refuse();
+  for (const Rational& v : xy)
+    if (v.get_den() != 1 || !v.get_num().fits_sint_p()) refuse();
+  return {static_cast<int>(xy[0].get_num().get_si()), static_cast<int>(xy[1].get_num().get_si())};
 }
 
 py::array_t<double> table_array(const std::vector<OctileLength>& values, int height, int width) {
@@ -82,6 +91,7 @@ py::list cells(const std::vector<GridPoint>& points) {
 Drive drive(const py::object& map, const py::object& start, const py::object& goal, py::kwargs options) {
   const bool tables = options.contains("tables") && flag_of(options.attr("pop")("tables"), "replan: tables");
   Drive out;
+  out.tables_asked = tables;
   ReplanOptions replanning = keyword_command_options(replan_option_table(), "replan", options);
   out.sensor = replanning.sensor_radius;
   const GridPoint from = cell_of(start, "start"), to = cell_of(goal, "goal");
@@ -168,7 +178,7 @@ void bind_replan(py::module_& m) {
       .def_property_readonly(
           "trace",
           [](const Drive& d) -> py::object {
-            if (d.tables.empty()) return py::none();
+            if (!d.tables_asked) return py::none();
             py::list out;
             for (const nlohmann::json& line : d.trace) out.append(from_json(line));
             return out;
@@ -179,7 +189,7 @@ void bind_replan(py::module_& m) {
       .def_property_readonly(
           "tables",
           [](const Drive& d) -> py::object {
-            if (d.tables.empty()) return py::none();
+            if (!d.tables_asked) return py::none();
             py::list out;
             for (const ReplanTables& t : d.tables) {
               py::dict one;
@@ -197,8 +207,9 @@ void bind_replan(py::module_& m) {
           "The JSON text `polyplan replan --json -` prints for this drive.")
       .def(
           "svg",
-          [](const Drive& d, bool animate) {
+          [](const Drive& d, const py::object& animated) {
             const ReplanResult& r = d.result;
+            const bool animate = flag_of(animated, "svg: animate");
             return (animate ? draw_replan_animation(r, replan_title(r)) : draw_replan(r, replan_title(r))).str();
           },
           py::arg("animate") = false, "The picture (or, animate=True, the animation) as SVG text.")

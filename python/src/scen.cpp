@@ -8,6 +8,7 @@
 #include "plans.hpp"
 
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/registry/grid_scenario_answers.hpp>
 #include <polyplan/registry/scenario_answers.hpp>
 
@@ -34,7 +35,13 @@ std::vector<ScenarioQuery> queries_of(const py::object& given, const GridMap& ma
     check_scenarios_match(queries, map.width, map.height, map.source, path);
     return queries;
   }
-  const py::array a = py::module_::import("numpy").attr("asarray")(given);
+  py::array a;
+  try {
+    a = py::module_::import("numpy").attr("asarray")(given);
+  } catch (const py::error_already_set& e) {  // ragged lists, objects numpy cannot read
+    throw InputError("scen: scenarios: expected a .scen file's path or an (N, 4) integer array, got " +
+                     type_name(given) + " that numpy cannot read as an array (" + e.what() + ")");
+  }
   const char kind = a.ndim() == 2 ? a.dtype().kind() : '?';
   if ((a.ndim() != 2 || a.shape(1) != 4) || (kind != 'i' && kind != 'u'))
     throw InputError(
@@ -42,16 +49,26 @@ std::vector<ScenarioQuery> queries_of(const py::object& given, const GridMap& ma
         "goal_x, goal_y), got " +
         type_name(given) + " of shape " + std::string(py::str(a.attr("shape"))) + " and dtype " +
         std::string(py::str(a.dtype())));
+  if (static_cast<std::size_t>(a.shape(0)) > limits::scenario_queries)
+    throw InputError("scen: scenarios: " + std::to_string(a.shape(0)) + " queries, more than the supported " +
+                     std::to_string(limits::scenario_queries));
+  // Each coordinate within the map (x to its width, y to its height), checked in the array's own
+  // type, before a conversion could wrap a huge value round into range.
+  const py::module_ np = py::module_::import("numpy");
+  const py::object bounds = np.attr("array")(py::make_tuple(map.width, map.height, map.width, map.height));
+  const py::object outside =
+      np.attr("argwhere")(np.attr("logical_or")(np.attr("less")(a, 0), np.attr("greater")(a, bounds)));
+  if (py::len(outside) > 0) {
+    const py::object at = outside[py::int_(0)];
+    throw InputError("scen: scenarios[" + std::string(py::str(at[py::int_(0)])) +
+                     "]: " + std::string(py::str(a[py::make_tuple(at[py::int_(0)], at[py::int_(1)])])) +
+                     " is outside the " + std::to_string(map.width) + " x " + std::to_string(map.height) + " map");
+  }
   const py::array_t<std::int64_t> rows = a.attr("astype")("int64");
   const auto v = rows.unchecked<2>();
   std::vector<ScenarioQuery> queries;
-  for (py::ssize_t i = 0; i < v.shape(0); ++i) {
-    for (py::ssize_t k = 0; k < 4; ++k)
-      if (v(i, k) < 0 || v(i, k) > (k % 2 ? map.height : map.width))
-        throw InputError("scen: scenarios[" + std::to_string(i) + "]: " + std::to_string(v(i, k)) + " is outside the " +
-                         std::to_string(map.width) + " x " + std::to_string(map.height) + " map");
+  for (py::ssize_t i = 0; i < v.shape(0); ++i)
     queries.push_back({0, map.width, map.height, int(v(i, 0)), int(v(i, 1)), int(v(i, 2)), int(v(i, 3))});
-  }
   return queries;
 }
 
@@ -59,17 +76,21 @@ std::vector<ScenarioQuery> queries_of(const py::object& given, const GridMap& ma
 std::optional<std::vector<std::optional<double>>> reference_of(const py::object& given, std::size_t queries) {
   if (given.is_none()) return std::nullopt;
   if (is_path(given)) return read_reference_lengths(path_of(given, "scen: reference"), queries);
-  std::vector<std::optional<double>> lengths;
-  const py::object real = py::module_::import("numbers").attr("Real");
-  for (const py::handle item : py::iter(given)) {
-    const bool none =
-        item.is_none() ||
-        (py::isinstance(item, real) && std::isnan(py::float_(py::reinterpret_borrow<py::object>(item)).cast<double>()));
-    lengths.push_back(none ? std::nullopt : std::optional<double>(finite_number(item, "scen: reference")));
-  }
-  if (lengths.size() != queries)
-    throw InputError("scen: reference: " + std::to_string(lengths.size()) + " lengths for " + std::to_string(queries) +
+  const bool sequence = (py::isinstance<py::sequence>(given) || py::isinstance<py::array>(given)) &&
+                        !py::isinstance<py::bytes>(given) && !PyByteArray_Check(given.ptr());
+  if (!sequence || (py::isinstance<py::array>(given) && py::reinterpret_borrow<py::array>(given).ndim() != 1))
+    throw InputError(
+        "scen: reference: expected a CSV file's path or one length per query (a list or a 1-d array), got " +
+        type_name(given));
+  if (py::len(given) != queries)
+    throw InputError("scen: reference: " + std::to_string(py::len(given)) + " lengths for " + std::to_string(queries) +
                      " queries");
+  std::vector<std::optional<double>> lengths;
+  for (const py::handle item : py::iter(given)) {
+    const bool nan = PyFloat_Check(item.ptr()) && std::isnan(PyFloat_AsDouble(item.ptr()));  // numpy's float64 too
+    if (item.is_none() || nan) lengths.emplace_back();
+    else lengths.emplace_back(finite_number(item, "scen: reference[" + std::to_string(lengths.size()) + "]"));
+  }
   return lengths;
 }
 

@@ -23,7 +23,7 @@ namespace {
 // its checks and messages are the file's, the graph named "graph").
 GraphFile graph_of(const py::object& graph) {
   if (py::isinstance<py::str>(graph) || py::hasattr(graph, "__fspath__"))
-    return read_graph(py::str(py::module_::import("os").attr("fspath")(graph)).cast<std::string>());
+    return read_graph(path_of(graph, "search_graph: graph"));
   // Numpy fields and scalars, nesting and cycles as for a world given as a dict; floats stay floats.
   const py::object plain = py::module_::import("polyplan").attr("_json_value")(graph, "graph", false);
   return parse_graph(py::module_::import("json").attr("dumps")(plain).cast<std::string>(), "graph");
@@ -31,7 +31,7 @@ GraphFile graph_of(const py::object& graph) {
 
 // A vertex index: any integer (numpy's among them), checked against the graph before it is narrowed.
 DigraphVertexId vertex_of(const GraphFile& file, const py::object& index, const char* what) {
-  if (!PyIndex_Check(index.ptr()) || PyBool_Check(index.ptr()))
+  if (!PyIndex_Check(index.ptr()) || is_boolean(index) || py::isinstance<py::array>(index))
     throw InputError(std::string(what) + ": expected a vertex index (an int), got " + type_name(index));
   const py::int_ value = py::reinterpret_steal<py::int_>(PyNumber_Index(index.ptr()));
   if (value < py::int_(0) || value >= py::int_(file.vertices.size())) {
@@ -86,7 +86,9 @@ void bind_search(py::module_& m) {
   m.def(
       "search_graph",
       [](const py::object& graph, const py::object& start_index, const py::object& goal_index,
-         const std::string& method, double weight) {
+         const py::object& method_given, const py::object& weight_given) {
+        const std::string method = text_of(method_given, "method");
+        const double weight = finite_number(weight_given, "weight");
         const GraphFile file = graph_of(graph);
         const DigraphVertexId start = vertex_of(file, start_index, "start"), goal = vertex_of(file, goal_index, "goal");
         SearchOptions options;
