@@ -108,10 +108,10 @@ bool same_value(const std::string& a, const std::string& b) {
 // not worth a label).
 OptionValues not_defaults(const PlannerListing& planner, const OptionValues& values) {
   OptionValues out;
-  for (const auto& [name, value] : values) {
+  for (const auto& given : values) {  // not a structured binding: clang 14 cannot capture one
     const auto option = std::find_if(planner.options.begin(), planner.options.end(),
-                                     [&](const OptionInfo& o) { return o.name == name; });
-    if (option == planner.options.end() || !same_value(option->default_value, value)) out.emplace_back(name, value);
+                                     [&](const OptionInfo& o) { return o.name == given.first; });
+    if (option == planner.options.end() || !same_value(option->default_value, given.second)) out.push_back(given);
   }
   return out;
 }
