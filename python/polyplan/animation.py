@@ -10,6 +10,7 @@ from typing import List, NamedTuple, Optional
 import numpy as np
 
 from . import _polyplan, plotting
+from ._arguments import path as _path, shown
 
 MAX_FRAMES = 200  # a longer sequence of steps (expansions, cells driven) is shown every so many steps
 MOTION_FRAMES = 100  # poses along a path, evenly spaced by distance
@@ -33,11 +34,11 @@ def animate(obj, ax=None, frames=None, interval=50, *, what="path", graph=None, 
         raise _polyplan.InputError(f'animate: what={what!r}: expected "path" or "search"')
     if frames is not None:
         if _whole(frames) is None or not 1 <= _whole(frames) <= MAX_ASKED_FRAMES:
-            raise _polyplan.InputError(f"animate: frames={_shown_value(frames)}: expected a whole number in "
+            raise _polyplan.InputError(f"animate: frames={_quoted(frames)}: expected a whole number in "
                                        f"[1, {MAX_ASKED_FRAMES}]")
         frames = _whole(frames)
     if not _is_real(interval) or not 0 <= interval <= MAX_INTERVAL:
-        raise _polyplan.InputError(f"animate: interval={_shown_value(interval)}: expected a number of milliseconds "
+        raise _polyplan.InputError(f"animate: interval={_quoted(interval)}: expected a number of milliseconds "
                                    f"in [0, {MAX_INTERVAL}]")
     if ax is not None and not _is_axes(ax):
         raise _polyplan.InputError(f"animate: ax: expected a matplotlib Axes, got {type(ax).__name__}")
@@ -90,12 +91,8 @@ def _number(value):
     return None if math.isnan(x) else x
 
 
-def _shown_value(value):
-    """repr(value), an integer too long to write named by its bits (str() refuses 4300 digits)."""
-    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 64:
-        return f"(an integer of {value.bit_length()} bits)"
-    text = repr(value)
-    return text if len(text) <= 80 else text[:77] + "..."
+def _quoted(value):
+    return shown(value, 80)
 
 
 def _is_axes(ax):
@@ -259,14 +256,14 @@ def graph_vertices(graph):
     for i, v in enumerate(vertices):
         x = v["x"]
         if not isinstance(x, list) or len(x) != 2 or not all(_is_real(c) for c in x):
-            raise _polyplan.InputError(f"graph[{i}].x: expected a point [x, y], got {_shown_value(x)}")
+            raise _polyplan.InputError(f"graph[{i}].x: expected a point [x, y], got {_quoted(x)}")
         neighbours = v.get("neighbors", [])
         if not isinstance(neighbours, list):
             raise _polyplan.InputError(f"graph[{i}].neighbors: expected a list of vertex indices, got "
-                                       f"{_shown_value(neighbours)}")
+                                       f"{_quoted(neighbours)}")
         for j, u in enumerate(neighbours):
             if not _is_real(u) or u != int(u) or not 0 <= u < count:
-                raise _polyplan.InputError(f"graph[{i}].neighbors[{j}]: {_shown_value(u)} is not a vertex "
+                raise _polyplan.InputError(f"graph[{i}].neighbors[{j}]: {_quoted(u)} is not a vertex "
                                            f"(0-based indices [0, {count}))")
         v["neighbors"] = [int(u) for u in neighbours]
     return vertices
@@ -336,7 +333,7 @@ def _checked_result(result, count):
     def vertex(value, where):
         index = _whole(value)
         if index is None or not 0 <= index < count:
-            raise _polyplan.InputError(f"{what}: {where}: {_shown_value(value)} is not a vertex of graph, which has "
+            raise _polyplan.InputError(f"{what}: {where}: {_quoted(value)} is not a vertex of graph, which has "
                                        f"{count} vertices (0-based indices [0, {count}))")
         return index
 
@@ -359,11 +356,11 @@ def _checked_result(result, count):
         for key in ("g", "h", "f"):
             line[key] = _number(t[key])
             if line[key] is None:
-                raise _polyplan.InputError(f"{what}: {where}.{key}: expected a number, got {_shown_value(t[key])}")
+                raise _polyplan.InputError(f"{what}: {where}.{key}: expected a number, got {_quoted(t[key])}")
         step = _whole(t["step"])
         if step is None or step < 0:
             raise _polyplan.InputError(f"{what}: {where}.step: expected a whole number >= 0, got "
-                                       f"{_shown_value(t['step'])}")
+                                       f"{_quoted(t['step'])}")
         line["step"] = step
         given = t["open"]
         if _whole(given) is not None:
@@ -372,17 +369,17 @@ def _checked_result(result, count):
             line["open"] = [vertex(u, f"{where}.open[{j}]") for j, u in enumerate(np.asarray(given).ravel().tolist())]
         else:
             raise _polyplan.InputError(f"{what}: {where}.open: expected the open list's size or its vertices, got "
-                                       f"{_shown_value(given)}")
+                                       f"{_quoted(given)}")
         checked.append(line)
     path = result.get("path", [])
     if path is None:
         path = []
     if not isinstance(path, (list, tuple, np.ndarray)):
-        raise _polyplan.InputError(f"{what}: path: expected a list of vertex indices, got {_shown_value(path)}")
+        raise _polyplan.InputError(f"{what}: path: expected a list of vertex indices, got {_quoted(path)}")
     path = [vertex(v, f"path[{i}]") for i, v in enumerate(list(path))]
     cost = result.get("cost")
     if cost is not None and _number(cost) is None:
-        raise _polyplan.InputError(f"{what}: cost: expected a number or None, got {_shown_value(cost)}")
+        raise _polyplan.InputError(f"{what}: cost: expected a number or None, got {_quoted(cost)}")
     return checked, path, None if cost is None else _number(cost)
 
 
@@ -484,7 +481,7 @@ def search_frames(graph, result, folder, goal=None):
     MAX_FRAME_VERTICES vertices or a trace of more than MAX_FRAME_STEPS steps."""
     from matplotlib.figure import Figure
 
-    folder = _folder(folder, "search_graph: frames")
+    folder = _path(folder, "search_graph: frames", utf8=False)
     vertices = graph_vertices(graph)
     if len(vertices) > MAX_FRAME_VERTICES:
         raise _polyplan.InputError(f"search_graph: frames: the graph has {len(vertices)} vertices, more than the "
@@ -511,24 +508,6 @@ def search_frames(graph, result, folder, goal=None):
             raise _polyplan.InputError(f"search_graph: frames: {repr(written[-1])[1:-1]}: cannot write "
                                        f"({e.strerror or e})") from None
     return written
-
-
-def _folder(folder, what):
-    """A folder's path given as a str or an os.PathLike (not bytes, as every path polyplan takes),
-    as a str; InputError naming `what` for anything else."""
-    if isinstance(folder, os.PathLike):
-        try:
-            folder = os.fspath(folder)
-        except TypeError as e:
-            raise _polyplan.InputError(f"{what}: {e}") from None
-    if not isinstance(folder, str):
-        raise _polyplan.InputError(f"{what}: expected a folder's path (a str or a pathlib.Path), got "
-                                   f"{type(folder).__name__}")
-    if not folder:
-        raise _polyplan.InputError(f"{what}: expected a folder's path, got an empty str")
-    if "\0" in folder:
-        raise _polyplan.InputError(f"{what}: {repr(folder)[1:-1]}: a path cannot hold a NUL character")
-    return folder
 
 
 def _drive(drive, ax, frames):
@@ -571,16 +550,16 @@ def _descent(result, world, ax, frames):
     parameters, critical = result.get("parameters"), result["critical_points"]
     if not isinstance(parameters, dict) or not all(isinstance(k, str) for k in parameters):
         raise _polyplan.InputError("animate: polyplan.potential's result: parameters: expected the dict of the "
-                                   f"potential-field planner's options it returns, got {_shown_value(parameters)}")
+                                   f"potential-field planner's options it returns, got {_quoted(parameters)}")
     if not isinstance(critical, (list, tuple)):
         raise _polyplan.InputError("animate: polyplan.potential's result: critical_points: expected a list of dicts "
-                                   f"{{at, kind}}, got {_shown_value(critical)}")
+                                   f"{{at, kind}}, got {_quoted(critical)}")
     for i, p in enumerate(critical):
         at = p.get("at") if isinstance(p, dict) else None
         point = isinstance(at, (list, tuple, np.ndarray)) and len(at) == 2 and all(_number(c) is not None for c in at)
         if not point or not isinstance(p.get("kind"), str):
             raise _polyplan.InputError(f"animate: polyplan.potential's result: critical_points[{i}]: expected a dict "
-                                       f"{{at: [x, y], kind: str}}, got {_shown_value(p)}")
+                                       f"{{at: [x, y], kind: str}}, got {_quoted(p)}")
     plan = planner("potential-field", world, **parameters).plan(record=True)
     update, steps = _world_motion(plan, ax, frames)
     for kind, marker in CRITICAL_MARKERS.items():

@@ -19,6 +19,7 @@ import time
 import numpy as np
 
 from . import _polyplan
+from ._arguments import path as _path, shown as _shown
 from ._polyplan import InputError
 
 
@@ -188,35 +189,6 @@ def _whole(value, name, least, most):
     if value < least or most is not None and value > most:
         raise InputError(f"{name} {_shown(value)}: expected a whole number in "
                          f"[{least}, {most if most is not None else 'inf'}]")
-    return value
-
-
-def _shown(value):
-    """repr(value); an integer too long to write (str() refuses 4300 digits) by its bits."""
-    if isinstance(value, int) and not isinstance(value, bool) and value.bit_length() > 64:
-        return f"(an integer of {value.bit_length()} bits)"
-    text = repr(value)
-    return text if len(text) <= 300 else text[:297] + "..."
-
-
-def _path(value, what, kind="folder"):
-    """A file's or folder's path as the compiled half takes it: a str, or an os.PathLike giving one;
-    without NUL (the C++ side would read or write the path cut short there) and in UTF-8 (a file
-    name of bytes that are not UTF-8, decoded with surrogates, cannot be passed on)."""
-    if isinstance(value, os.PathLike):
-        try:
-            value = os.fspath(value)
-        except TypeError as e:
-            raise InputError(f"{what}: {e}") from None
-    if not isinstance(value, str):
-        raise InputError(f"{what}: expected a {kind}'s path (a str or a pathlib.Path), got {type(value).__name__}")
-    if "\0" in value:
-        raise InputError(f"{what}: {_shown(value)}: a path cannot hold a NUL character")
-    try:
-        value.encode("utf-8")
-    except UnicodeEncodeError:
-        raise InputError(f"{what}: {_shown(value)}: not UTF-8 (a name of bytes the file system did not decode; "
-                         "rename the file or folder)") from None
     return value
 
 

@@ -677,7 +677,7 @@ def test_animate_refuses_a_potential_result_that_is_not_one(change, match):
     ("/proc/x", "frames: /proc/x: cannot make the folder"),
     ("/dev/null", "frames: /dev/null: cannot make the folder"),
     (OFFICE, "cannot make the folder"),
-    ("/tmp/a\0b", r"frames: /tmp/a\\x00b: a path cannot hold a NUL character"),
+    ("/tmp/a\0b", "frames: .*a path cannot hold a NUL character"),
 ])
 def test_search_graph_frames_refuse_a_folder_they_cannot_write(folder, match):
     refused(match, polyplan.search_graph, SMALL_GRAPH, 0, 6, frames=folder)
