@@ -1,8 +1,8 @@
-// polyplan check WORLD.json PATH.json [--json -]: is this path a valid motion (a polyline; a car's
-// segments)? Exit 0 when it is, 1 when it is not, 2 on bad input.
+// polyplan check PROBLEM.json PATH.json [--json -]: is this path a valid motion of the problem's
+// robot (a polyline; a rotating robot's poses; a car's segments; an arm's joint angles)? Exit 0 when
+// it is, 1 when it is not, 2 on bad input.
 #include "cli/command.hpp"
 
-#include <polyplan/io/world_reader.hpp>
 #include <polyplan/registry/robot_path_check.hpp>
 
 #include <iostream>
@@ -18,9 +18,9 @@ struct CheckOptions {
 
 int run_check(const CheckOptions& options) {
   std::vector<std::string> warnings;
-  const World world = read_world(options.world, &warnings);
+  const Problem problem = Problem::read(options.world, &warnings);
   print_warnings(warnings);
-  const PathCheck result = check_path_file(world, options.path);
+  const PathCheck result = check_path_file(problem, options.path);
   nlohmann::json out{{"valid", result.valid}, {"reason", result.reason}};
   if (result.segment) out["segment"] = *result.segment;
   if (!options.json.empty()) write_json(out, options.json);
@@ -32,11 +32,13 @@ int run_check(const CheckOptions& options) {
 
 void add_check_command(CLI::App& app, Action& run) {
   auto options = std::make_shared<CheckOptions>();
-  CLI::App* command = app.add_subcommand("check", "Check exactly whether a path is free in a world");
-  command->add_option("world", options->world, "World file (JSON)")->required();
+  CLI::App* command =
+      app.add_subcommand("check", "Check exactly whether a path is a free motion of a world's robot or an arm");
+  command->add_option("problem", options->world, "World or arm file (JSON)")->required();
   command
       ->add_option("path", options->path,
-                   "Path file: {\"path\": [[x, y], ...]}; for a car, its segments as plan --json writes them")
+                   "Path file {\"path\": [...]}: [x, y] points; a rotating robot's [x, y, degrees] or [x, y, sin, "
+                   "cos] poses; an arm's joint angles; for a car, its segments as plan --json writes them")
       ->required();
   command->add_option("--json", options->json,
                       "Write {\"valid\", \"reason\"} as JSON to this file ('-' for standard output)");

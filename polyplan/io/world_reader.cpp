@@ -1,6 +1,7 @@
 #include <polyplan/io/world_reader.hpp>
 
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/geometry/world_validation.hpp>
 #include <polyplan/io/detail/exact_json.hpp>
 #include <polyplan/io/wkt_reader.hpp>
@@ -234,6 +235,31 @@ std::vector<ExactPoint> parse_path(const std::string& text, const std::string& n
   const json& points = r.required(root, "path", "path file");
   if (!points.is_array() || points.empty()) r.fail("path", "expected a non-empty list of points [[x, y], ...]");
   return r.ring(points, "path");
+}
+
+std::vector<std::vector<Rational>> read_path_rows(const std::string& path) {
+  return parse_path_rows(detail::read_text_file(path), path);
+}
+
+std::vector<std::vector<Rational>> parse_path_rows(const std::string& text, const std::string& name) {
+  Reader r(name);
+  json root = r.parse(text);
+  if (!root.is_object()) r.fail("path file", "expected a JSON object {\"path\": [[...], ...]}");
+  const json& rows = r.required(root, "path", "path file");
+  if (!rows.is_array() || rows.empty()) r.fail("path", "expected a non-empty list of configurations [[...], ...]");
+  if (rows.size() > limits::points)
+    r.fail("path",
+           std::to_string(rows.size()) + " configurations, more than the supported " + std::to_string(limits::points));
+  std::vector<std::vector<Rational>> out;
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    const std::string object = "path[" + std::to_string(i) + "]";
+    if (!rows[i].is_array() || rows[i].empty() || rows[i].size() > 64 || (i > 0 && rows[i].size() != rows[0].size()))
+      r.fail(object, "expected a list of numbers as long as path[0]'s");
+    out.emplace_back();
+    for (std::size_t k = 0; k < rows[i].size(); ++k)
+      out.back().push_back(r.number(rows[i][k], object + "[" + std::to_string(k) + "]"));
+  }
+  return out;
 }
 
 }  // namespace polyplan

@@ -21,4 +21,9 @@ std::vector<ExactPoint> read_path(const std::string& path);
 // The same from text already in memory; `name` stands for the file in messages.
 std::vector<ExactPoint> parse_path(const std::string& text, const std::string& name);
 
+// A path file of any robot's configurations, {"path": [[...], ...]}, each row as many exact
+// numbers as the first: (x, y) points, (x, y, degrees) or (x, y, sin, cos) poses, joint angles.
+std::vector<std::vector<Rational>> read_path_rows(const std::string& path);
+std::vector<std::vector<Rational>> parse_path_rows(const std::string& text, const std::string& name);
+
 }  // namespace polyplan

@@ -1,6 +1,7 @@
 #include <polyplan/rotation/pose_path_check.hpp>
 
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/turn_enclosure.hpp>
 #include <polyplan/rotation/rotation_layers.hpp>
 
@@ -60,6 +61,20 @@ PathCheck check_pose_path(const World& world, const std::vector<Pose>& path) {
     }
   }
   return {};
+}
+
+Pose pose_from_row(const std::vector<Rational>& row, const std::string& where) {
+  if (row.size() == 3) {
+    const double degrees = to_double(row[2]);
+    return {{row[0], row[1]}, exact_rotation(degrees), degrees};
+  }
+  if (row.size() != 4)
+    throw InputError(where + ": " + std::to_string(row.size()) +
+                     " numbers: a pose is (x, y, degrees) or (x, y, sin, cos)");
+  const Rotation r{row[2], row[3]};
+  if (r.sin * r.sin + r.cos * r.cos != 1)
+    throw InputError(where + ": sin and cos with sin² + cos² ≠ 1: not an exact rotation");
+  return {{row[0], row[1]}, r, degrees_of(r)};
 }
 
 }  // namespace polyplan

@@ -8,6 +8,7 @@
 #include <polyplan/geometry/rotation.hpp>
 #include <polyplan/geometry/world.hpp>
 
+#include <string>
 #include <vector>
 
 namespace polyplan {
@@ -16,5 +17,10 @@ namespace polyplan {
 inline constexpr double rotation_check_step = 5;
 
 PathCheck check_pose_path(const World& world, const std::vector<Pose>& path);
+
+// A pose as a path gives it: (x, y, degrees), turned by the exact rotation the planner uses for
+// that angle (exact_rotation), or (x, y, sin, cos) exactly. InputError beginning with `where` for
+// another count of numbers, or a sin and cos that are not an exact rotation.
+Pose pose_from_row(const std::vector<Rational>& row, const std::string& where);
 
 }  // namespace polyplan

@@ -67,17 +67,6 @@ Rows exact_rows(const py::handle& path) {
   return rows;
 }
 
-Pose pose_of(const std::vector<Rational>& row, std::size_t i) {
-  if (row.size() == 3) {
-    const double degrees = to_double(row[2]);
-    return {{row[0], row[1]}, exact_rotation(degrees), degrees};
-  }
-  const Rotation r{row[2], row[3]};
-  if (r.sin * r.sin + r.cos * r.cos != 1)
-    throw InputError("path[" + std::to_string(i) + "]: sin and cos with sin² + cos² ≠ 1: not an exact rotation");
-  return {{row[0], row[1]}, r, degrees_of(r)};
-}
-
 PathCheck check_world_rows(WorldHandle& world, const py::handle& path) {
   const World& w = world.world();
   if (w.robot.car) {
@@ -103,7 +92,8 @@ PathCheck check_world_rows(WorldHandle& world, const py::handle& path) {
   }
   const Rows rows = exact_rows(path);
   std::vector<Pose> poses;
-  for (std::size_t i = 0; i < rows.size(); ++i) poses.push_back(pose_of(rows[i], i));
+  for (std::size_t i = 0; i < rows.size(); ++i)
+    poses.push_back(pose_from_row(rows[i], "path[" + std::to_string(i) + "]"));
   return locked(world.lock(), [&] { return check_pose_path(w, poses); });
 }
 

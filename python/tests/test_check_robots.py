@@ -93,3 +93,33 @@ def test_a_plan_of_another_problem_and_an_empty_path_are_input_errors():
         polyplan.check(a, polyplan.plan(b)[0])
     with pytest.raises(polyplan.InputError, match="at least one"):
         polyplan.check(a, [])
+
+
+def program_check(tmp_path, problem_file, rows):
+    """`polyplan check PROBLEM PATH`'s (valid, reason) for a path of rows (exact numbers as text)."""
+    import json
+    from conftest import run_cli
+    path = tmp_path / "path.json"
+    path.write_text(json.dumps({"path": [[str(v) for v in row] for row in rows]}))
+    code, out, err = run_cli("check", problem_file, str(path), "--json", "-")
+    assert code in (0, 1), err
+    answer = json.loads(out)
+    return answer["valid"], answer["reason"]
+
+
+def test_the_program_checks_rotating_and_arm_paths_as_python_does(tmp_path):
+    piano = data("worlds", "rotation_piano.json")
+    world = polyplan.read_world(piano)
+    plan = polyplan.plan(world, planner="rotation")[0]
+    exact = plan.path_exact
+    assert program_check(tmp_path, piano, exact) == polyplan.check(world, exact) == (True, "")
+    both = [exact[0], exact[-1]]
+    assert program_check(tmp_path, piano, both) == polyplan.check(world, both)
+    assert "moves and turns at once" in program_check(tmp_path, piano, both)[1]
+    arm_file = data("arms", "two_link_points.json")
+    arm = polyplan.read_arm(arm_file)
+    swing = [[0.76, 0.12], [-1.94, 0.12]]
+    assert program_check(tmp_path, arm_file, swing) == polyplan.check(arm, swing)
+    assert program_check(tmp_path, arm_file, swing)[0] is False
+    steady = polyplan.plan(arm, planner="grid")[0].path
+    assert program_check(tmp_path, arm_file, steady.tolist()) == (True, "")
