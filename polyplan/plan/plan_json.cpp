@@ -15,15 +15,14 @@ json value_json(const FactValue& value) {
 
 // "roadmap.vertices" → out["roadmap"]["vertices"].
 void put_fact(json& out, const std::string& name, const FactValue& value) {
+  const std::vector<std::string> keys = fact_json_keys(name);
   json* at = &out;
-  std::size_t begin = 0;
-  for (std::size_t dot = name.find('.'); dot != std::string::npos; dot = name.find('.', begin)) {
-    at = &(*at)[name.substr(begin, dot - begin)];
+  for (std::size_t k = 0; k + 1 < keys.size(); ++k) {
+    at = &(*at)[keys[k]];
     if (!at->is_object() && !at->is_null())
       throw std::logic_error("plan_json: the fact " + name + " nests inside a fact that is a value");
-    begin = dot + 1;
   }
-  (*at)[name.substr(begin)] = value_json(value);
+  (*at)[keys.back()] = value_json(value);
 }
 
 void add_path(json& out, const std::vector<ExactPoint>& path) {
@@ -100,6 +99,17 @@ json report_json(const PlanReport<Configuration>& report, const std::string& que
 }
 
 }  // namespace
+
+std::vector<std::string> fact_json_keys(const std::string& name) {
+  std::vector<std::string> keys;
+  std::size_t begin = 0;
+  for (std::size_t dot = name.find('.'); dot != std::string::npos; dot = name.find('.', begin)) {
+    keys.push_back(name.substr(begin, dot - begin));
+    begin = dot + 1;
+  }
+  keys.push_back(name.substr(begin));
+  return keys;
+}
 
 json facts_json(const Facts& facts) {
   json out = json::object();

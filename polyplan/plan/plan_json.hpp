@@ -18,6 +18,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <string>
+#include <vector>
 
 namespace polyplan {
 
@@ -35,5 +36,8 @@ nlohmann::json plan_json(const PlanReport<CarState>& report, const std::string& 
 
 // The facts alone, nested as in plan_json ({"roadmap": {"vertices": 120, ...}, ...}).
 nlohmann::json facts_json(const Facts& facts);
+
+// Where a fact nests in that JSON: "roadmap.vertices" is {"roadmap", "vertices"}.
+std::vector<std::string> fact_json_keys(const std::string& name);
 
 }  // namespace polyplan

@@ -1,10 +1,9 @@
 #include <polyplan/registry/grid_scenario_answers.hpp>
 
 #include <polyplan/grids/movingai_grid.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 
 #include <nlohmann/json.hpp>
-
-#include <chrono>
 
 namespace polyplan {
 namespace {
@@ -30,10 +29,10 @@ OptionTable<GridScenarioSearch> grid_scenario_table() {
 json answer_grid_scenarios(const GridMap& map, const std::vector<ScenarioQuery>& scenarios,
                            const std::string& scenario_file, const GridScenarioSearch& options) {
   const SearchOptions& search = options.search;
-  const auto started = std::chrono::steady_clock::now();
+  const Stopwatch preprocessing;
   check_scenarios_fit(map, scenarios, scenario_file);
   MovingAiGridSearch grid(map);
-  const double preprocess = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  const double preprocess = preprocessing.seconds();
   const bool weighted = search.algorithm == Search::wastar;
 
   json queries = json::array();

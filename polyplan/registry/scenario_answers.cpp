@@ -1,11 +1,11 @@
 #include <polyplan/registry/scenario_answers.hpp>
 
+#include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/roadmaps/euclidean_shortest_paths.hpp>
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <thread>
 
@@ -14,10 +14,7 @@
 namespace polyplan {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using nlohmann::json;
-
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 double peak_memory_mb() {
   rusage usage{};
@@ -68,12 +65,12 @@ json answer_scenarios(const GridMap& map, const std::vector<ScenarioQuery>& scen
                       const std::optional<std::vector<std::optional<double>>>& reference, const ScenarioBudget& given) {
   ScenarioBudget budget = given;
   if (!budget.threads) budget.threads = std::max(1u, std::thread::hardware_concurrency());
-  const auto started = Clock::now();
+  const Stopwatch preprocessing;
   const EuclideanShortestPaths paths(
       map, {.table_bytes = budget.table_mb << 20, .label_bytes = budget.table_mb << 20, .threads = budget.threads});
-  const double preprocess = seconds_since(started);
+  const double preprocess = preprocessing.seconds();
 
-  const auto batch = Clock::now();
+  const Stopwatch batch;
   std::vector<std::pair<IntegerPoint, IntegerPoint>> asked;
   for (const ScenarioQuery& q : scenarios) asked.push_back({{q.start_x, q.start_y}, {q.goal_x, q.goal_y}});
   bool short_of_threads = false;
@@ -82,7 +79,7 @@ json answer_scenarios(const GridMap& map, const std::vector<ScenarioQuery>& scen
   if ((short_of_threads || paths.short_of_threads()) && budget.warn)
     budget.warn("not all of the " + std::to_string(budget.threads) +
                 " threads asked could start (the system's limits); the work went on with those that did");
-  const double batch_seconds = seconds_since(batch);
+  const double batch_seconds = batch.seconds();
 
   std::size_t mismatches = 0;
   double max_difference = 0;

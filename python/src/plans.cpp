@@ -82,13 +82,10 @@ py::object facts_of(const Report& report) {
   for (const auto& [name, value] : report.facts().entries()) {
     py::object numbers = numbers_of(value);
     if (numbers.is_none()) continue;
+    const std::vector<std::string> keys = fact_json_keys(name);
     py::object at = out;
-    std::size_t begin = 0;
-    for (std::size_t dot = name.find('.'); dot != std::string::npos; dot = name.find('.', begin)) {
-      at = at[py::str(name.substr(begin, dot - begin))];
-      begin = dot + 1;
-    }
-    at[py::str(name.substr(begin))] = numbers;
+    for (std::size_t k = 0; k + 1 < keys.size(); ++k) at = at[py::str(keys[k])];
+    at[py::str(keys.back())] = numbers;
   }
   return out;
 }
