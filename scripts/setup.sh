@@ -21,7 +21,8 @@ packages_of() {
         libnanoflann-dev ;;
     python)  # the module, its arrays, its plots and its tests
       echo python3 python3-dev python3-pybind11 pybind11-dev \
-        python3-numpy python3-matplotlib python3-pytest python3-pil python3-nbclient python3-ipykernel python3-nbformat ;;
+        python3-numpy python3-matplotlib python3-pytest python3-pil python3-nbclient python3-ipykernel python3-nbformat \
+        python3-distributed ;;
     tests)  # the C++ tests, the style check, and rsvg-convert to look at the pictures as PNGs
       echo libgtest-dev clang-format librsvg2-bin ;;
     fuzz)  # the deep run (scripts/test.sh --deep): g++ for the sanitized tree, libFuzzer for the readers'

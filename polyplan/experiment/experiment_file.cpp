@@ -76,8 +76,15 @@ class ExperimentReader {
   std::vector<std::uint64_t> seeds(const json& value) const {
     std::vector<std::uint64_t> out;
     for (std::size_t i = 0; i < non_empty_array(value, "seeds").size(); ++i) {
-      if (!value[i].is_number_unsigned()) fail("seeds[" + std::to_string(i) + "]", "expected a whole number >= 0");
-      out.push_back(value[i].get<std::uint64_t>());
+      const std::string object = "seeds[" + std::to_string(i) + "]";
+      if (!value[i].is_number_unsigned()) fail(object, "expected a whole number >= 0");
+      const std::uint64_t seed = value[i].get<std::uint64_t>();
+      // A seed names its run (a resumed experiment's records, a log's rows): two runs cannot share one.
+      const auto earlier = std::find(out.begin(), out.end(), seed);
+      if (earlier != out.end())
+        fail(object, std::to_string(seed) + " repeats seeds[" + std::to_string(earlier - out.begin()) +
+                         "] (a seed's run is the same run)");
+      out.push_back(seed);
     }
     return out;
   }

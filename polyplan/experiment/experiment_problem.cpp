@@ -44,6 +44,26 @@ void run_once(const Problem& problem, const std::string& planner, const OptionVa
   record(report, run);
 }
 
+ExperimentRun run_cell(const Problem& problem, const ExperimentPlanner& entry, const std::string& query,
+                       std::uint64_t seed, double time_limit) {
+  ExperimentRun run;
+  run.seed = seed;
+  try {
+    const std::vector<OptionInfo>& known = planner_for(entry.planner, problem).options;
+    run_once(problem, entry.planner, options_for_run(entry.options, known, seed, time_limit), query, run);
+  } catch (const std::exception& e) {
+    mark_failed(run, std::string("the run failed: ") + e.what());
+  }
+  return run;
+}
+
+void mark_failed(ExperimentRun& run, const std::string& why) {
+  run.status = PlanStatus::not_found;
+  run.solved = false;
+  run.improvements.clear();
+  run.why_not = why;
+}
+
 OptionValues options_for_run(const OptionValues& options, const std::vector<OptionInfo>& known, std::uint64_t seed,
                              double time_limit) {
   OptionValues values = options;

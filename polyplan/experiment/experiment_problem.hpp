@@ -17,6 +17,15 @@ namespace polyplan {
 void run_once(const Problem& problem, const std::string& planner, const OptionValues& options, const std::string& query,
               ExperimentRun& run);
 
+// One cell's run: the planner entry built for `problem` with the run's seed and time limit, and
+// asked `query` once. A planner that throws (a bug, not an answer) gives a failed run (not found,
+// its message in why_not), so that one run cannot lose a long experiment.
+ExperimentRun run_cell(const Problem& problem, const ExperimentPlanner& entry, const std::string& query,
+                       std::uint64_t seed, double time_limit);
+
+// A run that failed before it could answer: not found, `why` in why_not.
+void mark_failed(ExperimentRun& run, const std::string& why);
+
 // `options` with the experiment's seed and time limit as the planner's "seed" and "time" options,
 // for the planners that have them.
 OptionValues options_for_run(const OptionValues& options, const std::vector<OptionInfo>& known, std::uint64_t seed,

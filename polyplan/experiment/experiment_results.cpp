@@ -19,6 +19,8 @@ using nlohmann::json;
 
 json finite_or_null(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
+}  // namespace
+
 json experiment_json(const Experiment& e) {
   json problems = json::array(), planners = json::array();
   for (const ExperimentProblem& p : e.problems)
@@ -35,6 +37,8 @@ json experiment_json(const Experiment& e) {
           {"seeds", e.seeds},    {"cost_times", e.cost_times}, {"problems", problems},
           {"planners", planners}};
 }
+
+namespace {
 
 json run_json(const Experiment& e, const ExperimentRun& run) {
   json out{{"problem", e.problems[run.problem].name},
@@ -110,6 +114,8 @@ json experiment_results_json(const Experiment& experiment, const ExperimentResul
           {"started_at", results.started_at},
           {"threads", results.threads},
           {"total_seconds", results.total_seconds},
+          {"complete", results.runs.size() == experiment.cells()},
+          {"missing_runs", experiment.cells() - results.runs.size()},
           {"log", "results.log"},
           {"runs", runs},
           {"summary", summary}};

@@ -3,7 +3,6 @@
 #include <polyplan/experiment/experiment_problem.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/plan/thread_pool.hpp>
-#include <polyplan/registry/any_planner.hpp>
 
 #include <algorithm>
 #include <atomic>
@@ -42,23 +41,18 @@ class Worker {
 
   ExperimentRun run(std::size_t cell) {
     const std::size_t seeds = experiment_.seeds.size(), entries = experiment_.planners.size();
+    const std::size_t problem = cell / (seeds * entries), planner = cell / seeds % entries;
+    const std::uint64_t seed = experiment_.seeds[cell % seeds];
     ExperimentRun run;
-    run.problem = cell / (seeds * entries);
-    run.planner = cell / seeds % entries;
-    run.seed = experiment_.seeds[cell % seeds];
-    const ExperimentProblem& problem = experiment_.problems[run.problem];
-    const ExperimentPlanner& entry = experiment_.planners[run.planner];
     try {
-      const Problem& file = this->file(run.problem);
-      const std::vector<OptionInfo>& known = planner_for(entry.planner, file).options;
-      run_once(file, entry.planner, options_for_run(entry.options, known, run.seed, experiment_.time_limit),
-               problem.query, run);
-    } catch (const std::exception& e) {
-      run.status = PlanStatus::not_found;
-      run.solved = false;
-      run.improvements.clear();
-      run.why_not = std::string("the run failed: ") + e.what();
+      run = run_cell(file(problem), experiment_.planners[planner], experiment_.problems[problem].query, seed,
+                     experiment_.time_limit);
+    } catch (const std::exception& e) {  // the problem file, read again here
+      run.seed = seed;
+      mark_failed(run, std::string("the run failed: ") + e.what());
     }
+    run.problem = problem;
+    run.planner = planner;
     return run;
   }
 

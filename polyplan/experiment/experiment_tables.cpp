@@ -61,6 +61,9 @@ void write_experiment_tables(std::ostream& out, const Experiment& experiment, co
   out << "# " << experiment.name << "\n\n"
       << experiment.seeds.size() << " runs per planner entry and problem (seeds), " << brief(experiment.time_limit)
       << " s per run. Cost: the path's length over the solved runs; time: seconds per run.\n";
+  if (results.runs.size() < experiment.cells())
+    out << "\n**Incomplete:** " << experiment.cells() - results.runs.size() << " of " << experiment.cells()
+        << " runs missing (the experiment was interrupted); the counts below are of the runs made.\n";
   bool any_anytime = false;
   for (const ExperimentPlanner& p : experiment.planners) any_anytime = any_anytime || p.anytime;
   for (std::size_t problem = 0; problem < experiment.problems.size(); ++problem) {

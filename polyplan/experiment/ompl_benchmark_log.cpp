@@ -24,10 +24,6 @@ namespace {
 constexpr std::array<const char*, 9> ompl_statuses{"Unknown status",         "Invalid start", "Invalid goal",
                                                    "Unrecognized goal type", "Timeout",       "Approximate solution",
                                                    "Exact solution",         "Crash",         "Abort"};
-// polyplan's statuses in PlanStatus's order: the "polyplan_status" enum.
-constexpr std::array<PlanStatus, 6> plan_statuses{PlanStatus::solved,        PlanStatus::no_path,
-                                                  PlanStatus::not_found,     PlanStatus::limit,
-                                                  PlanStatus::invalid_query, PlanStatus::local_minimum};
 
 int ompl_status(PlanStatus status) {
   switch (status) {
@@ -39,8 +35,8 @@ int ompl_status(PlanStatus status) {
 }
 
 int plan_status_index(PlanStatus status) {
-  for (std::size_t i = 0; i < plan_statuses.size(); ++i)
-    if (plan_statuses[i] == status) return static_cast<int>(i);
+  for (std::size_t i = 0; i < all_plan_statuses.size(); ++i)
+    if (all_plan_statuses[i] == status) return static_cast<int>(i);
   return 0;
 }
 
@@ -303,6 +299,8 @@ void write_header(std::ostream& out, const Experiment& e, const ExperimentResult
   out << "\ncost times:";
   for (double t : e.cost_times) out << ' ' << shortest(t);
   out << "\nthreads: " << r.threads << '\n';
+  if (r.runs.size() < e.cells())
+    out << "incomplete: " << e.cells() - r.runs.size() << " of " << e.cells() << " runs missing\n";
   out << "|>>>\n";
   out << e.seeds.front() << " is the random seed\n";
   out << number(e.time_limit) << " seconds per run\n";
@@ -312,7 +310,7 @@ void write_header(std::ostream& out, const Experiment& e, const ExperimentResult
   out << "2 enum types\nstatus";
   for (const char* status : ompl_statuses) out << '|' << status;
   out << "\npolyplan_status";
-  for (PlanStatus status : plan_statuses) out << '|' << to_string(status);
+  for (PlanStatus status : all_plan_statuses) out << '|' << to_string(status);  // in PlanStatus's order
   out << '\n';
 }
 

@@ -181,6 +181,11 @@ enum class PlanStatus : std::uint8_t {
   local_minimum,  // a reactive planner stopped where no move improves
 };
 
+// Every status, in the enumeration's order.
+inline constexpr std::array<PlanStatus, 6> all_plan_statuses{PlanStatus::solved,        PlanStatus::no_path,
+                                                             PlanStatus::not_found,     PlanStatus::limit,
+                                                             PlanStatus::invalid_query, PlanStatus::local_minimum};
+
 // "solved", "no_path", ...: the JSON's and the command line's word.
 std::string_view to_string(PlanStatus status);
 

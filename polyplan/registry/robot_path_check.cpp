@@ -18,7 +18,8 @@
 namespace polyplan {
 namespace {
 
-[[noreturn]] void without(const std::string& source, const std::string& family, const std::string& what) {
+// Used only where a family is left out of the build.
+[[noreturn, maybe_unused]] void without(const std::string& source, const std::string& family, const std::string& what) {
   throw InputError(source + ": " + what + " is checked by the " + family +
                    " planners' library, which this polyplan is built without (cmake -DPOLYPLAN_FAMILIES=" + family +
                    " or all)");

@@ -48,10 +48,11 @@ from ._polyplan import (  # noqa: F401 (the public names)
     svg,
 )
 from . import _polyplan
+from .cluster import ExperimentInterrupted
 from .experiment import Experiment, Results
 
 __all__ = [
-    "Arm", "CSpace", "Cells", "Drive", "Experiment", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
+    "Arm", "CSpace", "Cells", "Drive", "Experiment", "ExperimentInterrupted", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
     "PlannerInfo", "World", "animate", "check", "cspace", "grid", "ik", "plan", "planner", "planners", "plot", "potential",
     "read_arm", "read_world", "replan", "Results", "scen", "search_graph", "steer", "svg",
 ]

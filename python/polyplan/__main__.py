@@ -9,8 +9,15 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
+
+
+def _benchmark(args):
+    from .cluster import benchmark_command
+    return benchmark_command(args)
+
+
 # Python-side commands: name -> function(arguments after the name) returning the exit code.
-COMMANDS = {}
+COMMANDS = {"benchmark": _benchmark}
 
 
 def program():

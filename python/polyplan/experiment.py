@@ -18,7 +18,7 @@ import time
 
 import numpy as np
 
-from . import _polyplan
+from . import _polyplan, cluster
 from ._arguments import path as _path, shown as _shown
 from ._polyplan import InputError
 
@@ -75,13 +75,20 @@ class Experiment:
         """The planner entries' names."""
         return self._spec.planners
 
-    def run(self, threads=1, progress=True, out=None, seeds=None, time_limit=None):
-        """Runs every cell on `threads` threads (0: one per core) and returns its Results.
+    def run(self, threads=1, progress=True, out=None, seeds=None, time_limit=None, client=None, resume=False):
+        """Runs every cell on `threads` threads (0: one per core), or as one task per run on a Dask
+        cluster's `client` (a distributed.Client), and returns its Results.
 
         progress: a line on stderr that counts the runs (True), a function progress(done, total)
         called after each run, or False. out: a folder to write the program's files to as well
-        (Results.write). seeds: only the first N seeds; time_limit: seconds per run instead of the
-        experiment's, its cost times scaled alike (as `polyplan benchmark --seeds --time-limit`)."""
+        (Results.write), where each run's record is kept as it comes (runs.jsonl), so that Ctrl-C
+        loses no run made. resume: make only the runs missing from `out`, an interrupted run's
+        folder. seeds: only the first N seeds; time_limit: seconds per run instead of the
+        experiment's, its cost times scaled alike (as `polyplan benchmark --seeds --time-limit`).
+
+        Ctrl-C during a run with a client or an `out` folder raises ExperimentInterrupted (a
+        KeyboardInterrupt) holding the Results of the runs made, written to `out` first, marked
+        incomplete."""
         threads = _whole(threads, "threads", 0, 256)
         seeds = 0 if seeds is None else _whole(seeds, "seeds", 1, None)
         if seeds > len(self._spec.seeds):  # here: an int beyond 64 bits cannot reach the compiled half
@@ -92,9 +99,29 @@ class Experiment:
             out = _path(out, "Experiment.run: out")
             if os.path.exists(out) and not os.path.isdir(out):
                 raise InputError(f"Experiment.run: out: {out}: not a folder")
-        results = Results(_polyplan._run_experiment(self._spec, threads, seeds, time_limit, report))
+        if client is None and out is None:
+            if resume:
+                raise InputError("Experiment.run: resume: needs out, the folder of the run to resume")
+            results = Results(_polyplan._run_experiment(self._spec, threads, seeds, time_limit, report))
+        else:
+            results = self._run_tasks(client, threads, seeds, time_limit, report, out, resume)
         if out is not None:
             results.write(out)
+        if not results.complete and results.interrupted:
+            raise cluster.ExperimentInterrupted(results)
+        return results
+
+    def _run_tasks(self, client, threads, seeds, time_limit, report, out, resume):
+        """One task per run, on the client's cluster or on threads (cluster.py)."""
+        if client is not None and not all(hasattr(client, name) for name in ("map", "cancel", "scheduler_info")):
+            raise InputError(f"Experiment.run: client: expected a dask.distributed.Client, got {type(client).__name__}")
+        spec = self._spec.scaled(seeds, time_limit)
+        used = cluster.client_threads(client) if client is not None else threads or os.cpu_count() or 1
+        started = cluster.started_at()
+        records, seconds, interrupted = cluster.gather(spec, cluster.tasks_of(spec), client=client, threads=used,
+                                                       progress=report, folder=out, resume=bool(resume))
+        results = Results(_polyplan._experiment_outcome(spec, records, seconds, used, started, cluster.host()))
+        results.interrupted = interrupted
         return results
 
     def _time_limit(self, given):
@@ -131,6 +158,10 @@ class Results:
         self.experiment = everything["experiment"]
         self.total_seconds = everything["total_seconds"]
         self.threads = everything["threads"]
+        self.complete = everything["complete"]  # False when runs are missing (an interrupted run)
+        self.experiment_runs = len(self.records) + everything["missing_runs"]
+        self.interrupted = False  # Ctrl-C stopped the run that made them
+        self.written = []  # the files the last write() wrote
 
     @property
     def columns(self):
@@ -169,14 +200,16 @@ class Results:
         """Writes results.log (OMPL's benchmark log), results.json, results.csv, tables.md and the
         plots into `folder` (made when missing), as `polyplan benchmark --out` does; returns the
         paths written."""
-        return self._outcome.write(_path(folder, "Results.write: folder"))
+        self.written = self._outcome.write(_path(folder, "Results.write: folder"))
+        return self.written
 
     def __len__(self):
         return len(self.records)
 
     def __repr__(self):
         solved = sum(r["solved"] for r in self.records)
-        return f"<polyplan.Results {len(self.records)} runs, {solved} solved, {self.total_seconds:.3g} s>"
+        missing = "" if self.complete else f" of {self.experiment_runs} (incomplete)"
+        return f"<polyplan.Results {len(self.records)} runs{missing}, {solved} solved, {self.total_seconds:.3g} s>"
 
 
 def _whole(value, name, least, most):
@@ -255,12 +288,18 @@ class _ProgressLine:
         self.what, self.started, self.last = what, time.monotonic(), 0.0
 
     def __call__(self, done, total):
+        self.tally(done, total)
+
+    def tally(self, done, total, solved=None, failed=None, before=0):
+        """The line, with the runs solved and failed when they are known; `before` of the runs done
+        were made by an earlier run (a resumed one), so they do not set the pace."""
         now = time.monotonic()
         if now - self.last < 1.0 and done != total:
             return
         self.last = now
         elapsed = now - self.started
-        left = f", about {elapsed / done * (total - done):.0f} s left" if 0 < done < total else ""
+        left = f", about {elapsed / (done - before) * (total - done):.0f} s left" if before < done < total else ""
+        counts = "" if solved is None else f", {solved} solved, {failed} failed"
         end = "\n" if done == total else ""
-        sys.stderr.write(f"\r{self.what}: {done}/{total}, {elapsed:.0f} s elapsed{left}   {end}")
+        sys.stderr.write(f"\r{self.what}: {done}/{total}{counts}, {elapsed:.0f} s elapsed{left}   {end}")
         sys.stderr.flush()

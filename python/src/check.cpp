@@ -30,7 +30,7 @@ using Rows = std::vector<std::vector<Rational>>;
 // length), one of `allowed`; InputError naming what was expected and what came.
 std::size_t columns_of(const py::handle& path, std::initializer_list<std::size_t> allowed,
                        const std::string& expected) {
-  if (py::isinstance<py::str>(path) || !py::isinstance<py::sequence>(path) && !py::isinstance<py::array>(path))
+  if (py::isinstance<py::str>(path) || (!py::isinstance<py::sequence>(path) && !py::isinstance<py::array>(path)))
     throw InputError("path: expected " + expected + ", got " + type_name(path));
   if (const std::size_t n = py::len(path); n > limits::points)
     throw InputError("path: " + std::to_string(n) + " points, more than the supported " +
@@ -45,7 +45,7 @@ std::size_t columns_of(const py::handle& path, std::initializer_list<std::size_t
   } else {
     if (py::len(path) == 0) throw InputError("path: expected at least one point");
     const py::object first = path[py::int_(0)];
-    if (py::isinstance<py::str>(first) || !py::isinstance<py::sequence>(first) && !py::isinstance<py::array>(first))
+    if (py::isinstance<py::str>(first) || (!py::isinstance<py::sequence>(first) && !py::isinstance<py::array>(first)))
       throw InputError("path[0]: expected " + expected + ", got " + type_name(first));
     columns = py::len(first);
   }

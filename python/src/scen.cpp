@@ -68,7 +68,7 @@ std::vector<ScenarioQuery> queries_of(const py::object& given, const GridMap& ma
   const auto v = rows.unchecked<2>();
   std::vector<ScenarioQuery> queries;
   for (py::ssize_t i = 0; i < v.shape(0); ++i)
-    queries.push_back({0, map.width, map.height, int(v(i, 0)), int(v(i, 1)), int(v(i, 2)), int(v(i, 3))});
+    queries.push_back({0, map.width, map.height, int(v(i, 0)), int(v(i, 1)), int(v(i, 2)), int(v(i, 3)), 0.0, {}, 0});
   return queries;
 }
 

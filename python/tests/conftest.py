@@ -10,6 +10,18 @@ DATA = os.environ.get("POLYPLAN_DATA", os.path.join(HERE, "..", "..", "data"))
 CLI = os.environ.get("POLYPLAN_CLI", "polyplan")
 
 
+# What the clock decides in an experiment's record (results.json's "runs").
+RECORD_TIMES = ("time", "setup_time", "first_solution_time", "improvements", "cost_at")
+
+
+def clockless(record):
+    """An experiment's record without what the clock decides: the same for the same seed wherever
+    the run was made, when the run stops by its own rule (not by its time limit)."""
+    kept = {k: v for k, v in record.items() if k not in RECORD_TIMES}
+    kept["facts"] = {k: v for k, v in record["facts"].items() if "seconds" not in k}
+    return kept
+
+
 def data(*parts):
     return os.path.join(DATA, *parts)
 

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import polyplan
-from conftest import data, run_cli
+from conftest import clockless, data, run_cli
 
 # rrt stops at its first solution (and shortcuts it): the same seed gives the same path wherever
 # it runs, so the records can be compared with the program's.
@@ -22,14 +22,6 @@ SPEC = {
     "seeds": [1, 2, 3],
     "time_limit": 100,
 }
-TIMES = ("time", "setup_time", "first_solution_time", "improvements", "cost_at")
-
-
-def clockless(record):
-    """A record without what the clock decides."""
-    kept = {k: v for k, v in record.items() if k not in TIMES}
-    kept["facts"] = {k: v for k, v in record["facts"].items() if "seconds" not in k}
-    return kept
 
 
 @pytest.fixture(scope="module")
