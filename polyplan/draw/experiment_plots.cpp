@@ -18,6 +18,8 @@ using svg::Point2;
 // The plotting area is [0, kWidth] × [0, kHeight] in the drawing's units; room around it holds
 // the ticks' labels, the axes' names and the title.
 constexpr double kWidth = 1.6, kHeight = 1.0;
+// The picture is kWidthPx wide, from 0.2 units left of the plotting area to 0.05 right of it.
+constexpr double kWidthPx = 820, kPixelsPerUnit = kWidthPx / (kWidth + 0.25);
 constexpr double kTickPx = 11, kAxisPx = 13, kTitlePx = 14;
 
 std::string tick_text(double value) {
@@ -125,7 +127,7 @@ class Chart {
  public:
   Chart(PlotAxis x, PlotAxis y, const std::string& title, const std::string& x_name, const std::string& y_name,
         double bottom_room = 0.2)
-      : drawing_(svg::Box2{-0.2, -bottom_room, kWidth + 0.05, kHeight + 0.12}, 820), x_(x), y_(y) {
+      : drawing_(svg::Box2{-0.2, -bottom_room, kWidth + 0.05, kHeight + 0.12}, kWidthPx), x_(x), y_(y) {
     draw_y_ticks();
     if (!x_name.empty()) draw_x_ticks();
     drawing_.polyline({{0, 0}, {kWidth, 0}, {kWidth, kHeight}, {0, kHeight}, {0, 0}}, frame_style());
@@ -240,6 +242,16 @@ void draw_box(Chart& chart, double x, const ValueSummary& s, std::size_t i) {
 }
 
 // An entry's name under its box at `x`, slanted so that long names do not collide.
+// The room under the frame, in the chart's units, for labels slanted as draw_box_label slants them:
+// 14 px down to the baseline's end, then sin 35° of the longest label's length (11 px glyphs, 0.6
+// em wide), so that a frame with short names leaves no empty band below them.
+double room_for_slanted(const std::vector<std::string>& labels) {
+  std::size_t longest = 0;
+  for (const std::string& label : labels) longest = std::max(longest, label.size());
+  const double px = 14 + std::sin(35 * 3.14159265358979 / 180) * 0.6 * 11 * static_cast<double>(longest) + 8;
+  return std::max(0.12, px / kPixelsPerUnit);
+}
+
 void draw_box_label(Chart& chart, double x, const std::string& label) {
   svg::Drawing& d = chart.drawing();
   const Point2 foot = d.to_screen({chart.to_x(x), 0});
@@ -308,15 +320,18 @@ svg::Drawing box_plot(const Experiment& e, std::size_t problem, const std::vecto
       drawn.insert(drawn.end(), summary(s).outliers.begin(), summary(s).outliers.end());
     }
   const PlotAxis y = fit(drawn, of == BoxPlotOf::time, true);
+  std::vector<std::string> labels;
+  for (std::size_t i = 0; i < statistics.size(); ++i)
+    labels.push_back(e.planners[i].name + (summary(statistics[i]).count ? "" : " (none)"));
   const std::size_t n = std::max<std::size_t>(statistics.size(), 1);
   Chart chart({0, static_cast<double>(n), false}, y,
               title_of(e, problem, of == BoxPlotOf::time ? "time per run" : "length of the solved runs"), "",
-              of == BoxPlotOf::time ? time_name(y, e.time_limit) : "length", 0.45);
+              of == BoxPlotOf::time ? time_name(y, e.time_limit) : "length", room_for_slanted(labels));
   for (std::size_t i = 0; i < statistics.size(); ++i) {
     const double x = static_cast<double>(i) + 0.5;
     const ValueSummary& s = summary(statistics[i]);
     if (s.count) draw_box(chart, x, s, i);
-    draw_box_label(chart, x, e.planners[i].name + (s.count ? "" : " (none)"));
+    draw_box_label(chart, x, labels[i]);
   }
   return std::move(chart.drawing());
 }
