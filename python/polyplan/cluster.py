@@ -14,9 +14,11 @@ marked incomplete; runs.jsonl lets a resumed run make the missing ones only.
 """
 
 import concurrent.futures
+import contextlib
 import hashlib
 import json as _json
 import os
+import signal
 import socket
 import sys
 import tempfile
@@ -99,9 +101,25 @@ def local_cluster(workers):
     import dask
     import distributed
     import logging
-    with dask.config.set(SCHEDULER_CONFIG):
+    with dask.config.set(SCHEDULER_CONFIG), _sigint_ignored():
         return distributed.LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
                                         dashboard_address=None, silence_logs=logging.ERROR)
+
+
+@contextlib.contextmanager
+def _sigint_ignored():
+    """SIGINT ignored while the cluster's processes start, so that they inherit it ignored: Ctrl-C
+    reaches the whole process group, and the client alone should answer it (cancelling the runs,
+    writing those made, closing the cluster) rather than every worker printing its traceback."""
+    try:
+        previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    except ValueError:  # not the main thread: signals are not this thread's to set
+        yield
+        return
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, previous)
 
 
 def started_at():

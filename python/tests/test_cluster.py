@@ -172,26 +172,32 @@ def test_the_shell_command_on_a_scheduler(client, tmp_path):
 
 
 def test_ctrl_c_on_the_shell_command_and_resume(tmp_path):
+    """Ctrl-C on python3 -m polyplan benchmark --local-cluster, then --resume on this machine's
+    threads: the runs made are kept, the rest made once."""
     experiment = tmp_path / "slow.json"
-    experiment.write_text(json.dumps(SLOW))
+    experiment.write_text(json.dumps(dict(SLOW, seeds=list(range(1, 17)))))
     out = tmp_path / "out"
-    running = subprocess.Popen(module_command(str(experiment), "--out", str(out)), stdout=subprocess.PIPE,
-                               stderr=subprocess.PIPE, text=True)
+    # Its own process group, to which Ctrl-C is sent as a terminal sends it: to the client and to
+    # every process of its local cluster.
+    running = subprocess.Popen(module_command(str(experiment), "--out", str(out), "--local-cluster", "2"),
+                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
     records = out / "runs.jsonl"
     deadline = time.monotonic() + 120
     while time.monotonic() < deadline and not (records.exists() and len(records.read_text().splitlines()) >= 3):
         time.sleep(0.05)
-    running.send_signal(signal.SIGINT)
+    os.killpg(running.pid, signal.SIGINT)
     stdout, stderr = running.communicate(timeout=120)
     assert running.returncode == 130, stderr
     assert f"--resume {out} makes the rest" in stderr
+    assert "Traceback" not in stderr  # the workers leave Ctrl-C to the client
     made = len(records.read_text().splitlines()) - 1
-    assert 2 <= made < 8
+    assert 2 <= made < 16
     assert not json.loads((out / "results.json").read_text())["complete"]
 
-    resumed = subprocess.run(module_command(str(experiment), "--resume", str(out)), capture_output=True, text=True,
-                             timeout=300)
+    resumed = subprocess.run(module_command(str(experiment), "--resume", str(out), "--threads", "2"),
+                             capture_output=True, text=True, timeout=300)
     assert resumed.returncode == 0, resumed.stderr
     results = json.loads((out / "results.json").read_text())
-    assert results["complete"] and len(results["runs"]) == 8
-    assert sorted(r["seed"] for r in results["runs"]) == list(range(1, 9))
+    assert results["complete"] and len(results["runs"]) == 16
+    assert sorted(r["seed"] for r in results["runs"]) == list(range(1, 17))
+    assert "slow: 16 runs, 16 solved" in resumed.stdout  # the whole results, not the resumed part alone
