@@ -13,10 +13,12 @@ is recorded as a failed run saying so. Ctrl-C cancels the runs not made and writ
 marked incomplete; runs.jsonl lets a resumed run make the missing ones only.
 """
 
+import argparse
 import concurrent.futures
 import contextlib
 import hashlib
 import json as _json
+import math
 import os
 import signal
 import socket
@@ -323,7 +325,6 @@ class _Tally:
 def benchmark_command(args):
     """python3 -m polyplan benchmark: see usage()."""
     from .experiment import Experiment
-    import argparse
     parser = argparse.ArgumentParser(
         prog="python3 -m polyplan benchmark",
         description="Run an experiment (problems x planner entries x seeds) on this machine's threads or on a Dask "
@@ -337,22 +338,49 @@ def benchmark_command(args):
     where.add_argument("--scheduler", metavar="tcp://HOST:PORT", help="a running Dask scheduler to send the runs to")
     where.add_argument("--local-cluster", metavar="N", type=int, help="start a Dask cluster of N worker processes "
                        "on this machine (loopback only) and run on it")
-    where.add_argument("--threads", type=int, default=1, help="runs at a time on this machine (default 1; 0: one "
-                       "per core), without Dask")
-    parser.add_argument("--seeds", type=int, help="only the experiment's first N seeds")
-    parser.add_argument("--time-limit", type=float, help="seconds per run instead of the experiment's")
+    where.add_argument("--threads", type=_whole_in(0, 256), default=1, help="runs at a time on this machine "
+                       "(default 1; 0: one per core), without Dask")
+    parser.add_argument("--seeds", type=_whole_in(1, None), help="only the experiment's first N seeds")
+    parser.add_argument("--time-limit", type=_seconds, help="seconds per run instead of the experiment's")
     options = parser.parse_args(args)
     if options.out and options.resume and os.path.abspath(options.out) != os.path.abspath(options.resume):
         parser.error("--out and --resume name different folders: the resumed results are written where they are")
     try:
-        return _benchmark(Experiment.from_file(options.experiment), options)
+        experiment = Experiment.from_file(options.experiment)
+        if options.seeds is not None and options.seeds > len(experiment._spec.seeds):
+            raise InputError(f"--seeds {options.seeds}: the experiment has {len(experiment._spec.seeds)} seeds")
+        return _benchmark(experiment, options)
     except InputError as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
 
 
+def _whole_in(least, most):
+    def whole(text):
+        try:
+            value = int(text)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"{text!r}: expected a whole number") from None
+        if value < least or most is not None and value > most:
+            raise argparse.ArgumentTypeError(f"{value}: expected a whole number in [{least}, {most or 'inf'}]")
+        return value
+    return whole
+
+
+def _seconds(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = math.nan
+    if not (value > 0 and math.isfinite(value)):
+        raise argparse.ArgumentTypeError(f"{text!r}: expected a finite number of seconds > 0")
+    return value
+
+
 def _benchmark(experiment, options):
     out = options.resume or options.out or _polyplan._file_name_part(experiment.name) + "_results"
+    if os.path.exists(out) and not os.path.isdir(out):
+        raise InputError(f"{'--resume' if options.resume else '--out'} {out}: not a folder")
     cluster = client = None
     try:
         if options.local_cluster is not None or options.scheduler:
@@ -377,14 +405,14 @@ def _benchmark(experiment, options):
 
 
 def _client(options):
+    if options.local_cluster is not None and not 1 <= options.local_cluster <= 256:
+        raise InputError(f"--local-cluster {options.local_cluster}: expected 1 to 256 workers")
     try:
         import distributed
     except ImportError:
         raise InputError("--scheduler and --local-cluster need Dask's distributed (Debian: python3-distributed)") \
             from None
     if options.local_cluster is not None:
-        if not 1 <= options.local_cluster <= 256:
-            raise InputError(f"--local-cluster {options.local_cluster}: expected 1 to 256 workers")
         cluster = local_cluster(options.local_cluster)
         return distributed.Client(cluster), cluster
     try:

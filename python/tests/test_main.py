@@ -39,3 +39,25 @@ def test_no_program_is_one_line_and_exit_2(tmp_path, monkeypatch, capsys):
     assert main_module.main(["--help"]) == 2
     err = capsys.readouterr().err
     assert err.startswith("error: no polyplan program:") and err.count("\n") == 1
+
+
+def test_benchmark_runs_here_and_refuses_bad_arguments_naming_them(tmp_path):
+    """benchmark is Python's (polyplan.cluster): its runs as tasks on threads (or a Dask cluster),
+    each record kept as it comes; bad arguments exit 2 naming the flag."""
+    experiment = tmp_path / "tiny.json"
+    experiment.write_text('{"name": "tiny", "problems": [{"name": "office", "file": "%s"}], '
+                          '"planners": [{"name": "rrt", "planner": "rrt"}], "seeds": [1, 2], "time_limit": 5}'
+                          % data("worlds", "office.json"))
+    ran = module("benchmark", str(experiment), "--threads", "2", "--out", str(tmp_path / "out"))
+    assert ran.returncode == 0, ran.stderr
+    assert "tiny: 2 runs, 2 solved" in ran.stdout and "runs: 2/2, 2 solved, 0 failed" in ran.stderr
+    assert len((tmp_path / "out" / "runs.jsonl").read_text().splitlines()) == 3
+    for args, message in ((["--threads", "-1"], "argument --threads: -1: expected a whole number in [0, 256]"),
+                          (["--seeds", "0"], "argument --seeds: 0: expected a whole number in [1, inf]"),
+                          (["--seeds", "3"], "error: --seeds 3: the experiment has 2 seeds"),
+                          (["--time-limit", "nan"], "argument --time-limit: 'nan': expected a finite number"),
+                          (["--out", str(experiment)], f"error: --out {experiment}: not a folder"),
+                          (["--local-cluster", "0"], "error: --local-cluster 0: expected 1 to 256 workers"),
+                          (["--resume", str(tmp_path)], "runs.jsonl: cannot resume from it")):
+        refused = module("benchmark", str(experiment), *args)
+        assert refused.returncode == 2 and message in refused.stderr, (args, refused.stderr)
