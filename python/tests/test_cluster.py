@@ -89,6 +89,16 @@ def test_a_killed_worker_loses_no_run(client, tmp_path):
     client.wait_for_workers(2, timeout=60)  # the nanny restarts it, for the tests that follow
 
 
+def test_a_run_stopped_by_its_time_limit_is_recorded_as_such(client):
+    spec = dict(SPEC, problems=[{"name": "maze", "file": data("worlds", "maze.json")}], time_limit=0.002,
+                planners=[{"name": "rrt", "planner": "rrt", "options": {"iterations": 100000000}}])
+    results = polyplan.Experiment(spec).run(client=client, progress=False)
+    assert results.complete and len(results) == 3
+    for record in results.records:
+        assert record["status"] == "limit" and not record["solved"], record
+        assert record["facts"]["stopped_by"] == "time limit" and "time limit (0.002 s)" in record["why_not"]
+
+
 def crash_on_seed_2(task):
     """A task that kills its worker process, as a crashing planner would, for seed 2."""
     if task["seed"] == 2:
