@@ -203,6 +203,7 @@ struct CarCollision::Impl {
 
 CarCollision::CarCollision(const World& world) : impl_(std::make_unique<Impl>()) {
   if (!world.robot.car) throw std::invalid_argument("CarCollision: the world's robot is not a car");
+  refuse_round_features(world, "a car's collision test");
   Impl& s = *impl_;
   s.radius = world.robot.car->turning_radius;
   s.reverse = world.robot.car->reverse;

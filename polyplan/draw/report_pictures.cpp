@@ -4,6 +4,7 @@
 #include <polyplan/draw/car_svg.hpp>
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/draw/pose_svg.hpp>
+#include <polyplan/draw/world_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 
@@ -64,6 +65,8 @@ std::vector<Picture> draw_reports(const Problem& problem, const std::vector<cons
   if (!reports.empty() && arm_reports != (problem.arm() != nullptr))
     throw InputError("the plans were not planned in " + problem.source());
   if (problem.arm()) return arm_pictures(*problem.arm(), reports, options);
+  if (reports.empty() && !round_features(*problem.world()).empty())  // discs or walls: no polygon C-space
+    return {Picture{"", draw_world_alone(*problem.world())}};
   if (reports.empty())  // the world alone
     return {Picture{"", problem.world()->robot.car ? world_picture<CarState>(problem, {})
                                                    : world_picture<ExactPoint>(problem, {})}};

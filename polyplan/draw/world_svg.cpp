@@ -74,24 +74,99 @@ std::vector<Ring> robot_placed_at(const Robot& robot, const ExactPoint& at) {
   return placed;
 }
 
+// A circle for the eye: 96 sides, finer than a picture shows.
+std::vector<svg::Point2> circle_ring(const ExactPoint& center, const Rational& radius) {
+  const svg::Point2 c = svg_point(center);
+  const double r = to_double(radius);
+  std::vector<svg::Point2> out;
+  for (int i = 0; i < 96; ++i) {
+    const double a = 2 * 3.14159265358979323846 * i / 96;
+    out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
+  }
+  return out;
+}
+
 void draw_bounds(svg::Drawing& drawing, const World& world) {
-  if (!world.bounds) return;
-  drawing.polygon({box_ring(to_box(*world.bounds))}, bounds_style());
-  drawing.legend("bounds", bounds_style(), svg::Swatch::line);
+  if (world.bounds) drawing.polygon({box_ring(to_box(*world.bounds))}, bounds_style());
+  if (world.disc_bounds)
+    drawing.polygon({circle_ring(world.disc_bounds->center, world.disc_bounds->radius)}, bounds_style());
+  if (world.bounds || world.disc_bounds) drawing.legend("bounds", bounds_style(), svg::Swatch::line);
+}
+
+const svg::Style& thin_wall_style() {
+  static const svg::Style s = [] {
+    svg::Style f;
+    f.stroke = theme::obstacle_edge;
+    f.stroke_px = 3.0;
+    return f;
+  }();
+  return s;
 }
 
 void draw_obstacles(svg::Drawing& drawing, const World& world) {
-  if (world.obstacles.empty()) return;
   for (const PolygonWithHoles& o : world.obstacles) drawing.polygon(rings(o), obstacle_style());
-  drawing.legend("obstacles", obstacle_style());
+  for (const Disc& d : world.discs) drawing.polygon({circle_ring(d.center, d.radius)}, obstacle_style());
+  if (!world.obstacles.empty() || !world.discs.empty())
+    drawing.legend(world.obstacles.empty() ? "discs"
+                   : world.discs.empty()   ? "obstacles"
+                                           : "obstacles and discs",
+                   obstacle_style());
+  for (const Wall& wall : world.walls) drawing.polyline(ring(wall), thin_wall_style());
+  if (!world.walls.empty()) drawing.legend("walls (zero thickness)", thin_wall_style(), svg::Swatch::line);
 }
 
 void draw_robot_at_start(svg::Drawing& drawing, const World& world) {
   if (world.robot.is_point() || world.queries.empty()) return;
+  if (world.robot.disc) drawing.polygon({circle_ring(world.queries.front().start, *world.robot.disc)}, robot_style());
   for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start)) {
     drawing.polygon({ring(part)}, robot_style());
   }
   drawing.legend("robot at start", robot_style());
+}
+
+// The box round what a world holds (its bounds, or else obstacles, discs, walls, `more`, the starts
+// and goals and the robot at the first start), cut to twice the queries' extent round them.
+svg::Box2 view_of(const World& world, const std::vector<PolygonWithHoles>& more) {
+  if (world.bounds) return to_box(*world.bounds);
+  if (world.disc_bounds) {
+    const svg::Point2 c = svg_point(world.disc_bounds->center);
+    const double r = to_double(world.disc_bounds->radius);
+    return {c.x - r, c.y - r, c.x + r, c.y + r};
+  }
+  svg::BoxAround box;
+  auto extend = [&](const ExactPoint& p) {
+    const svg::Point2 q = svg_point(p);
+    box.add(q.x, q.y);
+  };
+  // Holes lie inside their outer ring, so outer rings suffice.
+  for (const auto* polygons : {&world.obstacles, &more})
+    for (const PolygonWithHoles& o : *polygons)
+      for (const ExactPoint& p : o.outer) extend(p);
+  for (const Disc& d : world.discs)
+    for (const svg::Point2& p : circle_ring(d.center, d.radius)) box.add(p.x, p.y);
+  for (const Wall& wall : world.walls)
+    for (const ExactPoint& p : wall) extend(p);
+  svg::BoxAround around_queries;
+  for (const Query& q : world.queries)
+    for (const ExactPoint& p : {q.start, q.goal}) {
+      extend(p);
+      around_queries.add(svg_point(p).x, svg_point(p).y);
+    }
+  if (!world.queries.empty()) {
+    for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start))
+      for (const ExactPoint& p : part) extend(p);
+    if (world.robot.disc)
+      for (const svg::Point2& p : circle_ring(world.queries.front().start, *world.robot.disc)) box.add(p.x, p.y);
+  }
+  const svg::Box2 all =
+      box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
+  if (world.queries.empty()) return all;
+  // Obstacles reaching far beyond the queries (the course's planning problem set's endless wall) would shrink what
+  // happens near them to a line: the view ends twice the queries' extent round them.
+  const svg::Box2 q = around_queries.box_or(all);
+  const double reach = 2 * std::max({q.xmax - q.xmin, q.ymax - q.ymin, 1.0});
+  return {std::max(all.xmin, q.xmin - reach), std::max(all.ymin, q.ymin - reach), std::min(all.xmax, q.xmax + reach),
+          std::min(all.ymax, q.ymax + reach)};
 }
 
 void draw_queries(svg::Drawing& drawing, const World& world) {
@@ -161,37 +236,14 @@ void draw_free_space(svg::Drawing& drawing, const CSpace& cspace) {
 
 svg::Point2 svg_point(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
 
-svg::Box2 view_box(const World& world, const CSpace& cspace) {
-  if (world.bounds) return to_box(*world.bounds);
-  svg::BoxAround box;
-  auto extend = [&](const ExactPoint& p) {
-    const svg::Point2 q = svg_point(p);
-    box.add(q.x, q.y);
-  };
-  // Holes lie inside their outer ring, so outer rings suffice.
-  for (const PolygonWithHoles& o : world.obstacles)
-    for (const ExactPoint& p : o.outer) extend(p);
-  for (const PolygonWithHoles& c : cspace.cobstacles())
-    for (const ExactPoint& p : c.outer) extend(p);
-  svg::BoxAround around_queries;
-  for (const Query& q : world.queries)
-    for (const ExactPoint& p : {q.start, q.goal}) {
-      extend(p);
-      around_queries.add(svg_point(p).x, svg_point(p).y);
-    }
-  if (!world.queries.empty()) {
-    for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start))
-      for (const ExactPoint& p : part) extend(p);
-  }
-  const svg::Box2 all =
-      box.box_or({0, 0, 1, 1});  // svg::Drawing widens a degenerate box (a single point, a flat row of points)
-  if (world.queries.empty()) return all;
-  // Obstacles reaching far beyond the queries (the course's planning problem set's endless wall) would shrink what
-  // happens near them to a line: the view ends twice the queries' extent round them.
-  const svg::Box2 q = around_queries.box_or(all);
-  const double reach = 2 * std::max({q.xmax - q.xmin, q.ymax - q.ymin, 1.0});
-  return {std::max(all.xmin, q.xmin - reach), std::max(all.ymin, q.ymin - reach), std::min(all.xmax, q.xmax + reach),
-          std::min(all.ymax, q.ymax + reach)};
+svg::Box2 view_box(const World& world, const CSpace& cspace) { return view_of(world, cspace.cobstacles()); }
+
+svg::Box2 view_box(const World& world) { return view_of(world, {}); }
+
+svg::Drawing draw_world_alone(const World& world) {
+  svg::Drawing drawing(view_box(world));
+  draw_world(drawing, world);
+  return drawing;
 }
 
 std::vector<std::vector<svg::Point2>> placed_robot(const Robot& robot, double x, double y, double radians) {

@@ -19,8 +19,11 @@ svg::Point2 svg_point(const ExactPoint& p);
 // and the robot at the first start ({0, 0, 1, 1} when there is nothing at all), cut to twice the
 // queries' extent round them.
 svg::Box2 view_box(const World& world, const CSpace& cspace);
+// The same without a C-space: a world with discs or walls has none (World::round_features).
+svg::Box2 view_box(const World& world);
 
-// The bounds and the obstacles (with holes), a legend entry each: the world without its robot.
+// The bounds (a box or a disc), the obstacles (with holes), the discs and the walls, a legend entry
+// each: the world without its robot.
 void draw_surroundings(svg::Drawing& drawing, const World& world);
 
 // The robot's parts placed with its reference point at (x, y), turned by `radians`: the rings a
@@ -30,6 +33,9 @@ std::vector<std::vector<svg::Point2>> placed_robot(const Robot& robot, double x,
 // The world as its file describes it: bounds, obstacles (with holes), the robot placed at the
 // first start, and the starts and goals; a legend entry each.
 void draw_world(svg::Drawing& drawing, const World& world);
+// A picture of the world alone, in view_box(world): discs and disc bounds as circles, walls as
+// lines, a disc robot as a disc at the first start.
+svg::Drawing draw_world_alone(const World& world);
 
 // In this order, each with a legend entry: the free components (pale fills, one tint per component
 // when there are several, holes shown; left out with FreeSpace::unfilled, when something drawn

@@ -155,6 +155,9 @@ bool inside_closed_box(const Bounds& b, const ExactPoint& p) {
 }  // namespace
 
 CSpace::CSpace(const World& world) : impl_(std::make_unique<Impl>()) {
+  // The planners' door refuses such a world first, naming the planner; this keeps every other
+  // road (a command, a picture) from planning straight through what a polygon set cannot hold.
+  refuse_round_features(world, "the polygon C-space");
   impl_->world = world;
   build(*impl_);
 }

@@ -22,6 +22,16 @@ struct Bounds {
   Rational xmin, ymin, xmax, ymax;
 };
 
+// A closed disc: an obstacle, the bounds of a sphere world (the free space is inside it), or
+// (its radius alone) a disc robot.
+struct Disc {
+  ExactPoint center;
+  Rational radius;  // > 0 once validated
+};
+
+// A wall of zero thickness: a polyline a robot may touch but never cross.
+using Wall = std::vector<ExactPoint>;
+
 struct Query {
   ExactPoint start, goal;
   std::string name;  // "start/goal" or "queries[2]", for messages
@@ -43,10 +53,12 @@ struct CarSteering {
   bool reverse = false;
 };
 
+// A disc robot ("robot": {"disc": r}) has no parts and its radius in `disc`: not a point.
 struct Robot {
   std::vector<Ring> parts;  // counter-clockwise once validated
   std::optional<CarSteering> car;
-  bool is_point() const { return parts.empty(); }
+  std::optional<Rational> disc;  // a disc robot's radius, > 0 once validated
+  bool is_point() const { return parts.empty() && !disc; }
 };
 
 // A change of the world while a robot drives (the file's "changes"; read by the replanning
@@ -69,7 +81,27 @@ struct World {
   // start/goal of the world, followed by its `queries`; empty when the file has none.
   std::vector<Query> queries;
   std::vector<WorldChange> changes;  // empty: the world stays as it is
+  // Round things and thin walls (docs/design.md "World file"): disc obstacles, walls of zero
+  // thickness, and bounds that are a disc rather than `bounds`' box (at most one of the two).
+  std::vector<Disc> discs;
+  std::vector<Wall> walls;
+  std::optional<Disc> disc_bounds;
 };
+
+// What the world holds beyond polygons and a polygon or point robot, in the file's words
+// ("discs", "walls", "disc bounds", "a disc robot"); empty for a polygon world. A planner or a
+// command that plans over polygons only refuses a world for which this is not empty, naming them.
+std::vector<std::string> round_features(const World& world);
+
+// InputError "<source>: discs, walls: <who> holds polygons and a polygon or point robot only ..."
+// when the world has round features: for code built on polygons alone (the C-space, a car's
+// collision test), so that nothing plans straight through them.
+void refuse_round_features(const World& world, const std::string& who);
+
+// InputError "<source>: <object>: <problem>" for a radius that is not > 0, a wall without two
+// distinct points (repeated consecutive points are dropped), box and disc bounds together, or a
+// disc robot with parts or a car. validate_world (geometry/world_validation.hpp) calls it.
+void check_round_features(World& world);
 
 // The starts and goals of the world's queries, then `more`: the points a frame around an
 // unbounded free space must hold.

@@ -219,6 +219,7 @@ void validate_world(World& world) {
     check_obstacle(world, world.obstacles[i], world.obstacle_names[i]);
   for (std::size_t i = 0; i < world.robot.parts.size(); ++i)
     check_ring(world, world.robot.parts[i], "robot.parts[" + std::to_string(i) + "]", CGAL::COUNTERCLOCKWISE);
+  check_round_features(world);
   check_changes(world);
 }
 

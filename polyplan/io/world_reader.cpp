@@ -126,6 +126,54 @@ class Reader : public detail::JsonFileReader {
     return c;
   }
 
+  // A world's top level says what is free: an unknown key holding a list or an object (it may
+  // describe obstacles this reader does not know) is an error, not a warning; a scalar one (a name,
+  // a colour) is a warning.
+  void refuse_unknown_shapes(const json& root, std::vector<std::string>* warnings) const {
+    static const std::set<std::string> known{"bounds", "obstacles", "obstacles_wkt", "robot", "start",
+                                             "goal",   "queries",   "changes",       "discs", "walls"};
+    for (const auto& item : root.items())
+      if (!known.count(item.key()) && (item.value().is_array() || item.value().is_object()))
+        fail("world", "unknown field \"" + detail::abbreviated_text(item.key()) +
+                          "\": it may describe what is not free, and is not read (a world's fields: bounds, "
+                          "obstacles, obstacles_wkt, discs, walls, robot, start, goal, queries, changes)");
+    warn_unknown(root, "world", known, warnings);
+  }
+
+  // [xmin, ymin, xmax, ymax], or a disc {"center": [x, y], "radius": r} (a sphere world's).
+  void bounds(const json& b, World& world, std::vector<std::string>* warnings) const {
+    if (b.is_object()) {
+      world.disc_bounds = disc(b, "bounds", warnings);
+      return;
+    }
+    if (!b.is_array() || b.size() != 4)
+      fail("bounds", "expected [xmin, ymin, xmax, ymax] or {\"center\": [x, y], \"radius\": r}, got " + abbreviated(b));
+    world.bounds = Bounds{number(b[0], "bounds[0]"), number(b[1], "bounds[1]"), number(b[2], "bounds[2]"),
+                          number(b[3], "bounds[3]")};
+  }
+
+  Disc disc(const json& v, const std::string& object, std::vector<std::string>* warnings) const {
+    if (!v.is_object()) fail(object, "expected {\"center\": [x, y], \"radius\": r}, got " + abbreviated(v));
+    warn_unknown(v, object, {"center", "radius"}, warnings);
+    return {point(required(v, "center", object), object + ".center"),
+            number(required(v, "radius", object), object + ".radius")};
+  }
+
+  std::vector<Disc> discs(const json& v, std::vector<std::string>* warnings) const {
+    if (!v.is_array()) fail("discs", "expected a list of {\"center\": [x, y], \"radius\": r}, got " + abbreviated(v));
+    std::vector<Disc> out;
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(disc(v[i], "discs[" + std::to_string(i) + "]", warnings));
+    return out;
+  }
+
+  std::vector<Wall> walls(const json& v) const {
+    if (!v.is_array())
+      fail("walls", "expected a list of polylines [[[x, y], [x, y], ...], ...], got " + abbreviated(v));
+    std::vector<Wall> out;
+    for (std::size_t i = 0; i < v.size(); ++i) out.push_back(ring(v[i], "walls[" + std::to_string(i) + "]"));
+    return out;
+  }
+
   std::size_t count(const json& v, const std::string& object) const {
     if (!v.is_number_unsigned() && !(v.is_number_integer() && v.get<std::int64_t>() >= 0))
       fail(object, "expected a whole number of at least 0, got " + abbreviated(v));
@@ -139,21 +187,17 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
   Reader r(name);
   json root = r.parse(text);
   if (!root.is_object()) r.fail("world", "expected a JSON object at the top level");
-  r.warn_unknown(root, "world",
-                 {"bounds", "obstacles", "obstacles_wkt", "robot", "start", "goal", "queries", "changes"}, warnings);
+  r.refuse_unknown_shapes(root, warnings);
 
   World world;
   world.source = name;
 
-  if (root.contains("bounds")) {
-    const json& b = root["bounds"];
-    if (!b.is_array() || b.size() != 4)
-      r.fail("bounds", "expected [xmin, ymin, xmax, ymax], got " + Reader::abbreviated(b));
-    world.bounds = Bounds{r.number(b[0], "bounds[0]"), r.number(b[1], "bounds[1]"), r.number(b[2], "bounds[2]"),
-                          r.number(b[3], "bounds[3]")};
-  }
+  if (root.contains("bounds")) r.bounds(root["bounds"], world, warnings);
+  if (root.contains("discs")) world.discs = r.discs(root["discs"], warnings);
+  if (root.contains("walls")) world.walls = r.walls(root["walls"]);
 
-  if (!root.contains("obstacles") && !root.contains("obstacles_wkt"))
+  if (!root.contains("obstacles") && !root.contains("obstacles_wkt") && !root.contains("discs") &&
+      !root.contains("walls"))
     r.fail("world", "missing field \"obstacles\" (use [] for a world without obstacles)");
   if (root.contains("obstacles")) {
     const json& obstacles = root["obstacles"];
@@ -179,8 +223,16 @@ World parse_world(const std::string& text, const std::string& name, std::vector<
 
   if (root.contains("robot")) {
     const json& robot = root["robot"];
-    if (!robot.is_object()) r.fail("robot", "expected {\"parts\": [...]}");
-    r.warn_unknown(robot, "robot", {"parts", "car"}, warnings);
+    if (!robot.is_object()) r.fail("robot", "expected {\"parts\": [...]} or {\"disc\": r}");
+    r.warn_unknown(robot, "robot", {"parts", "car", "disc"}, warnings);
+    if (robot.contains("disc") && !robot.contains("parts")) {
+      world.robot.disc = r.number(robot["disc"], "robot.disc");
+      if (robot.contains("car")) r.fail("robot", "a disc robot is {\"disc\": r} alone: a car's body is its parts");
+    }
+  }
+  if (root.contains("robot") && !world.robot.disc) {
+    const json& robot = root["robot"];
+    if (robot.contains("disc")) r.fail("robot", "a robot is {\"parts\": [...]} or {\"disc\": r}, not both");
     const json& parts = r.required(robot, "parts", "robot");
     if (!parts.is_array()) r.fail("robot.parts", "expected a list of polygons");
     // A robot named without parts is almost certainly a mistake, not a point robot.

@@ -31,6 +31,10 @@ struct PlannerEntry {
   // Whether it goes on improving its solution until its limit (RRT*): a benchmark samples its
   // cost over time (PlanReport::improvements).
   bool anytime = false;
+  // Whether it plans with a world's round things and thin walls (World's discs, walls, disc
+  // bounds, a disc robot: round_features): registry/world_queries.hpp refuses it such a world
+  // otherwise, naming what it does not plan with.
+  bool plans_round_worlds = false;
 };
 
 // An entry from a plain options struct, its table, and a factory taking the parsed options. A

@@ -22,7 +22,8 @@ PlannerListing listing_of(const PlannerEntry<Space>& entry) {
           entry.description,
           entry.options,
           entry.anytime,
-          entry.follows_world_changes};
+          entry.follows_world_changes,
+          entry.plans_round_worlds};
 }
 
 // A registry planner of one space, built for a problem that space plans.

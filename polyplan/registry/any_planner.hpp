@@ -28,6 +28,7 @@ struct PlannerListing {
   std::vector<OptionInfo> options;
   bool anytime = false;                // improves its solution until its limit (RRT*)
   bool follows_world_changes = false;  // plans a world whose obstacles change as the robot drives
+  bool plans_round_worlds = false;     // plans with discs, walls, disc bounds and a disc robot
 };
 
 class AnyPlanner {

@@ -1,8 +1,11 @@
 #include <polyplan/registry/robot_path_check.hpp>
 
+#include <polyplan/geometry/round_world_check.hpp>
+
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/io/world_reader.hpp>
 #if POLYPLAN_WITH_CAR
 #include <polyplan/car/car_path_check.hpp>
@@ -68,7 +71,13 @@ PathCheck check_path_file(const Problem& problem, const std::string& path_file) 
                      " numbers: expected [x, y] points, or [x, y, degrees] or [x, y, sin, cos] poses");
   std::vector<ExactPoint> points;
   for (const auto& row : rows) points.push_back({row[0], row[1]});
-  return check_path(problem.cspace(), points);
+  return check_translating_path(problem, points);
+}
+
+PathCheck check_translating_path(const Problem& problem, const std::vector<ExactPoint>& points) {
+  const World& world = *problem.world();
+  if (round_features(world).empty()) return check_path(problem.cspace(), points);
+  return RoundWorld(world).check_path(points);
 }
 
 }  // namespace polyplan

@@ -16,4 +16,8 @@ namespace polyplan {
 // InputError for a bad path file, or a path of a family this build is without.
 PathCheck check_path_file(const Problem& problem, const std::string& path_file);
 
+// A translating robot's polyline in a world: in its C-space, or exactly among its discs and walls
+// for a point or disc robot (geometry/round_world_check.hpp).
+PathCheck check_translating_path(const Problem& problem, const std::vector<ExactPoint>& points);
+
 }  // namespace polyplan

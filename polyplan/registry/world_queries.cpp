@@ -29,7 +29,34 @@ void require_planner_for_changes(const World& world, std::string_view planner) {
                    " plans a world that stands still: use one that follows the changes (" + names + ")");
 }
 
+// Discs, walls, disc bounds or a disc robot, for a planner that plans among polygons only.
+void require_planner_for_round_features(const World& world, std::string_view planner) {
+  const std::vector<std::string> features = round_features(world), able = planners_for_round_worlds();
+  if (features.empty() || std::find(able.begin(), able.end(), planner) != able.end()) return;
+  std::string what, names;
+  for (const std::string& feature : features) what += (what.empty() ? "" : ", ") + feature;
+  for (const std::string& name : able) names += (names.empty() ? "" : ", ") + name;
+  throw InputError(world.source + ": " + what + ": the planner " + std::string(planner) +
+                   " plans among polygons and a polygon or point robot only" +
+                   (names.empty() ? std::string(": no planner plans with these yet (polyplan check checks a path "
+                                                "among them exactly)")
+                                  : ": use one that plans with them (" + names + ")"));
+}
+
 }  // namespace
+
+std::vector<std::string> planners_for_round_worlds() {
+  std::vector<std::string> names;
+  const auto add = [&](const auto& registry) {
+    for (const auto& entry : registry.entries())
+      if (entry.plans_round_worlds && std::find(names.begin(), names.end(), entry.name) == names.end())
+        names.push_back(entry.name);
+  };
+  add(planners<TranslatingRobot>());
+  add(planners<RotatingRobot>());
+  add(planners<SteeredCar>());
+  return names;
+}
 
 std::vector<std::string> planners_following_changes() {
   std::vector<std::string> names;
@@ -51,6 +78,7 @@ void require_planner_for_robot(const World& world, std::string_view planner) {
         world.source + ": robot: the planner " + std::string(planner) +
         " plans for a car, and this robot has no \"car\": {\"turning_radius\": R, \"reverse\": true|false}");
   if (!world.changes.empty()) require_planner_for_changes(world, planner);
+  require_planner_for_round_features(world, planner);
 }
 
 #if POLYPLAN_WITH_CAR

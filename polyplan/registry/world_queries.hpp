@@ -22,11 +22,16 @@ void require_plannable_queries(const World& world, const CSpace* cspace, std::st
 // InputError when `planner` cannot plan for the world's robot at all, asked or not: a car's
 // (robot.car) paths must keep to its turning radius, which no translating or rotating planner does,
 // and a car planner needs the car's turning radius; a world with "changes" goes only to a planner
-// that follows them (PlannerEntry::follows_world_changes).
+// that follows them (PlannerEntry::follows_world_changes), and one with discs, walls, disc bounds
+// or a disc robot (round_features) only to a planner that plans with them
+// (PlannerEntry::plans_round_worlds), the refusal naming what the world has.
 void require_planner_for_robot(const World& world, std::string_view planner);
 
 // The planners of polygon worlds that follow a world's "changes", in the registry's order (the
 // first is a changing world's default).
 std::vector<std::string> planners_following_changes();
+
+// The planners of every space that plan with discs, walls, disc bounds and a disc robot.
+std::vector<std::string> planners_for_round_worlds();
 
 }  // namespace polyplan

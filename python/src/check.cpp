@@ -12,6 +12,7 @@
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/input_limits.hpp>
 #include <polyplan/io/car_path_reader.hpp>
+#include <polyplan/registry/robot_path_check.hpp>
 #include <polyplan/rotation/pose_path_check.hpp>
 
 #include <pybind11/numpy.h>
@@ -88,7 +89,7 @@ PathCheck check_world_rows(WorldHandle& world, const py::handle& path) {
   if (columns == 2) {
     const std::vector<ExactPoint> points = exact_points(path, "path");
     if (points.empty()) throw InputError("path: expected at least one point");
-    return locked(world.lock(), [&] { return check_path(world.cspace(), points); });
+    return locked(world.lock(), [&] { return check_translating_path(world.door(), points); });
   }
   const Rows rows = exact_rows(path);
   std::vector<Pose> poses;
@@ -115,7 +116,7 @@ PathCheck check_plan(ProblemHandle& handle, const PlanResult& plan) {
           using Configuration = typename std::decay_t<decltype(report.path)>::value_type;
           if (report.path.empty()) throw InputError("check: the plan has no path (" + report.why_not + ")");
           if constexpr (std::is_same_v<Configuration, ExactPoint>)
-            return check_path(static_cast<WorldHandle&>(handle).cspace(), report.path);
+            return check_translating_path(handle.door(), report.path);
           else if constexpr (std::is_same_v<Configuration, Pose>)
             return check_pose_path(*handle.door().world(), report.path);
           else if constexpr (std::is_same_v<Configuration, JointAngles>)

@@ -222,3 +222,48 @@ TEST(WorldReader, BadChangesNameTheirField) {
                     R"([0, 1]]}])"),
             "test.json: changes[1].after_moves: 2 after changes[0]'s 5: list the changes in the order they happen");
 }
+
+TEST(WorldReader, ReadsRoundThingsAndThinWallsExactly) {
+  const World w = world_from(R"({"bounds": {"center": [0, 0.5], "radius": "21/2"},
+      "discs": [{"center": [1, 2], "radius": 0.1}], "walls": [[[0, 0], [0, 0], [0, 3], [2, 3]]],
+      "robot": {"disc": 0.25}, "start": [1, 1], "goal": [-1, -1]})");
+  ASSERT_EQ(w.discs.size(), 1u);
+  EXPECT_EQ(w.discs[0].radius, Rational(1, 10));
+  EXPECT_EQ(w.discs[0].center.y, Rational(2));
+  ASSERT_EQ(w.walls.size(), 1u);
+  EXPECT_EQ(w.walls[0].size(), 3u);  // the repeated point dropped
+  ASSERT_TRUE(w.disc_bounds.has_value());
+  EXPECT_EQ(w.disc_bounds->radius, Rational(21, 2));
+  EXPECT_FALSE(w.bounds.has_value());
+  ASSERT_TRUE(w.robot.disc.has_value());
+  EXPECT_EQ(*w.robot.disc, Rational(1, 4));
+  EXPECT_FALSE(w.robot.is_point());
+  EXPECT_EQ(round_features(w), (std::vector<std::string>{"discs", "walls", "disc bounds", "a disc robot"}));
+  EXPECT_TRUE(round_features(world_from(R"({"obstacles": []})")).empty());
+}
+
+TEST(WorldReader, RefusesRoundThingsItCannotReadNamingThem) {
+  const auto refused = [](const std::string& text) {
+    try {
+      parse_world(text, "test.json");
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(refused(R"({"discs": [{"center": [0, 0], "radius": 0}]})"),
+            "test.json: discs[0].radius: 0: expected a radius > 0");
+  EXPECT_EQ(refused(R"({"discs": [{"center": [0, 0]}]})"), "test.json: discs[0]: missing field \"radius\"");
+  EXPECT_EQ(refused(R"({"walls": [[[1, 1], [1, 1]]]})"),
+            "test.json: walls[0]: a wall needs at least two distinct points [[x, y], [x, y], ...]");
+  EXPECT_EQ(refused(R"({"obstacles": [], "bounds": {"center": [0, 0], "radius": -1}})"),
+            "test.json: bounds.radius: -1: expected a radius > 0");
+  EXPECT_EQ(refused(R"({"obstacles": [], "robot": {"disc": 1, "parts": [[[0, 0], [1, 0], [0, 1]]]}})"),
+            "test.json: robot: a robot is {\"parts\": [...]} or {\"disc\": r}, not both");
+  EXPECT_EQ(refused(R"({"obstacles": [], "robot": {"disc": 1, "car": {"turning_radius": 1}}})"),
+            "test.json: robot: a disc robot is {\"disc\": r} alone: a car's body is its parts");
+  // An unknown field that may hold obstacles is an error: planning straight through them is not an answer.
+  EXPECT_NE(refused(R"({"obstacles": [], "circles": [{"center": [0, 0], "radius": 1}]})")
+                .find("test.json: world: unknown field \"circles\": it may describe what is not free"),
+            std::string::npos);
+}

@@ -103,7 +103,7 @@ TEST_P(EveryCarPlannerOnEveryWorld, KeepsThePlannerPromises) {
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryCarPlannerOnEveryWorld,
                          ::testing::Combine(::testing::ValuesIn(test::registered_planners<SteeredCar>()),
-                                            ::testing::ValuesIn(test::shipped("worlds"))),
+                                            ::testing::ValuesIn(test::shipped_worlds(false))),
                          [](const auto& info) {
                            return test::test_name(std::get<0>(info.param), std::get<1>(info.param));
                          });

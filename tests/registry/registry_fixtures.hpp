@@ -1,6 +1,7 @@
 #pragma once
 // What the conformance tests of the registries iterate over (the shipped data files of a folder
 // and the names a registry holds) and the promises every report keeps whatever its space.
+#include <polyplan/io/world_reader.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_json.hpp>
 #include <polyplan/registry/registry.hpp>
@@ -22,6 +23,17 @@ inline std::vector<std::string> shipped(const std::string& folder) {
   for (const auto& entry : std::filesystem::directory_iterator(std::string(POLYPLAN_SOURCE_DIR) + "/data/" + folder))
     if (entry.path().extension() == ".json") names.push_back(entry.path().stem().string());
   std::sort(names.begin(), names.end());
+  return names;
+}
+
+// The shipped worlds (data/worlds) whose round_features are empty (`round` false: polygons and a
+// polygon or point robot only) or not (`round` true: discs, walls, disc bounds, a disc robot).
+inline std::vector<std::string> shipped_worlds(bool round) {
+  std::vector<std::string> names;
+  for (const std::string& name : shipped("worlds"))
+    if (round_features(read_world(std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + name + ".json")).empty() !=
+        round)
+      names.push_back(name);
   return names;
 }
 

@@ -139,7 +139,7 @@ TEST_P(EveryPlannerOnEveryWorld, KeepsThePlannerPromises) {
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryPlannerOnEveryWorld,
                          ::testing::Combine(::testing::ValuesIn(test::registered_planners<TranslatingRobot>()),
-                                            ::testing::ValuesIn(test::shipped("worlds"))),
+                                            ::testing::ValuesIn(test::shipped_worlds(false))),
                          [](const auto& info) {
                            return test::test_name(std::get<0>(info.param), std::get<1>(info.param));
                          });
@@ -193,7 +193,7 @@ TEST_P(EveryRotatingPlannerOnEveryWorld, KeepsThePlannerPromises) {
 
 INSTANTIATE_TEST_SUITE_P(Registry, EveryRotatingPlannerOnEveryWorld,
                          ::testing::Combine(::testing::ValuesIn(test::registered_planners<RotatingRobot>()),
-                                            ::testing::ValuesIn(test::shipped("worlds"))),
+                                            ::testing::ValuesIn(test::shipped_worlds(false))),
                          [](const auto& info) {
                            return test::test_name(std::get<0>(info.param), std::get<1>(info.param));
                          });

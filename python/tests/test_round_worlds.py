@@ -1,0 +1,55 @@
+"""Worlds with discs, walls, disc bounds and a disc robot from Python: read exactly, their paths
+checked exactly (grazing a disc is valid, crossing a wall at a point is not), drawn with their
+circles and walls, and refused by the planners that do not plan with them, naming what the world
+has — never planned straight through."""
+import numpy as np
+import pytest
+
+import polyplan
+from conftest import data
+
+
+def test_a_wall_may_be_passed_round_its_end_but_not_crossed():
+    world = polyplan.read_world(data("worlds", "walls_bug.json"))
+    valid, why = polyplan.check(world, np.array([[-3, 0.5], [0, 100], [2, 0]]))  # round its end
+    assert valid, why
+    valid, why = polyplan.check(world, np.array([[-3, 0.5], [2, 0]]))
+    assert not valid and "crosses a wall" in why
+
+
+def test_a_path_may_graze_a_disc():
+    # The line y = 0.3 touches the disc of centre (0, 0.1) and radius 0.2: in doubles it enters it.
+    world = polyplan.World.from_dict({"discs": [{"center": [0, "0.1"], "radius": "0.2"}]})
+    assert polyplan.check(world, [["-1", "0.3"], ["1", "0.3"]]) == (True, "")
+    assert not polyplan.check(world, [["-1", "0.2999999999"], ["1", "0.2999999999"]])[0]
+
+
+def test_planners_refuse_them_naming_what_the_world_has():
+    world = polyplan.read_world(data("worlds", "disc_robot_floor_plan.json"))
+    with pytest.raises(polyplan.InputError, match=r"disc_robot_floor_plan.json: discs, walls, a disc robot: "
+                                                   r"the planner visibility plans among polygons"):
+        polyplan.plan(world, planner="visibility")
+    with pytest.raises(polyplan.InputError, match="discs: the planner rrt plans among polygons"):
+        polyplan.plan(polyplan.read_world(data("worlds", "sphere_world_discs.json")), planner="rrt")
+
+
+def test_the_picture_shows_the_discs_and_walls():
+    picture = polyplan.svg(polyplan.read_world(data("worlds", "disc_robot_floor_plan.json")))
+    for legend in ("obstacles and discs", "walls (zero thickness)", "robot at start", "bounds"):
+        assert legend in picture, legend
+
+
+def test_an_unknown_field_that_may_hold_obstacles_is_refused():
+    with pytest.raises(polyplan.InputError, match=r'unknown field "circles": it may describe what is not free'):
+        polyplan.World.from_dict({"obstacles": [], "circles": [{"center": [0, 0], "radius": 1}]})
+
+
+def test_the_program_checks_a_path_among_walls(tmp_path):
+    from conftest import run_cli
+    path = tmp_path / "through.json"
+    path.write_text('{"path": [[1, 1], [11, 7]]}')
+    code, out, err = run_cli("check", data("worlds", "disc_robot_floor_plan.json"), str(path))
+    assert code == 1 and "walls[" in out + err, (out, err)
+    path.write_text('{"path": [[1, 1], [3.5, 3.5], [5, 3.5], [7, 4.5], [10.5, 4.5], [11, 7]]}')
+    code, out, err = run_cli("check", data("worlds", "disc_robot_floor_plan.json"), str(path))
+    assert code == 0, (out, err)

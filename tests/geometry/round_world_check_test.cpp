@@ -1,0 +1,97 @@
+// Exact motions among discs, walls, disc bounds and for a disc robot (geometry/round_world_check):
+// grazing is valid, entering is not; a wall may be touched and slid along, never crossed, even at
+// a point; a passage exactly as wide as the robot (or two tangent discs) is no passage, one a
+// hair wider is; and decimals that doubles put on the wrong side are decided right.
+#include <polyplan/geometry/round_world_check.hpp>
+
+#include "world_fixtures.hpp"
+
+#include <gtest/gtest.h>
+
+namespace polyplan {
+namespace {
+
+using test::pt;
+using test::world_from;
+
+bool valid(const World& world, const std::vector<ExactPoint>& path) {
+  const PathCheck check = RoundWorld(world).check_path(path);
+  return check.valid;
+}
+
+TEST(RoundWorldCheck, APathMayGrazeADiscButNotEnterIt) {
+  // The line y = 0.3 is tangent to the disc of centre (0, 0.1) and radius 0.2; in doubles 0.3 - 0.1
+  // is 0.19999999999999998, below the radius, and the tangent would count as a collision.
+  const World w = world_from(R"({"discs": [{"center": [0, 0.1], "radius": 0.2}]})");
+  EXPECT_TRUE(valid(w, {pt("-1", "0.3"), pt("1", "0.3")}));
+  EXPECT_FALSE(valid(w, {pt("-1", "0.29999999999999999999"), pt("1", "0.29999999999999999999")}));
+  EXPECT_FALSE(valid(w, {pt("0", "0.3"), pt("0", "-1")}));  // from the rim straight in
+  EXPECT_TRUE(valid(w, {pt("0", "0.3"), pt("0", "1")}));    // from the rim away
+  EXPECT_TRUE(RoundWorld(w).config_not_free(pt("0", "0.2")).has_value());
+  EXPECT_FALSE(RoundWorld(w).config_not_free(pt("0", "0.3")).has_value());
+}
+
+TEST(RoundWorldCheck, TwoTangentDiscsLeaveNoPassage) {
+  const World w = world_from(R"({"discs": [{"center": [0, 1], "radius": 1}, {"center": [0, -1], "radius": 1}]})");
+  EXPECT_FALSE(valid(w, {pt("-2", "0"), pt("2", "0")}));                   // through the point they touch at
+  EXPECT_FALSE(valid(w, {pt("-2", "0"), pt("0", "0"), pt("2", "0")}));     // the same with a vertex there
+  EXPECT_TRUE(valid(w, {pt("-2", "0"), pt("0", "0"), pt("-1", "0")}));     // to it and back the way it came
+  EXPECT_FALSE(valid(w, {pt("-2", "0"), pt("0", "0"), pt("-2", "0.5")}));  // turning there: into a disc
+}
+
+TEST(RoundWorldCheck, AWallMayBeTouchedAndSlidAlongButNotCrossed) {
+  const World w = world_from(R"({"walls": [[[0, -1], [0, 1]], [[5, -1], [5, 0], [6, 1]]]})");
+  EXPECT_FALSE(valid(w, {pt("-1", "0.5"), pt("1", "0.5")}));            // across its middle
+  EXPECT_FALSE(valid(w, {pt("-1", "0"), pt("0", "0"), pt("1", "0")}));  // across, a vertex on it
+  EXPECT_TRUE(valid(w, {pt("0", "-2"), pt("0", "2")}));                 // along it, end to end
+  EXPECT_TRUE(valid(w, {pt("-1", "0"), pt("0", "0"), pt("-1", "1")}));  // to it and back
+  EXPECT_TRUE(valid(w, {pt("-1", "1"), pt("1", "1")}));                 // past its end, through the end
+  EXPECT_FALSE(valid(w, {pt("4", "0"), pt("6", "0")}));                 // across its bend
+  EXPECT_TRUE(valid(w, {pt("5", "-2"), pt("5", "0"), pt("6", "1")}));   // along it round the bend
+  EXPECT_TRUE(valid(w, {pt("4", "2"), pt("4", "-2")}));                 // beside it
+}
+
+TEST(RoundWorldCheck, ADiscRobotPassesAGapAHairWiderThanItselfOnly) {
+  const std::string walls = R"("obstacles": [[[-3, -1], [-0.5, -1], [-0.5, 1], [-3, 1]],
+                                             [[0.5, -1], [3, -1], [3, 1], [0.5, 1]]])";
+  const World exact = world_from(R"({"robot": {"disc": 0.5}, )" + walls + "}");
+  EXPECT_FALSE(valid(exact, {pt("0", "-3"), pt("0", "3")}));  // both sides touched: a passage of zero width
+  const World wider = world_from(R"({"robot": {"disc": 0.4999999999999}, )" + walls + "}");
+  EXPECT_TRUE(valid(wider, {pt("0", "-3"), pt("0", "3")}));
+  EXPECT_FALSE(valid(wider, {pt("0.0000000000002", "-3"), pt("0.0000000000002", "3")}));  // too near one side
+}
+
+TEST(RoundWorldCheck, ADiscRobotKeepsItsRadiusFromDiscsWallsAndBounds) {
+  const World w = world_from(R"({"robot": {"disc": 0.5}, "bounds": {"center": [0, 0], "radius": 10},
+                                 "discs": [{"center": [0, 0], "radius": 1}], "walls": [[[5, -1], [5, 1]]]})");
+  EXPECT_TRUE(valid(w, {pt("-3", "1.5"), pt("3", "1.5")}));  // tangent to the disc grown by the radius
+  EXPECT_FALSE(valid(w, {pt("-3", "1.49"), pt("3", "1.49")}));
+  EXPECT_TRUE(valid(w, {pt("4.5", "-3"), pt("4.5", "3")}));  // sliding along the wall at the radius
+  EXPECT_FALSE(valid(w, {pt("4.6", "-3"), pt("4.6", "3")}));
+  EXPECT_FALSE(valid(w, {pt("4", "0"), pt("6", "0")}));    // a disc robot does not cross a wall either
+  EXPECT_TRUE(valid(w, {pt("3", "-3"), pt("9.5", "0")}));  // to the rim of the bounds less the radius
+  EXPECT_FALSE(valid(w, {pt("3", "-3"), pt("9.6", "0")}));
+}
+
+TEST(RoundWorldCheck, PolygonsTouchingAtACornerLeaveNoPassage) {
+  const World w = world_from(R"({"obstacles": [[[0, 2], [2, 2], [2, 4], [0, 4]], [[2, 0], [4, 0], [4, 2], [2, 2]]],
+                                 "discs": [{"center": [9, 9], "radius": 0.5}]})");
+  EXPECT_FALSE(valid(w, {pt("1", "1"), pt("3", "3")}));
+  EXPECT_TRUE(valid(w, {pt("1", "1"), pt("2", "2"), pt("1", "1.5")}));
+  EXPECT_FALSE(valid(w, {pt("1", "3"), pt("3", "1")}));  // through both squares
+}
+
+TEST(RoundWorldCheck, APolygonRobotIsRefusedNamingIt) {
+  const World w =
+      world_from(R"({"robot": {"parts": [[[0, 0], [1, 0], [0, 1]]]}, "discs": [{"center": [5, 5], "radius": 1}]})");
+  try {
+    RoundWorld checker(w);
+    ADD_FAILURE() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("test.json: robot: a polygon robot among discs or walls"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace polyplan

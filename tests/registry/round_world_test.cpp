@@ -1,0 +1,67 @@
+// Worlds with discs, walls, disc bounds or a disc robot (data/worlds: sphere_world_discs, ...):
+// through the front door every planner either plans them or refuses, naming the file and what it
+// does not plan with — never a plan straight through a disc or a wall; and their paths are
+// checked exactly (check_translating_path).
+#include "registry_fixtures.hpp"
+
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/registry/any_planner.hpp>
+#include <polyplan/registry/problem.hpp>
+#include <polyplan/registry/robot_path_check.hpp>
+
+#include <gtest/gtest.h>
+
+namespace polyplan {
+namespace {
+
+std::string path_of(const std::string& world) {
+  return std::string(POLYPLAN_SOURCE_DIR) + "/data/worlds/" + world + ".json";
+}
+
+class EveryPlannerOnEveryRoundWorld : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(EveryPlannerOnEveryRoundWorld, PlansOrRefusesNamingWhatItHas) {
+  const Problem problem = Problem::read(path_of(GetParam()));
+  const std::vector<std::string> features = round_features(*problem.world());
+  ASSERT_FALSE(features.empty());
+  for (const PlannerListing& listing : planner_catalog()) {
+    if (listing.kind != "World") continue;
+    SCOPED_TRACE(listing.name);
+    try {
+      const auto planner = make_planner(listing.name, problem);
+      EXPECT_TRUE(listing.plans_round_worlds) << "built for a world it does not plan with";
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_FALSE(listing.plans_round_worlds) << message;
+      EXPECT_NE(message.find(GetParam() + ".json"), std::string::npos) << message;
+      EXPECT_NE(message.find(listing.name), std::string::npos) << message;
+      const bool names_all = std::all_of(features.begin(), features.end(),
+                                         [&](const std::string& f) { return message.find(f) != std::string::npos; });
+      EXPECT_TRUE(names_all || message.find("car") != std::string::npos) << message;
+    }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Shipped, EveryPlannerOnEveryRoundWorld, ::testing::ValuesIn(test::shipped_worlds(true)),
+                         [](const auto& info) { return test::test_name("all", info.param); });
+
+TEST(RoundWorlds, TheirPathsAreCheckedExactlyAndTheirCSpaceRefused) {
+  const Problem floor = Problem::read(path_of("disc_robot_floor_plan"));
+  // Through both doorways, 1 wide, the robot 0.6 across; then into the wall between them.
+  const PathCheck doorways =
+      check_translating_path(floor, {{1, 1}, {3.5, 3.5}, {5, 3.5}, {7, 4.5}, {10.5, 4.5}, {11, 7}});
+  EXPECT_TRUE(doorways.valid) << doorways.reason;
+  const PathCheck through = check_translating_path(floor, {{1, 1}, {11, 7}});
+  EXPECT_FALSE(through.valid);
+  EXPECT_NE(through.reason.find("walls["), std::string::npos) << through.reason;
+  try {
+    floor.cspace();
+    ADD_FAILURE() << "a polygon C-space of a disc robot among walls";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("discs, walls, a disc robot: the polygon C-space holds"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace polyplan
