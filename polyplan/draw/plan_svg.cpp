@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <string>
 
 namespace polyplan {
@@ -222,9 +223,15 @@ void draw_marks(svg::Drawing& drawing, const std::vector<PlanMark<ExactPoint>>& 
     }
 }
 
-svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactPoint>>& reports,
-                       const std::vector<std::string>& labels) {
-  svg::Drawing drawing(view_box(cspace.world(), cspace));
+namespace {
+
+// What a picture of reports draws over its background (`background(drawing, free_space)`: the
+// C-space, or the world of discs and walls): cells, decompositions, graphs, expanded points,
+// bottlenecks, marks and paths.
+svg::Drawing draw_reports_over(
+    svg::Box2 view, const std::function<void(svg::Drawing&, const PlanReport<ExactPoint>*, FreeSpace)>& background,
+    const std::vector<PlanReport<ExactPoint>>& reports, const std::vector<std::string>& labels) {
+  svg::Drawing drawing(view);
   const PlanRecording<ExactPoint>* with_cells = nullptr;
   const PlanRecording<ExactPoint>* with_graph = nullptr;
   const PlanRecording<ExactPoint>* with_decomposition = nullptr;
@@ -236,13 +243,13 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   if (with_cells) draw_cells(drawing, *with_cells->cells);
   if (with_decomposition) draw_decomposition(drawing, *with_decomposition->decomposition);
   // A world that changed as the robot drove is drawn as it ended, where the cells show it too.
-  const CSpace* drawn = &cspace;
+  const PlanReport<ExactPoint>* changed = nullptr;
   for (const auto& r : reports)
     if (r.recording.world_at_end) {
-      drawn = r.recording.world_at_end.get();
+      changed = &r;
       break;
     }
-  draw_cspace(drawing, *drawn, with_cells || with_decomposition ? FreeSpace::unfilled : FreeSpace::filled);
+  background(drawing, changed, with_cells || with_decomposition ? FreeSpace::unfilled : FreeSpace::filled);
   if (with_graph) draw_graph(drawing, *with_graph->graph);
 
   std::vector<ExactPoint> expanded;
@@ -280,6 +287,24 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
     }
   }
   return drawing;
+}
+
+}  // namespace
+
+svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactPoint>>& reports,
+                       const std::vector<std::string>& labels) {
+  const auto background = [&](svg::Drawing& drawing, const PlanReport<ExactPoint>* changed, FreeSpace free_space) {
+    draw_cspace(drawing, changed ? *changed->recording.world_at_end : cspace, free_space);
+  };
+  return draw_reports_over(view_box(cspace.world(), cspace), background, reports, labels);
+}
+
+svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<ExactPoint>>& reports,
+                       const std::vector<std::string>& labels) {
+  const auto background = [&](svg::Drawing& drawing, const PlanReport<ExactPoint>*, FreeSpace) {
+    draw_world(drawing, world);
+  };
+  return draw_reports_over(view_box(world), background, reports, labels);
 }
 
 }  // namespace polyplan

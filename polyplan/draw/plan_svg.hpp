@@ -18,6 +18,10 @@ namespace polyplan {
 // the cells and the expanded configurations; others draw their paths only.
 svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactPoint>>& reports,
                        const std::vector<std::string>& labels = {});
+// The same over a world with discs or walls (World::round_features), which has no polygon C-space:
+// the world as its file draws it (circles, walls), then what the reports carry.
+svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<ExactPoint>>& reports,
+                       const std::vector<std::string>& labels = {});
 
 // The pieces, for pictures of one's own (examples/search_comparison draws six searches' paths
 // over one roadmap):

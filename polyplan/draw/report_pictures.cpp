@@ -4,7 +4,6 @@
 #include <polyplan/draw/car_svg.hpp>
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/draw/pose_svg.hpp>
-#include <polyplan/draw/world_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
 
@@ -48,8 +47,10 @@ std::vector<Picture> arm_pictures(const ArmProblem& arm, const std::vector<const
 // over the world itself for poses and a car's states.
 template <class Configuration>
 svg::Drawing world_picture(const Problem& problem, const std::vector<PlanReport<Configuration>>& reports) {
-  if constexpr (std::is_same_v<Configuration, ExactPoint>) return draw_plan(problem.cspace(), reports);
-  else return draw_plan(*problem.world(), reports);
+  if constexpr (std::is_same_v<Configuration, ExactPoint>) {
+    if (!round_features(*problem.world()).empty()) return draw_plan(*problem.world(), reports);  // no C-space
+    return draw_plan(problem.cspace(), reports);
+  } else return draw_plan(*problem.world(), reports);
 }
 
 }  // namespace
@@ -65,8 +66,6 @@ std::vector<Picture> draw_reports(const Problem& problem, const std::vector<cons
   if (!reports.empty() && arm_reports != (problem.arm() != nullptr))
     throw InputError("the plans were not planned in " + problem.source());
   if (problem.arm()) return arm_pictures(*problem.arm(), reports, options);
-  if (reports.empty() && !round_features(*problem.world()).empty())  // discs or walls: no polygon C-space
-    return {Picture{"", draw_world_alone(*problem.world())}};
   if (reports.empty())  // the world alone
     return {Picture{"", problem.world()->robot.car ? world_picture<CarState>(problem, {})
                                                    : world_picture<ExactPoint>(problem, {})}};

@@ -240,12 +240,6 @@ svg::Box2 view_box(const World& world, const CSpace& cspace) { return view_of(wo
 
 svg::Box2 view_box(const World& world) { return view_of(world, {}); }
 
-svg::Drawing draw_world_alone(const World& world) {
-  svg::Drawing drawing(view_box(world));
-  draw_world(drawing, world);
-  return drawing;
-}
-
 std::vector<std::vector<svg::Point2>> placed_robot(const Robot& robot, double x, double y, double radians) {
   const double c = std::cos(radians), s = std::sin(radians);
   std::vector<std::vector<svg::Point2>> rings;

@@ -33,9 +33,6 @@ std::vector<std::vector<svg::Point2>> placed_robot(const Robot& robot, double x,
 // The world as its file describes it: bounds, obstacles (with holes), the robot placed at the
 // first start, and the starts and goals; a legend entry each.
 void draw_world(svg::Drawing& drawing, const World& world);
-// A picture of the world alone, in view_box(world): discs and disc bounds as circles, walls as
-// lines, a disc robot as a disc at the first start.
-svg::Drawing draw_world_alone(const World& world);
 
 // In this order, each with a legend entry: the free components (pale fills, one tint per component
 // when there are several, holes shown; left out with FreeSpace::unfilled, when something drawn

@@ -165,8 +165,7 @@ struct RoundWorld::Impl {
     std::string name;
   };
 
-  std::string source;
-  std::vector<PolygonWithHoles> polygons;  // the world's, which `obstacles` point into
+  World world;  // kept still: `obstacles` point into its polygons
   std::vector<Obstacle> obstacles;
   std::optional<Bounds> box;  // already shrunk by the robot's radius
   std::optional<Disc> disc;   // likewise
@@ -386,13 +385,12 @@ RoundWorld::RoundWorld(const World& world) : impl_(nullptr) {
                      ": robot: a polygon robot among discs or walls (its C-obstacles are rounded "
                      "polygons): not checked yet; a point or a disc robot is");
   auto impl = std::make_unique<Impl>();
-  impl->source = world.source;
+  impl->world = world;
   impl->robot = world.robot.disc.value_or(0);
-  impl->polygons = world.obstacles;  // kept still from here on: obstacles point into it
   const Rational& rho = impl->robot;
   using Core = Impl::Obstacle::Core;
-  for (std::size_t i = 0; i < impl->polygons.size(); ++i)
-    impl->obstacles.push_back({Core::polygon, {}, {}, {}, &impl->polygons[i], {}, rho, world.obstacle_names[i]});
+  for (std::size_t i = 0; i < impl->world.obstacles.size(); ++i)
+    impl->obstacles.push_back({Core::polygon, {}, {}, {}, &impl->world.obstacles[i], {}, rho, world.obstacle_names[i]});
   for (std::size_t i = 0; i < world.discs.size(); ++i)
     impl->obstacles.push_back({Core::point,
                                world.discs[i].center,
@@ -416,6 +414,10 @@ RoundWorld::RoundWorld(const World& world) : impl_(nullptr) {
   if (world.disc_bounds) impl->disc = Disc{world.disc_bounds->center, world.disc_bounds->radius - rho};
   impl_ = std::move(impl);
 }
+
+const World& RoundWorld::world() const { return impl_->world; }
+const std::optional<Bounds>& RoundWorld::reference_box() const { return impl_->box; }
+const std::optional<Disc>& RoundWorld::reference_disc() const { return impl_->disc; }
 
 RoundWorld::~RoundWorld() = default;
 RoundWorld::RoundWorld(RoundWorld&&) noexcept = default;

@@ -32,6 +32,12 @@ class RoundWorld {
   RoundWorld(RoundWorld&&) noexcept;
   RoundWorld& operator=(RoundWorld&&) noexcept;
 
+  // The world it checks, and where the robot's centre may be: the box bounds shrunk by its radius,
+  // or the disc bounds likewise (none without bounds; empty when the robot does not fit).
+  const World& world() const;
+  const std::optional<Bounds>& reference_box() const;
+  const std::optional<Disc>& reference_disc() const;
+
   // Why q is not a free configuration (inside which obstacle, or outside the bounds), or none.
   std::optional<std::string> config_not_free(const ExactPoint& q) const;
   // The polyline as a motion, vertex by vertex and segment by segment.

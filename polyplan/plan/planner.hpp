@@ -11,6 +11,7 @@
 #include <polyplan/geometry/car_pose.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/rotation.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/geometry/world.hpp>
 #include <polyplan/plan/plan_report.hpp>
 
@@ -25,6 +26,16 @@ struct TranslatingRobot {
   using Problem = CSpace;
   using Query = polyplan::Query;
   static constexpr std::string_view description = "a polygon robot translating in a polygon world";
+};
+
+// A point or disc robot among discs, walls of zero thickness and polygons, in box or disc bounds
+// (World::round_features): configurations are exact positions, motions straight segments checked
+// exactly in rationals (geometry/round_world_check.hpp). Its planners are the sampling planners.
+struct RoundRobot {
+  using Configuration = ExactPoint;
+  using Problem = RoundWorld;
+  using Query = polyplan::Query;
+  static constexpr std::string_view description = "a point or disc robot among discs, walls and polygons";
 };
 
 // A polygon robot that translates and turns about its reference point among polygon obstacles:

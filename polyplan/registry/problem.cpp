@@ -2,6 +2,7 @@
 
 #include <polyplan/geometry/arm_problem.hpp>
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/geometry/world.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/io/detail/text_file.hpp>
@@ -17,11 +18,12 @@ namespace polyplan {
 
 struct Problem::State {
   std::variant<World, ArmProblem> problem;
-  std::unique_ptr<CSpace> cspace;  // a world's, built on first use
+  std::unique_ptr<CSpace> cspace;           // a world's, built on first use
+  std::unique_ptr<RoundWorld> round_world;  // likewise, for a world with discs or walls
 };
 
-Problem::Problem(World world) : state_(std::make_shared<State>(State{std::move(world), nullptr})) {}
-Problem::Problem(ArmProblem arm) : state_(std::make_shared<State>(State{std::move(arm), nullptr})) {}
+Problem::Problem(World world) : state_(std::make_shared<State>(State{std::move(world), nullptr, nullptr})) {}
+Problem::Problem(ArmProblem arm) : state_(std::make_shared<State>(State{std::move(arm), nullptr, nullptr})) {}
 
 Problem Problem::read(const std::string& path, std::vector<std::string>* warnings) {
   return parse(detail::read_text_file(path), path, warnings);
@@ -60,8 +62,17 @@ const CSpace& Problem::cspace() const {
   return *state_->cspace;
 }
 
+const RoundWorld& Problem::round_world() const {
+  const World* w = world();
+  if (!w) throw std::logic_error("Problem::round_world: " + source() + " is an arm");
+  if (!state_->round_world) state_->round_world = std::make_unique<RoundWorld>(*w);
+  return *state_->round_world;
+}
+
 void Problem::prepare() const {
-  if (world() && !world()->robot.car) cspace();  // a car's planners build their own
+  if (!world() || world()->robot.car) return;  // a car's planners build their own
+  if (round_features(*world()).empty()) cspace();
+  else if (world()->robot.parts.empty()) round_world();
 }
 
 }  // namespace polyplan

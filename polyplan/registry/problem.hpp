@@ -14,6 +14,7 @@ namespace polyplan {
 struct World;
 struct ArmProblem;
 class CSpace;
+class RoundWorld;
 
 class Problem {
  public:
@@ -37,6 +38,10 @@ class Problem {
   // A world's C-space for a translating robot, built on first use and kept (a problem serves one
   // thread at a time, as its planners do); std::logic_error for an arm.
   const CSpace& cspace() const;
+  // A world's exact checks among its discs and walls, for a point or disc robot
+  // (geometry/round_world_check.hpp), built on first use and kept alike; InputError for a polygon
+  // robot, std::logic_error for an arm.
+  const RoundWorld& round_world() const;
   // Builds now what the planners of a world share (its C-space), rather than on first use: a
   // timed planner construction then measures the planner alone.
   void prepare() const;

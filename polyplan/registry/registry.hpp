@@ -85,5 +85,7 @@ template <>
 const PlannerRegistry<PlanarArm>& planners<PlanarArm>();
 template <>
 const PlannerRegistry<SteeredCar>& planners<SteeredCar>();
+template <>
+const PlannerRegistry<RoundRobot>& planners<RoundRobot>();
 
 }  // namespace polyplan

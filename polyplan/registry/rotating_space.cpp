@@ -8,7 +8,11 @@ namespace {
 
 class RotatingDoor final : public WorldDoor<RotatingRobot> {
  public:
-  bool plans(const Problem& problem) const override { return problem.world() && !problem.world()->robot.car; }
+  // Not a world with discs or walls: turning among them is not planned (the round robot's door, or
+  // the translating one's refusal, answers those).
+  bool plans(const Problem& problem) const override {
+    return problem.world() && !problem.world()->robot.car && round_features(*problem.world()).empty();
+  }
   const World& built_from(const Problem& problem) const override { return *problem.world(); }
   Query query(const Problem&, const QuerySpec& spec) const override { return world_query(spec); }
 

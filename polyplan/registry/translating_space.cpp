@@ -10,7 +10,12 @@ namespace {
 
 class TranslatingDoor final : public WorldDoor<TranslatingRobot> {
  public:
-  bool plans(const Problem& problem) const override { return problem.world() && !problem.world()->robot.car; }
+  // Not a point or disc robot among discs or walls: the round robot's door plans that
+  // (round_space.cpp); a polygon robot among them comes here to be refused, naming them.
+  bool plans(const Problem& problem) const override {
+    const World* world = problem.world();
+    return world && !world->robot.car && (round_features(*world).empty() || !world->robot.parts.empty());
+  }
   const CSpace& built_from(const Problem& problem) const override { return problem.cspace(); }
 
   Query query(const Problem&, const QuerySpec& spec) const override {

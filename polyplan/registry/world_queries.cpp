@@ -31,13 +31,16 @@ void require_planner_for_changes(const World& world, std::string_view planner) {
 
 // Discs, walls, disc bounds or a disc robot, for a planner that plans among polygons only.
 void require_planner_for_round_features(const World& world, std::string_view planner) {
-  const std::vector<std::string> features = round_features(world), able = planners_for_round_worlds();
+  const std::vector<std::string> features = round_features(world);
+  // A polygon robot's C-obstacles of discs are rounded polygons: no planner plans them yet.
+  const std::vector<std::string> able =
+      world.robot.parts.empty() ? planners_for_round_worlds() : std::vector<std::string>{};
   if (features.empty() || std::find(able.begin(), able.end(), planner) != able.end()) return;
   std::string what, names;
   for (const std::string& feature : features) what += (what.empty() ? "" : ", ") + feature;
   for (const std::string& name : able) names += (names.empty() ? "" : ", ") + name;
   throw InputError(world.source + ": " + what + ": the planner " + std::string(planner) +
-                   " plans among polygons and a polygon or point robot only" +
+                   " plans polygon worlds only (polygon obstacles, box bounds, a polygon or point robot)" +
                    (names.empty() ? std::string(": no planner plans with these yet (polyplan check checks a path "
                                                 "among them exactly)")
                                   : ": use one that plans with them (" + names + ")"));
@@ -52,6 +55,7 @@ std::vector<std::string> planners_for_round_worlds() {
       if (entry.plans_round_worlds && std::find(names.begin(), names.end(), entry.name) == names.end())
         names.push_back(entry.name);
   };
+  add(planners<RoundRobot>());
   add(planners<TranslatingRobot>());
   add(planners<RotatingRobot>());
   add(planners<SteeredCar>());

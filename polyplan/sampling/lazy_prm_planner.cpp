@@ -112,5 +112,6 @@ PlannerEntry<Space> lazy_prm_planner_entry(SamplingSpaceFactory<Space> make_spac
 template PlannerEntry<TranslatingRobot> lazy_prm_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> lazy_prm_planner_entry(SamplingSpaceFactory<PlanarArm>);
 template PlannerEntry<SteeredCar> lazy_prm_planner_entry(SamplingSpaceFactory<SteeredCar>);
+template PlannerEntry<RoundRobot> lazy_prm_planner_entry(SamplingSpaceFactory<RoundRobot>);
 
 }  // namespace polyplan

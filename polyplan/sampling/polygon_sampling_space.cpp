@@ -5,6 +5,7 @@
 #include <polyplan/geometry/detail/cspace_impl.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/rational.hpp>
+#include <polyplan/sampling/detail/sampling_box.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -13,14 +14,7 @@
 namespace polyplan {
 namespace {
 
-struct Box {
-  double xmin = std::numeric_limits<double>::infinity(), ymin = xmin, xmax = -xmin, ymax = -xmin;
-  void add(const ExactPoint& p) {
-    const double x = to_double(p.x), y = to_double(p.y);
-    xmin = std::min(xmin, x), ymin = std::min(ymin, y), xmax = std::max(xmax, x), ymax = std::max(ymax, y);
-  }
-  bool empty() const { return !(xmin <= xmax && ymin <= ymax); }
-};
+using Box = detail::SamplingBox;
 
 // The region samples are drawn from (see the header).
 Box sampling_box(const CSpace& cspace) {
@@ -33,9 +27,7 @@ Box sampling_box(const CSpace& cspace) {
   for (const PolygonWithHoles& c : cspace.cobstacles())
     for (const ExactPoint& p : c.outer) box.add(p);
   for (const Query& q : cspace.world().queries) box.add(q.start), box.add(q.goal);
-  if (box.empty()) box.add({0, 0});
-  const double margin = std::hypot(box.xmax - box.xmin, box.ymax - box.ymin) / 10 + 1;
-  box.xmin -= margin, box.ymin -= margin, box.xmax += margin, box.ymax += margin;
+  box.grow_for_unbounded();
   return box;
 }
 

@@ -106,5 +106,6 @@ PlannerEntry<Space> prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
 template PlannerEntry<TranslatingRobot> prm_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> prm_planner_entry(SamplingSpaceFactory<PlanarArm>);
 template PlannerEntry<SteeredCar> prm_planner_entry(SamplingSpaceFactory<SteeredCar>);
+template PlannerEntry<RoundRobot> prm_planner_entry(SamplingSpaceFactory<RoundRobot>);
 
 }  // namespace polyplan

@@ -104,5 +104,6 @@ PlannerEntry<Space> rrt_connect_planner_entry(SamplingSpaceFactory<Space> make_s
 template PlannerEntry<TranslatingRobot> rrt_connect_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> rrt_connect_planner_entry(SamplingSpaceFactory<PlanarArm>);
 template PlannerEntry<SteeredCar> rrt_connect_planner_entry(SamplingSpaceFactory<SteeredCar>);
+template PlannerEntry<RoundRobot> rrt_connect_planner_entry(SamplingSpaceFactory<RoundRobot>);
 
 }  // namespace polyplan

@@ -80,5 +80,6 @@ PlannerEntry<Space> rrt_planner_entry(SamplingSpaceFactory<Space> make_space) {
 template PlannerEntry<TranslatingRobot> rrt_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> rrt_planner_entry(SamplingSpaceFactory<PlanarArm>);
 template PlannerEntry<SteeredCar> rrt_planner_entry(SamplingSpaceFactory<SteeredCar>);
+template PlannerEntry<RoundRobot> rrt_planner_entry(SamplingSpaceFactory<RoundRobot>);
 
 }  // namespace polyplan

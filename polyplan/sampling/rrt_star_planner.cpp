@@ -230,5 +230,6 @@ PlannerEntry<Space> rrt_star_planner_entry(SamplingSpaceFactory<Space> make_spac
 template PlannerEntry<TranslatingRobot> rrt_star_planner_entry(SamplingSpaceFactory<TranslatingRobot>);
 template PlannerEntry<PlanarArm> rrt_star_planner_entry(SamplingSpaceFactory<PlanarArm>);
 template PlannerEntry<SteeredCar> rrt_star_planner_entry(SamplingSpaceFactory<SteeredCar>);
+template PlannerEntry<RoundRobot> rrt_star_planner_entry(SamplingSpaceFactory<RoundRobot>);
 
 }  // namespace polyplan

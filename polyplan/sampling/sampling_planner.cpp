@@ -211,5 +211,6 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
 template class SamplingPlanner<TranslatingRobot>;
 template class SamplingPlanner<PlanarArm>;
 template class SamplingPlanner<SteeredCar>;
+template class SamplingPlanner<RoundRobot>;
 
 }  // namespace polyplan

@@ -27,10 +27,22 @@ def test_a_path_may_graze_a_disc():
 def test_planners_refuse_them_naming_what_the_world_has():
     world = polyplan.read_world(data("worlds", "disc_robot_floor_plan.json"))
     with pytest.raises(polyplan.InputError, match=r"disc_robot_floor_plan.json: discs, walls, a disc robot: "
-                                                   r"the planner visibility plans among polygons"):
+                                                   r"the planner visibility plans polygon worlds only.*use one that plans "
+                                                   r"with them \(prm, lazyprm, rrt, rrtstar, rrtconnect\)"):
         polyplan.plan(world, planner="visibility")
-    with pytest.raises(polyplan.InputError, match="discs: the planner rrt plans among polygons"):
-        polyplan.plan(polyplan.read_world(data("worlds", "sphere_world_discs.json")), planner="rrt")
+
+
+def test_the_sampling_planners_plan_them_and_the_checker_agrees():
+    world = polyplan.read_world(data("worlds", "sphere_world_discs.json"))
+    plans = polyplan.plan(world, planner="rrt", seed=2)
+    assert len(plans) == 10 and all(p.status == "solved" for p in plans)
+    for p in plans:
+        assert polyplan.check(world, p) == (True, "")  # the plan's exact path, checked afresh
+    floor = polyplan.read_world(data("worlds", "disc_robot_floor_plan.json"))
+    plan = polyplan.plan(floor)[0]  # the default: rrtconnect
+    assert plan.status == "solved" and plan.planner == "rrtconnect"
+    assert polyplan.check(floor, plan) == (True, "")
+    assert "walls (zero thickness)" in polyplan.svg(floor, plan)
 
 
 def test_the_picture_shows_the_discs_and_walls():

@@ -12,7 +12,9 @@ TEST(Planners, ListsEveryPlannerOfEverySpaceWithOptionsAndDefaults) {
   const CliRun run = run_polyplan("planners --json -");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const auto spaces = nlohmann::json::parse(run.out);
-  ASSERT_EQ(spaces.size(), 4u);
+  ASSERT_EQ(spaces.size(), 5u);
+  EXPECT_EQ(spaces[4]["command"], "polyplan plan WORLD.json --planner NAME");  // discs and walls
+  EXPECT_EQ(spaces[4]["planners"][0]["name"], "prm");
   EXPECT_EQ(spaces[0]["command"], "polyplan plan WORLD.json --planner NAME");
   EXPECT_EQ(spaces[1]["command"], "polyplan plan WORLD.json --planner NAME");
   EXPECT_EQ(spaces[1]["planners"][0]["name"], "rotation");

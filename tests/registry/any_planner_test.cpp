@@ -141,7 +141,7 @@ std::optional<std::string> outside(const OptionRange& range) {
 
 TEST(Catalog, EveryNumberOrChoiceOptionIsDeclaredWithItsRangeAndRefusedOutsideItBeforeAnythingIsBuilt) {
   const Problem problems[] = {read("worlds/seed004.json"), read("worlds/car_park.json"),
-                              read("arms/two_link_points.json")};
+                              read("arms/two_link_points.json"), read("worlds/sphere_world_discs.json")};
   std::size_t refused = 0;
   for (const PlannerListing& planner : planner_catalog()) {
     const Problem* problem = nullptr;
@@ -172,12 +172,17 @@ TEST(Catalog, EveryNumberOrChoiceOptionIsDeclaredWithItsRangeAndRefusedOutsideIt
 TEST(Catalog, ListsEverySpacesPlannersOnceEachInTheRegistriesOrder) {
   const auto& catalog = planner_catalog();
   std::size_t expected = planners<TranslatingRobot>().entries().size() + planners<RotatingRobot>().entries().size() +
-                         planners<SteeredCar>().entries().size() + planners<PlanarArm>().entries().size();
+                         planners<SteeredCar>().entries().size() + planners<PlanarArm>().entries().size() +
+                         planners<RoundRobot>().entries().size();
   ASSERT_EQ(catalog.size(), expected);
   EXPECT_EQ(catalog.front().name, "visibility");
   EXPECT_EQ(catalog.front().kind, "World");
-  EXPECT_EQ(catalog.back().kind, "Arm");
-  EXPECT_EQ(catalog.back().file, "ARM.json");
+  const PlannerListing& last_arm = catalog[expected - planners<RoundRobot>().entries().size() - 1];
+  EXPECT_EQ(last_arm.kind, "Arm");
+  EXPECT_EQ(last_arm.file, "ARM.json");
+  EXPECT_EQ(catalog.back().name, "rrtconnect");  // the round robot's, listed last
+  EXPECT_EQ(catalog.back().space, RoundRobot::description);
+  EXPECT_TRUE(catalog.back().plans_round_worlds);
 }
 
 }  // namespace

@@ -67,13 +67,16 @@ template <>
 const SpaceDoor<SteeredCar>& space_door<SteeredCar>();
 template <>
 const SpaceDoor<PlanarArm>& space_door<PlanarArm>();
+template <>
+const SpaceDoor<RoundRobot>& space_door<RoundRobot>();
 
 template <class... S>
 struct SpaceList {};
 // Every space, in the order listings show them and a planner's name is looked up (a world's
 // translating planners before its rotating ones). A car's world is planned by the car's space
-// alone, so rrt, registered for both, plans the car there.
-using Spaces = SpaceList<TranslatingRobot, RotatingRobot, SteeredCar, PlanarArm>;
+// alone, so rrt, registered for both, plans the car there; a world with discs or walls and a point
+// or disc robot by the round robot's space alone (the translating robot's door leaves it out).
+using Spaces = SpaceList<TranslatingRobot, RotatingRobot, SteeredCar, PlanarArm, RoundRobot>;
 
 template <class S>
 struct SpaceTag {

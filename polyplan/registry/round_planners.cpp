@@ -1,0 +1,44 @@
+// Every planner of a point or disc robot among discs, walls and polygons (RoundRobot): the sampling
+// planners over the exact rational checks of geometry/round_world_check.hpp.
+#include <polyplan/registry/registry.hpp>
+
+#if POLYPLAN_WITH_SAMPLING
+#include <polyplan/sampling/lazy_prm_planner.hpp>
+#include <polyplan/sampling/prm_planner.hpp>
+#include <polyplan/sampling/round_sampling_space.hpp>
+#include <polyplan/sampling/rrt_connect_planner.hpp>
+#include <polyplan/sampling/rrt_planner.hpp>
+#include <polyplan/sampling/rrt_star_planner.hpp>
+#endif
+
+namespace polyplan {
+namespace {
+
+// An entry that says it plans with discs, walls and a disc robot (world_queries.hpp's refusal
+// lists it among those that do).
+PlannerEntry<RoundRobot> round(PlannerEntry<RoundRobot> entry) {
+  entry.plans_round_worlds = true;
+  return entry;
+}
+
+}  // namespace
+
+template <>
+const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
+#if POLYPLAN_WITH_SAMPLING
+  static const PlannerRegistry<RoundRobot> registry{
+      "rrtconnect",
+      {
+          round(prm_planner_entry<RoundRobot>(round_sampling_space)),
+          round(lazy_prm_planner_entry<RoundRobot>(round_sampling_space)),
+          round(rrt_planner_entry<RoundRobot>(round_sampling_space)),
+          round(rrt_star_planner_entry<RoundRobot>(round_sampling_space)),
+          round(rrt_connect_planner_entry<RoundRobot>(round_sampling_space)),
+      }};
+#else
+  static const auto registry = PlannerRegistry<RoundRobot>::left_out("sampling");
+#endif
+  return registry;
+}
+
+}  // namespace polyplan

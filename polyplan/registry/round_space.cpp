@@ -1,0 +1,54 @@
+// The front door of a point or disc robot among discs, walls and polygons (docs/architecture.md
+// "The front door"): the worlds with round things and thin walls (World::round_features) and a
+// robot without parts, which the translating robot's door leaves to it; a planner of a polygon
+// world alone (visibility) is refused such a world, naming what it has (world_queries.hpp).
+#include <polyplan/geometry/input_error.hpp>
+#include <polyplan/registry/detail/space_door.hpp>
+#include <polyplan/registry/detail/world_door.hpp>
+#include <polyplan/registry/registry.hpp>
+#include <polyplan/registry/world_queries.hpp>
+
+namespace polyplan::detail {
+namespace {
+
+class RoundDoor final : public WorldDoor<RoundRobot> {
+ public:
+  bool plans(const Problem& problem) const override {
+    const World* world = problem.world();
+    return world && !world->robot.car && world->robot.parts.empty() && !round_features(*world).empty();
+  }
+  const RoundWorld& built_from(const Problem& problem) const override { return problem.round_world(); }
+
+  Query query(const Problem&, const QuerySpec& spec) const override {
+    Query q = world_query(spec);
+    for (const auto& [what, theta] : {std::pair{"start", q.start_theta}, std::pair{"goal", q.goal_theta}})
+      if (turned(theta))
+        throw InputError(std::string(what) + ": an orientation; a point or disc robot has none to turn");
+    return q;
+  }
+
+  // Every start and goal free, as the translating robot's door checks its C-space's.
+  void require_plannable(const Problem& problem, std::string_view planner) const override {
+    const World& world = *problem.world();
+    require_planner_for_robot(world, planner);
+    if (world.queries.empty()) throw InputError(world.source + ": world: no start/goal and no queries to plan");
+    for (const Query& q : world.queries)
+      for (const auto& [what, p] : {std::pair{".start", &q.start}, std::pair{".goal", &q.goal}})
+        if (auto why = problem.round_world().config_not_free(*p))
+          throw InputError(world.source + ": " + q.name + what + ": " + *why +
+                           " (inside an obstacle or nearer one than the robot's radius, or outside the bounds)");
+  }
+
+  std::string default_planner(const Problem&) const override { return planners<RoundRobot>().default_planner(); }
+  std::size_t columns(const Problem&) const override { return 2; }
+};
+
+}  // namespace
+
+template <>
+const SpaceDoor<RoundRobot>& space_door<RoundRobot>() {
+  static const RoundDoor door;
+  return door;
+}
+
+}  // namespace polyplan::detail
