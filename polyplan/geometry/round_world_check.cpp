@@ -138,6 +138,7 @@ Blocked wedge(const Vector& from, const Vector& to) {
 // there, the walls' rays).
 struct Contact {
   bool inside = false;
+  std::string inside_of;  // the first obstacle it is inside ("discs[2]"), or "the bounds"
   std::vector<Blocked> blocked;
   std::vector<Vector> separators;
 };
@@ -214,9 +215,13 @@ void touch_wall(const std::vector<Point>& wall, const Point& q, Contact& c) {
 void RoundWorld::Impl::touch(const Obstacle& o, const Point& q, Contact& c) const {
   using Core = Obstacle::Core;
   if (o.core == Core::wall) return touch_wall(o.wall, q, c);
+  const auto inside = [&] {
+    if (!c.inside) c.inside_of = o.name;
+    c.inside = true;
+  };
   if (o.core == Core::polygon && o.radius == 0) {
     const int side = side_of_polygon(*o.polygon, q);
-    if (side > 0) c.inside = true;
+    if (side > 0) inside();
     if (side == 0) touch_polygon(*o.polygon, q, c);
     return;
   }
@@ -225,33 +230,34 @@ void RoundWorld::Impl::touch(const Obstacle& o, const Point& q, Contact& c) cons
   if (o.core == Core::point) nearest.push_back(o.centre);
   if (o.core == Core::segment) nearest.push_back(nearest_point(Segment{o.from, o.to}, q));
   if (o.core == Core::polygon) {
-    if (side_of_polygon(*o.polygon, q) >= 0) {
-      c.inside = true;
-      return;
-    }
+    if (side_of_polygon(*o.polygon, q) >= 0) return inside();
     for (const Ring& ring : rings_of(*o.polygon))
       for (const Segment& e : edges_of(ring)) nearest.push_back(nearest_point(e, q));
   }
   const Rational r2 = o.radius * o.radius;
   for (const Point& k : nearest) {
     const Rational d2 = squared(k - q);
-    if (d2 < r2) c.inside = true;
+    if (d2 < r2) inside();
     else if (d2 == r2) c.blocked.push_back(half_plane(k - q));
   }
 }
 
 void RoundWorld::Impl::touch_bounds(const Point& q, Contact& c) const {
+  const auto outside = [&] {
+    if (!c.inside) c.inside_of = "the bounds";
+    c.inside = true;
+  };
   if (box) {
     const std::pair<Rational, Vector> sides[] = {
         {q.x - box->xmin, {-1, 0}}, {box->xmax - q.x, {1, 0}}, {q.y - box->ymin, {0, -1}}, {box->ymax - q.y, {0, 1}}};
     for (const auto& [room, outward] : sides) {
-      if (room < 0) c.inside = true;
+      if (room < 0) outside();
       else if (room == 0) c.blocked.push_back(half_plane(outward));
     }
   }
   if (disc) {
     const Rational d2 = squared(q - disc->center), r2 = disc->radius * disc->radius;
-    if (disc->radius < 0 || d2 > r2) c.inside = true;
+    if (disc->radius < 0 || d2 > r2) outside();
     else if (d2 == r2) c.blocked.push_back(half_plane(q - disc->center));
   }
 }
@@ -309,7 +315,9 @@ std::string at_text(const Point& q) { return "(" + to_string(q.x) + ", " + to_st
 std::optional<std::string> RoundWorld::Impl::blocked_at(const Point& q, const std::optional<Vector>& in,
                                                         const std::optional<Vector>& out) const {
   const Contact c = contact(q);
-  if (c.inside) return "at " + at_text(q) + " the robot overlaps an obstacle or leaves the bounds";
+  if (c.inside)
+    return "at " + at_text(q) +
+           (c.inside_of == "the bounds" ? " the robot leaves the bounds" : " the robot overlaps " + c.inside_of);
   for (const auto& d : {in, out})
     if (d && !free_direction(c, *d)) return "at " + at_text(q) + " the motion turns into an obstacle it touches";
   if (!in || !out || same_direction(*in, *out) || (c.blocked.empty() && c.separators.empty())) return std::nullopt;
@@ -333,7 +341,9 @@ std::optional<std::string> RoundWorld::Impl::too_close(const Segment& s) const {
           if (d2 < 0 || e2 < d2) d2 = e2;
         }
     }
-    if (d2 < o.radius * o.radius) return "the motion comes nearer " + o.name + " than the robot's radius allows";
+    if (d2 < o.radius * o.radius)
+      return robot == 0 ? "the motion enters " + o.name
+                        : "the motion comes nearer " + o.name + " than the robot's radius allows";
   }
   return std::nullopt;
 }
@@ -424,7 +434,10 @@ RoundWorld::RoundWorld(RoundWorld&&) noexcept = default;
 RoundWorld& RoundWorld::operator=(RoundWorld&&) noexcept = default;
 
 std::optional<std::string> RoundWorld::config_not_free(const ExactPoint& q) const {
-  if (impl_->contact(q).inside) return "(" + to_string(q.x) + ", " + to_string(q.y) + ") is not free";
+  const Contact c = impl_->contact(q);
+  if (c.inside)
+    return "(" + to_string(q.x) + ", " + to_string(q.y) +
+           ") is not free: " + (c.inside_of == "the bounds" ? "outside the bounds" : "it overlaps " + c.inside_of);
   return std::nullopt;
 }
 

@@ -35,8 +35,7 @@ class RoundDoor final : public WorldDoor<RoundRobot> {
     for (const Query& q : world.queries)
       for (const auto& [what, p] : {std::pair{".start", &q.start}, std::pair{".goal", &q.goal}})
         if (auto why = problem.round_world().config_not_free(*p))
-          throw InputError(world.source + ": " + q.name + what + ": " + *why +
-                           " (inside an obstacle or nearer one than the robot's radius, or outside the bounds)");
+          throw InputError(world.source + ": " + q.name + what + ": " + *why);
   }
 
   std::string default_planner(const Problem&) const override { return planners<RoundRobot>().default_planner(); }
