@@ -15,11 +15,11 @@ double distance(Vec2 a, Vec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
 // One step from `at` along `direction`, at most `length` long: halved until its segment is
 // exactly free (a step that started in the free space always ends so, at some length).
-std::optional<ExactPoint> free_step(const CSpace& cspace, const ExactPoint& at, Vec2 from, Vec2 direction,
+std::optional<ExactPoint> free_step(const DescentWorld& world, const ExactPoint& at, Vec2 from, Vec2 direction,
                                     double length) {
   for (int halvings = 0; halvings < 60; ++halvings, length /= 2) {
     const ExactPoint to = exactly({from.x + length * direction.x, from.y + length * direction.y});
-    if (check_segment(cspace, at, to).valid) return to;
+    if (world.segment(at, to).valid) return to;
   }
   return std::nullopt;
 }
@@ -34,7 +34,27 @@ Descent& stop(Descent& d, Vec2 q, const std::string& why) {
 
 std::string point_text(Vec2 p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
 
-Descent descend(const CSpace& cspace, const Query& query, const SlopeFunction& slope, const DescentOptions& o) {
+DescentWorld descent_world(const CSpace& cspace) {
+  return {[&cspace](const ExactPoint& a, const ExactPoint& b) { return check_segment(cspace, a, b); },
+          [&cspace](const std::vector<ExactPoint>& path) { return check_path(cspace, path); },
+          [&cspace](const Query& query) { return cspace.query_not_free(query); },
+          [&cspace](const ExactPoint& a, const ExactPoint& b) { return share_a_component(cspace, a, b); },
+          "exact segment test of every step as it was taken, and of the whole path (arrangement zone walk)"};
+}
+
+DescentWorld descent_world(const RoundWorld& world) {
+  return {[&world](const ExactPoint& a, const ExactPoint& b) { return world.check_segment(a, b); },
+          [&world](const std::vector<ExactPoint>& path) { return world.check_path(path); },
+          [&world](const Query& query) -> std::optional<std::string> {
+            for (const auto& [what, p] : {std::pair{"start ", &query.start}, std::pair{"goal ", &query.goal}})
+              if (auto why = world.config_not_free(*p)) return what + *why;
+            return std::nullopt;
+          },
+          [](const ExactPoint&, const ExactPoint&) { return true; },  // no components known: none proved apart
+          "exact rational segment test of every step as it was taken, and of the whole path"};
+}
+
+Descent descend(const DescentWorld& world, const Query& query, const SlopeFunction& slope, const DescentOptions& o) {
   Descent d;
   d.path = {query.start};
   const Vec2 goal = approximate(query.goal);
@@ -43,7 +63,7 @@ Descent descend(const CSpace& cspace, const Query& query, const SlopeFunction& s
   std::size_t since_best = 0;
   for (std::size_t k = 0; k < o.max_steps; ++k) {
     if (distance(q, goal) <= o.tolerance) {
-      if (check_segment(cspace, d.path.back(), query.goal).valid) {
+      if (world.segment(d.path.back(), query.goal).valid) {
         d.path.push_back(query.goal);
         d.status = PlanStatus::solved;
       } else {
@@ -68,7 +88,7 @@ Descent descend(const CSpace& cspace, const Query& query, const SlopeFunction& s
     previous_direction = direction;
     if (current < 1e-9 * o.step) return stop(d, q, "its steps shrank to nothing");
     const double length = std::min({current, distance(q, goal), d.last.clearance / 2});
-    const auto to = free_step(cspace, d.path.back(), q, direction, length);
+    const auto to = free_step(world, d.path.back(), q, direction, length);
     if (!to) return stop(d, q, "no step along the gradient is free");
     d.path.push_back(*to);
     q = approximate(*to);
@@ -83,19 +103,19 @@ Descent descend(const CSpace& cspace, const Query& query, const SlopeFunction& s
   return d;
 }
 
-bool answered_before_descent(const CSpace& cspace, const Query& query, PlanReport<ExactPoint>& report) {
-  if (auto why = cspace.query_not_free(query)) {
+bool answered_before_descent(const DescentWorld& world, const Query& query, PlanReport<ExactPoint>& report) {
+  if (auto why = world.query_not_free(query)) {
     report.fail(PlanStatus::invalid_query, *why);
     return true;
   }
-  if (!share_a_component(cspace, query.start, query.goal)) {
+  if (!world.may_join(query.start, query.goal)) {
     report.fail(PlanStatus::no_path, "start and goal lie in different components of the free space");
     return true;
   }
   return false;
 }
 
-void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record,
+void report_descent(const DescentWorld& world, Descent descent, const DescentFacts& keys, bool record,
                     const std::string& why_suffix, PlanReport<ExactPoint>& report) {
   if (record) report.recording.expanded = descent.path;  // the picture shows the descent, wherever it stopped
   report.facts.set(keys.steps, descent.path.size() - 1);
@@ -103,7 +123,7 @@ void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& k
   report.facts.set(keys.stopped_at, FactPoint{end.x, end.y});
   // Each step was tested as it was taken; the whole path is tested again, found or not, so that a
   // mistake is an answer that says so, never a path through an obstacle.
-  const PathCheck whole = check_path(cspace, descent.path);
+  const PathCheck whole = world.path(descent.path);
   if (whole.valid) report.path = std::move(descent.path);
   if (descent.status != PlanStatus::solved) {
     if (descent.status == PlanStatus::limit) report.facts.set(QueryFacts::stopped_by, "step limit");
@@ -116,8 +136,7 @@ void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& k
   }
   report.succeed();
   report.length = euclidean_length(report.path);
-  report.certificate = {
-      true, "exact segment test of every step as it was taken, and of the whole path (arrangement zone walk)"};
+  report.certificate = {true, world.certificate};
 }
 
 }  // namespace polyplan

@@ -12,6 +12,8 @@
 //   limit          after `max_steps` steps.
 #include <polyplan/geometry/clearance.hpp>
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/plan_report.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
 
@@ -49,19 +51,34 @@ struct Descent {
   Slope last;
 };
 
-Descent descend(const CSpace& cspace, const Query& query, const SlopeFunction& slope, const DescentOptions& options);
+// The exact tests a descent rests on: a polygon world's C-space (geometry/path_check.hpp), or a
+// point or disc robot's world of discs and walls (geometry/round_world_check.hpp).
+struct DescentWorld {
+  std::function<PathCheck(const ExactPoint&, const ExactPoint&)> segment;
+  std::function<PathCheck(const std::vector<ExactPoint>&)> path;
+  std::function<std::optional<std::string>(const Query&)> query_not_free;
+  // False when start and goal are proved apart (different components of the free space).
+  std::function<bool(const ExactPoint&, const ExactPoint&)> may_join;
+  std::string certificate;  // how a path's steps were proved free
+};
+// Each keeps a reference to its world, which must outlive it.
+DescentWorld descent_world(const CSpace& cspace);
+DescentWorld descent_world(const RoundWorld& world);
+
+Descent descend(const DescentWorld& world, const Query& query, const SlopeFunction& slope,
+                const DescentOptions& options);
 
 // A query a descent need not be tried on, answered in `report` (true): a start or goal that is
 // not free (invalid_query), or start and goal in different components of the free space (no_path,
 // proved).
-bool answered_before_descent(const CSpace& cspace, const Query& query, PlanReport<ExactPoint>& report);
+bool answered_before_descent(const DescentWorld& world, const Query& query, PlanReport<ExactPoint>& report);
 
 // The descent as a planner's answer: the facts `keys` (its steps and where it stopped), its steps as
 // the expanded configurations when `record`, and the path (certified: every step was checked
 // exactly as it was taken, and the whole path again, whose bends the steps alone cannot judge at
 // a pinch point) when solved, or the status and `why` (followed by `why_suffix`) otherwise —
 // stopped_by "step limit" for a limit.
-void report_descent(const CSpace& cspace, Descent descent, const DescentFacts& keys, bool record,
+void report_descent(const DescentWorld& world, Descent descent, const DescentFacts& keys, bool record,
                     const std::string& why_suffix, PlanReport<ExactPoint>& report);
 
 // "(x, y)" with six decimals.

@@ -43,4 +43,23 @@ class NavigationFunctionPlanner final : public Planner<TranslatingRobot> {
 
 PlannerEntry<TranslatingRobot> navigation_function_planner_entry();
 
+// The same on a world of discs, for a point or disc robot (RoundRobot): the obstacles' discs are
+// the world's discs exactly (grown by the robot's radius), the world's disc its disc bounds
+// (shrunk alike) or the disc round its box bounds; walls, polygons or no bounds make it no sphere
+// world (not_found, saying so). Every step is checked exactly among the discs
+// (geometry/round_world_check.hpp).
+class RoundNavigationFunctionPlanner final : public Planner<RoundRobot> {
+ public:
+  // `world` must outlive the planner; the options as above.
+  RoundNavigationFunctionPlanner(const RoundWorld& world, NavigationFunctionOptions options = {});
+  ~RoundNavigationFunctionPlanner() override;
+  PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+PlannerEntry<RoundRobot> round_navigation_function_planner_entry();
+
 }  // namespace polyplan

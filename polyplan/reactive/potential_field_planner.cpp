@@ -37,13 +37,14 @@ void check_options(const PotentialFieldOptions& o) {
 
 struct PotentialFieldPlanner::Impl {
   const CSpace* cspace;
+  DescentWorld exact;
   PotentialFieldOptions options;
   PotentialParameters parameters;
   ObstacleField field;
   double step, tolerance;
 
   Impl(const CSpace& c, const PotentialFieldOptions& o)
-      : cspace(&c), options(o), parameters{{o.zeta, o.d_star}, {o.eta, o.q_star}}, field(c),
+      : cspace(&c), exact(descent_world(c)), options(o), parameters{{o.zeta, o.d_star}, {o.eta, o.q_star}}, field(c),
         step(o.step > 0 ? o.step : box_around(c, 1).diagonal() / 200),
         tolerance(o.goal_tolerance > 0 ? o.goal_tolerance : step) {}
 
@@ -57,7 +58,7 @@ struct PotentialFieldPlanner::Impl {
       const Potential p = ObstacleField::potential(q, goal, parameters, nearest);
       return {Slope{p.gradient, p.value, clearance}, {}};
     };
-    return polyplan::descend(*cspace, query, slope,
+    return polyplan::descend(exact, query, slope,
                              {step, tolerance, options.max_steps, options.patience, 1e-12 * (options.zeta + 1)});
   }
 
@@ -87,11 +88,11 @@ PlanReport<ExactPoint> PotentialFieldPlanner::plan(const Query& query, const Que
     return std::move(report);
   };
   if (options.record) report.recording.cells = r.heat_map(query);
-  if (answered_before_descent(*r.cspace, query, report)) return finish();
+  if (answered_before_descent(r.exact, query, report)) return finish();
   Descent descent = r.descend(query);
   facts.set(PotentialFacts::gradient, std::hypot(descent.last.gradient.x, descent.last.gradient.y));
   facts.set(PotentialFacts::value, descent.last.value);
-  report_descent(*r.cspace, std::move(descent), PotentialFacts::descent, options.record, "", report);
+  report_descent(r.exact, std::move(descent), PotentialFacts::descent, options.record, "", report);
   return finish();
 }
 

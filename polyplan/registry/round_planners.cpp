@@ -1,7 +1,11 @@
 // Every planner of a point or disc robot among discs, walls and polygons (RoundRobot): the sampling
-// planners over the exact rational checks of geometry/round_world_check.hpp.
+// planners over the exact rational checks of geometry/round_world_check.hpp, and the navigation
+// function of a sphere world.
 #include <polyplan/registry/registry.hpp>
 
+#if POLYPLAN_WITH_REACTIVE
+#include <polyplan/reactive/navigation_function_planner.hpp>
+#endif
 #if POLYPLAN_WITH_SAMPLING
 #include <polyplan/sampling/lazy_prm_planner.hpp>
 #include <polyplan/sampling/prm_planner.hpp>
@@ -34,6 +38,9 @@ const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
           round(rrt_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_star_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_connect_planner_entry<RoundRobot>(round_sampling_space)),
+#if POLYPLAN_WITH_REACTIVE
+          round(round_navigation_function_planner_entry()),
+#endif
       }};
 #else
   static const auto registry = PlannerRegistry<RoundRobot>::left_out("sampling");

@@ -76,3 +76,32 @@ TEST(NavigationFunctionPlanner, ABadKappaIsNamed) {
 
 }  // namespace
 }  // namespace polyplan
+
+namespace polyplan {
+namespace {
+
+// A sphere world written with discs (data/worlds/sphere_world_disc_bounds.json): its discs and its
+// disc bounds are the navigation function's spheres exactly, and it reaches the goal from every
+// start, each path checked exactly among the discs; a world with walls is no sphere world.
+TEST(RoundNavigationFunctionPlanner, ReachesTheGoalOfASphereWorldFromEveryStart) {
+  const World world = test::shipped("sphere_world_disc_bounds");
+  const RoundWorld round(world);
+  const auto planner = planners<RoundRobot>().find("navigation-function")->make(round, {});
+  for (const Query& q : world.queries) {
+    SCOPED_TRACE(q.name);
+    const auto report = planner->plan(q);
+    ASSERT_TRUE(report.found) << report.why_not;
+    EXPECT_EQ(report.path.back(), q.goal);
+    EXPECT_TRUE(round.check_path(report.path).valid);
+    EXPECT_TRUE(report.facts.contains(NavigationFacts::kappa));
+  }
+  const World walls = test::shipped("disc_robot_floor_plan");
+  const RoundWorld floor(walls);
+  const auto refused = planners<RoundRobot>().find("navigation-function")->make(floor, {})->plan(walls.queries[0]);
+  EXPECT_EQ(refused.status, PlanStatus::not_found);
+  EXPECT_NE(refused.why_not.find("not a sphere world: it has walls or polygons besides its discs"), std::string::npos)
+      << refused.why_not;
+}
+
+}  // namespace
+}  // namespace polyplan
