@@ -35,9 +35,14 @@ std::vector<std::string> round_features(const World& world) {
   return features;
 }
 
-void refuse_round_features(const World& world, const std::string& who) {
+std::string round_features_text(const World& world) {
   std::string what;
   for (const std::string& feature : round_features(world)) what += (what.empty() ? "" : ", ") + feature;
+  return what;
+}
+
+void refuse_round_features(const World& world, const std::string& who) {
+  const std::string what = round_features_text(world);
   if (!what.empty())
     throw InputError(world.source + ": " + what + ": " + who +
                      " holds polygons and a polygon or point robot only (not discs, walls or a disc robot)");

@@ -92,6 +92,8 @@ struct World {
 // ("discs", "walls", "disc bounds", "a disc robot"); empty for a polygon world. A planner or a
 // command that plans over polygons only refuses a world for which this is not empty, naming them.
 std::vector<std::string> round_features(const World& world);
+// The same as messages name them: "discs, walls, a disc robot" (empty for a polygon world).
+std::string round_features_text(const World& world);
 
 // InputError "<source>: discs, walls: <who> holds polygons and a polygon or point robot only ..."
 // when the world has round features: for code built on polygons alone (the C-space, a car's

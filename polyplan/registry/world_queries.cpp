@@ -31,13 +31,12 @@ void require_planner_for_changes(const World& world, std::string_view planner) {
 
 // Discs, walls, disc bounds or a disc robot, for a planner that plans among polygons only.
 void require_planner_for_round_features(const World& world, std::string_view planner) {
-  const std::vector<std::string> features = round_features(world);
+  const std::string what = round_features_text(world);
   // A polygon robot's C-obstacles of discs are rounded polygons: no planner plans them yet.
   const std::vector<std::string> able =
       world.robot.parts.empty() ? planners_for_round_worlds() : std::vector<std::string>{};
-  if (features.empty() || std::find(able.begin(), able.end(), planner) != able.end()) return;
-  std::string what, names;
-  for (const std::string& feature : features) what += (what.empty() ? "" : ", ") + feature;
+  if (what.empty() || std::find(able.begin(), able.end(), planner) != able.end()) return;
+  std::string names;
   for (const std::string& name : able) names += (names.empty() ? "" : ", ") + name;
   throw InputError(world.source + ": " + what + ": the planner " + std::string(planner) +
                    " plans polygon worlds only (polygon obstacles, box bounds, a polygon or point robot)" +
