@@ -225,6 +225,28 @@ void draw_marks(svg::Drawing& drawing, const std::vector<PlanMark<ExactPoint>>& 
 
 namespace {
 
+// The points a picture draws a path through: its own, or along its pieces' arcs every 2 degrees
+// or less (a polyline a reader cannot tell from the arc at a picture's scale).
+std::vector<ExactPoint> drawn_path(const PlanReport<ExactPoint>& report) {
+  if (report.pieces.empty()) return report.path;
+  std::vector<ExactPoint> out{report.path.front()};
+  for (const PathPiece& piece : report.pieces) {
+    if (piece.kind == PathPiece::Kind::arc) {
+      const double a = std::atan2(piece.from[1] - piece.centre[1], piece.from[0] - piece.centre[0]);
+      const double turn = piece.length / piece.radius * (piece.counter_clockwise ? 1 : -1);
+      const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(turn) / (M_PI / 90))));
+      for (int k = 1; k < steps; ++k) {
+        const double t = a + turn * k / steps;
+        out.push_back({Rational(piece.centre[0] + piece.radius * std::cos(t)),
+                       Rational(piece.centre[1] + piece.radius * std::sin(t))});
+      }
+    }
+    out.push_back({Rational(piece.to[0]), Rational(piece.to[1])});
+  }
+  out.back() = report.path.back();
+  return out;
+}
+
 // What a picture of reports draws over its background (`background(drawing, free_space)`: the
 // C-space, or the world of discs and walls): cells, decompositions, graphs, expanded points,
 // bottlenecks, marks and paths.
@@ -277,7 +299,7 @@ svg::Drawing draw_reports_over(
     const std::string label = i < labels.size()     ? labels[i]
                               : reports.size() == 1 ? "path"
                                                     : "path " + std::to_string(i);
-    draw_path(drawing, reports[i].path, label, theme::path_colour(i));
+    draw_path(drawing, drawn_path(reports[i]), label, theme::path_colour(i), reports[i].path);
     // A planner's further answers (the next homotopy classes), each in a colour of its own.
     for (std::size_t k = 1; k < reports[i].paths.size(); ++k) {
       const auto& more = reports[i].paths[k];

@@ -294,7 +294,7 @@ void draw_cspace(svg::Drawing& drawing, const CSpace& cspace, FreeSpace free_spa
 }
 
 void draw_path(svg::Drawing& drawing, const std::vector<ExactPoint>& path, const std::string& label,
-               const std::string& colour) {
+               const std::string& colour, const std::vector<ExactPoint>& turns) {
   if (path.empty()) return;
   std::vector<svg::Point2> line;
   line.reserve(path.size());
@@ -304,7 +304,9 @@ void draw_path(svg::Drawing& drawing, const std::vector<ExactPoint>& path, const
   style.stroke_px = 2.5;
   drawing.polyline(line, style);
   // The turning points, small, so that a path sliding along an edge still shows its vertices.
-  drawing.points(line, 2.5, filled(colour, 1.0, "none", 0));
+  std::vector<svg::Point2> dots;
+  for (const ExactPoint& p : turns.empty() ? path : turns) dots.push_back(svg_point(p));
+  drawing.points(dots, 2.5, filled(colour, 1.0, "none", 0));
   drawing.legend(label, style, svg::Swatch::line);
 }
 

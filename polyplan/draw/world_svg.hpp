@@ -41,9 +41,10 @@ void draw_world(svg::Drawing& drawing, const World& world);
 enum class FreeSpace { filled, unfilled };
 void draw_cspace(svg::Drawing& drawing, const CSpace& cspace, FreeSpace free_space = FreeSpace::filled);
 
-// The path as a line with its vertices as small dots; nothing for an empty path.
+// The path as a line with its vertices as small dots (or, when given, the `turns`: where a path
+// drawn along arcs changes piece); nothing for an empty path.
 void draw_path(svg::Drawing& drawing, const std::vector<ExactPoint>& path, const std::string& label,
-               const std::string& colour = theme::path_colour(0));
+               const std::string& colour = theme::path_colour(0), const std::vector<ExactPoint>& turns = {});
 
 // The C-space picture (and a path on top, if given) written to `file`.
 void write_cspace_svg(const CSpace& cspace, const std::string& file, const std::vector<ExactPoint>* path = nullptr);

@@ -69,6 +69,29 @@ void add_path(json& out, const std::vector<CarState>& path) {
   out["segments"] = std::move(segments);
 }
 
+json piece_json(const PathPiece& piece) {
+  json out = {{"kind", piece.kind == PathPiece::Kind::arc ? "arc" : "segment"},
+              {"from", piece.from},
+              {"to", piece.to},
+              {"length", piece.length}};
+  if (piece.kind == PathPiece::Kind::arc) {
+    out["centre"] = piece.centre;
+    out["radius"] = piece.radius;
+    out["turn"] = piece.counter_clockwise ? "ccw" : "cw";
+  }
+  return out;
+}
+
+// A path of pieces: its points between start and goal are irrational, so no exact text is printed
+// for them (the planner decided them exactly; "pieces" say how they join).
+void add_pieces(json& out, const std::vector<PathPiece>& pieces) {
+  if (pieces.empty()) return;
+  out.erase("path_exact");
+  json all = json::array();
+  for (const PathPiece& piece : pieces) all.push_back(piece_json(piece));
+  out["pieces"] = std::move(all);
+}
+
 template <class Configuration>
 json report_json(const PlanReport<Configuration>& report, const std::string& query) {
   json out = json::object();
@@ -77,6 +100,7 @@ json report_json(const PlanReport<Configuration>& report, const std::string& que
   out["status"] = std::string(to_string(report.status));
   out["length"] = report.found ? json(report.length) : json(nullptr);
   add_path(out, report.path);
+  add_pieces(out, report.pieces);
   if (!report.found) out["why_not"] = report.why_not;
   out["certified"] = report.certificate.certified;
   if (report.certificate.certified) out["certified_by"] = report.certificate.method;

@@ -189,6 +189,20 @@ inline constexpr std::array<PlanStatus, 6> all_plan_statuses{PlanStatus::solved,
 // "solved", "no_path", ...: the JSON's and the command line's word.
 std::string_view to_string(PlanStatus status);
 
+// How two consecutive points of a path join when not by a straight motion alone: a disc robot's
+// shortest path runs along arcs of circles between its tangents (roadmaps/tangent_visibility.hpp).
+// In doubles: the points where tangents touch circles are irrational (the planner decided them
+// exactly). JSON: "pieces", each {kind, from, to, length, and for an arc centre, radius, turn}.
+struct PathPiece {
+  enum class Kind : std::uint8_t { segment, arc };
+  Kind kind = Kind::segment;
+  FactPoint from{}, to{};
+  FactPoint centre{};             // an arc's
+  double radius = 0;              // an arc's
+  bool counter_clockwise = true;  // an arc's turn
+  double length = 0;
+};
+
 // The narrowest place of a found path, for the planners that maximise clearance: where it is and
 // its distance to the nearest obstacle. JSON: clearance, bottleneck {x, y}; the picture draws the disc.
 struct Bottleneck {
@@ -257,6 +271,11 @@ struct PlanReport {
   // planners: the first path, RRT*'s improvements, the shortcut path); empty for a planner that
   // answers once, when its whole query is its one solution.
   std::vector<SolutionImprovement> improvements;
+
+  // When not empty, pieces[k] joins path[k] to path[k + 1] (a segment or an arc); path[0] and the
+  // last point are then the query's start and goal exactly, the points between them the nearest
+  // doubles of irrational points. Empty: the path is the polyline through `path`.
+  std::vector<PathPiece> pieces;
 
   // Several answers, for a planner that gives several: paths[0] is `path`; empty for the others.
   std::vector<PlanPath<Configuration>> paths;

@@ -6,6 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -84,6 +85,7 @@ std::optional<std::vector<std::vector<Rational>>> Report::exact_path() const {
       [](const auto& r) -> std::optional<std::vector<std::vector<Rational>>> {
         using Configuration = typename std::decay_t<decltype(r.path)>::value_type;
         if constexpr (requires(const Configuration& c) { exact_coordinates(c); }) {
+          if (!r.pieces.empty()) return std::nullopt;  // points between start and goal are irrational
           std::vector<std::vector<Rational>> rows;
           for (const Configuration& c : r.path) rows.push_back(exact_coordinates(c));
           return rows;
@@ -131,15 +133,21 @@ nlohmann::json Report::to_json() const {
 
 nlohmann::json Report::facts_json() const {
   nlohmann::json all = to_json();
-  for (const char* answer :
-       {"query", "found", "status", "length", "path", "path_exact", "segments", "why_not", "certified", "certified_by"})
+  for (const char* answer : {"query", "found", "status", "length", "path", "path_exact", "segments", "pieces",
+                             "why_not", "certified", "certified_by"})
     all.erase(answer);
   return all;
 }
 
 std::string Report::summary() const {
   if (!found()) return query_ + ": no path (" + why_not() + ")";
-  const std::size_t moves = std::visit([](const auto& r) { return r.path.size() - 1; }, typed_);
+  const auto [moves, arcs] = std::visit(
+      [](const auto& r) {
+        const auto arc_count = static_cast<std::size_t>(std::count_if(
+            r.pieces.begin(), r.pieces.end(), [](const PathPiece& p) { return p.kind == PathPiece::Kind::arc; }));
+        return std::pair{r.path.size() - 1 - arc_count, arc_count};
+      },
+      typed_);
   const std::string_view unit = space_->unit(), steps = space_->steps();
   // Six decimals, as courses print lengths; a world drawn in units of 1e-60 (or 1e60) in six
   // significant digits rather than as 0.000000.
@@ -148,7 +156,8 @@ std::string Report::summary() const {
   std::snprintf(number, sizeof number, l != 0 && (std::abs(l) < 1e-3 || std::abs(l) >= 1e15) ? "%.6g" : "%.6f", l);
   std::snprintf(text, sizeof text, "%.*s(s)", static_cast<int>(steps.size()), steps.data());
   std::string line = query_ + ": length " + number + std::string(unit) + ", " + std::to_string(moves) + " " + text +
-                     facts_summary(facts()) + space_->summary(facts());
+                     (arcs ? " and " + std::to_string(arcs) + " arc(s)" : "") + facts_summary(facts()) +
+                     space_->summary(facts());
   if (const auto note = facts().find(QueryFacts::note)) line += "; " + *note;
   return line;
 }

@@ -1,7 +1,8 @@
-// Every planner of a point or disc robot among discs, walls and polygons (RoundRobot): the sampling
-// planners over the exact rational checks of geometry/round_world_check.hpp, and the navigation
-// function of a sphere world.
+// Every planner of a point or disc robot among discs, walls and polygons (RoundRobot): the exact
+// shortest paths of the tangent visibility graph, the sampling planners over the exact rational
+// checks of geometry/round_world_check.hpp, and the navigation function of a sphere world.
 #include <polyplan/registry/registry.hpp>
+#include <polyplan/roadmaps/tangent_visibility.hpp>
 
 #if POLYPLAN_WITH_REACTIVE
 #include <polyplan/reactive/navigation_function_planner.hpp>
@@ -29,22 +30,21 @@ PlannerEntry<RoundRobot> round(PlannerEntry<RoundRobot> entry) {
 
 template <>
 const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
-#if POLYPLAN_WITH_SAMPLING
   static const PlannerRegistry<RoundRobot> registry{
-      "rrtconnect",
+      "visibility",
       {
+          round(tangent_visibility_planner_entry()),
+#if POLYPLAN_WITH_SAMPLING
           round(prm_planner_entry<RoundRobot>(round_sampling_space)),
           round(lazy_prm_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_star_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_connect_planner_entry<RoundRobot>(round_sampling_space)),
+#endif
 #if POLYPLAN_WITH_REACTIVE
           round(round_navigation_function_planner_entry()),
 #endif
       }};
-#else
-  static const auto registry = PlannerRegistry<RoundRobot>::left_out("sampling");
-#endif
   return registry;
 }
 

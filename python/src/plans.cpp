@@ -173,7 +173,8 @@ the planner's counts and measures, nested as in the JSON.)")
       .def_property_readonly("path_exact", &exact_path,
                              "The path exactly: a list of tuples of fractions.Fraction, (x, y) for points, (x, y, sin, "
                              "cos) for poses (the exact "
-                             "rotation); None for an arm or a car (joint angles and a car's poses are doubles).")
+                             "rotation); None for an arm or a car (joint angles and a car's poses are doubles) and "
+                             "for a path of pieces (its tangent points are irrational).")
       .def_property_readonly(
           "segments",
           [](const PlanResult& r) -> py::object {
@@ -183,6 +184,15 @@ the planner's counts and measures, nested as in the JSON.)")
           "A car's path as it drives: a list of dicts {steer: \"L\"|\"S\"|\"R\", gear: 1|-1, length, start: [x, y, "
           "theta]}, one per "
           "segment; None for other robots.")
+      .def_property_readonly(
+          "pieces",
+          [](const PlanResult& r) -> py::object {
+            const nlohmann::json j = r.report.to_json();
+            return j.contains("pieces") ? from_json(j["pieces"]) : py::object(py::none());
+          },
+          "A path of segments and arcs (a disc robot's shortest path, planner visibility among discs and walls): a "
+          "list of dicts {kind: \"segment\"|\"arc\", from: [x, y], to: [x, y], length, and for an arc centre: [x, "
+          "y], radius, turn: \"ccw\"|\"cw\"}, piece k joining path[k] to path[k + 1]; None for a polyline.")
       .def_property_readonly(
           "certified", [](const PlanResult& r) { return r.report.certificate().certified; },
           "Whether every configuration along the path was proved free (every found path is).")

@@ -27,9 +27,10 @@ def test_a_path_may_graze_a_disc():
 def test_planners_refuse_them_naming_what_the_world_has():
     world = polyplan.read_world(data("worlds", "disc_robot_floor_plan.json"))
     with pytest.raises(polyplan.InputError, match=r"disc_robot_floor_plan.json: discs, walls, a disc robot: "
-                                                   r"the planner visibility plans polygon worlds only.*use one that plans "
-                                                   r"with them \(prm, lazyprm, rrt, rrtstar, rrtconnect, navigation-function\)"):
-        polyplan.plan(world, planner="visibility")
+                                                   r"the planner trapezoid plans polygon worlds only.*use one that plans "
+                                                   r"with them \(visibility, prm, lazyprm, rrt, rrtstar, rrtconnect, "
+                                                   r"navigation-function\)"):
+        polyplan.plan(world, planner="trapezoid")
 
 
 def test_the_sampling_planners_plan_them_and_the_checker_agrees():
@@ -39,10 +40,26 @@ def test_the_sampling_planners_plan_them_and_the_checker_agrees():
     for p in plans:
         assert polyplan.check(world, p) == (True, "")  # the plan's exact path, checked afresh
     floor = polyplan.read_world(data("worlds", "disc_robot_floor_plan.json"))
-    plan = polyplan.plan(floor)[0]  # the default: rrtconnect
-    assert plan.status == "solved" and plan.planner == "rrtconnect"
+    plan = polyplan.plan(floor, planner="rrtconnect", seed=1)[0]
+    assert plan.status == "solved"
     assert polyplan.check(floor, plan) == (True, "")
     assert "walls (zero thickness)" in polyplan.svg(floor, plan)
+
+
+def test_the_default_plans_the_shortest_path_of_tangents_and_arcs():
+    # Round one disc of radius 1 from 3 away on each side: two tangents of √8 and the arc between.
+    world = polyplan.World.from_dict({"bounds": [-10, -10, 10, 10], "discs": [{"center": [0, 0], "radius": 1}],
+                                      "start": [-3, 0], "goal": [3, 0]})
+    plan = polyplan.plan(world)[0]
+    expected = 2 * np.sqrt(8) + np.pi - 2 * np.arccos(1 / 3)
+    assert plan.planner == "visibility" and plan.status == "solved"
+    assert abs(plan.length - expected) <= 1e-12 * expected
+    assert plan.facts["length_lower"] <= expected <= plan.facts["length_upper"]
+    assert [p["kind"] for p in plan.pieces] == ["segment", "arc", "segment"]
+    arc = plan.pieces[1]
+    assert arc["centre"] == [0, 0] and arc["radius"] == 1 and arc["turn"] in ("ccw", "cw")
+    assert plan.path.shape == (4, 2) and plan.path_exact is None  # the touching points are irrational
+    assert "path" in polyplan.svg(world, plan)
 
 
 def test_the_picture_shows_the_discs_and_walls():

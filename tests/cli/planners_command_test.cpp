@@ -14,7 +14,7 @@ TEST(Planners, ListsEveryPlannerOfEverySpaceWithOptionsAndDefaults) {
   const auto spaces = nlohmann::json::parse(run.out);
   ASSERT_EQ(spaces.size(), 5u);
   EXPECT_EQ(spaces[4]["command"], "polyplan plan WORLD.json --planner NAME");  // discs and walls
-  EXPECT_EQ(spaces[4]["planners"][0]["name"], "prm");
+  EXPECT_EQ(spaces[4]["planners"][0]["name"], "visibility");                   // the tangent visibility graph
   EXPECT_EQ(spaces[0]["command"], "polyplan plan WORLD.json --planner NAME");
   EXPECT_EQ(spaces[1]["command"], "polyplan plan WORLD.json --planner NAME");
   EXPECT_EQ(spaces[1]["planners"][0]["name"], "rotation");

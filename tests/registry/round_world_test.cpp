@@ -1,7 +1,9 @@
 // Worlds with discs, walls, disc bounds or a disc robot (data/worlds: sphere_world_discs, ...):
-// through the front door every planner either plans them — the sampling planners, each query
-// answered with a path that an independent exact check accepts — or refuses, naming the file and
+// through the front door every planner either plans them — the tangent visibility graph and the
+// sampling planners, each query answered with a path that an independent check accepts (exact for
+// polylines; in doubles, piece by piece, for tangents and arcs) — or refuses, naming the file and
 // what it does not plan with: never a plan straight through a disc or a wall.
+#include "piece_path_check.hpp"
 #include "registry_fixtures.hpp"
 
 #include <polyplan/geometry/input_error.hpp>
@@ -33,7 +35,7 @@ TEST_P(EveryPlannerOnEveryRoundWorld, PlansOrRefusesNamingWhatItHas) {
     try {
       // Seeded; an anytime planner (rrtstar) stops after 500 iterations rather than at its time limit.
       OptionValues options;
-      if (plans && listing.name != "navigation-function")
+      if (plans && listing.name != "navigation-function" && listing.name != "visibility")
         options = {{"seed", "3"}, {"time", "5"}, {"iterations", listing.anytime ? "500" : "100000"}};
       const auto planner = make_planner(listing.name, problem, options);
       EXPECT_TRUE(plans) << "built for a world it does not plan with";
@@ -42,14 +44,19 @@ TEST_P(EveryPlannerOnEveryRoundWorld, PlansOrRefusesNamingWhatItHas) {
         SCOPED_TRACE(report.query());
         // A path, or an answer that says why not (rrtstar stopped by its 500 iterations round
         // walls_bug's 200-long wall; the navigation function where the world is no sphere world);
-        // rrtconnect, the default, finds every one.
+        // rrtconnect and visibility, the default, find every one.
         if (!report.found()) {
           EXPECT_NE(listing.name, "rrtconnect") << report.why_not();
+          EXPECT_NE(listing.name, "visibility") << report.why_not();
           EXPECT_FALSE(report.why_not().empty());
           continue;
         }
-        const auto& path = std::get<PlanReport<ExactPoint>>(report.typed()).path;
-        const PathCheck check = check_translating_path(problem, path);  // the checker, asked afresh
+        const auto& typed = std::get<PlanReport<ExactPoint>>(report.typed());
+        if (!typed.pieces.empty()) {  // a path of tangents and arcs (visibility): its points are irrational
+          test::expect_valid_pieces(*problem.world(), typed);
+          continue;
+        }
+        const PathCheck check = check_translating_path(problem, typed.path);  // the checker, asked afresh
         EXPECT_TRUE(check.valid) << check.reason;
       }
     } catch (const InputError& e) {

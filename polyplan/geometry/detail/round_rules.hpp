@@ -1,0 +1,517 @@
+#pragma once
+// The rules of geometry/round_world_check.hpp over any exact ordered field N: GMP's rationals for
+// the paths the planners and users give (round_world_check.cpp), CORE's real algebraic numbers for
+// the tangent paths of a disc robot, whose points are irrational (roadmaps/tangent_visibility.cpp).
+// One set of rules, so that both are checked by the same semantics.
+//
+// A segment a→b is checked in three steps. (1) Its distance to every obstacle's core is at least
+// the obstacle's radius (squared distances of points, segments and polygons lie in the field). (2)
+// The points where it may touch an obstacle are listed: where it meets a polygon's edge or a
+// wall, the projections of the features' ends and of the discs' centres onto it — a superset of
+// the contacts, all in the field. (3) At each of those points and at the midpoint between
+// consecutive ones (where the contacts stay as they are along a piece), the local test below runs
+// with the motion's directions −d and d.
+//
+// The local test at a point q: each obstacle q touches blocks an open set of directions — an open
+// half-plane {d : d·u > 0}, u pointing from q to the obstacle's nearest point, for a disc, a
+// rounded core or an edge; an open wedge, the polygon's inner angle, at a polygon's vertex — and
+// each wall through q is a separator: rays a motion may move along but not cross. The motion is
+// valid at q when the direction it arrives from and the direction it leaves along are both free
+// and one turns into the other through free directions without crossing a separator. Free
+// directions are tested at the sets' boundary directions and between them (consecutive boundary
+// directions, with the four axes among them, are less than π apart, so their sum lies strictly
+// between them: a direction of the field).
+#include <polyplan/geometry/rational.hpp>
+#include <polyplan/geometry/world.hpp>
+
+#include <algorithm>
+#include <array>
+#include <functional>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace polyplan::round_rules {
+
+// A field's sign of a number and how a message prints one: specialised where the field is used
+// (round_world_check.cpp for Rational, roadmaps/detail/algebraic.hpp for CORE's numbers).
+template <class N>
+struct Field;
+
+template <class N>
+int sign_of(const N& x) {
+  return Field<N>::sign(x);
+}
+template <class N>
+std::string number_text(const N& x) {
+  return Field<N>::text(x);
+}
+
+template <class N>
+struct P {
+  N x, y;
+  friend bool operator==(const P& a, const P& b) { return a.x == b.x && a.y == b.y; }
+  friend P operator-(const P& a, const P& b) { return {a.x - b.x, a.y - b.y}; }
+  friend P operator+(const P& a, const P& b) { return {a.x + b.x, a.y + b.y}; }
+};
+
+template <class N>
+P<N> scaled(const P<N>& v, const N& t) {
+  return {v.x * t, v.y * t};
+}
+template <class N>
+N dot(const P<N>& a, const P<N>& b) {
+  return a.x * b.x + a.y * b.y;
+}
+template <class N>
+N cross(const P<N>& a, const P<N>& b) {
+  return a.x * b.y - a.y * b.x;
+}
+template <class N>
+N squared(const P<N>& v) {
+  return dot(v, v);
+}
+
+template <class N>
+struct Seg {
+  P<N> a, b;
+};
+
+// The parameter in [0, 1] of the point of segment s nearest q.
+template <class N>
+N nearest_parameter(const Seg<N>& s, const P<N>& q) {
+  const P<N> d = s.b - s.a;
+  const N length = squared(d);
+  if (sign_of(length) == 0) return N(0);
+  const N t = dot(q - s.a, d) / length;
+  return sign_of(t) < 0 ? N(0) : t > N(1) ? N(1) : t;
+}
+
+template <class N>
+P<N> at(const Seg<N>& s, const N& t) {
+  return s.a + scaled(s.b - s.a, t);
+}
+template <class N>
+P<N> nearest_point(const Seg<N>& s, const P<N>& q) {
+  return at(s, nearest_parameter(s, q));
+}
+template <class N>
+N squared_distance(const Seg<N>& s, const P<N>& q) {
+  return squared(nearest_point(s, q) - q);
+}
+
+template <class N>
+bool on_segment(const Seg<N>& s, const P<N>& q) {
+  return sign_of(cross(s.b - s.a, q - s.a)) == 0 && sign_of(dot(q - s.a, q - s.b)) <= 0;
+}
+
+template <class N>
+bool segments_meet(const Seg<N>& s, const Seg<N>& t) {
+  const int o1 = sign_of(cross(s.b - s.a, t.a - s.a)), o2 = sign_of(cross(s.b - s.a, t.b - s.a));
+  const int o3 = sign_of(cross(t.b - t.a, s.a - t.a)), o4 = sign_of(cross(t.b - t.a, s.b - t.a));
+  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return on_segment(s, t.a) || on_segment(s, t.b) || on_segment(t, s.a) || on_segment(t, s.b);
+}
+
+template <class N>
+N squared_distance(const Seg<N>& s, const Seg<N>& t) {
+  if (segments_meet(s, t)) return N(0);
+  return std::min(
+      {squared_distance(s, t.a), squared_distance(s, t.b), squared_distance(t, s.a), squared_distance(t, s.b)});
+}
+
+// A polygon's rings, the first the outer one, each with the region's interior to the left of its
+// edges (validated: outer counter-clockwise, holes clockwise).
+template <class N>
+using Rings = std::vector<std::vector<P<N>>>;
+
+template <class N>
+std::vector<Seg<N>> edges_of(const std::vector<P<N>>& ring) {
+  std::vector<Seg<N>> edges;
+  for (std::size_t i = 0; i < ring.size(); ++i) edges.push_back({ring[i], ring[(i + 1) % ring.size()]});
+  return edges;
+}
+
+// Where q lies with respect to a ring's closed region (the side its edges' left is): -1 outside,
+// 0 on its boundary, 1 inside; by the crossing number, exact.
+template <class N>
+int side_of_ring(const std::vector<P<N>>& ring, const P<N>& q) {
+  bool inside = false;
+  for (const Seg<N>& e : edges_of(ring)) {
+    if (on_segment(e, q)) return 0;
+    if ((e.a.y > q.y) != (e.b.y > q.y)) {
+      const N x = e.a.x + (q.y - e.a.y) * (e.b.x - e.a.x) / (e.b.y - e.a.y);
+      if (x > q.x) inside = !inside;
+    }
+  }
+  return inside ? 1 : -1;
+}
+
+// -1 outside the polygon with holes, 0 on its boundary, 1 in its interior.
+template <class N>
+int side_of_polygon(const Rings<N>& rings, const P<N>& q) {
+  const int outer = side_of_ring(rings.front(), q);
+  if (outer <= 0) return outer;
+  for (std::size_t h = 1; h < rings.size(); ++h) {
+    const int in_hole = side_of_ring(rings[h], q);
+    if (in_hole >= 0) return in_hole == 0 ? 0 : -1;
+  }
+  return 1;
+}
+
+// An open set of directions one obstacle blocks at a point, with the directions bounding it.
+template <class N>
+struct Blocked {
+  std::function<bool(const P<N>&)> contains;
+  std::vector<P<N>> boundary;
+};
+
+template <class N>
+Blocked<N> half_plane(const P<N>& towards) {
+  return {[towards](const P<N>& d) { return sign_of(dot(d, towards)) > 0; },
+          {P<N>{-towards.y, towards.x}, P<N>{towards.y, -towards.x}}};
+}
+
+// The open wedge turning counter-clockwise from direction `from` to direction `to`.
+template <class N>
+Blocked<N> wedge(const P<N>& from, const P<N>& to) {
+  const int turn = sign_of(cross(from, to));
+  return {[from, to, turn](const P<N>& d) {
+            if (turn > 0) return sign_of(cross(from, d)) > 0 && sign_of(cross(d, to)) > 0;
+            if (turn < 0) return !(sign_of(cross(to, d)) >= 0 && sign_of(cross(d, from)) >= 0);
+            return sign_of(cross(from, d)) > 0;  // a straight angle: the half-plane left of `from`
+          },
+          {from, to}};
+}
+
+// What a point meets: nothing, the inside of an obstacle, or its boundary (the directions it blocks
+// there, the walls' rays).
+template <class N>
+struct Contact {
+  bool inside = false;
+  std::string inside_of;  // the first obstacle it is inside ("discs[2]"), or "the bounds"
+  std::vector<Blocked<N>> blocked;
+  std::vector<P<N>> separators;
+};
+
+// Counter-clockwise order of directions, exactly: by half-plane, then by turn.
+template <class N>
+bool before(const P<N>& a, const P<N>& b) {
+  const auto upper = [](const P<N>& v) { return sign_of(v.y) > 0 || (sign_of(v.y) == 0 && sign_of(v.x) > 0); };
+  if (upper(a) != upper(b)) return upper(a);
+  return sign_of(cross(a, b)) > 0;
+}
+
+template <class N>
+bool same_direction(const P<N>& a, const P<N>& b) {
+  return sign_of(cross(a, b)) == 0 && sign_of(dot(a, b)) > 0;
+}
+
+// Directions of the polygon's interior at q on its boundary: a half-plane on an edge, the inner
+// angle at a vertex.
+template <class N>
+void touch_polygon(const Rings<N>& rings, const P<N>& q, Contact<N>& c) {
+  for (const auto& ring : rings)
+    for (std::size_t i = 0; i < ring.size(); ++i) {
+      const P<N>& v = ring[i];
+      const P<N>& next = ring[(i + 1) % ring.size()];
+      const P<N>& previous = ring[(i + ring.size() - 1) % ring.size()];
+      if (v == q) c.blocked.push_back(wedge(next - v, previous - v));
+      else if (on_segment(Seg<N>{v, next}, q) && !(next == q))
+        c.blocked.push_back(half_plane(P<N>{-(next.y - v.y), next.x - v.x}));
+    }
+}
+
+// A wall's rays from q: along the piece q is on, or to both neighbours at a vertex.
+template <class N>
+void touch_wall(const std::vector<P<N>>& wall, const P<N>& q, Contact<N>& c) {
+  for (std::size_t i = 0; i < wall.size(); ++i) {
+    if (wall[i] == q) {
+      if (i > 0) c.separators.push_back(wall[i - 1] - q);
+      if (i + 1 < wall.size()) c.separators.push_back(wall[i + 1] - q);
+    } else if (i + 1 < wall.size() && on_segment(Seg<N>{wall[i], wall[i + 1]}, q) && !(wall[i + 1] == q)) {
+      c.separators.push_back(wall[i] - q);
+      c.separators.push_back(wall[i + 1] - q);
+    }
+  }
+}
+
+template <class N>
+bool free_direction(const Contact<N>& c, const P<N>& d) {
+  return std::none_of(c.blocked.begin(), c.blocked.end(), [&](const Blocked<N>& b) { return b.contains(d); });
+}
+
+template <class N>
+bool is_separator(const Contact<N>& c, const P<N>& d) {
+  return std::any_of(c.separators.begin(), c.separators.end(), [&](const P<N>& s) { return same_direction(s, d); });
+}
+
+// Every direction the contact's sets and separators turn at, the axes, and `in` and `out`, sorted
+// counter-clockwise without repeats.
+template <class N>
+std::vector<P<N>> turning_directions(const Contact<N>& c, const P<N>& in, const P<N>& out) {
+  std::vector<P<N>> all{{N(1), N(0)}, {N(0), N(1)}, {N(-1), N(0)}, {N(0), N(-1)}, in, out};
+  for (const Blocked<N>& b : c.blocked) all.insert(all.end(), b.boundary.begin(), b.boundary.end());
+  all.insert(all.end(), c.separators.begin(), c.separators.end());
+  std::sort(all.begin(), all.end(), before<N>);
+  all.erase(std::unique(all.begin(), all.end(), same_direction<N>), all.end());
+  return all;
+}
+
+// Whether turning counter-clockwise from `in` to `out` keeps to free directions and crosses no
+// separator (touching one at either end is sliding along its wall).
+template <class N>
+bool turns_freely(const Contact<N>& c, const std::vector<P<N>>& around, const P<N>& in, const P<N>& out) {
+  const auto index = [&](const P<N>& v) {
+    return static_cast<std::size_t>(
+        std::find_if(around.begin(), around.end(), [&](const P<N>& w) { return same_direction(v, w); }) -
+        around.begin());
+  };
+  const std::size_t n = around.size(), to = index(out);
+  for (std::size_t i = index(in);; i = (i + 1) % n) {
+    const P<N>& here = around[i];
+    const P<N>& next = around[(i + 1) % n];
+    if (!free_direction(c, here + next)) return false;  // between two turning directions
+    if ((i + 1) % n == to) return true;
+    if (!free_direction(c, next) || is_separator(c, next)) return false;
+  }
+}
+
+template <class N>
+std::string at_text(const P<N>& q) {
+  return "(" + number_text(q.x) + ", " + number_text(q.y) + ")";
+}
+
+// The parameters in (0, 1) along s of q's projection, and of where s crosses segment e.
+template <class N>
+void add_projection(const Seg<N>& s, const P<N>& q, std::vector<N>& out) {
+  const N t = nearest_parameter(s, q);
+  if (sign_of(t) > 0 && t < N(1)) out.push_back(t);
+}
+
+template <class N>
+void add_crossing(const Seg<N>& s, const Seg<N>& e, std::vector<N>& out) {
+  const P<N> d = s.b - s.a, f = e.b - e.a;
+  const N denominator = cross(d, f);
+  if (sign_of(denominator) == 0) return;  // parallel: the projections of e's ends bound any overlap
+  const N t = cross(e.a - s.a, f) / denominator, u = cross(e.a - s.a, d) / denominator;
+  if (sign_of(t) > 0 && t < N(1) && sign_of(u) >= 0 && u <= N(1)) out.push_back(t);
+}
+
+template <class N>
+void add_segment_events(const Seg<N>& s, const Seg<N>& e, std::vector<N>& out) {
+  add_projection(s, e.a, out);
+  add_projection(s, e.b, out);
+  add_crossing(s, e, out);
+}
+
+// An obstacle: its core, its radius (the robot's added), and its name for messages.
+template <class N>
+struct Obstacle {
+  enum class Core { point, segment, polygon, wall } core = Core::point;
+  P<N> centre;             // point
+  P<N> from, to;           // segment: a wall's piece met by a disc robot
+  Rings<N> rings;          // polygon
+  std::vector<P<N>> wall;  // wall (radius 0): the whole polyline, its rays
+  N radius;                // 0 only for a polygon or a wall met by a point robot
+  std::string name;
+};
+
+// Every obstacle of a world as cores and radii in the field N, the bounds shrunk by the robot's
+// radius, and the checks of a configuration and of a polyline motion.
+template <class N>
+class RoundRules {
+ public:
+  using Point = P<N>;
+  using Vector = P<N>;
+  using Core = typename Obstacle<N>::Core;
+
+  // `field` takes a rational of the world into N. A polygon robot is refused by the caller.
+  template <class Field>
+  RoundRules(const World& world, Field field) {
+    const auto point = [&](const ExactPoint& p) { return Point{field(p.x), field(p.y)}; };
+    const auto points = [&](const std::vector<ExactPoint>& ps) {
+      std::vector<Point> out;
+      for (const ExactPoint& p : ps) out.push_back(point(p));
+      return out;
+    };
+    robot_ = field(world.robot.disc.value_or(0));
+    for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
+      Obstacle<N> o{Core::polygon, {}, {}, {}, {}, {}, robot_, world.obstacle_names[i]};
+      o.rings.push_back(points(world.obstacles[i].outer));
+      for (const Ring& hole : world.obstacles[i].holes) o.rings.push_back(points(hole));
+      obstacles_.push_back(std::move(o));
+    }
+    for (std::size_t i = 0; i < world.discs.size(); ++i)
+      obstacles_.push_back({Core::point,
+                            point(world.discs[i].center),
+                            {},
+                            {},
+                            {},
+                            {},
+                            field(world.discs[i].radius) + robot_,
+                            "discs[" + std::to_string(i) + "]"});
+    for (std::size_t i = 0; i < world.walls.size(); ++i) {
+      const std::vector<Point> wall = points(world.walls[i]);
+      const std::string name = "walls[" + std::to_string(i) + "]";
+      if (sign_of(robot_) == 0) obstacles_.push_back({Core::wall, {}, {}, {}, {}, wall, N(0), name});
+      else
+        for (std::size_t k = 0; k + 1 < wall.size(); ++k)
+          obstacles_.push_back({Core::segment, {}, wall[k], wall[k + 1], {}, {}, robot_, name});
+    }
+    if (world.bounds) {
+      const Bounds& b = *world.bounds;
+      box_ = {field(b.xmin) + robot_, field(b.ymin) + robot_, field(b.xmax) - robot_, field(b.ymax) - robot_};
+    }
+    if (world.disc_bounds) {
+      disc_centre_ = point(world.disc_bounds->center);
+      disc_radius_ = field(world.disc_bounds->radius) - robot_;
+    }
+  }
+
+  const std::vector<Obstacle<N>>& obstacles() const { return obstacles_; }
+  const N& robot() const { return robot_; }
+  // The box the robot's centre keeps to (xmin, ymin, xmax, ymax), and the disc (centre, radius).
+  const std::optional<std::array<N, 4>>& box() const { return box_; }
+  const std::optional<Point>& disc_centre() const { return disc_centre_; }
+  const N& disc_radius() const { return disc_radius_; }
+
+  Contact<N> contact(const Point& q) const {
+    Contact<N> c;
+    for (const Obstacle<N>& o : obstacles_) touch(o, q, c);
+    touch_bounds(q, c);
+    return c;
+  }
+
+  // Why the motion arriving at q from direction `in` and leaving along `out` (either may be none)
+  // is blocked there, or none.
+  std::optional<std::string> blocked_at(const Point& q, const std::optional<Vector>& in,
+                                        const std::optional<Vector>& out) const {
+    const Contact<N> c = contact(q);
+    if (c.inside)
+      return "at " + at_text(q) +
+             (c.inside_of == "the bounds" ? " the robot leaves the bounds" : " the robot overlaps " + c.inside_of);
+    for (const auto& d : {in, out})
+      if (d && !free_direction(c, *d)) return "at " + at_text(q) + " the motion turns into an obstacle it touches";
+    if (!in || !out || same_direction(*in, *out) || (c.blocked.empty() && c.separators.empty())) return std::nullopt;
+    const std::vector<Vector> around = turning_directions(c, *in, *out);
+    if (turns_freely(c, around, *in, *out) || turns_freely(c, around, *out, *in)) return std::nullopt;
+    return "at " + at_text(q) + " the motion crosses a wall or passes where obstacles touch (a passage of zero width)";
+  }
+
+  // Why the straight motion a→b is blocked (its ends' own arrival and departure not included), or
+  // none.
+  std::optional<std::string> segment_blocked(const Point& a, const Point& b) const {
+    const Seg<N> s{a, b};
+    if (auto why = too_close(s)) return why;
+    const Vector d = s.b - s.a, back{-d.x, -d.y};
+    const std::vector<N> ts = events(s);
+    for (std::size_t k = 0; k + 1 < ts.size(); ++k) {
+      const N middle = (ts[k] + ts[k + 1]) / N(2);
+      if (auto why = blocked_at(at(s, middle), back, d)) return why;
+      if (k > 0)
+        if (auto why = blocked_at(at(s, ts[k]), back, d)) return why;
+    }
+    return std::nullopt;
+  }
+
+ private:
+  void touch(const Obstacle<N>& o, const Point& q, Contact<N>& c) const {
+    if (o.core == Core::wall) return touch_wall(o.wall, q, c);
+    const auto inside = [&] {
+      if (!c.inside) c.inside_of = o.name;
+      c.inside = true;
+    };
+    if (o.core == Core::polygon && sign_of(o.radius) == 0) {
+      const int side = side_of_polygon(o.rings, q);
+      if (side > 0) inside();
+      if (side == 0) touch_polygon(o.rings, q, c);
+      return;
+    }
+    // A rounded core: blocked within `radius`; on the rim, the half-plane towards each nearest point.
+    std::vector<Point> nearest;
+    if (o.core == Core::point) nearest.push_back(o.centre);
+    if (o.core == Core::segment) nearest.push_back(nearest_point(Seg<N>{o.from, o.to}, q));
+    if (o.core == Core::polygon) {
+      if (side_of_polygon(o.rings, q) >= 0) return inside();
+      for (const auto& ring : o.rings)
+        for (const Seg<N>& e : edges_of(ring)) nearest.push_back(nearest_point(e, q));
+    }
+    const N r2 = o.radius * o.radius;
+    for (const Point& k : nearest) {
+      const N d2 = squared(k - q);
+      if (d2 < r2) inside();
+      else if (d2 == r2) c.blocked.push_back(half_plane(k - q));
+    }
+  }
+
+  void touch_bounds(const Point& q, Contact<N>& c) const {
+    const auto outside = [&] {
+      if (!c.inside) c.inside_of = "the bounds";
+      c.inside = true;
+    };
+    if (box_) {
+      const auto& [xmin, ymin, xmax, ymax] = *box_;
+      const std::pair<N, Vector> sides[] = {{q.x - xmin, {N(-1), N(0)}},
+                                            {xmax - q.x, {N(1), N(0)}},
+                                            {q.y - ymin, {N(0), N(-1)}},
+                                            {ymax - q.y, {N(0), N(1)}}};
+      for (const auto& [room, outward] : sides) {
+        if (sign_of(room) < 0) outside();
+        else if (sign_of(room) == 0) c.blocked.push_back(half_plane(outward));
+      }
+    }
+    if (disc_centre_) {
+      const N d2 = squared(q - *disc_centre_), r2 = disc_radius_ * disc_radius_;
+      if (sign_of(disc_radius_) < 0 || d2 > r2) outside();
+      else if (d2 == r2) c.blocked.push_back(half_plane(q - *disc_centre_));
+    }
+  }
+
+  std::optional<std::string> too_close(const Seg<N>& s) const {
+    for (const Obstacle<N>& o : obstacles_) {
+      if (o.core == Core::wall || (o.core == Core::polygon && sign_of(o.radius) == 0)) continue;  // contacts decide
+      N d2;
+      if (o.core == Core::point) d2 = squared_distance(s, o.centre);
+      if (o.core == Core::segment) d2 = squared_distance(s, Seg<N>{o.from, o.to});
+      if (o.core == Core::polygon) {
+        d2 = side_of_polygon(o.rings, s.a) >= 0 ? N(0) : N(-1);
+        for (const auto& ring : o.rings)
+          for (const Seg<N>& e : edges_of(ring)) {
+            const N e2 = squared_distance(s, e);
+            if (sign_of(d2) < 0 || e2 < d2) d2 = e2;
+          }
+      }
+      if (d2 < o.radius * o.radius)
+        return sign_of(robot_) == 0 ? "the motion enters " + o.name
+                                    : "the motion comes nearer " + o.name + " than the robot's radius allows";
+    }
+    return std::nullopt;
+  }
+
+  std::vector<N> events(const Seg<N>& s) const {
+    std::vector<N> out{N(0), N(1)};
+    for (const Obstacle<N>& o : obstacles_) {
+      if (o.core == Core::point) add_projection(s, o.centre, out);
+      if (o.core == Core::segment) add_segment_events(s, Seg<N>{o.from, o.to}, out);
+      if (o.core == Core::wall)
+        for (std::size_t i = 0; i + 1 < o.wall.size(); ++i)
+          add_segment_events(s, Seg<N>{o.wall[i], o.wall[i + 1]}, out);
+      if (o.core == Core::polygon)
+        for (const auto& ring : o.rings)
+          for (const Seg<N>& e : edges_of(ring)) add_segment_events(s, e, out);
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
+    return out;
+  }
+
+  std::vector<Obstacle<N>> obstacles_;
+  N robot_;
+  std::optional<std::array<N, 4>> box_;
+  std::optional<Point> disc_centre_;
+  N disc_radius_;
+};
+
+}  // namespace polyplan::round_rules

@@ -1,0 +1,107 @@
+// How roadmaps/detail/certified_length.hpp bounds a length, step by step:
+//  - a segment: √|b − a|² is a CORE number; its doubleInterval is the pair of consecutive doubles
+//    around it, decided by an exact sign (CORE's Expr::doubleInterval);
+//  - an arc: the counter-clockwise angle θ from a = from − c to b = to − c is atan2(a×b, a·b) when
+//    a×b > 0, 2π − atan2(−a×b, a·b) when a×b < 0 (0 or π on the line, decided exactly). The cross
+//    and dot products are bounded by doubleInterval; atan2 over that box lies between its values at
+//    the box's corners (the box lies in the open upper half-plane, where the angle is monotone
+//    along each side), each computed by MPFR rounded down for the lower bound and up for the upper;
+//    π likewise. The radius is rational: MPFR rounds it each way; the product of the positive bounds
+//    is rounded outward.
+#include <polyplan/roadmaps/detail/certified_length.hpp>
+
+#include <mpfr.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace polyplan::tangent {
+namespace {
+
+using round_rules::cross;
+using round_rules::dot;
+using round_rules::sign_of;
+using round_rules::squared;
+
+// One MPFR number of a double's precision, freed on leaving.
+class Big {
+ public:
+  Big() { mpfr_init2(value_, 53); }
+  ~Big() { mpfr_clear(value_); }
+  Big(const Big&) = delete;
+  Big& operator=(const Big&) = delete;
+  mpfr_ptr get() { return value_; }
+  double rounded(mpfr_rnd_t way) const { return mpfr_get_d(value_, way); }
+
+ private:
+  mpfr_t value_;
+};
+
+double atan2_rounded(double y, double x, mpfr_rnd_t way) {
+  Big by, bx, out;
+  mpfr_set_d(by.get(), y, MPFR_RNDN);  // exact: a double
+  mpfr_set_d(bx.get(), x, MPFR_RNDN);
+  mpfr_atan2(out.get(), by.get(), bx.get(), way);
+  return out.rounded(way);
+}
+
+double pi_rounded(mpfr_rnd_t way) {
+  Big pi;
+  mpfr_const_pi(pi.get(), way);
+  return pi.rounded(way);
+}
+
+double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
+double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
+
+// atan2(y, x) for y > 0 over the box of the bounds.
+LengthBounds upper_half_angle(double ylo, double yhi, double xlo, double xhi) {
+  LengthBounds out{std::numeric_limits<double>::infinity(), 0};
+  for (const double y : {ylo, yhi})
+    for (const double x : {xlo, xhi}) {
+      out.lower = std::min(out.lower, atan2_rounded(y, x, MPFR_RNDD));
+      out.upper = std::max(out.upper, atan2_rounded(y, x, MPFR_RNDU));
+    }
+  return out;
+}
+
+LengthBounds angle(const AlgebraicPoint& a, const AlgebraicPoint& b) {
+  const Algebraic c = cross(a, b), d = dot(a, b);
+  const int turn = sign_of(c);
+  if (turn == 0)
+    return sign_of(d) > 0 ? LengthBounds{0, 0} : LengthBounds{pi_rounded(MPFR_RNDD), pi_rounded(MPFR_RNDU)};
+  double clo = 0, chi = 0, dlo = 0, dhi = 0;
+  (turn > 0 ? c : -c).doubleInterval(clo, chi);
+  d.doubleInterval(dlo, dhi);
+  const LengthBounds theta = upper_half_angle(clo, chi, dlo, dhi);
+  if (turn > 0) return theta;
+  // 2π − θ: twice π is exact in binary; the difference rounded outward.
+  return {down(2 * pi_rounded(MPFR_RNDD) - theta.upper), up(2 * pi_rounded(MPFR_RNDU) - theta.lower)};
+}
+
+}  // namespace
+
+LengthBounds segment_length(const AlgebraicPoint& a, const AlgebraicPoint& b) {
+  LengthBounds out;
+  CORE::sqrt(squared(b - a)).doubleInterval(out.lower, out.upper);
+  return out;
+}
+
+LengthBounds arc_length(const Arc& arc) {
+  const LengthBounds theta = angle(arc.from - arc.circle->centre, arc.to - arc.circle->centre);
+  Big rlo, rhi, lo, hi, tlo, thi;
+  mpfr_set_q(rlo.get(), arc.circle->exact_radius.get_mpq_t(), MPFR_RNDD);
+  mpfr_set_q(rhi.get(), arc.circle->exact_radius.get_mpq_t(), MPFR_RNDU);
+  mpfr_set_d(tlo.get(), theta.lower, MPFR_RNDN);
+  mpfr_set_d(thi.get(), theta.upper, MPFR_RNDN);
+  mpfr_mul(lo.get(), rlo.get(), tlo.get(), MPFR_RNDD);
+  mpfr_mul(hi.get(), rhi.get(), thi.get(), MPFR_RNDU);
+  return {std::max(0.0, lo.rounded(MPFR_RNDD)), hi.rounded(MPFR_RNDU)};
+}
+
+LengthBounds operator+(const LengthBounds& a, const LengthBounds& b) {
+  return {down(a.lower + b.lower), up(a.upper + b.upper)};
+}
+
+}  // namespace polyplan::tangent

@@ -1,0 +1,19 @@
+#pragma once
+// Lengths of a tangent path's pieces as intervals of doubles that hold the exact length for sure
+// (outward rounding): a segment's length from CORE's exact interval of its square root, an arc's as
+// radius × angle with MPFR's directed rounding of atan2 and of the products and sums.
+#include <polyplan/roadmaps/detail/tangent_arcs.hpp>
+
+namespace polyplan::tangent {
+
+struct LengthBounds {
+  double lower = 0, upper = 0;
+};
+
+LengthBounds segment_length(const AlgebraicPoint& a, const AlgebraicPoint& b);
+// The counter-clockwise arc's length.
+LengthBounds arc_length(const Arc& arc);
+// The sum, rounded outward (one step of a double each way covers round-to-nearest's half step).
+LengthBounds operator+(const LengthBounds& a, const LengthBounds& b);
+
+}  // namespace polyplan::tangent

@@ -1,0 +1,56 @@
+#pragma once
+// The circles a shortest path of a point or disc robot bends around, their common tangents and the
+// exact test of an arc along one (roadmaps/tangent_visibility.hpp). A shortest path among discs,
+// walls and polygons, each grown by the robot's radius r, is made of straight segments tangent to
+// circles and of arcs along them: the discs grown by r, and every vertex of a polygon or a wall
+// with radius r (radius 0 for a point robot: the path only turns there). All of it in real
+// algebraic numbers: a tangent point is a + b√c.
+#include <polyplan/roadmaps/detail/algebraic.hpp>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace polyplan::tangent {
+
+struct Circle {
+  AlgebraicPoint centre;
+  Algebraic radius;
+  Rational exact_radius;  // the same radius, for the certified lengths
+  std::string name;       // "discs[2]", "obstacles[0] vertex 3", for messages
+};
+
+// The circles of a point or disc robot's world: every disc grown by the robot's radius, and every
+// vertex of a polygon (outer ring and holes) and of a wall with the robot's radius.
+std::vector<Circle> circles_of(const World& world);
+
+// A straight motion from a touching point of one circle to one of another.
+struct Tangent {
+  AlgebraicPoint from, to;
+};
+
+// The common tangents of a and b, each from a's touching point to b's: up to four (two outer,
+// two inner), two from a point (radius 0) to a circle, one between two points; none for
+// concentric circles.
+std::vector<Tangent> common_tangents(const Circle& a, const Circle& b);
+
+// The arc of `circle` from `from` counter-clockwise to `to`, both on it (from == to: the point).
+struct Arc {
+  const Circle* circle = nullptr;
+  AlgebraicPoint from, to;
+};
+
+// Whether the direction u from the arc's centre points into the closed arc.
+bool spans(const Arc& arc, const AlgebraicPoint& u);
+
+// Whether direction u comes strictly before v counter-clockwise from direction a (a itself first):
+// the order of the points on a circle.
+bool turns_before(const AlgebraicPoint& a, const AlgebraicPoint& u, const AlgebraicPoint& v);
+
+// Why the robot's centre may not travel along the arc, or none. It may not come nearer an obstacle's
+// core than the obstacle's radius, nor touch an obstacle other than the circle's own (the disc, or
+// the edges and wall pieces ending at the corner): an arc touching another obstacle passes where two
+// touch, a passage of zero width. Nor may it touch or leave the bounds.
+std::optional<std::string> arc_blocked(const round_rules::RoundRules<Algebraic>& rules, const Arc& arc);
+
+}  // namespace polyplan::tangent

@@ -1,0 +1,191 @@
+// The circles, tangents and arc tests of roadmaps/detail/tangent_arcs.hpp, exact in CORE's numbers.
+//
+// The distance from an arc to a point or a segment is the least of a few candidates, each exact:
+// the arc's ends; the point's radial projection onto the circle when it falls inside the arc; where
+// the segment's line meets the circle inside both; and, for a line that misses the circle, the
+// circle's point nearest the line when it falls inside both. The extreme of a linear function over
+// an arc (a box side, the distance from the bounds' centre) is at an end or at the direction it
+// points to, when the arc holds it.
+#include <polyplan/roadmaps/detail/tangent_arcs.hpp>
+
+#include <algorithm>
+
+namespace polyplan::tangent {
+namespace {
+
+using Core = round_rules::Obstacle<Algebraic>::Core;
+using round_rules::cross;
+using round_rules::dot;
+using round_rules::Seg;
+using round_rules::sign_of;
+using round_rules::squared;
+using round_rules::squared_distance;
+using AP = AlgebraicPoint;
+using Rules = round_rules::RoundRules<Algebraic>;
+using Obstacle = round_rules::Obstacle<Algebraic>;
+
+AP perpendicular(const AP& v) { return {-v.y, v.x}; }
+AP times(const AP& v, const Algebraic& t) { return {v.x * t, v.y * t}; }
+Algebraic length(const AP& v) { return CORE::sqrt(squared(v)); }
+Algebraic absolute(const Algebraic& x) { return sign_of(x) < 0 ? -x : x; }
+
+void add_vertices(const std::vector<ExactPoint>& points, const std::string& name, const Rational& r,
+                  std::vector<Circle>& out) {
+  for (std::size_t k = 0; k < points.size(); ++k)
+    out.push_back({algebraic(points[k]), algebraic(r), r, name + " vertex " + std::to_string(k)});
+}
+
+// The half, [0, π) or [π, 2π), that the counter-clockwise angle from a to v falls in.
+int half(const AP& a, const AP& v) {
+  const int s = sign_of(cross(a, v));
+  return s > 0 || (s == 0 && sign_of(dot(a, v)) > 0) ? 0 : 1;
+}
+
+Algebraic distance_to_arc(const Arc& arc, const AP& p) {
+  const AP u = p - arc.circle->centre;
+  if (sign_of(squared(u)) == 0) return arc.circle->radius;
+  if (spans(arc, u)) return absolute(length(u) - arc.circle->radius);
+  return std::min(length(p - arc.from), length(p - arc.to));
+}
+
+Algebraic distance_to_segment(const Arc& arc, const Seg<Algebraic>& s) {
+  std::vector<Algebraic> candidates{CORE::sqrt(squared_distance(s, arc.from)), CORE::sqrt(squared_distance(s, arc.to)),
+                                    distance_to_arc(arc, s.a), distance_to_arc(arc, s.b)};
+  const AP d = s.b - s.a, &c = arc.circle->centre;
+  const Algebraic length2 = squared(d), &rho = arc.circle->radius;
+  if (sign_of(length2) != 0) {
+    const Algebraic t = dot(c - s.a, d) / length2;
+    const AP foot = s.a + times(d, t), normal = foot - c;
+    const Algebraic h2 = squared(normal);
+    const auto inside = [](const Algebraic& u) { return sign_of(u) >= 0 && u <= Algebraic(1); };
+    if (h2 <= rho * rho) {  // the line meets the circle: where, if inside the segment and the arc
+      const Algebraic w = CORE::sqrt((rho * rho - h2) / length2);
+      for (const Algebraic& u : {t - w, t + w})
+        if (inside(u) && spans(arc, s.a + times(d, u) - c)) candidates.push_back(Algebraic(0));
+    } else if (inside(t) && spans(arc, normal)) {
+      candidates.push_back(CORE::sqrt(h2) - rho);
+    }
+  }
+  return *std::min_element(candidates.begin(), candidates.end());
+}
+
+// Whether the obstacle's feature is the circle's own: the disc itself, or an edge or a wall piece
+// ending at the corner (the corner's arc keeps exactly its radius from them).
+bool owns(const Obstacle& o, const Circle& circle) {
+  if (!(o.radius == circle.radius)) return false;
+  if (o.core == Core::point) return o.centre == circle.centre;
+  if (o.core == Core::segment) return o.from == circle.centre || o.to == circle.centre;
+  return false;
+}
+
+bool edge_owns(const Seg<Algebraic>& e, const Obstacle& o, const Circle& circle) {
+  return o.radius == circle.radius && (e.a == circle.centre || e.b == circle.centre);
+}
+
+// Whether the arc comes nearer than `radius` (or touches it, unless `own`).
+bool too_near(const Algebraic& distance, const Algebraic& radius, bool own) {
+  return distance < radius || (!own && distance == radius);
+}
+
+std::optional<std::string> blocked_by(const Obstacle& o, const Arc& arc) {
+  const Circle& circle = *arc.circle;
+  const std::string why = "the arc round " + circle.name + " comes to " + o.name;
+  if (o.core == Core::point) {
+    if (too_near(distance_to_arc(arc, o.centre), o.radius, owns(o, circle))) return why;
+  } else if (o.core == Core::segment) {
+    if (too_near(distance_to_segment(arc, {o.from, o.to}), o.radius, owns(o, circle))) return why;
+  } else if (o.core == Core::wall) {
+    for (std::size_t k = 0; k + 1 < o.wall.size(); ++k)
+      if (too_near(distance_to_segment(arc, {o.wall[k], o.wall[k + 1]}), o.radius, false)) return why;
+  } else {
+    for (const auto& ring : o.rings)
+      for (const Seg<Algebraic>& e : round_rules::edges_of(ring))
+        if (too_near(distance_to_segment(arc, e), o.radius, edge_owns(e, o, circle))) return why;
+  }
+  return std::nullopt;
+}
+
+// The largest value of v·x over the arc's points x.
+Algebraic largest(const Arc& arc, const AP& v) {
+  Algebraic best = std::max(dot(v, arc.from), dot(v, arc.to));
+  if (spans(arc, v)) best = std::max(best, dot(v, arc.circle->centre) + arc.circle->radius * length(v));
+  return best;
+}
+
+std::optional<std::string> leaves_bounds(const Rules& rules, const Arc& arc) {
+  const std::string why = "the arc round " + arc.circle->name + " comes to the bounds";
+  if (const auto& box = rules.box()) {
+    const auto& [xmin, ymin, xmax, ymax] = *box;
+    const Algebraic one(1), zero(0);
+    if (largest(arc, {one, zero}) >= xmax || largest(arc, {zero, one}) >= ymax) return why;
+    if (-largest(arc, {-one, zero}) <= xmin || -largest(arc, {zero, -one}) <= ymin) return why;
+  }
+  if (const auto& centre = rules.disc_centre()) {
+    const AP w = arc.circle->centre - *centre;
+    Algebraic farthest = std::max(length(arc.from - *centre), length(arc.to - *centre));
+    if (sign_of(squared(w)) == 0) farthest = arc.circle->radius;
+    else if (spans(arc, w)) farthest = length(w) + arc.circle->radius;
+    if (farthest >= rules.disc_radius()) return why;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<Circle> circles_of(const World& world) {
+  const Rational r = world.robot.disc.value_or(0);
+  std::vector<Circle> out;
+  for (std::size_t i = 0; i < world.discs.size(); ++i)
+    out.push_back({algebraic(world.discs[i].center), algebraic(world.discs[i].radius + r), world.discs[i].radius + r,
+                   "discs[" + std::to_string(i) + "]"});
+  for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
+    add_vertices(world.obstacles[i].outer, world.obstacle_names[i], r, out);
+    for (std::size_t h = 0; h < world.obstacles[i].holes.size(); ++h)
+      add_vertices(world.obstacles[i].holes[h], world.obstacle_names[i] + " hole " + std::to_string(h), r, out);
+  }
+  for (std::size_t i = 0; i < world.walls.size(); ++i)
+    add_vertices(world.walls[i], "walls[" + std::to_string(i) + "]", r, out);
+  return out;
+}
+
+// With n the tangent line's unit normal, a's touching point is c_a + ρ_a·n and b's c_b + s·ρ_b·n
+// (s = 1: an outer tangent, −1: an inner one); both on the line when n·(c_b − c_a) = ρ_a − s·ρ_b =: k,
+// so n = (k·d ± √(|d|² − k²)·d⊥) / |d|², d = c_b − c_a.
+std::vector<Tangent> common_tangents(const Circle& a, const Circle& b) {
+  const AP d = b.centre - a.centre;
+  const Algebraic d2 = squared(d);
+  if (sign_of(d2) == 0) return {};
+  const bool a_point = sign_of(a.radius) == 0, b_point = sign_of(b.radius) == 0;
+  std::vector<Tangent> out;
+  for (const int s : {1, -1}) {
+    if (s < 0 && (a_point || b_point)) continue;  // the outer tangents again
+    const Algebraic k = a.radius - Algebraic(s) * b.radius, room = d2 - k * k;
+    if (sign_of(room) < 0) continue;
+    const Algebraic root = CORE::sqrt(room);
+    for (const int side : {1, -1}) {
+      if (side < 0 && (sign_of(room) == 0 || (a_point && b_point))) continue;  // one line
+      const AP n = times(times(d, k) + times(perpendicular(d), Algebraic(side) * root), Algebraic(1) / d2);
+      out.push_back({a.centre + times(n, a.radius), b.centre + times(n, Algebraic(s) * b.radius)});
+    }
+  }
+  return out;
+}
+
+bool turns_before(const AP& a, const AP& u, const AP& v) {
+  const int hu = half(a, u), hv = half(a, v);
+  if (hu != hv) return hu < hv;
+  return sign_of(cross(u, v)) > 0;
+}
+
+bool spans(const Arc& arc, const AP& u) {
+  const AP a = arc.from - arc.circle->centre, b = arc.to - arc.circle->centre;
+  return !turns_before(a, b, u);
+}
+
+std::optional<std::string> arc_blocked(const Rules& rules, const Arc& arc) {
+  for (const Obstacle& o : rules.obstacles())
+    if (auto why = blocked_by(o, arc)) return why;
+  return leaves_bounds(rules, arc);
+}
+
+}  // namespace polyplan::tangent

@@ -1,0 +1,380 @@
+#include <polyplan/roadmaps/tangent_visibility.hpp>
+
+#include <polyplan/plan/plan_facts.hpp>
+#include <polyplan/plan/plan_trace.hpp>
+#include <polyplan/plan/planner_options.hpp>
+#include <polyplan/plan/query_tally.hpp>
+#include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/roadmaps/detail/certified_length.hpp>
+#include <polyplan/roadmaps/detail/tangent_arcs.hpp>
+#include <polyplan/roadmaps/detail/tangent_prefilter.hpp>
+#include <polyplan/search/roadmap.hpp>
+#include <polyplan/search/shortest_path.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <stdexcept>
+
+namespace polyplan {
+namespace {
+
+using tangent::Arc;
+using tangent::Circle;
+using AP = AlgebraicPoint;
+using Rules = round_rules::RoundRules<Algebraic>;
+
+constexpr FactKey<double> length_lower{"length_lower"};
+constexpr FactKey<double> length_upper{"length_upper"};
+
+// A checked straight motion between two touching points; `from_owner` and `to_owner` are circle
+// indices, or circles.size() for the query's start and + 1 for its goal.
+struct Chord {
+  std::size_t from_owner = 0, to_owner = 0;
+  AP from, to;
+};
+
+// An edge of a query's graph: a chord, or the arc of a circle counter-clockwise from node `u` to
+// node `v` (the edge's own order).
+struct Link {
+  double length = 0;
+  std::optional<std::size_t> circle;  // an arc's
+  std::size_t u = 0, v = 0;
+};
+
+AP direction(const AP& from, const AP& to) { return to - from; }
+AP perpendicular(const AP& v) { return {-v.y, v.x}; }
+FactPoint approximate(const AP& p) { return {p.x.doubleValue(), p.y.doubleValue()}; }
+ExactPoint nearest_rational(const AP& p) {
+  const FactPoint d = approximate(p);
+  return {Rational(d[0]), Rational(d[1])};
+}
+
+double arc_length_estimate(const Arc& arc) {
+  const FactPoint c = approximate(arc.circle->centre), a = approximate(arc.from), b = approximate(arc.to);
+  const double ax = a[0] - c[0], ay = a[1] - c[1], bx = b[0] - c[0], by = b[1] - c[1];
+  double theta = std::atan2(ax * by - ay * bx, ax * bx + ay * by);
+  if (theta < 0) theta += 2 * M_PI;
+  return arc.circle->radius.doubleValue() * theta;
+}
+
+}  // namespace
+
+struct TangentVisibilityGraph::Impl {
+  const RoundWorld& world;
+  Rules rules;
+  tangent::Prefilter prefilter;
+  std::vector<Circle> circles;
+  std::vector<Chord> chords;  // between the world's circles
+  SearchOptions search;
+  double build_seconds = 0;
+
+  Impl(const RoundWorld& w, SearchOptions s)
+      : world(w), rules(w.world(), [](const Rational& q) { return algebraic(q); }), prefilter(rules),
+        circles(tangent::circles_of(w.world())), search(s) {
+    const Stopwatch building;
+    for (std::size_t i = 0; i < circles.size(); ++i)
+      for (std::size_t j = i + 1; j < circles.size(); ++j) add_chords(circles[i], i, circles[j], j, chords);
+    build_seconds = building.seconds();
+  }
+
+  // Whether the straight motion a→b is valid, ends included (a point: whether it is free).
+  bool usable(const AP& a, const AP& b) const {
+    if (a == b) return !rules.blocked_at(a, std::nullopt, std::nullopt);
+    if (prefilter.clearly_blocked(a, b)) return false;
+    return !rules.blocked_at(a, std::nullopt, direction(a, b)) && !rules.blocked_at(b, direction(b, a), std::nullopt) &&
+           !rules.segment_blocked(a, b);
+  }
+
+  void add_chords(const Circle& a, std::size_t ia, const Circle& b, std::size_t ib, std::vector<Chord>& out) const {
+    for (const tangent::Tangent& t : tangent::common_tangents(a, b))
+      if (usable(t.from, t.to)) out.push_back({ia, ib, t.from, t.to});
+  }
+
+  PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options);
+};
+
+namespace {
+
+// A query's graph: its nodes (touching points; a corner of radius 0 or the start or goal has one
+// node per class of directions a path may pass it by), and its links.
+class QueryGraph {
+ public:
+  QueryGraph(const Rules& rules, const std::vector<Circle>& circles, const std::vector<Chord>& chords)
+      : rules_(rules), circles_(circles) {
+    for (std::size_t k = 0; k < chords.size(); ++k) {
+      ports_[chords[k].from_owner].push_back({k, true, chords[k].from, direction(chords[k].from, chords[k].to)});
+      ports_[chords[k].to_owner].push_back({k, false, chords[k].to, direction(chords[k].to, chords[k].from)});
+    }
+    chord_ends_.resize(chords.size());
+    for (auto& [owner, ports] : ports_) add_nodes(owner, ports);
+    for (std::size_t k = 0; k < chords.size(); ++k) {
+      const auto [u, v] = chord_ends_[k];
+      const FactPoint a = approximate(chords[k].from), b = approximate(chords[k].to);
+      add_link({std::hypot(a[0] - b[0], a[1] - b[1]), std::nullopt, u, v});
+    }
+    for (const auto& [owner, ports] : ports_)
+      if (owner < circles.size() && sign_of_radius(owner) > 0) add_arcs(owner);
+  }
+
+  std::size_t node_of(std::size_t owner) const { return owner_nodes_.at(owner).front(); }
+  const std::vector<AP>& points() const { return points_; }
+  const std::vector<std::size_t>& owners() const { return node_owner_; }
+  const std::map<std::pair<std::size_t, std::size_t>, Link>& links() const { return links_; }
+
+  Roadmap roadmap() const {
+    Roadmap graph;
+    for (const AP& p : points_) add_vertex(graph, nearest_rational(p));
+    for (const auto& [key, link] : links_) boost::add_edge(key.first, key.second, RoadmapEdge{link.length}, graph);
+    return graph;
+  }
+
+ private:
+  struct Port {
+    std::size_t chord;
+    bool from_end;
+    AP at, out;  // where the chord touches, and its direction away from there
+  };
+
+  int sign_of_radius(std::size_t owner) const { return round_rules::sign_of(circles_[owner].radius); }
+
+  std::size_t new_node(std::size_t owner, const AP& at) {
+    points_.push_back(at);
+    node_owner_.push_back(owner);
+    owner_nodes_[owner].push_back(points_.size() - 1);
+    return points_.size() - 1;
+  }
+
+  void attach(const Port& port, std::size_t node) {
+    auto& [u, v] = chord_ends_[port.chord];
+    (port.from_end ? u : v) = node;
+  }
+
+  // A circle's touching points are nodes each; a point's ports join one node when a motion may
+  // come in along one and leave along the other (round_rules' turn test at the point).
+  void add_nodes(std::size_t owner, const std::vector<Port>& ports) {
+    if (owner < circles_.size() && sign_of_radius(owner) > 0) {
+      for (const Port& port : ports) attach(port, new_node(owner, port.at));
+      return;
+    }
+    std::vector<std::size_t> leader(ports.size());
+    std::iota(leader.begin(), leader.end(), 0);
+    const auto find = [&](std::size_t i) {
+      while (leader[i] != i) i = leader[i] = leader[leader[i]];
+      return i;
+    };
+    const round_rules::Contact<Algebraic> contact = rules_.contact(ports.front().at);
+    const bool one_side = contact.separators.empty() && contact.blocked.size() <= 1;
+    // A chord of length 0 (the point lies on a circle) leaves along no direction: any class takes it.
+    const auto still = [](const Port& p) { return round_rules::sign_of(round_rules::squared(p.out)) == 0; };
+    for (std::size_t i = 0; i < ports.size(); ++i)
+      for (std::size_t j = i + 1; j < ports.size(); ++j)
+        if (find(i) != find(j) && (one_side || still(ports[i]) || still(ports[j]) ||
+                                   !rules_.blocked_at(ports[i].at, ports[i].out, ports[j].out)))
+          leader[find(j)] = find(i);
+    std::map<std::size_t, std::size_t> node_of_class;
+    for (std::size_t i = 0; i < ports.size(); ++i) {
+      auto [it, added] = node_of_class.try_emplace(find(i), 0);
+      if (added) it->second = new_node(owner, ports[i].at);
+      attach(ports[i], it->second);
+    }
+  }
+
+  // The arcs between consecutive touching points round the circle, those that keep clear.
+  void add_arcs(std::size_t owner) {
+    std::vector<std::size_t> around = owner_nodes_[owner];
+    if (around.size() < 2) return;
+    const AP& c = circles_[owner].centre;
+    const AP east{Algebraic(1), Algebraic(0)};
+    std::sort(around.begin(), around.end(), [&](std::size_t a, std::size_t b) {
+      return tangent::turns_before(east, points_[a] - c, points_[b] - c);
+    });
+    for (std::size_t k = 0; k < around.size(); ++k) {
+      const std::size_t u = around[k], v = around[(k + 1) % around.size()];
+      const Arc arc{&circles_[owner], points_[u], points_[v]};
+      if (!tangent::arc_blocked(rules_, arc)) add_link({arc_length_estimate(arc), owner, u, v});
+    }
+  }
+
+  // Parallel links (two arcs between the same two nodes, one each way round): the shorter, which
+  // is the one a search would take.
+  void add_link(const Link& link) {
+    const auto key = std::minmax(link.u, link.v);
+    auto [it, added] = links_.try_emplace(key, link);
+    if (!added && link.length < it->second.length) it->second = link;
+  }
+
+  const Rules& rules_;
+  const std::vector<Circle>& circles_;
+  std::map<std::size_t, std::vector<Port>> ports_;
+  std::vector<std::pair<std::size_t, std::size_t>> chord_ends_;
+  std::vector<AP> points_;
+  std::vector<std::size_t> node_owner_;
+  std::map<std::size_t, std::vector<std::size_t>> owner_nodes_;
+  std::map<std::pair<std::size_t, std::size_t>, Link> links_;
+};
+
+// A found path as pieces: segments, and arcs with their circle and turn; zero-length pieces left
+// out, consecutive arcs of one circle turning the same way merged.
+struct Piece {
+  std::optional<std::size_t> circle;
+  bool counter_clockwise = true;
+  AP from, to;
+};
+
+std::vector<Piece> pieces_of(const QueryGraph& graph, const std::vector<RoadmapVertexId>& nodes) {
+  std::vector<Piece> out;
+  for (std::size_t k = 0; k + 1 < nodes.size(); ++k) {
+    const std::size_t u = nodes[k], v = nodes[k + 1];
+    const Link& link = graph.links().at(std::minmax(u, v));
+    const AP &a = graph.points()[u], &b = graph.points()[v];
+    if (a == b) continue;
+    const Piece piece{link.circle, !link.circle || link.u == u, a, b};
+    if (piece.circle && !out.empty() && out.back().circle == piece.circle &&
+        out.back().counter_clockwise == piece.counter_clockwise)
+      out.back().to = b;
+    else out.push_back(piece);
+  }
+  return out;
+}
+
+// The piece's direction of travel where it leaves `at` (its start) or, reversed, arrives there.
+AP heading(const Piece& piece, const AP& at, const std::vector<Circle>& circles) {
+  if (!piece.circle) return at == piece.from ? direction(piece.from, piece.to) : direction(piece.to, piece.from);
+  const AP radial = at - circles[*piece.circle].centre;
+  const bool forward = at == piece.from ? piece.counter_clockwise : !piece.counter_clockwise;
+  return forward ? perpendicular(radial) : AP{radial.y, -radial.x};
+}
+
+Arc arc_of(const Piece& piece, const std::vector<Circle>& circles) {
+  const Circle* circle = &circles[*piece.circle];
+  return piece.counter_clockwise ? Arc{circle, piece.from, piece.to} : Arc{circle, piece.to, piece.from};
+}
+
+// The whole path checked again, piece by piece and at every joint (the directions it arrives from
+// and leaves along), independently of how the graph found it.
+std::optional<std::string> path_blocked(const Rules& rules, const std::vector<Piece>& pieces,
+                                        const std::vector<Circle>& circles) {
+  for (std::size_t k = 0; k <= pieces.size(); ++k) {
+    const AP& at = k < pieces.size() ? pieces[k].from : pieces.back().to;
+    std::optional<AP> in, out;
+    if (k > 0) in = heading(pieces[k - 1], at, circles);
+    if (k < pieces.size()) out = heading(pieces[k], at, circles);
+    if (auto why = rules.blocked_at(at, in, out)) return why;
+    if (k == pieces.size()) break;
+    const Piece& piece = pieces[k];
+    if (auto why = piece.circle ? tangent::arc_blocked(rules, arc_of(piece, circles))
+                                : rules.segment_blocked(piece.from, piece.to))
+      return why;
+  }
+  return std::nullopt;
+}
+
+PathPiece path_piece(const Piece& piece, const std::vector<Circle>& circles, const tangent::LengthBounds& bounds) {
+  PathPiece out;
+  out.from = approximate(piece.from);
+  out.to = approximate(piece.to);
+  out.length = (bounds.lower + bounds.upper) / 2;
+  if (piece.circle) {
+    out.kind = PathPiece::Kind::arc;
+    out.centre = approximate(circles[*piece.circle].centre);
+    out.radius = circles[*piece.circle].radius.doubleValue();
+    out.counter_clockwise = piece.counter_clockwise;
+  }
+  return out;
+}
+
+}  // namespace
+
+PlanReport<ExactPoint> TangentVisibilityGraph::Impl::plan(const Query& query, const QueryOptions& options) {
+  return tallied_query<ExactPoint>([&](PlanReport<ExactPoint>& report, QueryTally& tally) {
+    report.facts.set(RoadmapFacts::kind, "tangent-visibility");
+    report.facts.set(RoadmapFacts::seconds, build_seconds);
+    report.facts.set(SearchFacts::algorithm, to_string(search.algorithm));
+    const AP start = algebraic(query.start), goal = algebraic(query.goal);
+    const std::size_t start_owner = circles.size(), goal_owner = circles.size() + 1;
+    std::vector<Chord> all = chords;
+    if (usable(start, goal)) all = {{start_owner, goal_owner, start, goal}};  // nothing is shorter
+    else
+      for (std::size_t i = 0; i < circles.size(); ++i) {
+        const Circle start_point{start, Algebraic(0), 0, "the start"}, goal_point{goal, Algebraic(0), 0, "the goal"};
+        add_chords(start_point, start_owner, circles[i], i, all);
+        add_chords(goal_point, goal_owner, circles[i], i, all);
+      }
+    const QueryGraph graph(rules, circles, all);
+    report.facts.set(RoadmapFacts::vertices, graph.points().size());
+    report.facts.set(RoadmapFacts::edges, graph.links().size());
+    const Roadmap roadmap = graph.roadmap();
+    if (options.record) {
+      auto picture = std::make_shared<PlanGraph<ExactPoint>>();
+      picture->kind = "roadmap";
+      for (const AP& p : graph.points()) picture->vertices.push_back(nearest_rational(p));
+      for (const auto& [key, link] : graph.links())
+        if (!link.circle) picture->edges.emplace_back(key.first, key.second);
+      report.recording.graph = std::move(picture);
+    }
+    const auto owned = [&](std::size_t owner) {
+      return std::count(graph.owners().begin(), graph.owners().end(), owner);
+    };
+    if (owned(start_owner) == 0 || owned(goal_owner) == 0)
+      return report.fail(PlanStatus::no_path, std::string(owned(start_owner) == 0 ? "the start" : "the goal") +
+                                                  " sees no circle it could leave along: no path");
+    SearchOptions s = search;
+    s.record_expanded = options.record;
+    s.record_trace = options.trace;
+    const auto result = shortest_path(roadmap, graph.node_of(start_owner), graph.node_of(goal_owner), s);
+    tally.count(result);
+    report.recording.trace = plan_trace<ExactPoint>(result.trace, [&](RoadmapVertexId v) { return roadmap[v].exact; });
+    if (!result.found)
+      return report.fail(PlanStatus::no_path, "start and goal are not joined by tangents and arcs: no path");
+    const std::vector<Piece> pieces = pieces_of(graph, result.path);
+    report.path = {query.start};
+    if (!pieces.empty()) {
+      if (auto why = path_blocked(rules, pieces, circles))  // a bug, never a tolerance call
+        throw std::logic_error("tangent visibility graph produced an invalid path: " + *why);
+      tangent::LengthBounds total;
+      for (const Piece& piece : pieces) {
+        const auto bounds =
+            piece.circle ? tangent::arc_length(arc_of(piece, circles)) : tangent::segment_length(piece.from, piece.to);
+        total = total + bounds;
+        report.pieces.push_back(path_piece(piece, circles, bounds));
+        report.path.push_back(nearest_rational(piece.to));
+      }
+      total.lower = std::max(0.0, total.lower);
+      report.length = (total.lower + total.upper) / 2;
+      report.facts.set(length_lower, total.lower);
+      report.facts.set(length_upper, total.upper);
+    }
+    if (pieces.empty()) report.path.push_back(query.goal);  // a start that is its goal
+    else report.path.back() = query.goal;                   // exactly
+    report.succeed();
+    report.certificate = {true,
+                          "exact tangent and arc checks in real algebraic numbers (CORE), lengths bounded outward"};
+  });
+}
+
+TangentVisibilityGraph::TangentVisibilityGraph(const RoundWorld& world, SearchOptions search)
+    : impl_(std::make_unique<Impl>(world, search)) {}
+TangentVisibilityGraph::~TangentVisibilityGraph() = default;
+TangentVisibilityGraph::TangentVisibilityGraph(TangentVisibilityGraph&&) noexcept = default;
+TangentVisibilityGraph& TangentVisibilityGraph::operator=(TangentVisibilityGraph&&) noexcept = default;
+
+PlanReport<ExactPoint> TangentVisibilityGraph::plan(const Query& query, const QueryOptions& options) {
+  return impl_->plan(query, options);
+}
+
+PlannerEntry<RoundRobot> tangent_visibility_planner_entry() {
+  struct Options {
+    SearchOptions search;
+  };
+  OptionTable<Options> table;
+  add_search_options(table, &Options::search);
+  return make_planner_entry<RoundRobot, Options>(
+      "visibility", "exact shortest paths of a point or disc robot: tangents to circles and arcs along them",
+      std::move(table), [](const RoundWorld& world, const Options& o) {
+        return std::make_unique<TangentVisibilityGraph>(world, o.search);
+      });
+}
+
+}  // namespace polyplan

@@ -1,0 +1,91 @@
+#pragma once
+// An independent check of a path of pieces (segments and arcs: PlanReport::pieces) in doubles,
+// written apart from the planner's exact one: the pieces join the path's points in order, their
+// lengths add up to the report's, an arc's ends lie on its circle, and points every 1/400 of each
+// piece keep out of every disc, wall and polygon grown by the robot's radius, up to 1e-9 (the
+// doubles' own error); the start and goal are the query's.
+#include <polyplan/geometry/rational.hpp>
+#include <polyplan/geometry/world.hpp>
+#include <polyplan/plan/plan_report.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace polyplan::test {
+
+using XY = std::array<double, 2>;
+
+inline double segment_distance(const XY& p, const XY& a, const XY& b) {
+  const double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+  const double t = l2 > 0 ? std::clamp(((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2, 0.0, 1.0) : 0.0;
+  return std::hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+}
+
+inline XY xy(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
+
+// How far inside the nearest obstacle p is (> 0: inside), doubles.
+inline double depth(const World& world, const XY& p) {
+  const double r = world.robot.disc ? to_double(*world.robot.disc) : 0.0;
+  double worst = -1e300;
+  for (const Disc& d : world.discs)
+    worst = std::max(worst,
+                     to_double(d.radius) + r - std::hypot(p[0] - to_double(d.center.x), p[1] - to_double(d.center.y)));
+  for (const Wall& w : world.walls)
+    for (std::size_t k = 0; k + 1 < w.size(); ++k)
+      worst = std::max(worst, r - segment_distance(p, xy(w[k]), xy(w[k + 1])));
+  for (const PolygonWithHoles& polygon : world.obstacles) {
+    double nearest = 1e300;
+    bool inside = false;
+    const auto ring_pass = [&](const Ring& ring) {
+      for (std::size_t k = 0; k < ring.size(); ++k) {
+        const XY a = xy(ring[k]), b = xy(ring[(k + 1) % ring.size()]);
+        nearest = std::min(nearest, segment_distance(p, a, b));
+        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+          inside = !inside;
+      }
+    };
+    ring_pass(polygon.outer);
+    for (const Ring& hole : polygon.holes) ring_pass(hole);
+    worst = std::max(worst, inside ? r + nearest : r - nearest);
+  }
+  return worst;
+}
+
+inline XY along(const PathPiece& piece, double t) {
+  if (piece.kind == PathPiece::Kind::segment)
+    return {piece.from[0] + t * (piece.to[0] - piece.from[0]), piece.from[1] + t * (piece.to[1] - piece.from[1])};
+  const double a = std::atan2(piece.from[1] - piece.centre[1], piece.from[0] - piece.centre[0]);
+  const double turn = piece.length / piece.radius * (piece.counter_clockwise ? 1 : -1);
+  return {piece.centre[0] + piece.radius * std::cos(a + t * turn),
+          piece.centre[1] + piece.radius * std::sin(a + t * turn)};
+}
+
+inline void expect_valid_pieces(const World& world, const PlanReport<ExactPoint>& report) {
+  const auto& pieces = report.pieces;
+  ASSERT_EQ(report.path.size(), pieces.size() + 1);
+  double total = 0;
+  for (std::size_t k = 0; k < pieces.size(); ++k) {
+    const PathPiece& piece = pieces[k];
+    SCOPED_TRACE("piece " + std::to_string(k));
+    EXPECT_NEAR(piece.from[0], to_double(report.path[k].x), 1e-9);
+    EXPECT_NEAR(piece.from[1], to_double(report.path[k].y), 1e-9);
+    EXPECT_NEAR(piece.to[0], to_double(report.path[k + 1].x), 1e-9);
+    EXPECT_NEAR(piece.to[1], to_double(report.path[k + 1].y), 1e-9);
+    if (piece.kind == PathPiece::Kind::arc)
+      for (const auto& end : {piece.from, piece.to})
+        EXPECT_NEAR(std::hypot(end[0] - piece.centre[0], end[1] - piece.centre[1]), piece.radius, 1e-9);
+    else EXPECT_NEAR(std::hypot(piece.to[0] - piece.from[0], piece.to[1] - piece.from[1]), piece.length, 1e-9);
+    const XY end = along(piece, 1.0);
+    EXPECT_NEAR(end[0], piece.to[0], 1e-9);
+    EXPECT_NEAR(end[1], piece.to[1], 1e-9);
+    for (int s = 0; s <= 400; ++s) EXPECT_LE(depth(world, along(piece, s / 400.0)), 1e-9);
+    total += piece.length;
+  }
+  EXPECT_NEAR(total, report.length, 1e-9 * std::max(1.0, report.length));
+}
+
+}  // namespace polyplan::test
