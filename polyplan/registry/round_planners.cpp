@@ -5,6 +5,7 @@
 
 #if POLYPLAN_WITH_REACTIVE
 #include <polyplan/reactive/navigation_function_planner.hpp>
+#include <polyplan/reactive/potential_field_planner.hpp>
 #endif
 #if POLYPLAN_WITH_SAMPLING
 #include <polyplan/sampling/lazy_prm_planner.hpp>
@@ -40,6 +41,7 @@ const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
           round(rrt_connect_planner_entry<RoundRobot>(round_sampling_space)),
 #if POLYPLAN_WITH_REACTIVE
           round(round_navigation_function_planner_entry()),
+          round(round_potential_field_planner_entry()),
 #endif
       }};
 #else
