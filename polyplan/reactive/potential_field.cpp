@@ -10,7 +10,8 @@ namespace {
 // (I − u uᵀ) · s for a unit vector u: the Hessian of s·|q − c| (u from c to q, s = weight / distance).
 Hessian2 across(Vec2 u, double s) { return {s * (1 - u.x * u.x), -s * u.x * u.y, s * (1 - u.y * u.y)}; }
 
-// The point of segment a-b nearest to q, and whether it is an end.
+}  // namespace
+
 NearestPoint nearest_on_segment(Vec2 q, Vec2 a, Vec2 b) {
   const double dx = b.x - a.x, dy = b.y - a.y, length2 = dx * dx + dy * dy;
   const double t = length2 > 0 ? ((q.x - a.x) * dx + (q.y - a.y) * dy) / length2 : 0;
@@ -25,16 +26,38 @@ NearestPoint nearest_on_segment(Vec2 q, Vec2 a, Vec2 b) {
   return n;
 }
 
-}  // namespace
+NearestPoint nearest_on_polyline(Vec2 q, std::span<const Vec2> line) {
+  if (line.empty()) throw std::invalid_argument("nearest_on_polyline: an empty polyline");
+  NearestPoint best = nearest_on_segment(q, line.front(), line.front());
+  for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+    const NearestPoint n = nearest_on_segment(q, line[i], line[i + 1]);
+    if (i == 0 || n.distance < best.distance) best = n;
+  }
+  return best;
+}
 
 NearestPoint nearest_on_ring(Vec2 q, std::span<const Vec2> ring) {
   if (ring.empty()) throw std::invalid_argument("nearest_on_ring: an empty ring");
-  NearestPoint best = nearest_on_segment(q, ring.back(), ring.front());
-  for (std::size_t i = 0; i + 1 < ring.size(); ++i) {
-    const NearestPoint n = nearest_on_segment(q, ring[i], ring[i + 1]);
-    if (n.distance < best.distance) best = n;
+  const NearestPoint closing = nearest_on_segment(q, ring.back(), ring.front());
+  const NearestPoint open = nearest_on_polyline(q, ring);
+  return open.distance < closing.distance ? open : closing;
+}
+
+std::array<NearestPoint, 4> nearest_on_sides(Vec2 q, const SideBox& box) {
+  return {NearestPoint{std::abs(q.x - box.xmin), {box.xmin, q.y}, false},
+          NearestPoint{std::abs(q.x - box.xmax), {box.xmax, q.y}, false},
+          NearestPoint{std::abs(q.y - box.ymin), {q.x, box.ymin}, false},
+          NearestPoint{std::abs(q.y - box.ymax), {q.x, box.ymax}, false}};
+}
+
+NearestPoint grown(Vec2 q, NearestPoint n, double radius) {
+  if (n.distance > 0) {
+    const double t = radius / n.distance;
+    n.at = {n.at.x + t * (q.x - n.at.x), n.at.y + t * (q.y - n.at.y)};
   }
-  return best;
+  n.distance -= radius;
+  n.curve_offset += radius;
+  return n;
 }
 
 Potential attractive_potential(Vec2 q, Vec2 goal, const AttractiveParameters& p) {
@@ -59,7 +82,7 @@ Potential repulsive_potential(Vec2 q, const NearestPoint& nearest, const Repulsi
   const Vec2 u{(q.x - nearest.at.x) / d, (q.y - nearest.at.y) / d};
   Hessian2 h{f2 * u.x * u.x, f2 * u.x * u.y, f2 * u.y * u.y};
   if (nearest.at_corner) {  // D is the distance to a point: it curves across u
-    const Hessian2 c = across(u, f1 / d);
+    const Hessian2 c = across(u, f1 / (d + nearest.curve_offset));
     h = {h.xx + c.xx, h.xy + c.xy, h.yy + c.yy};
   }
   return {0.5 * p.eta * inverse * inverse, {f1 * u.x, f1 * u.y}, h};

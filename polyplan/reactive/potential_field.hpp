@@ -16,6 +16,7 @@
 // These are doubles: a potential only steers. Every step a planner takes on it is checked exactly.
 #include <polyplan/geometry/clearance.hpp>
 
+#include <array>
 #include <span>
 
 namespace polyplan {
@@ -47,16 +48,38 @@ struct Potential {
 };
 
 // Where an obstacle is nearest to a point: its distance, the nearest point, and whether that point
-// is a corner (a vertex of the boundary) or lies inside an edge.
+// is a corner (a vertex of the boundary) or lies inside an edge. A round obstacle's distance curves
+// as a corner's does, about a centre `curve_offset` beyond the nearest point: a disc grown by the
+// robot (its radius plus the robot's), a polygon's corner or a wall's end grown by the robot (the
+// robot's radius), or, negative, the inside of disc bounds (minus its radius less the robot's).
 struct NearestPoint {
   double distance = 0;
   Vec2 at;
   bool at_corner = false;
+  double curve_offset = 0;  // 0: a bare corner, D the distance to the point itself
 };
+
+// The point of segment a-b nearest to q, and whether it is an end (a corner).
+NearestPoint nearest_on_segment(Vec2 q, Vec2 a, Vec2 b);
+
+// The nearest point of a polyline (its points in order; one point is a corner) to q. Throws
+// std::invalid_argument for an empty polyline.
+NearestPoint nearest_on_polyline(Vec2 q, std::span<const Vec2> line);
 
 // The nearest point of a polygon's boundary (a closed ring, its vertices in order, not repeated)
 // to q. Throws std::invalid_argument for an empty ring.
 NearestPoint nearest_on_ring(Vec2 q, std::span<const Vec2> ring);
+
+// A box's sides as walls, seen from q inside it: the nearest point of each (left, right, bottom,
+// top; never a corner: D is the distance to a line).
+struct SideBox {
+  double xmin = 0, ymin = 0, xmax = 0, ymax = 0;
+};
+std::array<NearestPoint, 4> nearest_on_sides(Vec2 q, const SideBox& box);
+
+// The same obstacle grown by a disc robot's radius: `radius` nearer, its nearest point moved
+// towards q (q outside the obstacle), and curving about the same centre.
+NearestPoint grown(Vec2 q, NearestPoint nearest, double radius);
 
 // At the goal the conic potential has no gradient (its minimum is a cone's point): 0 there, and
 // the Hessian too.

@@ -6,6 +6,7 @@
 // reactive/gradient_descent.hpp's; no_path when start and goal lie in different components of the
 // free space (proved).
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/plan/planner_entry.hpp>
 #include <polyplan/reactive/obstacle_field.hpp>
@@ -43,5 +44,24 @@ class PotentialFieldPlanner final : public Planner<TranslatingRobot> {
 };
 
 PlannerEntry<TranslatingRobot> potential_field_planner_entry();
+
+// The same for a point or disc robot among discs, walls and polygons (RoundRobot): each obstacle
+// repels from the exact distance the robot keeps from it (reactive/round_obstacle_field.hpp), and
+// every step is checked exactly among them (geometry/round_world_check.hpp). No components are
+// known there, so no query is answered no_path before the descent. The step's default is 1/200 of
+// the diagonal of the box around the world (box_around of a RoundWorld); facts and options as above.
+class RoundPotentialFieldPlanner final : public Planner<RoundRobot> {
+ public:
+  // `world` must outlive the planner; throws as PotentialFieldPlanner does.
+  RoundPotentialFieldPlanner(const RoundWorld& world, PotentialFieldOptions options = {});
+  ~RoundPotentialFieldPlanner() override;
+  PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+PlannerEntry<RoundRobot> round_potential_field_planner_entry();
 
 }  // namespace polyplan

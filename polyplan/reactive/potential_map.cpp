@@ -15,26 +15,63 @@ void BoxGrid::check() const {
 
 double BoxGrid::diagonal() const { return std::hypot(xmax - xmin, ymax - ymin); }
 
-BoxGrid box_around(const CSpace& cspace, std::size_t cells_per_axis) {
-  const World& world = cspace.world();
-  if (world.bounds)
-    return {to_double(world.bounds->xmin), to_double(world.bounds->ymin), to_double(world.bounds->xmax),
-            to_double(world.bounds->ymax), cells_per_axis};
+namespace {
+
+// The box around `points`, at least 1 wide each way, so that a world of one point still has one.
+BoxGrid box_around_points(const std::vector<Vec2>& points, std::size_t cells_per_axis) {
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-  const auto take = [&](const ExactPoint& p) {
-    const Vec2 v = approximate(p);
+  for (const Vec2& v : points)
     x0 = std::min(x0, v.x), y0 = std::min(y0, v.y), x1 = std::max(x1, v.x), y1 = std::max(y1, v.y);
-  };
-  for (const PolygonWithHoles& c : cspace.cobstacles())
-    for (const ExactPoint& p : c.outer) take(p);
-  for (const ExactPoint& p : query_points(world)) take(p);
   if (!(x1 >= x0)) return {0, 0, 1, 1, cells_per_axis};
-  // At least 1 wide each way, so that a world of one point still has a box.
   const double grow_x = std::max(0.0, (1 - (x1 - x0)) / 2), grow_y = std::max(0.0, (1 - (y1 - y0)) / 2);
   return {x0 - grow_x, y0 - grow_y, x1 + grow_x, y1 + grow_y, cells_per_axis};
 }
 
+BoxGrid box_of_bounds(const Bounds& b, std::size_t cells_per_axis) {
+  return {to_double(b.xmin), to_double(b.ymin), to_double(b.xmax), to_double(b.ymax), cells_per_axis};
+}
+
+// The corners of the square round a disc: the box of its points.
+std::vector<Vec2> square_round(const Disc& d) {
+  const Vec2 c = approximate(d.center);
+  const double r = to_double(d.radius);
+  return {{c.x - r, c.y - r}, {c.x + r, c.y + r}};
+}
+
+}  // namespace
+
+BoxGrid box_around(const CSpace& cspace, std::size_t cells_per_axis) {
+  const World& world = cspace.world();
+  if (world.bounds) return box_of_bounds(*world.bounds, cells_per_axis);
+  std::vector<Vec2> points;
+  for (const PolygonWithHoles& c : cspace.cobstacles())
+    for (const ExactPoint& p : c.outer) points.push_back(approximate(p));
+  for (const ExactPoint& p : query_points(world)) points.push_back(approximate(p));
+  return box_around_points(points, cells_per_axis);
+}
+
+BoxGrid box_around(const RoundWorld& round, std::size_t cells_per_axis) {
+  const World& world = round.world();
+  if (world.bounds) return box_of_bounds(*world.bounds, cells_per_axis);
+  if (world.disc_bounds) return box_around_points(square_round(*world.disc_bounds), cells_per_axis);
+  std::vector<Vec2> points;
+  for (const Disc& d : world.discs)
+    for (const Vec2& corner : square_round(d)) points.push_back(corner);
+  for (const Wall& wall : world.walls)
+    for (const ExactPoint& p : wall) points.push_back(approximate(p));
+  for (const PolygonWithHoles& polygon : world.obstacles)
+    for (const ExactPoint& p : polygon.outer) points.push_back(approximate(p));
+  for (const ExactPoint& p : query_points(world)) points.push_back(approximate(p));
+  return box_around_points(points, cells_per_axis);
+}
+
 CellGrid potential_map(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
+                       const PotentialParameters& parameters, const BoxGrid& grid) {
+  return potential_map([&](const ExactPoint& p) { return cspace.locate(p).kind == Location::Kind::free; }, field, goal,
+                       parameters, grid);
+}
+
+CellGrid potential_map(const std::function<bool(const ExactPoint&)>& is_free, const Repellers& field, Vec2 goal,
                        const PotentialParameters& parameters, const BoxGrid& grid) {
   grid.check();
   CellGrid map;
@@ -47,7 +84,7 @@ CellGrid potential_map(const CSpace& cspace, const ObstacleField& field, Vec2 go
     for (std::size_t column = 0; column < map.columns; ++column) {
       const Vec2 centre{map.x0 + (static_cast<double>(column) + 0.5) * map.cell_width,
                         map.y0 + (static_cast<double>(row) + 0.5) * map.cell_height};
-      const bool free = cspace.locate(exactly(centre)).kind == Location::Kind::free;
+      const bool free = is_free(exactly(centre));
       map.states.push_back(free ? CellGrid::free : CellGrid::blocked);
       map.values.push_back(free ? static_cast<float>(std::log1p(field.potential(centre, goal, parameters).value))
                                 : 0.0f);

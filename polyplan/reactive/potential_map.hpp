@@ -3,10 +3,12 @@
 // U) at each free cell's centre (a cell is blocked when its centre is not free, by the exact
 // C-space), as the heat map the drawing code draws (CellGrid::values).
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/plan_report.hpp>
 #include <polyplan/reactive/obstacle_field.hpp>
 
 #include <cstddef>
+#include <functional>
 
 namespace polyplan {
 
@@ -20,8 +22,14 @@ struct BoxGrid {
 
 // The world's bounds, or without bounds the box around its C-obstacles and queries (at least 1 wide).
 BoxGrid box_around(const CSpace& cspace, std::size_t cells_per_axis);
+// The same for a world of discs, walls and polygons: its box bounds, the box round its disc
+// bounds, or the box around its discs, walls, polygons and queries.
+BoxGrid box_around(const RoundWorld& world, std::size_t cells_per_axis);
 
 CellGrid potential_map(const CSpace& cspace, const ObstacleField& field, Vec2 goal,
+                       const PotentialParameters& parameters, const BoxGrid& grid);
+// The same where `free` says which cells' centres are free (exactly).
+CellGrid potential_map(const std::function<bool(const ExactPoint&)>& free, const Repellers& field, Vec2 goal,
                        const PotentialParameters& parameters, const BoxGrid& grid);
 
 }  // namespace polyplan

@@ -6,6 +6,7 @@
 
 #if POLYPLAN_WITH_REACTIVE
 #include <polyplan/reactive/navigation_function_planner.hpp>
+#include <polyplan/reactive/potential_field_planner.hpp>
 #endif
 #if POLYPLAN_WITH_SAMPLING
 #include <polyplan/sampling/lazy_prm_planner.hpp>
@@ -43,6 +44,7 @@ const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
 #endif
 #if POLYPLAN_WITH_REACTIVE
           round(round_navigation_function_planner_entry()),
+          round(round_potential_field_planner_entry()),
 #endif
       }};
   return registry;
