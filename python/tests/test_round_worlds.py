@@ -33,7 +33,7 @@ def test_planners_refuse_them_naming_what_the_world_has():
 
 
 def test_the_sampling_planners_plan_them_and_the_checker_agrees():
-    world = polyplan.read_world(data("worlds", "sphere_world_discs.json"))
+    world = polyplan.read_world(data("worlds", "sphere_world.json"))
     plans = polyplan.plan(world, planner="rrt", seed=2)
     assert len(plans) == 10 and all(p.status == "solved" for p in plans)
     for p in plans:

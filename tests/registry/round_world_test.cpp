@@ -1,4 +1,4 @@
-// Worlds with discs, walls, disc bounds or a disc robot (data/worlds: sphere_world_discs, ...):
+// Worlds with discs, walls, disc bounds or a disc robot (data/worlds: sphere_world, ...):
 // through the front door every planner either plans them — the sampling planners, each query
 // answered with a path that an independent exact check accepts — or refuses, naming the file and
 // what it does not plan with: never a plan straight through a disc or a wall.
