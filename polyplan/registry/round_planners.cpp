@@ -1,8 +1,12 @@
 // Every planner of a point or disc robot among discs, walls and polygons (RoundRobot): the sampling
-// planners over the exact rational checks of geometry/round_world_check.hpp, and the navigation
-// function of a sphere world.
+// planners over the exact rational checks of geometry/round_world_check.hpp, the occupancy grid
+// rasterised exactly (geometry/round_rasterize.hpp), and the navigation function of a sphere world.
 #include <polyplan/registry/registry.hpp>
 
+#if POLYPLAN_WITH_GRIDS
+#include <polyplan/grids/gvd_grid_planner.hpp>
+#include <polyplan/grids/raster_planner.hpp>
+#endif
 #if POLYPLAN_WITH_REACTIVE
 #include <polyplan/reactive/navigation_function_planner.hpp>
 #endif
@@ -38,6 +42,10 @@ const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
           round(rrt_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_star_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_connect_planner_entry<RoundRobot>(round_sampling_space)),
+#if POLYPLAN_WITH_GRIDS
+          round(raster_planner_entry<RoundRobot>()),
+          round(gvd_grid_planner_entry<RoundRobot>()),
+#endif
 #if POLYPLAN_WITH_REACTIVE
           round(round_navigation_function_planner_entry()),
 #endif

@@ -28,7 +28,7 @@ def test_planners_refuse_them_naming_what_the_world_has():
     world = polyplan.read_world(data("worlds", "disc_robot_floor_plan.json"))
     with pytest.raises(polyplan.InputError, match=r"disc_robot_floor_plan.json: discs, walls, a disc robot: "
                                                    r"the planner visibility plans polygon worlds only.*use one that plans "
-                                                   r"with them \(prm, lazyprm, rrt, rrtstar, rrtconnect, navigation-function\)"):
+                                                   r"with them \(prm, lazyprm, rrt, rrtstar, rrtconnect, raster, gvd-grid, navigation-function\)"):
         polyplan.plan(world, planner="visibility")
 
 
