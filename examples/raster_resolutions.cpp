@@ -4,7 +4,7 @@
 // (start and goal snapped to the nearest free cell) and compared with the exact shortest path of
 // the visibility graph. A table on stdout and an SVG per resolution.
 // Usage: raster_resolutions [WORLD.json] [OUT_PREFIX] [N1 N2 N3]
-//   defaults: data/worlds/sphere_world.json, "raster", 10 40 200 → raster_n10.svg, ...
+//   defaults: data/worlds/sphere_world_polygons.json, "raster", 10 40 200 → raster_n10.svg, ...
 #include <polyplan/draw/plan_svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/input_error.hpp>
@@ -29,7 +29,7 @@
 using namespace polyplan;
 
 int main(int argc, char** argv) {
-  const std::string world_file = argc > 1 ? argv[1] : POLYPLAN_DATA_DIR "/worlds/sphere_world.json";
+  const std::string world_file = argc > 1 ? argv[1] : POLYPLAN_DATA_DIR "/worlds/sphere_world_polygons.json";
   const std::string prefix = argc > 2 ? argv[2] : "raster";
   std::vector<std::size_t> resolutions{10, 40, 200};
   if (argc == 6) {

@@ -76,13 +76,6 @@ void block_cells_crossed_by(const std::vector<GridPoint>& ring, long n, std::vec
   }
 }
 
-void require_rasterizable(const World& world, std::size_t cells_per_axis) {
-  if (!world.bounds) throw InputError(world.source + ": bounds: a raster needs the world's bounds (the file has none)");
-  if (cells_per_axis == 0 || cells_per_axis > max_cells_per_axis)
-    throw InputError(world.source + ": raster: cells per axis must be between 1 and " +
-                     std::to_string(max_cells_per_axis) + ", got " + std::to_string(cells_per_axis));
-}
-
 }  // namespace
 
 ExactPoint Raster::cell_center(std::size_t x, std::size_t y) const {
@@ -98,12 +91,19 @@ std::size_t Raster::blocked_count() const {
   return static_cast<std::size_t>(std::count(blocked.begin(), blocked.end(), std::uint8_t{1}));
 }
 
-namespace {
+std::optional<CellWindow> cells_meeting(const Raster& raster, const Bounds& box) {
+  const long n = static_cast<long>(raster.cells_per_axis);
+  const GridFrame frame(raster.bounds, raster.cells_per_axis);
+  const GridPoint low = frame.to_grid({box.xmin, box.ymin}), high = frame.to_grid({box.xmax, box.ymax});
+  if (high.u < 0 || high.v < 0 || low.u > n || low.v > n) return std::nullopt;
+  // Cell k's closed interval [k, k+1] meets [low, high] when low - 1 <= k <= high; clamped before
+  // converting, so that a box far beyond the grid does not overflow `long`.
+  const auto first = [n](const Rational& t) { return t <= 0 ? 0L : std::min(ceil_of(t) - 1, n - 1); };
+  const auto last = [n](const Rational& t) { return t >= n ? n - 1 : std::max(floor_of(t), 0L); };
+  return CellWindow{first(low.u), first(low.v), last(high.u), last(high.v)};
+}
 
-// The cells i0 <= i <= i1, j0 <= j <= j1.
-struct CellWindow {
-  long i0, j0, i1, j1;
-};
+namespace {
 
 // Decides every cell of `window` whose square lies inside the reference box (the walls were set
 // already): blocked when its square meets the interior of a C-obstacle of `cspace`.
@@ -174,21 +174,27 @@ Bounds cobstacle_box(const PolygonWithHoles& polygon, const Robot& robot) {
 
 }  // namespace
 
-Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
-  const World& world = cspace.world();
-  require_rasterizable(world, cells_per_axis);
+Raster empty_raster(const World& world, std::size_t cells_per_axis) {
+  if (!world.bounds && !world.disc_bounds)
+    throw InputError(world.source + ": bounds: a raster needs the world's bounds (the file has none)");
+  if (cells_per_axis == 0 || cells_per_axis > max_cells_per_axis)
+    throw InputError(world.source + ": raster: cells per axis must be between 1 and " +
+                     std::to_string(max_cells_per_axis) + ", got " + std::to_string(cells_per_axis));
+  Bounds box;
+  if (world.bounds) box = *world.bounds;
+  else {
+    const Disc& d = *world.disc_bounds;
+    box = {d.center.x - d.radius, d.center.y - d.radius, d.center.x + d.radius, d.center.y + d.radius};
+  }
+  const std::vector<std::uint8_t> none(cells_per_axis * cells_per_axis, 0);
+  return Raster{box, cells_per_axis, none, none};
+}
 
-  const long n = static_cast<long>(cells_per_axis);
-  Raster raster{*world.bounds, cells_per_axis, std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0),
-                std::vector<std::uint8_t>(cells_per_axis * cells_per_axis, 0)};
-  const GridFrame frame(raster.bounds, cells_per_axis);
-
-  // The bounds are walls: a cell is blocked unless its square lies in the closed box where the
-  // reference point may be (the whole grid for a point robot). A box the robot does not fit in
-  // (xmin >= xmax) holds no open square, so every cell is blocked.
-  const Bounds& box = *cspace.reference_box();
+void block_outside_box(const Bounds& box, Raster& raster) {
+  const long n = static_cast<long>(raster.cells_per_axis);
+  const GridFrame frame(raster.bounds, raster.cells_per_axis);
   const GridPoint box_low = frame.to_grid({box.xmin, box.ymin}), box_high = frame.to_grid({box.xmax, box.ymax});
-  std::vector<std::uint8_t> column_inside(cells_per_axis), row_inside(cells_per_axis);
+  std::vector<std::uint8_t> column_inside(raster.cells_per_axis), row_inside(raster.cells_per_axis);
   for (long k = 0; k < n; ++k) {
     column_inside[k] = box_low.u <= k && k + 1 <= box_high.u;
     row_inside[k] = box_low.v <= k && k + 1 <= box_high.v;
@@ -196,7 +202,13 @@ Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
   for (long j = 0; j < n; ++j)
     for (long i = 0; i < n; ++i)
       if (!column_inside[i] || !row_inside[j]) raster.blocked[i + j * n] = raster.walls[i + j * n] = 1;
-  decide_cells(cspace, frame, {0, 0, n - 1, n - 1}, raster);
+}
+
+Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis) {
+  Raster raster = empty_raster(cspace.world(), cells_per_axis);
+  const long n = static_cast<long>(cells_per_axis);
+  block_outside_box(*cspace.reference_box(), raster);
+  decide_cells(cspace, GridFrame(raster.bounds, cells_per_axis), {0, 0, n - 1, n - 1}, raster);
   return raster;
 }
 
@@ -208,12 +220,9 @@ Raster rasterize_change(const CSpace& after, const Raster& before,
   for (const PolygonWithHoles* obstacle : changed) {
     // Cells whose closed square meets the C-obstacle's closed box: elsewhere a square and a
     // neighbourhood of it miss the change, so the union's interior there is as it was.
-    const Bounds c = cobstacle_box(*obstacle, after.world().robot);
-    const GridPoint low = frame.to_grid({c.xmin, c.ymin}), high = frame.to_grid({c.xmax, c.ymax});
-    const auto clamp = [n](long k) { return std::clamp(k, 0L, n - 1); };
-    if (high.u < 0 || high.v < 0 || low.u > n || low.v > n) continue;
-    const CellWindow window{clamp(floor_of(low.u) - 1), clamp(floor_of(low.v) - 1), clamp(ceil_of(high.u)),
-                            clamp(ceil_of(high.v))};
+    const std::optional<CellWindow> meeting = cells_meeting(raster, cobstacle_box(*obstacle, after.world().robot));
+    if (!meeting) continue;
+    const CellWindow& window = *meeting;
     for (long j = window.j0; j <= window.j1; ++j)
       for (long i = window.i0; i <= window.i1; ++i) raster.blocked[i + j * n] = raster.walls[i + j * n];
     decide_cells(after, frame, window, raster);
@@ -222,7 +231,7 @@ Raster rasterize_change(const CSpace& after, const Raster& before,
 }
 
 Raster rasterize(const World& world, std::size_t cells_per_axis) {
-  require_rasterizable(world, cells_per_axis);  // before the costly C-space
+  empty_raster(world, cells_per_axis);  // its refusals before the costly C-space
   return rasterize(CSpace(world), cells_per_axis);
 }
 

@@ -40,14 +40,34 @@ struct Raster {
   std::size_t blocked_count() const;
 };
 
+// The cells i0 <= i <= i1, j0 <= j <= j1 of a raster.
+struct CellWindow {
+  long i0, j0, i1, j1;
+};
+
+// The cells whose closed squares meet the closed box (none when it lies beyond the grid): where
+// an obstacle inside that box can block anything.
+std::optional<CellWindow> cells_meeting(const Raster& raster, const Bounds& box);
+
 // The largest cells_per_axis accepted (limits::raster_cells_per_axis).
 inline constexpr std::size_t max_cells_per_axis = limits::raster_cells_per_axis;
 
 // Throws InputError naming the world's file when the world has no bounds, or when cells_per_axis
 // is 0 or above max_cells_per_axis. The CSpace overload reuses a C-space built already (its
-// world's bounds and C-obstacles); the World overload builds one.
+// world's bounds and C-obstacles); the World overload builds one. (A world with discs or walls:
+// geometry/round_rasterize.hpp.)
 Raster rasterize(const CSpace& cspace, std::size_t cells_per_axis);
 Raster rasterize(const World& world, std::size_t cells_per_axis);
+
+// What every rasteriser starts from: n × n free cells over the box the grid covers — the world's
+// box bounds, or the square round its disc bounds. Throws InputError naming the world's file when
+// the world has neither, or when cells_per_axis is 0 or above max_cells_per_axis.
+Raster empty_raster(const World& world, std::size_t cells_per_axis);
+
+// Blocks, and marks as walls, every cell whose closed square is not inside the closed box where
+// the robot's reference point may be (the bounds shrunk by the robot): the bounds are walls. A box
+// the robot does not fit in (xmin >= xmax) holds no square, so every cell is blocked.
+void block_outside_box(const Bounds& reference_box, Raster& raster);
 
 // The raster of `after`'s world, which differs from the world `before` rasterised only by the
 // `changed` obstacles (added or removed): `before` with the cells near each one's C-obstacle

@@ -1,6 +1,7 @@
 #include <polyplan/grids/gvd_grid_planner.hpp>
 
 #include <polyplan/geometry/clearance.hpp>
+#include <polyplan/geometry/round_rasterize.hpp>
 #include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/plan/plan_facts.hpp>
@@ -9,12 +10,14 @@
 
 #include <algorithm>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 namespace polyplan {
 
-struct GvdGridPlanner::Impl {
-  const CSpace* cspace;
+template <class Space>
+struct BasicGvdGridPlanner<Space>::Impl {
+  const typename Space::Problem* world;
   GvdGridOptions options;
   Raster raster;
   Brushfire field;
@@ -24,8 +27,8 @@ struct GvdGridPlanner::Impl {
   double build_seconds = 0;
   std::shared_ptr<const CellGrid> picture;  // made for the first query that records
 
-  Impl(const CSpace& c, const GvdGridOptions& o)
-      : cspace(&c), options(o), raster(rasterize(c, o.resolution)),
+  Impl(const typename Space::Problem& w, const GvdGridOptions& o)
+      : world(&w), options(o), raster(rasterize(w, o.resolution)),
         field(polyplan::brushfire(raster.cells_per_axis, raster.cells_per_axis, raster.blocked, raster.walls)),
         free_graph(raster_axes(raster), Connectivity::full, StepCost::euclidean, raster_free_cells(raster)),
         gvd_graph(raster_axes(raster), Connectivity::full, StepCost::euclidean, raster_free_cells(raster)) {
@@ -64,16 +67,30 @@ struct GvdGridPlanner::Impl {
   }
 };
 
-GvdGridPlanner::GvdGridPlanner(const CSpace& cspace, GvdGridOptions options)
-    : impl_(build_timed<Impl>(cspace, options)) {}
+template <class Space>
+BasicGvdGridPlanner<Space>::BasicGvdGridPlanner(const typename Space::Problem& world, GvdGridOptions options)
+    : impl_(build_timed<Impl>(world, options)) {}
 
-GvdGridPlanner::~GvdGridPlanner() = default;
+template <class Space>
+BasicGvdGridPlanner<Space>::~BasicGvdGridPlanner() = default;
 
-const Raster& GvdGridPlanner::raster() const { return impl_->raster; }
-const Brushfire& GvdGridPlanner::brushfire() const { return impl_->field; }
-const GridGraph& GvdGridPlanner::gvd_graph() const { return impl_->gvd_graph; }
+template <class Space>
+const Raster& BasicGvdGridPlanner<Space>::raster() const {
+  return impl_->raster;
+}
 
-std::vector<GridCell> GvdGridPlanner::climb(GridCell cell) const {
+template <class Space>
+const Brushfire& BasicGvdGridPlanner<Space>::brushfire() const {
+  return impl_->field;
+}
+
+template <class Space>
+const GridGraph& BasicGvdGridPlanner<Space>::gvd_graph() const {
+  return impl_->gvd_graph;
+}
+
+template <class Space>
+std::vector<GridCell> BasicGvdGridPlanner<Space>::climb(GridCell cell) const {
   const Brushfire& f = impl_->field;
   std::vector<GridCell> cells{cell};
   while (!f.gvd[cell]) {
@@ -92,13 +109,14 @@ std::vector<GridCell> GvdGridPlanner::climb(GridCell cell) const {
   return cells;
 }
 
-PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptions& options) {
+template <class Space>
+PlanReport<ExactPoint> BasicGvdGridPlanner<Space>::plan(const Query& query, const QueryOptions& options) {
   Impl& r = *impl_;
   return grid_query(r.raster, [&](PlanReport<ExactPoint>& report, SearchResult<GridCell>& search) {
     r.record_facts(report.facts);
     if (options.record) report.recording.cells = r.cells();
 
-    const auto snapped = snap_query(*r.cspace, r.raster, query, report);
+    const auto snapped = snap_query(*r.world, r.raster, query, report);
     if (!snapped) return;
     const std::vector<GridCell> up = climb(snapped->first), down = climb(snapped->second);
     for (const auto& [climbed, what] : {std::pair{&up, "start"}, std::pair{&down, "goal"}}) {
@@ -140,26 +158,36 @@ PlanReport<ExactPoint> GvdGridPlanner::plan(const Query& query, const QueryOptio
     std::uint32_t nearest = std::numeric_limits<std::uint32_t>::max();
     for (const GridCell c : cells) nearest = std::min(nearest, r.field.distance[c]);
 
-    return_if_valid(*r.cspace, polyline_through_turns(r.raster, query.start, cells, query.goal),
+    return_if_valid(*r.world, polyline_through_turns(r.raster, query.start, cells, query.goal),
                     "the GVD path joined to start and goal", report);
     if (report.found) {
       report.facts.set(GvdFacts::clearance_bound, r.clearance_of(nearest));
-      // The shared word means the same for every planner: measured on the returned path.
-      const PathBottleneck narrowest = path_bottleneck(*r.cspace, report.path);
-      report.bottleneck = Bottleneck{narrowest.at.x, narrowest.at.y, narrowest.clearance};
+      // The shared word means the same for every planner: measured on the returned path (among
+      // polygons only: geometry/clearance.hpp measures a C-space).
+      if constexpr (std::is_same_v<Space, TranslatingRobot>) {
+        const PathBottleneck narrowest = path_bottleneck(*r.world, report.path);
+        report.bottleneck = Bottleneck{narrowest.at.x, narrowest.at.y, narrowest.clearance};
+      }
     }
   });
 }
 
-PlannerEntry<TranslatingRobot> gvd_grid_planner_entry() {
+template <class Space>
+PlannerEntry<Space> gvd_grid_planner_entry() {
   OptionTable<GvdGridOptions> table;
   table.add("resolution", &GvdGridOptions::resolution, "cells per side of the bounds (n x n cells)",
             in_range(1, static_cast<double>(max_cells_per_axis)));
   add_search_options(table, &GvdGridOptions::search);
-  return make_planner_entry<TranslatingRobot, GvdGridOptions>(
+  return make_planner_entry<Space, GvdGridOptions>(
       "gvd-grid", "brushfire GVD on the n x n occupancy grid: climb the distance field, follow the GVD, descend",
-      std::move(table),
-      [](const CSpace& cspace, const GvdGridOptions& o) { return std::make_unique<GvdGridPlanner>(cspace, o); });
+      std::move(table), [](const typename Space::Problem& world, const GvdGridOptions& o) {
+        return std::make_unique<BasicGvdGridPlanner<Space>>(world, o);
+      });
 }
+
+template class BasicGvdGridPlanner<TranslatingRobot>;
+template class BasicGvdGridPlanner<RoundRobot>;
+template PlannerEntry<TranslatingRobot> gvd_grid_planner_entry<TranslatingRobot>();
+template PlannerEntry<RoundRobot> gvd_grid_planner_entry<RoundRobot>();
 
 }  // namespace polyplan

@@ -26,6 +26,7 @@
 // quotes the check).
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/plan/planner_entry.hpp>
 #include <polyplan/search/brushfire.hpp>
@@ -43,13 +44,16 @@ struct GvdGridOptions {
   SearchOptions search{};        // along the GVD
 };
 
-class GvdGridPlanner final : public Planner<TranslatingRobot> {
+// Space: TranslatingRobot (its problem a CSpace) or RoundRobot (a RoundWorld, rasterised by
+// geometry/round_rasterize.hpp; no clearance or bottleneck is measured there).
+template <class Space>
+class BasicGvdGridPlanner final : public Planner<Space> {
  public:
-  // Rasterises the world of `cspace` (which must outlive the planner) and runs the brushfire once.
+  // Rasterises the world of `world` (which must outlive the planner) and runs the brushfire once.
   // Throws InputError naming the world's file when it has no bounds, std::invalid_argument for a
   // resolution of 0 or above max_cells_per_axis.
-  explicit GvdGridPlanner(const CSpace& cspace, GvdGridOptions options = {});
-  ~GvdGridPlanner() override;
+  explicit BasicGvdGridPlanner(const typename Space::Problem& world, GvdGridOptions options = {});
+  ~BasicGvdGridPlanner() override;
 
   // Facts: roadmap.kind "gvd-grid", roadmap.vertices (GVD cells), roadmap.edges (moves between
   // them), roadmap.seconds (rasterising, brushfire and graph), raster.cells_per_axis, gvd.cells,
@@ -78,7 +82,11 @@ class GvdGridPlanner final : public Planner<TranslatingRobot> {
   std::unique_ptr<Impl> impl_;
 };
 
-// The registry's `gvd-grid`: options resolution (100), search, weight.
-PlannerEntry<TranslatingRobot> gvd_grid_planner_entry();
+using GvdGridPlanner = BasicGvdGridPlanner<TranslatingRobot>;
+using RoundGvdGridPlanner = BasicGvdGridPlanner<RoundRobot>;
+
+// The registries' `gvd-grid` (TranslatingRobot, RoundRobot): options resolution (100), search, weight.
+template <class Space>
+PlannerEntry<Space> gvd_grid_planner_entry();
 
 }  // namespace polyplan

@@ -2,6 +2,7 @@
 
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/geometry/round_query.hpp>
 #include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_trace.hpp>
@@ -64,10 +65,14 @@ FactCell cell_fact(const Raster& r, GridCell c) {
   return cell_fact(x, y);
 }
 
-std::optional<std::pair<GridCell, GridCell>> snap_query(const CSpace& cspace, const Raster& r, const Query& query,
-                                                        PlanReport<ExactPoint>& report) {
-  if (auto why = cspace.query_not_free(query)) {
-    report.fail(PlanStatus::invalid_query, *why);
+namespace {
+
+// What both snap_query overloads do once the exact world has said whether start and goal are free.
+std::optional<std::pair<GridCell, GridCell>> snap_free_query(const std::optional<std::string>& not_free,
+                                                             const Raster& r, const Query& query,
+                                                             PlanReport<ExactPoint>& report) {
+  if (not_free) {
+    report.fail(PlanStatus::invalid_query, *not_free);
     return std::nullopt;
   }
   const auto start_cell = nearest_free_cell(r, query.start), goal_cell = nearest_free_cell(r, query.goal);
@@ -81,6 +86,31 @@ std::optional<std::pair<GridCell, GridCell>> snap_query(const CSpace& cspace, co
     return GridCell{c.first + c.second * r.cells_per_axis};
   };
   return std::pair<GridCell, GridCell>(index(*start_cell), index(*goal_cell));
+}
+
+// What both return_if_valid overloads do with the exact check's answer.
+void return_checked(const PathCheck& check, std::vector<ExactPoint> path, std::string_view what,
+                    std::string_view certified_by, PlanReport<ExactPoint>& report) {
+  if (!check.valid) {
+    report.fail(PlanStatus::not_found, std::string(what) + " is not a valid motion: " + check.reason);
+    return;
+  }
+  report.succeed();
+  report.path = std::move(path);
+  report.length = euclidean_length(report.path);
+  report.certificate = {true, std::string(certified_by)};
+}
+
+}  // namespace
+
+std::optional<std::pair<GridCell, GridCell>> snap_query(const CSpace& cspace, const Raster& r, const Query& query,
+                                                        PlanReport<ExactPoint>& report) {
+  return snap_free_query(cspace.query_not_free(query), r, query, report);
+}
+
+std::optional<std::pair<GridCell, GridCell>> snap_query(const RoundWorld& world, const Raster& r, const Query& query,
+                                                        PlanReport<ExactPoint>& report) {
+  return snap_free_query(query_not_free(world, query), r, query, report);
 }
 
 // A cell is a corner of the polyline only where the move direction changes.
@@ -108,14 +138,13 @@ std::vector<ExactPoint> polyline_through_turns(const Raster& r, const ExactPoint
 void return_if_valid(const CSpace& cspace, std::vector<ExactPoint> path, std::string_view what,
                      PlanReport<ExactPoint>& report) {
   const PathCheck check = check_path(cspace, path);
-  if (!check.valid) {
-    report.fail(PlanStatus::not_found, std::string(what) + " is not a valid motion: " + check.reason);
-    return;
-  }
-  report.succeed();
-  report.path = std::move(path);
-  report.length = euclidean_length(report.path);
-  report.certificate = {true, "exact path check (arrangement zone walk)"};
+  return_checked(check, std::move(path), what, "exact path check (arrangement zone walk)", report);
+}
+
+void return_if_valid(const RoundWorld& world, std::vector<ExactPoint> path, std::string_view what,
+                     PlanReport<ExactPoint>& report) {
+  const PathCheck check = world.check_path(path);
+  return_checked(check, std::move(path), what, "exact rational path check among discs, walls and polygons", report);
 }
 
 void report_search(const Raster& r, const SearchResult<GridCell>& search, PlanReport<ExactPoint>& report) {

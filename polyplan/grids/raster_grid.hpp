@@ -1,5 +1,5 @@
 #pragma once
-// What the grid planners of polygon worlds (`raster`, `gvd-grid`) share about a Raster
+// What the grid planners (`raster`, `gvd-grid`; of polygon worlds and of round ones) share about a Raster
 // (geometry/rasterize.hpp) searched as an implicit grid graph (search/grid_graph.hpp): the axes
 // in world units, the free cells as a bitmap, the tightest admissible heuristic, the polyline
 // through the cells where a grid path turns, the exact check that decides whether that polyline
@@ -7,6 +7,7 @@
 // also the grid graph's (axis 0 varies fastest).
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_report.hpp>
 #include <polyplan/plan/stopwatch.hpp>
@@ -64,21 +65,26 @@ PlanReport<ExactPoint> grid_query(const Raster& raster, Answer&& answer) {
 }
 
 // The first step of a grid planner's query: a start or goal that is not free
-// (CSpace::query_not_free), or a raster without a free cell, is an answer — nullopt, why_not set.
-// Otherwise the cells that start and goal snap to (nearest_free_cell), also reported as the facts
-// raster.start_cell and raster.goal_cell.
+// (CSpace::query_not_free, or RoundWorld::config_not_free of each), or a raster without a free
+// cell, is an answer — nullopt, why_not set. Otherwise the cells that start and goal snap to
+// (nearest_free_cell), also reported as the facts raster.start_cell and raster.goal_cell.
 std::optional<std::pair<GridCell, GridCell>> snap_query(const CSpace& cspace, const Raster& raster, const Query& query,
                                                         PlanReport<ExactPoint>& report);
+std::optional<std::pair<GridCell, GridCell>> snap_query(const RoundWorld& world, const Raster& raster,
+                                                        const Query& query, PlanReport<ExactPoint>& report);
 
 // start → the centres of the cells where the grid path turns → goal (a repeated point once).
 std::vector<ExactPoint> polyline_through_turns(const Raster& raster, const ExactPoint& start,
                                                std::span<const GridCell> cells, const ExactPoint& goal);
 
-// Returns `path` in `report` (found, length, certificate) when it passes the exact check_path;
-// otherwise found stays false and why_not says "`what` is not a valid motion: " and the check's
-// reason. A grid path's joins to the exact start and goal can cross a corner that the cells
-// did not see, so the whole polyline is checked, never the cells only.
+// Returns `path` in `report` (found, length, certificate) when it passes the exact check_path
+// (geometry/path_check.hpp's, or RoundWorld::check_path); otherwise found stays false and why_not
+// says "`what` is not a valid motion: " and the check's reason. A grid path's joins to the exact
+// start and goal can cross a corner that the cells did not see, so the whole polyline is checked,
+// never the cells only.
 void return_if_valid(const CSpace& cspace, std::vector<ExactPoint> path, std::string_view what,
+                     PlanReport<ExactPoint>& report);
+void return_if_valid(const RoundWorld& world, std::vector<ExactPoint> path, std::string_view what,
                      PlanReport<ExactPoint>& report);
 
 // The raster's cells as a picture shows them: free or blocked, no values.

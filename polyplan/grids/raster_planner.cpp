@@ -1,5 +1,6 @@
 #include <polyplan/grids/raster_planner.hpp>
 
+#include <polyplan/geometry/round_rasterize.hpp>
 #include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/plan/plan_facts.hpp>
@@ -11,8 +12,9 @@
 
 namespace polyplan {
 
-struct RasterPlanner::Impl {
-  const CSpace* cspace;
+template <class Space>
+struct BasicRasterPlanner<Space>::Impl {
+  const typename Space::Problem* world;
   RasterOptions options;
   Raster raster;
   GridGraph graph;
@@ -20,8 +22,8 @@ struct RasterPlanner::Impl {
   double build_seconds = 0;
   std::shared_ptr<const CellGrid> picture;  // made for the first query that records
 
-  Impl(const CSpace& c, const RasterOptions& o)
-      : cspace(&c), options(o), raster(rasterize(c, o.resolution)),
+  Impl(const typename Space::Problem& w, const RasterOptions& o)
+      : world(&w), options(o), raster(rasterize(w, o.resolution)),
         graph(raster_axes(raster), o.connectivity, StepCost::euclidean, raster_free_cells(raster)),
         free_cells(raster.blocked.size() - raster.blocked_count()), moves(move_count(graph)) {}
 
@@ -41,24 +43,37 @@ struct RasterPlanner::Impl {
   }
 };
 
-RasterPlanner::RasterPlanner(const CSpace& cspace, RasterOptions options) : impl_(build_timed<Impl>(cspace, options)) {}
+template <class Space>
+BasicRasterPlanner<Space>::BasicRasterPlanner(const typename Space::Problem& world, RasterOptions options)
+    : impl_(build_timed<Impl>(world, options)) {}
 
-RasterPlanner::~RasterPlanner() = default;
+template <class Space>
+BasicRasterPlanner<Space>::~BasicRasterPlanner() = default;
 
-const Raster& RasterPlanner::raster() const { return impl_->raster; }
-const GridGraph& RasterPlanner::graph() const { return impl_->graph; }
+template <class Space>
+const Raster& BasicRasterPlanner<Space>::raster() const {
+  return impl_->raster;
+}
 
-std::optional<std::pair<std::size_t, std::size_t>> RasterPlanner::nearest_free_cell(const ExactPoint& p) const {
+template <class Space>
+const GridGraph& BasicRasterPlanner<Space>::graph() const {
+  return impl_->graph;
+}
+
+template <class Space>
+std::optional<std::pair<std::size_t, std::size_t>> BasicRasterPlanner<Space>::nearest_free_cell(
+    const ExactPoint& p) const {
   return polyplan::nearest_free_cell(impl_->raster, p);
 }
 
-PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOptions& options) {
+template <class Space>
+PlanReport<ExactPoint> BasicRasterPlanner<Space>::plan(const Query& query, const QueryOptions& options) {
   Impl& r = *impl_;
   return grid_query(r.raster, [&](PlanReport<ExactPoint>& report, SearchResult<GridCell>& search) {
     r.record_facts(report.facts);
     if (options.record) report.recording.cells = r.cells();
 
-    const auto snapped = snap_query(*r.cspace, r.raster, query, report);
+    const auto snapped = snap_query(*r.world, r.raster, query, report);
     if (!snapped) return;
     const auto [from, to] = *snapped;
     const GridGraph& g = r.graph;
@@ -75,12 +90,13 @@ PlanReport<ExactPoint> RasterPlanner::plan(const Query& query, const QueryOption
     }
     report.facts.set(RasterFacts::grid_cost, search.cost);
 
-    return_if_valid(*r.cspace, polyline_through_turns(r.raster, query.start, search.path, query.goal),
+    return_if_valid(*r.world, polyline_through_turns(r.raster, query.start, search.path, query.goal),
                     "the grid path joined to start and goal", report);
   });
 }
 
-PlannerEntry<TranslatingRobot> raster_planner_entry() {
+template <class Space>
+PlannerEntry<Space> raster_planner_entry() {
   OptionTable<RasterOptions> table;
   table.add("resolution", &RasterOptions::resolution, "cells per side of the bounds (n x n cells)",
             in_range(1, static_cast<double>(max_cells_per_axis)));
@@ -89,12 +105,18 @@ PlannerEntry<TranslatingRobot> raster_planner_entry() {
       "8: moves to all 8 neighbours without cutting corners; 4: axis moves only",
       std::vector<std::pair<std::string, Connectivity>>{{"8", Connectivity::full}, {"4", Connectivity::axis_aligned}});
   add_search_options(table, &RasterOptions::search);
-  return make_planner_entry<TranslatingRobot, RasterOptions>(
+  return make_planner_entry<Space, RasterOptions>(
       "raster",
       "the course's graph-search homework's occupancy grid: the bounds cut into n x n exact cells, searched "
       "8-connected",
-      std::move(table),
-      [](const CSpace& cspace, const RasterOptions& o) { return std::make_unique<RasterPlanner>(cspace, o); });
+      std::move(table), [](const typename Space::Problem& world, const RasterOptions& o) {
+        return std::make_unique<BasicRasterPlanner<Space>>(world, o);
+      });
 }
+
+template class BasicRasterPlanner<TranslatingRobot>;
+template class BasicRasterPlanner<RoundRobot>;
+template PlannerEntry<TranslatingRobot> raster_planner_entry<TranslatingRobot>();
+template PlannerEntry<RoundRobot> raster_planner_entry<RoundRobot>();
 
 }  // namespace polyplan

@@ -2,16 +2,20 @@
 // Planning on a rasterised world (geometry/rasterize.hpp), as the course's graph-search homework's search_start_goal
 // does: the world's bounds cut into n × n cells, a cell blocked when it meets a C-obstacle's interior; start and goal
 // snap to the nearest free cell centre, the implicit grid graph (search/grid_graph.hpp) is searched between those
-// cells, and the path is start → the centres where the grid path turns → goal. Registered as `raster`.
+// cells, and the path is start → the centres where the grid path turns → goal. Registered as `raster` for both
+// spaces whose configurations are exact points: a polygon world's C-space (RasterPlanner) and a world with discs and
+// walls for a point or disc robot (RoundRasterPlanner, rasterised by geometry/round_rasterize.hpp; its disc bounds
+// give the grid the square round them). The same search, facts and answers in both.
 //
 // The grid part of such a path never enters a C-obstacle: it runs through free open squares and
 // across sides and corners shared by free cells (diagonal moves never cut a corner). The joins
 // from the start to its cell centre and from the goal's centre to the goal are not so protected —
 // at a coarse resolution the nearest free centre can lie behind an obstacle corner. So the whole
-// polyline is checked exactly (geometry/path_check.hpp): a path that fails is not returned
-// (found = false, why_not quotes the check), never hidden and never accepted.
+// polyline is checked exactly (geometry/path_check.hpp, RoundWorld::check_path): a path that fails
+// is not returned (found = false, why_not quotes the check), never hidden and never accepted.
 #include <polyplan/geometry/cspace.hpp>
 #include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/plan/planner_entry.hpp>
 #include <polyplan/search/grid_graph.hpp>
@@ -30,20 +34,22 @@ struct RasterOptions {
   SearchOptions search{};
 };
 
-class RasterPlanner final : public Planner<TranslatingRobot> {
+// Space: TranslatingRobot (its problem a CSpace) or RoundRobot (a RoundWorld).
+template <class Space>
+class BasicRasterPlanner final : public Planner<Space> {
  public:
-  // Rasterises the world of `cspace` (which must outlive the planner) once. Throws InputError
-  // naming the world's file when it has no bounds, std::invalid_argument for a resolution of 0
-  // or above max_cells_per_axis.
-  explicit RasterPlanner(const CSpace& cspace, RasterOptions options = {});
-  ~RasterPlanner() override;
+  // Rasterises the world of `world` (which must outlive the planner) once. Throws InputError
+  // naming the world's file when it has no bounds, or for a resolution of 0 or above
+  // max_cells_per_axis.
+  explicit BasicRasterPlanner(const typename Space::Problem& world, RasterOptions options = {});
+  ~BasicRasterPlanner() override;
 
   // Facts: roadmap.kind "raster", roadmap.vertices (free cells), roadmap.edges (moves between
   // them), roadmap.seconds (rasterising and the graph), raster.cells_per_axis,
   // raster.blocked_cells, raster.start_cell and raster.goal_cell ("(x, y)", the snapped cells),
   // raster.grid_cost (the grid path's length), search.*, query_seconds. A start or goal that is
-  // not free, unconnected cells, and a polyline that fails the exact check are answers
-  // (found = false) with the reason.
+  // not free (invalid_query), unconnected cells, and a polyline that fails the exact check
+  // (not_found) are answers (found = false) with the reason.
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
 
   // Where a start or goal snaps: polyplan::nearest_free_cell (geometry/rasterize.hpp) on the raster.
@@ -57,7 +63,12 @@ class RasterPlanner final : public Planner<TranslatingRobot> {
   std::unique_ptr<Impl> impl_;
 };
 
-// The registry's `raster`: options resolution (100), connectivity (8), search, weight.
-PlannerEntry<TranslatingRobot> raster_planner_entry();
+using RasterPlanner = BasicRasterPlanner<TranslatingRobot>;
+using RoundRasterPlanner = BasicRasterPlanner<RoundRobot>;
+
+// The registries' `raster` (TranslatingRobot, RoundRobot): options resolution (100),
+// connectivity (8), search, weight.
+template <class Space>
+PlannerEntry<Space> raster_planner_entry();
 
 }  // namespace polyplan

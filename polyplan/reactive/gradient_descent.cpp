@@ -2,6 +2,7 @@
 
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
+#include <polyplan/geometry/round_query.hpp>
 #include <polyplan/geometry/shared_component.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 
@@ -45,11 +46,7 @@ DescentWorld descent_world(const CSpace& cspace) {
 DescentWorld descent_world(const RoundWorld& world) {
   return {[&world](const ExactPoint& a, const ExactPoint& b) { return world.check_segment(a, b); },
           [&world](const std::vector<ExactPoint>& path) { return world.check_path(path); },
-          [&world](const Query& query) -> std::optional<std::string> {
-            for (const auto& [what, p] : {std::pair{"start ", &query.start}, std::pair{"goal ", &query.goal}})
-              if (auto why = world.config_not_free(*p)) return what + *why;
-            return std::nullopt;
-          },
+          [&world](const Query& query) { return query_not_free(world, query); },
           [](const ExactPoint&, const ExactPoint&) { return true; },  // no components known: none proved apart
           "exact rational segment test of every step as it was taken, and of the whole path"};
 }

@@ -44,12 +44,12 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
           visibility_planner_entry(VisibilityKind::reduced),
           visibility_planner_entry(VisibilityKind::full),
 #if POLYPLAN_WITH_GRIDS
-          raster_planner_entry(),
+          raster_planner_entry<TranslatingRobot>(),
 #endif
           trapezoid_planner_entry(),
           voronoi_planner_entry(),
 #if POLYPLAN_WITH_GRIDS
-          gvd_grid_planner_entry(),
+          gvd_grid_planner_entry<TranslatingRobot>(),
 #endif
 #if POLYPLAN_WITH_INCREMENTAL
           replanning_planner_entry(ReplanAlgorithm::dstar_lite),

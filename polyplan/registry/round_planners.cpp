@@ -1,9 +1,14 @@
 // Every planner of a point or disc robot among discs, walls and polygons (RoundRobot): the exact
 // shortest paths of the tangent visibility graph, the sampling planners over the exact rational
-// checks of geometry/round_world_check.hpp, and the navigation function of a sphere world.
+// checks of geometry/round_world_check.hpp, the occupancy grid rasterised exactly
+// (geometry/round_rasterize.hpp), and the reactive planners of a sphere world.
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/tangent_visibility.hpp>
 
+#if POLYPLAN_WITH_GRIDS
+#include <polyplan/grids/gvd_grid_planner.hpp>
+#include <polyplan/grids/raster_planner.hpp>
+#endif
 #if POLYPLAN_WITH_REACTIVE
 #include <polyplan/reactive/navigation_function_planner.hpp>
 #include <polyplan/reactive/potential_field_planner.hpp>
@@ -41,6 +46,10 @@ const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
           round(rrt_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_star_planner_entry<RoundRobot>(round_sampling_space)),
           round(rrt_connect_planner_entry<RoundRobot>(round_sampling_space)),
+#endif
+#if POLYPLAN_WITH_GRIDS
+          round(raster_planner_entry<RoundRobot>()),
+          round(gvd_grid_planner_entry<RoundRobot>()),
 #endif
 #if POLYPLAN_WITH_REACTIVE
           round(round_navigation_function_planner_entry()),

@@ -107,7 +107,7 @@ def test_a_drive_moves_cell_by_cell(tmp_path):
 
 
 def test_a_potential_is_descended_in_its_world(tmp_path):
-    world = polyplan.read_world(data("worlds", "sphere_world.json"))
+    world = polyplan.read_world(data("worlds", "sphere_world_polygons.json"))
     found = polyplan.potential(world)
     assert gif_frames(polyplan.animate(found, world=world, frames=FRAMES), tmp_path) == FRAMES
     with pytest.raises(polyplan.InputError, match="world="):

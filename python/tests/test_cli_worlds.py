@@ -18,7 +18,7 @@ CAR_WORLDS = [w for w in shipped("worlds") if polyplan.read_world(data("worlds",
 # worlds (a polygon robot's, a turning robot's, a trap, a sphere world, a wall without a way round,
 # a pillar to wind round), and every other world with its default planner. Every planner on every
 # world, the pairs in between, is the C++ conformance suite's (tests/registry).
-PLANNER_WORLDS = ["seed004.json", "rotation_seed004.json", "u_trap.json", "sphere_world.json",
+PLANNER_WORLDS = ["seed004.json", "rotation_seed004.json", "u_trap.json", "sphere_world_polygons.json",
                   "seed002_endless_wall.json", "tether_pillar.json"]
 
 

@@ -29,12 +29,12 @@ def test_planners_refuse_them_naming_what_the_world_has():
     with pytest.raises(polyplan.InputError, match=r"disc_robot_floor_plan.json: discs, walls, a disc robot: "
                                                    r"the planner trapezoid plans polygon worlds only.*use one that plans "
                                                    r"with them \(visibility, prm, lazyprm, rrt, rrtstar, rrtconnect, "
-                                                   r"navigation-function, potential-field\)"):
+                                                   r"raster, gvd-grid, navigation-function, potential-field\)"):
         polyplan.plan(world, planner="trapezoid")
 
 
 def test_the_sampling_planners_plan_them_and_the_checker_agrees():
-    world = polyplan.read_world(data("worlds", "sphere_world_discs.json"))
+    world = polyplan.read_world(data("worlds", "sphere_world.json"))
     plans = polyplan.plan(world, planner="rrt", seed=2)
     assert len(plans) == 10 and all(p.status == "solved" for p in plans)
     for p in plans:

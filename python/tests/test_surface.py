@@ -97,7 +97,7 @@ def test_rotating_robot_poses():
 
 
 def test_recorded_parts_for_pictures():
-    w = polyplan.read_world(data("worlds", "sphere_world.json"))
+    w = polyplan.read_world(data("worlds", "sphere_world_polygons.json"))
     r = polyplan.planner("raster", w).plan()
     assert r.cells is not None and r.cells.states.dtype == np.uint8 and r.cells.states.ndim == 2
     assert (r.cells.states == 2).any() and (r.cells.states == 1).any()

@@ -96,9 +96,9 @@ TEST(Plan, EveryRegisteredPlannerAnswersByNameAndRoadmapIsAnAlias) {
 }
 
 TEST(Plan, OptionsBySpelledOutAssignmentOrByTheirOwnFlag) {
-  const CliRun flag = run_polyplan("plan " + world("sphere_world.json") +
+  const CliRun flag = run_polyplan("plan " + world("sphere_world_polygons.json") +
                                    " --planner raster --resolution 40 --search dijkstra --json -");
-  const CliRun option = run_polyplan("plan " + world("sphere_world.json") +
+  const CliRun option = run_polyplan("plan " + world("sphere_world_polygons.json") +
                                      " --planner raster --option resolution=40 "
                                      "--option search=dijkstra --json -");
   ASSERT_EQ(flag.exit_code, 0) << flag.err;

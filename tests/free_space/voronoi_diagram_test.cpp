@@ -54,7 +54,7 @@ TEST_P(VoronoiDiagramOfWorld, IsTheSameEveryTimeItIsBuilt) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedWorlds, VoronoiDiagramOfWorld,
-                         ::testing::Values("office", "maze", "seed004", "sphere_world"));
+                         ::testing::Values("office", "maze", "seed004", "sphere_world_polygons"));
 
 }  // namespace
 }  // namespace polyplan

@@ -3,6 +3,7 @@
 // clipped to the cell's square (positive iff the open square meets their interior).
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/rasterize.hpp>
+#include "raster_fixtures.hpp"
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
@@ -13,20 +14,12 @@
 #include <utility>
 
 using namespace polyplan;
+using polyplan::test::blocked_cells;
+using polyplan::test::Cells;
 using polyplan::test::signed_area;
 using polyplan::test::world_from;
 
 namespace {
-
-using Cells = std::set<std::pair<std::size_t, std::size_t>>;
-
-Cells blocked_cells(const Raster& r) {
-  Cells out;
-  for (std::size_t y = 0; y < r.cells_per_axis; ++y)
-    for (std::size_t x = 0; x < r.cells_per_axis; ++x)
-      if (r.is_blocked(x, y)) out.insert({x, y});
-  return out;
-}
 
 // ---- the reference: Sutherland–Hodgman clipping of each ring to the closed square, exact ----
 

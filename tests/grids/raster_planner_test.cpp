@@ -23,7 +23,7 @@ using polyplan::test::world_from;
 
 namespace {
 
-const std::string kSphereWorld = POLYPLAN_SOURCE_DIR "/data/worlds/sphere_world.json";
+const std::string kSphereWorld = POLYPLAN_SOURCE_DIR "/data/worlds/sphere_world_polygons.json";
 
 // Where the polyline first crosses the horizontal line y = at (x), if it does.
 std::optional<double> first_crossing_of_y(const std::vector<ExactPoint>& path, const Rational& at) {

@@ -43,7 +43,7 @@ TEST(NavigationFunctionPlanner, PassesTheGapWhereThePotentialFieldStops) {
 }
 
 TEST(NavigationFunctionPlanner, SolvesEveryQueryOfTheSphereWorld) {
-  const World world = shipped("sphere_world");
+  const World world = shipped("sphere_world_polygons");
   const CSpace cspace(world);
   for (const Query& q : world.queries) {
     SCOPED_TRACE(q.name);

@@ -141,7 +141,7 @@ std::optional<std::string> outside(const OptionRange& range) {
 
 TEST(Catalog, EveryNumberOrChoiceOptionIsDeclaredWithItsRangeAndRefusedOutsideItBeforeAnythingIsBuilt) {
   const Problem problems[] = {read("worlds/seed004.json"), read("worlds/car_park.json"),
-                              read("arms/two_link_points.json"), read("worlds/sphere_world_discs.json")};
+                              read("arms/two_link_points.json"), read("worlds/sphere_world.json")};
   std::size_t refused = 0;
   for (const PlannerListing& planner : planner_catalog()) {
     const Problem* problem = nullptr;

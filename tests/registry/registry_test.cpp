@@ -219,7 +219,7 @@ TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
 }
 
 TEST(Registry, OptionsAreSetByNameAndBadOnesNameThePlannerAndTheOption) {
-  const ShippedWorld& w = shipped("sphere_world");
+  const ShippedWorld& w = shipped("sphere_world_polygons");
   const auto* raster = planners<TranslatingRobot>().find("raster");
   const auto coarse = raster->make(w.cspace, {{"resolution", "10"}, {"search", "dijkstra"}})->plan(w.world.queries[1]);
   EXPECT_EQ(coarse.facts.at(RasterFacts::cells_per_axis), 10);

@@ -51,7 +51,7 @@ TEST_P(SamplingPlannerOnWorld, ThreeSeedsGiveExactlyCheckedPathsAndOneSeedOnePat
     OptionValues options{{"seed", seed}, {"time", "20"}};
     if (planner == "rrtstar") options.emplace_back("iterations", "20000");
     auto planner_of_seed = make(planner, cspace, options);
-    // The first four queries (sphere_world has ten), to keep it quick.
+    // The first four queries (sphere_world_polygons has ten), to keep it quick.
     for (std::size_t i = 0; i < std::min<std::size_t>(4, world.queries.size()); ++i) {
       const Query& q = world.queries[i];
       SCOPED_TRACE(q.name);
@@ -86,8 +86,9 @@ TEST_P(SamplingPlannerOnWorld, ThreeSeedsGiveExactlyCheckedPathsAndOneSeedOnePat
 INSTANTIATE_TEST_SUITE_P(SamplingPlanners, SamplingPlannerOnWorld,
                          ::testing::Combine(::testing::ValuesIn(std::vector<std::string>(sampling_planners.begin(),
                                                                                          sampling_planners.end())),
-                                            ::testing::ValuesIn(std::vector<std::string>{
-                                                "maze", "office", "seed004", "sphere_world", "corridor_exact"})),
+                                            ::testing::ValuesIn(std::vector<std::string>{"maze", "office", "seed004",
+                                                                                         "sphere_world_polygons",
+                                                                                         "corridor_exact"})),
                          [](const auto& info) { return std::get<0>(info.param) + "_on_" + std::get<1>(info.param); });
 
 TEST(SamplingPlanners, DifferentSeedsSampleDifferently) {
