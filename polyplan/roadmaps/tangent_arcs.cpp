@@ -32,7 +32,7 @@ Algebraic absolute(const Algebraic& x) { return sign_of(x) < 0 ? -x : x; }
 void add_vertices(const std::vector<ExactPoint>& points, const std::string& name, const Rational& r,
                   std::vector<Circle>& out) {
   for (std::size_t k = 0; k < points.size(); ++k)
-    out.push_back({algebraic(points[k]), algebraic(r), r, name + " vertex " + std::to_string(k)});
+    out.push_back({algebraic(points[k]), algebraic(r), points[k], r, name + " vertex " + std::to_string(k)});
 }
 
 // The half, [0, π) or [π, 2π), that the counter-clockwise angle from a to v falls in.
@@ -136,8 +136,8 @@ std::vector<Circle> circles_of(const World& world) {
   const Rational r = world.robot.disc.value_or(0);
   std::vector<Circle> out;
   for (std::size_t i = 0; i < world.discs.size(); ++i)
-    out.push_back({algebraic(world.discs[i].center), algebraic(world.discs[i].radius + r), world.discs[i].radius + r,
-                   "discs[" + std::to_string(i) + "]"});
+    out.push_back({algebraic(world.discs[i].center), algebraic(world.discs[i].radius + r), world.discs[i].center,
+                   world.discs[i].radius + r, "discs[" + std::to_string(i) + "]"});
   for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
     add_vertices(world.obstacles[i].outer, world.obstacle_names[i], r, out);
     for (std::size_t h = 0; h < world.obstacles[i].holes.size(); ++h)

@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <stdexcept>
@@ -48,6 +49,25 @@ AP perpendicular(const AP& v) { return {-v.y, v.x}; }
 FactPoint approximate(const AP& p) { return {p.x.doubleValue(), p.y.doubleValue()}; }
 ExactPoint nearest_rational(const AP& p) {
   const FactPoint d = approximate(p);
+  return {Rational(d[0]), Rational(d[1])};
+}
+
+// How a path's point is printed: a corner or the query's start or goal exactly; a touching point on
+// a circle of radius ρ > 0 (irrational) as a point of doubles next to it, moved outwards a step of
+// a double at a time while it is not at least ρ·(1 + 1e-15) from the centre: a reader who tests the
+// printed numbers exactly finds them clear of the disc, and the segment between two of them too
+// (turning a tangent by a double's step brings it nearer the centre only by the square of that).
+ExactPoint printed_point(const AP& p, const Circle& circle) {
+  if (round_rules::sign_of(circle.radius) == 0) return circle.exact_centre;
+  FactPoint d = approximate(p);
+  const Rational least = circle.exact_radius * circle.exact_radius * Rational(1000000000000001, 1000000000000000);
+  for (int step = 0; step < 64; ++step) {
+    const Rational dx = Rational(d[0]) - circle.exact_centre.x, dy = Rational(d[1]) - circle.exact_centre.y;
+    if (dx * dx + dy * dy >= least) break;
+    const double inf = std::numeric_limits<double>::infinity();
+    if (sgn(dx) != 0) d[0] = std::nextafter(d[0], sgn(dx) > 0 ? inf : -inf);
+    if (sgn(dy) != 0) d[1] = std::nextafter(d[1], sgn(dy) > 0 ? inf : -inf);
+  }
   return {Rational(d[0]), Rational(d[1])};
 }
 
@@ -221,6 +241,7 @@ struct Piece {
   std::optional<std::size_t> circle;
   bool counter_clockwise = true;
   AP from, to;
+  std::size_t from_owner = 0, to_owner = 0;  // the circles (or the start or goal) its ends touch
 };
 
 std::vector<Piece> pieces_of(const QueryGraph& graph, const std::vector<RoadmapVertexId>& nodes) {
@@ -230,11 +251,12 @@ std::vector<Piece> pieces_of(const QueryGraph& graph, const std::vector<RoadmapV
     const Link& link = graph.links().at(std::minmax(u, v));
     const AP &a = graph.points()[u], &b = graph.points()[v];
     if (a == b) continue;
-    const Piece piece{link.circle, !link.circle || link.u == u, a, b};
+    const Piece piece{link.circle, !link.circle || link.u == u, a, b, graph.owners()[u], graph.owners()[v]};
     if (piece.circle && !out.empty() && out.back().circle == piece.circle &&
-        out.back().counter_clockwise == piece.counter_clockwise)
+        out.back().counter_clockwise == piece.counter_clockwise) {
       out.back().to = b;
-    else out.push_back(piece);
+      out.back().to_owner = piece.to_owner;
+    } else out.push_back(piece);
   }
   return out;
 }
@@ -271,15 +293,18 @@ std::optional<std::string> path_blocked(const Rules& rules, const std::vector<Pi
   return std::nullopt;
 }
 
-PathPiece path_piece(const Piece& piece, const std::vector<Circle>& circles, const tangent::LengthBounds& bounds) {
+FactPoint doubles(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
+
+// The piece as reported, its ends as printed (printed_point), `ends` the circles they touch.
+PathPiece path_piece(const Piece& piece, const std::vector<Circle>& ends, const tangent::LengthBounds& bounds) {
   PathPiece out;
-  out.from = approximate(piece.from);
-  out.to = approximate(piece.to);
+  out.from = doubles(printed_point(piece.from, ends[piece.from_owner]));
+  out.to = doubles(printed_point(piece.to, ends[piece.to_owner]));
   out.length = (bounds.lower + bounds.upper) / 2;
   if (piece.circle) {
     out.kind = PathPiece::Kind::arc;
-    out.centre = approximate(circles[*piece.circle].centre);
-    out.radius = circles[*piece.circle].radius.doubleValue();
+    out.centre = doubles(ends[*piece.circle].exact_centre);
+    out.radius = to_double(ends[*piece.circle].exact_radius);
     out.counter_clockwise = piece.counter_clockwise;
   }
   return out;
@@ -294,13 +319,15 @@ PlanReport<ExactPoint> TangentVisibilityGraph::Impl::plan(const Query& query, co
     report.facts.set(SearchFacts::algorithm, to_string(search.algorithm));
     const AP start = algebraic(query.start), goal = algebraic(query.goal);
     const std::size_t start_owner = circles.size(), goal_owner = circles.size() + 1;
+    std::vector<Circle> ends = circles;  // what a node touches: a circle, or the start or the goal
+    ends.push_back({start, Algebraic(0), query.start, 0, "the start"});
+    ends.push_back({goal, Algebraic(0), query.goal, 0, "the goal"});
     std::vector<Chord> all = chords;
     if (usable(start, goal)) all = {{start_owner, goal_owner, start, goal}};  // nothing is shorter
     else
       for (std::size_t i = 0; i < circles.size(); ++i) {
-        const Circle start_point{start, Algebraic(0), 0, "the start"}, goal_point{goal, Algebraic(0), 0, "the goal"};
-        add_chords(start_point, start_owner, circles[i], i, all);
-        add_chords(goal_point, goal_owner, circles[i], i, all);
+        add_chords(ends[start_owner], start_owner, circles[i], i, all);
+        add_chords(ends[goal_owner], goal_owner, circles[i], i, all);
       }
     const QueryGraph graph(rules, circles, all);
     report.facts.set(RoadmapFacts::vertices, graph.points().size());
@@ -338,8 +365,8 @@ PlanReport<ExactPoint> TangentVisibilityGraph::Impl::plan(const Query& query, co
         const auto bounds =
             piece.circle ? tangent::arc_length(arc_of(piece, circles)) : tangent::segment_length(piece.from, piece.to);
         total = total + bounds;
-        report.pieces.push_back(path_piece(piece, circles, bounds));
-        report.path.push_back(nearest_rational(piece.to));
+        report.pieces.push_back(path_piece(piece, ends, bounds));
+        report.path.push_back(printed_point(piece.to, ends[piece.to_owner]));
       }
       total.lower = std::max(0.0, total.lower);
       report.length = (total.lower + total.upper) / 2;

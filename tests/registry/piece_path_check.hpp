@@ -3,7 +3,10 @@
 // written apart from the planner's exact one: the pieces join the path's points in order, their
 // lengths add up to the report's, an arc's ends lie on its circle, and points every 1/400 of each
 // piece keep out of every disc, wall and polygon grown by the robot's radius, up to 1e-9 (the
-// doubles' own error); the start and goal are the query's.
+// doubles' own error); the start and goal are the query's. And the segment pieces as printed, their
+// ends read as exact rationals, pass the exact check (`check`, the front door's checker): the
+// planner prints a touching point outside its circle, never inside.
+#include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/world.hpp>
 #include <polyplan/plan/plan_report.hpp>
@@ -64,7 +67,8 @@ inline XY along(const PathPiece& piece, double t) {
           piece.centre[1] + piece.radius * std::sin(a + t * turn)};
 }
 
-inline void expect_valid_pieces(const World& world, const PlanReport<ExactPoint>& report) {
+template <class Check>
+void expect_valid_pieces(const World& world, const PlanReport<ExactPoint>& report, const Check& check) {
   const auto& pieces = report.pieces;
   ASSERT_EQ(report.path.size(), pieces.size() + 1);
   double total = 0;
@@ -83,6 +87,10 @@ inline void expect_valid_pieces(const World& world, const PlanReport<ExactPoint>
     EXPECT_NEAR(end[0], piece.to[0], 1e-9);
     EXPECT_NEAR(end[1], piece.to[1], 1e-9);
     for (int s = 0; s <= 400; ++s) EXPECT_LE(depth(world, along(piece, s / 400.0)), 1e-9);
+    if (piece.kind == PathPiece::Kind::segment) {
+      const auto exact = check(std::vector<ExactPoint>{report.path[k], report.path[k + 1]});
+      EXPECT_TRUE(exact.valid) << exact.reason;
+    }
     total += piece.length;
   }
   EXPECT_NEAR(total, report.length, 1e-9 * std::max(1.0, report.length));

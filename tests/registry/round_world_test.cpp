@@ -58,7 +58,8 @@ TEST_P(EveryPlannerOnEveryRoundWorld, PlansOrRefusesNamingWhatItHas) {
           if (typed.path.empty()) continue;
         }
         if (!typed.pieces.empty()) {  // a path of tangents and arcs (visibility): its points are irrational
-          test::expect_valid_pieces(*problem.world(), typed);
+          test::expect_valid_pieces(*problem.world(), typed,
+                                    [&](const auto& p) { return check_translating_path(problem, p); });
           continue;
         }
         const PathCheck check = check_translating_path(problem, typed.path);  // the checker, asked afresh

@@ -7,6 +7,7 @@
 
 #include <polyplan/registry/any_planner.hpp>
 #include <polyplan/registry/problem.hpp>
+#include <polyplan/registry/robot_path_check.hpp>
 
 #include <gtest/gtest.h>
 
@@ -22,7 +23,9 @@ PlanReport<ExactPoint> plan(const std::string& world_text) {
   const auto planner = make_planner("visibility", problem, {});
   const Report report = planner->plan(0);
   const auto& typed = std::get<PlanReport<ExactPoint>>(report.typed());
-  if (typed.found) test::expect_valid_pieces(*problem.world(), typed);
+  if (typed.found)
+    test::expect_valid_pieces(*problem.world(), typed,
+                              [&](const auto& p) { return check_translating_path(problem, p); });
   return typed;
 }
 

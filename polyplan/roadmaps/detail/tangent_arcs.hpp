@@ -16,8 +16,9 @@ namespace polyplan::tangent {
 struct Circle {
   AlgebraicPoint centre;
   Algebraic radius;
-  Rational exact_radius;  // the same radius, for the certified lengths
-  std::string name;       // "discs[2]", "obstacles[0] vertex 3", for messages
+  ExactPoint exact_centre;  // the same centre and radius as rationals: for the certified lengths
+  Rational exact_radius;    // and the printed points
+  std::string name;         // "discs[2]", "obstacles[0] vertex 3", for messages
 };
 
 // The circles of a point or disc robot's world: every disc grown by the robot's radius, and every
