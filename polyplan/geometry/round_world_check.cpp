@@ -25,10 +25,10 @@ struct RoundWorld::Impl {
   std::optional<Bounds> box;  // already shrunk by the robot's radius
   std::optional<Disc> disc;   // likewise
 
+  // The rules' shrunk bounds, in the public types.
   explicit Impl(const World& w) : world(w), rules(w, same) {
-    const Rational& rho = rules.robot();
-    if (w.bounds) box = Bounds{w.bounds->xmin + rho, w.bounds->ymin + rho, w.bounds->xmax - rho, w.bounds->ymax - rho};
-    if (w.disc_bounds) disc = Disc{w.disc_bounds->center, w.disc_bounds->radius - rho};
+    if (const auto& b = rules.box()) box = Bounds{(*b)[0], (*b)[1], (*b)[2], (*b)[3]};
+    if (const auto& c = rules.disc_centre()) disc = Disc{{c->x, c->y}, rules.disc_radius()};
   }
 };
 

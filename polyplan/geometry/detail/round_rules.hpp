@@ -106,11 +106,18 @@ bool on_segment(const Seg<N>& s, const P<N>& q) {
   return sign_of(cross(s.b - s.a, q - s.a)) == 0 && sign_of(dot(q - s.a, q - s.b)) <= 0;
 }
 
+// Whether s and t cross at a point inside both, each one's ends strictly on either side of the
+// other's line.
 template <class N>
-bool segments_meet(const Seg<N>& s, const Seg<N>& t) {
+bool cross_properly(const Seg<N>& s, const Seg<N>& t) {
   const int o1 = sign_of(cross(s.b - s.a, t.a - s.a)), o2 = sign_of(cross(s.b - s.a, t.b - s.a));
   const int o3 = sign_of(cross(t.b - t.a, s.a - t.a)), o4 = sign_of(cross(t.b - t.a, s.b - t.a));
-  if (o1 * o2 < 0 && o3 * o4 < 0) return true;
+  return o1 * o2 < 0 && o3 * o4 < 0;
+}
+
+template <class N>
+bool segments_meet(const Seg<N>& s, const Seg<N>& t) {
+  if (cross_properly(s, t)) return true;
   return on_segment(s, t.a) || on_segment(s, t.b) || on_segment(t, s.a) || on_segment(t, s.b);
 }
 

@@ -1,11 +1,11 @@
 #pragma once
-// A quick test in doubles that throws out the tangents that plainly cross an obstacle before the
-// exact rules decide the rest (most tangents of a cluttered world cross something, and the exact
-// test of one costs far more). Sound: it rejects a segment only when doubles show it entering a
-// rounded core by more than 1e-9 of the world's scale, or crossing a wall or a point robot's
-// polygon edge with both ends of each segment farther than that from the other's line; the doubles
-// of the points and their products err by less than 1e-14 of the scale (squared, for products), so
-// a rejected segment is blocked exactly too. Everything it lets through is decided exactly.
+// A quick test that throws out the tangents that plainly cross an obstacle before the full exact
+// rules decide the rest (most tangents of a cluttered world cross something, and the full test of
+// one runs the local test at every contact). Doubles only choose which obstacle to try: where they
+// show the segment entering a rounded core, or crossing a wall or a point robot's polygon edge,
+// that one obstacle is tested exactly (squared distance below the squared radius; a proper
+// crossing, every orientation's sign nonzero and opposite), and only an exact yes rejects the
+// segment. Everything else goes on to the full rules.
 #include <polyplan/roadmaps/detail/algebraic.hpp>
 
 #include <array>
@@ -20,16 +20,15 @@ class Prefilter {
 
  private:
   using Point = std::array<double, 2>;
-  struct Rounded {  // the points within `radius` of the segment from–to (a point when from == to)
+  // The points within `radius` of the segment from–to (a point when from == to); radius 0: a
+  // wall's piece or a polygon's edge met by a point robot, which may not be crossed.
+  struct Feature {
     Point from, to;
     double radius;
+    round_rules::Seg<Algebraic> exact;
+    Algebraic exact_radius;
   };
-  struct Thin {  // a wall's piece or a polygon's edge met by a point robot
-    Point from, to;
-  };
-  std::vector<Rounded> rounded_;
-  std::vector<Thin> thin_;
-  double scale_ = 1;
+  std::vector<Feature> rounded_, thin_;
 };
 
 }  // namespace polyplan::tangent
