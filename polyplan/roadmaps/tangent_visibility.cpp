@@ -1,5 +1,6 @@
 #include <polyplan/roadmaps/tangent_visibility.hpp>
 
+#include <polyplan/geometry/round_query.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/plan/planner_options.hpp>
@@ -317,6 +318,7 @@ PlanReport<ExactPoint> TangentVisibilityGraph::Impl::plan(const Query& query, co
     report.facts.set(RoadmapFacts::kind, "tangent-visibility");
     report.facts.set(RoadmapFacts::seconds, build_seconds);
     report.facts.set(SearchFacts::algorithm, to_string(search.algorithm));
+    if (auto why = query_not_free(world, query)) return report.fail(PlanStatus::invalid_query, *why);
     const AP start = algebraic(query.start), goal = algebraic(query.goal);
     const std::size_t start_owner = circles.size(), goal_owner = circles.size() + 1;
     std::vector<Circle> ends = circles;  // what a node touches: a circle, or the start or the goal

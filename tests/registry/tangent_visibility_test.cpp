@@ -8,6 +8,7 @@
 #include <polyplan/registry/any_planner.hpp>
 #include <polyplan/registry/problem.hpp>
 #include <polyplan/registry/robot_path_check.hpp>
+#include <polyplan/roadmaps/tangent_visibility.hpp>
 
 #include <gtest/gtest.h>
 
@@ -126,6 +127,17 @@ TEST(TangentVisibility, DecimalsThatDoublesGetWrong) {
       "discs": [{"center": [0, 0], "radius": 0.2}], "start": [-1, 0.3], "goal": [1, 0.3]})");
   expect_length(report, 2);
   EXPECT_EQ(report.pieces.size(), 1u);
+}
+
+TEST(TangentVisibility, AStartInsideADiscIsAnInvalidQuery) {
+  // Asked directly (the library, Python), not through a world file's checked queries.
+  const Problem problem = Problem::parse(R"({"bounds": [-5, -5, 5, 5], "discs": [{"center": [0, 0], "radius": 1}],
+                                            "start": [-3, 0], "goal": [3, 0]})",
+                                         "test.json");
+  TangentVisibilityGraph graph(problem.round_world());
+  const auto report = graph.plan(Query{{Rational(1, 2), 0}, {3, 0}, "inside"});
+  EXPECT_EQ(report.status, PlanStatus::invalid_query) << report.why_not;
+  EXPECT_NE(report.why_not.find("discs[0]"), std::string::npos) << report.why_not;
 }
 
 }  // namespace
