@@ -91,20 +91,19 @@ Blocker segment_blocker(const ExactPoint& a, const ExactPoint& b, const Rational
           }};
 }
 
-std::vector<Blocker> blockers(const World& world) {
-  const Rational r = world.robot.disc.value_or(0);
+std::vector<Blocker> blockers(const RoundCSpace& space) {
   std::vector<Blocker> out;
-  for (const Disc& d : world.discs) {
-    const Rational reach = d.radius + r;
-    out.push_back({grown_box({d.center}, reach),
-                   [d, reach](const CellSquare& s) { return squared_distance(s, d.center) < reach * reach; }});
-  }
-  for (const Wall& wall : world.walls)
-    for (std::size_t k = 0; k + 1 < wall.size(); ++k) out.push_back(segment_blocker(wall[k], wall[k + 1], r, true));
-  for (const PolygonWithHoles& polygon : world.obstacles) {
-    std::vector<Ring> rings{polygon.outer};
-    rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
-    for (const Ring& ring : rings)
+  for (const RoundCore& core : space.obstacles) {
+    const Rational& r = core.radius;
+    if (core.kind == RoundCore::Kind::point) {
+      const ExactPoint centre = core.points[0];
+      out.push_back(
+          {grown_box({centre}, r), [centre, r](const CellSquare& s) { return squared_distance(s, centre) < r * r; }});
+    }
+    if (core.kind == RoundCore::Kind::wall)
+      for (std::size_t k = 0; k + 1 < core.points.size(); ++k)
+        out.push_back(segment_blocker(core.points[k], core.points[k + 1], r, true));
+    for (const Ring& ring : core.rings)
       for (std::size_t k = 0; k < ring.size(); ++k)
         out.push_back(segment_blocker(ring[k], ring[(k + 1) % ring.size()], r, false));
   }
@@ -147,15 +146,14 @@ class RoundRasterizer {
   }
 
   void block_near_obstacles() {
-    const World& world = world_.world();
-    for (const Blocker& b : blockers(world))
+    for (const Blocker& b : blockers(world_.cspace()))
       each_open_cell_meeting(b.reach, [&](long i, long j) { return b.blocks(square(i, j)); });
     // A square near no edge of a polygon lies inside it or apart from it: its centre says which.
-    const Rational r = world.robot.disc.value_or(0);
-    for (const PolygonWithHoles& polygon : world.obstacles)
-      each_open_cell_meeting(grown_box(polygon.outer, r), [&](long i, long j) {
-        return world_.config_not_free(raster_.cell_center(i, j)).has_value();
-      });
+    for (const RoundCore& core : world_.cspace().obstacles)
+      if (core.kind == RoundCore::Kind::polygon)
+        each_open_cell_meeting(grown_box(core.rings[0], core.radius), [&](long i, long j) {
+          return world_.config_not_free(raster_.cell_center(i, j)).has_value();
+        });
   }
 
  private:

@@ -3,15 +3,8 @@
 #include <polyplan/geometry/round_world_check.hpp>
 
 #include <polyplan/geometry/detail/round_rules.hpp>
-#include <polyplan/geometry/input_error.hpp>
 
 namespace polyplan {
-
-template <>
-struct round_rules::Field<Rational> {
-  static int sign(const Rational& x) { return sgn(x); }
-  static std::string text(const Rational& x) { return to_string(x); }
-};
 
 namespace {
 
@@ -21,28 +14,18 @@ Rational same(const Rational& x) { return x; }
 
 struct RoundWorld::Impl {
   World world;
+  RoundCSpace cspace;
   round_rules::RoundRules<Rational> rules;
-  std::optional<Bounds> box;  // already shrunk by the robot's radius
-  std::optional<Disc> disc;   // likewise
 
-  // The rules' shrunk bounds, in the public types.
-  explicit Impl(const World& w) : world(w), rules(w, same) {
-    if (const auto& b = rules.box()) box = Bounds{(*b)[0], (*b)[1], (*b)[2], (*b)[3]};
-    if (const auto& c = rules.disc_centre()) disc = Disc{{c->x, c->y}, rules.disc_radius()};
-  }
+  explicit Impl(const World& w) : world(w), cspace(round_cspace(w)), rules(cspace, same) {}
 };
 
-RoundWorld::RoundWorld(const World& world) : impl_(nullptr) {
-  if (!world.robot.parts.empty())
-    throw InputError(world.source +
-                     ": robot: a polygon robot among discs or walls (its C-obstacles are rounded "
-                     "polygons): not checked yet; a point or a disc robot is");
-  impl_ = std::make_unique<const Impl>(world);
-}
+RoundWorld::RoundWorld(const World& world) : impl_(std::make_unique<const Impl>(world)) {}
 
 const World& RoundWorld::world() const { return impl_->world; }
-const std::optional<Bounds>& RoundWorld::reference_box() const { return impl_->box; }
-const std::optional<Disc>& RoundWorld::reference_disc() const { return impl_->disc; }
+const RoundCSpace& RoundWorld::cspace() const { return impl_->cspace; }
+const std::optional<Bounds>& RoundWorld::reference_box() const { return impl_->cspace.box; }
+const std::optional<Disc>& RoundWorld::reference_disc() const { return impl_->cspace.disc; }
 
 RoundWorld::~RoundWorld() = default;
 RoundWorld::RoundWorld(RoundWorld&&) noexcept = default;

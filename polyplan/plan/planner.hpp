@@ -28,15 +28,17 @@ struct TranslatingRobot {
   static constexpr std::string_view description = "a polygon robot translating in a polygon world";
 };
 
-// A point or disc robot among discs, walls of zero thickness and polygons, in box or disc bounds
-// (World::round_features): configurations are exact positions, motions straight segments checked
-// exactly in rationals (geometry/round_world_check.hpp). Its planners are the sampling planners,
-// the grid planners over its exact raster (raster, gvd-grid) and the navigation function.
+// A point, disc or translating polygon robot among discs, walls of zero thickness and polygons, in
+// box or disc bounds (World::round_features): configurations are exact positions of the reference
+// point, motions straight segments checked exactly in rationals against the C-space of
+// geometry/round_cspace.hpp (geometry/round_world_check.hpp). Its planners are the tangent
+// visibility graph, the sampling planners, the grid planners over its exact raster and the
+// reactive planners.
 struct RoundRobot {
   using Configuration = ExactPoint;
   using Problem = RoundWorld;
   using Query = polyplan::Query;
-  static constexpr std::string_view description = "a point or disc robot among discs, walls and polygons";
+  static constexpr std::string_view description = "a robot (point, disc or polygon) among discs, walls and polygons";
 };
 
 // A polygon robot that translates and turns about its reference point among polygon obstacles:

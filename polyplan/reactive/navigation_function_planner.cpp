@@ -194,12 +194,13 @@ struct RoundNavigationFunctionPlanner::Impl {
   SphereNavigation navigation;
 
   Impl(const RoundWorld& w, const NavigationFunctionOptions& o) {
-    const World& world = w.world();
-    const double rho = world.robot.disc ? to_double(*world.robot.disc) : 0;
     navigation.exact = descent_world(w);
     navigation.options = o;
-    for (const Disc& d : world.discs)
-      navigation.obstacles.push_back({{to_double(d.center.x), to_double(d.center.y)}, to_double(d.radius) + rho});
+    bool only_discs = true;  // whether every C-obstacle is a disc
+    for (const RoundCore& core : w.cspace().obstacles) {
+      if (core.kind != RoundCore::Kind::point) only_discs = false;
+      else navigation.obstacles.push_back({approximate(core.points[0]), to_double(core.radius)});
+    }
     if (const auto& disc = w.reference_disc()) {
       navigation.world = {{to_double(disc->center.x), to_double(disc->center.y)}, to_double(disc->radius)};
     } else if (const auto& b = w.reference_box()) {  // the course's sphere world in its box: the disc round it
@@ -208,8 +209,10 @@ struct RoundNavigationFunctionPlanner::Impl {
     } else {
       navigation.not_spheres = "the world has no bounds (a sphere world's are a disc)";
     }
-    if (!world.walls.empty() || !world.obstacles.empty())
-      navigation.not_spheres = "it has walls or polygons besides its discs";
+    if (!only_discs)
+      navigation.not_spheres = w.cspace().robot == RoundCSpace::Robot::polygon
+                                   ? "its robot is a polygon (whose C-obstacles of discs are rounded polygons)"
+                                   : "it has walls or polygons besides its discs";
     const double diameter = 2 * navigation.world.radius;
     navigation.step = o.step > 0 ? o.step : (diameter > 0 ? diameter : 1) / 200;
     navigation.clearance = [this](Vec2 q) {

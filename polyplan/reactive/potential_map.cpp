@@ -54,13 +54,10 @@ BoxGrid box_around(const RoundWorld& round, std::size_t cells_per_axis) {
   const World& world = round.world();
   if (world.bounds) return box_of_bounds(*world.bounds, cells_per_axis);
   if (world.disc_bounds) return box_around_points(square_round(*world.disc_bounds), cells_per_axis);
-  std::vector<Vec2> points;
-  for (const Disc& d : world.discs)
-    for (const Vec2& corner : square_round(d)) points.push_back(corner);
-  for (const Wall& wall : world.walls)
-    for (const ExactPoint& p : wall) points.push_back(approximate(p));
-  for (const PolygonWithHoles& polygon : world.obstacles)
-    for (const ExactPoint& p : polygon.outer) points.push_back(approximate(p));
+  std::vector<Vec2> points;  // the square round every point of every core, at its radius
+  for (const RoundCore& core : round.cspace().obstacles)
+    for (const ExactPoint& p : core.kind == RoundCore::Kind::polygon ? core.rings[0] : core.points)
+      for (const Vec2& corner : square_round({p, core.radius})) points.push_back(corner);
   for (const ExactPoint& p : query_points(world)) points.push_back(approximate(p));
   return box_around_points(points, cells_per_axis);
 }

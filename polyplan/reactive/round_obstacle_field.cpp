@@ -5,15 +5,19 @@
 namespace polyplan {
 
 RoundObstacleField::RoundObstacleField(const RoundWorld& round) {
-  const World& world = round.world();
-  robot_ = world.robot.disc ? to_double(*world.robot.disc) : 0;
-  for (const Disc& d : world.discs) discs_.push_back({approximate(d.center), to_double(d.radius) + robot_});
-  for (const Wall& wall : world.walls) {
-    std::vector<Vec2>& line = walls_.emplace_back();
-    for (const ExactPoint& p : wall) line.push_back(approximate(p));
+  for (const RoundCore& core : round.cspace().obstacles) {
+    const double radius = to_double(core.radius);
+    if (core.kind == RoundCore::Kind::point) discs_.push_back({approximate(core.points[0]), radius});
+    if (core.kind == RoundCore::Kind::wall) {
+      std::vector<Vec2> line;
+      for (const ExactPoint& p : core.points) line.push_back(approximate(p));
+      walls_.push_back({std::move(line), radius});
+    }
+    if (core.kind == RoundCore::Kind::polygon)
+      polygons_.push_back(
+          {rounded_rings(PolygonWithHoles{core.rings[0], {core.rings.begin() + 1, core.rings.end()}}), radius});
   }
-  for (const PolygonWithHoles& p : world.obstacles) polygons_.push_back(rounded_rings(p));
-  // The reference disc and box are the bounds already shrunk by the robot's radius.
+  // The reference disc and box are the bounds already shrunk by the robot.
   if (const auto& disc = round.reference_disc())
     disc_bounds_ = RoundDisc{approximate(disc->center), to_double(disc->radius)};
   if (const auto& box = round.reference_box())
@@ -22,11 +26,11 @@ RoundObstacleField::RoundObstacleField(const RoundWorld& round) {
 
 std::vector<NearestPoint> RoundObstacleField::nearest_points(Vec2 q) const {
   std::vector<NearestPoint> out;
-  // A disc repels as its centre does, the robot's rim and the disc's radius nearer.
+  // A disc repels as its centre does, its grown radius nearer.
   for (const RoundDisc& d : discs_)
     out.push_back(grown(q, {std::hypot(q.x - d.centre.x, q.y - d.centre.y), d.centre, true}, d.radius));
-  for (const std::vector<Vec2>& line : walls_) out.push_back(grown(q, nearest_on_polyline(q, line), robot_));
-  for (const auto& rings : polygons_) out.push_back(grown(q, nearest_on_rings(q, rings), robot_));
+  for (const auto& [line, radius] : walls_) out.push_back(grown(q, nearest_on_polyline(q, line), radius));
+  for (const auto& [rings, radius] : polygons_) out.push_back(grown(q, nearest_on_rings(q, rings), radius));
   if (disc_bounds_) {
     // The circle's nearest point lies on the ray from its centre through q (any ray at the centre);
     // inside, the distance curves about that centre the other way (a negative offset).

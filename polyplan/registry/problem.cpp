@@ -72,7 +72,7 @@ const RoundWorld& Problem::round_world() const {
 void Problem::prepare() const {
   if (!world() || world()->robot.car) return;  // a car's planners build their own
   if (round_features(*world()).empty()) cspace();
-  else if (world()->robot.parts.empty()) round_world();
+  else round_world();
 }
 
 }  // namespace polyplan

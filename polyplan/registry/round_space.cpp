@@ -1,7 +1,8 @@
-// The front door of a point or disc robot among discs, walls and polygons (docs/architecture.md
-// "The front door"): the worlds with round things and thin walls (World::round_features) and a
-// robot without parts, which the translating robot's door leaves to it; a planner of a polygon
-// world alone (visibility) is refused such a world, naming what it has (world_queries.hpp).
+// The front door of a point, disc or translating polygon robot among discs, walls and polygons
+// (docs/architecture.md "The front door"): the worlds with round things and thin walls
+// (World::round_features), which the translating robot's door leaves to it; their C-space is
+// geometry/round_cspace.hpp's. A planner of polygon worlds alone is refused such a world, naming
+// what it has (world_queries.hpp).
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/detail/space_door.hpp>
 #include <polyplan/registry/detail/world_door.hpp>
@@ -15,7 +16,7 @@ class RoundDoor final : public WorldDoor<RoundRobot> {
  public:
   bool plans(const Problem& problem) const override {
     const World* world = problem.world();
-    return world && !world->robot.car && world->robot.parts.empty() && !round_features(*world).empty();
+    return world && !world->robot.car && !round_features(*world).empty();
   }
   const RoundWorld& built_from(const Problem& problem) const override { return problem.round_world(); }
 
@@ -23,7 +24,7 @@ class RoundDoor final : public WorldDoor<RoundRobot> {
     Query q = world_query(spec);
     for (const auto& [what, theta] : {std::pair{"start", q.start_theta}, std::pair{"goal", q.goal_theta}})
       if (turned(theta))
-        throw InputError(std::string(what) + ": an orientation; a point or disc robot has none to turn");
+        throw InputError(std::string(what) + ": an orientation; among discs and walls a robot translates only");
     return q;
   }
 

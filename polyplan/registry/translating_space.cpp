@@ -10,11 +10,10 @@ namespace {
 
 class TranslatingDoor final : public WorldDoor<TranslatingRobot> {
  public:
-  // Not a point or disc robot among discs or walls: the round robot's door plans that
-  // (round_space.cpp); a polygon robot among them comes here to be refused, naming them.
+  // A polygon world: among discs or walls the round robot's door plans (round_space.cpp).
   bool plans(const Problem& problem) const override {
     const World* world = problem.world();
-    return world && !world->robot.car && (round_features(*world).empty() || !world->robot.parts.empty());
+    return world && !world->robot.car && round_features(*world).empty();
   }
   const CSpace& built_from(const Problem& problem) const override { return problem.cspace(); }
 

@@ -32,9 +32,7 @@ void require_planner_for_changes(const World& world, std::string_view planner) {
 // Discs, walls, disc bounds or a disc robot, for a planner that plans among polygons only.
 void require_planner_for_round_features(const World& world, std::string_view planner) {
   const std::string what = round_features_text(world);
-  // A polygon robot's C-obstacles of discs are rounded polygons: no planner plans them yet.
-  const std::vector<std::string> able =
-      world.robot.parts.empty() ? planners_for_round_worlds() : std::vector<std::string>{};
+  const std::vector<std::string> able = planners_for_round_worlds();
   if (what.empty() || std::find(able.begin(), able.end(), planner) != able.end()) return;
   std::string names;
   for (const std::string& name : able) names += (names.empty() ? "" : ", ") + name;

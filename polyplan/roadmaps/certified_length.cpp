@@ -84,7 +84,7 @@ LengthBounds angle(const AlgebraicPoint& a, const AlgebraicPoint& b) {
 
 LengthBounds segment_length(const AlgebraicPoint& a, const AlgebraicPoint& b) {
   LengthBounds out;
-  CORE::sqrt(squared(b - a)).doubleInterval(out.lower, out.upper);
+  root(squared(b - a)).doubleInterval(out.lower, out.upper);
   return out;
 }
 

@@ -26,7 +26,7 @@ using Obstacle = round_rules::Obstacle<Algebraic>;
 
 AP perpendicular(const AP& v) { return {-v.y, v.x}; }
 AP times(const AP& v, const Algebraic& t) { return {v.x * t, v.y * t}; }
-Algebraic length(const AP& v) { return CORE::sqrt(squared(v)); }
+Algebraic length(const AP& v) { return root(squared(v)); }
 Algebraic absolute(const Algebraic& x) { return sign_of(x) < 0 ? -x : x; }
 
 void add_vertices(const std::vector<ExactPoint>& points, const std::string& name, const Rational& r,
@@ -49,7 +49,7 @@ Algebraic distance_to_arc(const Arc& arc, const AP& p) {
 }
 
 Algebraic distance_to_segment(const Arc& arc, const Seg<Algebraic>& s) {
-  std::vector<Algebraic> candidates{CORE::sqrt(squared_distance(s, arc.from)), CORE::sqrt(squared_distance(s, arc.to)),
+  std::vector<Algebraic> candidates{root(squared_distance(s, arc.from)), root(squared_distance(s, arc.to)),
                                     distance_to_arc(arc, s.a), distance_to_arc(arc, s.b)};
   const AP d = s.b - s.a, &c = arc.circle->centre;
   const Algebraic length2 = squared(d), &rho = arc.circle->radius;
@@ -59,11 +59,11 @@ Algebraic distance_to_segment(const Arc& arc, const Seg<Algebraic>& s) {
     const Algebraic h2 = squared(normal);
     const auto inside = [](const Algebraic& u) { return sign_of(u) >= 0 && u <= Algebraic(1); };
     if (h2 <= rho * rho) {  // the line meets the circle: where, if inside the segment and the arc
-      const Algebraic w = CORE::sqrt((rho * rho - h2) / length2);
+      const Algebraic w = root((rho * rho - h2) / length2);
       for (const Algebraic& u : {t - w, t + w})
         if (inside(u) && spans(arc, s.a + times(d, u) - c)) candidates.push_back(Algebraic(0));
     } else if (inside(t) && spans(arc, normal)) {
-      candidates.push_back(CORE::sqrt(h2) - rho);
+      candidates.push_back(root(h2) - rho);
     }
   }
   return *std::min_element(candidates.begin(), candidates.end());
@@ -132,19 +132,15 @@ std::optional<std::string> leaves_bounds(const Rules& rules, const Arc& arc) {
 
 }  // namespace
 
-std::vector<Circle> circles_of(const World& world) {
-  const Rational r = world.robot.disc.value_or(0);
+std::vector<Circle> circles_of(const RoundCSpace& space) {
   std::vector<Circle> out;
-  for (std::size_t i = 0; i < world.discs.size(); ++i)
-    out.push_back({algebraic(world.discs[i].center), algebraic(world.discs[i].radius + r), world.discs[i].center,
-                   world.discs[i].radius + r, "discs[" + std::to_string(i) + "]"});
-  for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
-    add_vertices(world.obstacles[i].outer, world.obstacle_names[i], r, out);
-    for (std::size_t h = 0; h < world.obstacles[i].holes.size(); ++h)
-      add_vertices(world.obstacles[i].holes[h], world.obstacle_names[i] + " hole " + std::to_string(h), r, out);
+  for (const RoundCore& core : space.obstacles) {
+    if (core.kind == RoundCore::Kind::point)
+      out.push_back({algebraic(core.points[0]), algebraic(core.radius), core.points[0], core.radius, core.name});
+    else add_vertices(core.points, core.name, core.radius, out);
+    for (std::size_t h = 0; h < core.rings.size(); ++h)
+      add_vertices(core.rings[h], h == 0 ? core.name : core.name + " hole " + std::to_string(h - 1), core.radius, out);
   }
-  for (std::size_t i = 0; i < world.walls.size(); ++i)
-    add_vertices(world.walls[i], "walls[" + std::to_string(i) + "]", r, out);
   return out;
 }
 
@@ -161,10 +157,10 @@ std::vector<Tangent> common_tangents(const Circle& a, const Circle& b) {
     if (s < 0 && (a_point || b_point)) continue;  // the outer tangents again
     const Algebraic k = a.radius - Algebraic(s) * b.radius, room = d2 - k * k;
     if (sign_of(room) < 0) continue;
-    const Algebraic root = CORE::sqrt(room);
+    const Algebraic w = root(room);
     for (const int side : {1, -1}) {
       if (side < 0 && (sign_of(room) == 0 || (a_point && b_point))) continue;  // one line
-      const AP n = times(times(d, k) + times(perpendicular(d), Algebraic(side) * root), Algebraic(1) / d2);
+      const AP n = times(times(d, k) + times(perpendicular(d), Algebraic(side) * w), Algebraic(1) / d2);
       out.push_back({a.centre + times(n, a.radius), b.centre + times(n, Algebraic(s) * b.radius)});
     }
   }

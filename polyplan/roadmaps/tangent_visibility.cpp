@@ -92,8 +92,8 @@ struct TangentVisibilityGraph::Impl {
   double build_seconds = 0;
 
   Impl(const RoundWorld& w, SearchOptions s)
-      : world(w), rules(w.world(), [](const Rational& q) { return algebraic(q); }), prefilter(rules),
-        circles(tangent::circles_of(w.world())), search(s) {
+      : world(w), rules(w.cspace(), [](const Rational& q) { return algebraic(q); }), prefilter(rules),
+        circles(tangent::circles_of(w.cspace())), search(s) {
     const Stopwatch building;
     for (std::size_t i = 0; i < circles.size(); ++i)
       for (std::size_t j = i + 1; j < circles.size(); ++j) add_chords(circles[i], i, circles[j], j, chords);

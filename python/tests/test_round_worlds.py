@@ -82,3 +82,21 @@ def test_the_program_checks_a_path_among_walls(tmp_path):
     path.write_text('{"path": [[1, 1], [3.5, 3.5], [5, 3.5], [7, 4.5], [10.5, 4.5], [11, 7]]}')
     code, out, err = run_cli("check", data("worlds", "disc_robot_floor_plan.json"), str(path))
     assert code == 0, (out, err)
+
+
+def test_a_polygon_robot_among_discs_and_walls():
+    # A 2×2 square round a unit disc: its C-obstacle is the square [-1, 1]² rounded by 1, and the
+    # shortest way over it is 10 + 4·atan(1/4) (tangents of 4, two arcs, the top side of 2).
+    world = polyplan.World.from_dict({"bounds": [-10, -10, 10, 10],
+                                      "robot": {"parts": [[[-1, -1], [1, -1], [1, 1], [-1, 1]]]},
+                                      "discs": [{"center": [0, 0], "radius": 1}], "start": [-5, 0], "goal": [5, 0]})
+    plan = polyplan.plan(world)[0]
+    expected = 10 + 4 * np.arctan(0.25)
+    assert plan.status == "solved" and abs(plan.length - expected) <= 1e-12 * expected
+    assert [p["kind"] for p in plan.pieces] == ["segment", "arc", "segment", "arc", "segment"]
+    # The rectangle lies flat through the floor plan's doorways; no straight line through a wall.
+    floor = polyplan.read_world(data("worlds", "polygon_robot_floor_plan.json"))
+    plan = polyplan.plan(floor, planner="rrtconnect", seed=1)[0]
+    assert plan.status == "solved" and polyplan.check(floor, plan) == (True, "")
+    valid, why = polyplan.check(floor, np.array([[1, 1], [11, 7]]))
+    assert not valid and "walls[" in why, why

@@ -81,14 +81,28 @@ TEST(RoundWorldCheck, PolygonsTouchingAtACornerLeaveNoPassage) {
   EXPECT_FALSE(valid(w, {pt("1", "3"), pt("3", "1")}));  // through both squares
 }
 
-TEST(RoundWorldCheck, APolygonRobotIsRefusedNamingIt) {
+TEST(RoundWorldCheck, APolygonRobotMayTouchADiscButNotOverlapIt) {
+  // The triangle (0, 0), (1, 0), (0, 1) about its corner, a unit disc at (5, 5): at (3, 4) it keeps
+  // √2 away; at (3, 5) its vertex (4, 5) touches the disc's leftmost point (contact is free), and
+  // sliding along x = 3 it touches there only; 1e-9 further right it overlaps.
   const World w =
       world_from(R"({"robot": {"parts": [[[0, 0], [1, 0], [0, 1]]]}, "discs": [{"center": [5, 5], "radius": 1}]})");
+  const RoundWorld checker(w);
+  EXPECT_FALSE(checker.config_not_free({3, 4}).has_value());
+  EXPECT_FALSE(checker.config_not_free({3, 5}).has_value());
+  EXPECT_TRUE(checker.config_not_free(pt("3.000000001", "5")).has_value());
+  EXPECT_TRUE(valid(w, {pt("3", "0"), pt("3", "10")}));
+  EXPECT_FALSE(valid(w, {pt("3.000000001", "0"), pt("3.000000001", "10")}));
+}
+
+TEST(RoundWorldCheck, APolygonRobotInDiscBoundsIsRefusedNamingIt) {
+  const World w = world_from(R"({"robot": {"parts": [[[0, 0], [1, 0], [0, 1]]]},
+                                 "obstacles": [], "bounds": {"center": [5, 5], "radius": 5}})");
   try {
     RoundWorld checker(w);
     ADD_FAILURE() << "accepted";
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("test.json: robot: a polygon robot among discs or walls"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("test.json: bounds: a polygon robot in disc bounds"), std::string::npos)
         << e.what();
   }
 }

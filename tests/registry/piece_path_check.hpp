@@ -2,10 +2,10 @@
 // An independent check of a path of pieces (segments and arcs: PlanReport::pieces) in doubles,
 // written apart from the planner's exact one: the pieces join the path's points in order, their
 // lengths add up to the report's, an arc's ends lie on its circle, and points every 1/400 of each
-// piece keep out of every disc, wall and polygon grown by the robot's radius, up to 1e-9 (the
-// doubles' own error); the start and goal are the query's. And the segment pieces as printed, their
-// ends read as exact rationals, pass the exact check (`check`, the front door's checker): the
-// planner prints a touching point outside its circle, never inside.
+// piece keep out of every disc, wall and polygon grown by the robot's radius (a polygon robot placed
+// there overlaps none of them), up to 1e-9 (the doubles' own error); the start and goal are the query's. And the
+// segment pieces as printed, their ends read as exact rationals, pass the exact check (`check`, the front door's
+// checker): the planner prints a touching point outside its circle, never inside.
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/rational.hpp>
 #include <polyplan/geometry/world.hpp>
@@ -30,8 +30,80 @@ inline double segment_distance(const XY& p, const XY& a, const XY& b) {
 
 inline XY xy(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
 
-// How far inside the nearest obstacle p is (> 0: inside), doubles.
+using Polygon = std::vector<std::vector<XY>>;  // rings
+
+// The distance from p to the polygon's boundary, negative inside it.
+inline double signed_distance(const XY& p, const Polygon& polygon) {
+  double nearest = 1e300;
+  bool inside = false;
+  for (const std::vector<XY>& ring : polygon)
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+      const XY a = ring[k], b = ring[(k + 1) % ring.size()];
+      nearest = std::min(nearest, segment_distance(p, a, b));
+      if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+        inside = !inside;
+    }
+  return inside ? -nearest : nearest;
+}
+
+inline Polygon polygon_of(const PolygonWithHoles& polygon) {
+  std::vector<Ring> rings{polygon.outer};
+  rings.insert(rings.end(), polygon.holes.begin(), polygon.holes.end());
+  Polygon out;
+  for (const Ring& ring : rings) {
+    std::vector<XY>& r = out.emplace_back();
+    for (const ExactPoint& v : ring) r.push_back(xy(v));
+  }
+  return out;
+}
+
+// Points every 1/40 along the polygon's boundary (its vertices among them).
+inline std::vector<XY> boundary_points(const Polygon& polygon) {
+  std::vector<XY> out;
+  for (const std::vector<XY>& ring : polygon)
+    for (std::size_t k = 0; k < ring.size(); ++k)
+      for (int s = 0; s < 40; ++s) {
+        const XY a = ring[k], b = ring[(k + 1) % ring.size()];
+        out.push_back({a[0] + s / 40.0 * (b[0] - a[0]), a[1] + s / 40.0 * (b[1] - a[1])});
+      }
+  return out;
+}
+
+// A polygon robot's parts placed with their reference point at p: how far the deepest disc, wall or
+// polygon reaches into one (> 0: it overlaps), doubles; walls and polygons sampled along their
+// edges, each polygon's boundary against the robot's and the robot's against it.
+inline double polygon_robot_depth(const World& world, const XY& p) {
+  std::vector<Polygon> robot;
+  for (const Ring& part : world.robot.parts) {
+    std::vector<XY> placed;
+    for (const ExactPoint& v : part) placed.push_back({to_double(v.x) + p[0], to_double(v.y) + p[1]});
+    robot.push_back({placed});
+  }
+  const auto into_robot = [&](const XY& q) {
+    double d = 1e300;
+    for (const Polygon& part : robot) d = std::min(d, signed_distance(q, part));
+    return -d;
+  };
+  double worst = -1e300;
+  for (const Disc& d : world.discs) worst = std::max(worst, to_double(d.radius) + into_robot(xy(d.center)));
+  for (const Wall& w : world.walls)
+    for (std::size_t k = 0; k + 1 < w.size(); ++k)
+      for (int s = 0; s <= 200; ++s) {
+        const XY a = xy(w[k]), b = xy(w[k + 1]);
+        worst = std::max(worst, into_robot({a[0] + s / 200.0 * (b[0] - a[0]), a[1] + s / 200.0 * (b[1] - a[1])}));
+      }
+  for (const PolygonWithHoles& obstacle : world.obstacles) {
+    const Polygon o = polygon_of(obstacle);
+    for (const XY& q : boundary_points(o)) worst = std::max(worst, into_robot(q));
+    for (const Polygon& part : robot)
+      for (const XY& q : boundary_points(part)) worst = std::max(worst, -signed_distance(q, o));
+  }
+  return worst;
+}
+
+// How far inside the nearest obstacle the robot at p is (> 0: inside), doubles.
 inline double depth(const World& world, const XY& p) {
+  if (!world.robot.parts.empty()) return polygon_robot_depth(world, p);
   const double r = world.robot.disc ? to_double(*world.robot.disc) : 0.0;
   double worst = -1e300;
   for (const Disc& d : world.discs)
@@ -40,21 +112,8 @@ inline double depth(const World& world, const XY& p) {
   for (const Wall& w : world.walls)
     for (std::size_t k = 0; k + 1 < w.size(); ++k)
       worst = std::max(worst, r - segment_distance(p, xy(w[k]), xy(w[k + 1])));
-  for (const PolygonWithHoles& polygon : world.obstacles) {
-    double nearest = 1e300;
-    bool inside = false;
-    const auto ring_pass = [&](const Ring& ring) {
-      for (std::size_t k = 0; k < ring.size(); ++k) {
-        const XY a = xy(ring[k]), b = xy(ring[(k + 1) % ring.size()]);
-        nearest = std::min(nearest, segment_distance(p, a, b));
-        if ((a[1] > p[1]) != (b[1] > p[1]) && p[0] < a[0] + (p[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
-          inside = !inside;
-      }
-    };
-    ring_pass(polygon.outer);
-    for (const Ring& hole : polygon.holes) ring_pass(hole);
-    worst = std::max(worst, inside ? r + nearest : r - nearest);
-  }
+  for (const PolygonWithHoles& polygon : world.obstacles)
+    worst = std::max(worst, r - signed_distance(p, polygon_of(polygon)));
   return worst;
 }
 

@@ -22,6 +22,7 @@
 // directions, with the four axes among them, are less than π apart, so their sum lies strictly
 // between them: a direction of the field).
 #include <polyplan/geometry/rational.hpp>
+#include <polyplan/geometry/round_cspace.hpp>
 #include <polyplan/geometry/world.hpp>
 
 #include <algorithm>
@@ -34,10 +35,16 @@
 
 namespace polyplan::round_rules {
 
-// A field's sign of a number and how a message prints one: specialised where the field is used
-// (round_world_check.cpp for Rational, roadmaps/detail/algebraic.hpp for CORE's numbers).
+// A field's sign of a number and how a message prints one: GMP's rationals here, CORE's numbers in
+// roadmaps/detail/algebraic.hpp.
 template <class N>
 struct Field;
+
+template <>
+struct Field<Rational> {
+  static int sign(const Rational& x) { return sgn(x); }
+  static std::string text(const Rational& x) { return to_string(x); }
+};
 
 template <class N>
 int sign_of(const N& x) {
@@ -334,51 +341,39 @@ class RoundRules {
   using Vector = P<N>;
   using Core = typename Obstacle<N>::Core;
 
-  // `field` takes a rational of the world into N. A polygon robot is refused by the caller.
+  // `field` takes a rational of the C-space into N.
   template <class Field>
-  RoundRules(const World& world, Field field) {
+  RoundRules(const RoundCSpace& space, Field field) : robot_(space.robot) {
     const auto point = [&](const ExactPoint& p) { return Point{field(p.x), field(p.y)}; };
     const auto points = [&](const std::vector<ExactPoint>& ps) {
       std::vector<Point> out;
       for (const ExactPoint& p : ps) out.push_back(point(p));
       return out;
     };
-    robot_ = field(world.robot.disc.value_or(0));
-    for (std::size_t i = 0; i < world.obstacles.size(); ++i) {
-      Obstacle<N> o{Core::polygon, {}, {}, {}, {}, {}, robot_, world.obstacle_names[i]};
-      o.rings.push_back(points(world.obstacles[i].outer));
-      for (const Ring& hole : world.obstacles[i].holes) o.rings.push_back(points(hole));
-      obstacles_.push_back(std::move(o));
+    for (const RoundCore& core : space.obstacles) {
+      const N radius = field(core.radius);
+      if (core.kind == RoundCore::Kind::point)
+        obstacles_.push_back({Core::point, point(core.points[0]), {}, {}, {}, {}, radius, core.name});
+      if (core.kind == RoundCore::Kind::wall && sign_of(radius) == 0)
+        obstacles_.push_back({Core::wall, {}, {}, {}, {}, points(core.points), radius, core.name});
+      if (core.kind == RoundCore::Kind::wall && sign_of(radius) > 0)  // a grown wall: its pieces
+        for (std::size_t k = 0; k + 1 < core.points.size(); ++k)
+          obstacles_.push_back(
+              {Core::segment, {}, point(core.points[k]), point(core.points[k + 1]), {}, {}, radius, core.name});
+      if (core.kind == RoundCore::Kind::polygon) {
+        Obstacle<N> o{Core::polygon, {}, {}, {}, {}, {}, radius, core.name};
+        for (const Ring& ring : core.rings) o.rings.push_back(points(ring));
+        obstacles_.push_back(std::move(o));
+      }
     }
-    for (std::size_t i = 0; i < world.discs.size(); ++i)
-      obstacles_.push_back({Core::point,
-                            point(world.discs[i].center),
-                            {},
-                            {},
-                            {},
-                            {},
-                            field(world.discs[i].radius) + robot_,
-                            "discs[" + std::to_string(i) + "]"});
-    for (std::size_t i = 0; i < world.walls.size(); ++i) {
-      const std::vector<Point> wall = points(world.walls[i]);
-      const std::string name = "walls[" + std::to_string(i) + "]";
-      if (sign_of(robot_) == 0) obstacles_.push_back({Core::wall, {}, {}, {}, {}, wall, N(0), name});
-      else
-        for (std::size_t k = 0; k + 1 < wall.size(); ++k)
-          obstacles_.push_back({Core::segment, {}, wall[k], wall[k + 1], {}, {}, robot_, name});
-    }
-    if (world.bounds) {
-      const Bounds& b = *world.bounds;
-      box_ = {field(b.xmin) + robot_, field(b.ymin) + robot_, field(b.xmax) - robot_, field(b.ymax) - robot_};
-    }
-    if (world.disc_bounds) {
-      disc_centre_ = point(world.disc_bounds->center);
-      disc_radius_ = field(world.disc_bounds->radius) - robot_;
+    if (const auto& b = space.box) box_ = {field(b->xmin), field(b->ymin), field(b->xmax), field(b->ymax)};
+    if (space.disc) {
+      disc_centre_ = point(space.disc->center);
+      disc_radius_ = field(space.disc->radius);
     }
   }
 
   const std::vector<Obstacle<N>>& obstacles() const { return obstacles_; }
-  const N& robot() const { return robot_; }
   // The box the robot's centre keeps to (xmin, ymin, xmax, ymax), and the disc (centre, radius).
   const std::optional<std::array<N, 4>>& box() const { return box_; }
   const std::optional<Point>& disc_centre() const { return disc_centre_; }
@@ -490,9 +485,7 @@ class RoundRules {
             if (sign_of(d2) < 0 || e2 < d2) d2 = e2;
           }
       }
-      if (d2 < o.radius * o.radius)
-        return sign_of(robot_) == 0 ? "the motion enters " + o.name
-                                    : "the motion comes nearer " + o.name + " than the robot's radius allows";
+      if (d2 < o.radius * o.radius) return overlap_text(o);
     }
     return std::nullopt;
   }
@@ -514,8 +507,15 @@ class RoundRules {
     return out;
   }
 
+  // Why coming nearer o than its radius is not allowed, in the robot's terms.
+  std::string overlap_text(const Obstacle<N>& o) const {
+    if (robot_ == RoundCSpace::Robot::polygon) return "the robot overlaps " + o.name + " on the way";
+    if (robot_ == RoundCSpace::Robot::point) return "the motion enters " + o.name;
+    return "the motion comes nearer " + o.name + " than the robot's radius allows";
+  }
+
   std::vector<Obstacle<N>> obstacles_;
-  N robot_;
+  RoundCSpace::Robot robot_;
   std::optional<std::array<N, 4>> box_;
   std::optional<Point> disc_centre_;
   N disc_radius_;

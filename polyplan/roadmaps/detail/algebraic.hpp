@@ -17,6 +17,17 @@ using AlgebraicPoint = round_rules::P<Algebraic>;
 inline Algebraic algebraic(const Rational& q) { return Algebraic(CORE::BigRat(q.get_mpq_t())); }
 inline AlgebraicPoint algebraic(const ExactPoint& p) { return {algebraic(p.x), algebraic(p.y)}; }
 
+// The square root of x, which is ≥ 0 exactly. CORE's floating-point filter complains when the
+// double it carries for x is below 0 though x is not (x = 0 or nearly so, rounded the wrong way):
+// it appends a line to a file "Core_Diagnostics" in the working directory, and exits the program
+// where it cannot write one. There the root is taken as √|x·x|^(1/2), whose filter doubles are
+// squares: the same number, a node of higher degree (so slower to sign), and no complaint.
+inline Algebraic root(const Algebraic& x) {
+  if (x.sign() == 0) return Algebraic(0);
+  if (x.Rep()->ffVal.getValue() > 0) return CORE::sqrt(x);
+  return CORE::sqrt(CORE::sqrt(x * x));
+}
+
 // The nearest doubles, as a message or the JSON prints a point.
 inline double approximate(const Algebraic& x) { return x.doubleValue(); }
 

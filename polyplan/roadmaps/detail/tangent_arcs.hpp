@@ -21,9 +21,9 @@ struct Circle {
   std::string name;         // "discs[2]", "obstacles[0] vertex 3", for messages
 };
 
-// The circles of a point or disc robot's world: every disc grown by the robot's radius, and every
-// vertex of a polygon (outer ring and holes) and of a wall with the robot's radius.
-std::vector<Circle> circles_of(const World& world);
+// The circles of a round C-space: every point core with its radius, and every vertex of a wall or
+// a polygon (outer ring and holes) with the core's radius (0: a corner the path turns at).
+std::vector<Circle> circles_of(const RoundCSpace& space);
 
 // A straight motion from a touching point of one circle to one of another.
 struct Tangent {
