@@ -1,9 +1,12 @@
 #include <polyplan/reactive/boundary_walk.hpp>
 
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/round_query.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace polyplan::walk {
 
@@ -62,27 +65,45 @@ std::vector<std::vector<Point>> boundary_cycles(const CSpace& cspace) {
 
 Boundary::Boundary(const CSpace& cspace) : cspace_(&cspace), cycles_(boundary_cycles(cspace)) {}
 
+PathCheck Boundary::check_path(const std::vector<Point>& path) const {
+  return cspace_ ? polyplan::check_path(*cspace_, path) : round_->check_path(path);
+}
+
+std::optional<std::string> Boundary::query_not_free(const Query& query) const {
+  return cspace_ ? cspace_->query_not_free(query) : polyplan::query_not_free(*round_, query);
+}
+
+const CSpace& Boundary::cspace() const {
+  if (!cspace_) throw std::logic_error("walk::Boundary::cspace: the boundary of a round world has no polygon C-space");
+  return *cspace_;
+}
+
 std::optional<Point> Boundary::first_hit(const Point& from, const Point& to) const {
-  if (check_segment(*cspace_, from, to).valid) return std::nullopt;
+  const auto free = [&](const Point& end) { return check_path({from, end}).valid; };
+  if (free(to)) return std::nullopt;
   std::vector<Rational> ts{0, 1};
   for (std::size_t c = 0; c < cycles_.size(); ++c)
     for (std::size_t i = 0; i < cycles_[c].size(); ++i) meetings(from, to, vertex(c, i), vertex(c, i + 1), ts);
   std::sort(ts.begin(), ts.end());
   ts.erase(std::unique(ts.begin(), ts.end()), ts.end());
   for (std::size_t k = 0; k + 1 < ts.size(); ++k)
-    if (!check_segment(*cspace_, from, along(from, to, ts[k + 1])).valid) return along(from, to, ts[k]);
+    if (!free(along(from, to, ts[k + 1]))) return along(from, to, ts[k]);
   return from;  // not reached: the whole way would be free
 }
 
-std::optional<Edge> Boundary::edge_at(const Point& p) const {
+std::optional<Edge> Boundary::edge_at(const Point& p, const Point& heading) const {
+  std::optional<Edge> first;
   for (std::size_t c = 0; c < cycles_.size(); ++c)
     for (std::size_t i = 0; i < cycles_[c].size(); ++i) {
       const Point &a = vertex(c, i), &b = vertex(c, i + 1);
       if (p == b || cross(a, b, p) != 0) continue;
       const Rational s = dot(a, p, b);
-      if (s >= 0 && s < squared(a, b)) return Edge{c, i};
+      if (s < 0 || s >= squared(a, b)) continue;
+      const Point ahead{b.x - a.x, b.y - a.y};
+      if (cross({0, 0}, ahead, heading) < 0) return Edge{c, i};  // heading into the obstacle on its right
+      if (!first) first = Edge{c, i};
     }
-  return std::nullopt;
+  return first;
 }
 
 double Boundary::perimeter(std::size_t cycle) const {
@@ -92,11 +113,19 @@ double Boundary::perimeter(std::size_t cycle) const {
 }
 
 std::size_t Boundary::crossings(std::size_t cycle, const Point& start, const Point& goal) const {
-  std::vector<Rational> ts;
-  for (std::size_t i = 0; i < cycles_[cycle].size(); ++i)
-    meetings(start, goal, vertex(cycle, i), vertex(cycle, i + 1), ts);
-  std::sort(ts.begin(), ts.end());
-  return static_cast<std::size_t>(std::unique(ts.begin(), ts.end()) - ts.begin());
+  // Where, and how an edge crossing the line properly crosses it (1: left to right, 2: right to
+  // left, 0: it ends on the line): a wall's two sides cross at one point both ways.
+  std::vector<std::pair<Rational, int>> met;
+  for (std::size_t i = 0; i < cycles_[cycle].size(); ++i) {
+    const Point &a = vertex(cycle, i), &b = vertex(cycle, i + 1);
+    const int sa = sgn(cross(start, goal, a)), sb = sgn(cross(start, goal, b));
+    const int way = sa * sb < 0 ? (sa > 0 ? 1 : 2) : 0;
+    std::vector<Rational> ts;
+    meetings(start, goal, a, b, ts);
+    for (const Rational& t : ts) met.emplace_back(t, way);
+  }
+  std::sort(met.begin(), met.end());
+  return static_cast<std::size_t>(std::unique(met.begin(), met.end()) - met.begin());
 }
 
 }  // namespace polyplan::walk

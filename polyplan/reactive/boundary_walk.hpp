@@ -3,7 +3,12 @@
 // with the free space on its left (so a robot walking one keeps the obstacle on its right), where
 // a straight way first meets them, and the edge a boundary point lies on. Everything exact: the
 // points are rational, and every answer comes from exact predicates and the exact segment test.
+// The boundary of a polygon world's C-space, or of a round world's whose C-obstacles are polygons
+// and walls (round_boundary.cpp: a wall is a cycle of both its sides).
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
+
+#include <polyplan/geometry/path_check.hpp>
 
 #include <cstddef>
 #include <optional>
@@ -35,10 +40,17 @@ struct Edge {
 
 class Boundary {
  public:
-  // `cspace` must outlive the boundary.
+  // The C-space (or the world) must outlive the boundary. A round world's is walked only when
+  // every C-obstacle is a polygon or a wall (no arcs): otherwise InputError naming the file and
+  // `who` (the planner).
   explicit Boundary(const CSpace& cspace);
+  Boundary(const RoundWorld& world, const std::string& who);
 
-  const CSpace& cspace() const { return *cspace_; }
+  // The exact checks of the C-space it bounds, and why a query's start or goal is not free.
+  PathCheck check_path(const std::vector<Point>& path) const;
+  std::optional<std::string> query_not_free(const Query& query) const;
+  // A polygon world's C-space (tangent-bug's visibility); std::logic_error for a round world.
+  const CSpace& cspace() const;
   const std::vector<std::vector<Point>>& cycles() const { return cycles_; }
   // Indices wrap round the cycle.
   const Point& vertex(std::size_t cycle, std::size_t i) const { return cycles_[cycle][i % cycles_[cycle].size()]; }
@@ -47,13 +59,17 @@ class Boundary {
   // set out at all); nullopt when the whole way is free.
   std::optional<Point> first_hit(const Point& from, const Point& to) const;
   // The edge the point lies on, starting there or passing through it; nullopt off the boundary.
-  std::optional<Edge> edge_at(const Point& p) const;
+  // Where several do (both sides of a wall, a pinch), the one a motion along `heading` runs into
+  // (the obstacle on its right ahead), if any.
+  std::optional<Edge> edge_at(const Point& p, const Point& heading = {0, 0}) const;
   double perimeter(std::size_t cycle) const;
-  // How often the segment start-goal meets a cycle (distinct points).
+  // How often the segment start-goal meets a cycle (distinct points; a wall met counts its two
+  // sides, as a thin obstacle's are met going in and coming out).
   std::size_t crossings(std::size_t cycle, const Point& start, const Point& goal) const;
 
  private:
-  const CSpace* cspace_;
+  const CSpace* cspace_ = nullptr;     // a polygon world's,
+  const RoundWorld* round_ = nullptr;  // or a round world's
   std::vector<std::vector<Point>> cycles_;
 };
 

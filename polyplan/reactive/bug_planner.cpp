@@ -15,7 +15,10 @@ namespace polyplan {
 
 using namespace walk;
 
-struct BugPlanner::Impl {
+namespace {
+
+// The planner's core, the same for both spaces: the walks over the boundary.
+struct BugWalks {
   Boundary boundary;
   BugKind kind;
   BugOptions options;
@@ -37,7 +40,9 @@ struct BugPlanner::Impl {
       std::sort(ts.begin(), ts.end());
       for (const Rational& t : ts) {
         const Point x = along(at, end, t);
-        if (!(squared(x, q.goal) < hit_distance)) continue;
+        // As near as the hit point only where it is the hit point on a wall's far side; and never
+        // heading off to the right of the edge walked (through a wall, whose point has two sides).
+        if (squared(x, q.goal) > hit_distance || cross(at, end, q.goal) < 0) continue;
         const auto blocked = first_hit(x, q.goal);
         if (blocked && *blocked == x) continue;
         if (!(x == at)) path.push_back(x);
@@ -60,9 +65,11 @@ struct BugPlanner::Impl {
     if (!(loop.back() == hit)) loop.push_back(hit);
     std::vector<double> arc{0};
     for (std::size_t k = 1; k < loop.size(); ++k) arc.push_back(arc.back() + distance(loop[k - 1], loop[k]));
-    // The nearest point: on each edge the foot of the perpendicular from the goal, or an end.
+    // The nearest point: on each edge the foot of the perpendicular from the goal, or an end; of
+    // equally near ones (both sides of a wall), one on an edge facing the goal.
     Point nearest = hit;
     Rational best = squared(hit, q.goal);
+    bool facing = false;
     std::size_t on = 0;
     double at_arc = 0;
     for (std::size_t k = 0; k + 1 < loop.size(); ++k) {
@@ -70,8 +77,9 @@ struct BugPlanner::Impl {
       if (a == b) continue;
       const Rational t = std::clamp(Rational(dot(a, q.goal, b) / squared(a, b)), Rational(0), Rational(1));
       const Point foot = along(a, b, t);
-      if (squared(foot, q.goal) < best)
-        best = squared(foot, q.goal), nearest = foot, on = k, at_arc = arc[k] + distance(a, foot);
+      const bool faces = cross(a, b, q.goal) > 0;
+      if (squared(foot, q.goal) < best || (squared(foot, q.goal) == best && faces && !facing))
+        best = squared(foot, q.goal), nearest = foot, on = k, at_arc = arc[k] + distance(a, foot), facing = faces;
     }
     path.insert(path.end(), loop.begin() + 1, loop.end());
     const double total = arc.back();
@@ -83,15 +91,34 @@ struct BugPlanner::Impl {
     if (!(path.back() == nearest)) path.push_back(nearest);
     return nearest;
   }
+
+  PlanReport<ExactPoint> plan(const Query& q, const QueryOptions& query_options) const;
 };
 
-BugPlanner::BugPlanner(const CSpace& cspace, BugKind kind, BugOptions options)
-    : impl_(std::make_unique<Impl>(Impl{Boundary(cspace), kind, options})) {}
+Boundary boundary_of(const CSpace& cspace, BugKind) { return Boundary(cspace); }
+Boundary boundary_of(const RoundWorld& world, BugKind kind) {
+  return Boundary(world, kind == BugKind::bug1 ? "bug1" : "bug2");
+}
 
-BugPlanner::~BugPlanner() = default;
+}  // namespace
 
-PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& query_options) {
-  const Impl& r = *impl_;
+template <class Space>
+struct BasicBugPlanner<Space>::Impl : BugWalks {};
+
+template <class Space>
+BasicBugPlanner<Space>::BasicBugPlanner(const typename Space::Problem& problem, BugKind kind, BugOptions options)
+    : impl_(std::make_unique<Impl>(Impl{{boundary_of(problem, kind), kind, options}})) {}
+
+template <class Space>
+BasicBugPlanner<Space>::~BasicBugPlanner() = default;
+
+template <class Space>
+PlanReport<ExactPoint> BasicBugPlanner<Space>::plan(const Query& q, const QueryOptions& query_options) {
+  return impl_->plan(q, query_options);
+}
+
+PlanReport<ExactPoint> BugWalks::plan(const Query& q, const QueryOptions& query_options) const {
+  const BugWalks& r = *this;
   const Stopwatch querying;
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
@@ -100,7 +127,7 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
   Walk walk(q.start);
   std::set<std::size_t> met;
   const auto finish = [&](bool arrived) {
-    report_walk(report, r.boundary.cspace(), walk, q, arrived, query_options.record, name);
+    report_walk(report, r.boundary, walk, q, arrived, query_options.record, name);
     double bound = distance(q.start, q.goal);
     for (const std::size_t c : met)
       bound += r.kind == BugKind::bug1
@@ -110,7 +137,7 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
     facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
-  if (auto why = r.boundary.cspace().query_not_free(q)) {
+  if (auto why = r.boundary.query_not_free(q)) {
     report.fail(PlanStatus::invalid_query, *why);
     return finish(false);
   }
@@ -126,7 +153,7 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
     }
     walk.to(*hit);
     walk.hits.push_back(*hit);
-    const auto edge = r.boundary.edge_at(*hit);
+    const auto edge = r.boundary.edge_at(*hit, {q.goal.x - at.x, q.goal.y - at.y});
     if (!edge) throw std::logic_error("bug planner: a hit point " + text(*hit) + " on no boundary edge");
     met.insert(edge->cycle);
     std::optional<Point> leave;
@@ -153,17 +180,24 @@ PlanReport<ExactPoint> BugPlanner::plan(const Query& q, const QueryOptions& quer
   return finish(true);
 }
 
-PlannerEntry<TranslatingRobot> bug_planner_entry(BugKind kind) {
+template <class Space>
+PlannerEntry<Space> bug_planner_entry(BugKind kind) {
   OptionTable<BugOptions> table;
   table.add("max-hits", &BugOptions::max_hits, "obstacles hit before the walk stops with status limit", at_least(1));
   const bool one = kind == BugKind::bug1;
-  return make_planner_entry<TranslatingRobot, BugOptions>(
+  return make_planner_entry<Space, BugOptions>(
       one ? "bug1" : "bug2",
       one ? "Bug1: to the goal, round each obstacle hit, leaving from its point nearest the goal (Lumelsky & Stepanov)"
           : "Bug2: along the start-goal line, round each obstacle hit until the line is met nearer the goal (Lumelsky "
             "& Stepanov)",
-      std::move(table),
-      [kind](const CSpace& cspace, const BugOptions& o) { return std::make_unique<BugPlanner>(cspace, kind, o); });
+      std::move(table), [kind](const typename Space::Problem& problem, const BugOptions& o) {
+        return std::make_unique<BasicBugPlanner<Space>>(problem, kind, o);
+      });
 }
+
+template class BasicBugPlanner<TranslatingRobot>;
+template class BasicBugPlanner<RoundRobot>;
+template PlannerEntry<TranslatingRobot> bug_planner_entry<TranslatingRobot>(BugKind);
+template PlannerEntry<RoundRobot> bug_planner_entry<RoundRobot>(BugKind);
 
 }  // namespace polyplan

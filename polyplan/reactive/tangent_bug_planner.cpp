@@ -185,7 +185,7 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
     if (query_options.record && !sensed.empty())
       report.recording.marks.push_back(
           {PlanMark<ExactPoint>::Kind::regions, "sensed (visibility within range) at the first stops", sensed});
-    report_walk(report, r.boundary.cspace(), walk, q, arrived, query_options.record, "tangent-bug");
+    report_walk(report, r.boundary, walk, q, arrived, query_options.record, "tangent-bug");
     facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
@@ -209,7 +209,7 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
     at = p;
     return true;
   };
-  if (auto why = r.boundary.cspace().query_not_free(q)) {
+  if (auto why = r.boundary.query_not_free(q)) {
     report.fail(PlanStatus::invalid_query, *why);
     return finish(false);
   }

@@ -18,7 +18,7 @@ void mark(PlanReport<ExactPoint>& report, const Walk& walk, const Query& query, 
 
 }  // namespace
 
-void report_walk(PlanReport<ExactPoint>& report, const CSpace& cspace, const Walk& walk, const Query& query,
+void report_walk(PlanReport<ExactPoint>& report, const Boundary& boundary, const Walk& walk, const Query& query,
                  bool arrived, bool record, const std::string& name) {
   report.facts.set(BugFacts::hits, fact_points(walk.hits));
   report.facts.set(BugFacts::leaves, fact_points(walk.leaves));
@@ -30,7 +30,7 @@ void report_walk(PlanReport<ExactPoint>& report, const CSpace& cspace, const Wal
   // Every point is exact and every run straight or along an edge, so this holds; checked all the
   // same, so that a mistake here is an answer that says so, never a path through an obstacle. A
   // walk that stopped short is returned too (where the robot got stuck), after the same check.
-  const PathCheck check = check_path(cspace, path);
+  const PathCheck check = boundary.check_path(path);
   if (check.valid) report.path = std::move(path);
   if (!arrived) return;
   if (!check.valid) {
@@ -39,8 +39,7 @@ void report_walk(PlanReport<ExactPoint>& report, const CSpace& cspace, const Wal
   }
   report.succeed();
   report.length = euclidean_length(report.path);
-  report.certificate = {
-      true, "exact path check (arrangement zone walk) of the straight runs and the boundary edges followed"};
+  report.certificate = {true, "exact path check of the straight runs and the boundary edges followed"};
 }
 
 }  // namespace polyplan::walk

@@ -25,7 +25,7 @@ struct Walk {
 // Sets the facts and marks; on `arrived`, the path (ending at the goal) and status solved, unless
 // the exact check finds the walk invalid (status not_found, naming polyplan's bug). `name` is the
 // planner's, for that message. The caller has set any failure before.
-void report_walk(PlanReport<ExactPoint>& report, const CSpace& cspace, const Walk& walk, const Query& query,
+void report_walk(PlanReport<ExactPoint>& report, const Boundary& boundary, const Walk& walk, const Query& query,
                  bool arrived, bool record, const std::string& name);
 
 }  // namespace polyplan::walk

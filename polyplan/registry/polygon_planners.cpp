@@ -59,8 +59,8 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
 #if POLYPLAN_WITH_REACTIVE
           potential_field_planner_entry(),
           navigation_function_planner_entry(),
-          bug_planner_entry(BugKind::bug1),
-          bug_planner_entry(BugKind::bug2),
+          bug_planner_entry<TranslatingRobot>(BugKind::bug1),
+          bug_planner_entry<TranslatingRobot>(BugKind::bug2),
           tangent_bug_planner_entry(),
 #endif
 #if POLYPLAN_WITH_HOMOTOPY

@@ -1,7 +1,8 @@
 // Every planner of a point or disc robot among discs, walls and polygons (RoundRobot): the exact
 // shortest paths of the tangent visibility graph, the sampling planners over the exact rational
 // checks of geometry/round_world_check.hpp, the occupancy grid rasterised exactly
-// (geometry/round_rasterize.hpp), and the reactive planners of a sphere world.
+// (geometry/round_rasterize.hpp), and the reactive planners (the Bugs where the C-obstacles are
+// polygons and walls).
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/tangent_visibility.hpp>
 
@@ -10,6 +11,7 @@
 #include <polyplan/grids/raster_planner.hpp>
 #endif
 #if POLYPLAN_WITH_REACTIVE
+#include <polyplan/reactive/bug_planner.hpp>
 #include <polyplan/reactive/navigation_function_planner.hpp>
 #include <polyplan/reactive/potential_field_planner.hpp>
 #endif
@@ -54,6 +56,8 @@ const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
 #if POLYPLAN_WITH_REACTIVE
           round(round_navigation_function_planner_entry()),
           round(round_potential_field_planner_entry()),
+          round(bug_planner_entry<RoundRobot>(BugKind::bug1)),
+          round(bug_planner_entry<RoundRobot>(BugKind::bug2)),
 #endif
       }};
   return registry;

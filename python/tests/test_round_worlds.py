@@ -29,7 +29,7 @@ def test_planners_refuse_them_naming_what_the_world_has():
     with pytest.raises(polyplan.InputError, match=r"disc_robot_floor_plan.json: discs, walls, a disc robot: "
                                                    r"the planner trapezoid plans polygon worlds only.*use one that plans "
                                                    r"with them \(visibility, prm, lazyprm, rrt, rrtstar, rrtconnect, "
-                                                   r"raster, gvd-grid, navigation-function, potential-field\)"):
+                                                   r"raster, gvd-grid, navigation-function, potential-field, bug1, bug2\)"):
         polyplan.plan(world, planner="trapezoid")
 
 
