@@ -31,7 +31,8 @@ struct TranslatingRobot {
 // A point or disc robot among discs, walls of zero thickness and polygons, in box or disc bounds
 // (World::round_features): configurations are exact positions, motions straight segments checked
 // exactly in rationals (geometry/round_world_check.hpp). Its planners are the sampling planners,
-// the grid planners over its exact raster (raster, gvd-grid) and the navigation function.
+// the grid planners over its exact raster (raster, gvd-grid, and the replanning planners
+// dstar-lite, lpastar, repeated-astar) and the navigation function.
 struct RoundRobot {
   using Configuration = ExactPoint;
   using Problem = RoundWorld;

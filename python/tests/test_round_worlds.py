@@ -29,7 +29,8 @@ def test_planners_refuse_them_naming_what_the_world_has():
     with pytest.raises(polyplan.InputError, match=r"disc_robot_floor_plan.json: discs, walls, a disc robot: "
                                                    r"the planner trapezoid plans polygon worlds only.*use one that plans "
                                                    r"with them \(visibility, prm, lazyprm, rrt, rrtstar, rrtconnect, "
-                                                   r"raster, gvd-grid, navigation-function, potential-field\)"):
+                                                   r"raster, gvd-grid, dstar-lite, lpastar, repeated-astar, "
+                                                   r"navigation-function, potential-field\)"):
         polyplan.plan(world, planner="trapezoid")
 
 
@@ -82,3 +83,16 @@ def test_the_program_checks_a_path_among_walls(tmp_path):
     path.write_text('{"path": [[1, 1], [3.5, 3.5], [5, 3.5], [7, 4.5], [10.5, 4.5], [11, 7]]}')
     code, out, err = run_cli("check", data("worlds", "disc_robot_floor_plan.json"), str(path))
     assert code == 0, (out, err)
+
+
+def test_dstar_lite_drives_the_sphere_world_and_the_checker_agrees():
+    # Every query driven on the raster of the discs, each path checked afresh among them; repeated
+    # A* on the same raster drives the same grid cost.
+    world = polyplan.read_world(data("worlds", "sphere_world.json"))
+    plans = polyplan.plan(world, planner="dstar-lite")
+    assert len(plans) == 10 and all(p.status == "solved" for p in plans)
+    for p in plans:
+        assert polyplan.check(world, p) == (True, "")
+        assert p.facts["replan"]["algorithm"] == "dstar-lite"
+    again = polyplan.plan(world, planner="repeated-astar")
+    assert [p.facts["replan"]["grid_cost"] for p in plans] == [p.facts["replan"]["grid_cost"] for p in again]
