@@ -45,15 +45,26 @@ World with_every_obstacle_added(World world) {
   return world;
 }
 
-class RoundReplanningOnShippedWorlds : public ::testing::TestWithParam<std::string> {};
+// A shipped round world, and the side of its raster's cells at the default 100 per axis when they
+// are square (0: they are not).
+struct ShippedRoundWorld {
+  std::string name;
+  double square_cell = 0;
+};
+
+class RoundReplanningOnShippedWorlds : public ::testing::TestWithParam<ShippedRoundWorld> {};
 
 // Every query of the world, by each planner: found, from the exact start to the exact goal, valid
-// by the exact check; the three algorithms drive the same grid cost.
+// by the exact check; the three algorithms drive the same grid cost, and where the cells are square
+// that cost in world units is what the raster planner's A* finds on the same raster (another search).
 TEST_P(RoundReplanningOnShippedWorlds, EveryPlannerFindsPathsTheExactCheckAccepts) {
-  const World world = test::shipped(GetParam());
+  const World world = test::shipped(GetParam().name);
   const RoundWorld round(world);
+  const auto raster = planners<RoundRobot>().find("raster")->make(round, {});
   for (const Query& query : world.queries) {
     SCOPED_TRACE(query.name);
+    const auto grid = raster->plan(query);
+    ASSERT_TRUE(grid.found) << grid.why_not;
     double dstar_cost = -1;
     for (const char* planner : kReplanners) {
       SCOPED_TRACE(planner);
@@ -63,28 +74,19 @@ TEST_P(RoundReplanningOnShippedWorlds, EveryPlannerFindsPathsTheExactCheckAccept
       const double cost = report.facts.at(ReplanFacts::grid_cost);
       if (dstar_cost < 0) dstar_cost = cost;
       EXPECT_EQ(cost, dstar_cost);  // OctileLength exactly: the same shortest cost on the same raster
+      if (GetParam().square_cell > 0)
+        EXPECT_NEAR(cost * GetParam().square_cell, grid.facts.at(RasterFacts::grid_cost), 1e-9);
     }
   }
 }
 
+// The sphere worlds' cells are 0.2 wide (the box [-10, 10]², the square round the disc of radius
+// 10); the floor plan's 0.12 x 0.08.
 INSTANTIATE_TEST_SUITE_P(Shipped, RoundReplanningOnShippedWorlds,
-                         ::testing::Values("sphere_world", "sphere_world_disc_bounds", "disc_robot_floor_plan"));
-
-// The sphere world's square cells, 0.2 wide: a drive that sees everything costs what the raster
-// planner's A* finds on the same raster (another search, in world units).
-TEST(RoundReplanning, AStillSphereWorldCostsWhatTheRasterPlannerFinds) {
-  const World world = test::shipped("sphere_world");
-  const RoundWorld round(world);
-  const auto raster = planners<RoundRobot>().find("raster")->make(round, {});
-  for (const Query& query : world.queries) {
-    SCOPED_TRACE(query.name);
-    const auto grid = raster->plan(query);
-    ASSERT_TRUE(grid.found) << grid.why_not;
-    const auto drive = drive_round("dstar-lite", round, query);
-    ASSERT_TRUE(drive.found) << drive.why_not;
-    EXPECT_NEAR(drive.facts.at(ReplanFacts::grid_cost) * 0.2, grid.facts.at(RasterFacts::grid_cost), 1e-9);
-  }
-}
+                         ::testing::Values(ShippedRoundWorld{"sphere_world", 0.2},
+                                           ShippedRoundWorld{"sphere_world_disc_bounds", 0.2},
+                                           ShippedRoundWorld{"disc_robot_floor_plan", 0}),
+                         [](const auto& info) { return info.param.name; });
 
 // The block that rises across the way: each planner replans, drives round below, and its path
 // holds in the world the change made, though the straight route does not.
