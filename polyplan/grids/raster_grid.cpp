@@ -135,16 +135,26 @@ std::vector<ExactPoint> polyline_through_turns(const Raster& r, const ExactPoint
   return path;
 }
 
+PathCheck check_exactly(const CSpace& cspace, const std::vector<ExactPoint>& path) { return check_path(cspace, path); }
+
+PathCheck check_exactly(const RoundWorld& world, const std::vector<ExactPoint>& path) { return world.check_path(path); }
+
+std::string_view exact_check_name(const CSpace&) { return "exact path check (arrangement zone walk)"; }
+
+std::string_view exact_check_name(const RoundWorld&) {
+  return "exact rational path check among discs, walls and polygons";
+}
+
 void return_if_valid(const CSpace& cspace, std::vector<ExactPoint> path, std::string_view what,
                      PlanReport<ExactPoint>& report) {
-  const PathCheck check = check_path(cspace, path);
-  return_checked(check, std::move(path), what, "exact path check (arrangement zone walk)", report);
+  const PathCheck check = check_exactly(cspace, path);
+  return_checked(check, std::move(path), what, exact_check_name(cspace), report);
 }
 
 void return_if_valid(const RoundWorld& world, std::vector<ExactPoint> path, std::string_view what,
                      PlanReport<ExactPoint>& report) {
-  const PathCheck check = world.check_path(path);
-  return_checked(check, std::move(path), what, "exact rational path check among discs, walls and polygons", report);
+  const PathCheck check = check_exactly(world, path);
+  return_checked(check, std::move(path), what, exact_check_name(world), report);
 }
 
 void report_search(const Raster& r, const SearchResult<GridCell>& search, PlanReport<ExactPoint>& report) {

@@ -77,6 +77,14 @@ std::optional<std::pair<GridCell, GridCell>> snap_query(const RoundWorld& world,
 std::vector<ExactPoint> polyline_through_turns(const Raster& raster, const ExactPoint& start,
                                                std::span<const GridCell> cells, const ExactPoint& goal);
 
+// The exact check of a polyline in either space (geometry/path_check.hpp's check_path, or
+// RoundWorld::check_path), and what a certificate calls it: one name for the grid planners that
+// are templates over the space.
+PathCheck check_exactly(const CSpace& cspace, const std::vector<ExactPoint>& path);
+PathCheck check_exactly(const RoundWorld& world, const std::vector<ExactPoint>& path);
+std::string_view exact_check_name(const CSpace& cspace);
+std::string_view exact_check_name(const RoundWorld& world);
+
 // Returns `path` in `report` (found, length, certificate) when it passes the exact check_path
 // (geometry/path_check.hpp's, or RoundWorld::check_path); otherwise found stays false and why_not
 // says "`what` is not a valid motion: " and the check's reason. A grid path's joins to the exact

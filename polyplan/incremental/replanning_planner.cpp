@@ -3,6 +3,7 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/geometry/rasterize.hpp>
+#include <polyplan/geometry/round_rasterize.hpp>
 #include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_grid.hpp>
 #include <polyplan/incremental/replan_facts.hpp>
@@ -58,11 +59,32 @@ std::vector<const PolygonWithHoles*> changed_obstacles(const World& world, std::
   return changed;
 }
 
+// The raster of `after`, the world once changes [from, to) of `world` are made too: `before` (the
+// raster of the world before them) with only the cells near the changed obstacles decided again —
+// a polygon world that changes at every move of a long drive at 2048 cells per axis took minutes
+// rasterised whole.
+Raster raster_after(const CSpace& after, const Raster& before, const World& world, std::size_t from, std::size_t to) {
+  return rasterize_change(after, before, changed_obstacles(world, from, to));
+}
+
+// A round world's raster has no such partial update: it is rasterised whole.
+Raster raster_after(const RoundWorld& after, const Raster& before, const World&, std::size_t, std::size_t) {
+  return rasterize(after, before.cells_per_axis);
+}
+
+// The picture draws a changed polygon world's C-space as the drive ended; PlanRecording holds a
+// C-space only, so a round world's picture draws the file's world.
+void record_world_at_end(const std::shared_ptr<const CSpace>& world, PlanRecording<ExactPoint>& recording) {
+  recording.world_at_end = world;
+}
+void record_world_at_end(const std::shared_ptr<const RoundWorld>&, PlanRecording<ExactPoint>&) {}
+
 // The world between two moments of change: from the move `from_moves` on, `made` changes made.
+template <class Problem>
 struct Phase {
   std::size_t from_moves = 0, made = 0;
-  std::shared_ptr<const CSpace> owned;  // none for the planner's own world (the first phase); the picture shares it
-  const CSpace* cspace = nullptr;
+  std::shared_ptr<const Problem> owned;  // none for the planner's own world (the first phase); the picture shares it
+  const Problem* problem = nullptr;
   Raster raster;
 };
 
@@ -89,28 +111,27 @@ GridPoint point_of(const Raster& raster, GridCell c) {
 
 }  // namespace
 
-struct ReplanningPlanner::Impl {
-  const CSpace* cspace;
+template <class Space>
+struct BasicReplanningPlanner<Space>::Impl {
+  using Problem = typename Space::Problem;
+  const Problem* problem;
   ReplanAlgorithm algorithm;
   ReplanningOptions options;
-  std::vector<Phase> phases;  // by from_moves; the first is the world as it starts
+  std::vector<Phase<Problem>> phases;  // by from_moves; the first is the world as it starts
 
-  Impl(const CSpace& c, ReplanAlgorithm a, const ReplanningOptions& o) : cspace(&c), algorithm(a), options(o) {
+  Impl(const Problem& p, ReplanAlgorithm a, const ReplanningOptions& o) : problem(&p), algorithm(a), options(o) {
     if (o.sensor != 0 && !(std::isfinite(o.sensor) && o.sensor > 0 && o.sensor * o.sensor >= 2))
       throw std::invalid_argument(
           "sensor: expected 0 (the whole raster) or a finite number of cells of at least √2 ≈ 1.41421357, got " +
           std::to_string(o.sensor));
-    phases.push_back({0, 0, nullptr, &c, rasterize(c, o.resolution)});
-    const World& world = c.world();
+    phases.push_back({0, 0, nullptr, &p, rasterize(p, o.resolution)});
+    const World& world = p.world();
     // One world for each moment of change: the changes listed with one after_moves happen at once.
-    // Each raster is the one before it decided again where the moment's changes are: a world that
-    // changes at every move of a long drive at 2048 cells per axis took minutes rasterised whole.
     for (std::size_t i = 0; i < world.changes.size(); ++i) {
       if (i + 1 < world.changes.size() && world.changes[i + 1].after_moves == world.changes[i].after_moves) continue;
-      auto changed = std::make_shared<const CSpace>(world_after(world, i + 1));
-      Raster raster =
-          rasterize_change(*changed, phases.back().raster, changed_obstacles(world, phases.back().made, i + 1));
-      const CSpace* view = changed.get();
+      auto changed = std::make_shared<const Problem>(world_after(world, i + 1));
+      Raster raster = raster_after(*changed, phases.back().raster, world, phases.back().made, i + 1);
+      const Problem* view = changed.get();
       phases.push_back({world.changes[i].after_moves, i + 1, std::move(changed), view, std::move(raster)});
     }
   }
@@ -133,14 +154,14 @@ struct ReplanningPlanner::Impl {
                     PlanReport<ExactPoint>& report) const {
     std::vector<ExactPoint> path;
     for (std::size_t p = 0; p < lived; ++p) {
-      const Phase& phase = phases[p];
+      const Phase<Problem>& phase = phases[p];
       const std::size_t to = p + 1 < lived ? phases[p + 1].from_moves : drive.moves;
       const std::vector<GridCell> cells = stretch(phase.raster, drive, phase.from_moves, to);
       const ExactPoint from_point = p == 0 ? query.start : path.back();
       const ExactPoint to_point =
           p + 1 == lived ? query.goal : phase.raster.cell_center(drive.traversed[to].x, drive.traversed[to].y);
       const std::vector<ExactPoint> piece = polyline_through_turns(phase.raster, from_point, cells, to_point);
-      const PathCheck check = check_path(*phase.cspace, piece);
+      const PathCheck check = check_exactly(*phase.problem, piece);
       if (!check.valid) {
         report.fail(PlanStatus::not_found, "the drive from move " + std::to_string(phase.from_moves) + " to move " +
                                                std::to_string(to) + " is not a valid motion in the world of " +
@@ -153,17 +174,17 @@ struct ReplanningPlanner::Impl {
     report.succeed();
     report.path = std::move(path);
     report.length = euclidean_length(report.path);
-    report.certificate = {
-        true, "exact path check (arrangement zone walk) of each stretch in the world as it was when driven"};
+    report.certificate = {true, std::string(exact_check_name(*problem)) +
+                                    " of each stretch in the world as it was when driven"};
   }
 
-  std::string made_text(const Phase& phase) const {
+  static std::string made_text(const Phase<Problem>& phase) {
     if (phase.made == 0) return "the file";
     return phase.made == 1 ? "changes[0]" : "changes[0.." + std::to_string(phase.made - 1) + "]";
   }
 
   // Why a drive that did not reach the goal ended.
-  void report_stop(const ReplanResult& drive, const Phase& last, PlanReport<ExactPoint>& report) const {
+  static void report_stop(const ReplanResult& drive, const Phase<Problem>& last, PlanReport<ExactPoint>& report) {
     const GridPoint at = drive.traversed.back();
     const std::string cell = cell_text(static_cast<std::size_t>(at.x), static_cast<std::size_t>(at.y));
     const std::string after = "after " + std::to_string(drive.moves) + " moves";
@@ -190,58 +211,73 @@ struct ReplanningPlanner::Impl {
     facts.set(SearchFacts::heap_operations, drive.heap_operations);
     facts.set(SearchFacts::seconds, drive.seconds);
   }
+
+  // The drive's options, its world changing to each phase's raster as the moves reach it; `lived`
+  // counts the phases the drive has seen.
+  ReplanOptions drive_options(std::size_t& lived) const {
+    ReplanOptions replanning;
+    replanning.algorithm = algorithm;
+    replanning.sensor_radius = sensor_radius();
+    replanning.max_moves = options.max_moves;
+    replanning.time_limit = options.time;
+    replanning.world_changes = [this, &lived](std::size_t moves, GridMap& truth) {
+      const std::size_t before = lived;
+      for (; lived < phases.size() && phases[lived].from_moves <= moves; ++lived)
+        truth.blocked.assign(phases[lived].raster.blocked.begin(), phases[lived].raster.blocked.end());
+      return lived != before;
+    };
+    return replanning;
+  }
+
+  void record_start(Facts& facts) const {
+    const Raster& first = phases.front().raster;
+    facts.set(RoadmapFacts::kind, replanning_planner_name(algorithm));
+    facts.set(RasterFacts::cells_per_axis, first.cells_per_axis);
+    facts.set(RasterFacts::blocked_cells, first.blocked_count());
+    facts.set(ReplanFacts::algorithm, std::string(to_string(algorithm)));
+    facts.set(ReplanFacts::sensor_cells, options.sensor);  // 0: the whole raster
+  }
 };
 
-ReplanningPlanner::ReplanningPlanner(const CSpace& cspace, ReplanAlgorithm algorithm, ReplanningOptions options)
-    : impl_(std::make_unique<Impl>(cspace, algorithm, options)) {}
+template <class Space>
+BasicReplanningPlanner<Space>::BasicReplanningPlanner(const typename Space::Problem& world, ReplanAlgorithm algorithm,
+                                                      ReplanningOptions options)
+    : impl_(std::make_unique<Impl>(world, algorithm, options)) {}
 
-ReplanningPlanner::~ReplanningPlanner() = default;
+template <class Space>
+BasicReplanningPlanner<Space>::~BasicReplanningPlanner() = default;
 
-PlanReport<ExactPoint> ReplanningPlanner::plan(const Query& query, const QueryOptions& options) {
+template <class Space>
+PlanReport<ExactPoint> BasicReplanningPlanner<Space>::plan(const Query& query, const QueryOptions& options) {
   const Impl& r = *impl_;
   const Stopwatch querying;
   const Raster& first = r.phases.front().raster;
   PlanReport<ExactPoint> report;
-  Facts& facts = report.facts;
-  facts.set(RoadmapFacts::kind, replanning_planner_name(r.algorithm));
-  facts.set(RasterFacts::cells_per_axis, first.cells_per_axis);
-  facts.set(RasterFacts::blocked_cells, first.blocked_count());
-  facts.set(ReplanFacts::algorithm, std::string(to_string(r.algorithm)));
-  facts.set(ReplanFacts::sensor_cells, r.options.sensor);  // 0: the whole raster
+  r.record_start(report.facts);
   const auto finish = [&] {
-    facts.set(QueryFacts::seconds, querying.seconds());
+    report.facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
-  const auto snapped = snap_query(*r.cspace, first, query, report);
+  const auto snapped = snap_query(*r.problem, first, query, report);
   if (!snapped) return finish();
 
   std::size_t lived = 1;  // the phases the drive has seen
-  ReplanOptions replanning;
-  replanning.algorithm = r.algorithm;
-  replanning.sensor_radius = r.sensor_radius();
-  replanning.max_moves = r.options.max_moves;
-  replanning.time_limit = r.options.time;
-  replanning.world_changes = [&](std::size_t moves, GridMap& truth) {
-    const std::size_t before = lived;
-    for (; lived < r.phases.size() && r.phases[lived].from_moves <= moves; ++lived)
-      truth.blocked.assign(r.phases[lived].raster.blocked.begin(), r.phases[lived].raster.blocked.end());
-    return lived != before;
-  };
   const ReplanResult drive =
-      drive_through_unknown_map(grid_map(first, r.cspace->world().source), point_of(first, snapped->first),
-                                point_of(first, snapped->second), replanning);
-  r.record_facts(drive, lived, facts);
-  const Phase& last = r.phases[lived - 1];
+      drive_through_unknown_map(grid_map(first, r.problem->world().source), point_of(first, snapped->first),
+                                point_of(first, snapped->second), r.drive_options(lived));
+  r.record_facts(drive, lived, report.facts);
+  const auto& last = r.phases[lived - 1];
   if (options.record) {
     report.recording.cells = std::make_shared<const CellGrid>(raster_cell_grid(last.raster));
-    report.recording.world_at_end = last.owned;
+    record_world_at_end(last.owned, report.recording);
   }
   if (drive.found) r.return_drive(query, drive, lived, report);
-  else r.report_stop(drive, last, report);
+  else Impl::report_stop(drive, last, report);
   return finish();
 }
 
-PlannerEntry<TranslatingRobot> replanning_planner_entry(ReplanAlgorithm algorithm) {
+template <class Space>
+PlannerEntry<Space> replanning_planner_entry(ReplanAlgorithm algorithm) {
   OptionTable<ReplanningOptions> table;
   table
       .add("resolution", &ReplanningOptions::resolution, "cells per side of the bounds (n x n cells)",
@@ -254,15 +290,20 @@ PlannerEntry<TranslatingRobot> replanning_planner_entry(ReplanAlgorithm algorith
   static constexpr const char* how[] = {"D* Lite (Koenig & Likhachev), the start moving with the robot",
                                         "LPA*, re-keyed each time the robot has moved",
                                         "A* from scratch at every replan"};
-  PlannerEntry<TranslatingRobot> entry = make_planner_entry<TranslatingRobot, ReplanningOptions>(
+  PlannerEntry<Space> entry = make_planner_entry<Space, ReplanningOptions>(
       replanning_planner_name(algorithm),
       std::string("a robot drives the raster while the world's \"changes\" happen, replanning with ") +
           how[static_cast<int>(algorithm)],
-      std::move(table), [algorithm](const CSpace& cspace, const ReplanningOptions& o) {
-        return std::make_unique<ReplanningPlanner>(cspace, algorithm, o);
+      std::move(table), [algorithm](const typename Space::Problem& world, const ReplanningOptions& o) {
+        return std::make_unique<BasicReplanningPlanner<Space>>(world, algorithm, o);
       });
   entry.follows_world_changes = true;
   return entry;
 }
+
+template class BasicReplanningPlanner<TranslatingRobot>;
+template class BasicReplanningPlanner<RoundRobot>;
+template PlannerEntry<TranslatingRobot> replanning_planner_entry<TranslatingRobot>(ReplanAlgorithm);
+template PlannerEntry<RoundRobot> replanning_planner_entry<RoundRobot>(ReplanAlgorithm);
 
 }  // namespace polyplan

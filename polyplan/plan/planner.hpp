@@ -32,8 +32,9 @@ struct TranslatingRobot {
 // box or disc bounds (World::round_features): configurations are exact positions of the reference
 // point, motions straight segments checked exactly in rationals against the C-space of
 // geometry/round_cspace.hpp (geometry/round_world_check.hpp). Its planners are the tangent
-// visibility graph, the sampling planners, the grid planners over its exact raster and the
-// reactive planners.
+// visibility graph, the sampling planners, the grid planners over its exact raster (raster,
+// gvd-grid, and the replanning planners dstar-lite, lpastar, repeated-astar) and the reactive
+// planners.
 struct RoundRobot {
   using Configuration = ExactPoint;
   using Problem = RoundWorld;

@@ -52,9 +52,9 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
           gvd_grid_planner_entry<TranslatingRobot>(),
 #endif
 #if POLYPLAN_WITH_INCREMENTAL
-          replanning_planner_entry(ReplanAlgorithm::dstar_lite),
-          replanning_planner_entry(ReplanAlgorithm::lpastar),
-          replanning_planner_entry(ReplanAlgorithm::astar),
+          replanning_planner_entry<TranslatingRobot>(ReplanAlgorithm::dstar_lite),
+          replanning_planner_entry<TranslatingRobot>(ReplanAlgorithm::lpastar),
+          replanning_planner_entry<TranslatingRobot>(ReplanAlgorithm::astar),
 #endif
 #if POLYPLAN_WITH_REACTIVE
           potential_field_planner_entry(),

@@ -1,14 +1,17 @@
 // Every planner of a point or disc robot among discs, walls and polygons (RoundRobot): the exact
 // shortest paths of the tangent visibility graph, the sampling planners over the exact rational
 // checks of geometry/round_world_check.hpp, the occupancy grid rasterised exactly
-// (geometry/round_rasterize.hpp), and the reactive planners (the Bugs where the C-obstacles are
-// polygons and walls).
+// (geometry/round_rasterize.hpp) and driven by the replanning planners as the world's "changes"
+// happen, and the reactive planners (the Bugs where the C-obstacles are polygons and walls).
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/tangent_visibility.hpp>
 
 #if POLYPLAN_WITH_GRIDS
 #include <polyplan/grids/gvd_grid_planner.hpp>
 #include <polyplan/grids/raster_planner.hpp>
+#endif
+#if POLYPLAN_WITH_INCREMENTAL
+#include <polyplan/incremental/replanning_planner.hpp>
 #endif
 #if POLYPLAN_WITH_REACTIVE
 #include <polyplan/reactive/bug_planner.hpp>
@@ -52,6 +55,11 @@ const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
 #if POLYPLAN_WITH_GRIDS
           round(raster_planner_entry<RoundRobot>()),
           round(gvd_grid_planner_entry<RoundRobot>()),
+#endif
+#if POLYPLAN_WITH_INCREMENTAL
+          round(replanning_planner_entry<RoundRobot>(ReplanAlgorithm::dstar_lite)),
+          round(replanning_planner_entry<RoundRobot>(ReplanAlgorithm::lpastar)),
+          round(replanning_planner_entry<RoundRobot>(ReplanAlgorithm::astar)),
 #endif
 #if POLYPLAN_WITH_REACTIVE
           round(round_navigation_function_planner_entry()),

@@ -39,7 +39,10 @@ class RoundDoor final : public WorldDoor<RoundRobot> {
           throw InputError(world.source + ": " + q.name + what + ": " + *why);
   }
 
-  std::string default_planner(const Problem&) const override { return planners<RoundRobot>().default_planner(); }
+  // A world that changes goes to the first planner that follows the changes, as a polygon world does.
+  std::string default_planner(const Problem& problem) const override {
+    return default_planner_for_changes(*problem.world(), planners<RoundRobot>().default_planner());
+  }
   std::size_t columns(const Problem&) const override { return 2; }
 };
 

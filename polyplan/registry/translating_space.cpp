@@ -37,8 +37,7 @@ class TranslatingDoor final : public WorldDoor<TranslatingRobot> {
   std::string default_planner(const Problem& problem) const override {
     const World& world = *problem.world();
     if (turns_the_robot(world)) return planners<RotatingRobot>().default_planner();
-    if (!world.changes.empty()) return planners_following_changes().front();
-    return planners<TranslatingRobot>().default_planner();
+    return default_planner_for_changes(world, planners<TranslatingRobot>().default_planner());
   }
 
   std::size_t columns(const Problem&) const override { return 2; }

@@ -66,6 +66,12 @@ std::vector<std::string> planners_following_changes() {
   return names;
 }
 
+std::string default_planner_for_changes(const World& world, std::string still) {
+  if (world.changes.empty()) return still;
+  const std::vector<std::string> following = planners_following_changes();
+  return following.empty() ? still : following.front();
+}
+
 void require_planner_for_robot(const World& world, std::string_view planner) {
   const bool car_planner = planners<SteeredCar>().find(planner) != nullptr;
   const bool world_planner = planners<TranslatingRobot>().find(planner) || planners<RotatingRobot>().find(planner);

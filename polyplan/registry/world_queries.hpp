@@ -27,9 +27,14 @@ void require_plannable_queries(const World& world, const CSpace* cspace, std::st
 // (PlannerEntry::plans_round_worlds), the refusal naming what the world has.
 void require_planner_for_robot(const World& world, std::string_view planner);
 
-// The planners of polygon worlds that follow a world's "changes", in the registry's order (the
-// first is a changing world's default).
+// The planners that follow a world's "changes" (of polygon worlds; those of round worlds have the
+// same names), in the registry's order (the first is a changing world's default).
 std::vector<std::string> planners_following_changes();
+
+// A world's default planner in a space whose own default is `still`: for a world that changes, the
+// first planner that follows the changes, or `still` when none is built (which then refuses the
+// world, naming the change).
+std::string default_planner_for_changes(const World& world, std::string still);
 
 // The planners of every space that plan with discs, walls, disc bounds and a disc robot.
 std::vector<std::string> planners_for_round_worlds();

@@ -29,7 +29,8 @@ def test_planners_refuse_them_naming_what_the_world_has():
     with pytest.raises(polyplan.InputError, match=r"disc_robot_floor_plan.json: discs, walls, a disc robot: "
                                                    r"the planner trapezoid plans polygon worlds only.*use one that plans "
                                                    r"with them \(visibility, prm, lazyprm, rrt, rrtstar, rrtconnect, "
-                                                   r"raster, gvd-grid, navigation-function, potential-field, bug1, bug2\)"):
+                                                   r"raster, gvd-grid, dstar-lite, lpastar, repeated-astar, "
+                                                   r"navigation-function, potential-field, bug1, bug2\)"):
         polyplan.plan(world, planner="trapezoid")
 
 
@@ -100,3 +101,16 @@ def test_a_polygon_robot_among_discs_and_walls():
     assert plan.status == "solved" and polyplan.check(floor, plan) == (True, "")
     valid, why = polyplan.check(floor, np.array([[1, 1], [11, 7]]))
     assert not valid and "walls[" in why, why
+
+
+def test_dstar_lite_drives_the_sphere_world_and_the_checker_agrees():
+    # Every query driven on the raster of the discs, each path checked afresh among them; repeated
+    # A* on the same raster drives the same grid cost.
+    world = polyplan.read_world(data("worlds", "sphere_world.json"))
+    plans = polyplan.plan(world, planner="dstar-lite")
+    assert len(plans) == 10 and all(p.status == "solved" for p in plans)
+    for p in plans:
+        assert polyplan.check(world, p) == (True, "")
+        assert p.facts["replan"]["algorithm"] == "dstar-lite"
+    again = polyplan.plan(world, planner="repeated-astar")
+    assert [p.facts["replan"]["grid_cost"] for p in plans] == [p.facts["replan"]["grid_cost"] for p in again]

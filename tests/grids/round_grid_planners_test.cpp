@@ -6,11 +6,13 @@
 #include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/gvd_grid_planner.hpp>
 #include <polyplan/grids/raster_planner.hpp>
+#include "round_world_fixtures.hpp"
 #include "world_fixtures.hpp"
 
 #include <gtest/gtest.h>
 
 using namespace polyplan;
+using polyplan::test::expect_checked;
 using polyplan::test::pt;
 using polyplan::test::world_from;
 
@@ -19,15 +21,6 @@ namespace {
 // A wall along x = 4 with a doorway 1 wide (y 3.5..4.5), point robot, from (1, 4) to (7, 4).
 const char* const kDoorway =
     R"({"bounds": [0, 0, 8, 8], "walls": [[[4, 0], [4, 3.5]], [[4, 4.5], [4, 8]]], "start": [1, 4], "goal": [7, 4]})";
-
-void expect_checked(const RoundWorld& world, const PlanReport<ExactPoint>& report, const Query& query) {
-  ASSERT_TRUE(report.found) << report.why_not;
-  EXPECT_EQ(report.path.front(), query.start);
-  EXPECT_EQ(report.path.back(), query.goal);
-  const PathCheck check = world.check_path(report.path);
-  EXPECT_TRUE(check.valid) << check.reason;
-  EXPECT_TRUE(report.certificate.certified);
-}
 
 TEST(RoundRasterPlanner, ADoorwayClosedByCoarseCellsOpensWithFinerOnes) {
   const RoundWorld world(world_from(kDoorway));
