@@ -330,7 +330,36 @@ struct Obstacle {
   std::vector<P<N>> wall;  // wall (radius 0): the whole polyline, its rays
   N radius;                // 0 only for a polygon or a wall met by a point robot
   std::string name;
+  // The core's bounding box grown by the radius (xmin, ymin, xmax, ymax): nothing beyond it meets
+  // the obstacle, so the checks pass it by with four comparisons (RoundRules sets it).
+  std::array<N, 4> reach{};
 };
+
+// Whether the box (xmin, ymin, xmax, ymax) lies apart from the obstacle's reach.
+template <class N>
+bool apart(const Obstacle<N>& o, const std::array<N, 4>& box) {
+  return box[2] < o.reach[0] || box[3] < o.reach[1] || box[0] > o.reach[2] || box[1] > o.reach[3];
+}
+
+template <class N>
+std::array<N, 4> box_of(const P<N>& a, const P<N>& b) {
+  return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+}
+
+// The reach of an obstacle whose core and radius are set.
+template <class N>
+void set_reach(Obstacle<N>& o) {
+  using Core = typename Obstacle<N>::Core;
+  std::vector<P<N>> points;
+  if (o.core == Core::point) points = {o.centre};
+  if (o.core == Core::segment) points = {o.from, o.to};
+  if (o.core == Core::wall) points = o.wall;
+  for (const auto& ring : o.rings) points.insert(points.end(), ring.begin(), ring.end());
+  std::array<N, 4> box = box_of(points[0], points[0]);
+  for (const P<N>& p : points)
+    box = {std::min(box[0], p.x), std::min(box[1], p.y), std::max(box[2], p.x), std::max(box[3], p.y)};
+  o.reach = {box[0] - o.radius, box[1] - o.radius, box[2] + o.radius, box[3] + o.radius};
+}
 
 // Every obstacle of a world as cores and radii in the field N, the bounds shrunk by the robot's
 // radius, and the checks of a configuration and of a polyline motion.
@@ -366,6 +395,7 @@ class RoundRules {
         obstacles_.push_back(std::move(o));
       }
     }
+    for (Obstacle<N>& o : obstacles_) set_reach(o);
     if (const auto& b = space.box) box_ = {field(b->xmin), field(b->ymin), field(b->xmax), field(b->ymax)};
     if (space.disc) {
       disc_centre_ = point(space.disc->center);
@@ -420,6 +450,7 @@ class RoundRules {
 
  private:
   void touch(const Obstacle<N>& o, const Point& q, Contact<N>& c) const {
+    if (apart(o, box_of(q, q))) return;
     if (o.core == Core::wall) return touch_wall(o.wall, q, c);
     const auto inside = [&] {
       if (!c.inside) c.inside_of = o.name;
@@ -472,8 +503,10 @@ class RoundRules {
   }
 
   std::optional<std::string> too_close(const Seg<N>& s) const {
+    const std::array<N, 4> span = box_of(s.a, s.b);
     for (const Obstacle<N>& o : obstacles_) {
       if (o.core == Core::wall || (o.core == Core::polygon && sign_of(o.radius) == 0)) continue;  // contacts decide
+      if (apart(o, span)) continue;
       N d2;
       if (o.core == Core::point) d2 = squared_distance(s, o.centre);
       if (o.core == Core::segment) d2 = squared_distance(s, Seg<N>{o.from, o.to});
@@ -492,7 +525,9 @@ class RoundRules {
 
   std::vector<N> events(const Seg<N>& s) const {
     std::vector<N> out{N(0), N(1)};
+    const std::array<N, 4> span = box_of(s.a, s.b);
     for (const Obstacle<N>& o : obstacles_) {
+      if (apart(o, span)) continue;  // no contact along s: no event
       if (o.core == Core::point) add_projection(s, o.centre, out);
       if (o.core == Core::segment) add_segment_events(s, Seg<N>{o.from, o.to}, out);
       if (o.core == Core::wall)
