@@ -59,15 +59,25 @@ def polygon(ax, ring, **style):
 
 
 def draw_world(world, ax, cobstacles=True):
-    """The world's bounds and obstacles; with cobstacles, the C-obstacles of its robot translating."""
+    """The world's bounds, obstacles, discs and walls; with cobstacles, the C-obstacles of its robot
+    translating (of a polygon world's robot: a world with discs or walls draws its own things only)."""
+    from matplotlib.patches import Circle
     if world.bounds is not None:
         xmin, ymin, xmax, ymax = (float(v) for v in world.bounds)
         ax.plot([xmin, xmax, xmax, xmin, xmin], [ymin, ymin, ymax, ymax, ymin], color="black", lw=1)
-    if world.robot and cobstacles:
+    if world.disc_bounds is not None:
+        x, y, r = (float(v) for v in world.disc_bounds)
+        ax.add_patch(Circle((x, y), r, facecolor="none", edgecolor="black", lw=1))
+    round_world = len(world.discs) or world.walls or world.disc_bounds is not None or world.robot_disc is not None
+    if world.robot and cobstacles and not round_world:
         for ring in _polyplan.cspace(world).obstacles:
             polygon(ax, ring, facecolor=COBSTACLE, edgecolor="none", label=None)
     for ring in world.obstacles:
         polygon(ax, ring, facecolor=OBSTACLE, edgecolor="black", lw=0.5)
+    for x, y, r in world.discs:
+        ax.add_patch(Circle((x, y), r, facecolor=OBSTACLE, edgecolor="black", lw=0.5))
+    for wall in world.walls:
+        ax.plot(wall[:, 0], wall[:, 1], color="black", lw=2.5, solid_capstyle="butt")
 
 
 def _plot_world(world, plans, ax):
@@ -163,12 +173,30 @@ def draw_path(p, ax, world, colour=PATH):
 
 
 def drawn_path(p, world):
-    """The plan's path as drawn: a car's through its arcs, sampled finely; others' as planned."""
+    """The plan's path as drawn: a car's through its arcs, sampled finely; a path of tangents and
+    arcs (Plan.pieces) through its arcs likewise; others' as planned."""
+    if p.pieces:
+        return _pieces_path(p.pieces)
     if not (p.segments and world.car):
         return p.path
     lengths = [s["length"] for s in p.segments]
     distances = np.union1d(np.linspace(0, sum(lengths), CAR_CURVE_POSES), np.cumsum([0] + lengths))
     return car_poses(p.segments, world.car["turning_radius"], distances)
+
+
+def _pieces_path(pieces):
+    """Segments and arcs (Plan.pieces) as one polyline, each arc through a point every 2 degrees."""
+    points = [pieces[0]["from"]]
+    for piece in pieces:
+        if piece["kind"] == "arc":
+            (cx, cy), (x, y) = piece["centre"], piece["from"]
+            turn = piece["length"] / piece["radius"] * (1 if piece["turn"] == "ccw" else -1)
+            start = math.atan2(y - cy, x - cx)
+            for t in np.linspace(0, 1, max(2, int(abs(math.degrees(turn)) / 2) + 1))[1:-1]:
+                points.append((cx + piece["radius"] * math.cos(start + t * turn),
+                               cy + piece["radius"] * math.sin(start + t * turn)))
+        points.append(piece["to"])
+    return np.array(points, dtype=float)
 
 
 def car_poses(segments, radius, distances):

@@ -141,6 +141,40 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
           "When the robot steers like a car: {\"turning_radius\": R, \"reverse\": bool} (the car planners plan for "
           "it); else None.")
       .def_property_readonly(
+          "discs",
+          [](const WorldHandle& w) {
+            py::array_t<double> out({static_cast<py::ssize_t>(w.world().discs.size()), py::ssize_t{3}});
+            auto cell = out.mutable_unchecked<2>();
+            for (std::size_t i = 0; i < w.world().discs.size(); ++i) {
+              const Disc& d = w.world().discs[i];
+              cell(i, 0) = to_double(d.center.x), cell(i, 1) = to_double(d.center.y), cell(i, 2) = to_double(d.radius);
+            }
+            return out;
+          },
+          "The disc obstacles, an (N, 3) float64 array of rows (x, y, radius).")
+      .def_property_readonly(
+          "walls",
+          [](const WorldHandle& w) {
+            py::list out;
+            for (const Wall& wall : w.world().walls) out.append(points_array(wall));
+            return out;
+          },
+          "The walls of zero thickness, each an (N, 2) float64 array of its polyline's points.")
+      .def_property_readonly(
+          "disc_bounds",
+          [](const WorldHandle& w) -> py::object {
+            const auto& d = w.world().disc_bounds;
+            if (!d) return py::none();
+            return py::make_tuple(fraction(d->center.x), fraction(d->center.y), fraction(d->radius));
+          },
+          "Bounds that are a disc, (x, y, radius) as Fractions (the free space inside it), or None.")
+      .def_property_readonly(
+          "robot_disc",
+          [](const WorldHandle& w) -> py::object {
+            return w.world().robot.disc ? fraction(*w.world().robot.disc) : py::none();
+          },
+          "A disc robot's radius as a Fraction (its `robot` is then empty), or None.")
+      .def_property_readonly(
           "queries",
           [](const WorldHandle& w) {
             py::list out;
@@ -151,9 +185,14 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
           "theta in degrees.")
       .def("__repr__", [](const WorldHandle& w) {
         const World& world = w.world();
+        std::string round;  // discs, walls, disc bounds (the disc robot is named with the robot)
+        for (const std::string& f : round_features(world))
+          if (f != "a disc robot") round += f + ", ";
         return "<polyplan.World " + world.source + ": " + std::to_string(world.obstacles.size()) + " obstacle(s), " +
-               (world.robot.is_point() ? std::string("point robot")
-                                       : std::to_string(world.robot.parts.size()) + "-part robot") +
+               round +
+               (world.robot.disc         ? "disc robot of radius " + to_string(*world.robot.disc)
+                : world.robot.is_point() ? std::string("point robot")
+                                         : std::to_string(world.robot.parts.size()) + "-part robot") +
                (world.robot.car ? std::string(world.robot.car->reverse ? " (a Reeds–Shepp car)" : " (a Dubins car)")
                                 : std::string()) +
                ", " + std::to_string(world.queries.size()) + " query(ies)>";

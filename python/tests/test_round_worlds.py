@@ -2,6 +2,8 @@
 checked exactly (grazing a disc is valid, crossing a wall at a point is not), drawn with their
 circles and walls, and refused by the planners that do not plan with them, naming what the world
 has — never planned straight through."""
+from fractions import Fraction
+
 import numpy as np
 import pytest
 
@@ -114,3 +116,27 @@ def test_dstar_lite_drives_the_sphere_world_and_the_checker_agrees():
         assert p.facts["replan"]["algorithm"] == "dstar-lite"
     again = polyplan.plan(world, planner="repeated-astar")
     assert [p.facts["replan"]["grid_cost"] for p in plans] == [p.facts["replan"]["grid_cost"] for p in again]
+
+
+def test_the_world_and_its_plot_show_discs_walls_and_arcs():
+    import matplotlib
+    matplotlib.use("Agg")
+    from matplotlib.patches import Circle
+    floor = polyplan.read_world(data("worlds", "disc_robot_floor_plan.json"))
+    assert floor.discs.tolist() == [[2, 6, 0.8]] and len(floor.walls) == 5 and floor.walls[4].tolist() == [[8, 5], [10, 5]]
+    assert floor.robot_disc == Fraction(3, 10) and floor.disc_bounds is None and floor.robot == []
+    assert "discs, walls, disc robot of radius 3/10" in repr(floor)
+    sphere = polyplan.read_world(data("worlds", "sphere_world_disc_bounds.json"))
+    assert sphere.disc_bounds == (0, 0, 10) and sphere.bounds is None
+    plan = polyplan.plan(floor)[0]
+    ax = polyplan.plot(plan)
+    circles = [p for p in ax.patches if isinstance(p, Circle)]
+    assert [(c.center, c.radius) for c in circles] == [((2, 6), 0.8)]
+    from polyplan.plotting import drawn_path
+    drawn = drawn_path(plan, floor)
+    assert len(drawn) > len(plan.pieces) + 1  # the arcs drawn through their points
+    assert np.allclose(drawn[0], [1, 1]) and np.allclose(drawn[-1], [11, 7])
+    for piece in plan.pieces:  # every drawn point on an arc lies on its circle
+        if piece["kind"] == "arc":
+            on = np.abs(np.hypot(*(drawn - piece["centre"]).T) - piece["radius"]) < 1e-9
+            assert on.sum() >= 2
