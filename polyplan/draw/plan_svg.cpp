@@ -80,23 +80,46 @@ constexpr std::size_t kMostCellsPerSideWithCentres = 60;
 
 }  // namespace
 
-void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph) {
+namespace {
+
+// The graph's straight edges of one kind (PlanGraph::edge_kinds; all of them when it is empty or
+// `kind` is), drawn with a legend entry naming them and their number.
+void draw_edges_of_kind(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph, const std::string& kind,
+                        const std::string& legend, svg::Style style) {
   std::vector<std::pair<svg::Point2, svg::Point2>> edges;
   std::vector<std::array<svg::Point2, 3>> arcs;
-  edges.reserve(graph.edges.size());
   for (std::size_t i = 0; i < graph.edges.size(); ++i) {
+    if (!kind.empty() && graph.edge_kinds[i] != kind) continue;
     const auto& [u, v] = graph.edges[i];
     if (i < graph.bends.size() && graph.bends[i])
       arcs.push_back({svg_point(graph.vertices[u]), svg_point(*graph.bends[i]), svg_point(graph.vertices[v])});
     else edges.push_back({svg_point(graph.vertices[u]), svg_point(graph.vertices[v])});
   }
+  if (edges.empty() && arcs.empty() && !kind.empty()) return;
+  drawing.segments(edges, style);
+  drawing.curves(arcs, style);
+  drawing.legend(legend + " (" + std::to_string(edges.size() + arcs.size()) + ")", style, svg::Swatch::line);
+}
+
+}  // namespace
+
+void draw_graph(svg::Drawing& drawing, const PlanGraph<ExactPoint>& graph) {
   svg::Style edge_style;
   edge_style.stroke = theme::roadmap;
   edge_style.stroke_px = 0.7;
   edge_style.opacity = 0.45;
-  drawing.segments(edges, edge_style);
-  drawing.curves(arcs, edge_style);
-  drawing.legend(graph.kind + " edges (" + std::to_string(graph.edges.size()) + ")", edge_style, svg::Swatch::line);
+  if (graph.edge_kinds.size() != graph.edges.size()) {
+    draw_edges_of_kind(drawing, graph, "", graph.kind + " edges", edge_style);
+  } else {  // a visibility graph: its bitangents by kind
+    draw_edges_of_kind(drawing, graph, "supporting", "supporting bitangents", edge_style);
+    svg::Style separating = edge_style;
+    separating.stroke = theme::separating_edge;
+    separating.dash = "4 3";
+    draw_edges_of_kind(drawing, graph, "separating", "separating bitangents", separating);
+    svg::Style other = edge_style;
+    other.stroke = theme::other_edge;
+    draw_edges_of_kind(drawing, graph, "other", "edges not tangent at an end", other);
+  }
 
   std::vector<svg::Point2> vertices;
   vertices.reserve(graph.vertices.size());

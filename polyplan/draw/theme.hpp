@@ -56,6 +56,8 @@ inline constexpr const char* robot_edge = "#1b6e1b";
 
 // Plans: roadmap (or tree) blue and thin, expanded vertices amber, paths in the palette's order.
 inline constexpr const char* roadmap = "#2a7ab0";
+inline constexpr const char* separating_edge = "#b0452a";  // a visibility graph's separating bitangents
+inline constexpr const char* other_edge = "#9a9a9a";       // and visibility-full's other edges
 inline constexpr const char* expanded_fill = "#f2b701";
 inline constexpr const char* expanded_edge = "#7a5c00";
 inline constexpr const char* path_palette[] = {"#d62728", "#1f77b4", "#2ca02c", "#9467bd", "#ff7f0e",

@@ -21,6 +21,10 @@ struct RoadmapFacts {
   static constexpr FactKey<std::int64_t> vertices{"roadmap.vertices"};
   static constexpr FactKey<std::int64_t> edges{"roadmap.edges"};
   static constexpr FactKey<double> seconds{"roadmap.seconds"};
+  // A visibility graph's edges between corners by kind (PlanGraph::edge_kinds).
+  static constexpr FactKey<std::int64_t> supporting_edges{"roadmap.supporting_edges"};
+  static constexpr FactKey<std::int64_t> separating_edges{"roadmap.separating_edges"};
+  static constexpr FactKey<std::int64_t> other_edges{"roadmap.other_edges"};
 };
 
 // The graph search of a query.

@@ -114,6 +114,10 @@ struct PlanGraph {
   // Optional, one per edge: the control point of the quadratic Bézier curve the edge follows (a
   // Voronoi diagram's parabolic arc); none for a straight edge, and empty when every edge is.
   std::vector<std::optional<Configuration>> bends;
+  // Optional, one per edge: what the edge is to the obstacles it touches — a visibility graph's
+  // "supporting" bitangent (both obstacles on one side of it), "separating" (on either side), or
+  // "other" (not tangent at an end); empty for graphs that do not say.
+  std::vector<std::string> edge_kinds;
 };
 
 // Cells over two coordinates of the configuration (x and y, or θ1 and θ2) and what the planner

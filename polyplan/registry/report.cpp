@@ -104,6 +104,7 @@ Recording Report::recording() const {
           recorded.graph_kind = r.recording.graph->kind;
           recorded.graph_vertices = rows_of(r.recording.graph->vertices);
           recorded.graph_edges = r.recording.graph->edges;
+          recorded.graph_edge_kinds = r.recording.graph->edge_kinds;
         }
         recorded.expanded = rows_of(r.recording.expanded);
         recorded.cells = r.recording.cells;

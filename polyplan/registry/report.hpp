@@ -41,9 +41,10 @@ struct Recording {
   std::string graph_kind;  // "roadmap", "tree"; empty when there is no graph
   Rows graph_vertices;
   std::vector<std::pair<std::size_t, std::size_t>> graph_edges;
-  Rows expanded;                          // where the search expanded, in order
-  std::shared_ptr<const CellGrid> cells;  // null when the planner has none
-  std::vector<Rows> decomposition;        // each convex cell's corners
+  std::vector<std::string> graph_edge_kinds;  // PlanGraph::edge_kinds: empty, or one per edge
+  Rows expanded;                              // where the search expanded, in order
+  std::shared_ptr<const CellGrid> cells;      // null when the planner has none
+  std::vector<Rows> decomposition;            // each convex cell's corners
 };
 
 class Report {

@@ -36,7 +36,9 @@ struct VisibilityGraph::Impl {
   RoadmapVertexId start_slot = 0, goal_slot = 0;
   SearchWorkspace<RoadmapVertexId> workspace;
   double build_seconds = 0;
-  std::shared_ptr<const PlanGraph<ExactPoint>> picture;  // made for the first query that records
+  std::shared_ptr<const PlanGraph<ExactPoint>> picture;           // made for the first query that records
+  std::vector<std::pair<std::size_t, std::size_t>> corner_edges;  // the edges between corners,
+  std::vector<std::string> edge_kinds;                            // and what each is
 
   // Without bounds the triangulation's frame holds `inside` (geometry/detail/free_space_frame.hpp).
   Impl(const CSpace& c, VisibilityKind k, SearchOptions s, const std::vector<ExactPoint>& inside)
@@ -62,6 +64,26 @@ struct VisibilityGraph::Impl {
     return node;
   }
 
+  // Which side of the directed line a→b the obstacle at corner v (outside its free wedge k) lies
+  // on: +1 left, −1 right, 0 both (the line is not tangent to it there).
+  int obstacle_side(std::size_t v, std::size_t k, const Point& a, const Point& b) const {
+    const VertexWedges& w = triangulation.wedges(v);
+    const int s1 = CGAL::orientation(a, b, w.far(k)), s2 = CGAL::orientation(a, b, w.far((k + 1) % w.size()));
+    if (s1 >= 0 && s2 >= 0 && s1 + s2 > 0) return 1;
+    if (s1 <= 0 && s2 <= 0 && s1 + s2 < 0) return -1;
+    return 0;
+  }
+
+  // The sight line from corner v (free wedge k) to vertex c: a supporting bitangent when both
+  // obstacles lie on one side of it, separating when on either side, else other.
+  std::string edge_kind(std::size_t v, std::size_t k, std::size_t c) const {
+    const Point &a = triangulation.point(v), &b = triangulation.point(c);
+    const auto at_c = triangulation.wedges(c).wedge(Direction(a - b));
+    const int here = obstacle_side(v, k, a, b), there = at_c ? obstacle_side(c, *at_c, a, b) : 0;
+    if (here == 0 || there == 0) return "other";
+    return here == there ? "supporting" : "separating";
+  }
+
   void build() {
     const std::size_t n = triangulation.vertex_count();
     node_of.resize(n);
@@ -84,6 +106,8 @@ struct VisibilityGraph::Impl {
           if (target == kNotANode || target <= u) continue;  // each pair once: visibility is symmetric
           if (kind == VisibilityKind::reduced && arrival_node(v, triangulation.point(c)) != u) continue;
           add_edge(roadmap, u, target);
+          corner_edges.emplace_back(u, target);
+          edge_kinds.push_back(edge_kind(v, k, c));
         }
       }
     start_slot = add_vertex(roadmap, ExactPoint{});
@@ -109,10 +133,8 @@ struct VisibilityGraph::Impl {
     auto g = std::make_shared<PlanGraph<ExactPoint>>();
     g->kind = "roadmap";
     for (std::size_t v = 0; v < corners; ++v) g->vertices.push_back(roadmap[v].exact);
-    for (auto [e, end] = boost::edges(roadmap); e != end; ++e) {
-      const auto u = boost::source(*e, roadmap), v = boost::target(*e, roadmap);
-      if (u < corners && v < corners) g->edges.emplace_back(u, v);
-    }
+    g->edges = corner_edges;
+    g->edge_kinds = edge_kinds;
     picture = std::move(g);
     return picture;
   }
@@ -122,6 +144,10 @@ struct VisibilityGraph::Impl {
     facts.set(RoadmapFacts::vertices, corners);
     facts.set(RoadmapFacts::edges, boost::num_edges(roadmap));
     facts.set(RoadmapFacts::seconds, build_seconds);
+    const auto count = [&](const char* kind) { return std::count(edge_kinds.begin(), edge_kinds.end(), kind); };
+    facts.set(RoadmapFacts::supporting_edges, count("supporting"));
+    facts.set(RoadmapFacts::separating_edges, count("separating"));
+    if (kind == VisibilityKind::full) facts.set(RoadmapFacts::other_edges, count("other"));
   }
 
   // Whether start and goal lie in one component of the free space (a blocked end lies in none).

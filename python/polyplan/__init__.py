@@ -94,11 +94,14 @@ class FreeComponent(NamedTuple):
 
 
 class Graph(NamedTuple):
-    """A roadmap or a tree a plan recorded: vertices (V, k) float64, edges (E, 2) int64 indices."""
+    """A roadmap or a tree a plan recorded: vertices (V, k) float64, edges (E, 2) int64 indices;
+    edge_kinds, for a visibility graph, one word per edge ("supporting" or "separating" bitangent,
+    "other" where visibility-full's edge is not tangent at an end), else None."""
 
     kind: str
     vertices: object
     edges: object
+    edge_kinds: Optional[list] = None
 
 
 class Cells(NamedTuple):

@@ -36,6 +36,7 @@ class Graph(NamedTuple):
     kind: str
     vertices: np.ndarray
     edges: np.ndarray
+    edge_kinds: Optional[List[str]] = None
 
 class Cells(NamedTuple):
     states: np.ndarray

@@ -21,9 +21,11 @@ py::object graph(const PlanResult& r) {
   std::vector<std::vector<double>> edges;
   for (const auto& [a, b] : recorded.graph_edges) edges.push_back({double(a), double(b)});
   py::array_t<double> pairs = rows_array(edges, 2);
+  const py::object kinds =
+      recorded.graph_edge_kinds.empty() ? py::object(py::none()) : py::object(py::cast(recorded.graph_edge_kinds));
   return py::module_::import("polyplan")
       .attr("Graph")(recorded.graph_kind, rows_of(recorded.graph_vertices, r.report.path_columns()),
-                     pairs.attr("astype")("int64"));
+                     pairs.attr("astype")("int64"), kinds);
 }
 
 py::object cells(const PlanResult& r) {

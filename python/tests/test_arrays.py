@@ -103,3 +103,21 @@ def test_a_big_array_is_read_exactly(world):
     ys = np.linspace(1, 9, 10001)
     path = np.column_stack([np.ones_like(ys), ys])
     assert polyplan.check(world, np.asfortranarray(path)) == (True, "")
+
+
+def test_a_visibility_graph_names_each_edges_kind():
+    # Two squares side by side: their sides and the two outer bitangents support, the two crossing
+    # between them separate; visibility-full marks the edges not tangent at an end as "other".
+    two = polyplan.World.from_dict({"bounds": [0, 0, 20, 10], "start": [1, 5], "goal": [19, 5], "obstacles": [
+        [[4, 3], [7, 3], [7, 6], [4, 6]], [[12, 4], [15, 4], [15, 7], [12, 7]]]})
+    r = polyplan.planner("visibility", two).plan()
+    kinds = r.graph.edge_kinds
+    assert len(kinds) == len(r.graph.edges) and kinds.count("supporting") == 10 and kinds.count("separating") == 2
+    assert r.facts["roadmap"]["separating_edges"] == 2
+    for (u, v), kind in zip(r.graph.edges, kinds):
+        if kind == "separating":  # from one square to the other, crossing the line between them
+            assert (r.graph.vertices[u][0] < 10) != (r.graph.vertices[v][0] < 10)
+    full = polyplan.planner("visibility-full", two).plan()
+    assert "other" in full.graph.edge_kinds and full.facts["roadmap"]["other_edges"] == full.graph.edge_kinds.count("other")
+    assert "separating bitangents (2)" in polyplan.svg(two, r)
+    assert polyplan.planner("rrt", two, seed=1).plan().graph.edge_kinds is None

@@ -239,6 +239,68 @@ TEST(VisibilityGraph, EverySearchFindsAValidPathAndTheOptimalOnesAgree) {
 
 namespace {
 
+// Which side of the directed line a→b the C-obstacle ring turning at its vertex i lies on, from its
+// two neighbours: +1 left, −1 right, 0 both (not tangent there).
+int ring_side(const Ring& ring, std::size_t i, const ExactPoint& a, const ExactPoint& b) {
+  const auto side = [&](const ExactPoint& p) { return sgn((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)); };
+  const int s1 = side(ring[(i + ring.size() - 1) % ring.size()]), s2 = side(ring[(i + 1) % ring.size()]);
+  if (s1 >= 0 && s2 >= 0 && s1 + s2 > 0) return 1;
+  if (s1 <= 0 && s2 <= 0 && s1 + s2 < 0) return -1;
+  return 0;
+}
+
+// The kind of the sight line a→b between two C-obstacle corners, read off the C-obstacles' rings
+// (not the arrangement the planner uses); none where an end is no C-obstacle's vertex.
+std::optional<std::string> kind_from_rings(const CSpace& cspace, const ExactPoint& a, const ExactPoint& b) {
+  const auto side_at = [&](const ExactPoint& p) -> std::optional<int> {
+    for (const PolygonWithHoles& c : cspace.cobstacles()) {
+      std::vector<Ring> rings{c.outer};
+      rings.insert(rings.end(), c.holes.begin(), c.holes.end());
+      for (const Ring& ring : rings)
+        for (std::size_t i = 0; i < ring.size(); ++i)
+          if (ring[i] == p) return ring_side(ring, i, a, b);
+    }
+    return std::nullopt;
+  };
+  const auto here = side_at(a), there = side_at(b);
+  if (!here || !there) return std::nullopt;
+  if (*here == 0 || *there == 0) return "other";
+  return *here == *there ? "supporting" : "separating";
+}
+
+}  // namespace
+
+// Two squares side by side: their four sides each (supporting), the two outer bitangents
+// (supporting) and the two crossing between them (separating); and on the course's C-space world
+// every edge's kind as the C-obstacles' rings tell it.
+TEST(VisibilityGraph, EdgesAreSupportingOrSeparatingBitangents) {
+  const CSpace squares(world_from(R"({"bounds": [0, 0, 20, 10], "start": [1, 5], "goal": [19, 5],
+      "obstacles": [[[4, 3], [7, 3], [7, 6], [4, 6]], [[12, 4], [15, 4], [15, 7], [12, 7]]]})"));
+  const Report two = VisibilityGraph(squares).plan(squares.world().queries[0], QueryOptions{.record = true});
+  EXPECT_EQ(two.facts.at(RoadmapFacts::supporting_edges), 10);
+  EXPECT_EQ(two.facts.at(RoadmapFacts::separating_edges), 2);
+  for (const VisibilityKind kind : {VisibilityKind::reduced, VisibilityKind::full}) {
+    const World world = shipped("seed004.json");
+    const CSpace cspace(world);
+    const Report report = VisibilityGraph(cspace, kind).plan(world.queries[0], QueryOptions{.record = true});
+    const PlanGraph<ExactPoint>& graph = *report.recording.graph;
+    ASSERT_EQ(graph.edge_kinds.size(), graph.edges.size());
+    std::size_t compared = 0;
+    for (std::size_t e = 0; e < graph.edges.size(); ++e) {
+      const auto expected =
+          kind_from_rings(cspace, graph.vertices[graph.edges[e].first], graph.vertices[graph.edges[e].second]);
+      if (!expected) continue;  // an end on the bounds
+      EXPECT_EQ(graph.edge_kinds[e], *expected) << "edge " << e;
+      ++compared;
+    }
+    EXPECT_GT(compared, graph.edges.size() / 2);
+    if (kind == VisibilityKind::reduced)
+      EXPECT_EQ(std::count(graph.edge_kinds.begin(), graph.edge_kinds.end(), "other"), 0);
+  }
+}
+
+namespace {
+
 const std::string kBenchmarks = POLYPLAN_SOURCE_DIR "/data/movingai";
 
 struct Outcome {
