@@ -40,6 +40,12 @@ py::list rings(const std::vector<PolygonWithHoles>& polygons) {
   return out;
 }
 
+// (xmin, ymin, xmax, ymax) as Fractions, or None.
+py::object box_tuple(const std::optional<Bounds>& box) {
+  if (!box) return py::none();
+  return py::make_tuple(fraction(box->xmin), fraction(box->ymin), fraction(box->xmax), fraction(box->ymax));
+}
+
 py::tuple query_tuple(const Query& q) {
   const auto pose = [](const ExactPoint& p, const std::optional<double>& theta) {
     return theta ? py::make_tuple(fraction(p.x), fraction(p.y), *theta) : py::make_tuple(fraction(p.x), fraction(p.y));
@@ -90,14 +96,9 @@ const RoundCSpace& round_space(const RoundCSpaceView& view) {
   return locked(view.world->lock(), [&]() -> const RoundCSpace& { return view.world->door().round_world().cspace(); });
 }
 
-const char* kind_name(RoundCore::Kind kind) {
-  switch (kind) {
-    case RoundCore::Kind::point: return "point";
-    case RoundCore::Kind::wall: return "wall";
-    case RoundCore::Kind::polygon: return "polygon";
-  }
-  return "?";
-}
+// The names of RoundCore::Kind and RoundCSpace::Robot, in their enumerations' order.
+constexpr const char* kind_names[] = {"point", "wall", "polygon"};
+constexpr const char* robot_names[] = {"point", "disc", "polygon"};
 
 py::list round_cores(const RoundCSpaceView& view) {
   const py::object RoundCore = py::module_::import("polyplan").attr("RoundCore");
@@ -105,19 +106,11 @@ py::list round_cores(const RoundCSpaceView& view) {
   for (const polyplan::RoundCore& core : round_space(view).obstacles) {
     py::list holes;
     for (std::size_t i = 1; i < core.rings.size(); ++i) holes.append(points_array(core.rings[i]));
-    out.append(RoundCore(kind_name(core.kind), points_array(core.rings.empty() ? core.points : core.rings.front()),
-                         holes, fraction(core.radius), core.name));
+    out.append(RoundCore(kind_names[static_cast<int>(core.kind)],
+                         points_array(core.rings.empty() ? core.points : core.rings.front()), holes,
+                         fraction(core.radius), core.name));
   }
   return out;
-}
-
-const char* robot_name(RoundCSpace::Robot robot) {
-  switch (robot) {
-    case RoundCSpace::Robot::point: return "point";
-    case RoundCSpace::Robot::disc: return "disc";
-    case RoundCSpace::Robot::polygon: return "polygon";
-  }
-  return "?";
 }
 
 void bind_round_cspace(py::module_& m) {
@@ -125,7 +118,7 @@ void bind_round_cspace(py::module_& m) {
                               "The C-space of a world with discs or walls (polyplan.cspace(world)): C-obstacles as "
                               "cores grown by radii, and the free area, exact or certified.")
       .def_property_readonly(
-          "robot", [](const RoundCSpaceView& v) { return robot_name(round_space(v).robot); },
+          "robot", [](const RoundCSpaceView& v) { return robot_names[static_cast<int>(round_space(v).robot)]; },
           "\"point\", \"disc\" or \"polygon\".")
       .def_property_readonly("obstacles", &round_cores,
                              "The C-obstacles as RoundCore(kind, points, holes, radius, name): the points within "
@@ -133,19 +126,14 @@ void bind_round_cspace(py::module_& m) {
                              "polyline; radius 0: crossed never, touched freely) or a \"polygon\" (its outer ring, "
                              "holes its holes); points as (N, 2) float64 arrays.")
       .def_property_readonly(
-          "box",
-          [](const RoundCSpaceView& v) -> py::object {
-            const auto& box = round_space(v).box;
-            if (!box) return py::none();
-            return py::make_tuple(fraction(box->xmin), fraction(box->ymin), fraction(box->xmax), fraction(box->ymax));
-          },
+          "box", [](const RoundCSpaceView& v) { return box_tuple(round_space(v).box); },
           "The box the reference point keeps to, (xmin, ymin, xmax, ymax) as Fractions; None without box bounds.")
       .def_property_readonly(
           "disc",
           [](const RoundCSpaceView& v) -> py::object {
             const auto& disc = round_space(v).disc;
-            if (!disc) return py::none();
-            return py::make_tuple(fraction(disc->center.x), fraction(disc->center.y), fraction(disc->radius));
+            return disc ? py::make_tuple(fraction(disc->center.x), fraction(disc->center.y), fraction(disc->radius))
+                        : py::object(py::none());
           },
           "The disc the reference point keeps to in disc bounds, (x, y, radius) as Fractions; else None.")
       .def_property_readonly(
@@ -202,12 +190,7 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
       .def_property_readonly(
           "source", [](const WorldHandle& w) { return w.world().source; }, "The file (or name) it was read from.")
       .def_property_readonly(
-          "bounds",
-          [](const WorldHandle& w) -> py::object {
-            if (!w.world().bounds) return py::none();
-            const Bounds& b = *w.world().bounds;
-            return py::make_tuple(fraction(b.xmin), fraction(b.ymin), fraction(b.xmax), fraction(b.ymax));
-          },
+          "bounds", [](const WorldHandle& w) { return box_tuple(w.world().bounds); },
           "(xmin, ymin, xmax, ymax) as Fractions, or None for an unbounded world.")
       .def_property_readonly(
           "obstacles", [](const WorldHandle& w) { return rings(w.world().obstacles); },
