@@ -50,6 +50,16 @@ TEST(RoundFreeArea, ADiscRobotRoundATurnedSquareAndADiagonalWall) {
   expect_certified(area_of(w), 19.5 * 19.5 - square - walls);
 }
 
+TEST(RoundFreeArea, ADiscRobotInsideAHollowSquare) {
+  // A 10×10 square with a 6×6 hole, r = 1/2: the square grows to 100 + 40r + πr², its hole shrinks to
+  // (6 − 2r)² (free: the reference point may be in it); the box [-20, 20]² shrinks to 39².
+  const World w = world_from(R"({"bounds": [-20, -20, 20, 20], "robot": {"disc": 0.5},
+      "obstacles": [{"outer": [[-5, -5], [5, -5], [5, 5], [-5, 5]], "holes": [[[-3, -3], [-3, 3], [3, 3], [3, -3]]]}],
+      "start": [0, 0], "goal": [10, 10]})");
+  const double r = 0.5;
+  expect_certified(area_of(w), 39 * 39 - (100 + 40 * r + pi * r * r - (6 - 2 * r) * (6 - 2 * r)));
+}
+
 TEST(RoundFreeArea, APointRobotAmongTwoDisjointDiscs) {
   const World w = world_from(R"({"bounds": [0, 0, 10, 10], "discs": [{"center": [3, 3], "radius": 1},
                                                                       {"center": [7, 7], "radius": 1.5}]})");
