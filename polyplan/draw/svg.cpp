@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <numbers>
 #include <stdexcept>
 
 namespace polyplan::svg {
@@ -333,6 +334,29 @@ void Drawing::boxes(const std::vector<Box2>& boxes, const Style& style) {
     body_ += 'Z';
   }
   body_ += "\"/>\n";
+}
+
+void Drawing::circles(const std::vector<Circle2>& circles, const Style& style) {
+  if (circles.empty()) return;
+  body_ += "<g";
+  append_style(body_, style);
+  body_ += ">\n";
+  for (const Circle2& c : circles) {
+    for (int i = 0; i < 16; ++i) {  // the ink of the inscribed 16-gon: near enough for the legend
+      const double a = 2 * std::numbers::pi * i / 16, b = 2 * std::numbers::pi * (i + 1) / 16;
+      mark_ink({c.centre.x + c.radius * std::cos(a), c.centre.y + c.radius * std::sin(a)},
+               {c.centre.x + c.radius * std::cos(b), c.centre.y + c.radius * std::sin(b)}, kInkEdge);
+    }
+    const Point2 s = to_screen(c.centre);
+    body_ += "<circle cx=\"";
+    append_px(body_, s.x);
+    body_ += "\" cy=\"";
+    append_px(body_, s.y);
+    body_ += "\" r=\"";
+    append_px(body_, std::max(0.0, c.radius * scale_));
+    body_ += "\"/>\n";
+  }
+  body_ += "</g>\n";
 }
 
 void Drawing::points(const std::vector<Point2>& pts, double radius_px, const Style& style) {

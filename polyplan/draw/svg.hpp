@@ -27,6 +27,12 @@ struct Box2 {
   double xmin, ymin, xmax, ymax;
 };
 
+// A circle in world units (a disc obstacle, a C-obstacle grown round a point).
+struct Circle2 {
+  Point2 centre;
+  double radius;
+};
+
 // The smallest box around the points it was given, grown one point at a time.
 class BoxAround {
  public:
@@ -78,6 +84,8 @@ class Drawing {
   void curves(const std::vector<std::array<Point2, 3>>&, const Style&);
   // Axis-aligned boxes (grid cells, say) as one <path>, half the text of as many polygons.
   void boxes(const std::vector<Box2>&, const Style&);
+  // Circles of world radii as <circle> elements in one group (arcs drawn as arcs, at any zoom).
+  void circles(const std::vector<Circle2>&, const Style&);
   // Circles of `radius_px` screen pixels, filled with style.fill and outlined with style.stroke.
   void points(const std::vector<Point2>&, double radius_px, const Style&);
   // Text whose baseline starts at `at`, upright, `size_px` screen pixels high, dark grey with a

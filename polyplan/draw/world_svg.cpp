@@ -46,14 +46,6 @@ const svg::Style& bounds_style() {
   }();
   return s;
 }
-const svg::Style& walls_style() {
-  static const svg::Style s = filled(theme::walls_fill, 0.35, "none", 0);
-  return s;
-}
-const svg::Style& cobstacle_style() {
-  static const svg::Style s = filled(theme::cobstacle_fill, 0.55, theme::cobstacle_edge, 1.2);
-  return s;
-}
 const svg::Style& obstacle_style() {
   static const svg::Style s = filled(theme::obstacle_fill, 1.0, theme::obstacle_edge, 1.0);
   return s;
@@ -74,7 +66,7 @@ std::vector<Ring> robot_placed_at(const Robot& robot, const ExactPoint& at) {
   return placed;
 }
 
-// A circle for the eye: 96 sides, finer than a picture shows.
+// A circle's 96-gon: near enough for the box a picture shows.
 std::vector<svg::Point2> circle_ring(const ExactPoint& center, const Rational& radius) {
   const svg::Point2 c = svg_point(center);
   const double r = to_double(radius);
@@ -84,13 +76,6 @@ std::vector<svg::Point2> circle_ring(const ExactPoint& center, const Rational& r
     out.push_back({c.x + r * std::cos(a), c.y + r * std::sin(a)});
   }
   return out;
-}
-
-void draw_bounds(svg::Drawing& drawing, const World& world) {
-  if (world.bounds) drawing.polygon({box_ring(to_box(*world.bounds))}, bounds_style());
-  if (world.disc_bounds)
-    drawing.polygon({circle_ring(world.disc_bounds->center, world.disc_bounds->radius)}, bounds_style());
-  if (world.bounds || world.disc_bounds) drawing.legend("bounds", bounds_style(), svg::Swatch::line);
 }
 
 const svg::Style& thin_wall_style() {
@@ -105,7 +90,9 @@ const svg::Style& thin_wall_style() {
 
 void draw_obstacles(svg::Drawing& drawing, const World& world) {
   for (const PolygonWithHoles& o : world.obstacles) drawing.polygon(rings(o), obstacle_style());
-  for (const Disc& d : world.discs) drawing.polygon({circle_ring(d.center, d.radius)}, obstacle_style());
+  std::vector<svg::Circle2> discs;
+  for (const Disc& d : world.discs) discs.push_back({svg_point(d.center), to_double(d.radius)});
+  drawing.circles(discs, obstacle_style());
   if (!world.obstacles.empty() || !world.discs.empty())
     drawing.legend(world.obstacles.empty() ? "discs"
                    : world.discs.empty()   ? "obstacles"
@@ -117,7 +104,8 @@ void draw_obstacles(svg::Drawing& drawing, const World& world) {
 
 void draw_robot_at_start(svg::Drawing& drawing, const World& world) {
   if (world.robot.is_point() || world.queries.empty()) return;
-  if (world.robot.disc) drawing.polygon({circle_ring(world.queries.front().start, *world.robot.disc)}, robot_style());
+  if (world.robot.disc)
+    drawing.circles({{svg_point(world.queries.front().start), to_double(*world.robot.disc)}}, robot_style());
   for (const Ring& part : robot_placed_at(world.robot, world.queries.front().start)) {
     drawing.polygon({ring(part)}, robot_style());
   }
@@ -236,6 +224,22 @@ void draw_free_space(svg::Drawing& drawing, const CSpace& cspace) {
 
 svg::Point2 svg_point(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
 
+const svg::Style& walls_style() {
+  static const svg::Style s = filled(theme::walls_fill, 0.35, "none", 0);
+  return s;
+}
+const svg::Style& cobstacle_style() {
+  static const svg::Style s = filled(theme::cobstacle_fill, 0.55, theme::cobstacle_edge, 1.2);
+  return s;
+}
+
+void draw_bounds(svg::Drawing& drawing, const World& world) {
+  if (world.bounds) drawing.polygon({box_ring(to_box(*world.bounds))}, bounds_style());
+  if (world.disc_bounds)
+    drawing.circles({{svg_point(world.disc_bounds->center), to_double(world.disc_bounds->radius)}}, bounds_style());
+  if (world.bounds || world.disc_bounds) drawing.legend("bounds", bounds_style(), svg::Swatch::line);
+}
+
 svg::Box2 view_box(const World& world, const CSpace& cspace) { return view_of(world, cspace.cobstacles()); }
 
 svg::Box2 view_box(const World& world) { return view_of(world, {}); }
@@ -288,6 +292,10 @@ void draw_cspace(svg::Drawing& drawing, const CSpace& cspace, FreeSpace free_spa
                    cobstacle_style());
   }
 
+  draw_world_over_cspace(drawing, world);
+}
+
+void draw_world_over_cspace(svg::Drawing& drawing, const World& world) {
   draw_obstacles(drawing, world);
   draw_robot_at_start(drawing, world);
   draw_queries(drawing, world);

@@ -34,6 +34,18 @@ std::vector<std::vector<svg::Point2>> placed_robot(const Robot& robot, double x,
 // first start, and the starts and goals; a legend entry each.
 void draw_world(svg::Drawing& drawing, const World& world);
 
+// The bounds (a box or a circle) as a dark line, with a legend entry.
+void draw_bounds(svg::Drawing& drawing, const World& world);
+
+// What a C-space picture draws over the C-obstacles: the obstacles, discs and walls, the robot at
+// the first start, the starts and goals; a legend entry each.
+void draw_world_over_cspace(svg::Drawing& drawing, const World& world);
+
+// The C-space picture's styles, for the pictures of round worlds' C-spaces too
+// (draw/round_cspace_svg.hpp): where the robot would leave the bounds, and the C-obstacles.
+const svg::Style& walls_style();
+const svg::Style& cobstacle_style();
+
 // In this order, each with a legend entry: the free components (pale fills, one tint per component
 // when there are several, holes shown; left out with FreeSpace::unfilled, when something drawn
 // before shows the free space already), the bounds, the walls (when the robot is not a point),

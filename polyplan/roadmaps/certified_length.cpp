@@ -10,7 +10,7 @@
 //    is rounded outward.
 #include <polyplan/roadmaps/detail/certified_length.hpp>
 
-#include <mpfr.h>
+#include <polyplan/geometry/detail/rounded_angles.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -23,48 +23,11 @@ using round_rules::cross;
 using round_rules::dot;
 using round_rules::sign_of;
 using round_rules::squared;
-
-// One MPFR number of a double's precision, freed on leaving.
-class Big {
- public:
-  Big() { mpfr_init2(value_, 53); }
-  ~Big() { mpfr_clear(value_); }
-  Big(const Big&) = delete;
-  Big& operator=(const Big&) = delete;
-  mpfr_ptr get() { return value_; }
-  double rounded(mpfr_rnd_t way) const { return mpfr_get_d(value_, way); }
-
- private:
-  mpfr_t value_;
-};
-
-double atan2_rounded(double y, double x, mpfr_rnd_t way) {
-  Big by, bx, out;
-  mpfr_set_d(by.get(), y, MPFR_RNDN);  // exact: a double
-  mpfr_set_d(bx.get(), x, MPFR_RNDN);
-  mpfr_atan2(out.get(), by.get(), bx.get(), way);
-  return out.rounded(way);
-}
-
-double pi_rounded(mpfr_rnd_t way) {
-  Big pi;
-  mpfr_const_pi(pi.get(), way);
-  return pi.rounded(way);
-}
+using polyplan::detail::pi_rounded;
+using Big = polyplan::detail::RoundedNumber;
 
 double down(double x) { return std::nextafter(x, -std::numeric_limits<double>::infinity()); }
 double up(double x) { return std::nextafter(x, std::numeric_limits<double>::infinity()); }
-
-// atan2(y, x) for y > 0 over the box of the bounds.
-LengthBounds upper_half_angle(double ylo, double yhi, double xlo, double xhi) {
-  LengthBounds out{std::numeric_limits<double>::infinity(), 0};
-  for (const double y : {ylo, yhi})
-    for (const double x : {xlo, xhi}) {
-      out.lower = std::min(out.lower, atan2_rounded(y, x, MPFR_RNDD));
-      out.upper = std::max(out.upper, atan2_rounded(y, x, MPFR_RNDU));
-    }
-  return out;
-}
 
 LengthBounds angle(const AlgebraicPoint& a, const AlgebraicPoint& b) {
   const Algebraic c = cross(a, b), d = dot(a, b);
@@ -74,7 +37,8 @@ LengthBounds angle(const AlgebraicPoint& a, const AlgebraicPoint& b) {
   double clo = 0, chi = 0, dlo = 0, dhi = 0;
   (turn > 0 ? c : -c).doubleInterval(clo, chi);
   d.doubleInterval(dlo, dhi);
-  const LengthBounds theta = upper_half_angle(clo, chi, dlo, dhi);
+  const polyplan::detail::AngleBounds half = polyplan::detail::upper_half_angle(clo, chi, dlo, dhi);
+  const LengthBounds theta{half.lower, half.upper};
   if (turn > 0) return theta;
   // 2π − θ: twice π is exact in binary; the difference rounded outward.
   return {down(2 * pi_rounded(MPFR_RNDD) - theta.upper), up(2 * pi_rounded(MPFR_RNDU) - theta.lower)};

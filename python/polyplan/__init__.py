@@ -34,6 +34,7 @@ from ._polyplan import (  # noqa: F401 (the public names)
     InputError,
     Plan,
     Planner,
+    RoundCSpace,
     World,
     check,
     cspace,
@@ -53,7 +54,7 @@ from .experiment import Experiment, Results
 
 __all__ = [
     "Arm", "CSpace", "Cells", "Drive", "Experiment", "ExperimentInterrupted", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
-    "PlannerInfo", "World", "animate", "check", "cspace", "grid", "ik", "plan", "planner", "planners", "plot", "potential",
+    "PlannerInfo", "RoundCore", "RoundCSpace", "World", "animate", "check", "cspace", "grid", "ik", "plan", "planner", "planners", "plot", "potential",
     "read_arm", "read_world", "replan", "Results", "scen", "search_graph", "steer", "svg",
 ]
 
@@ -91,6 +92,20 @@ class FreeComponent(NamedTuple):
     outer: object
     holes: list
     area: Optional[_fractions.Fraction]
+
+
+class RoundCore(NamedTuple):
+    """One C-obstacle of a world with discs or walls: the points within `radius` of a core.
+
+    kind: "point" (points: its centre, a (1, 2) array), "wall" (points: its polyline; radius 0: a
+    line crossed never, touched freely) or "polygon" (points: its outer ring; holes its holes);
+    radius: an exact Fraction; name: the things it stands for ("discs[0]", "walls[1]", ...)."""
+
+    kind: str
+    points: object
+    holes: list
+    radius: _fractions.Fraction
+    name: str
 
 
 class Graph(NamedTuple):

@@ -4,7 +4,10 @@
 #include "exact_values.hpp"
 
 #include <polyplan/arm/arm.hpp>
+#include <polyplan/draw/round_cspace_svg.hpp>
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/round_cspace_area.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/io/arm_reader.hpp>
 #include <polyplan/io/world_reader.hpp>
 
@@ -35,6 +38,12 @@ py::list rings(const std::vector<PolygonWithHoles>& polygons) {
   py::list out;
   for (const PolygonWithHoles& p : polygons) out.append(points_array(p.outer));
   return out;
+}
+
+// (xmin, ymin, xmax, ymax) as Fractions, or None.
+py::object box_tuple(const std::optional<Bounds>& box) {
+  if (!box) return py::none();
+  return py::make_tuple(fraction(box->xmin), fraction(box->ymin), fraction(box->xmax), fraction(box->ymax));
 }
 
 py::tuple query_tuple(const Query& q) {
@@ -76,6 +85,77 @@ py::object free_area(const CSpaceView& view) {
   return fraction(sum);
 }
 
+// The C-space of a world with discs or walls: cores grown by radii (geometry/round_cspace.hpp), and
+// its free area, computed once.
+struct RoundCSpaceView {
+  WorldPtr world;
+  FreeArea area;
+};
+
+const RoundCSpace& round_space(const RoundCSpaceView& view) {
+  return locked(view.world->lock(), [&]() -> const RoundCSpace& { return view.world->door().round_world().cspace(); });
+}
+
+// The names of RoundCore::Kind and RoundCSpace::Robot, in their enumerations' order.
+constexpr const char* kind_names[] = {"point", "wall", "polygon"};
+constexpr const char* robot_names[] = {"point", "disc", "polygon"};
+
+py::list round_cores(const RoundCSpaceView& view) {
+  const py::object RoundCore = py::module_::import("polyplan").attr("RoundCore");
+  py::list out;
+  for (const polyplan::RoundCore& core : round_space(view).obstacles) {
+    py::list holes;
+    for (std::size_t i = 1; i < core.rings.size(); ++i) holes.append(points_array(core.rings[i]));
+    out.append(RoundCore(kind_names[static_cast<int>(core.kind)],
+                         points_array(core.rings.empty() ? core.points : core.rings.front()), holes,
+                         fraction(core.radius), core.name));
+  }
+  return out;
+}
+
+void bind_round_cspace(py::module_& m) {
+  py::class_<RoundCSpaceView>(m, "RoundCSpace",
+                              "The C-space of a world with discs or walls (polyplan.cspace(world)): C-obstacles as "
+                              "cores grown by radii, and the free area, exact or certified.")
+      .def_property_readonly(
+          "robot", [](const RoundCSpaceView& v) { return robot_names[static_cast<int>(round_space(v).robot)]; },
+          "\"point\", \"disc\" or \"polygon\".")
+      .def_property_readonly("obstacles", &round_cores,
+                             "The C-obstacles as RoundCore(kind, points, holes, radius, name): the points within "
+                             "radius (a Fraction) of the core, a \"point\" (points: its centre), a \"wall\" (its "
+                             "polyline; radius 0: crossed never, touched freely) or a \"polygon\" (its outer ring, "
+                             "holes its holes); points as (N, 2) float64 arrays.")
+      .def_property_readonly(
+          "box", [](const RoundCSpaceView& v) { return box_tuple(round_space(v).box); },
+          "The box the reference point keeps to, (xmin, ymin, xmax, ymax) as Fractions; None without box bounds.")
+      .def_property_readonly(
+          "disc",
+          [](const RoundCSpaceView& v) -> py::object {
+            const auto& disc = round_space(v).disc;
+            return disc ? py::make_tuple(fraction(disc->center.x), fraction(disc->center.y), fraction(disc->radius))
+                        : py::object(py::none());
+          },
+          "The disc the reference point keeps to in disc bounds, (x, y, radius) as Fractions; else None.")
+      .def_property_readonly(
+          "free_area",
+          [](const RoundCSpaceView& v) { return v.area.exact ? fraction(*v.area.exact) : py::object(py::none()); },
+          "The free area as an exact Fraction when it is rational (every radius 0, box bounds); else None.")
+      .def_property_readonly(
+          "free_area_bounds", [](const RoundCSpaceView& v) { return py::make_tuple(v.area.lower, v.area.upper); },
+          "(lower, upper): floats that hold the free area for sure (inf, inf when unbounded).")
+      .def(
+          "svg",
+          [](const RoundCSpaceView& v) {
+            return locked(v.world->lock(), [&] {
+              return round_cspace_picture(v.world->world(), v.world->door().round_world().cspace()).str();
+            });
+          },
+          "The picture `polyplan cspace WORLD --svg` draws, as SVG text.")
+      .def("__repr__", [](const RoundCSpaceView& v) {
+        return "<polyplan.RoundCSpace of " + v.world->world().source + ": free area " + free_area_text(v.area) + ">";
+      });
+}
+
 }  // namespace
 
 std::shared_ptr<ProblemHandle> problem_of(py::handle value, const std::string& what) {
@@ -110,12 +190,7 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
       .def_property_readonly(
           "source", [](const WorldHandle& w) { return w.world().source; }, "The file (or name) it was read from.")
       .def_property_readonly(
-          "bounds",
-          [](const WorldHandle& w) -> py::object {
-            if (!w.world().bounds) return py::none();
-            const Bounds& b = *w.world().bounds;
-            return py::make_tuple(fraction(b.xmin), fraction(b.ymin), fraction(b.xmax), fraction(b.ymax));
-          },
+          "bounds", [](const WorldHandle& w) { return box_tuple(w.world().bounds); },
           "(xmin, ymin, xmax, ymax) as Fractions, or None for an unbounded world.")
       .def_property_readonly(
           "obstacles", [](const WorldHandle& w) { return rings(w.world().obstacles); },
@@ -317,14 +392,23 @@ are radians, relative (theta1 from +x, theta_i from link i-1).)")
                              "The free space's exact area (a Fraction); None when it is unbounded.")
       .def("__repr__", [](const CSpaceView& v) { return "<polyplan.CSpace of " + v.world->world().source + ">"; });
 
+  bind_round_cspace(m);
   m.def(
       "cspace",
-      [](const py::object& given) {
+      [](const py::object& given) -> py::object {
         const WorldPtr world = world_of(given, "cspace");
+        if (!round_features(world->world()).empty()) {
+          const FreeArea area = locked(world->lock(), [&] {
+            return round_free_area(world->door().round_world().cspace(), world->world().source);
+          });
+          return py::cast(RoundCSpaceView{world, area});
+        }
         locked(world->lock(), [&] { return &world->cspace(); });
-        return CSpaceView{world};
+        return py::cast(CSpaceView{world});
       },
-      py::arg("world"), "The world's exact C-space (built once per World, shared by its planners).");
+      py::arg("world"),
+      "The world's exact C-space (built once per World, shared by its planners): a CSpace, or a RoundCSpace for a "
+      "world with discs or walls.");
 }
 
 }  // namespace polyplan::python
