@@ -1,5 +1,6 @@
 #include <polyplan/draw/plan_svg.hpp>
 
+#include <polyplan/draw/round_cspace_svg.hpp>
 #include <polyplan/draw/theme.hpp>
 #include <polyplan/draw/world_svg.hpp>
 
@@ -344,12 +345,12 @@ svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactP
   return draw_reports_over(view_box(cspace.world(), cspace), background, reports, labels);
 }
 
-svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<ExactPoint>>& reports,
+svg::Drawing draw_plan(const RoundWorld& world, const std::vector<PlanReport<ExactPoint>>& reports,
                        const std::vector<std::string>& labels) {
-  const auto background = [&](svg::Drawing& drawing, const PlanReport<ExactPoint>*, FreeSpace) {
-    draw_world(drawing, world);
+  const auto background = [&](svg::Drawing& drawing, const PlanReport<ExactPoint>*, FreeSpace free_space) {
+    draw_round_cspace(drawing, world.world(), world.cspace(), free_space == FreeSpace::filled);
   };
-  return draw_reports_over(view_box(world), background, reports, labels);
+  return draw_reports_over(view_box(world.world()), background, reports, labels);
 }
 
 }  // namespace polyplan

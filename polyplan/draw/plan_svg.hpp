@@ -3,6 +3,7 @@
 // (plan/plan_report.hpp): a new planner gets its picture without drawing code of its own.
 #include <polyplan/draw/svg.hpp>
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/plan_report.hpp>
 
 #include <string>
@@ -18,9 +19,9 @@ namespace polyplan {
 // the cells and the expanded configurations; others draw their paths only.
 svg::Drawing draw_plan(const CSpace& cspace, const std::vector<PlanReport<ExactPoint>>& reports,
                        const std::vector<std::string>& labels = {});
-// The same over a world with discs or walls (World::round_features), which has no polygon C-space:
-// the world as its file draws it (circles, walls), then what the reports carry.
-svg::Drawing draw_plan(const World& world, const std::vector<PlanReport<ExactPoint>>& reports,
+// The same over a world with discs or walls (World::round_features): its C-space as
+// draw/round_cspace_svg.hpp draws it (the C-obstacles grown, arcs as arcs), the world over it.
+svg::Drawing draw_plan(const RoundWorld& world, const std::vector<PlanReport<ExactPoint>>& reports,
                        const std::vector<std::string>& labels = {});
 
 // The pieces, for pictures of one's own (examples/search_comparison draws six searches' paths

@@ -48,7 +48,7 @@ std::vector<Picture> arm_pictures(const ArmProblem& arm, const std::vector<const
 template <class Configuration>
 svg::Drawing world_picture(const Problem& problem, const std::vector<PlanReport<Configuration>>& reports) {
   if constexpr (std::is_same_v<Configuration, ExactPoint>) {
-    if (!round_features(*problem.world()).empty()) return draw_plan(*problem.world(), reports);  // no C-space
+    if (!round_features(*problem.world()).empty()) return draw_plan(problem.round_world(), reports);
     return draw_plan(problem.cspace(), reports);
   } else return draw_plan(*problem.world(), reports);
 }

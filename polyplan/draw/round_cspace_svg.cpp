@@ -110,8 +110,8 @@ void draw_leaving_bounds(svg::Drawing& drawing, const World& world, const RoundC
 
 }  // namespace
 
-void draw_round_cspace(svg::Drawing& drawing, const World& world, const RoundCSpace& space) {
-  draw_free_region(drawing, space);
+void draw_round_cspace(svg::Drawing& drawing, const World& world, const RoundCSpace& space, bool fill_free) {
+  if (fill_free) draw_free_region(drawing, space);
   draw_bounds(drawing, world);
   draw_leaving_bounds(drawing, world, space);
   draw_cobstacles(drawing, space);

@@ -10,7 +10,8 @@ namespace polyplan {
 // In draw_cspace's order and with its legends (draw/world_svg.hpp): the free space's region (the
 // box or disc the reference point keeps to, pale, the C-obstacles over it), the bounds, where the
 // robot would leave them, the C-obstacles, and the world over them.
-void draw_round_cspace(svg::Drawing& drawing, const World& world, const RoundCSpace& space);
+// Without `fill_free`, the free space's region is left out (cells drawn over it show it).
+void draw_round_cspace(svg::Drawing& drawing, const World& world, const RoundCSpace& space, bool fill_free = true);
 
 // The picture in the world's view (draw/world_svg.hpp view_box).
 svg::Drawing round_cspace_picture(const World& world, const RoundCSpace& space);

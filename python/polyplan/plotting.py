@@ -69,15 +69,42 @@ def draw_world(world, ax, cobstacles=True):
         x, y, r = (float(v) for v in world.disc_bounds)
         ax.add_patch(Circle((x, y), r, facecolor="none", edgecolor="black", lw=1))
     round_world = len(world.discs) or world.walls or world.disc_bounds is not None or world.robot_disc is not None
-    if world.robot and cobstacles and not round_world:
-        for ring in _polyplan.cspace(world).obstacles:
-            polygon(ax, ring, facecolor=COBSTACLE, edgecolor="none", label=None)
+    if (world.robot or world.robot_disc is not None) and cobstacles:
+        if round_world:
+            for core in _polyplan.cspace(world).obstacles:
+                _draw_grown_core(ax, core)
+        else:
+            for ring in _polyplan.cspace(world).obstacles:
+                polygon(ax, ring, facecolor=COBSTACLE, edgecolor="none", label=None)
     for ring in world.obstacles:
         polygon(ax, ring, facecolor=OBSTACLE, edgecolor="black", lw=0.5)
     for x, y, r in world.discs:
         ax.add_patch(Circle((x, y), r, facecolor=OBSTACLE, edgecolor="black", lw=0.5))
     for wall in world.walls:
         ax.plot(wall[:, 0], wall[:, 1], color="black", lw=2.5, solid_capstyle="butt")
+
+
+def _draw_grown_core(ax, core):
+    """A round world's C-obstacle (polyplan.cspace(world).obstacles): its core — a point, a wall or a
+    polygon — grown by its radius, drawn as the core, a disc round each of its points and a band
+    either side of each of its edges, all in one colour: their union is the grown core."""
+    from matplotlib.patches import Circle
+    style = dict(facecolor=COBSTACLE, edgecolor="none")
+    r = float(core.radius)
+    points = np.asarray(core.points, dtype=float)
+    if core.kind == "polygon":
+        polygon(ax, points, **style)
+    if r <= 0:
+        return
+    for x, y in points:
+        ax.add_patch(Circle((x, y), r, **style))
+    closed = core.kind == "polygon"
+    for ring in [points] + ([np.asarray(h, dtype=float) for h in core.holes] if closed else []):
+        ends = zip(ring, np.roll(ring, -1, axis=0)) if closed else zip(ring[:-1], ring[1:])
+        for a, b in ends:
+            d = b - a
+            n = np.array([-d[1], d[0]]) * (r / np.hypot(*d))
+            polygon(ax, np.array([a + n, b + n, b - n, a - n]), **style)
 
 
 def _plot_world(world, plans, ax):

@@ -130,8 +130,9 @@ def test_the_world_and_its_plot_show_discs_walls_and_arcs():
     assert sphere.disc_bounds == (0, 0, 10) and sphere.bounds is None
     plan = polyplan.plan(floor)[0]
     ax = polyplan.plot(plan)
-    circles = [p for p in ax.patches if isinstance(p, Circle)]
-    assert [(c.center, c.radius) for c in circles] == [((2, 6), 0.8)]
+    circles = [(tuple(map(float, p.center)), round(p.radius, 12)) for p in ax.patches if isinstance(p, Circle)]
+    assert ((2, 6), 0.8) in circles and ((2, 6), 1.1) in circles  # the table, and its C-obstacle grown by 0.3
+    assert ((4, 3), 0.3) in circles  # a wall's end grown by the robot's radius
     from polyplan.plotting import drawn_path
     drawn = drawn_path(plan, floor)
     assert len(drawn) > len(plan.pieces) + 1  # the arcs drawn through their points
