@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <exception>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -19,20 +20,32 @@ struct ThreadsRun {
 // Runs `work(worker)` on up to `threads` threads at once, the caller's own among them as worker
 // 0. A thread the system cannot start (too many threads for its limits, no memory for a stack) is
 // not an error: the pool runs with those that started, so `work` must take its pieces from a
-// shared counter (for_each_piece), never a fixed slice per worker.
+// shared counter (for_each_piece), never a fixed slice per worker. An exception a worker throws
+// (out of memory, say) ends that worker and is thrown again to the caller once all have joined —
+// never std::terminate from a thread.
 template <class Work>
 ThreadsRun run_on_threads(unsigned threads, const Work& work) {
+  std::vector<std::exception_ptr> failures(std::max(threads, 1u));
+  const auto guarded = [&](unsigned worker) {
+    try {
+      work(worker);
+    } catch (...) {
+      failures[worker] = std::current_exception();
+    }
+  };
   std::vector<std::thread> pool;
   pool.reserve(threads);
   for (unsigned worker = 1; worker < threads; ++worker) {
     try {
-      pool.emplace_back(work, worker);
+      pool.emplace_back(guarded, worker);
     } catch (const std::system_error&) {
       break;
     }
   }
-  work(0u);
+  guarded(0u);
   for (std::thread& thread : pool) thread.join();
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
   return {std::max(threads, 1u), static_cast<unsigned>(pool.size() + 1)};
 }
 
