@@ -13,6 +13,8 @@
 //
 // A plain program, not Google Benchmark: it times whole planning runs of the command-line program.
 // Usage: arm_grid_table [--resolutions 5,2,1] [--earlier BIN] [--exact] [--limit 600] [--memory-limit 16]
+#include "spawn_quiet.hpp"
+
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
@@ -44,18 +46,11 @@ Run run(const std::string& program, std::vector<std::string> args, double limit,
   args.insert(args.begin(), program);
   args.push_back("--json");
   args.push_back(json);
-  const pid_t child = fork();
-  if (child == 0) {
+  const pid_t child = polyplan::bench::spawn_quiet(args, [memory_gb] {
     const auto bytes = static_cast<rlim_t>(memory_gb * 1024 * 1024 * 1024);
     const rlimit cap{bytes, bytes};
     setrlimit(RLIMIT_AS, &cap);
-    if (!freopen("/dev/null", "w", stdout)) _exit(126);
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    execv(program.c_str(), argv.data());
-    _exit(127);
-  }
+  });
   Run result;
   const auto began = std::chrono::steady_clock::now();
   int status = 0;

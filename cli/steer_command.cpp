@@ -1,6 +1,6 @@
 // polyplan steer --model dubins|reeds-shepp --radius R --from X,Y,THETA --to X,Y,THETA
-// [--json FILE|-] [--svg OUT.svg]: the shortest steering curve between two poses (theta in
-// degrees), its word and segments, and its picture.
+// [--json FILE|-] [--svg OUT.svg] [--all-words]: the shortest steering curve between two poses
+// (theta in degrees), its word and segments, its picture, and every word tried with its length.
 #include "cli/command.hpp"
 #include "cli/option_flags.hpp"
 
@@ -9,6 +9,8 @@
 #include <polyplan/draw/steering_svg.hpp>
 #include <polyplan/geometry/input_error.hpp>
 #include <polyplan/registry/steering_json.hpp>
+
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -35,6 +37,7 @@ struct SteerOptions {
   std::unique_ptr<CommandOptions<Steering>> steering;
   std::string from, to;
   std::string json, svg;
+  bool all_words = false;
 };
 
 // "X,Y,THETA" with theta in degrees, reduced exactly.
@@ -50,13 +53,18 @@ int run_steer(const SteerOptions& o) {
   const Steering steering = o.steering->parse();
   const double radius = steering.radius;
   const CarPose from = pose_option(o.from, "--from"), to = pose_option(o.to, "--to");
-  const SteeringPath path = steering.model == Steering::Model::reeds_shepp ? shortest_reeds_shepp_path(from, to, radius)
-                                                                           : shortest_dubins_path(from, to, radius);
-  if (!o.json.empty()) write_json(steering_json(path), o.json);
+  const SteeringWords words = steering.model == Steering::Model::reeds_shepp ? reeds_shepp_words(from, to, radius)
+                                                                             : dubins_words(from, to, radius);
+  const SteeringPath& path = words.path;
+  if (!o.json.empty()) {
+    nlohmann::json document = steering_json(path);
+    if (o.all_words) document["words"] = steering_words_json(words);
+    write_json(document, o.json);
+  }
   const std::string summary =
       steering_summary(steering.model == Steering::Model::reeds_shepp ? "reeds-shepp" : "dubins", path);
   if (!o.svg.empty()) draw_steering(path, from, to, radius, summary).write(o.svg);
-  if (o.json != "-") std::cout << summary << '\n';
+  if (o.json != "-") std::cout << summary << '\n' << (o.all_words ? steering_words_text(words) : "");
   return ok;
 }
 
@@ -72,6 +80,8 @@ void add_steer_command(CLI::App& app, Action& run) {
   command->add_option("--json", options->json,
                       "write {length, word, segments} as JSON to this file ('-' for standard output)");
   command->add_option("--svg", options->svg, "draw the curve, its turning circles and the two poses");
+  command->add_flag("--all-words", options->all_words,
+                    "list every word tried with its length or 'infeasible', the shortest marked (JSON: words)");
   command->callback([options, &run] { run = [options] { return run_steer(*options); }; });
 }
 

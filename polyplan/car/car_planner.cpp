@@ -16,13 +16,13 @@ CarPlanner::CarPlanner(const World& world) : world_(world), collision_(world) {
 bool CarPlanner::reaches_goal(const CarPose& end, const CarPose& goal) const { return arrives(end, goal, radius()); }
 
 PlanReport<CarState> CarPlanner::plan(const Query& query, const QueryOptions& options) {
-  const Stopwatch clock;
+  query_clock_ = Stopwatch();
   const std::size_t enclosures_before = collision_.enclosures_tested();
   PlanReport<CarState> report;
   const CarPose start = start_pose(query), goal = goal_pose(query);
   const auto finish = [&] {
     report.facts.set(CarFacts::certification_enclosures, collision_.enclosures_tested() - enclosures_before);
-    report.facts.set(QueryFacts::seconds, clock.seconds());
+    report.facts.set(QueryFacts::seconds, query_seconds());
     return report;
   };
   if (auto why = car_query_not_free(collision_, query)) {

@@ -15,6 +15,7 @@
 #include <polyplan/car/holonomic_distance.hpp>
 #include <polyplan/car/steering_path.hpp>
 #include <polyplan/plan/planner.hpp>
+#include <polyplan/plan/stopwatch.hpp>
 
 #include <memory>
 #include <optional>
@@ -45,6 +46,9 @@ class CarPlanner : public Planner<SteeredCar> {
   // within its tolerance. Exactly (to rounding) at the goal by default.
   virtual bool reaches_goal(const CarPose& end, const CarPose& goal) const;
 
+  // Seconds since plan() was entered: what a search holds to its time limit, so that the query's
+  // checks and the holonomic distance to the goal count against it too.
+  double query_seconds() const { return query_clock_.seconds(); }
   const CarCollision& collision() const { return collision_; }
   // The shortest path of a point among the obstacles to the query's goal (set before search()),
   // when the reference point lies in the body (car/holonomic_distance.hpp); null otherwise.
@@ -70,6 +74,7 @@ class CarPlanner : public Planner<SteeredCar> {
   const World& world_;
   CarCollision collision_;
   std::optional<HolonomicDistance> holonomic_;
+  Stopwatch query_clock_;
 };
 
 }  // namespace polyplan

@@ -96,7 +96,7 @@ class CarRrtPlanner final : public CarPlanner {
       return tell(0);
     if (miss(start, goal) <= options_.goal_tolerance) return tell(0);
     while (iterations < options_.iterations) {
-      if (clock.seconds() >= options_.time) break;
+      if (query_seconds() >= options_.time) break;
       ++iterations;
       const CarPose sample =
           uniform01(random_) < options_.goal_bias

@@ -111,28 +111,44 @@ SteeringPath path_of(const Word& w, double radius, bool snap) {
   return path;
 }
 
-constexpr std::optional<Word> (*every_word[])(const DubinsFrame&) = {lsl, rsr, lsr, rsl, rlr, lrl};
+// The six words, in the order steer --all-words lists them.
+constexpr struct {
+  const char* name;
+  std::optional<Word> (*solve)(const DubinsFrame&);
+} every_word[] = {{"LSL", lsl}, {"RSR", rsr}, {"LSR", lsr}, {"RSL", rsl}, {"RLR", rlr}, {"LRL", lrl}};
 
-std::vector<Word> words(const CarPose& from, const CarPose& to, double radius) {
+// Each of the six, none where it cannot join the poses.
+std::vector<std::optional<Word>> words(const CarPose& from, const CarPose& to, double radius) {
   require_steerable(from, to, radius, "dubins");
   const DubinsFrame f = frame(from, to, radius);
-  std::vector<Word> found;
-  for (auto word : every_word)
-    if (const auto w = word(f)) found.push_back(*w);
+  std::vector<std::optional<Word>> found;
+  for (const auto& word : every_word) found.push_back(word.solve(f));
   return found;
+}
+
+ShortestWord shortest_word(const std::vector<std::optional<Word>>& candidates, const CarPose& from, const CarPose& to,
+                           double radius) {
+  return shortest_reaching(candidates, from, to, radius, "dubins",
+                           [radius](const Word& w, bool snap) { return path_of(w, radius, snap); });
 }
 
 }  // namespace
 
 std::vector<SteeringPath> dubins_paths(const CarPose& from, const CarPose& to, double radius) {
   std::vector<SteeringPath> paths;
-  for (const Word& w : words(from, to, radius)) paths.push_back(path_of(w, radius, true));
+  for (const auto& w : words(from, to, radius))
+    if (w) paths.push_back(path_of(*w, radius, true));
   return paths;
 }
 
 SteeringPath shortest_dubins_path(const CarPose& from, const CarPose& to, double radius) {
-  return shortest_reaching(words(from, to, radius), from, to, radius, "dubins",
-                           [radius](const Word& w, bool snap) { return path_of(w, radius, snap); });
+  return shortest_word(words(from, to, radius), from, to, radius).path;
+}
+
+SteeringWords dubins_words(const CarPose& from, const CarPose& to, double radius) {
+  const auto candidates = words(from, to, radius);
+  return listed_words(shortest_word(candidates, from, to, radius), candidates, radius,
+                      [](std::size_t i) { return std::string(every_word[i].name); });
 }
 
 double dubins_distance(const CarPose& from, const CarPose& to, double radius) {

@@ -19,4 +19,9 @@ double dubins_distance(const CarPose& from, const CarPose& to, double radius);
 // shortest_dubins_path).
 std::vector<SteeringPath> dubins_paths(const CarPose& from, const CarPose& to, double radius);
 
+// The shortest path and each of the six words in the order LSL, RSR, LSR, RSL, RLR, LRL, with its
+// length or infeasible (LSR and RSL when their circles overlap, RLR and LRL when theirs lie more
+// than 4 radii apart): what steer --all-words lists.
+SteeringWords dubins_words(const CarPose& from, const CarPose& to, double radius);
+
 }  // namespace polyplan

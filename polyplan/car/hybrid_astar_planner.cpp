@@ -113,7 +113,7 @@ class HybridAStarPlanner final : public CarPlanner {
       return attempt;
     };
     while (!open.empty()) {
-      if (expanded >= options_.iterations || clock.seconds() >= options_.time) {
+      if (expanded >= options_.iterations || query_seconds() >= options_.time) {
         const bool timed_out = expanded < options_.iterations;
         facts.set(QueryFacts::stopped_by, timed_out ? "time limit" : "iteration limit");
         attempt.failure = PlanStatus::limit;

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <optional>
+#include <string>
 
 namespace polyplan {
 namespace {
@@ -160,32 +161,60 @@ bool lp_rm_slm_rp(double x, double y, double phi, double& t, double& u, double& 
 
 using Formula = bool (*)(double, double, double, double&, double&, double&);
 
+// A base formula and the signs its t, u, v are held to (0: either), which give its words' names.
+struct Base {
+  Formula solve;
+  double t, u, v;
+};
+constexpr Base lsl{lp_sp_lp, 1, 1, 1}, lsr{lp_sp_rp, 1, 1, 1}, lrl{lp_rm_l, 1, -1, 0},
+    lrlr_same{lp_rup_lum_rm, 1, 1, -1}, lrlr_turned{lp_rum_lum_rp, 1, -1, 1}, lrsl{lp_rm_sm_lm, 1, -1, -1},
+    lrsr{lp_rm_sm_rm, 1, -1, -1}, lrslr{lp_rm_slm_rp, 1, -1, 1};
+
+// The words tried, one slot each (none where the formula does not join the poses), and, when
+// asked (steer --all-words), each slot's name.
+struct Slots {
+  std::vector<std::optional<Word>> words;
+  std::vector<std::string>* names = nullptr;
+};
+
+// A word's letters with the gears of its lengths: "L+R-L" when the last may be either.
+std::string gears_of(const Word& w) {
+  std::string name;
+  for (int i = 0; i < w.size; ++i) {
+    name += w.letters[i];
+    if (w.lengths[i] != 0) name += w.lengths[i] > 0 ? '+' : '-';
+  }
+  return name;
+}
+
 // A base formula under the four symmetries; `make` turns its (t, u, v) and the symmetry's sign
 // (-1: time-flipped) into the word: `letters` for the goal as given, `mirrored` (left and right
 // swapped) for the reflection.
 template <class Make>
-void symmetric(std::vector<Word>& out, Formula formula, Letters letters, Letters mirrored, double x, double y,
-               double phi, Make make) {
+void symmetric(Slots& out, const Base& base, Letters letters, Letters mirrored, double x, double y, double phi,
+               Make make) {
   double t, u, v;
   // A length is within `zero` of 0 exactly when the t, u or v it is made of is (the words' other
   // lengths are fixed quarter turns): snapped where it lies, the computed ones kept beside.
-  const auto snapped = [&](Letters l, double sign) {
+  const auto solved = [&](double gx, double gy, double gphi, Letters l, double sign) -> std::optional<Word> {
+    if (out.names) out.names->push_back(gears_of(make(l, sign, base.t, base.u, base.v)));
+    if (!base.solve(gx, gy, gphi, t, u, v)) return std::nullopt;
     Word w = make(l, sign, t, u, v);
     w.computed = w.lengths;
     for (int i = 0; i < w.size; ++i)
       if (std::abs(w.lengths[i]) < zero) w.lengths[i] = 0;
     return w;
   };
-  if (formula(x, y, phi, t, u, v)) out.push_back(snapped(letters, 1));
-  if (formula(-x, y, -phi, t, u, v)) out.push_back(snapped(letters, -1));
-  if (formula(x, -y, -phi, t, u, v)) out.push_back(snapped(mirrored, 1));
-  if (formula(-x, -y, phi, t, u, v)) out.push_back(snapped(mirrored, -1));
+  out.words.push_back(solved(x, y, phi, letters, 1));
+  out.words.push_back(solved(-x, y, -phi, letters, -1));
+  out.words.push_back(solved(x, -y, -phi, mirrored, 1));
+  out.words.push_back(solved(-x, -y, phi, mirrored, -1));
 }
 
-void csc(std::vector<Word>& out, double x, double y, double phi) {
+void csc(Slots& out, double x, double y, double phi) {
   const auto make = [](Letters l, double s, double t, double u, double v) { return word(l, {s * t, s * u, s * v}); };
-  symmetric(out, lp_sp_lp, "LSL", "RSR", x, y, phi, make);
-  symmetric(out, lp_sp_rp, "LSR", "RSL", x, y, phi, make);
+  symmetric(out, lsl, "LSL", "RSR", x, y, phi, make);
+  symmetric(out, lsr, "LSR", "RSL", x, y, phi, make);
 }
 
 // The goal's "backwards" twin: the start seen from the goal, for the words read in reverse.
@@ -194,43 +223,43 @@ void backwards(double x, double y, double phi, double& xb, double& yb) {
   yb = x * std::sin(phi) - y * std::cos(phi);
 }
 
-void ccc(std::vector<Word>& out, double x, double y, double phi) {
-  symmetric(out, lp_rm_l, "LRL", "RLR", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+void ccc(Slots& out, double x, double y, double phi) {
+  symmetric(out, lrl, "LRL", "RLR", x, y, phi, [](Letters l, double s, double t, double u, double v) {
     return word(l, {s * t, s * u, s * v});
   });
   double xb, yb;
   backwards(x, y, phi, xb, yb);
-  symmetric(out, lp_rm_l, "LRL", "RLR", xb, yb, phi, [](Letters l, double s, double t, double u, double v) {
+  symmetric(out, lrl, "LRL", "RLR", xb, yb, phi, [](Letters l, double s, double t, double u, double v) {
     return word(l, {s * v, s * u, s * t});
   });
 }
 
-void cccc(std::vector<Word>& out, double x, double y, double phi) {
-  symmetric(out, lp_rup_lum_rm, "LRLR", "RLRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+void cccc(Slots& out, double x, double y, double phi) {
+  symmetric(out, lrlr_same, "LRLR", "RLRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
     return word(l, {s * t, s * u, -s * u, s * v});
   });
-  symmetric(out, lp_rum_lum_rp, "LRLR", "RLRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+  symmetric(out, lrlr_turned, "LRLR", "RLRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
     return word(l, {s * t, s * u, s * u, s * v});
   });
 }
 
-void ccsc(std::vector<Word>& out, double x, double y, double phi) {
+void ccsc(Slots& out, double x, double y, double phi) {
   const auto forward = [](Letters l, double s, double t, double u, double v) {
     return word(l, {s * t, -s * pi / 2, s * u, s * v});
   };
-  symmetric(out, lp_rm_sm_lm, "LRSL", "RLSR", x, y, phi, forward);
-  symmetric(out, lp_rm_sm_rm, "LRSR", "RLSL", x, y, phi, forward);
+  symmetric(out, lrsl, "LRSL", "RLSR", x, y, phi, forward);
+  symmetric(out, lrsr, "LRSR", "RLSL", x, y, phi, forward);
   double xb, yb;
   backwards(x, y, phi, xb, yb);
   const auto reverse = [](Letters l, double s, double t, double u, double v) {
     return word(l, {s * v, s * u, -s * pi / 2, s * t});
   };
-  symmetric(out, lp_rm_sm_lm, "LSRL", "RSLR", xb, yb, phi, reverse);
-  symmetric(out, lp_rm_sm_rm, "RSRL", "LSLR", xb, yb, phi, reverse);
+  symmetric(out, lrsl, "LSRL", "RSLR", xb, yb, phi, reverse);
+  symmetric(out, lrsr, "RSRL", "LSLR", xb, yb, phi, reverse);
 }
 
-void ccscc(std::vector<Word>& out, double x, double y, double phi) {
-  symmetric(out, lp_rm_slm_rp, "LRSLR", "RLSRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
+void ccscc(Slots& out, double x, double y, double phi) {
+  symmetric(out, lrslr, "LRSLR", "RLSRL", x, y, phi, [](Letters l, double s, double t, double u, double v) {
     return word(l, {s * t, -s * pi / 2, s * u, -s * pi / 2, s * v});
   });
 }
@@ -244,34 +273,48 @@ SteeringPath path_of(const Word& w, double radius, bool snap) {
   return path;
 }
 
-// Every word that joins the poses, in turning radii, the goal in the start's frame.
-std::vector<Word> every_word(const CarPose& from, const CarPose& to, double radius) {
+// Every word tried, in turning radii, the goal in the start's frame; `names` as Slots says.
+std::vector<std::optional<Word>> every_word(const CarPose& from, const CarPose& to, double radius,
+                                            std::vector<std::string>* names = nullptr) {
   require_steerable(from, to, radius, "reeds-shepp");
   const double dx = to.x - from.x, dy = to.y - from.y, c = std::cos(from.theta), s = std::sin(from.theta);
   const double x = (c * dx + s * dy) / radius, y = (c * dy - s * dx) / radius, phi = wrap(to.theta - from.theta);
-  std::vector<Word> words;
-  words.reserve(48);
-  csc(words, x, y, phi);
-  ccc(words, x, y, phi);
-  cccc(words, x, y, phi);
-  ccsc(words, x, y, phi);
-  ccscc(words, x, y, phi);
-  return words;
+  Slots slots{{}, names};
+  slots.words.reserve(44);
+  csc(slots, x, y, phi);
+  ccc(slots, x, y, phi);
+  cccc(slots, x, y, phi);
+  ccsc(slots, x, y, phi);
+  ccscc(slots, x, y, phi);
+  return std::move(slots.words);
+}
+
+ShortestWord shortest_word(const std::vector<std::optional<Word>>& candidates, const CarPose& from, const CarPose& to,
+                           double radius) {
+  return shortest_reaching(candidates, from, to, radius, "reeds-shepp",
+                           [radius](const Word& w, bool snap) { return path_of(w, radius, snap); });
 }
 
 }  // namespace
 
 std::vector<SteeringPath> reeds_shepp_paths(const CarPose& from, const CarPose& to, double radius) {
   std::vector<SteeringPath> paths;
-  for (const Word& w : every_word(from, to, radius)) paths.push_back(path_of(w, radius, true));
+  for (const auto& w : every_word(from, to, radius))
+    if (w) paths.push_back(path_of(*w, radius, true));
   return paths;
 }
 
 // The least word that reaches the goal: L+S+L+ under one of its symmetries always solves (8.1
 // needs only a circle through the goal).
 SteeringPath shortest_reeds_shepp_path(const CarPose& from, const CarPose& to, double radius) {
-  return shortest_reaching(every_word(from, to, radius), from, to, radius, "reeds-shepp",
-                           [radius](const Word& w, bool snap) { return path_of(w, radius, snap); });
+  return shortest_word(every_word(from, to, radius), from, to, radius).path;
+}
+
+SteeringWords reeds_shepp_words(const CarPose& from, const CarPose& to, double radius) {
+  std::vector<std::string> names;
+  const auto candidates = every_word(from, to, radius, &names);
+  return listed_words(shortest_word(candidates, from, to, radius), candidates, radius,
+                      [&names](std::size_t i) { return names[i]; });
 }
 
 double reeds_shepp_distance(const CarPose& from, const CarPose& to, double radius) {

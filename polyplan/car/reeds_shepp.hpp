@@ -15,8 +15,14 @@ SteeringPath shortest_reeds_shepp_path(const CarPose& from, const CarPose& to, d
 // Its length, without making the path.
 double reeds_shepp_distance(const CarPose& from, const CarPose& to, double radius);
 
-// Every one of the 48 words whose formula joins the poses, with its lengths (the shortest among
+// Every word of the 44 formula applications that joins the poses, with its lengths (the shortest among
 // them is shortest_reeds_shepp_path).
 std::vector<SteeringPath> reeds_shepp_paths(const CarPose& from, const CarPose& to, double radius);
+
+// The shortest path and each of the 44 formula applications tried for it (each of the five
+// families' base formulas under its symmetries, in the order csc, ccc, cccc, ccsc, ccscc), named
+// by their letters and the gears the formula fixes ("L+S+L+", "L+R-L": the last arc either way),
+// with its length or infeasible: what steer --all-words lists.
+SteeringWords reeds_shepp_words(const CarPose& from, const CarPose& to, double radius);
 
 }  // namespace polyplan

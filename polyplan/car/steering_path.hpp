@@ -6,6 +6,7 @@
 #include <polyplan/geometry/car_pose.hpp>
 
 #include <algorithm>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +19,22 @@ struct SteeringPath {
   std::string word;
   std::vector<SteeringSegment> segments;
   double length() const;
+};
+
+// One word a solver tries for a pose pair, whether or not it joins them (steer --all-words).
+struct SteeringWord {
+  // Dubins: "LSL". Reeds–Shepp: the letters with the gears its formula fixes, "L+R-L" where the
+  // last arc's gear is the solution's (reeds_shepp.cpp's formulas are named so).
+  std::string name;
+  std::optional<double> length;  // none: infeasible (no curve of this word joins the poses)
+};
+
+// The shortest path and every word tried for it, in the solver's order; `shortest` indexes the
+// word of `path` (the least of the feasible words, unless rounding keeps it off the goal).
+struct SteeringWords {
+  SteeringPath path;
+  std::vector<SteeringWord> words;
+  std::size_t shortest = 0;
 };
 
 // Appends a segment driving `length` (its letter to the word, with the gear's sign when `gears`),
@@ -46,33 +63,55 @@ void require_steerable(const CarPose& from, const CarPose& to, double radius, co
 // between them in rounding, misses by more: the next word is taken.
 bool reaches(const SteeringPath& path, const CarPose& from, const CarPose& to, double radius);
 
-// The shortest of `candidates` (words in turning radii, each made into a path by `make(word,
-// snap)`) that reaches `to`: each tried with its zero-length rounding snapped, then as computed;
-// of words equally short, the one of fewest segments. InputError naming `what` when none reaches.
+// The shortest of `candidates` (words in turning radii, none where a word is infeasible; each
+// made into a path by `make(word, snap)`) that reaches `to`: each tried with its zero-length
+// rounding snapped, then as computed; of words equally short, the one of fewest segments. The
+// path and its index in `candidates`; InputError naming `what` when none reaches.
+struct ShortestWord {
+  SteeringPath path;
+  std::size_t index = 0;
+};
 template <class Word, class Make>
-SteeringPath shortest_reaching(std::vector<Word> candidates, const CarPose& from, const CarPose& to, double radius,
-                               const char* what, Make make);
+ShortestWord shortest_reaching(const std::vector<std::optional<Word>>& candidates, const CarPose& from,
+                               const CarPose& to, double radius, const char* what, Make make);
+
+// The words of `candidates` as steer --all-words lists them: `name(i)` names the i-th, its
+// length scaled by `radius`.
+template <class Word, class Name>
+SteeringWords listed_words(ShortestWord shortest, const std::vector<std::optional<Word>>& candidates, double radius,
+                           Name name) {
+  SteeringWords listed{std::move(shortest.path), {}, shortest.index};
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    listed.words.push_back(
+        {name(i), candidates[i] ? std::optional<double>(candidates[i]->length() * radius) : std::nullopt});
+  return listed;
+}
 
 // Throws the InputError of shortest_reaching.
 [[noreturn]] void throw_unreachable(const CarPose& from, const CarPose& to, double radius, const char* what);
 
 template <class Word, class Make>
-SteeringPath shortest_reaching(std::vector<Word> candidates, const CarPose& from, const CarPose& to, double radius,
-                               const char* what, Make make) {
-  std::sort(candidates.begin(), candidates.end(), [](const Word& a, const Word& b) { return a.length() < b.length(); });
-  std::optional<SteeringPath> best;
-  for (const Word& word : candidates) {
+ShortestWord shortest_reaching(const std::vector<std::optional<Word>>& candidates, const CarPose& from,
+                               const CarPose& to, double radius, const char* what, Make make) {
+  std::vector<std::size_t> order;
+  for (std::size_t i = 0; i < candidates.size(); ++i)
+    if (candidates[i]) order.push_back(i);
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t a, std::size_t b) { return candidates[a]->length() < candidates[b]->length(); });
+  std::optional<ShortestWord> best;
+  for (std::size_t i : order) {
+    const Word& word = *candidates[i];
     // Words as long as the best within rounding (a straight, or three arcs of 1e-11 radians
     // each that end where it does): the one of fewer segments.
-    if (best && word.length() * radius > best->length() * (1 + 1e-12)) break;
+    if (best && word.length() * radius > best->path.length() * (1 + 1e-12)) break;
     for (bool snap : {true, false})
       if (SteeringPath path = make(word, snap); reaches(path, from, to, radius)) {
-        if (!best || path.segments.size() < best->segments.size()) best = std::move(path);
+        if (!best || path.segments.size() < best->path.segments.size()) best = ShortestWord{std::move(path), i};
         break;
       }
   }
   if (!best) throw_unreachable(from, to, radius, what);
-  return *best;
+  return std::move(*best);
 }
 
 }  // namespace polyplan

@@ -78,7 +78,8 @@ class Replanner {
   virtual ~Replanner() = default;
   virtual void moved(GridCell at) = 0;
   virtual void changed(const std::vector<ChangedMove>& moves) = 0;
-  virtual void replan(std::size_t replan) = 0;
+  // False when `until` came first: the plan is not made, and the drive ends.
+  virtual bool replan(std::size_t replan, std::optional<std::chrono::steady_clock::time_point> until) = 0;
   virtual OctileLength cost_from(GridCell at) const = 0;
   virtual OctileLength rhs(GridCell at) const = 0;
   virtual std::vector<GridCell> path_from(GridCell at) const = 0;
@@ -109,14 +110,15 @@ class SearchReplanner : public Replanner {
     if (algorithm_ == ReplanAlgorithm::astar) return;  // it forgets everything anyway
     for (const ChangedMove& m : moves) search_.edge_changed(m.from, m.to, m.old_cost);
   }
-  void replan(std::size_t replan) override {
+  bool replan(std::size_t replan, std::optional<std::chrono::steady_clock::time_point> until) override {
     if (adapter_) adapter_->begin(replan);
     if (algorithm_ == ReplanAlgorithm::astar) {
       search_.restart();
     } else if constexpr (Direction == IncrementalDirection::from_start) {
       if (search_.goal() != at_) search_.move_goal(at_);  // every queued key recomputed
     }
-    search_.compute_shortest_path();
+    search_.compute_shortest_path(until);
+    return !search_.stopped();
   }
   OctileLength cost_from(GridCell at) const override { return search_.g(at); }
   OctileLength rhs(GridCell at) const override { return search_.rhs(at); }
@@ -179,8 +181,12 @@ struct Knowledge {
   // and appends the moves that changed. A disc that holds the whole map senses nothing new when
   // it held it before and the truth has not changed since: those senses are skipped (a robot that
   // sees a 2048 x 2048 raster would read 4 million cells at every move).
+  // A sense of the whole of a fine raster takes a long time (0.2 s for 1000 x 1000 cells): it stops
+  // at `until`, the clock read every 8 rows (a millisecond or two), with `stopped` set, and the drive
+  // ends there.
   std::size_t sense(const GridMap& truth, bool truth_changed, GridPoint at, double radius, std::size_t moves,
-                    std::vector<ChangedMove>& changed) {
+                    std::vector<ChangedMove>& changed, std::optional<std::chrono::steady_clock::time_point> until,
+                    bool& stopped) {
     const double far_x = std::max(at.x, grid.width() - 1 - at.x), far_y = std::max(at.y, grid.height() - 1 - at.y);
     const bool whole_map = far_x * far_x + far_y * far_y <= radius * radius;
     if (whole_map && knows_whole_map && !truth_changed) return 0;
@@ -189,7 +195,12 @@ struct Knowledge {
     // The square of cells the disc reaches, cut to the map (a radius beyond the map's diagonal
     // sees the whole map at the cost of its cells, not of the square).
     const int reach = static_cast<int>(std::min(std::floor(radius), static_cast<double>(grid.width() + grid.height())));
-    for (int y = std::max(0, at.y - reach); y <= std::min(grid.height() - 1, at.y + reach); ++y)
+    const int first_row = std::max(0, at.y - reach);
+    for (int y = first_row; y <= std::min(grid.height() - 1, at.y + reach); ++y) {
+      if (until && (y - first_row) % 8 == 7 && std::chrono::steady_clock::now() >= *until) {
+        stopped = true;
+        break;
+      }
       for (int x = std::max(0, at.x - reach); x <= std::min(grid.width() - 1, at.x + reach); ++x) {
         const std::int64_t dx = x - at.x, dy = y - at.y;
         if (static_cast<double>(dx * dx + dy * dy) > radius * radius) continue;
@@ -199,6 +210,7 @@ struct Knowledge {
         if (seen_after[c] == never_seen) seen_after[c] = moves;
         changed_cells += grid.set_blocked(c, blocked, changed);
       }
+    }
     return changed_cells;
   }
   ChangingGrid grid;
@@ -248,6 +260,12 @@ void trace_tables(ReplanTrace& trace, const Replanner& replanner, std::size_t re
 ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint goal, const ReplanOptions& options) {
   check_options(options, truth);
   const Stopwatch clock;
+  // The limit as a time on the steady clock, for the searches to stop at (a limit of more than 30
+  // years is none: the clock's nanoseconds would overflow).
+  std::optional<std::chrono::steady_clock::time_point> until;
+  if (options.time_limit > 0 && options.time_limit < 1e9)
+    until = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                   std::chrono::duration<double>(options.time_limit));
   check_cell(truth, start, "start");
   check_cell(truth, goal, "goal");
   Knowledge known(truth.width, truth.height);
@@ -267,8 +285,18 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
     const GridPoint here{known.grid.x(at), known.grid.y(at)};
     const bool truth_changed = options.world_changes && options.world_changes(result.moves, truth);
     changed.clear();
+    bool stopped = false;
     ReplanStep step{
-        here, {}, 0, known.sense(truth, truth_changed, here, options.sensor_radius, result.moves, changed), false};
+        here,
+        {},
+        0,
+        known.sense(truth, truth_changed, here, options.sensor_radius, result.moves, changed, until, stopped),
+        false};
+    if (stopped) {
+      result.status = PlanStatus::limit;
+      result.timed_out = true;
+      break;
+    }
     if (at == goal_cell) {
       result.status = PlanStatus::solved;
       break;
@@ -278,8 +306,13 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
       const std::size_t expanded = replanner->counts().expanded;
       if (options.trace) options.trace->replan_begins(result.replans + 1, here, step.changed_cells);
       replanner->changed(changed);
-      replanner->replan(++result.replans);
+      const bool in_time = replanner->replan(++result.replans, until);
       result.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+      if (!in_time) {
+        result.status = PlanStatus::limit;
+        result.timed_out = true;
+        break;
+      }
       if (options.trace && options.trace->wants_tables())  // not timed: the tables are the caller's
         trace_tables(*options.trace, *replanner, result.replans, known.cells.size());
       step.replanned = true;
@@ -298,6 +331,7 @@ ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint
     }
     if (result.moves == limit || (options.time_limit > 0 && clock.seconds() > options.time_limit)) {
       result.status = PlanStatus::limit;
+      result.timed_out = result.moves != limit;
       break;
     }
     const GridCell next = route[++along];

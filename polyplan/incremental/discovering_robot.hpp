@@ -127,6 +127,7 @@ struct ReplanResult {
   std::vector<GridPoint> last_plan;      // the last planned path, from where it was made
   GridMap truth;                         // the map at the end (it may have changed)
   double seconds = 0;                    // in replanning (changes and searches)
+  bool timed_out = false;                // status limit by the time limit (not the move limit)
 };
 
 // Throws InputError for a start or goal outside the map or on a blocked cell of the truth, a

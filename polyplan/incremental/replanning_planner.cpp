@@ -10,6 +10,7 @@
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -189,8 +190,9 @@ struct BasicReplanningPlanner<Space>::Impl {
     const std::string cell = cell_text(static_cast<std::size_t>(at.x), static_cast<std::size_t>(at.y));
     const std::string after = "after " + std::to_string(drive.moves) + " moves";
     if (drive.status == PlanStatus::limit) {
-      report.facts.set(QueryFacts::stopped_by, "move limit");
-      report.fail(PlanStatus::limit, after + ": the move limit ended the drive at cell " + cell);
+      const std::string limit = drive.timed_out ? "time limit" : "move limit";
+      report.facts.set(QueryFacts::stopped_by, limit);
+      report.fail(PlanStatus::limit, after + ": the " + limit + " ended the drive at cell " + cell);
     } else if (drive.truth.is_blocked(at.x, at.y)) {
       report.fail(PlanStatus::not_found,
                   after + ", the world of " + made_text(last) + " blocks the robot's own cell " + cell);
@@ -213,13 +215,14 @@ struct BasicReplanningPlanner<Space>::Impl {
   }
 
   // The drive's options, its world changing to each phase's raster as the moves reach it; `lived`
-  // counts the phases the drive has seen.
-  ReplanOptions drive_options(std::size_t& lived) const {
+  // counts the phases the drive has seen. `spent`: the query's seconds before the drive, which
+  // its time limit counts too.
+  ReplanOptions drive_options(std::size_t& lived, double spent) const {
     ReplanOptions replanning;
     replanning.algorithm = algorithm;
     replanning.sensor_radius = sensor_radius();
     replanning.max_moves = options.max_moves;
-    replanning.time_limit = options.time;
+    replanning.time_limit = std::max(options.time - spent, 1e-9);  // 0 would be none
     replanning.world_changes = [this, &lived](std::size_t moves, GridMap& truth) {
       const std::size_t before = lived;
       for (; lived < phases.size() && phases[lived].from_moves <= moves; ++lived)
@@ -264,7 +267,7 @@ PlanReport<ExactPoint> BasicReplanningPlanner<Space>::plan(const Query& query, c
   std::size_t lived = 1;  // the phases the drive has seen
   const ReplanResult drive =
       drive_through_unknown_map(grid_map(first, r.problem->world().source), point_of(first, snapped->first),
-                                point_of(first, snapped->second), r.drive_options(lived));
+                                point_of(first, snapped->second), r.drive_options(lived, querying.seconds()));
   r.record_facts(drive, lived, report.facts);
   const auto& last = r.phases[lived - 1];
   if (options.record) {

@@ -48,7 +48,8 @@ json replan_json(const ReplanResult& r, double sensor) {
   if (r.status == PlanStatus::no_path)
     out["why_not"] = "the goal is unreachable on what the robot knows after " + std::to_string(r.moves) + " moves";
   if (r.status == PlanStatus::limit)
-    out["why_not"] = "the robot made its limit of " + std::to_string(r.moves) + " moves";
+    out["why_not"] = r.timed_out ? "the time limit ended the drive after " + std::to_string(r.moves) + " moves"
+                                 : "the robot made its limit of " + std::to_string(r.moves) + " moves";
   return out;
 }
 

@@ -30,9 +30,11 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
 
   // Certifies the path's unchecked edges from the start on (both ways in a space that is not
   // symmetric: the edge serves later queries either way); removes the first that is not free.
-  bool certify(const std::vector<std::size_t>& path, std::size_t& removed) {
+  // False, with nothing removed, when the time limit stops it: the edges certified stay so.
+  bool certify(const std::vector<std::size_t>& path, std::size_t& removed, const SamplingBudget& budget) {
     auto& graph = roadmap_.graph();
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+      if (budget.out_of_time()) return false;
       const auto [e, exists] = boost::edge(path[i], path[i + 1], graph);
       if (graph[e].certified) continue;
       const auto& nodes = roadmap_.nodes();
@@ -64,7 +66,7 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
         return roadmap_.search(from, to, SearchOptions{Search::astar});
       });
       if (result.found) {
-        if (certify(result.path, removed)) path = result.path;
+        if (certify(result.path, removed, budget)) path = result.path;
         continue;
       }
       // Small at first — an easy problem is solved by a dozen milestones (OMPL's LazyPRM solves the

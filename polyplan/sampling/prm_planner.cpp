@@ -28,10 +28,14 @@ class PrmPlanner final : public SamplingPlanner<Space> {
   // A milestone joined to its nearest milestones by every motion certified free (`at`: its
   // coordinates, or none to have the space give them) — both ways in a space that is not
   // symmetric, since the roadmap's edges serve either way.
-  std::size_t add_milestone(const Configuration& configuration, std::span<const double> at = {}) {
+  // Past the time limit (`budget`: none for the query's own milestones, which join all theirs)
+  // a drawn milestone joins no more neighbours: each join certifies a motion.
+  std::size_t add_milestone(const Configuration& configuration, std::span<const double> at = {},
+                            const SamplingBudget* budget = nullptr) {
     const std::size_t id = roadmap_.size();
     components_.push_back(id);
     return roadmap_.add(configuration, at, [&](std::size_t n) {
+      if (budget && budget->out_of_time()) return detail::Join::none;
       if (!this->motion_free(roadmap_.nodes(), n, id)) return detail::Join::none;
       if (!this->space().symmetric() && !this->motion_free(roadmap_.nodes(), id, n)) return detail::Join::none;
       components_[component(n)] = component(id);
@@ -56,7 +60,7 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     std::vector<double> at(space.dimension());
     while (joined_to(start, goal_milestones).empty() && budget.next()) {
       const Configuration sample = this->draw(at);
-      if (this->state_free(sample)) add_milestone(sample, at);
+      if (this->state_free(sample)) add_milestone(sample, at, &budget);
     }
 
     Attempt attempt;

@@ -43,7 +43,8 @@ class RrtConnectPlanner final : public SamplingPlanner<Space> {
     const std::size_t d = space.dimension();
     // The goal tree is a forest rooted at every goal (root i at goals[i]): whichever it meets the
     // start tree from is the goal reached.
-    SamplingTree<Space> from_start(space, space.start(query)), from_goal(space, goals, Toward::placed);
+    auto& from_start = this->template kept<SamplingTree<Space>>(space, space.start(query));
+    auto& from_goal = this->template kept<SamplingTree<Space>>(space, goals, Toward::placed);
     SamplingTree<Space>*grow = &from_start, *other = &from_goal;
     std::vector<double> sample_at(d), new_at(d), step_at(d);
 

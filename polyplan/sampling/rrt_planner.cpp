@@ -35,7 +35,7 @@ class RrtPlanner final : public SamplingPlanner<Space> {
     const std::size_t d = space.dimension();
     const auto goals_at = this->coordinates_of(goals);
     std::vector<double> sample_at(d), new_at(d);
-    SamplingTree<Space> tree(space, space.start(query));
+    auto& tree = this->template kept<SamplingTree<Space>>(space, space.start(query));
 
     Attempt attempt;
     std::size_t reached = SamplingTree<Space>::root;

@@ -102,8 +102,8 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
     const std::size_t d = space.dimension();
     const auto goals_at = this->coordinates_of(goals);
     std::vector<double> sample_at(d), new_at(d);
-    SamplingTree<Space> tree(space, space.start(query));
-    std::vector<Node> nodes(1);
+    auto& tree = this->template kept<SamplingTree<Space>>(space, space.start(query));
+    auto& nodes = this->template kept<std::vector<Node>>(1);
     std::vector<std::optional<std::size_t>> goal_nodes(goals.size());  // goal i's node, once the tree reaches it
     if (const auto start_goal = this->goal_index(goals, space.start(query)))
       goal_nodes[*start_goal] = SamplingTree<Space>::root;
@@ -131,7 +131,7 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
             by_cost.emplace_back(nodes[n].cost + this->distance(tree.nodes().coordinates(n), goal_at), n);
         std::sort(by_cost.begin(), by_cost.end());
         for (const auto& [cost, n] : by_cost) {
-          if (cost >= nodes[goal_node].cost) break;
+          if (cost >= nodes[goal_node].cost || budget.out_of_time()) break;
           if (this->motion_free(tree.nodes(), n, goal_node)) {
             reparent(tree, nodes, goal_node, n, cost);
             ++rewired;
@@ -152,8 +152,10 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         // The verdicts on the motions neighbour → new node decided here: rewiring's motions are
         // these reversed, and in a symmetric space they are not certified again (as OMPL's RRT*).
         verdicts.assign(1, {nearest, true});
+        // The time limit may cut the choice (the nearest stays the parent) and the rewiring: each
+        // certifies a motion per neighbour, dozens in an arm's space.
         for (const auto& [through, n] : by_cost) {
-          if (through >= cost) break;
+          if (through >= cost || budget.out_of_time()) break;
           const bool free = this->motion_free(tree.nodes(), n, next, region);
           verdicts.emplace_back(n, free);
           if (free) {
@@ -167,6 +169,7 @@ class RrtStarPlanner final : public SamplingPlanner<Space> {
         if (is_goal) goal_nodes[*sample.goal] = id;
         // Rewiring: each neighbour the new node reaches more cheaply takes it as its parent.
         for (const auto& [through, n] : by_cost) {
+          if (budget.out_of_time()) break;
           if (n == parent || n == SamplingTree<Space>::root) continue;
           const double via = cost + this->distance(new_at, tree.nodes().coordinates(n));
           if (via < nodes[n].cost && rewire_free(tree, verdicts, id, n)) {

@@ -72,9 +72,11 @@ double SamplingPlanner<Space>::length(const std::vector<Configuration>& path) co
 // certified free, and so are the motions onto them from the configuration before the first and
 // from the second to the one after (a configuration computed on a motion lies on it only up to
 // rounding), they replace what lies between, if that is shorter. Then each configuration between
-// two whose motion is certified free goes. The length never grows.
+// two whose motion is certified free goes. The length never grows. Each step leaves a path of
+// certified motions, so the time limit may stop it after any.
 template <class Space>
-auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::vector<Configuration> {
+auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path, const SamplingBudget& budget)
+    -> std::vector<Configuration> {
   const std::size_t d = space_->dimension();
   std::vector<double> a(d), b(d), first_at(d), second_at(d);
   std::vector<double> along;  // along[k]: the length from the start to path[k]
@@ -99,7 +101,7 @@ auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::v
 
   const std::size_t attempts = 4 * path.size() + 20;
   measure();
-  for (std::size_t attempt = 0; attempt < attempts && path.size() > 2; ++attempt) {
+  for (std::size_t attempt = 0; attempt < attempts && path.size() > 2 && !budget.out_of_time(); ++attempt) {
     double s1 = uniform01(random_) * along.back(), s2 = uniform01(random_) * along.back();
     if (s1 > s2) std::swap(s1, s2);
     const std::size_t i = at(s1, first_at), j = at(s2, second_at);
@@ -118,7 +120,7 @@ auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::v
     path = std::move(shorter);
     measure();
   }
-  for (std::size_t k = 1; k + 1 < path.size();)
+  for (std::size_t k = 1; k + 1 < path.size() && !budget.out_of_time();)
     if (motion_free(path[k - 1], path[k + 1])) path.erase(path.begin() + static_cast<std::ptrdiff_t>(k));
     else ++k;
   return path;
@@ -126,6 +128,7 @@ auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path) -> std::v
 
 template <class Space>
 auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& options) -> PlanReport<Configuration> {
+  kept_.clear();  // the last query's search, freed before this one's clock starts
   // Each query draws from its own random stream, fixed by the seed, the planner's name and the
   // query's ordinal: carried over from the query before, the stream would depend on where a time
   // limit cut that query, and the same input would not give the same answer; and without the name,
@@ -184,7 +187,8 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   facts.set(SamplingFacts::first_solution_seconds,
             improvements_.empty() ? budget.seconds() : improvements_.front().seconds);
   facts.set(SamplingFacts::raw_length, length(attempt.path));
-  std::vector<Configuration> path = limits_.shortcut ? shortcut(std::move(attempt.path)) : std::move(attempt.path);
+  std::vector<Configuration> path =
+      limits_.shortcut ? shortcut(std::move(attempt.path), budget) : std::move(attempt.path);
 
   // Every motion was certified as the planner made it; certified once more as returned, so that
   // no assembly of tree halves or shortcut can slip an unchecked motion into the answer.

@@ -282,6 +282,10 @@ class SamplingBudget {
     else if (running_.seconds() >= seconds_) timed_out_ = true;
     return out_of_iterations_ || timed_out_;
   }
+  // Whether the time limit has passed, counting nothing: asked within an iteration whose work may
+  // stop part way (RRT*'s choice of parent and rewiring, a lazy roadmap's certification, PRM's
+  // joins) and by the work after the search (shortcutting), so that the query ends at its limit.
+  bool out_of_time() const { return running_.seconds() >= seconds_; }
   std::size_t used() const { return used_; }
   double seconds() const { return running_.seconds(); }
   // "the time limit (10 s)" or "the iteration limit (100000)": what stopped the query.
@@ -332,6 +336,17 @@ class SamplingPlanner : public Planner<Space> {
   // first and every better one).
   virtual Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget,
                         Facts& facts, bool record) = 0;
+
+  // A `T` made of `args` for solve()'s search (its trees), kept until the planner's next query
+  // begins or the planner ends: freeing a tree of tens of thousands of nodes takes tens of
+  // milliseconds, which would run the query past its time limit.
+  template <class T, class... Args>
+  T& kept(Args&&... args) {
+    auto made = std::make_shared<T>(std::forward<Args>(args)...);
+    T& value = *made;
+    kept_.push_back(std::move(made));
+    return value;
+  }
 
   // For solve(): the counted operations and the space.
   SamplingSpace<Space>& space() { return *space_; }
@@ -416,8 +431,9 @@ class SamplingPlanner : public Planner<Space> {
   void found(const SamplingBudget& budget, double length) { improvements_.push_back({budget.seconds(), length}); }
 
  private:
-  // Shortcuts between random points of the path, each new motion certified (the .cpp says how).
-  std::vector<Configuration> shortcut(std::vector<Configuration> path);
+  // Shortcuts between random points of the path, each new motion certified (the .cpp says how),
+  // until the budget's time runs out.
+  std::vector<Configuration> shortcut(std::vector<Configuration> path, const SamplingBudget& budget);
   // Placed configuration `id`'s free region, measured on first asking; null when the space keeps
   // none.
   const FreeRegion* region_of(const SampledConfigurations<Space>& nodes, std::size_t id) {
@@ -434,6 +450,7 @@ class SamplingPlanner : public Planner<Space> {
   std::uint64_t queries_asked_ = 0;  // the ordinal of the next query: it picks the query's random stream
   std::size_t samples_ = 0, motions_checked_ = 0;
   std::vector<SolutionImprovement> improvements_;
+  std::vector<std::shared_ptr<void>> kept_;  // kept(): freed as the next query begins, before its clock starts
 };
 
 // A planner's registry entry for one space: `make(space, options)` builds it on the space that

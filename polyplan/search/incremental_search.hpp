@@ -38,6 +38,7 @@
 #include <boost/heap/d_ary_heap.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <compare>
 #include <cstddef>
 #include <functional>
@@ -142,11 +143,19 @@ class IncrementalSearch {
     update_vertex_queue(root_);
   }
 
-  // Brings the aimed-at vertex up to date; true when it is reachable.
-  bool compute_shortest_path() {
+  // Brings the aimed-at vertex up to date; true when it is reachable. Given `until`, it stops there
+  // (the clock read every 256 passes, a few microseconds' work) with stopped() true: each pass
+  // leaves the queue consistent, so a later call goes on from where this one stopped.
+  bool compute_shortest_path(std::optional<std::chrono::steady_clock::time_point> until = std::nullopt) {
     settle_key_modifier();
     ++counts_.searches;
-    while (!open_.empty() && (open_.top().key < key_of(aim_) || records_[aim_].g != records_[aim_].rhs)) {
+    stopped_ = false;
+    for (std::size_t pass = 1;
+         !open_.empty() && (open_.top().key < key_of(aim_) || records_[aim_].g != records_[aim_].rhs); ++pass) {
+      if (until && pass % 256 == 0 && std::chrono::steady_clock::now() >= *until) {
+        stopped_ = true;
+        break;
+      }
       const vertex_type u = open_.top().vertex;
       const Key old_key = open_.top().key, new_key = key_of(u);
       Record& r = records_[u];
@@ -287,6 +296,8 @@ class IncrementalSearch {
   cost_type key_modifier() const { return key_modifier_; }
 
   const IncrementalCounts& counts() const { return counts_; }
+  // Whether the last compute_shortest_path stopped at its time, the aimed-at vertex not yet settled.
+  bool stopped() const { return stopped_; }
   Costs& costs() { return costs_; }
   const Costs& costs() const { return costs_; }
   const Graph& graph() const { return *graph_; }
@@ -442,6 +453,7 @@ class IncrementalSearch {
   vertex_type root_{}, aim_{}, last_aim_{};
   cost_type key_modifier_{};
   IncrementalCounts counts_;
+  bool stopped_ = false;  // the last compute_shortest_path stopped at its time
   Observer* observer_ = nullptr;
   Step step_;
   std::vector<vertex_type> touched_;

@@ -34,23 +34,30 @@ CarPose pose_of(py::handle value, const std::string& what) {
 void bind_steer(py::module_& m) {
   m.def(
       "steer",
-      [](const py::object& start, const py::object& goal, const py::object& radius_given, const std::string& model) {
+      [](const py::object& start, const py::object& goal, const py::object& radius_given, const std::string& model,
+         bool all_words) {
         const CarPose from = pose_of(start, "start"), to = pose_of(goal, "goal");
         const double radius = finite_number(radius_given, "radius");
         if (model != "dubins" && model != "reeds-shepp")
           throw InputError("model " + model + ": expected dubins or reeds-shepp");
-        const SteeringPath path =
-            model == "dubins" ? shortest_dubins_path(from, to, radius) : shortest_reeds_shepp_path(from, to, radius);
-        py::dict result = from_json(steering_json(path));
+        const SteeringWords words =
+            model == "dubins" ? dubins_words(from, to, radius) : reeds_shepp_words(from, to, radius);
+        const SteeringPath& path = words.path;
+        nlohmann::json document = steering_json(path);
+        if (all_words) document["words"] = steering_words_json(words);
+        py::dict result = from_json(document);
         result["svg"] = draw_steering(path, from, to, radius, steering_summary(model, path)).str();
         return result;
       },
       py::arg("start"), py::arg("goal"), py::arg("radius") = 1.0, py::arg("model") = "dubins",
+      py::arg("all_words") = false,
       R"(The shortest curve of a car turning with `radius` from pose `start` to pose `goal`, each
 (x, y, degrees): model "dubins" drives forward only, "reeds-shepp" may reverse. Returns the dict
 `polyplan steer --json -` prints (length, word, segments: [{steer, gear, length}]) and svg, its
-picture. Radius and coordinates from 1e-100 to 1e100; headings reduced modulo 360 exactly. Raises
-InputError for anything else.)");
+picture; with all_words=True also words, every word tried ([{name, length (None: infeasible),
+shortest}]: Dubins' six, Reeds-Shepp's 44 formula applications), as `polyplan steer --all-words`.
+Radius and coordinates from 1e-100 to 1e100; headings reduced modulo 360 exactly. Raises InputError
+for anything else.)");
 }
 
 }  // namespace polyplan::python

@@ -39,6 +39,26 @@ def test_poses_in_numpy_and_exact_forms():
     assert polyplan.steer(np.array([[1.0], [2.0], [30.0]]), (-3, 5, 240))["length"] == expected
 
 
+@pytest.mark.parametrize("model, count", [("dubins", 6), ("reeds-shepp", 44)])
+def test_all_words_lists_every_word_as_the_program(model, count):
+    start, goal = (1, 2, 30), (-3, 5, -120)
+    expected, error = cli_json("steer", "--model", model, "--from", text(start), "--to", text(goal), "--all-words")
+    assert error is None
+    got = polyplan.steer(start, goal, model=model, all_words=True)
+    assert got["words"] == expected["words"]
+    assert len(got["words"]) == count
+    assert sum(w["shortest"] for w in got["words"]) == 1
+    lengths = [w["length"] for w in got["words"] if w["length"] is not None]
+    assert min(lengths) == pytest.approx(got["length"], rel=1e-12)
+    assert "words" not in polyplan.steer(start, goal, model=model)
+
+
+def test_all_words_marks_infeasible_words():
+    words = {w["name"]: w["length"] for w in polyplan.steer((0, 0, 0), (10, 0, 0), all_words=True)["words"]}
+    assert words["RLR"] is None and words["LRL"] is None
+    assert words["LSL"] == pytest.approx(10)
+
+
 @pytest.mark.parametrize("start, goal, radius, model, match", [
     ((0, 0), (1, 1, 0), 1, "dubins", "start: expected a pose"),
     ((0, 0, 0), (1, 1, 0), 0, "dubins", "turning radius 0"),

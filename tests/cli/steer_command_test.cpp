@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace polyplan::test;
@@ -42,6 +43,35 @@ TEST(Steer, DrawsTheCurve) {
   EXPECT_NE(picture.find("<svg"), std::string::npos);
   EXPECT_NE(picture.find("reverse"), std::string::npos);
   std::filesystem::remove(svg);
+}
+
+TEST(Steer, ListsEveryWord) {
+  // Ten radii straight ahead: RLR and LRL cannot reach (their circles lie more than 4R apart).
+  const CliRun text = run_polyplan("steer --from 0,0,0 --to 10,0,0 --all-words");
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("dubins S: length 10\n"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("  RLR          infeasible\n  LRL          infeasible\n"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(" 10  shortest\n"), std::string::npos) << text.out;
+  EXPECT_EQ(std::count(text.out.begin(), text.out.end(), '\n'), 7) << text.out;
+
+  const auto d = nlohmann::json::parse(run_polyplan("steer --from 1,2,30 --to -3,5,-120 --all-words --json -").out);
+  ASSERT_EQ(d["words"].size(), 6u);
+  int marked = 0;
+  double least = HUGE_VAL;
+  for (const auto& w : d["words"]) {
+    marked += w["shortest"].get<bool>();
+    if (!w["length"].is_null()) least = std::min(least, w["length"].get<double>());
+    if (w["shortest"].get<bool>()) EXPECT_NEAR(w["length"].get<double>(), d["length"].get<double>(), 1e-12);
+  }
+  EXPECT_EQ(marked, 1);
+  EXPECT_NEAR(least, d["length"].get<double>(), 1e-12);
+  EXPECT_EQ(d["words"][0]["name"], "LSL");
+
+  const auto rs = nlohmann::json::parse(
+      run_polyplan("steer --model reeds-shepp --from 0,0,0 --to -3,0,0 --all-words --json -").out);
+  ASSERT_EQ(rs["words"].size(), 44u);
+  EXPECT_EQ(rs["words"][0]["name"], "L+S+L+");
+  EXPECT_FALSE(nlohmann::json::parse(run_polyplan("steer --from 0,0,0 --to 1,1,0 --json -").out).contains("words"));
 }
 
 TEST(Steer, RefusesBadInputInOneLine) {

@@ -185,6 +185,33 @@ TEST(DiscoveringRobot, StartAtTheGoalMakesNoMove) {
   EXPECT_EQ(r.traversed, (std::vector<GridPoint>{GridPoint{1, 1}}));
 }
 
+// A limit that comes before the first plan stops the drive inside its sense or its search, not
+// after them: status limit, by the time, not the move limit.
+TEST(DiscoveringRobot, TheTimeLimitStopsTheDriveWithinItsSenseOrSearch) {
+  const GridMap map = random_map(600, 600, 0.1, 5);
+  ReplanOptions options;
+  options.time_limit = 1e-9;
+  options.sensor_radius = 1e4;  // the whole map: the sense reads every cell, and stops at row 8
+  const ReplanResult sensing = drive_through_unknown_map(map, {0, 0}, {599, 599}, options);
+  EXPECT_EQ(sensing.status, PlanStatus::limit);
+  EXPECT_TRUE(sensing.timed_out);
+  EXPECT_EQ(sensing.replans, 0u);
+  // A sensor of one cell (three rows: not timed): the first search, across 600 cells of unknown
+  // map, stops at its first look at the clock (256 passes).
+  options.sensor_radius = 1.5;
+  const ReplanResult searching = drive_through_unknown_map(map, {0, 0}, {599, 599}, options);
+  EXPECT_EQ(searching.status, PlanStatus::limit);
+  EXPECT_TRUE(searching.timed_out);
+  EXPECT_EQ(searching.replans, 1u);
+  EXPECT_LE(searching.expanded, 256u);
+  EXPECT_EQ(searching.moves, 0u);
+  options.time_limit = 0;  // none: the move limit stops it
+  options.max_moves = 1;
+  const ReplanResult by_moves = drive_through_unknown_map(map, {0, 0}, {599, 599}, options);
+  EXPECT_EQ(by_moves.status, PlanStatus::limit);
+  EXPECT_FALSE(by_moves.timed_out);
+}
+
 TEST(DiscoveringRobot, BadInputIsRefusedNamingWhatIsWrong) {
   const GridMap map = map_of({"..@", "..."});
   const auto message = [&](GridPoint start, GridPoint goal, double radius) {

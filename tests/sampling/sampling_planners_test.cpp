@@ -160,6 +160,18 @@ TEST(SamplingPlanners, RrtStarImprovesAsItRuns) {
   EXPECT_EQ(improvements.front().seconds, report.facts.at(SamplingFacts::first_solution_seconds));
 }
 
+// The time limit bounds the whole query, shortcutting and the path's certification included
+// (bench/time_limit_table.cpp measures every planner to within 20 ms; a loose bound here, one run).
+TEST(SamplingPlanners, RrtStarEndsAtItsTimeLimit) {
+  const World world = shipped_world("maze");
+  const CSpace cspace(world);
+  const auto report = make("rrtstar", cspace, {{"time", "0.5"}, {"iterations", "100000000"}})->plan(world.queries[0]);
+  ASSERT_TRUE(report.found);
+  EXPECT_EQ(report.facts.at(QueryFacts::stopped_by), "time limit");
+  EXPECT_GE(report.facts.at(QueryFacts::seconds), 0.5);
+  EXPECT_LE(report.facts.at(QueryFacts::seconds), 0.5 + 0.25);
+}
+
 // The report carries the solutions as found, the shortcut path last: what a benchmark's
 // cost-over-time curve reads (PlanReport::improvements).
 TEST(SamplingPlanners, ReportsItsImprovementsEndingAtTheReturnedLength) {
