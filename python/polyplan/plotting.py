@@ -202,8 +202,9 @@ def draw_path(p, ax, world, colour=PATH):
 def drawn_path(p, world):
     """The plan's path as drawn: a car's through its arcs, sampled finely; a path of tangents and
     arcs (Plan.pieces) through its arcs likewise; others' as planned."""
-    if p.pieces:
-        return _pieces_path(p.pieces)
+    pieces = getattr(p, "pieces", None)  # a Drive (polyplan.replan) has none
+    if pieces:
+        return _pieces_path(pieces)
     if not (p.segments and world.car):
         return p.path
     lengths = [s["length"] for s in p.segments]

@@ -58,7 +58,7 @@ TEST(Plan, DrawsRoadmapAndPath) {
   const CliRun run = run_polyplan("plan " + world("seed004.json") + " --svg '" + svg.string() + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::string picture = slurp(svg);
-  EXPECT_NE(picture.find("roadmap edges"), std::string::npos);
+  EXPECT_NE(picture.find("supporting bitangents"), std::string::npos);  // the visibility graph's edges, by kind
   EXPECT_NE(picture.find("path"), std::string::npos);
   fs::remove(svg);
 }
