@@ -31,7 +31,7 @@ void WeightedAStar(benchmark::State& state, SearchOptions search) {
   for (auto _ : state) {
     expanded = generated = 0;
     for (const Query& q : world.queries) {
-      const Report report = planner.plan(q);
+      const auto report = planner.plan(q);
       expanded += report.facts.at(SearchFacts::expanded);
       generated += report.facts.at(SearchFacts::generated);
     }
