@@ -1,5 +1,5 @@
-// polyplan search GRAPH.json --start I --goal J [--method astar|dijkstra|bfs|dfs|greedy|wastar]
-// [--weight W] [--json FILE|-] [--trace FILE|-] [--svg OUT.svg [--animate]] [--edge-weights]
+// polyplan search GRAPH.json --start I --goal J [--method astar|dijkstra|bfs|dfs|greedy|wastar|uniform-cost]
+// [--weight W] [--reopen] [--json FILE|-] [--trace FILE|-] [--svg OUT.svg [--animate]] [--edge-weights]
 // [--labels] [--backpointers] [--heuristic] [--indices]: a graph search on the course's graph-search homework's
 // graph_vector (io/graph_reader.hpp) with the Euclidean heuristic, to watch: every expansion as a JSON line, the final
 // state or the whole search as a picture.
@@ -22,13 +22,15 @@
 namespace polyplan::cli {
 namespace {
 
-// --method and --weight (h: the Euclidean distance to the goal).
+// --method, --weight and --reopen (h: the Euclidean distance to the goal).
 struct GraphSearch {
   SearchOptions search{Search::astar, 1.5};
 };
 OptionTable<GraphSearch> graph_search_table() {
   OptionTable<GraphSearch> table;
-  return add_search_options(table, &GraphSearch::search, "method");
+  Choices<Search> methods = search_choices();
+  for (const auto& [name, algorithm] : course_search_names) methods.emplace_back(name, algorithm);
+  return add_search_options(table, &GraphSearch::search, "method", methods);
 }
 
 struct SearchCommandOptions {
@@ -62,7 +64,10 @@ nlohmann::ordered_json result_json(const SearchResult<DigraphVertexId>& r, const
   nlohmann::ordered_json out;
   out["found"] = r.found;
   out["method"] = std::string(to_string(r.algorithm));
-  if (r.algorithm == Search::wastar) out["weight"] = options.weight;
+  if (r.algorithm == Search::wastar) {
+    out["weight"] = options.weight;
+    out["reopen"] = options.reopen;
+  }
   out["start"] = start;
   out["goal"] = goal;
   out["path"] = r.path;

@@ -85,21 +85,30 @@ class OptionTable {
     if constexpr (std::is_same_v<T, Search>) {
       return add(std::move(name), member, std::move(description), search_choices());
     } else {
-      if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
-        if (!range) range = range_of<T>();
-      }
-      Entry e{
-          {std::move(name), std::move(description), kind_of<T>(range), {}, std::is_same_v<T, bool>, range, {}}, {}, {}};
-      e.show = [member](const Options& o) { return show(o.*member); };
-      // [=]: the range is used only when T is a number, and clang warns of an unused capture.
-      e.set = [=](Options& o, std::string_view text) -> std::optional<std::string> {
-        if (auto why = assign(o.*member, text)) return why;
-        if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>)
-          if (!range->holds(static_cast<double>(o.*member))) return "expected a " + kind_of<T>(range);
-        return std::nullopt;
-      };
-      return push(std::move(e));
+      return add_field(
+          std::move(name), [member](auto& o) -> auto& { return o.*member; }, std::move(description), range);
     }
+  }
+
+  // The same for the field that `field(options)` returns a reference to (a member of a member).
+  template <class Field>
+  OptionTable& add_field(std::string name, Field field, std::string description,
+                         std::optional<OptionRange> range = {}) {
+    using T = std::decay_t<decltype(field(std::declval<Options&>()))>;
+    if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+      if (!range) range = range_of<T>();
+    }
+    Entry e{
+        {std::move(name), std::move(description), kind_of<T>(range), {}, std::is_same_v<T, bool>, range, {}}, {}, {}};
+    e.show = [field](const Options& o) { return show(field(o)); };
+    // [=]: the range is used only when T is a number, and clang warns of an unused capture.
+    e.set = [=](Options& o, std::string_view text) -> std::optional<std::string> {
+      if (auto why = assign(field(o), text)) return why;
+      if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>)
+        if (!range->holds(static_cast<double>(field(o)))) return "expected a " + kind_of<T>(range);
+      return std::nullopt;
+    };
+    return push(std::move(e));
   }
 
   // An enumeration set by its names: {{"full", Connectivity::full}, {"axis", ...}}.
@@ -257,8 +266,8 @@ class OptionTable {
 };
 
 // The options of a planner that searches a graph, kept in a SearchOptions member: `name` (the
-// algorithm, "search" unless a command calls it otherwise) among `choices`, and "weight" (weighted
-// A*'s w, at least 1).
+// algorithm, "search" unless a command calls it otherwise) among `choices`, "weight" (weighted
+// A*'s w, at least 1) and "reopen" (weighted A* re-opening closed vertices, SearchOptions::reopen).
 template <class Options>
 OptionTable<Options>& add_search_options(OptionTable<Options>& table, SearchOptions Options::*member,
                                          std::string name = "search", Choices<Search> choices = search_choices()) {
@@ -279,6 +288,9 @@ OptionTable<Options>& add_search_options(OptionTable<Options>& table, SearchOpti
         return std::nullopt;
       },
       weights);
+  table.add_field(
+      "reopen", [member](auto& o) -> auto& { return (o.*member).reopen; },
+      "weighted A*: expand a closed vertex again when a shorter way to it is found (false: never, the textbook's)");
   return table;
 }
 

@@ -71,6 +71,7 @@ json answer_grid_scenarios(const GridMap& map, const std::vector<ScenarioQuery>&
                {"preprocess_seconds", preprocess}};
   if (weighted) {
     summary["weight"] = search.weight;
+    summary["reopen"] = search.reopen;
     summary["bound_violations"] = bound_violations;
     summary["note"] =
         "weighted A* is not expected to match the optimal lengths; bound_violations counts costs above "

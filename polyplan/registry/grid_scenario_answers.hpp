@@ -5,7 +5,7 @@
 //
 //   {"queries": [{"index", "found", "length", "expected", "expanded", "us", "mismatch", "bound_ok"?}, ...],
 //    "summary": {"queries", "mismatches", "mean_us", "mean_expanded", "search", "preprocess_seconds",
-//                "weight"?, "bound_violations"?, "note"?}}
+//                "weight"?, "reopen"?, "bound_violations"?, "note"?}}
 //
 // The program and Python's polyplan.grid call this one function.
 #include <polyplan/io/movingai_map.hpp>

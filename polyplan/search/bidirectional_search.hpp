@@ -1,12 +1,12 @@
 #pragma once
-// Bidirectional Dijkstra on an undirected Boost graph with dense vertex ids (a vecS
-// adjacency_list): one uniform-cost search from the start and one from the goal, each taking the
-// cheaper of the two frontiers in turn; every edge scanned offers a meeting (cost to its one end
-// from the start + the edge + cost to its other end from the goal), and the search stops once the
-// two smallest frontier costs add up to at least the best meeting: no path through an unsettled
-// vertex can be cheaper then (Pohl 1971; the course's bidirectional search on PRM roadmaps). BGL
-// has no bidirectional search, so it is written here; the queue is std::priority_queue with lazy
-// deletion.
+// Bidirectional Dijkstra on a Boost graph with dense vertex ids (a vecS adjacency_list), undirected,
+// or directed with its reverse given: one uniform-cost search from the start and one from the
+// goal, each taking the cheaper of the two frontiers in turn; every edge scanned offers a meeting
+// (cost to its one end from the start + the edge + cost to its other end from the goal), and the
+// search stops once the two smallest frontier costs add up to at least the best meeting: no path
+// through an unsettled vertex can be cheaper then (Pohl 1971; the course's bidirectional search on
+// PRM roadmaps, and on its graphs, search/weighted_digraph.hpp). BGL has no bidirectional search,
+// so it is written here; the queue is std::priority_queue with lazy deletion.
 //
 // Counts as search_result.hpp defines them, over both searches: generated (vertices reached for
 // the first time by either), expanded (vertices settled, the meeting ones included).
@@ -26,16 +26,20 @@
 
 namespace polyplan {
 
-// weight: double(const Edge&) >= 0. Throws std::out_of_range for a start or goal outside the graph.
-template <class Graph, class WeightFn>
-SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> bidirectional_dijkstra(
-    const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
-    typename boost::graph_traits<Graph>::vertex_descriptor goal, WeightFn weight) {
-  using Vertex = typename boost::graph_traits<Graph>::vertex_descriptor;
+// The directed form: `forward` searched from the start along its out-edges, `backward` (the same
+// vertex ids, every edge reversed, its weight kept) from the goal along its out-edges, which are
+// forward's in-edges. forward_weight and backward_weight: double(const Edge&) >= 0 of each graph.
+// Throws std::out_of_range for a start or goal outside the graphs.
+template <class Forward, class ForwardWeight, class Backward, class BackwardWeight>
+SearchResult<typename boost::graph_traits<Forward>::vertex_descriptor> bidirectional_dijkstra(
+    const Forward& forward, ForwardWeight forward_weight, const Backward& backward, BackwardWeight backward_weight,
+    typename boost::graph_traits<Forward>::vertex_descriptor start,
+    typename boost::graph_traits<Forward>::vertex_descriptor goal) {
+  using Vertex = typename boost::graph_traits<Forward>::vertex_descriptor;
   constexpr double unreached = std::numeric_limits<double>::infinity();
   const auto began = std::chrono::steady_clock::now();
-  const std::size_t n = num_vertices(g);
-  if (start >= n || goal >= n)
+  const std::size_t n = num_vertices(forward);
+  if (start >= n || goal >= n || num_vertices(backward) != n)
     throw std::out_of_range("bidirectional_dijkstra: start or goal is not a vertex of the graph");
 
   SearchResult<Vertex> result;
@@ -66,15 +70,8 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> bidirection
     while (!side.open.empty() && side.settled[side.open.top().second]) side.open.pop();
     return side.open.empty() ? unreached : side.open.top().first;
   };
-  while (true) {
-    const double forward = top(sides[0]), backward = top(sides[1]);
-    if (forward == unreached || backward == unreached || forward + backward >= best) break;
-    const int s = forward <= backward ? 0 : 1;
-    Side &side = sides[s], &other = sides[1 - s];
-    const Vertex u = side.open.top().second;
-    side.open.pop();
-    side.settled[u] = true;
-    ++result.expanded;
+  // One side, having settled u, scans its out-edges in its own graph.
+  const auto scan = [&](Side& side, const Side& other, Vertex u, const auto& g, const auto& weight) {
     for (auto [e, end] = out_edges(u, g); e != end; ++e) {
       const Vertex v = target(*e, g);
       const double through = side.cost[u] + static_cast<double>(weight(*e));
@@ -89,6 +86,18 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> bidirection
         meet = v;
       }
     }
+  };
+  while (true) {
+    const double ahead = top(sides[0]), behind = top(sides[1]);
+    if (ahead == unreached || behind == unreached || ahead + behind >= best) break;
+    const int s = ahead <= behind ? 0 : 1;
+    Side &side = sides[s], &other = sides[1 - s];
+    const Vertex u = side.open.top().second;
+    side.open.pop();
+    side.settled[u] = true;
+    ++result.expanded;
+    if (s == 0) scan(side, other, u, forward, forward_weight);
+    else scan(side, other, u, backward, backward_weight);
   }
   if (best != unreached) {
     result.found = true;
@@ -103,6 +112,15 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> bidirection
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   return result;
+}
+
+// On an undirected graph both searches walk the same edges. weight: double(const Edge&) >= 0.
+// Throws std::out_of_range for a start or goal outside the graph.
+template <class Graph, class WeightFn>
+SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> bidirectional_dijkstra(
+    const Graph& g, typename boost::graph_traits<Graph>::vertex_descriptor start,
+    typename boost::graph_traits<Graph>::vertex_descriptor goal, WeightFn weight) {
+  return bidirectional_dijkstra(g, weight, g, weight, start, goal);
 }
 
 }  // namespace polyplan

@@ -224,6 +224,30 @@ class FunctionWeightMap {
   WeightFn fn_;
 };
 
+// The textbook's weighted A* (SearchOptions::reopen false): an edge into a closed (black) vertex
+// weighs infinity, so Boost's relax lowers no closed vertex's distance and never re-opens it, and
+// the weight function is not even asked for those edges. Boost offers no other hook: its visitor
+// hears of a re-opening only after it happened.
+template <class Graph, class WeightMap, class ColorMap>
+class ClosedTargetsOutOfReach {
+ public:
+  using key_type = typename WeightMap::key_type;
+  using value_type = double;
+  using reference = double;
+  using category = boost::readable_property_map_tag;
+
+  ClosedTargetsOutOfReach(const Graph& g, const WeightMap& weights, const ColorMap& color)
+      : g_(&g), weights_(weights), color_(color) {}
+  friend double get(const ClosedTargetsOutOfReach& m, const key_type& e) {
+    return get(m.color_, target(e, *m.g_)) == boost::black_color ? unreached : get(m.weights_, e);
+  }
+
+ private:
+  const Graph* g_;
+  WeightMap weights_;
+  ColorMap color_;
+};
+
 // Greedy best-first is A* on these: g stays 0, so f = h.
 template <class Edge>
 struct ZeroWeightMap {
@@ -278,7 +302,7 @@ class GoalTest {
 
 struct SearchCounts {
   std::size_t expanded = 0, generated = 0;
-  std::size_t reopened = 0;  // closed vertices given a shorter distance (weighted A*, inconsistent h)
+  std::size_t reopened = 0;  // closed vertices given a shorter distance (weighted A* with reopen, inconsistent h)
 };
 
 // Records SearchOptions::record_trace (search/search_trace.hpp) from the visitors' events. It keeps
@@ -298,7 +322,7 @@ class TraceRecorder {
     if (!labels_.count(v)) set_label(v, 0.0, std::nullopt);
     ++open_;
   }
-  // A closed vertex given a shorter distance goes back into the open list (weighted A*).
+  // A closed vertex given a shorter distance goes back into the open list (weighted A* with reopen).
   void reopened() { ++open_; }
   // A vertex taken out of the open list (best-first searches, bfs).
   void examined(const Vertex& u) {
@@ -528,7 +552,12 @@ SearchResult<typename boost::graph_traits<Graph>::vertex_descriptor> search_with
   try {
     switch (options.algorithm) {
       case Search::astar: best_first(heuristic, weights); break;
-      case Search::wastar: best_first(ScaledHeuristic<Heuristic>{heuristic, options.weight}, weights); break;
+      case Search::wastar:
+        if (options.reopen) best_first(ScaledHeuristic<Heuristic>{heuristic, options.weight}, weights);
+        else
+          best_first(ScaledHeuristic<Heuristic>{heuristic, options.weight},
+                     ClosedTargetsOutOfReach<Graph, decltype(weights), decltype(color)>(g, weights, color));
+        break;
       case Search::dijkstra: best_first(ZeroHeuristic{}, weights); break;
       case Search::greedy: best_first(heuristic, ZeroWeightMap<Edge>{}); break;
       case Search::bfs:

@@ -19,7 +19,7 @@ enum class Search {
   bfs,       // breadth first: fewest edges, costs ignored while searching
   dfs,       // depth first: the first path found, neither shortest nor fewest edges
   greedy,    // greedy best first: f = h; fast, may be far from optimal
-  wastar,    // weighted A*: f = g + weight * h; cost at most weight * optimal (admissible h)
+  wastar,    // weighted A*: f = g + weight * h; cost at most weight * optimal (consistent h)
 };
 
 namespace detail {
@@ -75,6 +75,11 @@ struct SearchOptions {
   // entered the open list first, as the course's graph-search homework's priority queue does (a list searched for its
   // first minimum, a vertex keeping its place when its f is lowered): an order any reimplementation can reproduce.
   bool ties_first_discovered = false;
+  // wastar only: whether a closed vertex given a shorter distance goes back into the open list. false (the
+  // textbook's weighted A*): a vertex once expanded keeps its g and is never expanded again, so expanded <=
+  // generated; with a consistent heuristic the cost is at most weight * optimal. true: it is re-opened and
+  // expanded again, which may lower the cost but may expand far more vertices (each re-expansion counted).
+  bool reopen = false;
 };
 
 // How the counts are defined (identical for every graph and every property-map storage):
@@ -82,7 +87,8 @@ struct SearchOptions {
 //   included. A vertex re-opened by weighted A* is not generated again.
 // - expanded: vertices taken out of the open list and examined (BGL examine_vertex), the goal
 //   included: the search stops when the goal is taken out, before its edges are looked at. A
-//   vertex re-opened and taken out again (weighted A*) counts each time.
+//   vertex re-opened and taken out again (weighted A* with SearchOptions::reopen) counts each time;
+//   without re-opening each vertex is expanded at most once, so expanded <= generated.
 // - DFS has no open list in BGL's (recursive) formulation: a vertex is expanded the moment it is
 //   discovered, so for DFS expanded == generated == vertices discovered, the goal included.
 // start == goal is found with expanded == generated == 1. Without a path, the counts cover the

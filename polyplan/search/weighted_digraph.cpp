@@ -1,5 +1,6 @@
 #include <polyplan/search/weighted_digraph.hpp>
 
+#include <polyplan/search/bidirectional_search.hpp>
 #include <polyplan/search/graph_search.hpp>
 
 #include <cmath>
@@ -24,6 +25,26 @@ SearchResult<DigraphVertexId> shortest_path(const WeightedDigraph& graph, Digrap
   // A dense table: one query on a small graph, and its records are what the trace reads.
   SearchWorkspace<DigraphVertexId> workspace;
   return shortest_path(graph, start, goal, options, to_goal, cost, workspace);
+}
+
+namespace {
+
+WeightedDigraph reversed_digraph(const WeightedDigraph& graph) {
+  WeightedDigraph out(num_vertices(graph));
+  for (auto [e, end] = edges(graph); e != end; ++e)
+    boost::add_edge(target(*e, graph), source(*e, graph), graph[*e], out);
+  return out;
+}
+
+}  // namespace
+
+SearchResult<DigraphVertexId> bidirectional_shortest_path(const WeightedDigraph& graph, DigraphVertexId start,
+                                                          DigraphVertexId goal) {
+  const WeightedDigraph backward = reversed_digraph(graph);
+  using Edge = boost::graph_traits<WeightedDigraph>::edge_descriptor;
+  return bidirectional_dijkstra(
+      graph, [&graph](const Edge& e) { return graph[e].cost; }, backward,
+      [&backward](const Edge& e) { return backward[e].cost; }, start, goal);
 }
 
 }  // namespace polyplan

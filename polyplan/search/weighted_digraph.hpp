@@ -13,8 +13,15 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <string_view>
+#include <utility>
 
 namespace polyplan {
+
+// The course's names of searches beyond search_result.hpp's, which `polyplan search --method` and
+// Python's search_graph take: "uniform-cost" is Dijkstra (and so is the graph-search homework's
+// "bfs", which takes the vertex of least g out of its queue first).
+inline constexpr std::pair<std::string_view, Search> course_search_names[] = {{"uniform-cost", Search::dijkstra}};
 
 struct DigraphVertex {
   double x = 0, y = 0;
@@ -61,5 +68,12 @@ double euclidean_distance(const WeightedDigraph& graph, DigraphVertexId a, Digra
 // std::out_of_range for a start or goal that is no vertex, std::invalid_argument as shortest_path.
 SearchResult<DigraphVertexId> shortest_path(const WeightedDigraph& graph, DigraphVertexId start, DigraphVertexId goal,
                                             const SearchOptions& options);
+
+// Bidirectional Dijkstra (search/bidirectional_search.hpp) from start to goal, the backward search
+// on the graph with its edges reversed: an optimal path, its cost and the counts of both searches
+// (no trace, no expansion order; algorithm Search::dijkstra). Throws std::out_of_range for a start
+// or goal that is no vertex.
+SearchResult<DigraphVertexId> bidirectional_shortest_path(const WeightedDigraph& graph, DigraphVertexId start,
+                                                          DigraphVertexId goal);
 
 }  // namespace polyplan

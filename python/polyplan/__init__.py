@@ -290,21 +290,47 @@ def animate(obj, ax=None, frames=None, interval=50, *, what="path", graph=None, 
     return _animate(obj, ax, frames, interval, what=what, graph=graph, world=world)
 
 
-def search_graph(graph, start, goal, method: str = "astar", weight: float = 1.5, frames=None) -> dict:
+def search_graph(graph, start, goal, method: str = "astar", weight: float = 1.5, frames=None, reopen: bool = False,
+                 write_back: bool = False) -> dict:
     """Searches a graph in the course's graph-search homework's format, a file's path or the list of dicts
     itself ({"x": [x, y], "neighbors": [...], "neighbors_cost": [...]}, 0-based; "g" and "backpointer"
-    ignored), from vertex `start` to `goal` with `method` (astar, dijkstra, bfs, dfs, greedy, wastar
-    with `weight`) and the Euclidean heuristic, as `polyplan search` does. Returns a dict: found,
-    method, path (indices), cost (None without a path), expanded, generated, expansion_order, trace (one
-    dict per expansion: step, vertex, g, h, f, backpointer, open), svg and animation (the pictures as
-    SVG text). Raises InputError for a bad graph (naming the vertex), vertex or method.
+    ignored), from vertex `start` to `goal` with `method` and the Euclidean heuristic, as `polyplan
+    search` does. Methods: astar, dijkstra (also by the name uniform-cost, the homework's "bfs" that
+    orders its queue by g), bfs (fewest edges), dfs, greedy, wastar (weighted A*, f = g + weight * h:
+    the textbook's, never re-opening a closed vertex, unless `reopen`) and bidirectional
+    (bidirectional Dijkstra: an optimal path, its cost and counts; no trace, labels or frames).
+    Returns a dict: found, method (dijkstra for uniform-cost), path (indices), cost (None without a
+    path), expanded, generated, expansion_order, trace (one dict per expansion: step, vertex, g, h,
+    f, backpointer, open), g and backpointer (lists, one entry per vertex, as the search left them:
+    g the cost from the start along the backpointers, inf where never reached; backpointer the index
+    of the vertex it was reached from, None for the start and where never reached; both None for
+    bidirectional), svg and
+    animation (the pictures as SVG text). Raises InputError for a bad graph (naming the vertex),
+    vertex or method.
+
+    write_back: also write each vertex's "g" and "backpointer" into the list of dicts given as
+    `graph`, as the homework's search does (InputError for a graph given as a file, or with
+    bidirectional, whose two searches leave no one backpointer per vertex).
 
     frames: a folder (created if need be) to draw a plot after every node expansion into,
     step_0001.png, step_0002.png, ...: the graph, the closed vertices, the open list and the vertex
     expanded, its step, g, h and f in the title; the dict then also holds "frames", the PNGs'
     paths. For graphs of at most 2000 vertices and searches of at most 5000 steps (InputError
     beyond). polyplan.animate(result, graph=graph) shows the same as an animation."""
-    result = _polyplan.search_graph(graph, start, goal, method, weight)
+    if not isinstance(write_back, bool):
+        raise InputError(f"search_graph: write_back: expected True or False, got {type(write_back).__name__}")
+    if write_back and (isinstance(graph, (str, bytes)) or hasattr(graph, "__fspath__")):
+        raise InputError("search_graph: write_back: needs the graph as the list of dicts to write into, not a file")
+    if write_back and method == "bidirectional":
+        raise InputError("search_graph: write_back: bidirectional leaves no one g and backpointer per vertex "
+                         "(its two searches label from the start and from the goal)")
+    if frames is not None and method == "bidirectional":
+        raise InputError("search_graph: frames: bidirectional records no expansions to draw")
+    result = _polyplan.search_graph(graph, start, goal, method, weight, reopen)
+    if write_back:
+        for vertex, g, backpointer in zip(graph, result["g"], result["backpointer"]):
+            vertex["g"] = g
+            vertex["backpointer"] = backpointer
     if frames is not None:
         from .animation import search_frames
         result["frames"] = search_frames(graph, result, frames, goal)

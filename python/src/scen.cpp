@@ -148,8 +148,8 @@ void bind_scen(py::module_& m) {
         R"(Every query of a MovingAI scenario file answered on the map's 8-connected grid (octile lengths, no
 corner cutting) and compared with the file's optimal lengths, as `polyplan grid` does. map: a .map
 file's path or an occupancy grid [row, column], True where blocked (of the file's size);
-scenarios: the .scen file's path. Options: search ("astar", "dijkstra", "wastar"), weight (for
-wastar). Returns the program's dict ("queries", "summary") with "length" (float64, NaN where no
+scenarios: the .scen file's path. Options: search ("astar", "dijkstra", "wastar"), weight and
+reopen (for wastar). Returns the program's dict ("queries", "summary") with "length" (float64, NaN where no
 path) and "found" (bool) arrays.)");
   m.def("scen", &scen, py::arg("map"), py::arg("scenarios"), py::arg("reference") = py::none(),
         R"(Every query of a MovingAI scenario answered with its Euclidean shortest path (any-angle, among

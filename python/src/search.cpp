@@ -12,6 +12,8 @@
 #include <pybind11/stl.h>
 
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 
 namespace py = pybind11;
@@ -49,11 +51,28 @@ py::object optional_vertex(const std::optional<DigraphVertexId>& v) {
   return v ? py::object(py::int_(*v)) : py::object(py::none());
 }
 
+// Each vertex's g and backpointer when the search ended, read from the trace's last label of each
+// (the costs summed along the backpointers, for every method): inf and None where the search never
+// reached; the start's backpointer None. What search_graph(write_back=True) writes into the graph.
+void add_labels(py::dict& d, const SearchTrace<DigraphVertexId>& trace, std::size_t vertices) {
+  py::list g, backpointer;
+  for (std::size_t v = 0; v < vertices; ++v) {
+    g.append(py::float_(std::numeric_limits<double>::infinity()));
+    backpointer.append(py::none());
+  }
+  for (const auto& label : trace.labels) {
+    g[label.vertex] = py::float_(label.g);
+    backpointer[label.vertex] = optional_vertex(label.backpointer);
+  }
+  d["g"] = g;
+  d["backpointer"] = backpointer;
+}
+
 py::dict result_dict(const SearchResult<DigraphVertexId>& r, const WeightedDigraph& graph, DigraphVertexId start,
-                     DigraphVertexId goal) {
+                     DigraphVertexId goal, const std::string& method) {
   py::dict d;
   d["found"] = r.found;
-  d["method"] = std::string(to_string(r.algorithm));
+  d["method"] = method;
   d["path"] = r.path;
   d["cost"] = r.found ? py::object(py::float_(r.cost)) : py::object(py::none());
   d["expanded"] = r.expanded;
@@ -72,6 +91,7 @@ py::dict result_dict(const SearchResult<DigraphVertexId>& r, const WeightedDigra
     trace.append(line);
   }
   d["trace"] = trace;
+  add_labels(d, r.trace, num_vertices(graph));
   d["svg"] = draw_search(graph, start, goal, r, {}, "polyplan.search_graph").str();
   d["animation"] =
       num_vertices(graph) > max_animated_vertices
@@ -80,37 +100,51 @@ py::dict result_dict(const SearchResult<DigraphVertexId>& r, const WeightedDigra
   return d;
 }
 
+// The method's name: search_result.hpp's, "uniform-cost" (Dijkstra by the course's name), or
+// "bidirectional" (nullopt: bidirectional Dijkstra, which is no SearchOptions algorithm).
+std::optional<Search> method_of(const std::string& method) {
+  if (method == "bidirectional") return std::nullopt;
+  for (const auto& [name, algorithm] : course_search_names)
+    if (method == name) return algorithm;
+  if (const auto algorithm = search_from_string(method)) return algorithm;
+  throw InputError("method " + method +
+                   ": unknown method (astar, dijkstra, uniform-cost, bfs, dfs, greedy, wastar, bidirectional)");
+}
+
 }  // namespace
 
 void bind_search(py::module_& m) {
   m.def(
       "search_graph",
       [](const py::object& graph, const py::object& start_index, const py::object& goal_index,
-         const py::object& method_given, const py::object& weight_given) {
+         const py::object& method_given, const py::object& weight_given, const py::object& reopen_given) {
         const std::string method = text_of(method_given, "method");
         const double weight = finite_number(weight_given, "weight");
+        const bool reopen = flag_of(reopen_given, "reopen");
         const GraphFile file = graph_of(graph);
         const DigraphVertexId start = vertex_of(file, start_index, "start"), goal = vertex_of(file, goal_index, "goal");
+        const auto algorithm = method_of(method);
+        const WeightedDigraph g = make_weighted_digraph(file.vertices);
+        if (!algorithm) {
+          // Two searches, from the start and from the goal: no one g and backpointer per vertex.
+          py::dict d = result_dict(bidirectional_shortest_path(g, start, goal), g, start, goal, "bidirectional");
+          d["g"] = py::none();
+          d["backpointer"] = py::none();
+          return d;
+        }
         SearchOptions options;
-        const auto algorithm = search_from_string(method);
-        if (!algorithm)
-          throw InputError("method " + method + ": unknown method (astar, dijkstra, bfs, dfs, greedy, wastar)");
         options.algorithm = *algorithm;
         if (options.algorithm == Search::wastar && !(std::isfinite(weight) && weight >= 1))
           throw InputError("weight " + std::to_string(weight) + ": weighted A* needs a finite weight >= 1");
         options.weight = weight;
+        options.reopen = reopen;
         options.record_expanded = options.record_trace = options.ties_first_discovered = true;
-        const WeightedDigraph g = make_weighted_digraph(file.vertices);
-        return result_dict(shortest_path(g, start, goal, options), g, start, goal);
+        return result_dict(shortest_path(g, start, goal, options), g, start, goal, std::string(to_string(*algorithm)));
       },
       py::arg("graph"), py::arg("start"), py::arg("goal"), py::arg("method") = "astar", py::arg("weight") = 1.5,
-      R"(Searches a graph in the course's graph-search homework's format, a file's path or the list of dicts
-itself ({"x": [x, y], "neighbors": [...], "neighbors_cost": [...]}, 0-based; "g" and "backpointer"
-ignored), from vertex `start` to `goal` with `method` (astar, dijkstra, bfs, dfs, greedy, wastar
-with `weight`) and the Euclidean heuristic, as `polyplan search` does. Returns a dict: found,
-method, path (indices), cost (None without a path), expanded, generated, expansion_order, trace (one
-dict per expansion: step, vertex, g, h, f, backpointer, open), svg and animation (the pictures as
-SVG text). Raises InputError for a bad graph (naming the vertex), vertex or method.)");
+      py::arg("reopen") = false,
+      R"(The search of polyplan.search_graph (whose docstring says it all) without frames and write_back:
+the dict it returns, g and backpointer per vertex among its entries.)");
 }
 
 }  // namespace polyplan::python

@@ -122,7 +122,8 @@ TEST(Plan, BadPlannersAndOptionsAreOneLineNamingThem) {
        "dstar-lite, lpastar, repeated-astar, potential-field, navigation-function, bug1, bug2, tangent-bug, homotopy, "
        "tether, prm, lazyprm, rrt, rrtstar, rrtconnect, rotation, hybrid-astar, car-rrt, grid)"},
       {"--roadmap teleport", "--planner: unknown planner \"teleport\""},
-      {"--resolution 40", "--resolution: the planner visibility has no option resolution (its options: search weight)"},
+      {"--resolution 40",
+       "--resolution: the planner visibility has no option resolution (its options: search weight reopen)"},
       {"--planner raster --resolution forty", "planner raster: option resolution=forty: expected a whole number"},
       {"--option resolution", "--option resolution: expected NAME=VALUE"},
       {"--option search=bfs --search astar", "--search: the option search is given twice"},

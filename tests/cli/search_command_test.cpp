@@ -72,6 +72,23 @@ TEST(Search, EveryMethodAnswers) {
   }
 }
 
+// The course's names: uniform-cost is Dijkstra, expansion for expansion; weighted A* says whether it reopened.
+TEST(Search, UniformCostIsDijkstraAndWeightedAStarSaysWhetherItReopens) {
+  const auto json_of = [](const std::string& options) {
+    const CliRun run = run_polyplan("search " + graph("grid_medium.json") + " --start 0 --goal 37 --json - " + options);
+    EXPECT_EQ(run.exit_code, 0) << options << ": " << run.err;
+    return nlohmann::json::parse(run.out);
+  };
+  const auto uniform = json_of("--method uniform-cost"), dijkstra = json_of("--method dijkstra");
+  EXPECT_EQ(uniform["method"], "dijkstra");
+  EXPECT_EQ(uniform["expansion_order"], dijkstra["expansion_order"]);
+  EXPECT_EQ(uniform["cost"], dijkstra["cost"]);
+  EXPECT_EQ(json_of("--method wastar --weight 3")["reopen"], false);
+  const auto reopening = json_of("--method wastar --weight 3 --reopen");
+  EXPECT_EQ(reopening["reopen"], true);
+  EXPECT_LE(reopening["cost"].get<double>(), 3 * dijkstra["cost"].get<double>());
+}
+
 TEST(Search, NoPathIsAnAnswer) {
   // 2 → 5 is one-way in small.json, and nothing leads out of an isolated vertex.
   const std::string lonely = bad_graph("lonely.json", R"([{"x": [0, 0], "neighbors": [], "neighbors_cost": []},
@@ -155,7 +172,7 @@ TEST(Search, RefusesBadGraphsAndOptionsInOneLine) {
       {"search '" + no_x + "' --start 0 --goal 0", no_x + ": vertices[0]: missing field \"x\""},
       {"search " + graph("small.json") + " --start 0 --goal 7", "--goal 7: not a vertex of"},
       {"search " + graph("small.json") + " --start 0 --goal 6 --method teleport",
-       "--method teleport: expected one of astar|dijkstra|bfs|dfs|greedy|wastar"},
+       "--method teleport: expected one of astar|dijkstra|bfs|dfs|greedy|wastar|uniform-cost"},
       {"search " + graph("small.json") + " --start 0 --goal 6 --method wastar --weight 0.5",
        "--weight 0.5: expected a number in [1, inf)"},
       {"search " + graph("small.json") + " --start 0 --goal 6 --animate", "--animate: give --svg OUT.svg"},

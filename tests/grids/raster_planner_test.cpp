@@ -267,3 +267,30 @@ TEST(RasterPlanner, RecordsTheCellsAndTheExpandedCentresForPictures) {
   EXPECT_EQ(static_cast<std::int64_t>(recorded.recording.expanded.size()), recorded.facts.at(SearchFacts::expanded));
   EXPECT_EQ(recorded.path, plain.path);
 }
+
+// office.json's raster at 400 cells, the case: the textbook's weighted A* (w = 20, no
+// reopening) expands fewer cells than A*, each at most once (expanded <= generated); reopening
+// expands more than A* there. The counts are deterministic; the times are bench/weighted_astar_bench's.
+TEST(RasterPlanner, TextbookWeightedAStarExpandsFewerCellsThanAStarOnTheOffice) {
+  const World world = read_world(POLYPLAN_SOURCE_DIR "/data/worlds/office.json");
+  const CSpace cspace(world);
+  struct Counts {
+    std::int64_t expanded, generated;
+    double length;
+  };
+  const auto counts = [&](Search algorithm, bool reopen) {
+    RasterOptions options{400};
+    options.search = {algorithm, 20.0};
+    options.search.reopen = reopen;
+    const Report r = RasterPlanner(cspace, options).plan(world.queries.front());
+    EXPECT_TRUE(r.found) << to_string(algorithm);
+    return Counts{r.facts.at(SearchFacts::expanded), r.facts.at(SearchFacts::generated), r.length};
+  };
+  const Counts astar = counts(Search::astar, false), textbook = counts(Search::wastar, false),
+               reopening = counts(Search::wastar, true);
+  EXPECT_LT(textbook.expanded, astar.expanded);
+  EXPECT_LE(textbook.expanded, textbook.generated);
+  EXPECT_GT(reopening.expanded, astar.expanded);
+  EXPECT_LE(textbook.length, 20 * astar.length);
+  EXPECT_LE(reopening.length, 20 * astar.length);
+}

@@ -46,7 +46,7 @@ std::string refusal(const OptionValues& values) {
 
 TEST(OptionTable, ListsEveryOptionWithItsKindAndDefault) {
   const std::vector<OptionInfo> info = table().info();
-  ASSERT_EQ(info.size(), 8u);
+  ASSERT_EQ(info.size(), 9u);
   const auto at = [&](std::size_t i) { return info[i].name + " [" + info[i].kind + "] = " + info[i].default_value; };
   EXPECT_EQ(at(0), "cells [whole number in [0, inf)] = 100");
   EXPECT_EQ(at(1), "offset [whole number in (-inf, inf)] = -2");
@@ -56,7 +56,9 @@ TEST(OptionTable, ListsEveryOptionWithItsKindAndDefault) {
   EXPECT_EQ(at(5), "shape [round|square] = round");
   EXPECT_EQ(at(6), "search [astar|dijkstra|bfs|dfs|greedy|wastar] = astar");
   EXPECT_EQ(at(7), "weight [number in [1, inf)] = 1");
+  EXPECT_EQ(at(8), "reopen [true or false] = false");
   EXPECT_TRUE(info[3].flag);
+  EXPECT_TRUE(info[8].flag);
   EXPECT_FALSE(info[0].flag);
   EXPECT_FALSE(info[5].flag);
 }
@@ -69,7 +71,8 @@ TEST(OptionTable, SetsEveryKindFromText) {
                                    {"label", "a=b"},
                                    {"shape", "square"},
                                    {"search", "wastar"},
-                                   {"weight", "3"}},
+                                   {"weight", "3"},
+                                   {"reopen", "true"}},
                                   "demo");
   EXPECT_EQ(o.cells, 40u);
   EXPECT_EQ(o.offset, -7);
@@ -79,6 +82,8 @@ TEST(OptionTable, SetsEveryKindFromText) {
   EXPECT_EQ(o.shape, Shape::square);
   EXPECT_EQ(o.search.algorithm, Search::wastar);
   EXPECT_EQ(o.search.weight, 3.0);
+  EXPECT_TRUE(o.search.reopen);
+  EXPECT_FALSE(table().parse({}, "demo").search.reopen);
   // Unset options keep their defaults; later values replace earlier ones.
   const Options d = table().parse({{"cells", "1"}, {"cells", "2"}}, "demo");
   EXPECT_EQ(d.cells, 2u);
@@ -98,9 +103,10 @@ TEST(OptionTable, RefusalsNameThePlannerTheOptionAndTheValue) {
   EXPECT_EQ(refusal({{"search", "teleport"}}),
             "planner demo: option search=teleport: expected one of astar|dijkstra|bfs|dfs|greedy|wastar");
   EXPECT_EQ(refusal({{"weight", "0.9"}}), "planner demo: option weight=0.9: expected a number in [1, inf)");
+  EXPECT_EQ(refusal({{"reopen", "sometimes"}}), "planner demo: option reopen=sometimes: expected true or false");
   EXPECT_EQ(refusal({{"colour", "red"}}),
             "planner demo: option colour=red: no such option (its options: cells, offset, step, wrap, label, shape, "
-            "search, weight)");
+            "search, weight, reopen)");
   EXPECT_EQ(OptionTable<Options>().parse({}, "empty").cells, 100u);
   try {
     OptionTable<Options>().parse({{"cells", "1"}}, "empty");

@@ -107,8 +107,8 @@ TEST(ArmRegistry, GridIsRegisteredWithItsOptions) {
   ASSERT_NE(grid, nullptr);
   std::vector<std::string> names;
   for (const OptionInfo& o : grid->options) names.push_back(o.name);
-  EXPECT_EQ(names, (std::vector<std::string>{"resolution", "torus", "evaluation", "search", "weight", "coarse",
-                                             "corridor", "exact-cells", "widenings", "memory-mb"}));
+  EXPECT_EQ(names, (std::vector<std::string>{"resolution", "torus", "evaluation", "search", "weight", "reopen",
+                                             "coarse", "corridor", "exact-cells", "widenings", "memory-mb"}));
   EXPECT_EQ(grid->options[1].flag, true);
   ArmProblem p;
   p.arm.links = {1, 1};

@@ -1,13 +1,18 @@
-// Bidirectional Dijkstra against BGL's Dijkstra on random weighted graphs: the same costs, valid
-// paths whose weights add up to the cost, no path between components, the trivial query.
+// Bidirectional Dijkstra against BGL's Dijkstra on random weighted graphs, undirected and directed:
+// the same costs, valid paths whose weights add up to the cost, no path between components, the
+// trivial query.
 #include <polyplan/search/bidirectional_search.hpp>
+#include <polyplan/search/weighted_digraph.hpp>
 
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/dijkstra_shortest_paths.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
 #include <random>
+#include <vector>
 
 namespace polyplan {
 namespace {
@@ -30,6 +35,20 @@ Graph random_graph(std::size_t n, std::size_t m, std::mt19937_64& random, bool j
   return g;
 }
 
+// The sum of the weights along `path`, each step the lightest out-edge to the next vertex; inf
+// when a step is no edge (in its direction).
+template <class G, class WeightFn>
+double path_weight(const G& g, const std::vector<std::size_t>& path, const WeightFn& weight) {
+  double sum = 0;
+  for (std::size_t i = 0; i + 1 < path.size(); ++i) {
+    double lightest = std::numeric_limits<double>::infinity();
+    for (auto [e, end] = boost::out_edges(path[i], g); e != end; ++e)
+      if (boost::target(*e, g) == path[i + 1]) lightest = std::min(lightest, weight(*e));
+    sum += lightest;
+  }
+  return sum;
+}
+
 TEST(BidirectionalDijkstra, FindsDijkstrasCostsWithValidPaths) {
   std::mt19937_64 random(5);
   for (int trial = 0; trial < 20; ++trial) {
@@ -48,16 +67,36 @@ TEST(BidirectionalDijkstra, FindsDijkstrasCostsWithValidPaths) {
       ASSERT_FALSE(result.path.empty());
       EXPECT_EQ(result.path.front(), s);
       EXPECT_EQ(result.path.back(), t);
-      double sum = 0;
-      for (std::size_t i = 0; i + 1 < result.path.size(); ++i) {
-        double lightest = std::numeric_limits<double>::infinity();
-        for (auto [e, end] = boost::out_edges(result.path[i], g); e != end; ++e)
-          if (boost::target(*e, g) == result.path[i + 1]) lightest = std::min(lightest, weights[*e]);
-        ASSERT_LT(lightest, std::numeric_limits<double>::infinity()) << "not an edge";
-        sum += lightest;
-      }
+      const double sum = path_weight(g, result.path, [&](const Graph::edge_descriptor& e) { return weights[e]; });
       EXPECT_NEAR(sum, result.cost, 1e-9 * (1 + sum));
       EXPECT_LE(result.expanded, result.generated);
+    }
+  }
+}
+
+// The course's directed graphs (search/weighted_digraph.hpp): the backward search walks the edges
+// reversed, so one-way edges and asymmetric costs give Dijkstra's costs along edges in their direction.
+TEST(BidirectionalDijkstra, DirectedGraphsGiveDijkstrasCostsAlongEdgesInTheirDirection) {
+  std::mt19937_64 random(48);
+  std::uniform_int_distribution<std::size_t> vertex(0, 199);
+  std::uniform_real_distribution<double> cost(0, 10);
+  for (int trial = 0; trial < 10; ++trial) {
+    WeightedDigraph g(200);
+    for (int i = 0; i < 500; ++i) boost::add_edge(vertex(random), vertex(random), DigraphEdge{cost(random)}, g);
+    const auto edge_cost = [&](const WeightedDigraph::edge_descriptor& e) { return g[e].cost; };
+    for (int q = 0; q < 20; ++q) {
+      const std::size_t s = vertex(random), t = vertex(random);
+      std::vector<double> distance(200);
+      boost::dijkstra_shortest_paths(
+          g, s, boost::distance_map(distance.data()).weight_map(boost::get(&DigraphEdge::cost, g)));
+      const auto result = bidirectional_shortest_path(g, s, t);
+      const bool reachable = distance[t] < std::numeric_limits<double>::max();
+      ASSERT_EQ(result.found, reachable) << s << " to " << t;
+      if (!reachable) continue;
+      EXPECT_NEAR(result.cost, distance[t], 1e-9 * (1 + distance[t]));
+      ASSERT_EQ(result.path.front(), s);
+      ASSERT_EQ(result.path.back(), t);
+      EXPECT_NEAR(path_weight(g, result.path, edge_cost), result.cost, 1e-9 * (1 + result.cost));
     }
   }
 }

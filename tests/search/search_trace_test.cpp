@@ -48,14 +48,15 @@ struct SeedAnswer {
 
 // The course's graph-search homework's Algorithm 1, Ver. 2, with its priority queue: a list in insertion order whose
 // first minimum is extracted; an improved vertex keeps its place with its new f. Closed vertices are never reopened.
-SeedAnswer seed_astar(const GraphFile& graph, std::size_t start, std::size_t goal) {
+// weight: the textbook's weighted A*, f = g + weight * h, on the same algorithm.
+SeedAnswer seed_astar(const GraphFile& graph, std::size_t start, std::size_t goal, double weight = 1) {
   const std::size_t n = graph.vertices.size();
   std::vector<double> g(n, inf), f(n, inf);
   std::vector<std::optional<std::size_t>> backpointer(n);
   std::vector<bool> closed(n, false);
   std::vector<std::size_t> open{start};
   g[start] = 0;
-  f[start] = heuristic(graph, start, goal);
+  f[start] = weight * heuristic(graph, start, goal);
   SeedAnswer r;
   while (!open.empty()) {
     std::size_t best = 0;
@@ -79,7 +80,7 @@ SeedAnswer seed_astar(const GraphFile& graph, std::size_t start, std::size_t goa
       if (!is_open) open.push_back(x);
       if (!is_open || through < g[x]) {
         g[x] = through;
-        f[x] = through + heuristic(graph, x, goal);
+        f[x] = through + weight * heuristic(graph, x, goal);
         backpointer[x] = u;
       }
     }
@@ -165,11 +166,11 @@ void expect_consistent_trace(const GraphFile& graph, std::size_t start, std::siz
     EXPECT_EQ(e.backpointer, backpointer_now[e.vertex]) << what << " step " << e.step;
     EXPECT_EQ(e.h, heuristic(graph, e.vertex, goal)) << what;
     EXPECT_EQ(e.f, expected_key(algorithm, e.g, e.h)) << what;
-    // Without reopening (weighted A* may reopen) the open list is what was discovered and not yet
-    // expanded; DFS's is its stack of unfinished vertices, expanded before this one.
+    // Without reopening (weighted A* reopens only when asked) the open list is what was discovered
+    // and not yet expanded; DFS's is its stack of unfinished vertices, expanded before this one.
     if (algorithm == Search::dfs) {
       EXPECT_LE(e.open, k) << what;
-    } else if (algorithm != Search::wastar) {
+    } else {
       EXPECT_EQ(e.open, discovered - (k + 1)) << what << " step " << e.step;
     }
   }
@@ -206,6 +207,20 @@ TEST(SearchTrace, AStarExpandsAsTheSeedsAlgorithm) {
     EXPECT_EQ(r.cost, reference.cost) << q.file;
     EXPECT_EQ(r.expanded_order, reference.expanded) << q.file << " " << q.start << " → " << q.goal;
     EXPECT_DOUBLE_EQ(r.cost, dijkstra_cost(graph, q.start, q.goal)) << q.file;
+  }
+}
+
+// Weighted A* without reopening is the textbook's: the same algorithm with f = g + w·h, expansion
+// for expansion.
+TEST(SearchTrace, WeightedAStarExpandsAsTheSeedsAlgorithmWithWeightedH) {
+  for (const GraphQuery& q : queries) {
+    const GraphFile graph = shipped(q.file);
+    const SeedAnswer reference = seed_astar(graph, q.start, q.goal, 2);
+    const auto r = run_search(graph, q.start, q.goal, Search::wastar);
+    ASSERT_TRUE(r.found) << q.file;
+    EXPECT_EQ(r.path, reference.path) << q.file << " " << q.start << " → " << q.goal;
+    EXPECT_EQ(r.cost, reference.cost) << q.file;
+    EXPECT_EQ(r.expanded_order, reference.expanded) << q.file << " " << q.start << " → " << q.goal;
   }
 }
 
