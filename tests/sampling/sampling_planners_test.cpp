@@ -161,7 +161,14 @@ TEST(SamplingPlanners, RrtStarImprovesAsItRuns) {
 }
 
 // The time limit bounds the whole query, shortcutting and the path's certification included
-// (bench/time_limit_table.cpp measures every planner to within 20 ms; a loose bound here, one run).
+// (bench/time_limit_table.cpp measures every planner to within 20 ms; a loose bound here, one run,
+// looser still under AddressSanitizer, whose every step is several times slower, beside another test).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr double kLooseOvershoot = 1.0;
+#else
+constexpr double kLooseOvershoot = 0.25;
+#endif
+
 TEST(SamplingPlanners, RrtStarEndsAtItsTimeLimit) {
   const World world = shipped_world("maze");
   const CSpace cspace(world);
@@ -169,7 +176,7 @@ TEST(SamplingPlanners, RrtStarEndsAtItsTimeLimit) {
   ASSERT_TRUE(report.found);
   EXPECT_EQ(report.facts.at(QueryFacts::stopped_by), "time limit");
   EXPECT_GE(report.facts.at(QueryFacts::seconds), 0.5);
-  EXPECT_LE(report.facts.at(QueryFacts::seconds), 0.5 + 0.25);
+  EXPECT_LE(report.facts.at(QueryFacts::seconds), 0.5 + kLooseOvershoot);
 }
 
 // The report carries the solutions as found, the shortcut path last: what a benchmark's
