@@ -152,6 +152,11 @@ RoundCSpace polygon_robot_cspace(const World& world) {
 
 }  // namespace
 
+bool straight_edged(const RoundCSpace& space) {
+  return !space.disc && std::all_of(space.obstacles.begin(), space.obstacles.end(),
+                                    [](const RoundCore& core) { return core.radius == 0; });
+}
+
 RoundCSpace round_cspace(const World& world) {
   return world.robot.parts.empty() ? round_robot_cspace(world) : polygon_robot_cspace(world);
 }

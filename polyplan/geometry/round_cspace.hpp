@@ -44,6 +44,10 @@ struct RoundCSpace {
   Robot robot = Robot::point;
 };
 
+// Whether every C-obstacle is straight-edged (each core of radius 0: polygons and walls) and the
+// bounds are no disc: the free space's boundary then has no arc.
+bool straight_edged(const RoundCSpace& space);
+
 // The world's C-space. Throws InputError naming the world's file for a polygon robot in disc
 // bounds (where it fits is an intersection of discs, not a core grown by a radius).
 RoundCSpace round_cspace(const World& world);

@@ -244,11 +244,6 @@ bool empty_region(const RoundCSpace& space) {
   return !(space.disc->radius > 0);
 }
 
-bool all_radius_zero(const RoundCSpace& space) {
-  return std::all_of(space.obstacles.begin(), space.obstacles.end(),
-                     [](const RoundCore& core) { return core.radius == 0; });
-}
-
 // A point robot among the polygon cores in the box: the polygon world's exact C-space.
 Rational polygon_free_area(const RoundCSpace& space, const std::string& source) {
   World world;
@@ -273,7 +268,7 @@ FreeArea round_free_area(const RoundCSpace& space, const std::string& source) {
     return {false, std::nullopt, infinity, infinity};
   }
   if (empty_region(space)) return exact_area(0);
-  if (space.box && all_radius_zero(space)) return exact_area(polygon_free_area(space, source));
+  if (straight_edged(space)) return exact_area(polygon_free_area(space, source));
   return {true, std::nullopt, free_area_of(space, Side::outer).inf(), free_area_of(space, Side::inner).sup()};
 }
 

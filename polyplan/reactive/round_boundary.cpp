@@ -28,9 +28,7 @@ struct Piece {
 };
 
 void refuse_arcs(const RoundWorld& world, const std::string& who) {
-  bool arcs = world.cspace().disc.has_value();
-  for (const RoundCore& core : world.cspace().obstacles) arcs |= core.radius != 0;
-  if (arcs)
+  if (!straight_edged(world.cspace()))
     throw InputError(world.world().source + ": " + round_features_text(world.world()) + ": the planner " + who +
                      " follows boundaries of straight edges only, and this world's C-obstacles have arcs (discs, a "
                      "disc robot or disc bounds): use visibility, the sampling planners or the grids");

@@ -218,13 +218,10 @@ the exact value of that double (0.1 is 3602879701896397/36028797018963968).)")
       .def_property_readonly(
           "discs",
           [](const WorldHandle& w) {
-            py::array_t<double> out({static_cast<py::ssize_t>(w.world().discs.size()), py::ssize_t{3}});
-            auto cell = out.mutable_unchecked<2>();
-            for (std::size_t i = 0; i < w.world().discs.size(); ++i) {
-              const Disc& d = w.world().discs[i];
-              cell(i, 0) = to_double(d.center.x), cell(i, 1) = to_double(d.center.y), cell(i, 2) = to_double(d.radius);
-            }
-            return out;
+            std::vector<std::vector<double>> rows;
+            for (const Disc& d : w.world().discs)
+              rows.push_back({to_double(d.center.x), to_double(d.center.y), to_double(d.radius)});
+            return rows_array(rows, 3);
           },
           "The disc obstacles, an (N, 3) float64 array of rows (x, y, radius).")
       .def_property_readonly(
