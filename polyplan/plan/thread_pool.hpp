@@ -5,6 +5,7 @@
 #include <atomic>
 #include <cstddef>
 #include <exception>
+#include <new>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -38,7 +39,9 @@ ThreadsRun run_on_threads(unsigned threads, const Work& work) {
   for (unsigned worker = 1; worker < threads; ++worker) {
     try {
       pool.emplace_back(guarded, worker);
-    } catch (const std::system_error&) {
+    } catch (const std::system_error&) {  // no thread to be had
+      break;
+    } catch (const std::bad_alloc&) {  // no memory for the thread's state: the same, not a joinable thread left behind
       break;
     }
   }
