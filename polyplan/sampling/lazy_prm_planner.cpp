@@ -31,7 +31,7 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
   // Certifies the path's unchecked edges from the start on (both ways in a space that is not
   // symmetric: the edge serves later queries either way); removes the first that is not free.
   // False, with nothing removed, when the time limit stops it: the edges certified stay so.
-  bool certify(const std::vector<std::size_t>& path, std::size_t& removed, const SamplingBudget& budget) {
+  bool certify(const std::vector<std::size_t>& path, std::size_t& removed, SamplingBudget& budget) {
     auto& graph = roadmap_.graph();
     for (std::size_t i = 0; i + 1 < path.size(); ++i) {
       if (budget.out_of_time()) return false;

@@ -31,7 +31,7 @@ class PrmPlanner final : public SamplingPlanner<Space> {
   // Past the time limit (`budget`: none for the query's own milestones, which join all theirs)
   // a drawn milestone joins no more neighbours: each join certifies a motion.
   std::size_t add_milestone(const Configuration& configuration, std::span<const double> at = {},
-                            const SamplingBudget* budget = nullptr) {
+                            SamplingBudget* budget = nullptr) {
     const std::size_t id = roadmap_.size();
     components_.push_back(id);
     return roadmap_.add(configuration, at, [&](std::size_t n) {

@@ -75,7 +75,7 @@ double SamplingPlanner<Space>::length(const std::vector<Configuration>& path) co
 // two whose motion is certified free goes. The length never grows. Each step leaves a path of
 // certified motions, so the time limit may stop it after any.
 template <class Space>
-auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path, const SamplingBudget& budget)
+auto SamplingPlanner<Space>::shortcut(std::vector<Configuration> path, SamplingBudget& budget)
     -> std::vector<Configuration> {
   const std::size_t d = space_->dimension();
   std::vector<double> a(d), b(d), first_at(d), second_at(d);
@@ -189,6 +189,7 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   facts.set(SamplingFacts::raw_length, length(attempt.path));
   std::vector<Configuration> path =
       limits_.shortcut ? shortcut(std::move(attempt.path), budget) : std::move(attempt.path);
+  facts.set(QueryFacts::stopped_by, budget.stopped_by());  // the time limit may have cut the shortcutting
 
   // Every motion was certified as the planner made it; certified once more as returned, so that
   // no assembly of tree halves or shortcut can slip an unchecked motion into the answer.

@@ -285,7 +285,11 @@ class SamplingBudget {
   // Whether the time limit has passed, counting nothing: asked within an iteration whose work may
   // stop part way (RRT*'s choice of parent and rewiring, a lazy roadmap's certification, PRM's
   // joins) and by the work after the search (shortcutting), so that the query ends at its limit.
-  bool out_of_time() const { return running_.seconds() >= seconds_; }
+  // A cut counts as the time limit's stop: the answer then depends on the machine's speed.
+  bool out_of_time() {
+    if (running_.seconds() >= seconds_) timed_out_ = true;
+    return timed_out_;
+  }
   std::size_t used() const { return used_; }
   double seconds() const { return running_.seconds(); }
   // "the time limit (10 s)" or "the iteration limit (100000)": what stopped the query.
@@ -433,7 +437,7 @@ class SamplingPlanner : public Planner<Space> {
  private:
   // Shortcuts between random points of the path, each new motion certified (the .cpp says how),
   // until the budget's time runs out.
-  std::vector<Configuration> shortcut(std::vector<Configuration> path, const SamplingBudget& budget);
+  std::vector<Configuration> shortcut(std::vector<Configuration> path, SamplingBudget& budget);
   // Placed configuration `id`'s free region, measured on first asking; null when the space keeps
   // none.
   const FreeRegion* region_of(const SampledConfigurations<Space>& nodes, std::size_t id) {
