@@ -59,7 +59,8 @@ int run_benchmark(const BenchmarkCommand& command) {
       run_experiment(experiment, threads, [&](std::size_t done, std::size_t total) { progress.update(done, total); });
   if (results.threads < std::min<std::size_t>(threads, experiment.cells()))
     std::fprintf(stderr,
-                 "warning: only %u of the %u threads asked could start (the system's limits); the runs went on "
+                 "warning: only %u of the %u threads asked could start (the system's limits on threads and memory); "
+                 "the runs went on "
                  "with those\n",
                  results.threads, threads);
 

@@ -10,6 +10,8 @@
 #include <thread>
 #include <vector>
 
+#include "polyplan/plan/thread_memory.hpp"
+
 namespace polyplan {
 
 // How many threads a pool asked for, and how many ran.
@@ -19,14 +21,16 @@ struct ThreadsRun {
 };
 
 // Runs `work(worker)` on up to `threads` threads at once, the caller's own among them as worker
-// 0. A thread the system cannot start (too many threads for its limits, no memory for a stack) is
-// not an error: the pool runs with those that started, so `work` must take its pieces from a
-// shared counter (for_each_piece), never a fixed slice per worker. An exception a worker throws
-// (out of memory, say) ends that worker and is thrown again to the caller once all have joined —
-// never std::terminate from a thread.
+// 0; fewer under an address-space cap, so that half the headroom stays for the work
+// (thread_memory.hpp). A thread the system cannot start (too many threads for its limits, no
+// memory for a stack) is not an error either: the pool runs with those that started, so `work` must take its pieces
+// from a shared counter (for_each_piece), never a fixed slice per worker. An exception a worker throws (out of memory,
+// say) ends that worker and is thrown again to the caller once all have joined — never std::terminate from a thread.
 template <class Work>
 ThreadsRun run_on_threads(unsigned threads, const Work& work) {
-  std::vector<std::exception_ptr> failures(std::max(threads, 1u));
+  const unsigned asked = std::max(threads, 1u);
+  threads = threads_within_memory(asked);
+  std::vector<std::exception_ptr> failures(threads);
   const auto guarded = [&](unsigned worker) {
     try {
       work(worker);
@@ -49,7 +53,7 @@ ThreadsRun run_on_threads(unsigned threads, const Work& work) {
   for (std::thread& thread : pool) thread.join();
   for (const std::exception_ptr& failure : failures)
     if (failure) std::rethrow_exception(failure);
-  return {std::max(threads, 1u), static_cast<unsigned>(pool.size() + 1)};
+  return {asked, static_cast<unsigned>(pool.size() + 1)};
 }
 
 // Calls piece(i, worker) for every i in [0, n) once, on up to `threads` threads (no more than n).

@@ -77,8 +77,9 @@ json answer_scenarios(const GridMap& map, const std::vector<ScenarioQuery>& scen
   const std::vector<TimedPathAnswer> answers =
       answer_all(paths, asked, budget.threads, budget.progress, &short_of_threads);
   if ((short_of_threads || paths.short_of_threads()) && budget.warn)
-    budget.warn("not all of the " + std::to_string(budget.threads) +
-                " threads asked could start (the system's limits); the work went on with those that did");
+    budget.warn(
+        "not all of the " + std::to_string(budget.threads) +
+        " threads asked could start (the system's limits on threads and memory); the work went on with those that did");
   const double batch_seconds = batch.seconds();
 
   std::size_t mismatches = 0;
