@@ -1,7 +1,6 @@
 #include <polyplan/reactive/boundary_walk.hpp>
 
 #include <polyplan/geometry/path_check.hpp>
-#include <polyplan/geometry/round_query.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -65,18 +64,9 @@ std::vector<std::vector<Point>> boundary_cycles(const CSpace& cspace) {
 
 Boundary::Boundary(const CSpace& cspace) : cspace_(&cspace), cycles_(boundary_cycles(cspace)) {}
 
-PathCheck Boundary::check_path(const std::vector<Point>& path) const {
-  return cspace_ ? polyplan::check_path(*cspace_, path) : round_->check_path(path);
-}
+PathCheck Boundary::check_path(const std::vector<Point>& path) const { return polyplan::check_path(*cspace_, path); }
 
-std::optional<std::string> Boundary::query_not_free(const Query& query) const {
-  return cspace_ ? cspace_->query_not_free(query) : polyplan::query_not_free(*round_, query);
-}
-
-const CSpace& Boundary::cspace() const {
-  if (!cspace_) throw std::logic_error("walk::Boundary::cspace: the boundary of a round world has no polygon C-space");
-  return *cspace_;
-}
+std::optional<std::string> Boundary::query_not_free(const Query& query) const { return cspace_->query_not_free(query); }
 
 std::optional<Point> Boundary::first_hit(const Point& from, const Point& to) const {
   const auto free = [&](const Point& end) { return check_path({from, end}).valid; };
@@ -110,6 +100,22 @@ double Boundary::perimeter(std::size_t cycle) const {
   double sum = 0;
   for (std::size_t i = 0; i < cycles_[cycle].size(); ++i) sum += distance(vertex(cycle, i), vertex(cycle, i + 1));
   return sum;
+}
+
+std::vector<Point> Boundary::line_points(Edge, const Point& a, const Point& b, const Point& s, const Point& g) const {
+  std::vector<Rational> ts;
+  if (!(a == b)) meetings(a, b, s, g, ts);
+  std::sort(ts.begin(), ts.end());
+  std::vector<Point> out;
+  for (const Rational& t : ts) out.push_back(along(a, b, t));
+  return out;
+}
+
+int Boundary::side(Edge e, const Point&, const Point& p) const { return sgn(cross(start(e), end(e), p)); }
+
+Point Boundary::nearest(Edge, const Point& a, const Point& b, const Point& p) const {
+  if (a == b) return a;
+  return along(a, b, std::clamp(Rational(dot(a, p, b) / squared(a, b)), Rational(0), Rational(1)));
 }
 
 std::size_t Boundary::crossings(std::size_t cycle, const Point& start, const Point& goal) const {

@@ -3,10 +3,9 @@
 // with the free space on its left (so a robot walking one keeps the obstacle on its right), where
 // a straight way first meets them, and the edge a boundary point lies on. Everything exact: the
 // points are rational, and every answer comes from exact predicates and the exact segment test.
-// The boundary of a polygon world's C-space, or of a round world's whose C-obstacles are polygons
-// and walls (round_boundary.cpp: a wall is a cycle of both its sides).
+// The boundary of a polygon world's C-space (a round world's, with arcs and walls:
+// detail/arc_boundary.hpp).
 #include <polyplan/geometry/cspace.hpp>
-#include <polyplan/geometry/round_world_check.hpp>
 
 #include <polyplan/geometry/path_check.hpp>
 
@@ -38,19 +37,23 @@ struct Edge {
   std::size_t cycle = 0, index = 0;
 };
 
+// How the robot went from one point of its walk to the next when not straight: along a boundary
+// edge, forwards (the free space on its left) or back.
+struct Along {
+  Edge edge;
+  bool forward = true;
+};
+
 class Boundary {
  public:
-  // The C-space (or the world) must outlive the boundary. A round world's is walked only when
-  // every C-obstacle is a polygon or a wall (no arcs): otherwise InputError naming the file and
-  // `who` (the planner).
+  // The C-space must outlive the boundary.
   explicit Boundary(const CSpace& cspace);
-  Boundary(const RoundWorld& world, const std::string& who);
 
   // The exact checks of the C-space it bounds, and why a query's start or goal is not free.
   PathCheck check_path(const std::vector<Point>& path) const;
   std::optional<std::string> query_not_free(const Query& query) const;
-  // A polygon world's C-space (tangent-bug's visibility); std::logic_error for a round world.
-  const CSpace& cspace() const;
+  // The C-space (tangent-bug's visibility).
+  const CSpace& cspace() const { return *cspace_; }
   const std::vector<std::vector<Point>>& cycles() const { return cycles_; }
   // Indices wrap round the cycle.
   const Point& vertex(std::size_t cycle, std::size_t i) const { return cycles_[cycle][i % cycles_[cycle].size()]; }
@@ -63,13 +66,27 @@ class Boundary {
   // (the obstacle on its right ahead), if any.
   std::optional<Edge> edge_at(const Point& p, const Point& heading = {0, 0}) const;
   double perimeter(std::size_t cycle) const;
+
+  // The walk along an edge, as the Bug planners take it whatever the boundary (detail/arc_boundary.hpp
+  // answers the same for arcs): the edge's ends; the points of the segment s-g on its part from a
+  // to b (both on it, a first), in walking order; on which side of the edge's way at x the point p
+  // lies (1 left, -1 right, 0 ahead or behind); the part's point nearest p; the part's length.
+  using Point = walk::Point;
+  std::size_t size(std::size_t cycle) const { return cycles_[cycle].size(); }
+  const Point& start(Edge e) const { return vertex(e.cycle, e.index); }
+  const Point& end(Edge e) const { return vertex(e.cycle, e.index + 1); }
+  std::vector<Point> line_points(Edge e, const Point& a, const Point& b, const Point& s, const Point& g) const;
+  int side(Edge e, const Point& x, const Point& p) const;
+  Point nearest(Edge e, const Point& a, const Point& b, const Point& p) const;
+  double length(Edge, const Point& a, const Point& b) const { return distance(a, b); }
+  static Point point(const ExactPoint& p) { return p; }
+  static Rational squared_distance(const Point& a, const Point& b) { return squared(a, b); }
   // How often the segment start-goal meets a cycle (distinct points; a wall met counts its two
   // sides, as a thin obstacle's are met going in and coming out).
   std::size_t crossings(std::size_t cycle, const Point& start, const Point& goal) const;
 
  private:
-  const CSpace* cspace_ = nullptr;     // a polygon world's,
-  const RoundWorld* round_ = nullptr;  // or a round world's
+  const CSpace* cspace_;
   std::vector<std::vector<Point>> cycles_;
 };
 

@@ -6,21 +6,31 @@
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/reactive/boundary_walk.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace polyplan::walk {
 
-struct Walk {
-  std::vector<Point> path;  // from the start: every point where the robot turned
-  std::vector<Point> hits, leaves;
+template <class P>
+struct BasicWalk {
+  std::vector<P> path;                      // from the start: every point where the robot turned
+  std::vector<std::optional<Along>> along;  // along[k]: from path[k] to path[k + 1]
+  std::vector<P> hits, leaves;
 
-  explicit Walk(const Point& start) : path{start} {}
-  // Goes on to p (nothing when already there).
-  void to(const Point& p) {
-    if (!(path.back() == p)) path.push_back(p);
+  explicit BasicWalk(const P& start) : path{start} {}
+  // Goes on to p straight, or along the edge (nothing when already there).
+  void to(const P& p) { go(p, std::nullopt); }
+  void follow(const P& p, Edge edge, bool forward = true) { go(p, Along{edge, forward}); }
+
+ private:
+  void go(const P& p, std::optional<Along> how) {
+    if (path.back() == p) return;
+    path.push_back(p);
+    along.push_back(how);
   }
 };
+using Walk = BasicWalk<Point>;
 
 // Sets the facts and marks; on `arrived`, the path (ending at the goal) and status solved, unless
 // the exact check finds the walk invalid (status not_found, naming polyplan's bug). `name` is the

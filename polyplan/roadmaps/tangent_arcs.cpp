@@ -9,6 +9,7 @@
 #include <polyplan/roadmaps/detail/tangent_arcs.hpp>
 
 #include <algorithm>
+#include <optional>
 
 namespace polyplan::tangent {
 namespace {
@@ -41,16 +42,39 @@ int half(const AP& a, const AP& v) {
   return s > 0 || (s == 0 && sign_of(dot(a, v)) > 0) ? 0 : 1;
 }
 
-Algebraic distance_to_arc(const Arc& arc, const AP& p) {
-  const AP u = p - arc.circle->centre;
-  if (sign_of(squared(u)) == 0) return arc.circle->radius;
-  if (spans(arc, u)) return absolute(length(u) - arc.circle->radius);
-  return std::min(length(p - arc.from), length(p - arc.to));
+// Whether u points to one of the arc's ends.
+bool towards_end(const Arc& arc, const AP& u) {
+  const auto same = [&](const AP& v) { return sign_of(cross(u, v)) == 0 && sign_of(dot(u, v)) > 0; };
+  return same(arc.from - arc.circle->centre) || same(arc.to - arc.circle->centre);
 }
 
-Algebraic distance_to_segment(const Arc& arc, const Seg<Algebraic>& s) {
-  std::vector<Algebraic> candidates{root(squared_distance(s, arc.from)), root(squared_distance(s, arc.to)),
-                                    distance_to_arc(arc, s.a), distance_to_arc(arc, s.b)};
+// A distance from an arc, kept apart: the least over its ends, and the least over its other points
+// where it is not at an end (none when only an end is nearest).
+struct ArcDistance {
+  Algebraic ends;
+  std::optional<Algebraic> inside;
+  void add(const Algebraic& d, bool at_end) {
+    if (at_end) ends = std::min(ends, d);
+    else inside = inside ? std::min(*inside, d) : d;
+  }
+  Algebraic least() const { return inside ? std::min(ends, *inside) : ends; }
+};
+
+ArcDistance distance_to_arc(const Arc& arc, const AP& p) {
+  const AP u = p - arc.circle->centre;
+  ArcDistance out{std::min(length(p - arc.from), length(p - arc.to)), std::nullopt};
+  if (sign_of(squared(u)) == 0) out.add(arc.circle->radius, false);
+  else if (spans(arc, u)) out.add(absolute(length(u) - arc.circle->radius), towards_end(arc, u));
+  return out;
+}
+
+ArcDistance distance_to_segment(const Arc& arc, const Seg<Algebraic>& s) {
+  ArcDistance out{std::min(root(squared_distance(s, arc.from)), root(squared_distance(s, arc.to))), std::nullopt};
+  for (const AP& end : {s.a, s.b}) {
+    const ArcDistance d = distance_to_arc(arc, end);
+    out.add(d.ends, true);
+    if (d.inside) out.add(*d.inside, false);
+  }
   const AP d = s.b - s.a, &c = arc.circle->centre;
   const Algebraic length2 = squared(d), &rho = arc.circle->radius;
   if (sign_of(length2) != 0) {
@@ -60,13 +84,15 @@ Algebraic distance_to_segment(const Arc& arc, const Seg<Algebraic>& s) {
     const auto inside = [](const Algebraic& u) { return sign_of(u) >= 0 && u <= Algebraic(1); };
     if (h2 <= rho * rho) {  // the line meets the circle: where, if inside the segment and the arc
       const Algebraic w = root((rho * rho - h2) / length2);
-      for (const Algebraic& u : {t - w, t + w})
-        if (inside(u) && spans(arc, s.a + times(d, u) - c)) candidates.push_back(Algebraic(0));
+      for (const Algebraic& u : {t - w, t + w}) {
+        const AP radial = s.a + times(d, u) - c;
+        if (inside(u) && spans(arc, radial)) out.add(Algebraic(0), towards_end(arc, radial));
+      }
     } else if (inside(t) && spans(arc, normal)) {
-      candidates.push_back(root(h2) - rho);
+      out.add(root(h2) - rho, towards_end(arc, normal));
     }
   }
-  return *std::min_element(candidates.begin(), candidates.end());
+  return out;
 }
 
 // Whether the obstacle's feature is the circle's own: the disc itself, or an edge or a wall piece
@@ -82,50 +108,66 @@ bool edge_owns(const Seg<Algebraic>& e, const Obstacle& o, const Circle& circle)
   return o.radius == circle.radius && (e.a == circle.centre || e.b == circle.centre);
 }
 
-// Whether the arc comes nearer than `radius` (or touches it, unless `own`).
-bool too_near(const Algebraic& distance, const Algebraic& radius, bool own) {
-  return distance < radius || (!own && distance == radius);
+// Whether the arc comes nearer than `radius` (or touches it, unless `own`); an open arc (`open`)
+// may touch anything at its ends.
+bool too_near(const ArcDistance& distance, const Algebraic& radius, bool own, bool open) {
+  const auto near = [&](const Algebraic& d) { return d < radius || (!own && d == radius); };
+  if (!open) return near(distance.least());
+  return distance.ends < radius || (distance.inside && near(*distance.inside));
 }
 
-std::optional<std::string> blocked_by(const Obstacle& o, const Arc& arc) {
+std::optional<std::string> blocked_by(const Obstacle& o, const Arc& arc, bool open) {
   const Circle& circle = *arc.circle;
   const std::string why = "the arc round " + circle.name + " comes to " + o.name;
   if (o.core == Core::point) {
-    if (too_near(distance_to_arc(arc, o.centre), o.radius, owns(o, circle))) return why;
+    if (too_near(distance_to_arc(arc, o.centre), o.radius, owns(o, circle), open)) return why;
   } else if (o.core == Core::segment) {
-    if (too_near(distance_to_segment(arc, {o.from, o.to}), o.radius, owns(o, circle))) return why;
+    if (too_near(distance_to_segment(arc, {o.from, o.to}), o.radius, owns(o, circle), open)) return why;
   } else if (o.core == Core::wall) {
     for (std::size_t k = 0; k + 1 < o.wall.size(); ++k)
-      if (too_near(distance_to_segment(arc, {o.wall[k], o.wall[k + 1]}), o.radius, false)) return why;
+      if (too_near(distance_to_segment(arc, {o.wall[k], o.wall[k + 1]}), o.radius, false, open)) return why;
   } else {
     for (const auto& ring : o.rings)
       for (const Seg<Algebraic>& e : round_rules::edges_of(ring))
-        if (too_near(distance_to_segment(arc, e), o.radius, edge_owns(e, o, circle))) return why;
+        if (too_near(distance_to_segment(arc, e), o.radius, edge_owns(e, o, circle), open)) return why;
   }
   return std::nullopt;
 }
 
-// The largest value of v·x over the arc's points x.
-Algebraic largest(const Arc& arc, const AP& v) {
-  Algebraic best = std::max(dot(v, arc.from), dot(v, arc.to));
-  if (spans(arc, v)) best = std::max(best, dot(v, arc.circle->centre) + arc.circle->radius * length(v));
-  return best;
+// The largest value of v·x over the arc's points x: at its ends, and where the arc holds v's
+// direction (none when it does not, or only at an end).
+struct Largest {
+  Algebraic ends;
+  std::optional<Algebraic> inside;
+  bool reaches(const Algebraic& limit, bool open) const {
+    if (inside && *inside >= limit) return true;
+    return open ? ends > limit : ends >= limit;
+  }
+};
+Largest largest(const Arc& arc, const AP& v) {
+  Largest out{std::max(dot(v, arc.from), dot(v, arc.to)), std::nullopt};
+  if (spans(arc, v) && !towards_end(arc, v)) out.inside = dot(v, arc.circle->centre) + arc.circle->radius * length(v);
+  return out;
 }
 
-std::optional<std::string> leaves_bounds(const Rules& rules, const Arc& arc) {
+// Whether the arc touches or leaves the bounds; an open arc may touch them at its ends, and an arc
+// of the bounds' own circle runs along them.
+std::optional<std::string> leaves_bounds(const Rules& rules, const Arc& arc, bool open) {
   const std::string why = "the arc round " + arc.circle->name + " comes to the bounds";
   if (const auto& box = rules.box()) {
     const auto& [xmin, ymin, xmax, ymax] = *box;
     const Algebraic one(1), zero(0);
-    if (largest(arc, {one, zero}) >= xmax || largest(arc, {zero, one}) >= ymax) return why;
-    if (-largest(arc, {-one, zero}) <= xmin || -largest(arc, {zero, -one}) <= ymin) return why;
+    if (largest(arc, {one, zero}).reaches(xmax, open) || largest(arc, {zero, one}).reaches(ymax, open) ||
+        largest(arc, {-one, zero}).reaches(-xmin, open) || largest(arc, {zero, -one}).reaches(-ymin, open))
+      return why;
   }
   if (const auto& centre = rules.disc_centre()) {
     const AP w = arc.circle->centre - *centre;
-    Algebraic farthest = std::max(length(arc.from - *centre), length(arc.to - *centre));
-    if (sign_of(squared(w)) == 0) farthest = arc.circle->radius;
-    else if (spans(arc, w)) farthest = length(w) + arc.circle->radius;
-    if (farthest >= rules.disc_radius()) return why;
+    if (open && sign_of(squared(w)) == 0 && arc.circle->radius == rules.disc_radius()) return std::nullopt;  // along
+    Largest farthest{std::max(length(arc.from - *centre), length(arc.to - *centre)), std::nullopt};
+    if (sign_of(squared(w)) == 0) farthest.inside = arc.circle->radius;
+    else if (spans(arc, w) && !towards_end(arc, w)) farthest.inside = length(w) + arc.circle->radius;
+    if (farthest.reaches(rules.disc_radius(), open)) return why;
   }
   return std::nullopt;
 }
@@ -178,10 +220,10 @@ bool spans(const Arc& arc, const AP& u) {
   return !turns_before(a, b, u);
 }
 
-std::optional<std::string> arc_blocked(const Rules& rules, const Arc& arc) {
+std::optional<std::string> arc_blocked(const Rules& rules, const Arc& arc, bool open) {
   for (const Obstacle& o : rules.obstacles())
-    if (auto why = blocked_by(o, arc)) return why;
-  return leaves_bounds(rules, arc);
+    if (auto why = blocked_by(o, arc, open)) return why;
+  return leaves_bounds(rules, arc, open);
 }
 
 }  // namespace polyplan::tangent

@@ -27,8 +27,8 @@ using tangent::Circle;
 using AP = AlgebraicPoint;
 using Rules = round_rules::RoundRules<Algebraic>;
 
-constexpr FactKey<double> length_lower{"length_lower"};
-constexpr FactKey<double> length_upper{"length_upper"};
+using tangent::length_lower;
+using tangent::length_upper;
 
 // A checked straight motion between two touching points; `from_owner` and `to_owner` are circle
 // indices, or circles.size() for the query's start and + 1 for its goal.

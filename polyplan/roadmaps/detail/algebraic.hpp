@@ -28,8 +28,12 @@ inline Algebraic root(const Algebraic& x) {
   return CORE::sqrt(CORE::sqrt(x * x));
 }
 
-// The nearest doubles, as a message or the JSON prints a point.
-inline double approximate(const Algebraic& x) { return x.doubleValue(); }
+// The double nearest x, as a message or the JSON prints a point: x to 80 bits, then rounded to
+// nearest (CORE's own doubleValue() may be a unit in the last place off: 1/5 is not 0.2).
+inline double approximate(const Algebraic& x) {
+  const CORE::BigRat q = x.approx(CORE::extLong(80), CORE::extLong(1100)).BigRatValue();
+  return to_double(Rational(q.get_mp()));
+}
 
 }  // namespace polyplan
 

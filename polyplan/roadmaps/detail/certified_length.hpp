@@ -2,9 +2,14 @@
 // Lengths of a tangent path's pieces as intervals of doubles that hold the exact length for sure
 // (outward rounding): a segment's length from CORE's exact interval of its square root, an arc's as
 // radius × angle with MPFR's directed rounding of atan2 and of the products and sums.
+#include <polyplan/plan/fact_key.hpp>
 #include <polyplan/roadmaps/detail/tangent_arcs.hpp>
 
 namespace polyplan::tangent {
+
+// The facts of a path's certified length: the exact length lies between them.
+inline constexpr FactKey<double> length_lower{"length_lower"};
+inline constexpr FactKey<double> length_upper{"length_upper"};
 
 struct LengthBounds {
   double lower = 0, upper = 0;

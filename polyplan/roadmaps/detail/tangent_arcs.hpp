@@ -51,7 +51,10 @@ bool turns_before(const AlgebraicPoint& a, const AlgebraicPoint& u, const Algebr
 // Why the robot's centre may not travel along the arc, or none. It may not come nearer an obstacle's
 // core than the obstacle's radius, nor touch an obstacle other than the circle's own (the disc, or
 // the edges and wall pieces ending at the corner): an arc touching another obstacle passes where two
-// touch, a passage of zero width. Nor may it touch or leave the bounds.
-std::optional<std::string> arc_blocked(const round_rules::RoundRules<Algebraic>& rules, const Arc& arc);
+// touch, a passage of zero width. Nor may it touch or leave the bounds. An open arc (`open`: the
+// Bug planners' walk along the free space's boundary, whose pieces end where obstacles meet) may
+// touch anything at its ends, and runs along the bounds where it is an arc of their circle.
+std::optional<std::string> arc_blocked(const round_rules::RoundRules<Algebraic>& rules, const Arc& arc,
+                                       bool open = false);
 
 }  // namespace polyplan::tangent
