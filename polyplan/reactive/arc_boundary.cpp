@@ -114,7 +114,7 @@ class Builder {
                             algebraic(ExactPoint{b->xmax, b->ymax}), algebraic(ExactPoint{b->xmin, b->ymax})};
       for (int k = 0; k < 4; ++k) candidates_.push_back({{corners[k], corners[(k + 1) % 4], std::nullopt, true}});
     }
-    if (const auto& disc = space.disc) {
+    if (const auto& disc = space.disc; disc && disc->radius > 0) {  // (the robot may not fit: no free space)
       circles_.push_back({algebraic(disc->center), algebraic(disc->radius), disc->center, disc->radius, "the bounds"});
       whole(circles_.size() - 1, true);
     }

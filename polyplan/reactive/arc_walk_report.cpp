@@ -73,8 +73,32 @@ std::optional<std::string> walk_blocked(const ArcBoundary& boundary, const std::
   return std::nullopt;
 }
 
-// The doubles nearest x, moved towards `free_side` a step at a time while inside an obstacle.
+// x itself when it is rational (a corner of a polygon's Minkowski sum, a wall's end): the simplest
+// rational near it — a convergent of the continued fraction of x to 80 bits, its denominator below
+// 10^12 — is x exactly, as CORE decides.
+std::optional<Rational> rational(const Algebraic& x) {
+  const CORE::BigRat approximation = x.approx(CORE::extLong(80), CORE::extLong(1100)).BigRatValue();
+  Rational rest(approximation.get_mp());
+  mpz_class p0 = 0, q0 = 1, p1 = 1, q1 = 0;  // the convergents before
+  for (int term = 0; term < 64 && q1 < mpz_class("1000000000000"); ++term) {
+    mpz_class whole;
+    mpz_fdiv_q(whole.get_mpz_t(), rest.get_num_mpz_t(), rest.get_den_mpz_t());
+    const mpz_class p2 = whole * p1 + p0, q2 = whole * q1 + q0;
+    const Rational candidate(p2, q2);
+    if (algebraic(candidate) == x) return candidate;
+    rest -= whole;
+    if (rest == 0) break;
+    rest = 1 / rest;
+    p0 = p1, q0 = q1, p1 = p2, q1 = q2;
+  }
+  return std::nullopt;
+}
+
+// x exactly where it is rational; else the doubles nearest it, moved towards `free_side` a step at
+// a time while inside an obstacle.
 ExactPoint printed(const round_rules::RoundRules<Rational>& rules, const AP& x, const AP& free_side) {
+  if (auto px = rational(x.x))
+    if (auto py = rational(x.y)) return {*px, *py};
   double d[2] = {approximate(x.x), approximate(x.y)};
   const int way[2] = {sign_of(free_side.x), sign_of(free_side.y)};
   const double inf = std::numeric_limits<double>::infinity();

@@ -77,7 +77,7 @@ PathCheck check_path_file(const Problem& problem, const std::string& path_file) 
 PathCheck check_translating_path(const Problem& problem, const std::vector<ExactPoint>& points) {
   const World& world = *problem.world();
   if (round_features(world).empty()) return check_path(problem.cspace(), points);
-  return RoundWorld(world).check_path(points);
+  return problem.round_world().check_path(points);  // the problem's, built once
 }
 
 }  // namespace polyplan

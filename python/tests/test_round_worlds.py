@@ -141,3 +141,16 @@ def test_the_world_and_its_plot_show_discs_walls_and_arcs():
         if piece["kind"] == "arc":
             on = np.abs(np.hypot(*(drawn - piece["centre"]).T) - piece["radius"]) < 1e-9
             assert on.sum() >= 2
+
+
+def test_the_bugs_follow_arcs():
+    # Round the unit disc from (-3, 0) to (3, 0): Bug2 over the top, 2 + π + 2; Bug1 once round first.
+    world = polyplan.World.from_dict({"discs": [{"center": [0, 0], "radius": 1}], "start": [-3, 0],
+                                      "goal": [3, 0]})
+    two = polyplan.plan(world, planner="bug2")[0]
+    assert two.status == "solved"
+    assert [p["kind"] for p in two.pieces] == ["segment", "arc", "segment"]
+    assert abs(two.length - (4 + np.pi)) <= 1e-12 * two.length
+    assert two.facts["bug"]["hits"] == [[-1, 0]] and two.facts["bug"]["leaves"] == [[1, 0]]
+    one = polyplan.plan(world, planner="bug1")[0]
+    assert abs(one.length - (4 + 3 * np.pi)) <= 1e-12 * one.length

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace polyplan::test {
@@ -69,51 +70,74 @@ inline std::vector<XY> boundary_points(const Polygon& polygon) {
   return out;
 }
 
+// The world in doubles, read once: the robot's parts (or disc), the discs, the walls sampled every
+// 1/200 of each piece, the polygons with their boundaries sampled every 1/40 of each edge.
+struct WorldInDoubles {
+  std::vector<Polygon> robot;
+  double robot_radius = 0;
+  std::vector<std::pair<XY, double>> discs;
+  std::vector<std::pair<XY, XY>> wall_pieces;
+  std::vector<XY> wall_points;
+  std::vector<Polygon> obstacles;
+  std::vector<std::vector<XY>> obstacle_points;
+  std::vector<std::vector<XY>> robot_points;  // each part's boundary, sampled, at the origin
+
+  explicit WorldInDoubles(const World& world) {
+    for (const Ring& part : world.robot.parts) {
+      std::vector<XY> placed;
+      for (const ExactPoint& v : part) placed.push_back(xy(v));
+      robot.push_back({placed});
+      robot_points.push_back(boundary_points(robot.back()));
+    }
+    if (world.robot.disc) robot_radius = to_double(*world.robot.disc);
+    for (const Disc& d : world.discs) discs.emplace_back(xy(d.center), to_double(d.radius));
+    for (const Wall& w : world.walls)
+      for (std::size_t k = 0; k + 1 < w.size(); ++k) {
+        const XY a = xy(w[k]), b = xy(w[k + 1]);
+        wall_pieces.emplace_back(a, b);
+        for (int s = 0; s <= 200; ++s)
+          wall_points.push_back({a[0] + s / 200.0 * (b[0] - a[0]), a[1] + s / 200.0 * (b[1] - a[1])});
+      }
+    for (const PolygonWithHoles& obstacle : world.obstacles) {
+      obstacles.push_back(polygon_of(obstacle));
+      obstacle_points.push_back(boundary_points(obstacles.back()));
+    }
+  }
+};
+
 // A polygon robot's parts placed with their reference point at p: how far the deepest disc, wall or
 // polygon reaches into one (> 0: it overlaps), doubles; walls and polygons sampled along their
 // edges, each polygon's boundary against the robot's and the robot's against it.
-inline double polygon_robot_depth(const World& world, const XY& p) {
-  std::vector<Polygon> robot;
-  for (const Ring& part : world.robot.parts) {
-    std::vector<XY> placed;
-    for (const ExactPoint& v : part) placed.push_back({to_double(v.x) + p[0], to_double(v.y) + p[1]});
-    robot.push_back({placed});
-  }
+inline double polygon_robot_depth(const WorldInDoubles& world, const XY& p) {
+  std::vector<Polygon> robot = world.robot;
+  for (Polygon& part : robot)
+    for (XY& v : part.front()) v = {v[0] + p[0], v[1] + p[1]};
   const auto into_robot = [&](const XY& q) {
     double d = 1e300;
     for (const Polygon& part : robot) d = std::min(d, signed_distance(q, part));
     return -d;
   };
   double worst = -1e300;
-  for (const Disc& d : world.discs) worst = std::max(worst, to_double(d.radius) + into_robot(xy(d.center)));
-  for (const Wall& w : world.walls)
-    for (std::size_t k = 0; k + 1 < w.size(); ++k)
-      for (int s = 0; s <= 200; ++s) {
-        const XY a = xy(w[k]), b = xy(w[k + 1]);
-        worst = std::max(worst, into_robot({a[0] + s / 200.0 * (b[0] - a[0]), a[1] + s / 200.0 * (b[1] - a[1])}));
-      }
-  for (const PolygonWithHoles& obstacle : world.obstacles) {
-    const Polygon o = polygon_of(obstacle);
-    for (const XY& q : boundary_points(o)) worst = std::max(worst, into_robot(q));
-    for (const Polygon& part : robot)
-      for (const XY& q : boundary_points(part)) worst = std::max(worst, -signed_distance(q, o));
+  for (const auto& [centre, radius] : world.discs) worst = std::max(worst, radius + into_robot(centre));
+  for (const XY& q : world.wall_points) worst = std::max(worst, into_robot(q));
+  for (std::size_t o = 0; o < world.obstacles.size(); ++o) {
+    for (const XY& q : world.obstacle_points[o]) worst = std::max(worst, into_robot(q));
+    for (const std::vector<XY>& part : world.robot_points)
+      for (const XY& q : part)
+        worst = std::max(worst, -signed_distance({q[0] + p[0], q[1] + p[1]}, world.obstacles[o]));
   }
   return worst;
 }
 
 // How far inside the nearest obstacle the robot at p is (> 0: inside), doubles.
-inline double depth(const World& world, const XY& p) {
-  if (!world.robot.parts.empty()) return polygon_robot_depth(world, p);
-  const double r = world.robot.disc ? to_double(*world.robot.disc) : 0.0;
+inline double depth(const WorldInDoubles& world, const XY& p) {
+  if (!world.robot.empty()) return polygon_robot_depth(world, p);
+  const double r = world.robot_radius;
   double worst = -1e300;
-  for (const Disc& d : world.discs)
-    worst = std::max(worst,
-                     to_double(d.radius) + r - std::hypot(p[0] - to_double(d.center.x), p[1] - to_double(d.center.y)));
-  for (const Wall& w : world.walls)
-    for (std::size_t k = 0; k + 1 < w.size(); ++k)
-      worst = std::max(worst, r - segment_distance(p, xy(w[k]), xy(w[k + 1])));
-  for (const PolygonWithHoles& polygon : world.obstacles)
-    worst = std::max(worst, r - signed_distance(p, polygon_of(polygon)));
+  for (const auto& [centre, radius] : world.discs)
+    worst = std::max(worst, radius + r - std::hypot(p[0] - centre[0], p[1] - centre[1]));
+  for (const auto& [a, b] : world.wall_pieces) worst = std::max(worst, r - segment_distance(p, a, b));
+  for (const Polygon& polygon : world.obstacles) worst = std::max(worst, r - signed_distance(p, polygon));
   return worst;
 }
 
@@ -130,6 +154,7 @@ template <class Check>
 void expect_valid_pieces(const World& world, const PlanReport<ExactPoint>& report, const Check& check) {
   const auto& pieces = report.pieces;
   ASSERT_EQ(report.path.size(), pieces.size() + 1);
+  const WorldInDoubles doubles(world);
   double total = 0;
   for (std::size_t k = 0; k < pieces.size(); ++k) {
     const PathPiece& piece = pieces[k];
@@ -145,7 +170,7 @@ void expect_valid_pieces(const World& world, const PlanReport<ExactPoint>& repor
     const XY end = along(piece, 1.0);
     EXPECT_NEAR(end[0], piece.to[0], 1e-9);
     EXPECT_NEAR(end[1], piece.to[1], 1e-9);
-    for (int s = 0; s <= 400; ++s) EXPECT_LE(depth(world, along(piece, s / 400.0)), 1e-9);
+    for (int s = 0; s <= 400; ++s) EXPECT_LE(depth(doubles, along(piece, s / 400.0)), 1e-9);
     if (piece.kind == PathPiece::Kind::segment) {
       const auto exact = check(std::vector<ExactPoint>{report.path[k], report.path[k + 1]});
       EXPECT_TRUE(exact.valid) << exact.reason;
