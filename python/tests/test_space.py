@@ -63,8 +63,8 @@ def test_distance_is_symmetric_and_interpolate_has_its_ends():
         for _ in range(50):
             a, b = rng.uniform(low, high, 2), rng.uniform(low, high, 2)
             assert space.distance(a, b) == pytest.approx(space.distance(b, a), abs=1e-12)
-            assert same_angles(space.interpolate(a, b, 0), a) if problem is not world else \
-                np.allclose(space.interpolate(a, b, 0), a)
+            start = space.interpolate(a, b, 0)
+            assert same_angles(start, a) if problem is not world else np.allclose(start, a)
             end = space.interpolate(a, b, 1)
             assert space.distance(end, b) == pytest.approx(0, abs=1e-12)
     space = polyplan.space(world)
@@ -79,6 +79,15 @@ def test_motion_is_free_is_the_certified_test():
     assert not space.is_free([5, 5])
     assert np.allclose(space.steer([1, 1], [9, 1], 2), [3, 1])
     assert np.array_equal(space.steer([1, 1], [2, 1], 2), [2, 1])  # nearer than a step: b itself
+
+
+def test_a_world_with_discs_has_the_round_robots_space():
+    space = polyplan.space(polyplan.read_world(data("worlds", "sphere_world.json")))
+    assert space.dimension == 2
+    assert not space.motion_is_free([-9, 2], [0, 2])  # through the disc round (-4.4, 2)
+    assert space.motion_is_free([-9, -9.5], [9, -9.5])
+    with pytest.raises(polyplan.InputError, match="outside the sampling box"):
+        space.distance([-11, 0], [0, 0])
 
 
 def test_a_cars_space_has_poses():
