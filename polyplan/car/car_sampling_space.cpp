@@ -58,6 +58,10 @@ class CarSamplingSpace final : public SamplingSpace<SteeredCar> {
     out[1] = box_.ymin + uniform01(random) * (box_.ymax - box_.ymin);
     out[2] = uniform01(random) * two_pi;
   }
+  // The heading may be any angle: only the position has bounds.
+  std::optional<std::string> outside(std::span<const double> c) const override {
+    return outside_box(c[0], c[1], box_.xmin, box_.ymin, box_.xmax, box_.ymax);
+  }
   void coordinates(const CarState& state, std::span<double> out) const override {
     out[0] = state.pose.x, out[1] = state.pose.y, out[2] = state.pose.theta;
   }

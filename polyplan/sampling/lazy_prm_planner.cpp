@@ -1,7 +1,7 @@
 #include <polyplan/sampling/lazy_prm_planner.hpp>
 
 #include <polyplan/plan/plan_facts.hpp>
-#include <polyplan/sampling/detail/sampled_roadmap.hpp>
+#include <polyplan/sampling/detail/roadmap_planner.hpp>
 #include <polyplan/sampling/sampling_facts.hpp>
 
 #include <algorithm>
@@ -12,15 +12,15 @@ namespace {
 constexpr std::size_t first_batch = 10;  // milestones drawn before the second search
 
 template <class Space>
-class LazyPrmPlanner final : public SamplingPlanner<Space> {
-  using Base = SamplingPlanner<Space>;
+class LazyPrmPlanner final : public detail::RoadmapPlanner<Space> {
+  using Base = detail::RoadmapPlanner<Space>;
   using typename Base::Attempt;
   using typename Base::Configuration;
   using typename Base::Query;
 
  public:
   LazyPrmPlanner(std::unique_ptr<SamplingSpace<Space>> space, const LazyPrmOptions& options)
-      : Base("lazyprm", std::move(space), options), roadmap_(this->space(), options.k) {}
+      : Base("lazyprm", std::move(space), options, options.k, options.roadmap_size) {}
 
  private:
   // A milestone joined to its nearest milestones by edges not yet certified.
@@ -37,9 +37,7 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
       if (budget.out_of_time()) return false;
       const auto [e, exists] = boost::edge(path[i], path[i + 1], graph);
       if (graph[e].certified) continue;
-      const auto& nodes = roadmap_.nodes();
-      if (!this->motion_free(nodes, path[i], path[i + 1]) ||
-          (!this->space().symmetric() && !this->motion_free(nodes, path[i + 1], path[i]))) {
+      if (!this->edge_free(roadmap_.nodes(), path[i], path[i + 1])) {
         boost::remove_edge(e, graph);
         ++removed;
         return false;
@@ -49,8 +47,15 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
     return true;
   }
 
+  auto search(std::size_t from, std::size_t to) { return roadmap_.search(from, to, SearchOptions{Search::astar}); }
+
   Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
                 bool record) override {
+    // A prebuilt roadmap is certified as it is built, and so are the query's joins to it: nothing
+    // is left to certify lazily.
+    if (this->prebuilt())
+      return this->solve_prebuilt(query, goals, budget, facts, record,
+                                  [&](std::size_t from, std::size_t to) { return search(from, to); });
     auto& space = this->space();
     const std::size_t start = add_milestone(space.start(query));
     std::vector<std::size_t> goal_milestones;
@@ -62,9 +67,8 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
     while (path.empty() && !budget.spent()) {
       searches += goal_milestones.size();
       // The cheapest path to any goal over the edges there are: certified, it is the answer.
-      const auto result = roadmap_.cheapest(start, goal_milestones, [&](std::size_t from, std::size_t to) {
-        return roadmap_.search(from, to, SearchOptions{Search::astar});
-      });
+      const auto result =
+          roadmap_.cheapest(start, goal_milestones, [&](std::size_t from, std::size_t to) { return search(from, to); });
       if (result.found) {
         if (certify(result.path, removed, budget)) path = result.path;
         continue;
@@ -93,7 +97,7 @@ class LazyPrmPlanner final : public SamplingPlanner<Space> {
     return attempt;
   }
 
-  detail::SampledRoadmap<Space> roadmap_;
+  using Base::roadmap_;
 };
 
 }  // namespace
@@ -102,6 +106,7 @@ template <class Space>
 PlannerEntry<Space> lazy_prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
   OptionTable<LazyPrmOptions> table;
   table.add("k", &LazyPrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)", at_least(0));
+  add_roadmap_size_option(table);
   add_sampling_options(table);
   return make_sampling_entry<Space, LazyPrmOptions>(
       "lazyprm", "lazy PRM: edges certified only when the shortest path wants them, kept across queries",

@@ -68,6 +68,7 @@ class PolygonSamplingSpace final : public SamplingSpace<TranslatingRobot> {
     out[0] = box_.xmin + uniform01(random) * (box_.xmax - box_.xmin);
     out[1] = box_.ymin + uniform01(random) * (box_.ymax - box_.ymin);
   }
+  std::optional<std::string> outside(std::span<const double> c) const override { return box_.outside(c); }
   void coordinates(const ExactPoint& p, std::span<double> out) const override {
     out[0] = to_double(p.x);
     out[1] = to_double(p.y);

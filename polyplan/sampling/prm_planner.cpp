@@ -1,7 +1,7 @@
 #include <polyplan/sampling/prm_planner.hpp>
 
 #include <polyplan/plan/plan_facts.hpp>
-#include <polyplan/sampling/detail/sampled_roadmap.hpp>
+#include <polyplan/sampling/detail/roadmap_planner.hpp>
 
 #include <numeric>
 
@@ -9,15 +9,15 @@ namespace polyplan {
 namespace {
 
 template <class Space>
-class PrmPlanner final : public SamplingPlanner<Space> {
-  using Base = SamplingPlanner<Space>;
+class PrmPlanner final : public detail::RoadmapPlanner<Space> {
+  using Base = detail::RoadmapPlanner<Space>;
   using typename Base::Attempt;
   using typename Base::Configuration;
   using typename Base::Query;
 
  public:
   PrmPlanner(std::unique_ptr<SamplingSpace<Space>> space, const PrmOptions& options)
-      : Base("prm", std::move(space), options), options_(options), roadmap_(this->space(), options.k) {}
+      : Base("prm", std::move(space), options, options.k, options.roadmap_size), options_(options) {}
 
  private:
   std::size_t component(std::size_t id) {
@@ -36,8 +36,7 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     components_.push_back(id);
     return roadmap_.add(configuration, at, [&](std::size_t n) {
       if (budget && budget->out_of_time()) return detail::Join::none;
-      if (!this->motion_free(roadmap_.nodes(), n, id)) return detail::Join::none;
-      if (!this->space().symmetric() && !this->motion_free(roadmap_.nodes(), id, n)) return detail::Join::none;
+      if (!this->edge_free(roadmap_.nodes(), n, id)) return detail::Join::none;
       components_[component(n)] = component(id);
       return detail::Join::certified;
     });
@@ -51,8 +50,18 @@ class PrmPlanner final : public SamplingPlanner<Space> {
     return joined;
   }
 
+  // The roadmap's cheapest path from → to, by the planner's search.
+  auto search(std::size_t from, std::size_t to) {
+    return options_.bidirectional ? roadmap_.search_both_ways(from, to) : roadmap_.search(from, to, options_.search);
+  }
+
   Attempt solve(const Query& query, const std::vector<Configuration>& goals, SamplingBudget& budget, Facts& facts,
                 bool record) override {
+    facts.set(SearchFacts::algorithm, options_.bidirectional ? std::string("bidirectional dijkstra")
+                                                             : std::string(to_string(options_.search.algorithm)));
+    if (this->prebuilt())
+      return this->solve_prebuilt(query, goals, budget, facts, record,
+                                  [&](std::size_t from, std::size_t to) { return search(from, to); });
     auto& space = this->space();
     const std::size_t start = add_milestone(space.start(query));
     std::vector<std::size_t> goal_milestones;
@@ -75,19 +84,16 @@ class PrmPlanner final : public SamplingPlanner<Space> {
       attempt.why_not = "start and goal were not joined in the roadmap within " + budget.limit_reached();
       return finish();
     }
-    const auto result = roadmap_.cheapest(start, joined, [&](std::size_t from, std::size_t to) {
-      return options_.bidirectional ? roadmap_.search_both_ways(from, to) : roadmap_.search(from, to, options_.search);
-    });
-    facts.set(SearchFacts::algorithm, options_.bidirectional ? std::string("bidirectional dijkstra")
-                                                             : std::string(to_string(options_.search.algorithm)));
+    const auto result =
+        roadmap_.cheapest(start, joined, [&](std::size_t from, std::size_t to) { return search(from, to); });
     facts.set(SearchFacts::expanded, result.expanded);
     for (std::size_t v : result.path) attempt.path.push_back(roadmap_.nodes()[v]);
     this->found(budget, this->length(attempt.path));
     return finish();
   }
 
+  using Base::roadmap_;
   PrmOptions options_;
-  detail::SampledRoadmap<Space> roadmap_;
   std::vector<std::size_t> components_;  // union-find parents
 };
 
@@ -99,6 +105,7 @@ PlannerEntry<Space> prm_planner_entry(SamplingSpaceFactory<Space> make_space) {
   table.add("k", &PrmOptions::k, "neighbours each milestone is joined to (0: e(1 + 1/d) log n)", at_least(0));
   add_search_options(table, &PrmOptions::search);
   table.add("bidirectional", &PrmOptions::bidirectional, "search the roadmap with bidirectional Dijkstra instead");
+  add_roadmap_size_option(table);
   add_sampling_options(table);
   return make_sampling_entry<Space, PrmOptions>(
       "prm", "probabilistic roadmap (k nearest), kept across queries, certified motions", std::move(table),

@@ -59,6 +59,7 @@ class RoundSamplingSpace final : public SamplingSpace<RoundRobot> {
       out[1] = box_.ymin + uniform01(random) * (box_.ymax - box_.ymin);
     } while (radius_ > 0 && std::hypot(out[0] - centre_[0], out[1] - centre_[1]) > radius_);
   }
+  std::optional<std::string> outside(std::span<const double> c) const override { return box_.outside(c); }
   void coordinates(const ExactPoint& p, std::span<double> out) const override {
     out[0] = to_double(p.x);
     out[1] = to_double(p.y);

@@ -24,6 +24,10 @@ struct SamplingFacts {
   static constexpr FactKey<std::int64_t> solutions{"solutions"};
   static constexpr FactKey<std::int64_t> rewired{"rewired"};
   static constexpr FactKey<std::string> rewire{"rewire"};
+  // A roadmap built before the queries (prm and lazyprm's roadmap-size): its free samples (the
+  // queries' ends not counted) and connected components.
+  static constexpr FactKey<std::int64_t> roadmap_samples{"roadmap.samples"};
+  static constexpr FactKey<std::int64_t> roadmap_components{"roadmap.components"};
 };
 
 }  // namespace polyplan

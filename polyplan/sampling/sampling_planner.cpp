@@ -25,6 +25,18 @@ SamplingPlanner<Space>::SamplingPlanner(std::string name, std::unique_ptr<Sampli
   if (limits_.iterations == 0) throw std::invalid_argument("iterations must be at least 1");
 }
 
+// std::seed_seq is specified bit for bit: one stream everywhere.
+template <class Space>
+void SamplingPlanner<Space>::seed_stream(std::uint64_t ordinal, std::string_view purpose) {
+  std::vector<std::uint32_t> words{static_cast<std::uint32_t>(limits_.seed),
+                                   static_cast<std::uint32_t>(limits_.seed >> 32), static_cast<std::uint32_t>(ordinal),
+                                   static_cast<std::uint32_t>(ordinal >> 32)};
+  for (const char c : name_) words.push_back(static_cast<unsigned char>(c));
+  for (const char c : purpose) words.push_back(static_cast<unsigned char>(c));
+  std::seed_seq stream(words.begin(), words.end());
+  random_.seed(stream);
+}
+
 template <class Space>
 auto SamplingPlanner<Space>::draw(std::span<double> coordinates) -> Configuration {
   ++samples_;
@@ -133,14 +145,8 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   // query's ordinal: carried over from the query before, the stream would depend on where a time
   // limit cut that query, and the same input would not give the same answer; and without the name,
   // planners given one seed draw the same first samples and fail together (rrt and rrtstar did on
-  // six_link_forest's seeds 3 and 4). std::seed_seq is specified bit for bit: one stream everywhere.
-  std::vector<std::uint32_t> words{
-      static_cast<std::uint32_t>(limits_.seed), static_cast<std::uint32_t>(limits_.seed >> 32),
-      static_cast<std::uint32_t>(queries_asked_), static_cast<std::uint32_t>(queries_asked_ >> 32)};
-  for (const char c : name_) words.push_back(static_cast<unsigned char>(c));
-  std::seed_seq stream(words.begin(), words.end());
-  random_.seed(stream);
-  ++queries_asked_;
+  // six_link_forest's seeds 3 and 4).
+  seed_stream(queries_asked_++);
   SamplingBudget budget(limits_);
   PlanReport<Configuration> report;
   samples_ = motions_checked_ = 0;
@@ -176,7 +182,7 @@ auto SamplingPlanner<Space>::plan(const Query& query, const QueryOptions& option
   facts.set(QueryFacts::stopped_by, budget.stopped_by());
   report.recording.graph = std::move(attempt.graph);
   if (attempt.path.empty()) {
-    report.fail(PlanStatus::limit, std::move(attempt.why_not));
+    report.fail(attempt.status, std::move(attempt.why_not));
     return finish();
   }
   const std::optional<std::size_t> reached = goal_index(goals, attempt.path.back());

@@ -33,6 +33,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -60,6 +61,16 @@ OptionTable<Options>& add_sampling_options(OptionTable<Options>& table) {
            "iteration limit per query: samples (prm, lazyprm) or extensions (trees)", at_least(1))
       .add("shortcut", static_cast<bool Options::*>(&SamplingLimits::shortcut),
            "shorten the path with certified shortcuts (raw_length keeps the first path's length)");
+}
+
+// The option "roadmap-size" of prm and lazyprm (Options::roadmap_size): the K-PRM built before any
+// query (sampling/detail/roadmap_planner.hpp).
+template <class Options>
+OptionTable<Options>& add_roadmap_size_option(OptionTable<Options>& table) {
+  return table.add("roadmap-size", &Options::roadmap_size,
+                   "build a roadmap of this many free samples before any query and answer every query on it, "
+                   "not growing it (0: grow it as queries need)",
+                   at_least(0));
 }
 
 // Which way a distance runs between a placed configuration and coordinates asked about: the
@@ -333,6 +344,8 @@ class SamplingPlanner : public Planner<Space> {
     std::vector<Configuration> path;
     std::string why_not;
     std::shared_ptr<const PlanGraph<Configuration>> graph;
+    // Why there is no path: a limit reached, or not_found (a prebuilt roadmap that does not join).
+    PlanStatus status = PlanStatus::limit;
   };
   // The planner's own search within the budget, from the query's start to any one of `goals` (the
   // space's goals(query), never empty; the nearest one the planner can reach). Facts particular to
@@ -397,13 +410,9 @@ class SamplingPlanner : public Planner<Space> {
     const Toward toward = tree.growth();
     const std::size_t from = tree.nodes().nearest(target_at, toward);
     const auto from_at = tree.nodes().coordinates(from);
-    const double d = tree.nodes().distance(from, target_at, toward);
-    if (step <= 0 || d <= step) {
-      std::copy(target_at.begin(), target_at.end(), out.begin());
-      return {from, target, true, d == 0};
-    }
-    if (toward == Toward::asked) space_->interpolate(from_at, target_at, step / d, out);
-    else space_->interpolate(target_at, from_at, 1 - step / d, out);
+    const double d = toward == Toward::asked ? space_->steer(from_at, target_at, step, out)
+                                             : space_->steer(target_at, from_at, step, out, SteerFrom::end);
+    if (step <= 0 || d <= step) return {from, target, true, d == 0};
     return {from, space_->configuration(out), false, tree.nodes().distance(from, out, toward) == 0};
   }
   // The motion between placed configurations a → b of `nodes`, with what their free regions
@@ -430,6 +439,20 @@ class SamplingPlanner : public Planner<Space> {
                    std::shared_ptr<const FreeRegion>& to_region) {
     return motion_free(tree.nodes(), from, to, to_region, tree.growth() == Toward::placed);
   }
+  // A roadmap's edge between placed a and b: a → b certified, and b → a too in a space that is not
+  // symmetric (the edge serves either way). Counted.
+  bool edge_free(const SampledConfigurations<Space>& nodes, std::size_t a, std::size_t b) {
+    return motion_free(nodes, a, b) && (space_->symmetric() || motion_free(nodes, b, a));
+  }
+  // The same between placed `a` and `c`, not placed (a query's end joined to a prebuilt roadmap).
+  bool edge_free(const SampledConfigurations<Space>& nodes, std::size_t a, const Configuration& c,
+                 std::shared_ptr<const FreeRegion>& c_region) {
+    return motion_free(nodes, a, c, c_region) && (space_->symmetric() || motion_free(nodes, a, c, c_region, true));
+  }
+  // Seeds random() with the stream of the seed, the planner's name, `ordinal` and `purpose` (the
+  // text mixed in after the name; none for a query's stream, so that each seed's paths stay what
+  // they were): one stream on every machine.
+  void seed_stream(std::uint64_t ordinal, std::string_view purpose = {});
   // The length of a path of configurations in the space's metric.
   double length(const std::vector<Configuration>& path) const;
   void found(const SamplingBudget& budget, double length) { improvements_.push_back({budget.seconds(), length}); }

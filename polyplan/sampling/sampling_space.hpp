@@ -16,9 +16,11 @@
 #include <polyplan/geometry/angles.hpp>
 #include <polyplan/plan/plan_report.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -54,6 +56,18 @@ inline void sampling_interpolate(SamplingMetric metric, std::span<const double> 
   for (std::size_t i = 0; i < a.size(); ++i)
     out[i] = metric == SamplingMetric::euclidean ? a[i] + t * (b[i] - a[i])
                                                  : normalize_angle(a[i] + t * signed_angle_difference(a[i], b[i]));
+}
+
+// Which end steering starts from (SamplingSpace::steer).
+enum class SteerFrom { start, end };
+
+// Why (x, y) is outside the box [xmin, xmax] × [ymin, ymax], or nullopt: the spaces' outside().
+inline std::optional<std::string> outside_box(double x, double y, double xmin, double ymin, double xmax, double ymax) {
+  if (x >= xmin && x <= xmax && y >= ymin && y <= ymax) return std::nullopt;
+  char text[200];
+  std::snprintf(text, sizeof text, "(%.10g, %.10g) is outside the sampling box [%.10g, %.10g] x [%.10g, %.10g]", x, y,
+                xmin, xmax, ymin, ymax);
+  return std::string(text);
 }
 
 // The planners' random numbers: a 64-bit Mersenne twister (defined by the standard bit for bit),
@@ -102,6 +116,23 @@ class SamplingSpace {
                            std::span<double> out) const {
     sampling_interpolate(metric(), a, b, t, out);
   }
+  // Steering: the coordinates at most `step` along the motion a → b from a, into `out` — b itself
+  // when distance(a, b) <= step or step is 0 (all the way), otherwise interpolate's point a
+  // fraction step / distance of the way, on the very motion motion_is_free certifies. From
+  // SteerFrom::end, `step` before b on that motion instead (a itself when nearer): a tree grown
+  // toward its root. Returns distance(a, b). The planners' only steering (step_toward), and
+  // Python's space.steer.
+  double steer(std::span<const double> a, std::span<const double> b, double step, std::span<double> out,
+               SteerFrom from = SteerFrom::start) const {
+    const double d = distance(a, b);
+    const auto target = from == SteerFrom::start ? b : a;
+    if (step <= 0 || d <= step) std::copy(target.begin(), target.end(), out.begin());
+    else interpolate(a, b, from == SteerFrom::start ? step / d : 1 - step / d, out);
+    return d;
+  }
+  // Why coordinates lie where sample() never draws (beyond the sampling box), in words; nullopt
+  // when they do not, and by default (the torus, where every finite angle is a joint's).
+  virtual std::optional<std::string> outside(std::span<const double> /*coordinates*/) const { return std::nullopt; }
   // The largest distance between two configurations that sample() can give: default steps are
   // fractions of it.
   virtual double extent() const = 0;

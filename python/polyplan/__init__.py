@@ -45,6 +45,8 @@ from ._polyplan import (  # noqa: F401 (the public names)
     read_world,
     replan,
     scen,
+    Space,
+    space,
     steer,
     svg,
 )
@@ -55,7 +57,7 @@ from .experiment import Experiment, Results
 __all__ = [
     "Arm", "CSpace", "Cells", "Drive", "Experiment", "ExperimentInterrupted", "FreeComponent", "Graph", "InputError", "Option", "Plan", "Planner",
     "PlannerInfo", "RoundCore", "RoundCSpace", "World", "animate", "check", "cspace", "grid", "ik", "plan", "planner", "planners", "plot", "potential",
-    "read_arm", "read_world", "replan", "Results", "scen", "search_graph", "steer", "svg",
+    "read_arm", "read_world", "replan", "Results", "scen", "search_graph", "Space", "space", "steer", "svg",
 ]
 
 

@@ -36,6 +36,7 @@ PYBIND11_MODULE(_polyplan, m) {
   polyplan::python::bind_potential(m);
   polyplan::python::bind_search(m);
   polyplan::python::bind_steer(m);
+  polyplan::python::bind_space(m);
   polyplan::python::bind_ik(m);
   polyplan::python::bind_experiment(m);
   polyplan::python::bind_scen(m);

@@ -39,6 +39,7 @@ void bind_replan(pybind11::module_& m);
 void bind_potential(pybind11::module_& m);
 void bind_search(pybind11::module_& m);
 void bind_steer(pybind11::module_& m);
+void bind_space(pybind11::module_& m);
 void bind_ik(pybind11::module_& m);
 void bind_experiment(pybind11::module_& m);
 void bind_scen(pybind11::module_& m);

@@ -273,8 +273,8 @@ TEST(SamplingPlanners, TheirOptionsAreListedAndBadValuesNamed) {
   EXPECT_EQ(names("rrt"), with_limits({"goal-bias", "step", "extend"}));
   EXPECT_EQ(names("rrtstar"), with_limits({"rewire", "k", "goal-bias", "step", "extend"}));
   EXPECT_EQ(names("rrtconnect"), with_limits({"step"}));
-  EXPECT_EQ(names("prm"), with_limits({"k", "search", "weight", "reopen", "bidirectional"}));
-  EXPECT_EQ(names("lazyprm"), with_limits({"k"}));
+  EXPECT_EQ(names("prm"), with_limits({"k", "search", "weight", "reopen", "bidirectional", "roadmap-size"}));
+  EXPECT_EQ(names("lazyprm"), with_limits({"k", "roadmap-size"}));
 
   const World world = shipped_world("maze");
   const CSpace cspace(world);

@@ -4,15 +4,19 @@
 // nearest, k fixed or k = ⌈e·(1 + 1/d)·log n⌉ (PRM*'s), searched with search/graph_search.hpp.
 // prm certifies an edge before adding it; lazyprm adds it unchecked and certifies it when a search
 // wants it (`certified`). A query's goals are milestones each; its path goes to the one the
-// roadmap reaches most cheaply. Private to the two planners' sources (it includes the BGL algorithms).
+// roadmap reaches most cheaply; with a roadmap built before the queries (roadmap-size), its start
+// and goals only visit it. Private to the two planners' sources (it includes the BGL algorithms).
 #include <polyplan/sampling/sampling_planner.hpp>
 #include <polyplan/search/bidirectional_search.hpp>
 #include <polyplan/search/graph_search.hpp>
 
 #include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/connected_components.hpp>
 
 #include <cmath>
 #include <numbers>
+#include <span>
+#include <vector>
 
 namespace polyplan::detail {
 
@@ -58,12 +62,47 @@ class SampledRoadmap {
     return id;
   }
 
+  // A configuration joined to the roadmap for one query (its start or a goal) without becoming a
+  // milestone: a vertex after the milestones, kept out of the nearest-neighbour index and removed
+  // by leave(), so that every query finds the roadmap as it was built. `join(neighbour)` as
+  // add()'s, for each of its nearest milestones. No milestone may be added while one visits.
+  template <class JoinNeighbour>
+  std::size_t visit(Configuration configuration, JoinNeighbour join) {
+    std::vector<double> at(space_->dimension());
+    space_->coordinates(configuration, at);
+    nodes_.nearest(at, neighbour_count(), near_);
+    const std::size_t id = boost::add_vertex(graph_);
+    for (std::size_t n : near_)
+      if (const Join how = join(n); how != Join::none)
+        boost::add_edge(n, id, SampledEdge{edge_length(n, at), how == Join::certified}, graph_);
+    visitors_.push_back({std::move(configuration), std::move(at)});
+    return id;
+  }
+  // Removes the visitors and their edges (the last vertices: the milestones keep their ids).
+  void leave() {
+    for (; !visitors_.empty(); visitors_.pop_back()) {
+      const Vertex last = boost::num_vertices(graph_) - 1;
+      boost::clear_vertex(last, graph_);
+      boost::remove_vertex(last, graph_);
+    }
+  }
+  // Vertex v's configuration: a milestone's or a visitor's.
+  const Configuration& configuration(std::size_t v) const {
+    return v < nodes_.size() ? nodes_[v] : visitors_[v - nodes_.size()].configuration;
+  }
+  // Each vertex's connected component, numbered 0, 1, ... in order of their first vertex, into
+  // `out`; returns how many there are.
+  std::size_t components(std::vector<std::size_t>& out) const {
+    out.assign(boost::num_vertices(graph_), 0);
+    return boost::connected_components(graph_, out.data());
+  }
+
   // The shortest path start → goal over the edges there are (certified or not), by `options`
   // with the distance to the goal as heuristic.
   SearchResult<Vertex> search(std::size_t start, std::size_t goal, const SearchOptions& options) {
-    const auto to_goal = nodes_.coordinates(goal);
+    const auto to_goal = coordinates(goal);
     return shortest_path(
-        graph_, start, goal, options, [&](Vertex v) { return space_->distance(nodes_.coordinates(v), to_goal); },
+        graph_, start, goal, options, [&](Vertex v) { return space_->distance(coordinates(v), to_goal); },
         [&](const typename Graph::edge_descriptor& e) { return graph_[e].length; }, workspace_);
   }
 
@@ -96,6 +135,7 @@ class SampledRoadmap {
     auto picture = std::make_shared<PlanGraph<Configuration>>();
     picture->kind = "roadmap";
     picture->vertices = nodes_.all();
+    for (const Visitor& visitor : visitors_) picture->vertices.push_back(visitor.configuration);
     for (auto [e, end] = boost::edges(graph_); e != end; ++e)
       picture->edges.emplace_back(boost::source(*e, graph_), boost::target(*e, graph_));
     return picture;
@@ -108,6 +148,9 @@ class SampledRoadmap {
   double edge_length(std::size_t n, std::span<const double> at) const {
     const double there = space_->distance(nodes_.coordinates(n), at);
     return space_->symmetric() ? there : std::max(there, space_->distance(at, nodes_.coordinates(n)));
+  }
+  std::span<const double> coordinates(std::size_t v) const {
+    return v < nodes_.size() ? nodes_.coordinates(v) : std::span<const double>(visitors_[v - nodes_.size()].at);
   }
   std::size_t neighbour_count() const {
     if (k_ > 0) return k_;
@@ -122,6 +165,11 @@ class SampledRoadmap {
   SearchWorkspace<Vertex> workspace_;
   std::vector<std::size_t> near_;
   std::vector<double> scratch_;
+  struct Visitor {
+    Configuration configuration;
+    std::vector<double> at;
+  };
+  std::vector<Visitor> visitors_;
 };
 
 }  // namespace polyplan::detail

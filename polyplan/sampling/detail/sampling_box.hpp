@@ -2,10 +2,14 @@
 // The box a world's sampling space draws from (sampling/polygon_sampling_space.cpp,
 // round_sampling_space.cpp), in doubles: a picture of where to sample, never a decision.
 #include <polyplan/geometry/rational.hpp>
+#include <polyplan/sampling/sampling_space.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <span>
+#include <string>
 
 namespace polyplan::detail {
 
@@ -17,6 +21,9 @@ struct SamplingBox {
   }
   void add(const ExactPoint& p) { add(to_double(p.x), to_double(p.y)); }
   bool empty() const { return !(xmin <= xmax && ymin <= ymax); }
+  std::optional<std::string> outside(std::span<const double> c) const {
+    return outside_box(c[0], c[1], xmin, ymin, xmax, ymax);
+  }
 
   // A world without bounds: what the box holds (the origin when nothing) grown by a tenth of its
   // diagonal, and one, on every side — room to go round everything.
