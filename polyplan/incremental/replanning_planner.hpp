@@ -33,6 +33,8 @@ struct ReplanningOptions {
   double sensor = 0;             // the sensing radius in cells (at least √2), or 0: the whole raster
   std::size_t max_moves = 0;     // 0: 4 × the raster's cells; then status limit
   double time = 300;             // seconds per query before the drive stops with status limit
+  GridConventions grid{};        // connectivity, corner cutting, diagonal cost (sensor >= 1 with 4 or cutting)
+  bool known_map = false;        // the robot starts knowing the raster as it is at the start
 };
 
 // Space: TranslatingRobot (its problem a CSpace) or RoundRobot (a RoundWorld).

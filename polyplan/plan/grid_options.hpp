@@ -1,0 +1,38 @@
+#pragma once
+// The grid conventions (search/grid_conventions.hpp) as options, declared once for every planner
+// and command that builds a grid: `connectivity` 8|4, `corner-cutting` (true or false) and
+// `diagonal-cost` (sqrt2 or a number in [1, 1000]) — Python's connectivity=, corner_cutting=,
+// diagonal_cost=.
+#include <polyplan/plan/planner_options.hpp>
+#include <polyplan/search/grid_conventions.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace polyplan {
+
+// `conventions(options)` returns a reference to the options' GridConventions, const or not (a
+// generic lambda: [](auto& o) -> auto& { return o.grid; }).
+template <class Options, class Field>
+OptionTable<Options>& add_grid_conventions(OptionTable<Options>& table, Field conventions) {
+  table.add_choice(
+      "connectivity", "neighbours of a cell: 8 (with diagonals) or 4",
+      [conventions](auto& o) -> auto& { return conventions(o).connectivity; },
+      Choices<Connectivity>{{"8", Connectivity::full}, {"4", Connectivity::axis_aligned}});
+  table.add_field(
+      "corner-cutting", [conventions](auto& o) -> auto& { return conventions(o).corner_cutting; },
+      "a diagonal move may pass the corner of a blocked cell (false: both cells beside it must be free)");
+  table.add(
+      "diagonal-cost", "the cost of a diagonal move (a straight one costs 1)", "sqrt2 or a number in [1, 1000]",
+      [conventions](const Options& o) { return conventions(o).diagonal_cost.text(); },
+      [conventions](Options& o, std::string_view text) -> std::optional<std::string> {
+        std::string why;
+        const auto cost = parse_diagonal_cost(text, why);
+        if (!cost) return why;
+        conventions(o).diagonal_cost = *cost;
+        return std::nullopt;
+      });
+  return table;
+}
+
+}  // namespace polyplan
