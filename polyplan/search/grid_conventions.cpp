@@ -82,6 +82,19 @@ double GridConventions::in_cells(const OctileLength& cost) const {
   return cost.to_double() / static_cast<double>(straight_step().straight());
 }
 
+void set_diagonals(GridGraph& graph, const GridConventions& conventions) {
+  if (conventions.connectivity == Connectivity::axis_aligned) return;
+  if (conventions.diagonal_cost.is_sqrt2() && !conventions.corner_cutting) return;
+  graph.set_diagonals(conventions.diagonal_cost.is_sqrt2() ? std::nullopt
+                                                           : std::optional<double>(conventions.diagonal_cost.value()),
+                      conventions.corner_cutting);
+}
+
+GridMetric square_grid_metric(const GridGraph& graph) {
+  if (graph.connectivity() == Connectivity::axis_aligned) return GridMetric::sum_of_axes;
+  return graph.diagonal_cost().value_or(0) >= 2 ? GridMetric::sum_of_axes : GridMetric::octile;
+}
+
 std::string GridConventions::text(const OctileLength& cost) const {
   const std::int64_t unit = straight_step().straight();
   if (cost.is_infinite() || unit == 1) return cost.to_string();

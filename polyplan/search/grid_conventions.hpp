@@ -45,4 +45,12 @@ struct GridConventions {
   friend bool operator==(const GridConventions&, const GridConventions&) = default;
 };
 
+// Gives a 2D grid graph built with the conventions' connectivity their diagonals: cost and corner
+// cutting (GridGraph::set_diagonals; nothing changes for the defaults).
+void set_diagonals(GridGraph& graph, const GridConventions& conventions);
+
+// The tightest admissible heuristic's metric for a 2D grid graph with square cells: octile (of its
+// diagonal cost), or the sum of the axes with 4 neighbours or diagonals that cost 2 or more.
+GridMetric square_grid_metric(const GridGraph& graph);
+
 }  // namespace polyplan
