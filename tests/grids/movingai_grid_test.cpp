@@ -135,14 +135,12 @@ TEST(MovingAiGrid, WeightedAStarStaysWithinTwiceTheOptimum) {
   }
 }
 
+// row 0: . @ .     (1, 0) blocked
+// row 1: . . .
+GridMap tiny_map() { return {"tiny.map", 3, 2, {false, true, false, false, false, false}}; }
+
 TEST(MovingAiGrid, CellsAreRowMajorAndDiagonalsNeverCutCorners) {
-  GridMap map;
-  map.source = "tiny.map";
-  map.width = 3;
-  map.height = 2;
-  // row 0: . @ .     (1, 0) blocked
-  // row 1: . . .
-  map.blocked = {false, true, false, false, false, false};
+  const GridMap map = tiny_map();
   const GridGraph g = movingai_grid(map);
   EXPECT_EQ(g.cell({2, 1}), 5u);
   EXPECT_FALSE(g.is_free(1));
@@ -230,11 +228,7 @@ TEST(MovingAiGrid, QueriesThatDoNotFitTheMapAreBadInput) {
 // from (0, 0) to (2, 0) the benchmark's grid goes round (4); cutting the blocked cell's corners,
 // two diagonals (2 √2, or 2 at diagonal cost 1); 4-connected, round again (4).
 TEST(MovingAiGrid, GridConventionsCutCornersAndPriceDiagonals) {
-  GridMap map;
-  map.source = "tiny.map";
-  map.width = 3;
-  map.height = 2;
-  map.blocked = {false, true, false, false, false, false};
+  GridMap map = tiny_map();
   ScenarioQuery q;
   q.map_width = 3;
   q.map_height = 2;
