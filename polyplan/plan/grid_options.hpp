@@ -29,7 +29,8 @@ OptionTable<Options>& add_grid_options(OptionTable<Options>& table, Connectivity
         if (!cost) return why;
         diagonal_cost(o) = *cost;
         return std::nullopt;
-      });
+      },
+      in_range(1, 1000));  // the numbers it takes (listings and checks read the range; sqrt2 is one of them)
   return table;
 }
 

@@ -301,7 +301,8 @@ TEST(RasterPlanner, TextbookWeightedAStarExpandsFewerCellsThanAStarOnTheOffice) 
 TEST(RasterPlanner, GridConventionsSetTheMovesAndTheirCosts) {
   const World world = world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": []})");
   const CSpace cspace(world);
-  const auto cost = [&](const OptionValues& values) {  // through the registry's entry, as the CLI and Python
+  const auto cost = [&](OptionValues values) {  // through the registry's entry, as the CLI and Python
+    values.emplace_back("resolution", "10");
     const auto planner = raster_planner_entry<TranslatingRobot>().make(cspace, values);
     return planner->plan({pt("0.5", "0.5"), pt("9.5", "9.5"), "q"}).facts.at(RasterFacts::grid_cost);
   };

@@ -213,7 +213,7 @@ TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
             "rrtstar, rrtconnect");
   EXPECT_EQ(planners<RotatingRobot>().names(), "rotation");
   const auto* raster = registry.find("raster");
-  ASSERT_EQ(raster->options.size(), 5u);
+  ASSERT_EQ(raster->options.size(), 7u);
   EXPECT_EQ(raster->options[0].name, "resolution");
   EXPECT_EQ(raster->options[0].default_value, "100");
 }
