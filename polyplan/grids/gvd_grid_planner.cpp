@@ -70,6 +70,7 @@ struct BasicGvdGridPlanner<Space>::Impl {
     facts.set(RoadmapFacts::edges, gvd_moves);
     facts.set(RoadmapFacts::seconds, build_seconds);
     facts.set(RasterFacts::cells_per_axis, raster.cells_per_axis);
+    record_grid_conventions(facts, options.grid);
     facts.set(GvdFacts::cells, field.gvd_cells);
     facts.set(GvdFacts::max_distance, field.max_distance);
     facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));

@@ -39,6 +39,12 @@ GridGraph raster_graph(const Raster& r, const GridConventions& conventions) {
   return graph;
 }
 
+void record_grid_conventions(Facts& facts, const GridConventions& conventions) {
+  facts.set(RasterFacts::connectivity, conventions.connectivity == Connectivity::full ? 8 : 4);
+  facts.set(RasterFacts::corner_cutting, conventions.corner_cutting);
+  facts.set(RasterFacts::diagonal_cost, conventions.diagonal_cost.text());
+}
+
 std::vector<std::uint8_t> raster_free_cells(const Raster& r) {
   std::vector<std::uint8_t> free(r.blocked.size());
   for (std::size_t i = 0; i < free.size(); ++i) free[i] = r.blocked[i] ? 0 : 1;

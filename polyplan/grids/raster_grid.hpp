@@ -34,6 +34,9 @@ std::vector<GridAxis> raster_axes(const Raster& raster);
 // diagonal cost given as a number on cells that are not square.
 GridGraph raster_graph(const Raster& raster, const GridConventions& conventions);
 
+// The conventions as facts (RasterFacts::connectivity, corner_cutting, diagonal_cost).
+void record_grid_conventions(Facts& facts, const GridConventions& conventions);
+
 // 1 for each free cell of the raster, 0 for each blocked one: the grid graph's bitmap.
 std::vector<std::uint8_t> raster_free_cells(const Raster& raster);
 

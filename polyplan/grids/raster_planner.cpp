@@ -39,6 +39,7 @@ struct BasicRasterPlanner<Space>::Impl {
     facts.set(RoadmapFacts::seconds, build_seconds);
     facts.set(RasterFacts::cells_per_axis, raster.cells_per_axis);
     facts.set(RasterFacts::blocked_cells, raster.blocked_count());
+    record_grid_conventions(facts, options.conventions());
     facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));
   }
 };

@@ -51,7 +51,8 @@ class BasicRasterPlanner final : public Planner<Space> {
   // Facts: roadmap.kind "raster", roadmap.vertices (free cells), roadmap.edges (moves between
   // them), roadmap.seconds (rasterising and the graph), raster.cells_per_axis,
   // raster.blocked_cells, raster.start_cell and raster.goal_cell ("(x, y)", the snapped cells),
-  // raster.grid_cost (the grid path's length), search.*, query_seconds. A start or goal that is
+  // raster.grid_cost (the grid path's length), raster.connectivity, raster.corner_cutting,
+  // raster.diagonal_cost, search.*, query_seconds. A start or goal that is
   // not free (invalid_query), unconnected cells, and a polyline that fails the exact check
   // (not_found) are answers (found = false) with the reason.
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;

@@ -87,7 +87,9 @@ class Replanner {
 };
 
 // Of two cells, whether the first is strictly nearer the goal in a straight line (squared
-// distances between centres, exact): the drive's tie break, gonum's D* Lite tests' rule.
+// distances between centres, exact): the drive's tie break, a geometric rule any implementation
+// can follow. (gonum's DStarLite.Step breaks ties by the neighbours' rhs, then by its iteration
+// order; on its nine test cases this rule drives the drives its tests expect.)
 struct NearerGoal {
   const ChangingGrid* grid;
   int goal_x, goal_y;

@@ -242,8 +242,10 @@ struct BasicReplanningPlanner<Space>::Impl {
     facts.set(RoadmapFacts::kind, replanning_planner_name(algorithm));
     facts.set(RasterFacts::cells_per_axis, first.cells_per_axis);
     facts.set(RasterFacts::blocked_cells, first.blocked_count());
+    record_grid_conventions(facts, options.grid);
     facts.set(ReplanFacts::algorithm, std::string(to_string(algorithm)));
     facts.set(ReplanFacts::sensor_cells, options.sensor);  // 0: the whole raster
+    facts.set(ReplanFacts::known_map, options.known_map);
   }
 };
 

@@ -50,7 +50,8 @@ class BasicReplanningPlanner final : public Planner<Space> {
   ~BasicReplanningPlanner() override;
 
   // Facts: roadmap.kind (the planner's name), raster.cells_per_axis, raster.blocked_cells (at the
-  // start), raster.start_cell, raster.goal_cell, replan.algorithm, replan.sensor_cells (0: all),
+  // start), raster.start_cell, raster.goal_cell, raster.connectivity, raster.corner_cutting,
+  // raster.diagonal_cost, replan.algorithm, replan.sensor_cells (0: all), replan.known_map,
   // replan.moves, replan.replans, replan.changes_made (those the drive lived to see),
   // replan.grid_cost (the moves' cost in cells), search.expanded, search.generated,
   // search.heap_operations, query_seconds. The picture shows the raster as it was at the drive's

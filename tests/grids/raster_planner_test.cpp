@@ -312,6 +312,13 @@ TEST(RasterPlanner, GridConventionsSetTheMovesAndTheirCosts) {
   EXPECT_DOUBLE_EQ(cost({{"diagonal-cost", "3"}}), 18.0);
   EXPECT_DOUBLE_EQ(cost({{"connectivity", "4"}}), 18.0);
   EXPECT_NEAR(cost({{"diagonal-cost", "sqrt2"}, {"corner-cutting", "true"}}), 9 * std::sqrt(2.0), 1e-12);
+  // The report says which grid it searched.
+  const auto planner = raster_planner_entry<TranslatingRobot>().make(
+      cspace, {{"connectivity", "4"}, {"corner-cutting", "true"}, {"diagonal-cost", "1.5"}});
+  const Report report = planner->plan({pt("0.5", "0.5"), pt("9.5", "9.5"), "q"});
+  EXPECT_EQ(report.facts.at(RasterFacts::connectivity), 4);
+  EXPECT_TRUE(report.facts.at(RasterFacts::corner_cutting));
+  EXPECT_EQ(report.facts.at(RasterFacts::diagonal_cost), "1.5");
   // A number needs square cells: 10 x 5 bounds cut 10 x 10 give cells 1 x 0.5.
   const World flat = world_from(R"({"bounds": [0, 0, 10, 5], "obstacles": []})");
   const CSpace flat_cspace(flat);
