@@ -182,7 +182,7 @@ int run_replan(const ReplanCommandOptions& o) {
   if (o.json != "-" && o.trace != "-" && o.rhs_trace != "-") {
     std::printf("%s: %s after %zu moves, cost %s (%.6g), %zu replans, %zu expanded, %.3g ms replanning\n",
                 std::string(to_string(r.algorithm)).c_str(), std::string(to_string(r.status)).c_str(), r.moves,
-                r.traversed_cost.to_string().c_str(), r.traversed_cost.to_double(), r.replans, r.expanded,
+                r.grid.text(r.traversed_cost).c_str(), r.grid.in_cells(r.traversed_cost), r.replans, r.expanded,
                 r.seconds * 1e3);
   }
   return ok;

@@ -15,6 +15,10 @@ struct RasterFacts {
   static constexpr FactKey<FactCell> start_cell{"raster.start_cell"};
   static constexpr FactKey<FactCell> goal_cell{"raster.goal_cell"};
   static constexpr FactKey<double> grid_cost{"raster.grid_cost"};
+  // The grid conventions searched (search/grid_conventions.hpp): 8 or 4, and "sqrt2" or the number.
+  static constexpr FactKey<std::int64_t> connectivity{"raster.connectivity"};
+  static constexpr FactKey<bool> corner_cutting{"raster.corner_cutting"};
+  static constexpr FactKey<std::string> diagonal_cost{"raster.diagonal_cost"};
 };
 
 // The grid GVD's distance field and ridge.

@@ -1,9 +1,11 @@
 #include <polyplan/grids/gvd_grid_planner.hpp>
 
 #include <polyplan/geometry/clearance.hpp>
+#include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/round_rasterize.hpp>
 #include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_grid.hpp>
+#include <polyplan/plan/grid_options.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
@@ -14,6 +16,19 @@
 #include <utility>
 
 namespace polyplan {
+
+namespace {
+
+// The conventions of the search along the GVD, which 4 neighbours could split.
+GridConventions along_gvd(const GridConventions& grid) {
+  if (grid.connectivity == Connectivity::axis_aligned)
+    throw InputError(
+        "gvd-grid: connectivity 4: the GVD is joined by 8-connected moves (corner-cutting and "
+        "diagonal-cost apply)");
+  return grid;
+}
+
+}  // namespace
 
 template <class Space>
 struct BasicGvdGridPlanner<Space>::Impl {
@@ -31,7 +46,7 @@ struct BasicGvdGridPlanner<Space>::Impl {
       : world(&w), options(o), raster(rasterize(w, o.resolution)),
         field(polyplan::brushfire(raster.cells_per_axis, raster.cells_per_axis, raster.blocked, raster.walls)),
         free_graph(raster_axes(raster), Connectivity::full, StepCost::euclidean, raster_free_cells(raster)),
-        gvd_graph(raster_axes(raster), Connectivity::full, StepCost::euclidean, raster_free_cells(raster)) {
+        gvd_graph(raster_graph(raster, along_gvd(o.grid))) {
     // The bitmap keeps the corner rule of the free cells (a diagonal move between GVD cells may
     // pass free cells off the GVD, never a blocked one); the test keeps the moves on the GVD.
     gvd_graph.set_move_test([gvd = &field.gvd](GridCell from, GridCell to) { return (*gvd)[from] && (*gvd)[to]; });
@@ -55,6 +70,7 @@ struct BasicGvdGridPlanner<Space>::Impl {
     facts.set(RoadmapFacts::edges, gvd_moves);
     facts.set(RoadmapFacts::seconds, build_seconds);
     facts.set(RasterFacts::cells_per_axis, raster.cells_per_axis);
+    record_grid_conventions(facts, options.grid);
     facts.set(GvdFacts::cells, field.gvd_cells);
     facts.set(GvdFacts::max_distance, field.max_distance);
     facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));
@@ -132,7 +148,7 @@ PlanReport<ExactPoint> BasicGvdGridPlanner<Space>::plan(const Query& query, cons
 
     const auto search_between = [&](const GridGraph& g, const SearchOptions& searching) {
       return shortest_path(g, up.back(), down.back(), searching,
-                           GridDistanceTo(g, down.back(), raster_metric(r.raster, g.connectivity())), GridMoveCost{&g});
+                           GridDistanceTo(g, down.back(), raster_metric(r.raster, g)), GridMoveCost{&g});
     };
     SearchOptions searching = r.options.search;
     searching.record_expanded = options.record;
@@ -178,6 +194,8 @@ PlannerEntry<Space> gvd_grid_planner_entry() {
   table.add("resolution", &GvdGridOptions::resolution, "cells per side of the bounds (n x n cells)",
             in_range(1, static_cast<double>(max_cells_per_axis)));
   add_search_options(table, &GvdGridOptions::search);
+  add_grid_conventions(
+      table, [](auto& o) -> auto& { return o.grid; });
   return make_planner_entry<Space, GvdGridOptions>(
       "gvd-grid", "brushfire GVD on the n x n occupancy grid: climb the distance field, follow the GVD, descend",
       std::move(table), [](const typename Space::Problem& world, const GvdGridOptions& o) {

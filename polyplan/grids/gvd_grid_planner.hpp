@@ -30,6 +30,7 @@
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/plan/planner_entry.hpp>
 #include <polyplan/search/brushfire.hpp>
+#include <polyplan/search/grid_conventions.hpp>
 #include <polyplan/search/grid_graph.hpp>
 #include <polyplan/search/search_result.hpp>
 
@@ -42,6 +43,9 @@ namespace polyplan {
 struct GvdGridOptions {
   std::size_t resolution = 100;  // cells per side of the bounds (n)
   SearchOptions search{};        // along the GVD
+  // The moves of the search along the GVD: corner cutting and diagonal cost (connectivity 4 is
+  // refused, InputError: the GVD is joined by 8-connected moves, and the climbs stay so).
+  GridConventions grid{};
 };
 
 // Space: TranslatingRobot (its problem a CSpace) or RoundRobot (a RoundWorld, rasterised by

@@ -16,11 +16,13 @@ std::string cell_text(int x, int y) { return "(" + std::to_string(x) + ", " + st
 
 }  // namespace
 
-GridGraph movingai_grid(const GridMap& map) {
+GridGraph movingai_grid(const GridMap& map, const GridConventions& conventions) {
   std::vector<std::uint8_t> free(map.blocked.size());
   for (std::size_t i = 0; i < free.size(); ++i) free[i] = !map.blocked[i];
-  return GridGraph({{map.width, AxisKind::bounded, 1.0}, {map.height, AxisKind::bounded, 1.0}}, Connectivity::full,
-                   StepCost::euclidean, std::move(free));
+  GridGraph graph({{map.width, AxisKind::bounded, 1.0}, {map.height, AxisKind::bounded, 1.0}}, conventions.connectivity,
+                  StepCost::euclidean, std::move(free));
+  set_diagonals(graph, conventions);
+  return graph;
 }
 
 void check_scenarios_fit(const GridMap& map, const std::vector<ScenarioQuery>& queries,
@@ -57,7 +59,8 @@ bool matches(const OctileExpectation& expected, bool found, double length) {
   return !found || std::abs(length - expected.length) <= expected.tolerance + 1e-12 * std::max(1.0, expected.length);
 }
 
-MovingAiGridSearch::MovingAiGridSearch(const GridMap& map) : graph_(movingai_grid(map)) {}
+MovingAiGridSearch::MovingAiGridSearch(const GridMap& map, const GridConventions& conventions)
+    : graph_(movingai_grid(map, conventions)) {}
 
 SearchResult<GridCell> MovingAiGridSearch::search(const ScenarioQuery& q, const SearchOptions& options) {
   const auto free_cell = [&](const char* name, int x, int y) {
@@ -68,7 +71,7 @@ SearchResult<GridCell> MovingAiGridSearch::search(const ScenarioQuery& q, const 
     return graph_.cell(at);
   };
   const GridCell start = free_cell("start", q.start_x, q.start_y), goal = free_cell("goal", q.goal_x, q.goal_y);
-  return shortest_path(graph_, start, goal, options, GridDistanceTo(graph_, goal, GridMetric::octile),
+  return shortest_path(graph_, start, goal, options, GridDistanceTo(graph_, goal, square_grid_metric(graph_)),
                        GridMoveCost{&graph_}, workspace_);
 }
 

@@ -9,6 +9,7 @@
 // Cell (x, y) is GridCell y * width + x (axis 0 the column, axis 1 the row), as GridMap stores it.
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/movingai_scenario.hpp>
+#include <polyplan/search/grid_conventions.hpp>
 #include <polyplan/search/grid_graph.hpp>
 #include <polyplan/search/search_result.hpp>
 #include <polyplan/search/search_workspace.hpp>
@@ -18,7 +19,9 @@
 
 namespace polyplan {
 
-GridGraph movingai_grid(const GridMap& map);
+// With other conventions (search/grid_conventions.hpp) the grid is no longer the benchmark's: its
+// lengths are then not the scenario file's.
+GridGraph movingai_grid(const GridMap& map, const GridConventions& conventions = {});
 
 // Throws InputError "SCENARIO_FILE: line N: ..." for the first query made for a map of another
 // size, or whose start or goal is outside the map or on a blocked cell. Call it on every query
@@ -52,7 +55,7 @@ bool matches(const OctileExpectation& expected, bool found, double length);
 // Not thread-safe (one per thread).
 class MovingAiGridSearch {
  public:
-  explicit MovingAiGridSearch(const GridMap& map);
+  explicit MovingAiGridSearch(const GridMap& map, const GridConventions& conventions = {});
 
   // Throws std::invalid_argument for a query whose start or goal is not a free cell of the map
   // (check_scenarios_fit reports those as bad input first), and for options shortest_path rejects.

@@ -1,5 +1,6 @@
 #include <polyplan/grids/raster_grid.hpp>
 
+#include <polyplan/geometry/input_error.hpp>
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/geometry/round_query.hpp>
@@ -29,6 +30,21 @@ std::vector<GridAxis> raster_axes(const Raster& r) {
   return {{n, AxisKind::bounded, to_double(r.cell_width())}, {n, AxisKind::bounded, to_double(r.cell_height())}};
 }
 
+GridGraph raster_graph(const Raster& r, const GridConventions& conventions) {
+  if (!conventions.diagonal_cost.is_sqrt2() && r.cell_width() != r.cell_height())
+    throw InputError("diagonal-cost " + conventions.diagonal_cost.text() +
+                     ": a number needs square cells, and these are not (the bounds are not square): use sqrt2");
+  GridGraph graph(raster_axes(r), conventions.connectivity, StepCost::euclidean, raster_free_cells(r));
+  set_diagonals(graph, conventions);
+  return graph;
+}
+
+void record_grid_conventions(Facts& facts, const GridConventions& conventions) {
+  facts.set(RasterFacts::connectivity, conventions.connectivity == Connectivity::full ? 8 : 4);
+  facts.set(RasterFacts::corner_cutting, conventions.corner_cutting);
+  facts.set(RasterFacts::diagonal_cost, conventions.diagonal_cost.text());
+}
+
 std::vector<std::uint8_t> raster_free_cells(const Raster& r) {
   std::vector<std::uint8_t> free(r.blocked.size());
   for (std::size_t i = 0; i < free.size(); ++i) free[i] = r.blocked[i] ? 0 : 1;
@@ -37,10 +53,11 @@ std::vector<std::uint8_t> raster_free_cells(const Raster& r) {
 
 // Octile is exact on an empty 8-connected grid of square cells but overestimates when cells are
 // not square (a diagonal then costs less than max + 0.414 min), where the Euclidean distance is
-// the safe choice; 4-connected paths cost the sum of the axes.
-GridMetric raster_metric(const Raster& r, Connectivity connectivity) {
-  if (connectivity == Connectivity::axis_aligned) return GridMetric::sum_of_axes;
-  return r.cell_width() == r.cell_height() ? GridMetric::octile : GridMetric::euclidean;
+// the safe choice (such cells keep the Euclidean diagonal); 4-connected paths, and paths whose
+// diagonals cost 2 or more, cost the sum of the axes.
+GridMetric raster_metric(const Raster& r, const GridGraph& graph) {
+  if (r.cell_width() != r.cell_height() && graph.connectivity() == Connectivity::full) return GridMetric::euclidean;
+  return square_grid_metric(graph);
 }
 
 std::size_t move_count(const GridGraph& g) {

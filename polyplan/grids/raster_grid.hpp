@@ -11,6 +11,7 @@
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/plan_report.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/search/grid_conventions.hpp>
 #include <polyplan/search/grid_graph.hpp>
 #include <polyplan/search/search_result.hpp>
 
@@ -29,11 +30,19 @@ namespace polyplan {
 // lengths (a non-square cell's diagonal included).
 std::vector<GridAxis> raster_axes(const Raster& raster);
 
+// The grid graph of the raster's free cells with the conventions' moves. Throws InputError for a
+// diagonal cost given as a number on cells that are not square.
+GridGraph raster_graph(const Raster& raster, const GridConventions& conventions);
+
+// The conventions as facts (RasterFacts::connectivity, corner_cutting, diagonal_cost).
+void record_grid_conventions(Facts& facts, const GridConventions& conventions);
+
 // 1 for each free cell of the raster, 0 for each blocked one: the grid graph's bitmap.
 std::vector<std::uint8_t> raster_free_cells(const Raster& raster);
 
-// The tightest admissible heuristic for moves of the given connectivity over the raster's cells.
-GridMetric raster_metric(const Raster& raster, Connectivity connectivity);
+// The tightest admissible heuristic for the moves of `graph` (its connectivity and diagonals) over
+// the raster's cells.
+GridMetric raster_metric(const Raster& raster, const GridGraph& graph);
 
 // The moves of the graph between free cells that it allows, each counted once (every move has
 // its reverse).

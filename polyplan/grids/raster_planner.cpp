@@ -3,6 +3,7 @@
 #include <polyplan/geometry/round_rasterize.hpp>
 #include <polyplan/grids/grid_facts.hpp>
 #include <polyplan/grids/raster_grid.hpp>
+#include <polyplan/plan/grid_options.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 #include <polyplan/search/graph_search.hpp>
@@ -23,8 +24,7 @@ struct BasicRasterPlanner<Space>::Impl {
   std::shared_ptr<const CellGrid> picture;  // made for the first query that records
 
   Impl(const typename Space::Problem& w, const RasterOptions& o)
-      : world(&w), options(o), raster(rasterize(w, o.resolution)),
-        graph(raster_axes(raster), o.connectivity, StepCost::euclidean, raster_free_cells(raster)),
+      : world(&w), options(o), raster(rasterize(w, o.resolution)), graph(raster_graph(raster, o.conventions())),
         free_cells(raster.blocked.size() - raster.blocked_count()), moves(move_count(graph)) {}
 
   std::shared_ptr<const CellGrid> cells() {
@@ -39,6 +39,7 @@ struct BasicRasterPlanner<Space>::Impl {
     facts.set(RoadmapFacts::seconds, build_seconds);
     facts.set(RasterFacts::cells_per_axis, raster.cells_per_axis);
     facts.set(RasterFacts::blocked_cells, raster.blocked_count());
+    record_grid_conventions(facts, options.conventions());
     facts.set(SearchFacts::algorithm, to_string(options.search.algorithm));
   }
 };
@@ -80,8 +81,7 @@ PlanReport<ExactPoint> BasicRasterPlanner<Space>::plan(const Query& query, const
     SearchOptions searching = r.options.search;
     searching.record_expanded = options.record;
     searching.record_trace = options.trace;
-    search = shortest_path(g, from, to, searching, GridDistanceTo(g, to, raster_metric(r.raster, g.connectivity())),
-                           GridMoveCost{&g});
+    search = shortest_path(g, from, to, searching, GridDistanceTo(g, to, raster_metric(r.raster, g)), GridMoveCost{&g});
     if (!search.found) {
       const std::string n = std::to_string(r.raster.cells_per_axis);
       report.fail(PlanStatus::not_found, "no path on the " + n + " x " + n + " grid from cell " +
@@ -100,10 +100,9 @@ PlannerEntry<Space> raster_planner_entry() {
   OptionTable<RasterOptions> table;
   table.add("resolution", &RasterOptions::resolution, "cells per side of the bounds (n x n cells)",
             in_range(1, static_cast<double>(max_cells_per_axis)));
-  table.add(
-      "connectivity", &RasterOptions::connectivity,
-      "8: moves to all 8 neighbours without cutting corners; 4: axis moves only",
-      std::vector<std::pair<std::string, Connectivity>>{{"8", Connectivity::full}, {"4", Connectivity::axis_aligned}});
+  add_grid_options(
+      table, [](auto& o) -> auto& { return o.connectivity; }, [](auto& o) -> auto& { return o.corner_cutting; },
+      [](auto& o) -> auto& { return o.diagonal_cost; });
   add_search_options(table, &RasterOptions::search);
   return make_planner_entry<Space, RasterOptions>(
       "raster",

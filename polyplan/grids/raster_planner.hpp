@@ -18,6 +18,7 @@
 #include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/plan/planner_entry.hpp>
+#include <polyplan/search/grid_conventions.hpp>
 #include <polyplan/search/grid_graph.hpp>
 #include <polyplan/search/search_result.hpp>
 
@@ -32,6 +33,9 @@ struct RasterOptions {
   std::size_t resolution = 100;                    // cells per side of the bounds (n)
   Connectivity connectivity = Connectivity::full;  // full: 8-connected without corner cutting; axis_aligned: 4
   SearchOptions search{};
+  bool corner_cutting = false;   // a diagonal move may pass a blocked cell's corner
+  DiagonalCost diagonal_cost{};  // √2; a number only on square cells (InputError otherwise)
+  GridConventions conventions() const { return {connectivity, corner_cutting, diagonal_cost}; }
 };
 
 // Space: TranslatingRobot (its problem a CSpace) or RoundRobot (a RoundWorld).
@@ -47,7 +51,8 @@ class BasicRasterPlanner final : public Planner<Space> {
   // Facts: roadmap.kind "raster", roadmap.vertices (free cells), roadmap.edges (moves between
   // them), roadmap.seconds (rasterising and the graph), raster.cells_per_axis,
   // raster.blocked_cells, raster.start_cell and raster.goal_cell ("(x, y)", the snapped cells),
-  // raster.grid_cost (the grid path's length), search.*, query_seconds. A start or goal that is
+  // raster.grid_cost (the grid path's length), raster.connectivity, raster.corner_cutting,
+  // raster.diagonal_cost, search.*, query_seconds. A start or goal that is
   // not free (invalid_query), unconnected cells, and a polyline that fails the exact check
   // (not_found) are answers (found = false) with the reason.
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
@@ -67,7 +72,7 @@ using RasterPlanner = BasicRasterPlanner<TranslatingRobot>;
 using RoundRasterPlanner = BasicRasterPlanner<RoundRobot>;
 
 // The registries' `raster` (TranslatingRobot, RoundRobot): options resolution (100),
-// connectivity (8), search, weight.
+// connectivity (8), corner-cutting (false), diagonal-cost (sqrt2), search, weight, reopen.
 template <class Space>
 PlannerEntry<Space> raster_planner_entry();
 

@@ -2,8 +2,11 @@
 // A robot that discovers its map as it drives (Koenig & Likhachev's setting for D* Lite): on a
 // MovingAI grid it knows nothing at first but its own cell, assumes every unknown cell free, and at
 // every cell it stands on senses each cell whose centre lies within Euclidean distance R of its own
-// centre. It moves on the 8-connected grid (steps 1 and √2, no corner cutting) along a shortest path
-// on what it knows, and replans whenever what it knows changes:
+// centre (or, with known_map, it starts knowing the map as it is at the start, and still learns of
+// changes only by sensing). It moves on the grid of its conventions (by default 8-connected, steps
+// 1 and √2, no corner cutting) along a shortest path on what it knows, and replans whenever what it
+// knows changes. Between equally short moves it takes the neighbour nearest the goal in a straight
+// line (then the first in the grid's order), so that drives are reproducible and comparable:
 //
 //   dstar_lite  D* Lite from the goal; the start moves with the robot (k_m)
 //   lpastar     LPA* from the goal, its open list re-keyed each time the robot has moved
@@ -13,6 +16,7 @@
 // The robot stops at the goal, or as soon as the goal is unreachable on what it knows (no_path).
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/plan/plan_report.hpp>
+#include <polyplan/search/grid_conventions.hpp>
 #include <polyplan/search/octile_length.hpp>
 
 #include <cstddef>
@@ -99,6 +103,10 @@ struct ReplanOptions {
   // drives (the truth may change; the robot learns of it only where it senses). Returns whether it
   // changed the truth: a robot that sees the whole map senses again only then.
   std::function<bool(std::size_t moves, GridMap& truth)> world_changes;
+  // The grid: connectivity, corner cutting, diagonal cost. With 4 neighbours or corner cutting a
+  // sensor radius of 1 sees every cell a move touches, else it must be at least √2.
+  GridConventions grid{};
+  bool known_map = false;  // the robot starts knowing the truth as it is before any change
 };
 
 struct ReplanStep {
@@ -128,10 +136,16 @@ struct ReplanResult {
   GridMap truth;                         // the map at the end (it may have changed)
   double seconds = 0;                    // in replanning (changes and searches)
   bool timed_out = false;                // status limit by the time limit (not the move limit)
+  GridConventions grid{};                // the options': costs are in its units (grid.in_cells, grid.text)
+  bool known_map = false;                // the options'
 };
 
 // Throws InputError for a start or goal outside the map or on a blocked cell of the truth, a
-// sensor radius that is negative or not finite.
+// sensor radius that is not finite or too small for the grid (smallest_sensor_radius).
+// The smallest sensor radius that sees every cell a move touches: 1 with 4 neighbours or corner
+// cutting, √2 otherwise (a diagonal move brushes the two cells beside it).
+double smallest_sensor_radius(const GridConventions& grid);
+
 ReplanResult drive_through_unknown_map(GridMap truth, GridPoint start, GridPoint goal, const ReplanOptions& options);
 
 }  // namespace polyplan

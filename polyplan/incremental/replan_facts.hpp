@@ -16,6 +16,7 @@ struct ReplanFacts {
   static constexpr FactKey<std::int64_t> moves{"replan.moves"};
   static constexpr FactKey<std::int64_t> replans{"replan.replans"};
   static constexpr FactKey<double> sensor_cells{"replan.sensor_cells"};
+  static constexpr FactKey<bool> known_map{"replan.known_map"};  // the robot knew the raster at the start
 };
 
 }  // namespace polyplan

@@ -1,5 +1,7 @@
 #include <polyplan/incremental/replanning_planner.hpp>
 
+#include <polyplan/plan/grid_options.hpp>
+
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/geometry/polyline.hpp>
 #include <polyplan/geometry/rasterize.hpp>
@@ -121,10 +123,11 @@ struct BasicReplanningPlanner<Space>::Impl {
   std::vector<Phase<Problem>> phases;  // by from_moves; the first is the world as it starts
 
   Impl(const Problem& p, ReplanAlgorithm a, const ReplanningOptions& o) : problem(&p), algorithm(a), options(o) {
-    if (o.sensor != 0 && !(std::isfinite(o.sensor) && o.sensor > 0 && o.sensor * o.sensor >= 2))
-      throw std::invalid_argument(
-          "sensor: expected 0 (the whole raster) or a finite number of cells of at least √2 ≈ 1.41421357, got " +
-          std::to_string(o.sensor));
+    const bool one = smallest_sensor_radius(o.grid) == 1.0;
+    if (o.sensor != 0 && !(std::isfinite(o.sensor) && o.sensor > 0 && (one ? o.sensor >= 1 : o.sensor * o.sensor >= 2)))
+      throw std::invalid_argument(std::string("sensor: expected 0 (the whole raster) or a finite number of cells of "
+                                              "at least ") +
+                                  (one ? "1" : "√2 ≈ 1.41421357") + ", got " + std::to_string(o.sensor));
     phases.push_back({0, 0, nullptr, &p, rasterize(p, o.resolution)});
     const World& world = p.world();
     // One world for each moment of change: the changes listed with one after_moves happen at once.
@@ -207,7 +210,7 @@ struct BasicReplanningPlanner<Space>::Impl {
     facts.set(ReplanFacts::moves, drive.moves);
     facts.set(ReplanFacts::replans, drive.replans);
     facts.set(ReplanFacts::changes_made, phases[lived - 1].made);
-    facts.set(ReplanFacts::grid_cost, drive.traversed_cost.to_double());
+    facts.set(ReplanFacts::grid_cost, drive.grid.in_cells(drive.traversed_cost));
     facts.set(SearchFacts::expanded, drive.expanded);
     facts.set(SearchFacts::generated, drive.generated);
     facts.set(SearchFacts::heap_operations, drive.heap_operations);
@@ -222,6 +225,8 @@ struct BasicReplanningPlanner<Space>::Impl {
     replanning.algorithm = algorithm;
     replanning.sensor_radius = sensor_radius();
     replanning.max_moves = options.max_moves;
+    replanning.grid = options.grid;
+    replanning.known_map = options.known_map;
     replanning.time_limit = std::max(options.time - spent, 1e-9);  // 0 would be none
     replanning.world_changes = [this, &lived](std::size_t moves, GridMap& truth) {
       const std::size_t before = lived;
@@ -237,8 +242,10 @@ struct BasicReplanningPlanner<Space>::Impl {
     facts.set(RoadmapFacts::kind, replanning_planner_name(algorithm));
     facts.set(RasterFacts::cells_per_axis, first.cells_per_axis);
     facts.set(RasterFacts::blocked_cells, first.blocked_count());
+    record_grid_conventions(facts, options.grid);
     facts.set(ReplanFacts::algorithm, std::string(to_string(algorithm)));
     facts.set(ReplanFacts::sensor_cells, options.sensor);  // 0: the whole raster
+    facts.set(ReplanFacts::known_map, options.known_map);
   }
 };
 
@@ -290,6 +297,10 @@ PlannerEntry<Space> replanning_planner_entry(ReplanAlgorithm algorithm) {
       .add("max-moves", &ReplanningOptions::max_moves,
            "moves before the drive stops with status limit (0: 4 x the cells)", at_least(1))
       .add("time", &ReplanningOptions::time, "time limit per query, seconds", above(0));
+  add_grid_conventions(
+      table, [](auto& o) -> auto& { return o.grid; });
+  table.add("known-map", &ReplanningOptions::known_map,
+            "the robot starts knowing the raster as it is at the start (changes are still found by sensing)");
   static constexpr const char* how[] = {"D* Lite (Koenig & Likhachev), the start moving with the robot",
                                         "LPA*, re-keyed each time the robot has moved",
                                         "A* from scratch at every replan"};

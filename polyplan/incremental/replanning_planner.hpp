@@ -33,6 +33,8 @@ struct ReplanningOptions {
   double sensor = 0;             // the sensing radius in cells (at least √2), or 0: the whole raster
   std::size_t max_moves = 0;     // 0: 4 × the raster's cells; then status limit
   double time = 300;             // seconds per query before the drive stops with status limit
+  GridConventions grid{};        // connectivity, corner cutting, diagonal cost (sensor >= 1 with 4 or cutting)
+  bool known_map = false;        // the robot starts knowing the raster as it is at the start
 };
 
 // Space: TranslatingRobot (its problem a CSpace) or RoundRobot (a RoundWorld).
@@ -48,7 +50,8 @@ class BasicReplanningPlanner final : public Planner<Space> {
   ~BasicReplanningPlanner() override;
 
   // Facts: roadmap.kind (the planner's name), raster.cells_per_axis, raster.blocked_cells (at the
-  // start), raster.start_cell, raster.goal_cell, replan.algorithm, replan.sensor_cells (0: all),
+  // start), raster.start_cell, raster.goal_cell, raster.connectivity, raster.corner_cutting,
+  // raster.diagonal_cost, replan.algorithm, replan.sensor_cells (0: all), replan.known_map,
   // replan.moves, replan.replans, replan.changes_made (those the drive lived to see),
   // replan.grid_cost (the moves' cost in cells), search.expanded, search.generated,
   // search.heap_operations, query_seconds. The picture shows the raster as it was at the drive's

@@ -155,6 +155,14 @@ class OptionTable {
                       std::move(set)});
   }
 
+  // A check of option `name` that needs the others (the table's checks see one value at a time):
+  // `check(options)` after every value is set, nullopt when they agree, else the problem, reported
+  // as a bad value of `name` would be.
+  OptionTable& require(std::string name, std::function<std::optional<std::string>(const Options&)> check) {
+    requirements_.push_back({std::move(name), std::move(check)});
+    return *this;
+  }
+
   // Every option, its default read from a default-constructed Options.
   std::vector<OptionInfo> info() const {
     std::vector<OptionInfo> out;
@@ -192,6 +200,8 @@ class OptionTable {
       if (!entry) throw InputError(where(key, value) + "no such option (" + known() + ")");
       if (auto why = entry->set(options, value)) throw InputError(where(key, value) + *why);
     }
+    for (const auto& [name, check] : requirements_)
+      if (auto why = check(options)) throw InputError(where(name, given_or_shown(values, name, options)) + *why);
     return options;
   }
 
@@ -205,6 +215,15 @@ class OptionTable {
   OptionTable& push(Entry e) {
     entries_.push_back(std::move(e));
     return *this;
+  }
+
+  // The value of option `name` as the user gave it, else as it is.
+  std::string given_or_shown(const OptionValues& values, const std::string& name, const Options& options) const {
+    for (auto v = values.rbegin(); v != values.rend(); ++v)
+      if (v->first == name) return v->second;
+    for (const Entry& e : entries_)
+      if (e.info.name == name) return e.show(options);
+    return "";
   }
 
   std::string known() const {
@@ -263,6 +282,7 @@ class OptionTable {
   }
 
   std::vector<Entry> entries_;
+  std::vector<std::pair<std::string, std::function<std::optional<std::string>(const Options&)>>> requirements_;
 };
 
 // The options of a planner that searches a graph, kept in a SearchOptions member: `name` (the

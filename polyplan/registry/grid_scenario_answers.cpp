@@ -1,7 +1,9 @@
 #include <polyplan/registry/grid_scenario_answers.hpp>
 
 #include <polyplan/grids/movingai_grid.hpp>
+#include <polyplan/plan/grid_options.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/registry/replan_json.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -22,8 +24,10 @@ json length_or_null(bool found, double length) { return found ? json(length) : j
 
 OptionTable<GridScenarioSearch> grid_scenario_table() {
   OptionTable<GridScenarioSearch> table;
-  return add_search_options(table, &GridScenarioSearch::search, "search",
-                            {{"astar", Search::astar}, {"dijkstra", Search::dijkstra}, {"wastar", Search::wastar}});
+  add_search_options(table, &GridScenarioSearch::search, "search",
+                     {{"astar", Search::astar}, {"dijkstra", Search::dijkstra}, {"wastar", Search::wastar}});
+  return add_grid_conventions(
+      table, [](auto& o) -> auto& { return o.grid; });
 }
 
 json answer_grid_scenarios(const GridMap& map, const std::vector<ScenarioQuery>& scenarios,
@@ -31,7 +35,7 @@ json answer_grid_scenarios(const GridMap& map, const std::vector<ScenarioQuery>&
   const SearchOptions& search = options.search;
   const Stopwatch preprocessing;
   check_scenarios_fit(map, scenarios, scenario_file);
-  MovingAiGridSearch grid(map);
+  MovingAiGridSearch grid(map, options.grid);
   const double preprocess = preprocessing.seconds();
   const bool weighted = search.algorithm == Search::wastar;
 
@@ -69,6 +73,11 @@ json answer_grid_scenarios(const GridMap& map, const std::vector<ScenarioQuery>&
                {"mean_expanded", mean(expanded)},
                {"search", std::string(to_string(search.algorithm))},
                {"preprocess_seconds", preprocess}};
+  if (options.grid != GridConventions{}) {
+    summary["grid"] = grid_conventions_json(options.grid);
+    summary["grid_note"] =
+        "the scenario file's lengths are the benchmark grid's (8-connected, no corner cutting, sqrt2)";
+  }
   if (weighted) {
     summary["weight"] = search.weight;
     summary["reopen"] = search.reopen;

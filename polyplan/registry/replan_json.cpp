@@ -11,6 +11,11 @@ using nlohmann::json;
 
 json cost_json(const OctileLength& c) { return c == OctileLength::infinity() ? json(nullptr) : json(c.to_double()); }
 
+// A drive's cost in cells (its grid's units may be fractions of a cell).
+json cells_cost_json(const OctileLength& c, const GridConventions& grid) {
+  return c == OctileLength::infinity() ? json(nullptr) : json(grid.in_cells(c));
+}
+
 json cells_json(const std::vector<GridPoint>& cells) {
   json out = json::array();
   for (const GridPoint& p : cells) out.push_back(grid_point_json(p));
@@ -21,12 +26,18 @@ json cells_json(const std::vector<GridPoint>& cells) {
 
 json grid_point_json(GridPoint p) { return json::array({p.x, p.y}); }
 
+json grid_conventions_json(const GridConventions& grid) {
+  return {{"connectivity", grid.connectivity == Connectivity::full ? 8 : 4},
+          {"corner_cutting", grid.corner_cutting},
+          {"diagonal_cost", grid.diagonal_cost.text()}};
+}
+
 json replan_json(const ReplanResult& r, double sensor) {
   json steps = json::array();
   for (const ReplanStep& s : r.steps)
     steps.push_back({{"at", grid_point_json(s.at)},
-                     {"cost_to_goal", cost_json(s.cost_to_goal)},
-                     {"cost_to_goal_exact", s.cost_to_goal.to_string()},
+                     {"cost_to_goal", cells_cost_json(s.cost_to_goal, r.grid)},
+                     {"cost_to_goal_exact", r.grid.text(s.cost_to_goal)},
                      {"expanded", s.expanded},
                      {"changed_cells", s.changed_cells},
                      {"replanned", s.replanned}});
@@ -35,8 +46,10 @@ json replan_json(const ReplanResult& r, double sensor) {
            {"algorithm", std::string(to_string(r.algorithm))},
            {"sensor_radius", sensor},
            {"traversed", cells_json(r.traversed)},
-           {"traversed_cost", r.traversed_cost.to_double()},
-           {"traversed_cost_exact", r.traversed_cost.to_string()},
+           {"traversed_cost", r.grid.in_cells(r.traversed_cost)},
+           {"traversed_cost_exact", r.grid.text(r.traversed_cost)},
+           {"grid", grid_conventions_json(r.grid)},
+           {"known_map", r.known_map},
            {"moves", r.moves},
            {"replans", r.replans},
            {"expanded", r.expanded},

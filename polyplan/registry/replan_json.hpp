@@ -16,5 +16,7 @@ nlohmann::json replan_begins_json(std::size_t replan, GridPoint at, std::size_t 
 nlohmann::json replan_pass_json(const ReplanTracePass& pass);
 // A cell as the JSON gives it: [x, y].
 nlohmann::json grid_point_json(GridPoint p);
+// {"connectivity": 8 or 4, "corner_cutting": bool, "diagonal_cost": "sqrt2" or the number as text}.
+nlohmann::json grid_conventions_json(const GridConventions& grid);
 
 }  // namespace polyplan

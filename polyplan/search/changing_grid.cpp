@@ -5,25 +5,28 @@
 namespace polyplan {
 namespace {
 
-GridGraph all_free(int width, int height) {
+GridGraph all_free(int width, int height, Connectivity connectivity) {
   if (width < 1 || height < 1) throw std::invalid_argument("changing grid: the width and height must be at least 1");
-  return GridGraph({{width, AxisKind::bounded, 1.0}, {height, AxisKind::bounded, 1.0}}, Connectivity::full,
+  return GridGraph({{width, AxisKind::bounded, 1.0}, {height, AxisKind::bounded, 1.0}}, connectivity,
                    StepCost::euclidean, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * height, 1));
 }
 
 }  // namespace
 
-ChangingGrid::ChangingGrid(int width, int height)
-    : width_(width), height_(height), graph_(all_free(width, height)),
-      blocked_(static_cast<std::size_t>(width) * height, 0) {}
+ChangingGrid::ChangingGrid(int width, int height, GridConventions conventions)
+    : width_(width), height_(height), conventions_(conventions),
+      graph_(all_free(width, height, conventions.connectivity)), blocked_(static_cast<std::size_t>(width) * height, 0) {
+}
 
 OctileLength ChangingGrid::cost(GridCell from, GridCell to) const {
   if (blocked(from) || blocked(to)) return OctileLength::infinity();
   const int fx = x(from), fy = y(from), dx = x(to) - fx, dy = y(to) - fy;
-  if (dx == 0 || dy == 0) return {1, 0};
-  // A diagonal move brushes the two cells beside it: both must be free.
-  if (blocked_at(fx + dx, fy) || blocked_at(fx, fy + dy)) return OctileLength::infinity();
-  return {0, 1};
+  if (dx == 0 || dy == 0) return conventions_.straight_step();
+  if (conventions_.connectivity == Connectivity::axis_aligned) return OctileLength::infinity();
+  // A diagonal move brushes the two cells beside it: both must be free, unless it may cut corners.
+  if (!conventions_.corner_cutting && (blocked_at(fx + dx, fy) || blocked_at(fx, fy + dy)))
+    return OctileLength::infinity();
+  return conventions_.diagonal_step();
 }
 
 bool ChangingGrid::set_blocked(GridCell c, bool blocked, std::vector<ChangedMove>& changed) {

@@ -1,11 +1,13 @@
 #pragma once
-// An 8-connected 2D grid whose cells are blocked and freed while it is searched: the graph of an
-// incremental search (search/incremental_search.hpp) on a map that changes or is discovered.
+// A 2D grid whose cells are blocked and freed while it is searched: the graph of an incremental
+// search (search/incremental_search.hpp) on a map that changes or is discovered.
 //
 // The graph is a GridGraph with every cell free (its neighbours never change); what a cell's
-// state changes is the cost of the moves touching it, exactly (OctileLength): 1 straight, √2
-// diagonal, infinity into or out of a blocked cell or across the corner of one (the MovingAI rule
-// of search/grid_graph.hpp). Cell (x, y) is GridCell y * width + x.
+// state changes is the cost of the moves touching it, exactly (OctileLength): the conventions'
+// straight and diagonal steps (1 and √2 by default), infinity into or out of a blocked cell or,
+// unless the conventions cut corners, across the corner of one (the MovingAI rule of
+// search/grid_graph.hpp). Cell (x, y) is GridCell y * width + x.
+#include <polyplan/search/grid_conventions.hpp>
 #include <polyplan/search/grid_graph.hpp>
 #include <polyplan/search/octile_length.hpp>
 
@@ -23,10 +25,11 @@ struct ChangedMove {
 class ChangingGrid {
  public:
   // Every cell free. Throws std::invalid_argument for a width or height below 1.
-  ChangingGrid(int width, int height);
+  ChangingGrid(int width, int height, GridConventions conventions = {});
 
   int width() const { return width_; }
   int height() const { return height_; }
+  const GridConventions& conventions() const { return conventions_; }
   const GridGraph& graph() const { return graph_; }
   GridCell cell(int x, int y) const {
     return static_cast<GridCell>(y) * static_cast<GridCell>(width_) + static_cast<GridCell>(x);
@@ -40,13 +43,14 @@ class ChangingGrid {
   // Returns false when the cell already was so (nothing appended).
   bool set_blocked(GridCell c, bool blocked, std::vector<ChangedMove>& changed);
 
-  // The cost of a move between neighbours (8-connected); infinity where it is blocked.
+  // The cost of a move between neighbours; infinity where it is blocked.
   OctileLength cost(GridCell from, GridCell to) const;
 
  private:
   bool blocked_at(int x, int y) const { return blocked_[cell(x, y)] != 0; }
 
   int width_, height_;
+  GridConventions conventions_;
   GridGraph graph_;
   std::vector<std::uint8_t> blocked_;
 };
@@ -57,12 +61,12 @@ struct ChangingGridCosts {
   OctileLength operator()(GridCell from, GridCell to) const { return grid->cost(from, to); }
 };
 
-// The octile distance: the exact cost on an empty grid, so a consistent heuristic under any
-// blocking.
+// The exact cost on an empty grid (the octile distance by default), so a consistent heuristic
+// under any blocking.
 struct ChangingGridDistance {
   const ChangingGrid* grid;
   OctileLength operator()(GridCell a, GridCell b) const {
-    return OctileLength::octile(grid->x(a) - grid->x(b), grid->y(a) - grid->y(b));
+    return grid->conventions().distance(grid->x(a) - grid->x(b), grid->y(a) - grid->y(b));
   }
 };
 

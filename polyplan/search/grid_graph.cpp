@@ -200,6 +200,7 @@ GridDistanceTo::GridDistanceTo(const GridGraph& graph, GridCell goal, GridMetric
   // With unequal steps max + (sqrt 2 - 1) min overestimates the diagonal: not a heuristic A* may use.
   if (metric == GridMetric::octile && graph.axis(0).step != graph.axis(1).step)
     throw std::invalid_argument("GridDistanceTo: the octile metric needs square cells (equal axis steps)");
+  if (const auto cost = graph.diagonal_cost()) diagonal_extra_ = *cost - 1;
   const auto at = graph.coordinates(goal);
   std::copy(at.begin(), at.end(), goal_.begin());
   plane_octile_ = metric == GridMetric::octile && graph.axis(0).kind == AxisKind::bounded &&
@@ -207,6 +208,18 @@ GridDistanceTo::GridDistanceTo(const GridGraph& graph, GridCell goal, GridMetric
   if (plane_octile_) {
     width_ = static_cast<GridCell>(graph.axis(0).cells);
     step_ = {graph.axis(0).step, graph.axis(1).step};
+  }
+}
+
+void GridGraph::set_diagonals(std::optional<double> cost, bool corner_cutting) {
+  if (dimensions_ != 2) throw std::invalid_argument("GridGraph: diagonal conventions are for 2D grids");
+  if (cost && axes_[0].step != axes_[1].step)
+    throw std::invalid_argument("GridGraph: a diagonal cost needs square cells (equal axis steps)");
+  diagonal_cost_ = cost;
+  for (Direction& d : directions_) {
+    if (d.moves.size() != 2) continue;
+    if (cost) d.cost = *cost * axes_[0].step;  // else the Euclidean length the constructor gave it
+    if (corner_cutting) d.guards.clear();
   }
 }
 
@@ -224,7 +237,7 @@ double GridDistanceTo::general(GridCell c) const {
   switch (metric_) {
     case GridMetric::octile: {
       const auto [lo, hi] = std::minmax(d[0], d[1]);
-      return hi + sqrt2_minus_1 * lo;
+      return hi + diagonal_extra_ * lo;
     }
     case GridMetric::euclidean: {
       double s = 0;

@@ -28,6 +28,7 @@
 #include <functional>
 #include <initializer_list>
 #include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -85,6 +86,12 @@ class GridGraph {
   // Moves between free neighbours must also pass `test` (checked each time a search looks at the
   // move, counted in moves_checked). An empty function removes the test.
   void set_move_test(MoveTest test);
+
+  // A 2D grid's diagonal moves (search/grid_conventions.hpp): their cost in steps of the axes
+  // (nullopt: the Euclidean length, √2 steps) and whether one may pass a blocked cell's corner.
+  // Throws std::invalid_argument for a grid that is not 2D, or a cost on cells that are not square.
+  void set_diagonals(std::optional<double> cost, bool corner_cutting);
+  std::optional<double> diagonal_cost() const { return diagonal_cost_; }
 
   std::size_t dimensions() const { return dimensions_; }
   const GridAxis& axis(std::size_t i) const { return axes_[i]; }
@@ -198,6 +205,7 @@ class GridGraph {
   std::vector<std::uint8_t> free_bitmap_;
   CellTest cell_test_;
   MoveTest move_test_;
+  std::optional<double> diagonal_cost_;
   struct LazyCache;
   std::unique_ptr<LazyCache> cache_;
   mutable std::size_t cells_evaluated_ = 0, moves_checked_ = 0;
@@ -276,6 +284,8 @@ enum class GridMetric {
 class GridDistanceTo {
  public:
   // Throws std::invalid_argument for octile on a grid that is not 2D or whose cells are not square.
+  // Octile follows the graph's diagonal cost: max + (cost - 1) min (for a cost of 2 or more use
+  // sum_of_axes: two straight moves are then never dearer).
   GridDistanceTo(const GridGraph& graph, GridCell goal, GridMetric metric);
   double operator()(GridCell c) const {
     if (!plane_octile_) return general(c);
@@ -283,7 +293,7 @@ class GridDistanceTo {
     const GridCell y = c / width_;
     const double dx = static_cast<double>(std::abs(static_cast<std::int64_t>(c - y * width_) - goal_[0])) * step_[0];
     const double dy = static_cast<double>(std::abs(static_cast<std::int64_t>(y) - goal_[1])) * step_[1];
-    return dx < dy ? dy + (sqrt2_minus_1 * dx) : dx + (sqrt2_minus_1 * dy);
+    return dx < dy ? dy + (diagonal_extra_ * dx) : dx + (diagonal_extra_ * dy);
   }
 
  private:
@@ -294,7 +304,8 @@ class GridDistanceTo {
   const GridGraph* graph_;
   std::array<std::int64_t, GridGraph::max_dimensions> goal_{};
   GridMetric metric_;
-  bool plane_octile_ = false;  // octile on two bounded axes: the inline case
+  double diagonal_extra_ = sqrt2_minus_1;  // a diagonal's cost beyond a straight move's, in steps
+  bool plane_octile_ = false;              // octile on two bounded axes: the inline case
   GridCell width_ = 1;
   std::array<double, 2> step_{};
 };

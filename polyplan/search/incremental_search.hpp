@@ -60,6 +60,14 @@ struct IncrementalCounts {
   std::size_t heap_operations() const { return heap_pushes + heap_pops + heap_updates + heap_removals; }
 };
 
+// No preference between equally good neighbours in path_to_root: the first found keeps its place.
+struct NoTieBreak {
+  template <class Vertex>
+  bool operator()(Vertex, Vertex) const {
+    return false;
+  }
+};
+
 template <class Cost>
 struct IncrementalKey {
   Cost first{}, second{};  // [min(g, rhs) + h + k_m; min(g, rhs)]
@@ -253,14 +261,16 @@ class IncrementalSearch {
   // v, then each step to a neighbour minimising the link cost + g, to the vertex the search grows
   // from (D* Lite: the goal, a path v → goal; LPA*: the start, a path v → start on the reversed
   // edges). For any v whose g is settled: the aimed-at vertex and every vertex on its path. Empty
-  // when g(v) is infinite.
-  std::vector<vertex_type> path_to_root(vertex_type v) const {
+  // when g(v) is infinite. Ties between equally good neighbours go to the first `before(a, b)`
+  // puts first (a strict order, e.g. nearer the goal), else to the first in the graph's order.
+  template <class Before = NoTieBreak>
+  std::vector<vertex_type> path_to_root(vertex_type v, const Before& before = {}) const {
     std::vector<vertex_type> path;
     if (records_[v].g == cost_type::infinity()) return path;
     path.push_back(v);
     while (path.back() != root_) {
       const vertex_type u = path.back();
-      const auto [parent, through] = best_parent(u);
+      const auto [parent, through] = best_parent(u, before);
       // g strictly decreases along a consistent chain with positive costs; anything else is a bug.
       if (through != records_[u].g || !(records_[parent].g < records_[u].g) || path.size() > records_.size())
         throw std::logic_error("incremental search: the g values do not form a path (not computed after a change?)");
@@ -345,11 +355,14 @@ class IncrementalSearch {
   void for_each_neighbour(vertex_type v, F&& f) const {
     for (auto [e, end] = out_edges(v, *graph_); e != end; ++e) f(static_cast<vertex_type>(target(*e, *graph_)));
   }
-  std::pair<vertex_type, cost_type> best_parent(vertex_type v) const {
+  template <class Before = NoTieBreak>
+  std::pair<vertex_type, cost_type> best_parent(vertex_type v, const Before& before = {}) const {
     std::pair<vertex_type, cost_type> best{v, cost_type::infinity()};
     for_each_neighbour(v, [&](vertex_type p) {
       const cost_type through = link(v, p) + records_[p].g;
-      if (through < best.second) best = {p, through};
+      if (through < best.second ||
+          (through == best.second && through != cost_type::infinity() && before(p, best.first)))
+        best = {p, through};
     });
     return best;
   }

@@ -78,8 +78,8 @@ py::array_t<double> table_array(const std::vector<OctileLength>& values, int hei
   return a;
 }
 
-py::object cost_or_none(const OctileLength& c) {
-  return c == OctileLength::infinity() ? py::object(py::none()) : py::object(py::float_(c.to_double()));
+py::object cost_or_none(const OctileLength& c, const GridConventions& grid = {}) {
+  return c == OctileLength::infinity() ? py::object(py::none()) : py::object(py::float_(grid.in_cells(c)));
 }
 
 py::list cells(const std::vector<GridPoint>& points) {
@@ -123,11 +123,11 @@ void bind_replan(py::module_& m) {
           "traversed", [](const Drive& d) { return cells(d.result.traversed); },
           "The cells it stood on, (x, y) tuples, the start first.")
       .def_property_readonly(
-          "traversed_cost", [](const Drive& d) { return d.result.traversed_cost.to_double(); },
-          "The cost it drove (moves 1 and √2).")
+          "traversed_cost", [](const Drive& d) { return d.result.grid.in_cells(d.result.traversed_cost); },
+          "The cost it drove (moves 1 and the diagonal cost, √2 by default).")
       .def_property_readonly(
-          "traversed_cost_exact", [](const Drive& d) { return d.result.traversed_cost.to_string(); },
-          "The same, exactly: \"a + b√2\".")
+          "traversed_cost_exact", [](const Drive& d) { return d.result.grid.text(d.result.traversed_cost); },
+          "The same, exactly: \"a + b√2\" (a fraction \"p/q\" for a fractional diagonal cost).")
       .def_property_readonly(
           "moves", [](const Drive& d) { return d.result.moves; }, "Moves made.")
       .def_property_readonly(
@@ -152,8 +152,8 @@ void bind_replan(py::module_& m) {
             for (const ReplanStep& s : d.result.steps) {
               py::dict step;
               step["at"] = py::make_tuple(s.at.x, s.at.y);
-              step["cost_to_goal"] = cost_or_none(s.cost_to_goal);
-              step["cost_to_goal_exact"] = s.cost_to_goal.to_string();
+              step["cost_to_goal"] = cost_or_none(s.cost_to_goal, d.result.grid);
+              step["cost_to_goal_exact"] = d.result.grid.text(s.cost_to_goal);
               step["expanded"] = s.expanded;
               step["changed_cells"] = s.changed_cells;
               step["replanned"] = s.replanned;

@@ -61,7 +61,7 @@ TEST(Replan, AnUnreachableGoalEndsWithNoPath) {
 TEST(Replan, RhsTraceWritesEveryPassAsJsonLinesOrAsTables) {
   const std::string file = (std::filesystem::temp_directory_path() / "polyplan_replan_trace.jsonl").string();
   // Along the room's wall, which the robot discovers a few cells at a time.
-  const CliRun run = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --rhs-trace '" + file + "'");
+  const CliRun run = run_polyplan("replan " + closed_room + " --start 3,4 --goal 9,0 --rhs-trace '" + file + "'");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   std::istringstream lines(slurp(file));
   std::string line;
@@ -84,11 +84,11 @@ TEST(Replan, RhsTraceWritesEveryPassAsJsonLinesOrAsTables) {
   EXPECT_GT(open_entries, passes);
   std::filesystem::remove(file);
 
-  const CliRun tables = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --rhs-trace -");
+  const CliRun tables = run_polyplan("replan " + closed_room + " --start 3,4 --goal 9,0 --rhs-trace -");
   ASSERT_EQ(tables.exit_code, 0) << tables.err;
-  EXPECT_NE(tables.out.find("replan 1 at (0,4)"), std::string::npos) << tables.out;
-  // The goal first, its key the octile distance 5 + 4√2 from the start.
-  EXPECT_NE(tables.out.find("pass 1: pops (9,0) key [10.66; 0] (over): g ∞ -> 0, rhs 0"), std::string::npos)
+  EXPECT_NE(tables.out.find("replan 1 at (3,4)"), std::string::npos) << tables.out;
+  // The goal first, its key the octile distance 2 + 4√2 from the start.
+  EXPECT_NE(tables.out.find("pass 1: pops (9,0) key [7.657; 0] (over): g ∞ -> 0, rhs 0"), std::string::npos)
       << tables.out;
   EXPECT_NE(tables.out.find("(under)"), std::string::npos) << "a replan raises some g to ∞";
   EXPECT_NE(tables.out.find("open list:"), std::string::npos);
@@ -98,10 +98,10 @@ TEST(Replan, RhsTraceWritesEveryPassAsJsonLinesOrAsTables) {
 // count 1, 2, ..., and f is the key (g's and rhs's min + h + k_m).
 TEST(Replan, TraceWritesEveryExpansionOfEveryReplan) {
   const CliRun run = run_polyplan("replan " + closed_room +
-                                  " --start 0,4 --goal 9,0 --json - --trace /dev/null --rhs-trace /dev/null");
+                                  " --start 3,4 --goal 9,0 --json - --trace /dev/null --rhs-trace /dev/null");
   ASSERT_EQ(run.exit_code, 0) << run.err;
   const std::size_t expanded = nlohmann::json::parse(run.out)["expanded"].get<std::size_t>();
-  const CliRun traced = run_polyplan("replan " + closed_room + " --start 0,4 --goal 9,0 --trace -");
+  const CliRun traced = run_polyplan("replan " + closed_room + " --start 3,4 --goal 9,0 --trace -");
   ASSERT_EQ(traced.exit_code, 0) << traced.err;
   std::istringstream lines(traced.out);
   std::string line;
@@ -117,10 +117,10 @@ TEST(Replan, TraceWritesEveryExpansionOfEveryReplan) {
     EXPECT_EQ(j["step"], ++step) << line;
     if (j["kind"] != "stale key") ++count;
     if (j["g"].is_null()) ++raised;
-    if (count == 1) {  // the goal, popped first: its g 0, its f the octile distance 5 + 4√2, no backpointer
+    if (count == 1) {  // the goal, popped first: its g 0, its f the octile distance 2 + 4√2, no backpointer
       EXPECT_EQ(j["vertex"], nlohmann::json::parse("[9, 0]"));
       EXPECT_EQ(j["g"], 0.0);
-      EXPECT_NEAR(j["f"].get<double>(), 5 + 4 * std::sqrt(2.0), 1e-6);
+      EXPECT_NEAR(j["f"].get<double>(), 2 + 4 * std::sqrt(2.0), 1e-6);
       EXPECT_EQ(j["backpointer"], nullptr);
     }
   }

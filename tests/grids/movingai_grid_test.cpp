@@ -135,14 +135,12 @@ TEST(MovingAiGrid, WeightedAStarStaysWithinTwiceTheOptimum) {
   }
 }
 
+// row 0: . @ .     (1, 0) blocked
+// row 1: . . .
+GridMap tiny_map() { return {"tiny.map", 3, 2, {false, true, false, false, false, false}}; }
+
 TEST(MovingAiGrid, CellsAreRowMajorAndDiagonalsNeverCutCorners) {
-  GridMap map;
-  map.source = "tiny.map";
-  map.width = 3;
-  map.height = 2;
-  // row 0: . @ .     (1, 0) blocked
-  // row 1: . . .
-  map.blocked = {false, true, false, false, false, false};
+  const GridMap map = tiny_map();
   const GridGraph g = movingai_grid(map);
   EXPECT_EQ(g.cell({2, 1}), 5u);
   EXPECT_FALSE(g.is_free(1));
@@ -224,6 +222,34 @@ TEST(MovingAiGrid, QueriesThatDoNotFitTheMapAreBadInput) {
   EXPECT_THROW(grid.search(blocked), std::invalid_argument);
   EXPECT_THROW(grid.search(outside), std::invalid_argument);
   EXPECT_THROW(grid.search(q, {Search::wastar, 0.5}), std::invalid_argument);
+}
+
+// The grid conventions on a MovingAI map, lengths counted by hand. Row 0 ". @ .", row 1 ". . .":
+// from (0, 0) to (2, 0) the benchmark's grid goes round (4); cutting the blocked cell's corners,
+// two diagonals (2 √2, or 2 at diagonal cost 1); 4-connected, round again (4).
+TEST(MovingAiGrid, GridConventionsCutCornersAndPriceDiagonals) {
+  GridMap map = tiny_map();
+  ScenarioQuery q;
+  q.map_width = 3;
+  q.map_height = 2;
+  q.start_x = 0, q.start_y = 0, q.goal_x = 2, q.goal_y = 0;
+  const auto length = [&](GridConventions conventions) {
+    MovingAiGridSearch grid(map, conventions);
+    const auto r = grid.search(q);
+    EXPECT_TRUE(r.found);
+    return r.cost;
+  };
+  EXPECT_DOUBLE_EQ(length({}), 4.0);
+  EXPECT_DOUBLE_EQ(length({Connectivity::full, true, {}}), 2 * std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(length({Connectivity::full, true, DiagonalCost{1, 1}}), 2.0);
+  EXPECT_DOUBLE_EQ(length({Connectivity::axis_aligned, true, {}}), 4.0);
+  // On an open 3 x 3 map from (0, 0) to (2, 2): two diagonals at 1.5 (3), four straight moves at 3 (4).
+  map.width = map.height = 3;
+  map.blocked.assign(9, false);
+  q.map_width = q.map_height = 3;
+  q.goal_x = q.goal_y = 2;
+  EXPECT_DOUBLE_EQ(length({Connectivity::full, false, DiagonalCost{3, 2}}), 3.0);
+  EXPECT_DOUBLE_EQ(length({Connectivity::full, false, DiagonalCost{3, 1}}), 4.0);
 }
 
 }  // namespace

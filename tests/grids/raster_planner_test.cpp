@@ -294,3 +294,35 @@ TEST(RasterPlanner, TextbookWeightedAStarExpandsFewerCellsThanAStarOnTheOffice) 
   EXPECT_LE(textbook.length, 20 * astar.length);
   EXPECT_LE(reopening.length, 20 * astar.length);
 }
+
+// The grid conventions reach the raster: on an empty 10 x 10 raster from cell (0, 0) to (9, 9)
+// the grid path is 9 diagonals, costing 9 √2 by default, 9 at diagonal cost 1, 13.5 at 1.5, and
+// 18 straight moves at cost 3 (two straight moves beat a diagonal dearer than 2) or 4-connected.
+TEST(RasterPlanner, GridConventionsSetTheMovesAndTheirCosts) {
+  const World world = world_from(R"({"bounds": [0, 0, 10, 10], "obstacles": []})");
+  const CSpace cspace(world);
+  const auto cost = [&](OptionValues values) {  // through the registry's entry, as the CLI and Python
+    values.emplace_back("resolution", "10");
+    const auto planner = raster_planner_entry<TranslatingRobot>().make(cspace, values);
+    return planner->plan({pt("0.5", "0.5"), pt("9.5", "9.5"), "q"}).facts.at(RasterFacts::grid_cost);
+  };
+  EXPECT_NEAR(cost({}), 9 * std::sqrt(2.0), 1e-12);
+  EXPECT_DOUBLE_EQ(cost({{"diagonal-cost", "1"}}), 9.0);
+  EXPECT_DOUBLE_EQ(cost({{"diagonal-cost", "1.5"}}), 13.5);
+  EXPECT_DOUBLE_EQ(cost({{"diagonal-cost", "3"}}), 18.0);
+  EXPECT_DOUBLE_EQ(cost({{"connectivity", "4"}}), 18.0);
+  EXPECT_NEAR(cost({{"diagonal-cost", "sqrt2"}, {"corner-cutting", "true"}}), 9 * std::sqrt(2.0), 1e-12);
+  // The report says which grid it searched.
+  const auto planner = raster_planner_entry<TranslatingRobot>().make(
+      cspace, {{"connectivity", "4"}, {"corner-cutting", "true"}, {"diagonal-cost", "1.5"}});
+  const Report report = planner->plan({pt("0.5", "0.5"), pt("9.5", "9.5"), "q"});
+  EXPECT_EQ(report.facts.at(RasterFacts::connectivity), 4);
+  EXPECT_TRUE(report.facts.at(RasterFacts::corner_cutting));
+  EXPECT_EQ(report.facts.at(RasterFacts::diagonal_cost), "1.5");
+  // A number needs square cells: 10 x 5 bounds cut 10 x 10 give cells 1 x 0.5.
+  const World flat = world_from(R"({"bounds": [0, 0, 10, 5], "obstacles": []})");
+  const CSpace flat_cspace(flat);
+  RasterOptions o;
+  o.diagonal_cost = DiagonalCost{3, 2};
+  EXPECT_THROW(RasterPlanner(flat_cspace, o), InputError);
+}

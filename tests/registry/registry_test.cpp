@@ -213,7 +213,7 @@ TEST(Registry, ListsTheDesignsPlannersWithDescriptionsAndOptions) {
             "rrtstar, rrtconnect");
   EXPECT_EQ(planners<RotatingRobot>().names(), "rotation");
   const auto* raster = registry.find("raster");
-  ASSERT_EQ(raster->options.size(), 5u);
+  ASSERT_EQ(raster->options.size(), 7u);
   EXPECT_EQ(raster->options[0].name, "resolution");
   EXPECT_EQ(raster->options[0].default_value, "100");
 }
@@ -235,7 +235,8 @@ TEST(Registry, OptionsAreSetByNameAndBadOnesNameThePlannerAndTheOption) {
   EXPECT_EQ(message({{"resolution", "ten"}}), "planner raster: option resolution=ten: expected a whole number");
   EXPECT_EQ(message({{"resolution", "-3"}}), "planner raster: option resolution=-3: expected a whole number >= 0");
   EXPECT_EQ(message({{"colour", "red"}}),
-            "planner raster: option colour=red: no such option (its options: resolution, connectivity, search, weight, "
+            "planner raster: option colour=red: no such option (its options: resolution, connectivity, corner-cutting, "
+            "diagonal-cost, search, weight, "
             "reopen)");
   EXPECT_EQ(message({{"connectivity", "6"}}), "planner raster: option connectivity=6: expected one of 8|4");
   EXPECT_EQ(message({{"weight", "0.5"}}), "planner raster: option weight=0.5: expected a number in [1, inf)");
