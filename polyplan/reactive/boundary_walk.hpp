@@ -46,6 +46,7 @@ struct Along {
 
 class Boundary {
  public:
+  using Point = walk::Point;  // (the Bug planners' B::Point)
   // The C-space must outlive the boundary.
   explicit Boundary(const CSpace& cspace);
 
@@ -71,7 +72,6 @@ class Boundary {
   // answers the same for arcs): the edge's ends; the points of the segment s-g on its part from a
   // to b (both on it, a first), in walking order; on which side of the edge's way at x the point p
   // lies (1 left, -1 right, 0 ahead or behind); the part's point nearest p; the part's length.
-  using Point = walk::Point;
   std::size_t size(std::size_t cycle) const { return cycles_[cycle].size(); }
   const Point& start(Edge e) const { return vertex(e.cycle, e.index); }
   const Point& end(Edge e) const { return vertex(e.cycle, e.index + 1); }
