@@ -69,8 +69,6 @@ Report plan_once(const CSpace& cspace, std::size_t n, const Query& query,
   return RasterPlanner(cspace, RasterOptions{n, connectivity, {}}).plan(query);
 }
 
-std::string cell_text(std::size_t x, std::size_t y) { return "(" + std::to_string(x) + ", " + std::to_string(y) + ")"; }
-
 }  // namespace
 
 TEST_F(SphereWorld, JustRightResolutionFindsCheckedPathsWithinTwentyPercentOfTheOptimum) {

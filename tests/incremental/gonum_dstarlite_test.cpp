@@ -76,7 +76,9 @@ TEST(GonumDStarLite, TheNineCasesDriveAsGonumStates) {
     const json& want = c["drive"];
     ASSERT_EQ(r.traversed.size(), want.size());
     for (std::size_t i = 0; i < want.size(); ++i)
-      if (!want[i].is_null()) EXPECT_EQ(r.traversed[i], cell_of(map, want[i])) << "move " << i;
+      if (!want[i].is_null()) {  // braces: EXPECT_EQ is an if-else of its own
+        EXPECT_EQ(r.traversed[i], cell_of(map, want[i])) << "move " << i;
+      }
     EXPECT_NEAR(r.grid.in_cells(r.traversed_cost), c["cost"].get<double>(), 1e-9);
   }
 }

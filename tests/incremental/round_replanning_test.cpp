@@ -73,9 +73,10 @@ TEST_P(RoundReplanningOnShippedWorlds, EveryPlannerFindsPathsTheExactCheckAccept
       EXPECT_EQ(report.facts.at(ReplanFacts::changes_made), 0);
       const double cost = report.facts.at(ReplanFacts::grid_cost);
       if (dstar_cost < 0) dstar_cost = cost;
-      EXPECT_EQ(cost, dstar_cost);  // OctileLength exactly: the same shortest cost on the same raster
-      if (GetParam().square_cell > 0)
+      EXPECT_EQ(cost, dstar_cost);       // OctileLength exactly: the same shortest cost on the same raster
+      if (GetParam().square_cell > 0) {  // braces: EXPECT_NEAR is an if-else of its own
         EXPECT_NEAR(cost * GetParam().square_cell, grid.facts.at(RasterFacts::grid_cost), 1e-9);
+      }
     }
   }
 }

@@ -294,8 +294,9 @@ TEST(VisibilityGraph, EdgesAreSupportingOrSeparatingBitangents) {
       ++compared;
     }
     EXPECT_GT(compared, graph.edges.size() / 2);
-    if (kind == VisibilityKind::reduced)
+    if (kind == VisibilityKind::reduced) {  // braces: EXPECT_EQ is an if-else of its own
       EXPECT_EQ(std::count(graph.edge_kinds.begin(), graph.edge_kinds.end(), "other"), 0);
+    }
   }
 }
 
