@@ -86,7 +86,8 @@ TEST(GonumDStarLite, TheNineCasesDriveAsGonumStates) {
 // The same drives with LPA* and A* from scratch: all three plan the same exact costs and break
 // ties alike, so only their work differs.
 TEST(GonumDStarLite, LpaStarAndRepeatedAStarDriveTheSame) {
-  for (const auto& c : gonum_cases()["cases"]) {
+  const json cases = gonum_cases()["cases"];  // kept: a range-for over a part of a temporary reads freed memory
+  for (const auto& c : cases) {
     SCOPED_TRACE(c["name"].get<std::string>());
     const ReplanResult d = run(c, ReplanAlgorithm::dstar_lite);
     for (const ReplanAlgorithm a : {ReplanAlgorithm::lpastar, ReplanAlgorithm::astar}) {
