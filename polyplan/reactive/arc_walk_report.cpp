@@ -1,10 +1,10 @@
 // A Bug planner's walk along a boundary with arcs, reported (detail/arc_boundary.hpp): each run of
 // the walk is a segment, or an arc where it followed an arc of the boundary; the whole walk is
-// checked again run by run and at every joint, in CORE's numbers, with the same rules as the tangent
-// paths (an arc checked open: its ends may touch the obstacles where two boundary pieces meet); its
-// length is bounded outward (roadmaps/detail/certified_length.hpp). The points are printed as the
-// doubles nearest them, moved a step of a double at a time to the free side while the exact rules
-// find them inside an obstacle, so that a reader who tests the printed numbers finds them free.
+// checked again run by run and at every joint by the tangent paths' own check (tangent::path_blocked,
+// its arcs open: their ends may touch the obstacles where two boundary pieces meet); its length is
+// bounded outward and its pieces reported as theirs are (roadmaps/detail/certified_length.hpp). The points are printed
+// as the doubles nearest them, moved a step of a double at a time to the free side while the exact rules find them
+// inside an obstacle, so that a reader who tests the printed numbers finds them free.
 #include <polyplan/plan/fact_points.hpp>
 #include <polyplan/reactive/detail/arc_boundary.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
@@ -18,21 +18,14 @@ namespace {
 
 using round_rules::sign_of;
 
-// One run of the walk: straight, or along circles[*circle]; along the boundary or through the free
-// space.
-struct Run {
-  AP from, to;
-  std::optional<std::size_t> circle;
-  bool counter_clockwise = true;
-  bool along_boundary = false;
-};
-
-std::vector<Run> runs_of(const ArcBoundary& boundary, const std::vector<AP>& path,
-                         const std::vector<std::optional<Along>>& along) {
-  std::vector<Run> runs;
+// The walk's runs: run k from path[k] to path[k + 1], straight, or along the circle of the
+// boundary piece it followed (a segment of the boundary is a straight run too).
+std::vector<tangent::CirclePiece> runs_of(const ArcBoundary& boundary, const std::vector<AP>& path,
+                                          const std::vector<std::optional<Along>>& along) {
+  std::vector<tangent::CirclePiece> runs;
   for (std::size_t k = 0; k + 1 < path.size(); ++k) {
-    Run run{path[k], path[k + 1], std::nullopt, true, along[k].has_value()};
-    if (along[k] && boundary.piece(along[k]->edge).circle) {
+    tangent::CirclePiece run{path[k], path[k + 1], std::nullopt, true};
+    if (along[k]) {
       const ArcPiece& piece = boundary.piece(along[k]->edge);
       run.circle = piece.circle;
       run.counter_clockwise = piece.counter_clockwise == along[k]->forward;
@@ -40,37 +33,6 @@ std::vector<Run> runs_of(const ArcBoundary& boundary, const std::vector<AP>& pat
     runs.push_back(run);
   }
   return runs;
-}
-
-// The direction of travel along the run at its point x.
-AP heading(const ArcBoundary& boundary, const Run& run, const AP& x) {
-  if (!run.circle) return run.to - run.from;
-  const AP r = x - boundary.circles()[*run.circle].centre;
-  return run.counter_clockwise ? AP{-r.y, r.x} : AP{r.y, -r.x};
-}
-
-tangent::Arc arc_of(const ArcBoundary& boundary, const Run& run) {
-  const tangent::Circle* circle = &boundary.circles()[*run.circle];
-  return run.counter_clockwise ? tangent::Arc{circle, run.from, run.to} : tangent::Arc{circle, run.to, run.from};
-}
-
-std::optional<std::string> walk_blocked(const ArcBoundary& boundary, const std::vector<Run>& runs) {
-  const auto& rules = boundary.rules();
-  for (std::size_t k = 0; k <= runs.size(); ++k) {
-    const AP& at = k < runs.size() ? runs[k].from : runs.back().to;
-    std::optional<AP> in, out;
-    if (k > 0) {
-      const AP d = heading(boundary, runs[k - 1], at);
-      in = AP{-d.x, -d.y};
-    }
-    if (k < runs.size()) out = heading(boundary, runs[k], at);
-    if (auto why = rules.blocked_at(at, in, out)) return why;
-    if (k == runs.size()) break;
-    if (auto why = runs[k].circle ? tangent::arc_blocked(rules, arc_of(boundary, runs[k]), true)
-                                  : rules.segment_blocked(runs[k].from, runs[k].to))
-      return why;
-  }
-  return std::nullopt;
 }
 
 // x itself when it is rational (a corner of a polygon's Minkowski sum, a wall's end): the simplest
@@ -111,14 +73,15 @@ ExactPoint printed(const round_rules::RoundRules<Rational>& rules, const AP& x, 
 // Every point of the walk printed, its free side the sum of the left sides of the boundary runs
 // that meet there (those through the free space cross it: their sides say nothing).
 std::vector<ExactPoint> printed_path(const ArcBoundary& boundary, const std::vector<AP>& path,
-                                     const std::vector<Run>& runs, const Query& query) {
+                                     const std::vector<tangent::CirclePiece>& runs,
+                                     const std::vector<std::optional<Along>>& along, const Query& query) {
   const round_rules::RoundRules<Rational> rules(boundary.world().cspace(), [](const Rational& q) { return q; });
   std::vector<ExactPoint> out;
   for (std::size_t k = 0; k < path.size(); ++k) {
     AP side{Algebraic(0), Algebraic(0)};
-    for (const Run* run : {k > 0 ? &runs[k - 1] : nullptr, k < runs.size() ? &runs[k] : nullptr})
-      if (run && run->along_boundary) {
-        const AP d = heading(boundary, *run, path[k]);
+    for (const std::size_t r : {k - 1, k})  // the runs arriving and leaving (k - 1 wraps past the end at k = 0)
+      if (r < runs.size() && along[r]) {
+        const AP d = boundary.heading(runs[r], path[k]);
         side = side + AP{-d.y, d.x};
       }
     out.push_back(printed(rules, path[k], side));
@@ -147,22 +110,6 @@ void mark(PlanReport<ExactPoint>& report, const std::vector<ExactPoint>& printed
   if (!walk.leaves.empty()) report.recording.marks.push_back({Kind::points, "leave points", {exact(walk.leaves)}});
 }
 
-PathPiece path_piece(const ArcBoundary& boundary, const Run& run, const ExactPoint& from, const ExactPoint& to,
-                     const tangent::LengthBounds& bounds) {
-  PathPiece out;
-  out.from = {to_double(from.x), to_double(from.y)};
-  out.to = {to_double(to.x), to_double(to.y)};
-  out.length = (bounds.lower + bounds.upper) / 2;
-  if (run.circle) {
-    const tangent::Circle& circle = boundary.circles()[*run.circle];
-    out.kind = PathPiece::Kind::arc;
-    out.centre = {to_double(circle.exact_centre.x), to_double(circle.exact_centre.y)};
-    out.radius = to_double(circle.exact_radius);
-    out.counter_clockwise = run.counter_clockwise;
-  }
-  return out;
-}
-
 }  // namespace
 
 void report_walk(PlanReport<ExactPoint>& report, const ArcBoundary& boundary, const BasicWalk<AP>& walk,
@@ -171,16 +118,15 @@ void report_walk(PlanReport<ExactPoint>& report, const ArcBoundary& boundary, co
   std::vector<std::optional<Along>> along = walk.along;
   const AP goal = ArcBoundary::point(query.goal);
   if (arrived && !(path.back() == goal)) path.push_back(goal), along.emplace_back();
-  const std::vector<Run> runs = runs_of(boundary, path, along);
-  std::vector<ExactPoint> printed = printed_path(boundary, path, runs, query);
+  const std::vector<tangent::CirclePiece> runs = runs_of(boundary, path, along);
+  std::vector<ExactPoint> printed = printed_path(boundary, path, runs, along, query);
   if (arrived) printed.back() = query.goal;
   tangent::LengthBounds total;
   std::vector<PathPiece> pieces;
   for (std::size_t k = 0; k < runs.size(); ++k) {
-    const auto bounds = runs[k].circle ? tangent::arc_length(arc_of(boundary, runs[k]))
-                                       : tangent::segment_length(runs[k].from, runs[k].to);
+    const auto bounds = tangent::length_bounds(runs[k], boundary.circles());
     total = total + bounds;
-    pieces.push_back(path_piece(boundary, runs[k], printed[k], printed[k + 1], bounds));
+    pieces.push_back(tangent::path_piece(runs[k], boundary.circles(), printed[k], printed[k + 1], bounds));
   }
   total.lower = std::max(0.0, total.lower);
   report.facts.set(BugFacts::hits, doubles(walk.hits));
@@ -188,7 +134,8 @@ void report_walk(PlanReport<ExactPoint>& report, const ArcBoundary& boundary, co
   report.facts.set(BugFacts::distance, (total.lower + total.upper) / 2);
   if (record) mark(report, printed, query, arrived, walk);
   // Checked, so that a mistake here is an answer that says so, never a path through an obstacle.
-  const auto blocked = runs.empty() ? std::nullopt : walk_blocked(boundary, runs);
+  const auto blocked =
+      runs.empty() ? std::nullopt : tangent::path_blocked(boundary.rules(), runs, boundary.circles(), true);
   if (!blocked) {
     report.path = printed;
     if (report.path.size() == 1) report.path.push_back(report.path.front());

@@ -68,4 +68,24 @@ LengthBounds operator+(const LengthBounds& a, const LengthBounds& b) {
   return {down(a.lower + b.lower), up(a.upper + b.upper)};
 }
 
+LengthBounds length_bounds(const CirclePiece& piece, const std::vector<Circle>& circles) {
+  return piece.circle ? arc_length(arc_of(piece, circles)) : segment_length(piece.from, piece.to);
+}
+
+PathPiece path_piece(const CirclePiece& piece, const std::vector<Circle>& circles, const ExactPoint& from,
+                     const ExactPoint& to, const LengthBounds& bounds) {
+  const auto doubles = [](const ExactPoint& p) { return FactPoint{to_double(p.x), to_double(p.y)}; };
+  PathPiece out;
+  out.from = doubles(from);
+  out.to = doubles(to);
+  out.length = (bounds.lower + bounds.upper) / 2;
+  if (piece.circle) {
+    out.kind = PathPiece::Kind::arc;
+    out.centre = doubles(circles[*piece.circle].exact_centre);
+    out.radius = to_double(circles[*piece.circle].exact_radius);
+    out.counter_clockwise = piece.counter_clockwise;
+  }
+  return out;
+}
+
 }  // namespace polyplan::tangent

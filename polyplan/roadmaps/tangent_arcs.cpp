@@ -226,4 +226,35 @@ std::optional<std::string> arc_blocked(const Rules& rules, const Arc& arc, bool 
   return leaves_bounds(rules, arc, open);
 }
 
+AP heading(const CirclePiece& piece, const AP& x, const std::vector<Circle>& circles) {
+  if (!piece.circle) return piece.to - piece.from;
+  const AP radial = x - circles[*piece.circle].centre;
+  return piece.counter_clockwise ? perpendicular(radial) : AP{radial.y, -radial.x};
+}
+
+Arc arc_of(const CirclePiece& piece, const std::vector<Circle>& circles) {
+  const Circle* circle = &circles[*piece.circle];
+  return piece.counter_clockwise ? Arc{circle, piece.from, piece.to} : Arc{circle, piece.to, piece.from};
+}
+
+std::optional<std::string> path_blocked(const Rules& rules, const std::vector<CirclePiece>& pieces,
+                                        const std::vector<Circle>& circles, bool open) {
+  for (std::size_t k = 0; k <= pieces.size(); ++k) {
+    const AP& at = k < pieces.size() ? pieces[k].from : pieces.back().to;
+    std::optional<AP> in, out;
+    if (k > 0) {
+      const AP arriving = heading(pieces[k - 1], at, circles);
+      in = AP{-arriving.x, -arriving.y};  // the direction it arrives from
+    }
+    if (k < pieces.size()) out = heading(pieces[k], at, circles);
+    if (auto why = rules.blocked_at(at, in, out)) return why;
+    if (k == pieces.size()) break;
+    const CirclePiece& piece = pieces[k];
+    if (auto why = piece.circle ? arc_blocked(rules, arc_of(piece, circles), open)
+                                : rules.segment_blocked(piece.from, piece.to))
+      return why;
+  }
+  return std::nullopt;
+}
+
 }  // namespace polyplan::tangent

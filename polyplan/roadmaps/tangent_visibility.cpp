@@ -46,7 +46,6 @@ struct Link {
 };
 
 AP direction(const AP& from, const AP& to) { return to - from; }
-AP perpendicular(const AP& v) { return {-v.y, v.x}; }
 FactPoint approximate(const AP& p) { return {p.x.doubleValue(), p.y.doubleValue()}; }
 ExactPoint nearest_rational(const AP& p) {
   const FactPoint d = approximate(p);
@@ -238,10 +237,7 @@ class QueryGraph {
 
 // A found path as pieces: segments, and arcs with their circle and turn; zero-length pieces left
 // out, consecutive arcs of one circle turning the same way merged.
-struct Piece {
-  std::optional<std::size_t> circle;
-  bool counter_clockwise = true;
-  AP from, to;
+struct Piece : tangent::CirclePiece {
   std::size_t from_owner = 0, to_owner = 0;  // the circles (or the start or goal) its ends touch
 };
 
@@ -252,61 +248,12 @@ std::vector<Piece> pieces_of(const QueryGraph& graph, const std::vector<RoadmapV
     const Link& link = graph.links().at(std::minmax(u, v));
     const AP &a = graph.points()[u], &b = graph.points()[v];
     if (a == b) continue;
-    const Piece piece{link.circle, !link.circle || link.u == u, a, b, graph.owners()[u], graph.owners()[v]};
+    const Piece piece{{a, b, link.circle, !link.circle || link.u == u}, graph.owners()[u], graph.owners()[v]};
     if (piece.circle && !out.empty() && out.back().circle == piece.circle &&
         out.back().counter_clockwise == piece.counter_clockwise) {
       out.back().to = b;
       out.back().to_owner = piece.to_owner;
     } else out.push_back(piece);
-  }
-  return out;
-}
-
-// The piece's direction of travel where it leaves `at` (its start) or, reversed, arrives there.
-AP heading(const Piece& piece, const AP& at, const std::vector<Circle>& circles) {
-  if (!piece.circle) return at == piece.from ? direction(piece.from, piece.to) : direction(piece.to, piece.from);
-  const AP radial = at - circles[*piece.circle].centre;
-  const bool forward = at == piece.from ? piece.counter_clockwise : !piece.counter_clockwise;
-  return forward ? perpendicular(radial) : AP{radial.y, -radial.x};
-}
-
-Arc arc_of(const Piece& piece, const std::vector<Circle>& circles) {
-  const Circle* circle = &circles[*piece.circle];
-  return piece.counter_clockwise ? Arc{circle, piece.from, piece.to} : Arc{circle, piece.to, piece.from};
-}
-
-// The whole path checked again, piece by piece and at every joint (the directions it arrives from
-// and leaves along), independently of how the graph found it.
-std::optional<std::string> path_blocked(const Rules& rules, const std::vector<Piece>& pieces,
-                                        const std::vector<Circle>& circles) {
-  for (std::size_t k = 0; k <= pieces.size(); ++k) {
-    const AP& at = k < pieces.size() ? pieces[k].from : pieces.back().to;
-    std::optional<AP> in, out;
-    if (k > 0) in = heading(pieces[k - 1], at, circles);
-    if (k < pieces.size()) out = heading(pieces[k], at, circles);
-    if (auto why = rules.blocked_at(at, in, out)) return why;
-    if (k == pieces.size()) break;
-    const Piece& piece = pieces[k];
-    if (auto why = piece.circle ? tangent::arc_blocked(rules, arc_of(piece, circles))
-                                : rules.segment_blocked(piece.from, piece.to))
-      return why;
-  }
-  return std::nullopt;
-}
-
-FactPoint doubles(const ExactPoint& p) { return {to_double(p.x), to_double(p.y)}; }
-
-// The piece as reported, its ends as printed (printed_point), `ends` the circles they touch.
-PathPiece path_piece(const Piece& piece, const std::vector<Circle>& ends, const tangent::LengthBounds& bounds) {
-  PathPiece out;
-  out.from = doubles(printed_point(piece.from, ends[piece.from_owner]));
-  out.to = doubles(printed_point(piece.to, ends[piece.to_owner]));
-  out.length = (bounds.lower + bounds.upper) / 2;
-  if (piece.circle) {
-    out.kind = PathPiece::Kind::arc;
-    out.centre = doubles(ends[*piece.circle].exact_centre);
-    out.radius = to_double(ends[*piece.circle].exact_radius);
-    out.counter_clockwise = piece.counter_clockwise;
   }
   return out;
 }
@@ -360,15 +307,19 @@ PlanReport<ExactPoint> TangentVisibilityGraph::Impl::plan(const Query& query, co
     const std::vector<Piece> pieces = pieces_of(graph, result.path);
     report.path = {query.start};
     if (!pieces.empty()) {
-      if (auto why = path_blocked(rules, pieces, circles))  // a bug, never a tolerance call
+      // The whole path checked again, piece by piece and at every joint, independently of how
+      // the graph found it: a bug, never a tolerance call.
+      if (auto why =
+              tangent::path_blocked(rules, std::vector<tangent::CirclePiece>(pieces.begin(), pieces.end()), circles))
         throw std::logic_error("tangent visibility graph produced an invalid path: " + *why);
       tangent::LengthBounds total;
       for (const Piece& piece : pieces) {
-        const auto bounds =
-            piece.circle ? tangent::arc_length(arc_of(piece, circles)) : tangent::segment_length(piece.from, piece.to);
+        const auto bounds = tangent::length_bounds(piece, circles);
         total = total + bounds;
-        report.pieces.push_back(path_piece(piece, ends, bounds));
-        report.path.push_back(printed_point(piece.to, ends[piece.to_owner]));
+        const ExactPoint to = printed_point(piece.to, ends[piece.to_owner]);
+        report.pieces.push_back(
+            tangent::path_piece(piece, circles, printed_point(piece.from, ends[piece.from_owner]), to, bounds));
+        report.path.push_back(to);
       }
       total.lower = std::max(0.0, total.lower);
       report.length = (total.lower + total.upper) / 2;

@@ -19,13 +19,8 @@ namespace polyplan::walk {
 
 using AP = AlgebraicPoint;
 
-// A segment from `from` to `to`, or the arc of circles[*circle] between them, turning
-// counter-clockwise or not.
-struct ArcPiece {
-  AP from, to;
-  std::optional<std::size_t> circle;
-  bool counter_clockwise = true;
-};
+// A piece of the boundary: a segment, or an arc of one of the boundary's circles.
+using ArcPiece = tangent::CirclePiece;
 
 // "(x, y)" with six decimals, as walk::text prints a rational point.
 std::string text(const AP& p);
@@ -42,9 +37,7 @@ class ArcBoundary {
   const RoundWorld& world() const { return *world_; }
   const ArcPiece& piece(Edge e) const { return cycles_[e.cycle][e.index % cycles_[e.cycle].size()]; }
   // The direction of travel along `piece` at its point x.
-  AP heading(const ArcPiece& piece, const AP& x) const;
-  // The arc of a piece as tangent_arcs.hpp takes it (counter-clockwise from its first end).
-  tangent::Arc arc(const ArcPiece& piece) const;
+  AP heading(const ArcPiece& piece, const AP& x) const { return tangent::heading(piece, x, circles_); }
 
   // What the Bug planners ask of a boundary, as walk::Boundary answers it for straight edges.
   static AP point(const ExactPoint& p) { return algebraic(p); }

@@ -7,6 +7,7 @@
 // algebraic numbers: a tangent point is a + b√c.
 #include <polyplan/roadmaps/detail/algebraic.hpp>
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
@@ -56,5 +57,25 @@ bool turns_before(const AlgebraicPoint& a, const AlgebraicPoint& u, const Algebr
 // touch anything at its ends, and runs along the bounds where it is an arc of their circle.
 std::optional<std::string> arc_blocked(const round_rules::RoundRules<Algebraic>& rules, const Arc& arc,
                                        bool open = false);
+
+// A piece of a path: the segment from `from` to `to`, or the arc of circles[*circle] between them,
+// turning counter-clockwise or not — a tangent path's pieces, and the Bug planners' boundary.
+struct CirclePiece {
+  AlgebraicPoint from, to;
+  std::optional<std::size_t> circle;
+  bool counter_clockwise = true;
+};
+
+// The direction of travel along the piece at its point x.
+AlgebraicPoint heading(const CirclePiece& piece, const AlgebraicPoint& x, const std::vector<Circle>& circles);
+// The piece's arc as Arc takes it (counter-clockwise from its first end).
+Arc arc_of(const CirclePiece& piece, const std::vector<Circle>& circles);
+
+// Why the path of pieces is blocked, or none: every piece (its arcs as arc_blocked checks them,
+// `open` or not) and every joint, with the direction the path arrives from and the one it leaves
+// along. The exact check of a path whose points are irrational.
+std::optional<std::string> path_blocked(const round_rules::RoundRules<Algebraic>& rules,
+                                        const std::vector<CirclePiece>& pieces, const std::vector<Circle>& circles,
+                                        bool open = false);
 
 }  // namespace polyplan::tangent
