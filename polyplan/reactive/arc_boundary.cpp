@@ -289,12 +289,15 @@ std::optional<std::string> ArcBoundary::query_not_free(const Query& query) const
   return polyplan::query_not_free(*world_, query);
 }
 
+bool ArcBoundary::sees(const AP& from, const AP& to) const {
+  const AP d = to - from;
+  return !rules_.blocked_at(from, std::nullopt, d) && !rules_.segment_blocked(from, to) &&
+         !rules_.blocked_at(to, AP{-d.x, -d.y}, std::nullopt);
+}
+
 std::optional<AP> ArcBoundary::first_hit(const AP& from, const AP& to) const {
   const AP d = to - from;
-  const auto free = [&](const AP& end) {
-    return !rules_.blocked_at(from, std::nullopt, d) && !rules_.segment_blocked(from, end) &&
-           !rules_.blocked_at(end, AP{-d.x, -d.y}, std::nullopt);
-  };
+  const auto free = [&](const AP& end) { return sees(from, end); };
   if (free(to)) return std::nullopt;
   std::vector<Algebraic> ts{Algebraic(0), Algebraic(1)};
   for (const auto& cycle : cycles_)
@@ -354,11 +357,35 @@ std::size_t ArcBoundary::crossings(std::size_t cycle, const AP& s, const AP& g) 
 
 std::vector<AP> ArcBoundary::line_points(Edge e, const AP& a, const AP& b, const AP& s, const AP& g) const {
   const ArcPiece& p = piece(e);
-  std::vector<AP> met, out;
-  if (a == b) return out;
+  std::vector<AP> met;
+  if (a == b) return met;
   if (p.circle) segment_circle(s, g, circles_[*p.circle].centre, circles_[*p.circle].radius, met);
-  else segment_segment(a, b, s, g, met);
-  for (const AP& x : met)
+  else segment_segment(p.from, p.to, s, g, met);
+  return in_walking_order(p, a, b, met);
+}
+
+std::vector<AP> ArcBoundary::circle_points(Edge e, const AP& a, const AP& b, const AP& centre,
+                                           const Algebraic& radius) const {
+  const ArcPiece& p = piece(e);
+  std::vector<AP> met;
+  if (p.circle) circle_circle(circles_[*p.circle], tangent::Circle{centre, radius, {}, {}, ""}, met);
+  else segment_circle(p.from, p.to, centre, radius, met);
+  return in_walking_order(p, a, b, met);
+}
+
+std::vector<AP> ArcBoundary::touching_points(Edge e, const AP& a, const AP& b, const AP& p) const {
+  const ArcPiece& arc = piece(e);
+  std::vector<AP> touching;
+  if (arc.circle)
+    for (const tangent::Tangent& t : tangent::common_tangents({p, Algebraic(0), {}, {}, ""}, circles_[*arc.circle]))
+      touching.push_back(t.to);
+  return in_walking_order(arc, a, b, touching);
+}
+
+std::vector<AP> ArcBoundary::in_walking_order(const ArcPiece& p, const AP& a, const AP& b,
+                                              const std::vector<AP>& points) const {
+  std::vector<AP> out;
+  for (const AP& x : points)
     if (within(p, a, b, x) && std::none_of(out.begin(), out.end(), [&](const AP& y) { return y == x; }))
       out.push_back(x);
   std::sort(out.begin(), out.end(), [&](const AP& x, const AP& y) { return before(p, x, y); });
@@ -371,12 +398,10 @@ AP ArcBoundary::nearest(Edge e, const AP& a, const AP& b, const AP& p) const {
   const ArcPiece& piece = this->piece(e);
   const auto nearer = [&](const AP& x, const AP& y) { return squared(x - p) <= squared(y - p) ? x : y; };
   AP best = nearer(a, b);
-  if (!piece.circle) {
-    const AP d = b - a;
-    if (sign_of(squared(d)) == 0) return a;
-    const Algebraic t = dot(p - a, d) / squared(d);
-    if (sign_of(t) > 0 && t < Algebraic(1)) best = nearer(best, a + times(d, t));
-    return best;
+  if (!piece.circle) {  // the foot on the piece's own line, from its own ends: numbers of lower degree than a's
+    const AP d = piece.to - piece.from;
+    const AP foot = piece.from + times(d, dot(p - piece.from, d) / squared(d));
+    return within(piece, a, b, foot) ? nearer(best, foot) : best;
   }
   const tangent::Circle& circle = circles_[*piece.circle];
   const AP w = p - circle.centre;

@@ -1,10 +1,11 @@
 // A Bug planner's walk along a boundary with arcs, reported (detail/arc_boundary.hpp): each run of
 // the walk is a segment, or an arc where it followed an arc of the boundary; the whole walk is
-// checked again run by run and at every joint by the tangent paths' own check (tangent::path_blocked,
-// its arcs open: their ends may touch the obstacles where two boundary pieces meet); its length is
-// bounded outward and its pieces reported as theirs are (roadmaps/detail/certified_length.hpp). The points are printed
-// as the doubles nearest them, moved a step of a double at a time to the free side while the exact rules find them
-// inside an obstacle, so that a reader who tests the printed numbers finds them free.
+// checked again run by run (a run along the boundary as the boundary piece it follows) and at every joint by the
+// tangent paths' own check (tangent::path_blocked, its arcs open: their ends may touch the obstacles where two boundary
+// pieces meet); its length is bounded outward and its pieces reported as theirs are
+// (roadmaps/detail/certified_length.hpp). The points are printed as the doubles nearest them, moved a step of a double
+// at a time to the free side while the exact rules find them inside an obstacle, so that a reader who tests the printed
+// numbers finds them free.
 #include <polyplan/plan/fact_points.hpp>
 #include <polyplan/reactive/detail/arc_boundary.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
@@ -47,7 +48,11 @@ std::optional<Rational> rational(const Algebraic& x) {
     mpz_fdiv_q(whole.get_mpz_t(), rest.get_num_mpz_t(), rest.get_den_mpz_t());
     const mpz_class p2 = whole * p1 + p0, q2 = whole * q1 + q0;
     const Rational candidate(p2, q2);
-    if (algebraic(candidate) == x) return candidate;
+    // Equal as CORE decides, and as its own 80-bit approximation agrees: a guard, since CORE once
+    // found a deep number equal to a rational 4.7e-9 from its approximation (the walk's printing
+    // then takes the doubles nearest it instead, as for any irrational point).
+    if (algebraic(candidate) == x && abs(candidate - Rational(approximation.get_mp())) <= abs(candidate) * 1e-20)
+      return candidate;
     rest -= whole;
     if (rest == 0) break;
     rest = 1 / rest;
@@ -56,12 +61,31 @@ std::optional<Rational> rational(const Algebraic& x) {
   return std::nullopt;
 }
 
-// x exactly where it is rational; else the doubles nearest it, moved towards `free_side` a step at
+// The obstacle circle (a disc, a grown corner) x lies on or next to, judged in doubles, if any.
+const tangent::Circle* circle_at(const ArcBoundary& boundary, const AP& x) {
+  const double px = approximate(x.x), py = approximate(x.y);
+  for (const tangent::Circle& c : boundary.circles()) {
+    const double r = approximate(c.radius);
+    if (r > 0 && c.name != "the bounds" &&
+        std::abs(std::hypot(px - approximate(c.centre.x), py - approximate(c.centre.y)) - r) <= 1e-9 * (1 + r))
+      return &c;
+  }
+  return nullptr;
+}
+
+// On an obstacle's circle, x clear of it as the tangent paths print a touching point
+// (tangent::printed_point: so that the straight runs between printed points are free too); else x
+// exactly where it is rational, or the doubles nearest it; then moved towards `free_side` a step at
 // a time while inside an obstacle.
-ExactPoint printed(const round_rules::RoundRules<Rational>& rules, const AP& x, const AP& free_side) {
-  if (auto px = rational(x.x))
-    if (auto py = rational(x.y)) return {*px, *py};
+ExactPoint printed(const ArcBoundary& boundary, const round_rules::RoundRules<Rational>& rules, const AP& x,
+                   const AP& free_side) {
   double d[2] = {approximate(x.x), approximate(x.y)};
+  if (const tangent::Circle* circle = circle_at(boundary, x)) {
+    const ExactPoint clear = tangent::printed_point(x, *circle);
+    d[0] = to_double(clear.x), d[1] = to_double(clear.y);
+  } else if (auto px = rational(x.x)) {
+    if (auto py = rational(x.y)) return {*px, *py};
+  }
   const int way[2] = {sign_of(free_side.x), sign_of(free_side.y)};
   const double inf = std::numeric_limits<double>::infinity();
   for (int step = 0; step < 64 && rules.contact({Rational(d[0]), Rational(d[1])}).inside; ++step)
@@ -70,8 +94,9 @@ ExactPoint printed(const round_rules::RoundRules<Rational>& rules, const AP& x, 
   return {Rational(d[0]), Rational(d[1])};
 }
 
-// Every point of the walk printed, its free side the sum of the left sides of the boundary runs
-// that meet there (those through the free space cross it: their sides say nothing).
+// Every point of the walk printed, its free side the sum of the free sides of the boundary runs
+// that meet there (the left walking forwards, the right walking back) (those through the free space cross it: their
+// sides say nothing).
 std::vector<ExactPoint> printed_path(const ArcBoundary& boundary, const std::vector<AP>& path,
                                      const std::vector<tangent::CirclePiece>& runs,
                                      const std::vector<std::optional<Along>>& along, const Query& query) {
@@ -81,10 +106,10 @@ std::vector<ExactPoint> printed_path(const ArcBoundary& boundary, const std::vec
     AP side{Algebraic(0), Algebraic(0)};
     for (const std::size_t r : {k - 1, k})  // the runs arriving and leaving (k - 1 wraps past the end at k = 0)
       if (r < runs.size() && along[r]) {
-        const AP d = boundary.heading(runs[r], path[k]);
-        side = side + AP{-d.y, d.x};
+        const AP d = boundary.heading(runs[r], path[k]);  // the free side: left walking forwards, right back
+        side = side + (along[r]->forward ? AP{-d.y, d.x} : AP{d.y, -d.x});
       }
-    out.push_back(printed(rules, path[k], side));
+    out.push_back(printed(boundary, rules, path[k], side));
   }
   out.front() = query.start;  // exactly
   return out;
@@ -134,8 +159,15 @@ void report_walk(PlanReport<ExactPoint>& report, const ArcBoundary& boundary, co
   report.facts.set(BugFacts::distance, (total.lower + total.upper) / 2);
   if (record) mark(report, printed, query, arrived, walk);
   // Checked, so that a mistake here is an answer that says so, never a path through an obstacle.
+  // A run along the boundary is checked as the whole boundary piece it follows: the same proof (the
+  // run lies on the piece), and the piece's ends are where world curves meet, numbers of low degree,
+  // while a point a walk stopped at may be a touching point from a touching point (tangent-bug):
+  // CORE decides those only slowly where they touch.
+  std::vector<tangent::CirclePiece> covers = runs;
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    if (along[k]) covers[k] = boundary.piece(along[k]->edge);
   const auto blocked =
-      runs.empty() ? std::nullopt : tangent::path_blocked(boundary.rules(), runs, boundary.circles(), true);
+      runs.empty() ? std::nullopt : tangent::path_blocked(boundary.rules(), runs, boundary.circles(), true, &covers);
   if (!blocked) {
     report.path = printed;
     if (report.path.size() == 1) report.path.push_back(report.path.front());

@@ -81,6 +81,7 @@ class Boundary {
   double length(Edge, const Point& a, const Point& b) const { return distance(a, b); }
   static Point point(const ExactPoint& p) { return p; }
   static Rational squared_distance(const Point& a, const Point& b) { return squared(a, b); }
+  static Rational number(const Rational& q) { return q; }
   // How often the segment start-goal meets a cycle (distinct points; a wall met counts its two
   // sides, as a thin obstacle's are met going in and coming out).
   std::size_t crossings(std::size_t cycle, const Point& start, const Point& goal) const;

@@ -3,8 +3,8 @@
 #include <polyplan/geometry/path_check.hpp>
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/reactive/detail/tangent_senses.hpp>
 #include <polyplan/reactive/reactive_facts.hpp>
-#include <polyplan/reactive/visibility_region.hpp>
 #include <polyplan/reactive/walk_report.hpp>
 
 #include <algorithm>
@@ -12,6 +12,7 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
 #include <vector>
 
 namespace polyplan {
@@ -33,228 +34,310 @@ double parse_range(const std::string& text) {
 
 std::string range_text(double range) { return std::isinf(range) ? "inf" : detail::show_number(range); }
 
-// The point of a-b at the rational copy of t, moved on towards the parameter `last` in growing
-// steps until `holds` (which must hold at `last`): how an irrational event point becomes a
-// rational point on the same line, a few ulps past it.
-template <class Holds>
-Point first_where(const Point& a, const Point& b, double t, const Rational& last, Holds holds) {
-  const double end = to_double(last);
-  double step = std::numeric_limits<double>::epsilon() * std::max(std::abs(t), std::numeric_limits<double>::min());
-  for (t = std::max(t, 0.0); t < end; t += step, step *= 2)
-    if (const Point p = along(a, b, Rational(t)); holds(p)) return p;
-  return along(a, b, last);
+double measure(const Rational& q) { return to_double(q); }
+double measure(const Algebraic& x) { return approximate(x); }
+// A measure for choosing among moves only (the heuristic d(x, O) + d(O, goal), the directions):
+// CORE's filter double, which costs nothing, where approximate() would refine a deep number.
+double estimate(const Rational& q) { return to_double(q); }
+double estimate(const Algebraic& x) { return x.doubleValue(); }
+
+// The direction of travel along edge e at its point x, exactly.
+Point heading(const Boundary& boundary, Edge e, const Point&) {
+  return {boundary.end(e).x - boundary.start(e).x, boundary.end(e).y - boundary.start(e).y};
 }
+AP heading(const ArcBoundary& boundary, Edge e, const AP& x) { return boundary.heading(boundary.piece(e), x); }
 
-struct Candidate {
-  Point to;
-  double heuristic;  // d(x, n) + d(n, goal)
-};
+// The walk over the boundary that S senses (PolygonSenses or ArcSenses, detail/tangent_senses.hpp).
+template <class S>
+struct TangentWalk {
+  using B = typename S::Boundary;
+  using P = typename B::Point;
+  using N = typename S::Number;
 
-// The candidate of least heuristic (the first of equals), if any.
-std::optional<Candidate> best_of(const std::vector<Candidate>& candidates) {
-  std::optional<Candidate> best;
-  for (const Candidate& c : candidates)
-    if (!best || c.heuristic < best->heuristic) best = c;
-  return best;
-}
-
-}  // namespace
-
-struct TangentBugPlanner::Impl {
-  Boundary boundary;
-  VisibilityRegions regions;
-  double range;
+  B boundary;
+  S senses;
   TangentBugOptions options;
 
-  Impl(const CSpace& cspace, TangentBugOptions o)
-      : boundary(cspace), regions(boundary), range(parse_range(o.sensor_range)), options(std::move(o)) {}
+  template <class Problem>
+  TangentWalk(const Problem& problem, TangentBugOptions o)
+      : boundary(problem), senses(boundary, parse_range(o.sensor_range)), options(std::move(o)) {}
 
-  bool senses(const Point& x, const Point& p) const {
-    return std::isinf(range) || squared(x, p) <= Rational(range) * Rational(range);
+  // A move: to a point, straight or along an edge, with d(x, to) + d(to, goal); `from_x`: the
+  // point computed from where the robot sets out (a touching point, where its way hits).
+  struct Candidate {
+    P to;
+    double heuristic;
+    std::optional<Along> along;
+    bool from_x = false;
+  };
+
+  static double distance(const P& a, const P& b) { return std::sqrt(measure(B::squared_distance(a, b))); }
+  static double about(const P& a, const P& b) { return std::sqrt(estimate(B::squared_distance(a, b))); }
+  static N dot(const P& u, const P& v) { return u.x * v.x + u.y * v.y; }
+
+  // The candidate of least heuristic (the first of equals), if any.
+  static std::optional<Candidate> best_of(const std::vector<Candidate>& candidates) {
+    std::optional<Candidate> best;
+    for (const Candidate& c : candidates)
+      if (!best || c.heuristic < best->heuristic) best = c;
+    return best;
   }
+
+  static N cross(const P& u, const P& v) { return u.x * v.y - u.y * v.x; }
+
+  // Whether direction d lies in the closed wedge turning counter-clockwise from a to b (all round
+  // when b is a's direction).
+  static bool in_wedge(const P& a, const P& b, const P& d) {
+    const auto half = [&](const P& v) {
+      return cross(a, v) > N(0) || (cross(a, v) == N(0) && dot(a, v) > N(0)) ? 0 : 1;
+    };
+    if (cross(a, b) == N(0) && dot(a, b) > N(0)) return true;
+    const int hb = half(b), hd = half(d);
+    return hd < hb || (hd == hb && !(cross(b, d) > N(0)));
+  }
+
+  // Whether the robot at x, on edge `on` if any, may set out along d: into the free side of the
+  // boundary it is on (a wall's point has two sides, and the walk is on one). Off the boundary,
+  // and into the obstacles, the exact test of the way (boundary.first_hit) decides.
+  bool may_set_out(const P& x, const std::optional<Edge>& on, const P& d) const {
+    if (!on) return true;
+    const P ahead = heading(boundary, *on, x);
+    if (!(x == boundary.start(*on))) return !(cross(ahead, d) < N(0));
+    const P before = heading(boundary, previous(*on), x);
+    return in_wedge(ahead, P{-before.x, -before.y}, d);
+  }
+
+  // Where the straight way from x (on edge `on`, if any) to p first stops being free.
+  std::optional<P> first_hit(const P& x, const std::optional<Edge>& on, const P& p) const {
+    if (!may_set_out(x, on, P{p.x - x.x, p.y - x.y})) return x;
+    return boundary.first_hit(x, p);
+  }
+
+  // The edge before e along its cycle.
+  Edge previous(Edge e) const { return {e.cycle, (e.index + boundary.size(e.cycle) - 1) % boundary.size(e.cycle)}; }
 
   // Where the robot at x goes on straight for the goal, given where its straight way is first
   // blocked (`hit`, boundary.first_hit): the goal when the way is free; the point at the range
   // short of the obstacle when that is out of range (the obstacle itself for a touch sensor);
   // nullopt when the blocking obstacle is sensed.
-  std::optional<Point> straight_on(const Point& x, const Point& goal, const std::optional<Point>& hit) const {
+  std::optional<P> straight_on(const P& x, const P& goal, const std::optional<P>& hit) const {
     if (!hit) return goal;
-    if (*hit == x || senses(x, *hit)) return std::nullopt;
-    if (range == 0) return *hit;
-    const double t = 1 - range / distance(x, *hit);
-    return first_where(x, *hit, t, Rational(1), [&](const Point& p) { return senses(p, *hit); });
+    if (*hit == x || senses.senses(x, *hit)) return std::nullopt;
+    if (senses.range() == 0) return *hit;
+    return senses.short_of(x, *hit, goal);
   }
 
   // The farthest point the robot at x sees free on its straight way to the goal: d_reach is its
   // distance to the goal.
-  Point reach(const Point& x, const Point& goal) const {
-    const Point end = boundary.first_hit(x, goal).value_or(goal);
-    if (senses(x, end)) return end;
-    return along(x, end, Rational(range / distance(x, end)));
+  P reach(const P& x, const std::optional<Edge>& on, const P& goal) const {
+    const P end = first_hit(x, on, goal).value_or(goal);
+    return senses.senses(x, end) ? end : senses.ahead(x, end, goal);
   }
 
-  // The discontinuities the robot at x senses and can head for, with d(x, O) + d(O, goal).
-  std::vector<Candidate> discontinuities(const Point& x, const Point& goal, const std::vector<Point>& region) const {
+  // The points that may be discontinuities at x, with d(x, O) + d(O, goal), least first (equals in
+  // the order the senses give them). Points computed from x only where x is not itself computed
+  // from an earlier stop (`derived`): a touching point from a touching point is a number of degree
+  // four over the world's, and each stop more squares it; CORE decides touching at such points
+  // only very slowly. From a derived point the robot heads for corners, slides and hit points,
+  // and looks for touching lines again where a slide ends.
+  std::vector<Candidate> candidates(const P& x, bool derived, const P& goal) const {
     std::vector<Candidate> out;
-    for (const auto& [near, far] : windows(boundary, x, region))
-      if (senses(x, near) && check_segment(boundary.cspace(), x, near).valid)
-        out.push_back({near, distance(x, near) + distance(near, goal)});
+    for (const auto& [o, from_x] : senses.candidates(x, !derived))
+      out.push_back({o, about(x, o) + about(o, goal), std::nullopt, from_x});
+    std::stable_sort(out.begin(), out.end(),
+                     [](const Candidate& a, const Candidate& b) { return a.heuristic < b.heuristic; });
     return out;
   }
 
-  // Those of `sensed` nearer the goal than x: the ones motion to the goal may head for.
-  static std::vector<Candidate> nearer_goal(const std::vector<Candidate>& sensed, const Point& x, const Point& goal) {
+  // The best discontinuity nearer the goal than x: the one motion to the goal may head for.
+  std::optional<Candidate> best_nearer_goal(const std::vector<Candidate>& candidates, const P& x,
+                                            const std::optional<Edge>& on, const P& goal) const {
+    for (const Candidate& c : candidates)
+      if (B::squared_distance(c.to, goal) < B::squared_distance(x, goal) && senses_from(x, on, c.to)) return c;
+    return std::nullopt;
+  }
+
+  // All the discontinuities the robot at x senses (boundary following chooses its way by them).
+  std::vector<Candidate> discontinuities(const std::vector<Candidate>& candidates, const P& x,
+                                         const std::optional<Edge>& on) const {
     std::vector<Candidate> out;
-    for (const Candidate& c : sensed)
-      if (squared(c.to, goal) < squared(x, goal)) out.push_back(c);
+    for (const Candidate& c : candidates)
+      if (senses_from(x, on, c.to)) out.push_back(c);
     return out;
+  }
+
+  // Whether o is a discontinuity the robot at x on edge `on` senses, on its side of the boundary.
+  bool senses_from(const P& x, const std::optional<Edge>& on, const P& o) const {
+    return may_set_out(x, on, P{o.x - x.x, o.y - x.y}) && senses.discontinuity(x, o);
+  }
+
+  // The two ways along the boundary from x on edge e: forwards along e, and back along e (or along
+  // the edge before, when x is e's start). Each as {edge, forward, the end it walks to}.
+  std::vector<std::pair<Along, P>> ways(const P& x, Edge e) const {
+    std::vector<std::pair<Along, P>> out;
+    if (!(x == boundary.end(e))) out.push_back({Along{e, true}, boundary.end(e)});
+    const Edge back = x == boundary.start(e) ? previous(e) : e;
+    out.push_back({Along{back, false}, boundary.start(back)});
+    return out;
+  }
+
+  // The direction a way sets out in from x.
+  P setting_out(const Along& way, const P& x) const {
+    const P h = heading(boundary, way.edge, x);
+    return way.forward ? h : P{-h.x, -h.y};
   }
 
   // Whether boundary following from x goes forwards along the cycle (the obstacle on the right):
-  // yes, unless a discontinuity on the backward side (the end its direction is nearer) is strictly
-  // better than every one on the forward side. `ends` = {backward end, forward end}.
-  static bool follow_forwards(const Point& x, const std::vector<Candidate>& sensed, const std::vector<Point>& ends) {
-    const auto cosine = [&](const Point& end, const Point& o) {
-      return to_double(dot(x, end, o)) / distance(x, end) / distance(x, o);
+  // yes, unless a discontinuity on the backward side (the way out it is nearer in direction) is
+  // strictly better than every one on the forward side.
+  bool follow_forwards(const P& x, Edge e, const std::vector<Candidate>& sensed) const {
+    const P forward = heading(boundary, e, x), backward = setting_out(ways(x, e).back().first, x);
+    const auto cosine = [&](const P& way, const P& o) {
+      const P to{o.x - x.x, o.y - x.y};
+      return estimate(dot(way, to)) / std::sqrt(estimate(dot(way, way))) / about(x, o);
     };
     double best[2] = {infinity, infinity};  // backward, forward
     for (const Candidate& c : sensed) {
-      const int side = cosine(ends[1], c.to) >= cosine(ends[0], c.to) ? 1 : 0;
+      const int side = cosine(forward, c.to) >= cosine(backward, c.to) ? 1 : 0;
       best[side] = std::min(best[side], c.heuristic);
     }
     return !(best[0] < best[1]);
   }
 
-  // The ends of the boundary edges through x (its neighbours along the cycle when x is a corner).
-  std::vector<Point> edge_ends(const Point& x, const Edge& edge) const {
-    const std::size_t n = boundary.cycles()[edge.cycle].size();
-    const Point& a = boundary.vertex(edge.cycle, edge.index);
-    return {a == x ? boundary.vertex(edge.cycle, edge.index + n - 1) : a, boundary.vertex(edge.cycle, edge.index + 1)};
-  }
-
-  // Sliding along an edge through x towards the goal: as far as it brings the robot nearer.
-  std::optional<Candidate> best_slide(const Point& x, const Point& goal) const {
+  // Sliding along the edge through x towards the goal: as far as it brings the robot nearer all
+  // the way (setting out not away from the goal, towards the part's nearest point).
+  std::optional<Candidate> best_slide(const P& x, const std::optional<Edge>& edge, const P& goal) const {
     std::vector<Candidate> slides;
-    if (const auto edge = boundary.edge_at(x))
-      for (const Point& end : edge_ends(x, *edge)) {
-        if (!(dot(x, end, goal) > 0)) continue;
-        const Point to = along(x, end, std::min(Rational(dot(x, goal, end) / squared(x, end)), Rational(1)));
-        slides.push_back({to, distance(x, to) + distance(to, goal)});
-      }
+    if (!edge) return std::nullopt;
+    for (const auto& [way, end] : ways(x, *edge)) {
+      const P to_goal{goal.x - x.x, goal.y - x.y};
+      if (dot(setting_out(way, x), to_goal) < N(0)) continue;
+      const P nearest =
+          way.forward ? boundary.nearest(way.edge, x, end, goal) : boundary.nearest(way.edge, end, x, goal);
+      if (!(B::squared_distance(nearest, goal) < B::squared_distance(x, goal))) continue;
+      const P to = senses.slide_end(way.edge, way.forward, x, nearest, goal);
+      slides.push_back({to, walked(x, to, way) + about(to, goal), way});
+    }
     return best_of(slides);
   }
 
-  // On the way a-b, the first point nearer the goal than d_followed (squared: `record`); nullopt
-  // when there is none.
-  static std::optional<Point> nearer_than(const Point& a, const Point& b, const Point& goal, const Rational& record) {
-    if (a == b) return std::nullopt;
-    const Rational ab = squared(a, b);
-    const Rational foot = std::clamp(Rational(dot(a, goal, b) / ab), Rational(0), Rational(1));
-    if (!(squared(along(a, b, foot), goal) < record)) return std::nullopt;
-    // |a + t(b - a) - goal|² = record: A t² + B t + C = 0 with A = |b - a|², B = 2 (a - goal)·(b - a).
-    const double a2 = to_double(ab), b1 = 2 * to_double((a.x - goal.x) * (b.x - a.x) + (a.y - goal.y) * (b.y - a.y));
-    const double c0 = to_double(squared(a, goal) - record);
-    // The smaller root as c / q (b < 0 here, the distance falling): no cancellation.
-    const double q = (-b1 + std::sqrt(std::max(0.0, b1 * b1 - 4 * a2 * c0))) / 2;
-    const double root = q > 0 ? c0 / q : 0;
-    return first_where(a, b, root, foot, [&](const Point& p) { return squared(p, goal) < record; });
+  // The length from a to b, straight or along an edge.
+  double walked(const P& a, const P& b, const std::optional<Along>& along) const {
+    if (!along) return distance(a, b);
+    return along->forward ? boundary.length(along->edge, a, b) : boundary.length(along->edge, b, a);
   }
+
+  PlanReport<ExactPoint> plan(const Query& q, const QueryOptions& query_options) const;
 };
 
-TangentBugPlanner::TangentBugPlanner(const CSpace& cspace, TangentBugOptions options)
-    : impl_(std::make_unique<Impl>(cspace, std::move(options))) {}
-
-TangentBugPlanner::~TangentBugPlanner() = default;
-
-PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOptions& query_options) {
-  const Impl& r = *impl_;
+template <class S>
+PlanReport<ExactPoint> TangentWalk<S>::plan(const Query& q, const QueryOptions& query_options) const {
   const Stopwatch querying;
   PlanReport<ExactPoint> report;
   Facts& facts = report.facts;
   facts.set(RoadmapFacts::kind, "tangent-bug");
-  facts.set(TangentBugFacts::sensor_range, range_text(r.range));
-  Walk walk(q.start);
-  Point at = q.start;
+  facts.set(TangentBugFacts::sensor_range, range_text(senses.range()));
+  const P goal = B::point(q.goal);
+  BasicWalk<P> walk(B::point(q.start));
+  P at = walk.path.front();
   double travelled = 0;
-  std::optional<Rational> record;  // d_followed, squared
+  std::optional<N> record;  // d_followed, squared
   std::size_t stops = 0;
-  std::vector<std::vector<Point>> sensed;
+  std::vector<std::vector<ExactPoint>> sensed;
+  const auto followed = [&] { return std::sqrt(measure(*record)); };
   const auto finish = [&](bool arrived) {
-    if (record) facts.set(TangentBugFacts::d_followed, std::sqrt(to_double(*record)));
+    if (record) facts.set(TangentBugFacts::d_followed, followed());
     facts.set(TangentBugFacts::stops, stops);
     if (query_options.record && !sensed.empty())
       report.recording.marks.push_back(
           {PlanMark<ExactPoint>::Kind::regions, "sensed (visibility within range) at the first stops", sensed});
-    report_walk(report, r.boundary, walk, q, arrived, query_options.record, "tangent-bug");
+    report_walk(report, boundary, walk, q, arrived, query_options.record, "tangent-bug");
     facts.set(QueryFacts::seconds, querying.seconds());
     return std::move(report);
   };
   const auto out_of_distance = [&](const std::string& doing) {
     facts.set(QueryFacts::stopped_by, "distance limit");
-    const std::string followed = record ? ", d_followed " + detail::show_number(std::sqrt(to_double(*record))) : "";
-    report.fail(PlanStatus::limit, "the walk reached max-distance (" + detail::show_number(r.options.max_distance) +
-                                       ") at " + text(at) + doing + followed);
+    const std::string why_followed = record ? ", d_followed " + detail::show_number(followed()) : "";
+    report.fail(PlanStatus::limit, "the walk reached max-distance (" + detail::show_number(options.max_distance) +
+                                       ") at " + text(at) + doing + why_followed);
     return finish(false);
   };
-  // Goes straight to p, or as far as max-distance allows (then false).
-  const auto go = [&](const Point& p) {
-    const double d = distance(at, p);
-    if (travelled + d > r.options.max_distance) {
-      at = along(at, p, Rational((r.options.max_distance - travelled) / d));
-      walk.to(at);
+  // How the robot came to where it is: along an edge, or straight in a direction.
+  std::optional<Along> came_along;
+  P came_in{N(0), N(0)};
+  // The boundary edge the robot is on, if any: the one it came along, else the one its way ran into
+  // (at a wall, the side it is on).
+  const auto edge_here = [&]() -> std::optional<Edge> {
+    if (!came_along) return boundary.edge_at(at, came_in);
+    const Edge e = came_along->edge;
+    if (came_along->forward && at == boundary.end(e)) return Edge{e.cycle, (e.index + 1) % boundary.size(e.cycle)};
+    return e;
+  };
+  bool derived = false;  // where the robot is was computed from an earlier stop's position
+  // Goes to p, straight or along an edge, or as far as max-distance allows (then false). `computed`:
+  // p was computed from where the robot is.
+  const auto go = [&](const P& p, const std::optional<Along>& along, bool computed) {
+    came_along = along;
+    derived = computed;
+    if (!along) came_in = P{p.x - at.x, p.y - at.y};
+    const double d = walked(at, p, along);
+    if (travelled + d > options.max_distance) {
+      at = senses.cut(at, p, (options.max_distance - travelled) / d, along);
+      if (along) walk.follow(at, along->edge, along->forward);
+      else walk.to(at);
       return false;
     }
     travelled += d;
-    walk.to(p);
+    if (along) walk.follow(p, along->edge, along->forward);
+    else walk.to(p);
     at = p;
     return true;
   };
-  if (auto why = r.boundary.query_not_free(q)) {
+  if (auto why = boundary.query_not_free(q)) {
     report.fail(PlanStatus::invalid_query, *why);
     return finish(false);
   }
   for (;;) {
-    if (++stops > r.options.max_stops) {
+    if (++stops > options.max_stops) {
       facts.set(QueryFacts::stopped_by, "stop limit");
       report.fail(PlanStatus::limit,
-                  "the stop limit (" + std::to_string(r.options.max_stops) + ") ended the walk at " + text(at));
+                  "the stop limit (" + std::to_string(options.max_stops) + ") ended the walk at " + text(at));
       return finish(false);
     }
     // Motion to the goal.
-    const std::optional<Point> hit = r.boundary.first_hit(at, q.goal);
-    if (const auto on = r.straight_on(at, q.goal, hit)) {
-      if (!go(*on)) return out_of_distance(" heading for the goal");
-      if (at == q.goal) return finish(true);
+    const std::optional<Edge> here = edge_here();
+    const std::optional<P> hit = first_hit(at, here, goal);
+    if (const auto on = straight_on(at, goal, hit)) {
+      if (!go(*on, std::nullopt, !(*on == goal))) return out_of_distance(" heading for the goal");
+      if (at == goal) return finish(true);
       continue;
     }
-    const std::vector<Point> region = r.regions.visible_from(at);
-    if (query_options.record && r.range > 0 && sensed.size() < regions_drawn)
-      sensed.push_back(within_range(region, at, r.range));
-    const std::vector<Candidate> sensed_ends = r.discontinuities(at, q.goal, region);  // sensed once per stop
-    std::optional<Candidate> move = best_of(Impl::nearer_goal(sensed_ends, at, q.goal));
-    if (const auto slide = r.best_slide(at, q.goal); slide && (!move || slide->heuristic < move->heuristic))
+    if (query_options.record && senses.range() > 0 && sensed.size() < regions_drawn) {
+      if (auto region = senses.region(at); !region.empty()) sensed.push_back(std::move(region));
+    }
+    const std::vector<Candidate> sensed_ends = candidates(at, derived, goal);  // sensed once per stop
+    std::optional<Candidate> move = best_nearer_goal(sensed_ends, at, here, goal);
+    if (const auto slide = best_slide(at, here, goal); slide && (!move || slide->heuristic < move->heuristic))
       move = slide;
-    if (!move && !(*hit == at)) move = Candidate{*hit, 0};  // no discontinuity to head for: up to the obstacle
+    if (!move && !(*hit == at)) move = Candidate{*hit, 0, std::nullopt, true};  // no discontinuity: up to the obstacle
     if (move) {
-      if (!go(move->to)) return out_of_distance(" heading for the goal");
+      if (!go(move->to, move->along, move->from_x)) return out_of_distance(" heading for the goal");
       continue;
     }
     // A local minimum of the distance to the goal: boundary following.
-    const auto edge = r.boundary.edge_at(at);
+    const std::optional<Edge> edge = here;
     if (!edge) {
       report.fail(PlanStatus::not_found,
                   "tangent-bug: blocked at " + text(at) + ", off the boundary (a bug of polyplan's)");
       return finish(false);
     }
-    record = squared(at, q.goal);
+    record = B::squared_distance(at, goal);
     walk.hits.push_back(at);
-    const std::size_t c = edge->cycle, n = r.boundary.cycles()[c].size();
-    const std::vector<Point> ends = r.edge_ends(at, *edge);  // {backwards, forwards}
-    const bool forwards = Impl::follow_forwards(at, sensed_ends, ends);
-    const bool corner = at == r.boundary.vertex(c, edge->index);
-    std::size_t k = forwards ? edge->index + 1 : corner ? edge->index + n - 1 : edge->index;  // the next corner
+    const std::size_t n = boundary.size(edge->cycle);
+    Along way = follow_forwards(at, *edge, discontinuities(sensed_ends, at, edge)) ? ways(at, *edge).front().first
+                                                                                   : ways(at, *edge).back().first;
     // Walk the cycle from corner to corner until d_reach < d_followed.
-    for (std::size_t walked = 0;; ++walked, k = forwards ? k + 1 : k + n - 1) {
+    for (std::size_t walked = 0;; ++walked) {
       if (walked > n) {
         report.fail(
             PlanStatus::no_path,
@@ -262,24 +345,56 @@ PlanReport<ExactPoint> TangentBugPlanner::plan(const Query& q, const QueryOption
                 " without coming nearer the goal than d_followed: the goal is unreachable (tangent-bug is complete)");
         return finish(false);
       }
-      const Point next = r.boundary.vertex(c, k);
-      if (const auto p = Impl::nearer_than(at, next, q.goal, *record)) {  // its own distance falls below d_followed
-        if (!go(*p)) return out_of_distance(" following the boundary");
+      const P next = way.forward ? boundary.end(way.edge) : boundary.start(way.edge);
+      if (const auto p = senses.nearer_than(way.edge, way.forward, at, next, goal, *record)) {  // below d_followed
+        if (!go(*p, way, true)) return out_of_distance(" following the boundary");
         walk.leaves.push_back(at);
         break;
       }
-      if (!go(next)) return out_of_distance(" following the boundary");
-      if (const Point seen = r.reach(at, q.goal); squared(seen, q.goal) < *record) {  // it sees a point nearer
+      if (!go(next, way, false)) return out_of_distance(" following the boundary");
+      if (const P seen = reach(at, edge_here(), goal);
+          B::squared_distance(seen, goal) < *record) {  // it sees a point nearer
         walk.leaves.push_back(at);
-        if (!go(seen)) return out_of_distance(" heading for the goal");
-        if (at == q.goal) return finish(true);
+        if (!go(seen, std::nullopt, !(seen == goal))) return out_of_distance(" heading for the goal");
+        if (at == goal) return finish(true);
         break;
       }
+      way.edge = way.forward ? Edge{way.edge.cycle, (way.edge.index + 1) % n} : previous(way.edge);
     }
   }
 }
 
-PlannerEntry<TranslatingRobot> tangent_bug_planner_entry() {
+// The senses of each space's planner.
+template <class Space>
+struct SensesOf {
+  using type = PolygonSenses;  // a polygon world's C-space
+};
+template <>
+struct SensesOf<RoundRobot> {
+  using type = ArcSenses;
+};
+
+}  // namespace
+
+template <class Space>
+struct BasicTangentBugPlanner<Space>::Impl : TangentWalk<typename SensesOf<Space>::type> {
+  using TangentWalk<typename SensesOf<Space>::type>::TangentWalk;
+};
+
+template <class Space>
+BasicTangentBugPlanner<Space>::BasicTangentBugPlanner(const typename Space::Problem& problem, TangentBugOptions options)
+    : impl_(std::make_unique<Impl>(problem, std::move(options))) {}
+
+template <class Space>
+BasicTangentBugPlanner<Space>::~BasicTangentBugPlanner() = default;
+
+template <class Space>
+PlanReport<ExactPoint> BasicTangentBugPlanner<Space>::plan(const Query& q, const QueryOptions& query_options) {
+  return impl_->plan(q, query_options);
+}
+
+template <class Space>
+PlannerEntry<Space> tangent_bug_planner_entry() {
   OptionTable<TangentBugOptions> table;
   table.add(
       "sensor-range", "the range sensor's radius: a number >= 0 (0: touch only), or inf", "number in [0, inf) or inf",
@@ -296,12 +411,18 @@ PlannerEntry<TranslatingRobot> tangent_bug_planner_entry() {
             at_least(0));
   table.add("max-stops", &TangentBugOptions::max_stops,
             "stops (each one sensing) before the walk stops with status limit", at_least(1));
-  return make_planner_entry<TranslatingRobot, TangentBugOptions>(
+  return make_planner_entry<Space, TangentBugOptions>(
       "tangent-bug",
       "TangentBug: to the goal or the best discontinuity its range sensor sees, following a boundary where that stops "
       "bringing it nearer (Kamon, Rivlin & Rimon)",
-      std::move(table),
-      [](const CSpace& cspace, const TangentBugOptions& o) { return std::make_unique<TangentBugPlanner>(cspace, o); });
+      std::move(table), [](const typename Space::Problem& problem, const TangentBugOptions& o) {
+        return std::make_unique<BasicTangentBugPlanner<Space>>(problem, o);
+      });
 }
+
+template class BasicTangentBugPlanner<TranslatingRobot>;
+template class BasicTangentBugPlanner<RoundRobot>;
+template PlannerEntry<TranslatingRobot> tangent_bug_planner_entry<TranslatingRobot>();
+template PlannerEntry<RoundRobot> tangent_bug_planner_entry<RoundRobot>();
 
 }  // namespace polyplan

@@ -21,11 +21,16 @@
 // points, checked exactly like any other path. Points where the exact event is irrational (where
 // the range or d_followed meets an edge) are rational points on the same line within 1e-15 of it.
 //
+// In a round world (RoundRobot: discs, walls, a disc robot, disc bounds) it walks the Bugs'
+// boundary of segments and arcs in real algebraic numbers (detail/arc_boundary.hpp), its sensing
+// there detail/tangent_senses.hpp's ArcSenses: every stop exact, the walk reported as pieces.
+//
 // Facts: bug.hits (where boundary following began), bug.leaves, bug.distance,
 // tangent_bug.sensor_range, tangent_bug.d_followed (the last), tangent_bug.stops. The picture:
 // the m-line, hits, leaves and the sensed region (the visibility polygon within range) at the
 // first stops.
 #include <polyplan/geometry/cspace.hpp>
+#include <polyplan/geometry/round_world_check.hpp>
 #include <polyplan/plan/planner.hpp>
 #include <polyplan/plan/planner_entry.hpp>
 
@@ -41,11 +46,13 @@ struct TangentBugOptions {
   std::size_t max_stops = 10000;     // stops (each a sensing) before status limit
 };
 
-class TangentBugPlanner final : public Planner<TranslatingRobot> {
+// Space: TranslatingRobot (its problem a CSpace) or RoundRobot (a RoundWorld).
+template <class Space>
+class BasicTangentBugPlanner final : public Planner<Space> {
  public:
-  // `cspace` must outlive the planner. Throws std::invalid_argument for a bad option.
-  TangentBugPlanner(const CSpace& cspace, TangentBugOptions options = {});
-  ~TangentBugPlanner() override;
+  // The problem must outlive the planner. Throws std::invalid_argument for a bad option.
+  BasicTangentBugPlanner(const typename Space::Problem& problem, TangentBugOptions options = {});
+  ~BasicTangentBugPlanner() override;
   PlanReport<ExactPoint> plan(const Query& query, const QueryOptions& options = {}) override;
 
  private:
@@ -53,6 +60,9 @@ class TangentBugPlanner final : public Planner<TranslatingRobot> {
   std::unique_ptr<Impl> impl_;
 };
 
-PlannerEntry<TranslatingRobot> tangent_bug_planner_entry();
+using TangentBugPlanner = BasicTangentBugPlanner<TranslatingRobot>;
+
+template <class Space>
+PlannerEntry<Space> tangent_bug_planner_entry();
 
 }  // namespace polyplan

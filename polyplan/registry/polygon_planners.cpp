@@ -61,7 +61,7 @@ const PlannerRegistry<TranslatingRobot>& planners<TranslatingRobot>() {
           navigation_function_planner_entry(),
           bug_planner_entry<TranslatingRobot>(BugKind::bug1),
           bug_planner_entry<TranslatingRobot>(BugKind::bug2),
-          tangent_bug_planner_entry(),
+          tangent_bug_planner_entry<TranslatingRobot>(),
 #endif
 #if POLYPLAN_WITH_HOMOTOPY
           homotopy_planner_entry(),

@@ -2,7 +2,7 @@
 // shortest paths of the tangent visibility graph, the sampling planners over the exact rational
 // checks of geometry/round_world_check.hpp, the occupancy grid rasterised exactly
 // (geometry/round_rasterize.hpp) and driven by the replanning planners as the world's "changes"
-// happen, and the reactive planners (the Bugs where the C-obstacles are polygons and walls).
+// happen, and the reactive planners (the Bugs, TangentBug, the potential field and the navigation function).
 #include <polyplan/registry/registry.hpp>
 #include <polyplan/roadmaps/tangent_visibility.hpp>
 
@@ -17,6 +17,7 @@
 #include <polyplan/reactive/bug_planner.hpp>
 #include <polyplan/reactive/navigation_function_planner.hpp>
 #include <polyplan/reactive/potential_field_planner.hpp>
+#include <polyplan/reactive/tangent_bug_planner.hpp>
 #endif
 #if POLYPLAN_WITH_SAMPLING
 #include <polyplan/sampling/lazy_prm_planner.hpp>
@@ -66,6 +67,7 @@ const PlannerRegistry<RoundRobot>& planners<RoundRobot>() {
           round(round_potential_field_planner_entry()),
           round(bug_planner_entry<RoundRobot>(BugKind::bug1)),
           round(bug_planner_entry<RoundRobot>(BugKind::bug2)),
+          round(tangent_bug_planner_entry<RoundRobot>()),
 #endif
       }};
   return registry;

@@ -9,6 +9,8 @@
 #include <polyplan/roadmaps/detail/tangent_arcs.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <optional>
 
 namespace polyplan::tangent {
@@ -238,7 +240,8 @@ Arc arc_of(const CirclePiece& piece, const std::vector<Circle>& circles) {
 }
 
 std::optional<std::string> path_blocked(const Rules& rules, const std::vector<CirclePiece>& pieces,
-                                        const std::vector<Circle>& circles, bool open) {
+                                        const std::vector<Circle>& circles, bool open,
+                                        const std::vector<CirclePiece>* covers) {
   for (std::size_t k = 0; k <= pieces.size(); ++k) {
     const AP& at = k < pieces.size() ? pieces[k].from : pieces.back().to;
     std::optional<AP> in, out;
@@ -249,12 +252,26 @@ std::optional<std::string> path_blocked(const Rules& rules, const std::vector<Ci
     if (k < pieces.size()) out = heading(pieces[k], at, circles);
     if (auto why = rules.blocked_at(at, in, out)) return why;
     if (k == pieces.size()) break;
-    const CirclePiece& piece = pieces[k];
+    const CirclePiece& piece = covers ? (*covers)[k] : pieces[k];
     if (auto why = piece.circle ? arc_blocked(rules, arc_of(piece, circles), open)
                                 : rules.segment_blocked(piece.from, piece.to))
       return why;
   }
   return std::nullopt;
+}
+
+ExactPoint printed_point(const AP& p, const Circle& circle) {
+  if (sign_of(circle.radius) == 0) return circle.exact_centre;
+  double d[2] = {p.x.doubleValue(), p.y.doubleValue()};
+  const Rational least = circle.exact_radius * circle.exact_radius * Rational(1000000000000001, 1000000000000000);
+  for (int step = 0; step < 64; ++step) {
+    const Rational dx = Rational(d[0]) - circle.exact_centre.x, dy = Rational(d[1]) - circle.exact_centre.y;
+    if (dx * dx + dy * dy >= least) break;
+    const double inf = std::numeric_limits<double>::infinity();
+    if (sgn(dx) != 0) d[0] = std::nextafter(d[0], sgn(dx) > 0 ? inf : -inf);
+    if (sgn(dy) != 0) d[1] = std::nextafter(d[1], sgn(dy) > 0 ? inf : -inf);
+  }
+  return {Rational(d[0]), Rational(d[1])};
 }
 
 }  // namespace polyplan::tangent

@@ -52,25 +52,6 @@ ExactPoint nearest_rational(const AP& p) {
   return {Rational(d[0]), Rational(d[1])};
 }
 
-// How a path's point is printed: a corner or the query's start or goal exactly; a touching point on
-// a circle of radius ρ > 0 (irrational) as a point of doubles next to it, moved outwards a step of
-// a double at a time while it is not at least ρ·(1 + 1e-15) from the centre: a reader who tests the
-// printed numbers exactly finds them clear of the disc, and the segment between two of them too
-// (turning a tangent by a double's step brings it nearer the centre only by the square of that).
-ExactPoint printed_point(const AP& p, const Circle& circle) {
-  if (round_rules::sign_of(circle.radius) == 0) return circle.exact_centre;
-  FactPoint d = approximate(p);
-  const Rational least = circle.exact_radius * circle.exact_radius * Rational(1000000000000001, 1000000000000000);
-  for (int step = 0; step < 64; ++step) {
-    const Rational dx = Rational(d[0]) - circle.exact_centre.x, dy = Rational(d[1]) - circle.exact_centre.y;
-    if (dx * dx + dy * dy >= least) break;
-    const double inf = std::numeric_limits<double>::infinity();
-    if (sgn(dx) != 0) d[0] = std::nextafter(d[0], sgn(dx) > 0 ? inf : -inf);
-    if (sgn(dy) != 0) d[1] = std::nextafter(d[1], sgn(dy) > 0 ? inf : -inf);
-  }
-  return {Rational(d[0]), Rational(d[1])};
-}
-
 double arc_length_estimate(const Arc& arc) {
   const FactPoint c = approximate(arc.circle->centre), a = approximate(arc.from), b = approximate(arc.to);
   const double ax = a[0] - c[0], ay = a[1] - c[1], bx = b[0] - c[0], by = b[1] - c[1];
@@ -316,9 +297,9 @@ PlanReport<ExactPoint> TangentVisibilityGraph::Impl::plan(const Query& query, co
       for (const Piece& piece : pieces) {
         const auto bounds = tangent::length_bounds(piece, circles);
         total = total + bounds;
-        const ExactPoint to = printed_point(piece.to, ends[piece.to_owner]);
-        report.pieces.push_back(
-            tangent::path_piece(piece, circles, printed_point(piece.from, ends[piece.from_owner]), to, bounds));
+        const ExactPoint to = tangent::printed_point(piece.to, ends[piece.to_owner]);
+        report.pieces.push_back(tangent::path_piece(
+            piece, circles, tangent::printed_point(piece.from, ends[piece.from_owner]), to, bounds));
         report.path.push_back(to);
       }
       total.lower = std::max(0.0, total.lower);

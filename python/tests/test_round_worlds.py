@@ -32,7 +32,7 @@ def test_planners_refuse_them_naming_what_the_world_has():
                                                    r"the planner trapezoid plans polygon worlds only.*use one that plans "
                                                    r"with them \(visibility, prm, lazyprm, rrt, rrtstar, rrtconnect, "
                                                    r"raster, gvd-grid, dstar-lite, lpastar, repeated-astar, "
-                                                   r"navigation-function, potential-field, bug1, bug2\)"):
+                                                   r"navigation-function, potential-field, bug1, bug2, tangent-bug\)"):
         polyplan.plan(world, planner="trapezoid")
 
 

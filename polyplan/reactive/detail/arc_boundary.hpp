@@ -6,7 +6,8 @@
 // straight-edged one: every candidate piece (each polygon edge or wall side moved out by the
 // core's radius, each disc and each grown corner's whole circle, the bounds) cut wherever it meets
 // another, kept where the exact rules find its midpoint free with the way to its left open, and
-// linked as a face of an arrangement is walked. Only the Bug planners' units include this header.
+// linked as a face of an arrangement is walked. Only the Bug planners' units include this header
+// (bug1, bug2 and tangent-bug's).
 #include <polyplan/reactive/walk_report.hpp>
 #include <polyplan/roadmaps/detail/tangent_arcs.hpp>
 
@@ -54,12 +55,25 @@ class ArcBoundary {
   int side(Edge e, const AP& x, const AP& p) const;
   AP nearest(Edge e, const AP& a, const AP& b, const AP& p) const;
   double length(Edge e, const AP& a, const AP& b) const;
+  static Algebraic number(const Rational& q) { return algebraic(q); }
+
+  // What TangentBug asks besides: whether the straight way from one point to another is free (both
+  // ends may touch the boundary); whether, walking the piece from its start, x comes strictly before
+  // y (both on it); the points of the piece's part from a to b (a first along it) on the circle
+  // (centre, radius), and those where a line from p touches the piece's circle, in walking order.
+  bool sees(const AP& from, const AP& to) const;
+  bool before(Edge e, const AP& x, const AP& y) const { return before(piece(e), x, y); }
+  std::vector<AP> circle_points(Edge e, const AP& a, const AP& b, const AP& centre, const Algebraic& radius) const;
+  std::vector<AP> touching_points(Edge e, const AP& a, const AP& b, const AP& p) const;
 
  private:
   // Whether x lies on the piece's part from a to b (all three on its line or circle).
   bool within(const ArcPiece& piece, const AP& a, const AP& b, const AP& x) const;
   // Whether, walking the piece from its start, x comes strictly before y (both on it).
   bool before(const ArcPiece& piece, const AP& x, const AP& y) const;
+  // Those of `points` on the piece's part from a to b, once each, in walking order.
+  std::vector<AP> in_walking_order(const ArcPiece& piece, const AP& a, const AP& b,
+                                   const std::vector<AP>& points) const;
 
   const RoundWorld* world_;
   round_rules::RoundRules<Algebraic> rules_;

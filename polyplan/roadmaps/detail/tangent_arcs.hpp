@@ -73,9 +73,19 @@ Arc arc_of(const CirclePiece& piece, const std::vector<Circle>& circles);
 
 // Why the path of pieces is blocked, or none: every piece (its arcs as arc_blocked checks them,
 // `open` or not) and every joint, with the direction the path arrives from and the one it leaves
-// along. The exact check of a path whose points are irrational.
+// along. The exact check of a path whose points are irrational. `covers`, if given, holds for each
+// piece one that contains it, checked in its place (a walk along the free space's boundary: the
+// boundary piece it runs along, whose ends are simpler numbers than a point the walk stopped at).
 std::optional<std::string> path_blocked(const round_rules::RoundRules<Algebraic>& rules,
                                         const std::vector<CirclePiece>& pieces, const std::vector<Circle>& circles,
-                                        bool open = false);
+                                        bool open = false, const std::vector<CirclePiece>* covers = nullptr);
+
+// How a path's point on `circle` is printed: the centre itself for a circle of radius 0 (a corner);
+// a touching point on a circle of radius ρ > 0 (irrational) as a point of doubles next to it, moved
+// outwards a step of a double at a time while it is not at least ρ·(1 + 1e-15) from the centre: a
+// reader who tests the printed numbers exactly finds them clear of the disc, and the segment
+// between two of them too (turning a tangent by a double's step brings it nearer the centre only
+// by the square of that).
+ExactPoint printed_point(const AlgebraicPoint& p, const Circle& circle);
 
 }  // namespace polyplan::tangent
