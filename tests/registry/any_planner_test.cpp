@@ -180,7 +180,7 @@ TEST(Catalog, ListsEverySpacesPlannersOnceEachInTheRegistriesOrder) {
   const PlannerListing& last_arm = catalog[expected - planners<RoundRobot>().entries().size() - 1];
   EXPECT_EQ(last_arm.kind, "Arm");
   EXPECT_EQ(last_arm.file, "ARM.json");
-  EXPECT_EQ(catalog.back().name, "bug2");  // the round robot's, listed last
+  EXPECT_EQ(catalog.back().name, "tangent-bug");  // the round robot's, listed last
   EXPECT_EQ(catalog.back().space, RoundRobot::description);
   EXPECT_TRUE(catalog.back().plans_round_worlds);
 }
