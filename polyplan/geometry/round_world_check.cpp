@@ -48,11 +48,13 @@ PathCheck RoundWorld::check_path(const std::vector<ExactPoint>& given) const {
     if (path.empty() || !(path.back() == Point{p.x, p.y})) path.push_back({p.x, p.y});
   if (path.empty()) return {false, "the path is empty", std::nullopt};
   const auto invalid = [](std::size_t segment, const std::string& why) { return PathCheck{false, why, segment}; };
+  int face = 0;  // the side of a wall the path slides along (round_rules' blocked_at)
   for (std::size_t i = 0; i < path.size(); ++i) {
     std::optional<Point> in, out;
     if (i > 0) in = path[i - 1] - path[i];
     if (i + 1 < path.size()) out = path[i + 1] - path[i];
-    if (auto why = impl_->rules.blocked_at(path[i], in, out)) return invalid(i == 0 ? 0 : i - 1, *why);
+    face = -face;
+    if (auto why = impl_->rules.blocked_at(path[i], in, out, face)) return invalid(i == 0 ? 0 : i - 1, *why);
   }
   for (std::size_t i = 0; i + 1 < path.size(); ++i)
     if (auto why = impl_->rules.segment_blocked(path[i], path[i + 1])) return invalid(i, *why);

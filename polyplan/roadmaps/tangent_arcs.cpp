@@ -242,6 +242,7 @@ Arc arc_of(const CirclePiece& piece, const std::vector<Circle>& circles) {
 std::optional<std::string> path_blocked(const Rules& rules, const std::vector<CirclePiece>& pieces,
                                         const std::vector<Circle>& circles, bool open,
                                         const std::vector<CirclePiece>* covers) {
+  int face = 0;  // the side of a wall the path slides along (round_rules' blocked_at)
   for (std::size_t k = 0; k <= pieces.size(); ++k) {
     const AP& at = k < pieces.size() ? pieces[k].from : pieces.back().to;
     std::optional<AP> in, out;
@@ -250,7 +251,8 @@ std::optional<std::string> path_blocked(const Rules& rules, const std::vector<Ci
       in = AP{-arriving.x, -arriving.y};  // the direction it arrives from
     }
     if (k < pieces.size()) out = heading(pieces[k], at, circles);
-    if (auto why = rules.blocked_at(at, in, out)) return why;
+    face = -face;
+    if (auto why = rules.blocked_at(at, in, out, face)) return why;
     if (k == pieces.size()) break;
     const CirclePiece& piece = covers ? (*covers)[k] : pieces[k];
     if (auto why = piece.circle ? arc_blocked(rules, arc_of(piece, circles), open)

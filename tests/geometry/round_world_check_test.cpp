@@ -51,6 +51,21 @@ TEST(RoundWorldCheck, AWallMayBeTouchedAndSlidAlongButNotCrossed) {
   EXPECT_TRUE(valid(w, {pt("4", "2"), pt("4", "-2")}));                 // beside it
 }
 
+// A closed square of walls: a robot that slides along one side keeps to the face it came on, so
+// it cannot turn in at a corner it slid to from outside; round a wall's end it may change faces.
+TEST(RoundWorldCheck, SlidingAlongAWallKeepsToItsFace) {
+  const World w = world_from(R"({"walls": [[[1, 1], [3, 1], [3, 3], [1, 3], [1, 1]], [[6, 0], [6, 4]]]})");
+  EXPECT_FALSE(valid(w, {pt("0", "2"), pt("1", "2"), pt("1", "3"), pt("2", "2")}));   // onto the wall, up, in
+  EXPECT_FALSE(valid(w, {pt("2", "2"), pt("1", "2"), pt("1", "3"), pt("0", "4")}));   // from inside, out
+  EXPECT_TRUE(valid(w, {pt("0", "2"), pt("1", "2"), pt("1", "3"), pt("0", "4")}));    // outside all the way
+  EXPECT_TRUE(valid(w, {pt("2", "2"), pt("1", "2"), pt("1", "3"), pt("2", "2.5")}));  // inside all the way
+  EXPECT_TRUE(valid(w, {pt("0", "2"), pt("1", "2"), pt("1", "1"), pt("1", "3"), pt("0", "4")}));  // down and up
+  EXPECT_FALSE(valid(w, {pt("0", "2"), pt("1", "2"), pt("1", "1"), pt("1", "3"), pt("2", "2")}));
+  // Up the west face of the wall x = 6, round its end and down the east face, then east: valid.
+  EXPECT_TRUE(valid(w, {pt("5", "2"), pt("6", "2"), pt("6", "4"), pt("6", "2"), pt("7", "2")}));
+  EXPECT_FALSE(valid(w, {pt("5", "2"), pt("6", "2"), pt("6", "3"), pt("6", "2"), pt("7", "2")}));  // no end there
+}
+
 TEST(RoundWorldCheck, ADiscRobotPassesAGapAHairWiderThanItselfOnly) {
   const std::string walls = R"("obstacles": [[[-3, -1], [-0.5, -1], [-0.5, 1], [-3, 1]],
                                              [[0.5, -1], [3, -1], [3, 1], [0.5, 1]]])";

@@ -420,15 +420,37 @@ class RoundRules {
   // is blocked there, or none.
   std::optional<std::string> blocked_at(const Point& q, const std::optional<Vector>& in,
                                         const std::optional<Vector>& out) const {
+    int face = 0;
+    return blocked_at(q, in, out, face);
+  }
+
+  // The same at a joint of a path that may slide along walls, where the face of a wall the robot
+  // is on decides: `face` is the side of the ray `in` it is on where it arrives along a wall (1 the
+  // left, -1 the right, 0 either), and becomes the side of `out` it leaves on where it leaves
+  // along one (0 where it may take either side, as round a wall's end). A path carries it from
+  // joint to joint, turned round (-face: the left of `out` is the right of the next joint's `in`),
+  // so that sliding along a wall onto a corner it cannot turn in through is a crossing.
+  std::optional<std::string> blocked_at(const Point& q, const std::optional<Vector>& in,
+                                        const std::optional<Vector>& out, int& face) const {
     const Contact<N> c = contact(q);
+    const int arriving = in && is_separator(c, *in) ? face : 0;
+    face = 0;
     if (c.inside)
       return "at " + at_text(q) +
              (c.inside_of == "the bounds" ? " the robot leaves the bounds" : " the robot overlaps " + c.inside_of);
     for (const auto& d : {in, out})
       if (d && !free_direction(c, *d)) return "at " + at_text(q) + " the motion turns into an obstacle it touches";
-    if (!in || !out || same_direction(*in, *out) || (c.blocked.empty() && c.separators.empty())) return std::nullopt;
+    if (!in || !out || (c.blocked.empty() && c.separators.empty())) return std::nullopt;
     const std::vector<Vector> around = turning_directions(c, *in, *out);
-    if (turns_freely(c, around, *in, *out) || turns_freely(c, around, *out, *in)) return std::nullopt;
+    if (same_direction(*in, *out)) {  // back the way it came: on the side it came on, or either round a wall's end
+      face = turns_freely(c, around, *in, *out) ? 0 : arriving;
+      return std::nullopt;
+    }
+    // Counter-clockwise from `in` sweeps its left, and comes to `out` from its right.
+    const bool left = arriving >= 0 && turns_freely(c, around, *in, *out);
+    const bool right = arriving <= 0 && turns_freely(c, around, *out, *in);
+    if (left != right && is_separator(c, *out)) face = left ? -1 : 1;
+    if (left || right) return std::nullopt;
     return "at " + at_text(q) + " the motion crosses a wall or passes where obstacles touch (a passage of zero width)";
   }
 
