@@ -111,9 +111,13 @@ class QueryGraph {
     chord_ends_.resize(chords.size());
     for (auto& [owner, ports] : ports_) add_nodes(owner, ports);
     for (std::size_t k = 0; k < chords.size(); ++k) {
-      const auto [u, v] = chord_ends_[k];
+      // A chord along a wall joins its ends' nodes on one face of it: the left of its from port is
+      // the right of its to port (turned back).
       const FactPoint a = approximate(chords[k].from), b = approximate(chords[k].to);
-      add_link({std::hypot(a[0] - b[0], a[1] - b[1]), std::nullopt, u, v});
+      for (const auto& [u, face_u] : chord_ends_[k].first)
+        for (const auto& [v, face_v] : chord_ends_[k].second)
+          if (face_u == 0 || face_v == 0 || face_u == -face_v)
+            add_link({std::hypot(a[0] - b[0], a[1] - b[1]), std::nullopt, u, v});
     }
     for (const auto& [owner, ports] : ports_)
       if (owner < circles.size() && sign_of_radius(owner) > 0) add_arcs(owner);
@@ -147,39 +151,82 @@ class QueryGraph {
     return points_.size() - 1;
   }
 
-  void attach(const Port& port, std::size_t node) {
+  // `face`: the side of the port's direction the node's ways lie on where the port runs along a
+  // wall (1 the left, -1 the right), 0 elsewhere.
+  void attach(const Port& port, std::size_t node, int face = 0) {
     auto& [u, v] = chord_ends_[port.chord];
-    (port.from_end ? u : v) = node;
+    (port.from_end ? u : v).push_back({node, face});
   }
 
-  // A circle's touching points are nodes each; a point's ports join one node when a motion may
-  // come in along one and leave along the other (round_rules' turn test at the point).
+  // A circle's touching points are nodes each. At a point, a node is a sector of the directions a
+  // motion may turn through (between walls and obstacles): a port into a sector belongs to its
+  // node; a port along a wall borders two sectors, its left and its right, and belongs to the node
+  // of each, marked with that face (a robot sliding along a wall is on one of its faces). Ports,
+  // and the faces of ports along walls, join one sector where a motion turns freely from one to
+  // the other (round_rules' turn test at the point).
   void add_nodes(std::size_t owner, const std::vector<Port>& ports) {
     if (owner < circles_.size() && sign_of_radius(owner) > 0) {
       for (const Port& port : ports) attach(port, new_node(owner, port.at));
       return;
     }
-    std::vector<std::size_t> leader(ports.size());
-    std::iota(leader.begin(), leader.end(), 0);
-    const auto find = [&](std::size_t i) {
-      while (leader[i] != i) i = leader[i] = leader[leader[i]];
-      return i;
-    };
     const round_rules::Contact<Algebraic> contact = rules_.contact(ports.front().at);
+    const std::size_t n = ports.size();
+    // A chord of length 0 (the point lies on a circle) leaves along no direction: any sector takes it.
+    const auto still = [&](std::size_t i) { return round_rules::sign_of(round_rules::squared(ports[i].out)) == 0; };
+    const auto along_wall = [&](std::size_t i) {
+      return !still(i) && round_rules::is_separator(contact, ports[i].out);
+    };
+    const auto ccw_free = [&](const AP& from, const AP& to) {  // turning counter-clockwise from one to the other
+      return round_rules::turns_freely(contact, round_rules::turning_directions(contact, from, to), from, to);
+    };
+    // Elements: 2i the port i (a port along a wall: its left face), 2i + 1 a wall port's right face.
+    std::vector<std::size_t> leader(2 * n);
+    std::iota(leader.begin(), leader.end(), 0);
+    const auto find = [&](std::size_t e) {
+      while (leader[e] != e) e = leader[e] = leader[leader[e]];
+      return e;
+    };
+    const auto join = [&](std::size_t a, std::size_t b) { leader[find(b)] = find(a); };
     const bool one_side = contact.separators.empty() && contact.blocked.size() <= 1;
-    // A chord of length 0 (the point lies on a circle) leaves along no direction: any class takes it.
-    const auto still = [](const Port& p) { return round_rules::sign_of(round_rules::squared(p.out)) == 0; };
-    for (std::size_t i = 0; i < ports.size(); ++i)
-      for (std::size_t j = i + 1; j < ports.size(); ++j)
-        if (find(i) != find(j) && (one_side || still(ports[i]) || still(ports[j]) ||
-                                   !rules_.blocked_at(ports[i].at, ports[i].out, ports[j].out)))
-          leader[find(j)] = find(i);
-    std::map<std::size_t, std::size_t> node_of_class;
-    for (std::size_t i = 0; i < ports.size(); ++i) {
-      auto [it, added] = node_of_class.try_emplace(find(i), 0);
-      if (added) it->second = new_node(owner, ports[i].at);
-      attach(ports[i], it->second);
+    for (std::size_t i = 0; i < n; ++i) {
+      if (still(i)) continue;
+      if (along_wall(i) && ccw_free(ports[i].out, ports[i].out)) join(2 * i, 2 * i + 1);  // round a wall's end
+      for (std::size_t k = i + 1; k < n; ++k) {
+        if (still(k)) continue;
+        if (one_side) {
+          join(2 * i, 2 * k);
+          continue;
+        }
+        // The face of i that a counter-clockwise turn from i to k leaves by (its left), the face
+        // of k it comes to (its right); and the same turning from k to i.
+        const std::size_t i_left = 2 * i, i_right = along_wall(i) ? 2 * i + 1 : 2 * i;
+        const std::size_t k_left = 2 * k, k_right = along_wall(k) ? 2 * k + 1 : 2 * k;
+        if (ccw_free(ports[i].out, ports[k].out)) join(i_left, k_right);
+        if (ccw_free(ports[k].out, ports[i].out)) join(k_left, i_right);
+      }
     }
+    std::map<std::size_t, std::size_t> node_of_sector;
+    const auto sector_node = [&](std::size_t e) {
+      auto [it, added] = node_of_sector.try_emplace(find(e), 0);
+      if (added) it->second = new_node(owner, ports.front().at);
+      return it->second;
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+      if (still(i)) continue;
+      if (!along_wall(i)) {
+        attach(ports[i], sector_node(2 * i));
+      } else if (find(2 * i) == find(2 * i + 1)) {
+        attach(ports[i], sector_node(2 * i));
+      } else {
+        attach(ports[i], sector_node(2 * i), 1);
+        attach(ports[i], sector_node(2 * i + 1), -1);
+      }
+    }
+    for (std::size_t i = 0; i < n; ++i)
+      if (still(i)) {
+        if (node_of_sector.empty()) attach(ports[i], new_node(owner, ports[i].at));
+        for (const auto& [sector, node] : node_of_sector) attach(ports[i], node);
+      }
   }
 
   // The arcs between consecutive touching points round the circle, those that keep clear.
@@ -209,7 +256,8 @@ class QueryGraph {
   const Rules& rules_;
   const std::vector<Circle>& circles_;
   std::map<std::size_t, std::vector<Port>> ports_;
-  std::vector<std::pair<std::size_t, std::size_t>> chord_ends_;
+  using Ends = std::vector<std::pair<std::size_t, int>>;  // each end's nodes, with the face they lie on
+  std::vector<std::pair<Ends, Ends>> chord_ends_;
   std::vector<AP> points_;
   std::vector<std::size_t> node_owner_;
   std::map<std::size_t, std::vector<std::size_t>> owner_nodes_;

@@ -120,6 +120,19 @@ TEST(TangentVisibility, AWallIsPassedRoundItsEnd) {
   expect_length(report, 2 * std::sqrt(10.0));
 }
 
+TEST(TangentVisibility, AClosedRingOfWallsIsGoneRoundAndNeverEntered) {
+  // The walls round the square [1, 3]²: a robot sliding along one of them keeps to its face, so the
+  // path from outside to a goal inside is none (the graph's corners hold a node per sector between
+  // the walls); round it, over two corners: √2 + 2 + √2; inside, straight.
+  const std::string ring = R"({"walls": [[[1, 1], [3, 1], [3, 3], [1, 3], [1, 1]]], "start": [0, 2], )";
+  expect_length(plan(ring + R"("goal": [4, 2]})"), 2 + 2 * std::sqrt(2.0));
+  const auto inside = plan(ring + R"("goal": [2, 2]})");
+  EXPECT_EQ(inside.status, PlanStatus::no_path) << inside.why_not;
+  const auto along =
+      plan(R"({"walls": [[[1, 1], [3, 1], [3, 3], [1, 3], [1, 1]]], "start": [2, 1.5], "goal": [2.5, 2.5]})");
+  expect_length(along, std::sqrt(1.25));
+}
+
 TEST(TangentVisibility, DecimalsThatDoublesGetWrong) {
   // The robot (radius 0.1) slides along y = 0.3 past a disc of radius 0.2 centred at (0, 0): exactly
   // tangent in decimals (0.1 + 0.2 = 0.3), though 0.1 + 0.2 > 0.3 in doubles: the straight line.
