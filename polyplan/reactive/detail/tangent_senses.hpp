@@ -11,7 +11,9 @@
 //   ArcSenses      a round world's boundary of segments and arcs (real algebraic points, CORE): the
 //                  discontinuities are the corners of the boundary and the points where a sight
 //                  line from the robot touches an arc, kept where the robot sees them within range
-//                  and its sight runs on past them into the free space; every event point is exact.
+//                  and its sight runs on past them into the free space; the points where it
+//                  touches, hits or crosses d_followed are exact, those at the range rational
+//                  fractions of the way to the goal a few ulps within it.
 //
 // Only tangent_bug_planner.cpp and the two senses' units include this header (CORE, CGAL).
 #include <polyplan/reactive/boundary_walk.hpp>
