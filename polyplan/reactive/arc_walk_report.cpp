@@ -61,7 +61,8 @@ std::optional<Rational> rational(const Algebraic& x) {
   return std::nullopt;
 }
 
-// The obstacle circle (a disc, a grown corner) x lies on or next to, judged in doubles, if any.
+// The obstacle circle (a disc, a grown corner) x lies on or next to, judged in doubles, if any: it
+// only chooses how a point is printed (which point is free, the exact contact test decides).
 const tangent::Circle* circle_at(const ArcBoundary& boundary, const AP& x) {
   const double px = approximate(x.x), py = approximate(x.y);
   for (const tangent::Circle& c : boundary.circles()) {

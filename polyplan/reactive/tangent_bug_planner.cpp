@@ -326,17 +326,17 @@ PlanReport<ExactPoint> TangentWalk<S>::plan(const Query& q, const QueryOptions& 
       continue;
     }
     // A local minimum of the distance to the goal: boundary following.
-    const std::optional<Edge> edge = here;
-    if (!edge) {
+    if (!here) {
       report.fail(PlanStatus::not_found,
                   "tangent-bug: blocked at " + text(at) + ", off the boundary (a bug of polyplan's)");
       return finish(false);
     }
     record = B::squared_distance(at, goal);
     walk.hits.push_back(at);
-    const std::size_t n = boundary.size(edge->cycle);
-    Along way = follow_forwards(at, *edge, discontinuities(sensed_ends, at, edge)) ? ways(at, *edge).front().first
-                                                                                   : ways(at, *edge).back().first;
+    const std::size_t n = boundary.size(here->cycle);
+    const auto both_ways = ways(at, *here);  // {forwards, back}
+    Along way = follow_forwards(at, *here, discontinuities(sensed_ends, at, here)) ? both_ways.front().first
+                                                                                   : both_ways.back().first;
     // Walk the cycle from corner to corner until d_reach < d_followed.
     for (std::size_t walked = 0;; ++walked) {
       if (walked > n) {
