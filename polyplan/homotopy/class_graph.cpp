@@ -27,7 +27,7 @@ ClassGraph::~ClassGraph() = default;
 
 void ClassGraph::join(std::size_t a, std::size_t b) {
   const ExactPoint &p = positions_[a], &q = positions_[b];
-  const double length = std::hypot(to_double(p.x) - to_double(q.x), to_double(p.y) - to_double(q.y));
+  const LengthBounds length = distance_bounds(p, q);
   Word word = signature_.segment(p, q);
   arcs_[b].push_back({a, length, inverse(word)});
   arcs_[a].push_back({b, length, std::move(word)});
@@ -42,21 +42,50 @@ std::size_t ClassGraph::add_point(const ExactPoint& p) {
   return id;
 }
 
-ClassSearch::ClassSearch(const ClassGraph& graph, std::size_t source, Word word, double max_length,
+ClassSearch::ClassSearch(const ClassGraph& graph, std::size_t source, Word word, std::optional<Rational> max_length,
                          std::size_t max_states, Admit admit)
-    : graph_(&graph), max_length_(max_length), max_states_(max_states), admit_(std::move(admit)) {
-  offer(source, std::move(word), 0, std::nullopt);
+    : graph_(&graph), max_length_(std::move(max_length)), max_states_(max_states), admit_(std::move(admit)) {
+  offer(source, std::move(word), Way{source, std::nullopt, {}});
 }
 
-void ClassSearch::offer(std::size_t vertex, Word word, double distance, std::optional<std::size_t> parent) {
-  if (distance > max_length_ || (admit_ && !admit_(vertex, word, distance))) return;
+RootSum ClassSearch::exact(const Way& way) const {
+  RootSum sum;
+  std::size_t at = way.vertex;
+  for (std::optional<std::size_t> p = way.parent; p; p = states_[*p].parent) {
+    const std::size_t from = states_[*p].vertex;
+    sum.add(squared_distance(graph_->position(from), graph_->position(at)));
+    at = from;
+  }
+  return sum;
+}
+
+RootSum ClassSearch::exact_distance(std::size_t id) const { return exact(way_to(id)); }
+
+int ClassSearch::compare(const Way& a, const Way& b) const {
+  if (const int sign = compare_bounds(a.bounds, b.bounds)) return sign;
+  return polyplan::compare(exact(a), exact(b));
+}
+
+int ClassSearch::compare(const Way& a, const Rational& c) const {
+  if (const int sign = compare_bounds(a.bounds, rational_bounds(c))) return sign;
+  return polyplan::compare(exact(a), c);
+}
+
+bool ClassSearch::Shorter::operator()(std::size_t a, std::size_t b) const {
+  const int sign = search->compare(search->way_to(a), search->way_to(b));
+  return sign != 0 ? sign < 0 : a < b;
+}
+
+void ClassSearch::offer(std::size_t vertex, Word word, const Way& way) {
+  if ((max_length_ && compare(way, *max_length_) > 0) || (admit_ && !admit_(vertex, word))) return;
   auto key = std::make_pair(vertex, word);
   const auto found = ids_.find(key);
   if (found != ids_.end()) {
-    State& s = states_[found->second];
-    if (settled_[found->second] || !(distance < s.distance)) return;
-    s.distance = distance, s.parent = parent;
-    open_.emplace(distance, found->second);
+    const std::size_t id = found->second;
+    if (settled_[id] || compare(way, way_to(id)) >= 0) return;
+    open_.erase(id);  // before its length changes, which orders it
+    states_[id].distance = way.bounds, states_[id].parent = way.parent;
+    open_.insert(id);
     return;
   }
   if (states_.size() >= max_states_ || letters_ + word.size() > kLettersPerState * max_states_) {
@@ -65,26 +94,23 @@ void ClassSearch::offer(std::size_t vertex, Word word, double distance, std::opt
   }
   letters_ += word.size();
   ids_.emplace(std::move(key), states_.size());
-  open_.emplace(distance, states_.size());
-  states_.push_back({vertex, std::move(word), distance, parent});
+  states_.push_back({vertex, std::move(word), way.bounds, way.parent});
   settled_.push_back(false);
+  open_.insert(states_.size() - 1);
 }
 
 std::optional<std::size_t> ClassSearch::next() {
-  while (!open_.empty()) {
-    const auto [distance, id] = open_.top();
-    open_.pop();
-    if (settled_[id] || distance > states_[id].distance) continue;
-    settled_[id] = true;
-    const State s = states_[id];  // a copy: offer() may grow states_
-    for (const ClassGraph::Arc& arc : graph_->arcs(s.vertex)) {
-      Word word = s.word;
-      multiply(word, arc.word);
-      offer(arc.to, std::move(word), s.distance + arc.length, id);
-    }
-    return id;
+  if (open_.empty()) return std::nullopt;
+  const std::size_t id = *open_.begin();
+  open_.erase(open_.begin());
+  settled_[id] = true;
+  const State s = states_[id];  // a copy: offer() may grow states_
+  for (const ClassGraph::Arc& arc : graph_->arcs(s.vertex)) {
+    Word word = s.word;
+    multiply(word, arc.word);
+    offer(arc.to, std::move(word), Way{arc.to, id, s.distance + arc.length});
   }
-  return std::nullopt;
+  return id;
 }
 
 std::vector<std::size_t> ClassSearch::chain_to(std::size_t id) const {

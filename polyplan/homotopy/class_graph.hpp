@@ -1,10 +1,13 @@
 #pragma once
 // The graph the homotopy searches run over: the C-space's reduced visibility graph (whose paths
 // hold the shortest path of every homotopy class: a taut path bends only round corners, along
-// tangents) plus the points a query adds, each directed arc with its exact length's double and its
+// tangents) plus the points a query adds, each directed arc with bounds on its length and its
 // word (homotopy/h_signature.hpp); and a Dijkstra over (vertex, reduced word) — the graph's lift
 // to the classes, where the first time a (vertex, word) is settled is the shortest path to the
-// vertex in that class.
+// vertex in that class. Its lengths are sums of square roots, compared exactly
+// (geometry/root_sum.hpp): the order of the classes and a bound such as the tether's length are
+// decided as exactly as the geometry, ties included.
+#include <polyplan/geometry/root_sum.hpp>
 #include <polyplan/homotopy/h_signature.hpp>
 
 #include <cstddef>
@@ -12,7 +15,7 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <queue>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -22,7 +25,7 @@ class ClassGraph {
  public:
   struct Arc {
     std::size_t to;
-    double length;
+    LengthBounds length;
     Word word;
   };
 
@@ -50,8 +53,8 @@ class ClassGraph {
 };
 
 // Dijkstra over (vertex, reduced word) from one vertex and starting word, settling states in order
-// of distance: next() gives the next settled state. `admit(vertex, word, distance)` may refuse a
-// state (the tether's bound); states beyond `max_length` or past `max_states` are not made, nor
+// of distance: next() gives the next settled state. `admit(vertex, word)` may refuse a state (the
+// tether's bound); states longer than `max_length` (none: no bound) or past `max_states` are not made, nor
 // states whose words would hold more than kLettersPerState × max_states letters in all: a word
 // grows with every winding, so a bound on states alone bounds no memory (10,000 classes round a
 // pillar took gigabytes).
@@ -61,17 +64,22 @@ class ClassSearch {
   struct State {
     std::size_t vertex;
     Word word;
-    double distance;
+    LengthBounds distance;  // bounds on the length of the chain to it (exactly: exact_distance)
     std::optional<std::size_t> parent;
   };
-  using Admit = std::function<bool(std::size_t vertex, const Word& word, double distance)>;
+  using Admit = std::function<bool(std::size_t vertex, const Word& word)>;
 
-  ClassSearch(const ClassGraph& graph, std::size_t source, Word word, double max_length, std::size_t max_states,
-              Admit admit = {});
+  ClassSearch(const ClassGraph& graph, std::size_t source, Word word, std::optional<Rational> max_length,
+              std::size_t max_states, Admit admit = {});
+  // The open set orders states by their lengths through a pointer to the search.
+  ClassSearch(const ClassSearch&) = delete;
+  ClassSearch& operator=(const ClassSearch&) = delete;
 
   // The next state settled (its id), or nullopt when none is left.
   std::optional<std::size_t> next();
   const State& state(std::size_t id) const { return states_[id]; }
+  // The exact length of the chain from the source to the state.
+  RootSum exact_distance(std::size_t id) const;
   // The states from the source to the state, and their vertices' positions.
   std::vector<std::size_t> chain_to(std::size_t id) const;
   std::vector<ExactPoint> path_to(std::size_t id) const;
@@ -82,9 +90,27 @@ class ClassSearch {
   bool truncated() const { return truncated_; }
 
  private:
-  void offer(std::size_t vertex, Word word, double distance, std::optional<std::size_t> parent);
+  // A way to `vertex`: the chain to `parent` and one arc on; its length's bounds.
+  struct Way {
+    std::size_t vertex;
+    std::optional<std::size_t> parent;
+    LengthBounds bounds;
+  };
+  // The sign of a's length − b's (bounds first, then exactly), and of a's length − c.
+  int compare(const Way& a, const Way& b) const;
+  int compare(const Way& a, const Rational& c) const;
+  RootSum exact(const Way& way) const;
+  Way way_to(std::size_t id) const { return {states_[id].vertex, states_[id].parent, states_[id].distance}; }
+  void offer(std::size_t vertex, Word word, const Way& way);
+
+  // Open states, shortest first (equal lengths: the older state first).
+  struct Shorter {
+    const ClassSearch* search;
+    bool operator()(std::size_t a, std::size_t b) const;
+  };
+
   const ClassGraph* graph_;
-  double max_length_;
+  std::optional<Rational> max_length_;
   std::size_t max_states_;
   std::size_t letters_ = 0;  // in the words of states_
   Admit admit_;
@@ -92,8 +118,7 @@ class ClassSearch {
   std::vector<State> states_;
   std::vector<bool> settled_;
   std::map<std::pair<std::size_t, Word>, std::size_t> ids_;
-  std::priority_queue<std::pair<double, std::size_t>, std::vector<std::pair<double, std::size_t>>, std::greater<>>
-      open_;
+  std::set<std::size_t, Shorter> open_{Shorter{this}};
 };
 
 }  // namespace polyplan

@@ -8,7 +8,7 @@
 #include <polyplan/plan/plan_facts.hpp>
 #include <polyplan/plan/stopwatch.hpp>
 
-#include <limits>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -23,7 +23,7 @@ struct HomotopyPlanner::Impl {
 HomotopyPlanner::HomotopyPlanner(const CSpace& cspace, HomotopyOptions options)
     : impl_(std::make_unique<Impl>(Impl{&cspace, options, ClassGraph(cspace)})) {
   if (options.classes == 0) throw std::invalid_argument("option classes=0: expected at least 1");
-  if (!(options.max_length >= 0))
+  if (sgn(options.max_length) < 0)
     throw std::invalid_argument("option max-length: expected a number >= 0 (0: no bound)");
 }
 
@@ -52,7 +52,8 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
   // The query's points join a copy of the graph, so that queries never see each other's.
   ClassGraph graph = r.graph;
   const std::size_t start = graph.add_point(q.start), goal = graph.add_point(q.goal);
-  const double bound = r.options.max_length > 0 ? r.options.max_length : std::numeric_limits<double>::infinity();
+  const std::optional<Rational> bound =
+      sgn(r.options.max_length) > 0 ? std::optional<Rational>(r.options.max_length) : std::nullopt;
   ClassSearch search(graph, start, {}, bound, r.options.max_states);
   std::set<Word> met;
   while (report.paths.size() < r.options.classes) {
@@ -75,7 +76,7 @@ PlanReport<ExactPoint> HomotopyPlanner::plan(const Query& q, const QueryOptions&
                   "max-states (" + std::to_string(r.options.max_states) + ") ended the search before the goal");
     else
       report.fail(PlanStatus::not_found,
-                  "no path within max-length (" + detail::show_number(r.options.max_length) + ")");
+                  "no path within max-length (" + detail::show_exact(r.options.max_length) + ")");
     return finish();
   }
   for (const auto& p : report.paths)

@@ -20,7 +20,7 @@ namespace polyplan {
 
 struct HomotopyOptions {
   std::size_t classes = 4;
-  double max_length = 0;  // 0: none
+  Rational max_length = 0;  // exact as written, compared with the paths' lengths exactly; 0: none
   std::size_t max_states = 1000000;
 };
 

@@ -11,14 +11,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <optional>
 #include <stdexcept>
 
 namespace polyplan {
 namespace {
-
-constexpr double unbounded = std::numeric_limits<double>::infinity();
 
 std::optional<ExactPoint> parse_base(const std::string& text) {
   if (text.empty()) return std::nullopt;
@@ -32,16 +29,16 @@ std::optional<ExactPoint> parse_base(const std::string& text) {
 // The tether's taut shapes: a Dijkstra over (vertex, word) from the base, run to its bound.
 struct TetherSearch {
   ClassSearch search;
-  TetherSearch(const ClassGraph& graph, std::size_t base, double bound, std::size_t max_states)
-      : search(graph, base, {}, bound, max_states) {
+  TetherSearch(const ClassGraph& graph, std::size_t base, Rational bound, std::size_t max_states)
+      : search(graph, base, {}, std::move(bound), max_states) {
     while (search.next()) {
     }
   }
-  // The taut tether's length in that class, if it is within the bound.
+  // The taut tether's length in that class (to print), if it is within the bound.
   std::optional<double> length(std::size_t vertex, const Word& word) const {
     const auto id = search.find(vertex, word);
     if (!id) return std::nullopt;
-    return search.state(*id).distance;
+    return search.exact_distance(*id).approximate();
   }
 };
 
@@ -56,7 +53,7 @@ struct TetherPlanner::Impl {
 
 TetherPlanner::TetherPlanner(const CSpace& cspace, TetherOptions options)
     : impl_(std::make_unique<Impl>(Impl{&cspace, options, parse_base(options.tether_base), ClassGraph(cspace)})) {
-  if (!(options.tether_length >= 0))
+  if (sgn(options.tether_length) < 0)
     throw std::invalid_argument("option tether-length: expected a number >= 0 (0: no bound)");
 }
 
@@ -89,31 +86,32 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   ClassGraph graph = r.graph;  // the query's points join a copy
   const std::size_t b = graph.add_point(base);
   const std::size_t s = base == q.start ? b : graph.add_point(q.start), g = graph.add_point(q.goal);
-  const double L = r.options.tether_length > 0 ? r.options.tether_length : unbounded;
+  const std::optional<Rational> L =
+      sgn(r.options.tether_length) > 0 ? std::optional<Rational>(r.options.tether_length) : std::nullopt;
   // The tether the robot starts with: straight from the base when that is free, else the shortest.
   Word start_word;
-  double start_length = 0;
+  RootSum start_length;
   if (check_segment(*r.cspace, base, q.start).valid) {
-    start_word = graph.signature().segment(base, q.start), start_length = euclidean_length({base, q.start});
+    start_word = graph.signature().segment(base, q.start), start_length = RootSum::polyline({base, q.start});
   } else {
-    ClassSearch first(graph, b, {}, unbounded, r.options.max_states);
+    ClassSearch first(graph, b, {}, std::nullopt, r.options.max_states);
     for (auto id = first.next(); id; id = first.next())
       if (first.state(*id).vertex == s) {
-        start_word = first.state(*id).word, start_length = first.state(*id).distance;
+        start_word = first.state(*id).word, start_length = first.exact_distance(*id);
         break;
       }
   }
-  if (start_length > L) {
-    report.fail(PlanStatus::no_path,
-                "the tether at the start is " + detail::show_number(start_length) + " long, more than tether-length");
+  if (L && compare(start_length, *L) > 0) {
+    report.fail(PlanStatus::no_path, "the tether at the start is " + detail::show_number(start_length.approximate()) +
+                                         " long, more than tether-length");
     return finish();
   }
   // G_w: every (vertex, class) the tether reaches within L (without L: within what the robot's
   // path could need, found below).
   std::optional<TetherSearch> tether;
-  if (L < unbounded) tether.emplace(graph, b, L, r.options.max_states);
-  const auto admit = [&](std::size_t v, const Word& w, double) { return !tether || tether->length(v, w).has_value(); };
-  ClassSearch robot(graph, s, start_word, unbounded, r.options.max_states, admit);
+  if (L) tether.emplace(graph, b, *L, r.options.max_states);
+  const auto admit = [&](std::size_t v, const Word& w) { return !tether || tether->search.find(v, w).has_value(); };
+  ClassSearch robot(graph, s, start_word, std::nullopt, r.options.max_states, admit);
   std::optional<std::size_t> arrived;
   for (auto id = robot.next(); id && !arrived; id = robot.next())
     if (robot.state(*id).vertex == g) arrived = id;
@@ -123,7 +121,7 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
     if (tether) facts.set(TetherFacts::reachable, tether->search.states());
     report.fail(truncated ? PlanStatus::limit : PlanStatus::no_path,
                 truncated ? "max-states ended the search"
-                          : "no class of tether within tether-length (" + detail::show_number(L) +
+                          : "no class of tether within tether-length (" + detail::show_exact(*L) +
                                 ") lets the robot reach the goal");
     return finish();
   }
@@ -131,8 +129,12 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
   if (report.path.size() == 1) report.path.push_back(q.goal);
   report.length = euclidean_length(report.path);
   // Without L, the tether's shapes along the path: it is never longer than the start's tether and
-  // the path so far (the slack covers the last bits the two sums of doubles may differ in).
-  if (!tether) tether.emplace(graph, b, (start_length + report.length) * (1 + 1e-9) + 1e-9, r.options.max_states);
+  // the path so far, whose upper bound bounds the search.
+  if (!tether) {
+    RootSum most = start_length;
+    most.add(RootSum::polyline(report.path));
+    tether.emplace(graph, b, Rational(most.bounds().upper), r.options.max_states);
+  }
   // The tether along the path: its length at each vertex, the largest, its shape at the goal.
   double largest = 0;
   std::vector<std::vector<ExactPoint>> shapes;
@@ -140,7 +142,7 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
     const auto& st = robot.state(id);
     const auto at = tether->search.find(st.vertex, st.word);
     if (!at) throw std::logic_error("tether: the tether to a vertex of the path was not found");
-    largest = std::max(largest, tether->search.state(*at).distance);
+    largest = std::max(largest, tether->search.exact_distance(*at).approximate());
     shapes.push_back(tether->search.path_to(*at));
   }
   const auto& end = robot.state(*arrived);
@@ -156,7 +158,7 @@ PlanReport<ExactPoint> TetherPlanner::plan(const Query& q, const QueryOptions& q
     for (std::size_t id = 0; id < tether->search.states(); ++id)
       if (tether->search.state(id).vertex == g)
         classes += (classes.empty() ? "[" : "; [") + word_text(tether->search.state(id).word) + "] " +
-                   detail::show_number(tether->search.state(id).distance);
+                   detail::show_number(tether->search.exact_distance(id).approximate());
     facts.set(TetherFacts::classes, classes);
     note += "; the goal within L in the classes " + classes;
   }

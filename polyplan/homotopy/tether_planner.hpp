@@ -11,7 +11,8 @@
 // shortest), admitting only states whose tether is within L. Along a straight motion the taut
 // tether's length is a convex function of the robot's place (geodesic distance in the universal
 // cover, simply connected: Pollack, Sharir & Rote), so it is largest at an end: checking the
-// vertices checks the motion. Equal to L is allowed.
+// vertices checks the motion. Equal to L is allowed: the tether's lengths, sums of square roots,
+// are compared with L exactly (geometry/root_sum.hpp), so a tether 0.85 + 0.85 long fits L = 1.7.
 //
 // Facts: tether {word, length, largest (along the path), at_goal (the taut tether at the goal,
 // "(x, y) ..." exact), reachable, classes (with list-classes: every class the goal is reached in
@@ -28,8 +29,8 @@
 namespace polyplan {
 
 struct TetherOptions {
-  std::string tether_base;   // "X,Y"; empty: the query's start
-  double tether_length = 0;  // L; 0: no bound
+  std::string tether_base;     // "X,Y"; empty: the query's start
+  Rational tether_length = 0;  // L, exact as written ("1.7" is 17/10); 0: no bound
   bool list_classes = false;
   std::size_t max_states = 1000000;
 };

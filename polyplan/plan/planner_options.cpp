@@ -1,5 +1,6 @@
 #include <polyplan/plan/planner_options.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <string>
@@ -34,6 +35,25 @@ std::string show_number(double value) {
   char buffer[32];
   const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, value);
   return error == std::errc() ? std::string(buffer, end) : std::to_string(value);
+}
+
+std::string show_exact(const Rational& value) {
+  // k digits after the point are exact when the denominator divides 10^k: it is 2^a 5^b, k = max(a, b).
+  mpz_class rest = value.get_den();
+  std::size_t twos = 0, fives = 0;
+  for (; mpz_divisible_ui_p(rest.get_mpz_t(), 2); rest /= 2) ++twos;
+  for (; mpz_divisible_ui_p(rest.get_mpz_t(), 5); rest /= 5) ++fives;
+  if (rest != 1) return to_string(value);
+  const std::size_t digits = std::max(twos, fives);
+  mpz_class scale;
+  mpz_ui_pow_ui(scale.get_mpz_t(), 10, digits);
+  const mpz_class scaled = abs(value.get_num()) * (scale / value.get_den());
+  std::string text = scaled.get_str();
+  if (digits > 0) {
+    if (text.size() <= digits) text.insert(0, digits + 1 - text.size(), '0');
+    text.insert(text.size() - digits, ".");
+  }
+  return (sgn(value) < 0 ? "-" : "") + text;
 }
 
 }  // namespace polyplan::detail

@@ -9,8 +9,10 @@
 //       .add("resolution", &RasterOptions::resolution, "cells per side of the bounds")
 //       .add("search", &RasterOptions::search, "graph search");
 #include <polyplan/geometry/input_error.hpp>
+#include <polyplan/geometry/rational.hpp>
 #include <polyplan/search/search_result.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -71,14 +73,16 @@ std::optional<std::int64_t> parse_whole_number(std::string_view text);
 std::optional<double> parse_real_number(std::string_view text);  // finite only
 std::optional<bool> parse_flag(std::string_view text);           // true/false, yes/no, on/off, 1/0
 std::string show_number(double value);                           // shortest text that reads back the same
+std::string show_exact(const Rational& value);                   // a decimal where one is exact ("1.7"), else "p/q"
 }  // namespace detail
 
 template <class Options>
 class OptionTable {
  public:
-  // A member of type bool, an integer, a floating-point number, std::string or Search. A number
-  // takes the values `range` allows (default: every value of its type); one outside is refused
-  // naming the option, the value and the range.
+  // A member of type bool, an integer, a floating-point number, a Rational (a number the planner
+  // decides on exactly: "1.7" is 17/10), std::string or Search. A number takes the values `range`
+  // allows (default: every value of its type); one outside is refused naming the option, the value
+  // and the range.
   template <class T>
   OptionTable& add(std::string name, T Options::*member, std::string description,
                    std::optional<OptionRange> range = {}) {
@@ -95,7 +99,8 @@ class OptionTable {
   OptionTable& add_field(std::string name, Field field, std::string description,
                          std::optional<OptionRange> range = {}) {
     using T = std::decay_t<decltype(field(std::declval<Options&>()))>;
-    if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) {
+    constexpr bool number = (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>) || std::is_same_v<T, Rational>;
+    if constexpr (number) {
       if (!range) range = range_of<T>();
     }
     Entry e{
@@ -104,8 +109,8 @@ class OptionTable {
     // [=]: the range is used only when T is a number, and clang warns of an unused capture.
     e.set = [=](Options& o, std::string_view text) -> std::optional<std::string> {
       if (auto why = assign(field(o), text)) return why;
-      if constexpr (std::is_arithmetic_v<T> && !std::is_same_v<T, bool>)
-        if (!range->holds(static_cast<double>(field(o)))) return "expected a " + kind_of<T>(range);
+      if constexpr (number)
+        if (!holds(*range, field(o))) return "expected a " + kind_of<T>(range);
       return std::nullopt;
     };
     return push(std::move(e));
@@ -238,7 +243,23 @@ class OptionTable {
     if constexpr (std::is_same_v<T, bool>) return "true or false";
     else if constexpr (std::is_integral_v<T>) return "whole number in " + range->text();
     else if constexpr (std::is_floating_point_v<T>) return "number in " + range->text();
+    else if constexpr (std::is_same_v<T, Rational>) return "exact number in " + range->text();
     else return "text";
+  }
+
+  // Whether the range holds the value: a Rational's ends compared exactly (the ends are doubles).
+  template <class T>
+  static bool holds(const OptionRange& range, const T& value) {
+    if constexpr (std::is_same_v<T, Rational>) {
+      const auto beyond = [&](double end, int side) {
+        if (std::isinf(end)) return false;
+        const int sign = cmp(value, Rational(end)) * side;
+        return sign > 0 || (sign == 0 && (side < 0 ? range.min_open : range.max_open));
+      };
+      return !beyond(range.min, -1) && !beyond(range.max, 1);
+    } else {
+      return range.holds(static_cast<double>(value));
+    }
   }
 
   // Every value of the type: [0, inf) for an unsigned whole number (its own greatest value is
@@ -254,6 +275,7 @@ class OptionTable {
     if constexpr (std::is_same_v<T, bool>) return value ? "true" : "false";
     else if constexpr (std::is_integral_v<T>) return std::to_string(value);
     else if constexpr (std::is_floating_point_v<T>) return detail::show_number(static_cast<double>(value));
+    else if constexpr (std::is_same_v<T, Rational>) return detail::show_exact(value);
     else return value;
   }
 
@@ -275,6 +297,11 @@ class OptionTable {
       const auto real = detail::parse_real_number(text);
       if (!real) return "expected a finite number";
       field = static_cast<T>(*real);
+    } else if constexpr (std::is_same_v<T, Rational>) {
+      std::string why;
+      const auto exact = parse_rational(text, &why);
+      if (!exact) return "expected a number (" + why + ")";
+      field = *exact;
     } else {
       field = T(text);
     }

@@ -14,14 +14,18 @@ namespace polyplan::python {
 namespace {
 
 // A keyword argument as the option text the registry parses: True/False, an int, a float (its
-// shortest round-trip text), a Fraction (as a float), a string, or for a point option a pair of
-// numbers ("x,y"); nothing else.
+// shortest round-trip text), a Fraction (as a float; for an exact number option, as it is, as is
+// a Decimal), a string, or for a point option a pair of numbers ("x,y"); nothing else.
 std::string option_text(const std::string& owner, const OptionInfo& option, const std::string& key, py::handle value) {
   const std::string where = owner + ": option " + key;
   if (is_boolean(value)) return py::bool_(py::reinterpret_borrow<py::object>(value)) ? "true" : "false";
   if (py::isinstance<py::str>(value)) return text_of(value, where);
   // An integer as the exact reader takes it: within its digits (str() itself refuses 4300 digits).
   if (PyIndex_Check(value.ptr()) && !py::isinstance<py::array>(value)) return to_string(exact_number(value, where));
+  const bool exact_option = option.kind.rfind("exact number", 0) == 0;
+  if (exact_option && (py::isinstance(value, py::module_::import("numbers").attr("Rational")) ||
+                       py::isinstance(value, py::module_::import("decimal").attr("Decimal"))))
+    return to_string(exact_number(value, where));
   if (PyFloat_Check(value.ptr()) || py::isinstance(value, py::module_::import("numbers").attr("Real")))
     return py::repr(py::float_(py::reinterpret_borrow<py::object>(value)));
   if (option.kind.rfind("point", 0) == 0 && (PySequence_Check(value.ptr()) || py::isinstance<py::array>(value))) {

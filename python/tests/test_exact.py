@@ -84,3 +84,14 @@ def test_a_rotating_plan_has_exact_rotations():
         assert r.found, r.why_not
         for x, y, s, c in r.path_exact:
             assert s * s + c * c == 1  # a rational point of the unit circle
+
+
+def test_a_tether_length_is_compared_exactly():
+    # The tether bends round the apex (0.51, 0.68): 0.85 + 0.85 = 1.7 exactly (doubles: 1.7000000000000002).
+    w = polyplan.World.from_dict({"bounds": [-0.5, -1, 1.5, 1.5],
+                                  "obstacles": [[["0.51", "0.68"], ["0.31", -1], ["0.71", -1]]],
+                                  "start": [0, 0], "goal": ["1.02", 0]})
+    for length, found in [(1.7, True), (Fraction(17, 10), True), (Decimal("1.7"), True),
+                          (Fraction(17, 10) - Fraction(1, 10**15), False), (1.699999999999999, False)]:
+        r = polyplan.planner("tether", w, tether_length=length).plan()
+        assert r.found == found, (length, r.why_not)

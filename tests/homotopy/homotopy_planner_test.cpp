@@ -7,6 +7,8 @@
 #include <polyplan/homotopy/homotopy_facts.hpp>
 #include <polyplan/registry/registry.hpp>
 
+#include "world_fixtures.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,6 +72,42 @@ TEST(HomotopyPlanner, FewerClassesWithinMaxLength) {
   const auto none =
       planners<TranslatingRobot>().find("homotopy")->make(cspace, {{"max-length", "5"}})->plan(world.queries[0]);
   EXPECT_EQ(none.status, PlanStatus::not_found);
+}
+
+// A thin diamond between (0, 0) and (1.02, 0): over its top apex the path is 0.85 + 0.85 = 1.7
+// long, under its bottom apex longer or shorter by 1.6e-16 — the same double, 1.7000000000000002,
+// both ways. The classes come in their exact order, and max-length = 1.7 admits the 1.7 exactly.
+World diamond(const char* top, const char* bottom) {
+  return test::world_from(std::string(R"({"bounds": [-0.5, -1, 1.5, 1], "obstacles": [[[0.51, )") + top +
+                          "], [0.41, 0], [0.51, -" + bottom + R"(], [0.61, 0]]], "start": [0, 0], "goal": [1.02, 0]})");
+}
+
+TEST(HomotopyPlanner, ClassesWhoseLengthsDoublesTieComeInTheirExactOrder) {
+  for (const bool top_shorter : {true, false}) {
+    const World world = top_shorter ? diamond("0.68", "0.6800000000000001") : diamond("0.6800000000000001", "0.68");
+    const CSpace cspace(world);
+    const auto report = classes(cspace, world.queries[0], "2");
+    ASSERT_EQ(report.paths.size(), 2u) << report.why_not;
+    ASSERT_EQ(report.paths[0].path.size(), 3u);
+    EXPECT_EQ(sgn(report.paths[0].path[1].y), top_shorter ? 1 : -1) << "the shorter class first";
+    EXPECT_EQ(report.paths[0].length, report.paths[1].length) << "doubles tie";
+  }
+}
+
+TEST(HomotopyPlanner, MaxLengthIsComparedExactly) {
+  const World world = diamond("0.68", "0.6800000000000001");
+  const CSpace cspace(world);
+  const auto within = [&](const std::string& max) {
+    return planners<TranslatingRobot>()
+        .find("homotopy")
+        ->make(cspace, {{"classes", "2"}, {"max-length", max}})
+        ->plan(world.queries[0]);
+  };
+  EXPECT_EQ(within("1.7").paths.size(), 1u);
+  EXPECT_EQ(within("1.700000000000001").paths.size(), 2u);
+  const auto none = within("1.699999999999999");
+  EXPECT_EQ(none.status, PlanStatus::not_found);
+  EXPECT_NE(none.why_not.find("max-length (1.699999999999999)"), std::string::npos) << none.why_not;
 }
 
 }  // namespace

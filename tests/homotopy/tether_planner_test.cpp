@@ -12,6 +12,8 @@
 #include <polyplan/plan/fact_points.hpp>
 #include <polyplan/registry/registry.hpp>
 
+#include "world_fixtures.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -89,6 +91,25 @@ TEST(TetherPlanner, ATetherExactlyLongEnoughIsAllowed) {
   const auto shorter = tethered(cspace, q, "15.99");
   EXPECT_EQ(shorter.status, PlanStatus::no_path) << shorter.why_not;
   EXPECT_FALSE(shorter.found);
+}
+
+// A triangle whose apex (0.51, 0.68) the tether from the base (0, 0) to the goal (1.02, 0) bends
+// round: 0.85 + 0.85 = 1.7 exactly, which doubles make 1.7000000000000002. L = 1.7 lets the robot
+// reach the goal; 1e-15 less does not, 1e-15 more does.
+TEST(TetherPlanner, ATetherExactlyLongEnoughIsAllowedWhereDoublesMakeItLonger) {
+  const World world = test::world_from(R"({"bounds": [-0.5, -1, 1.5, 1.5],
+    "obstacles": [[[0.51, 0.68], [0.31, -1], [0.71, -1]]], "start": [0, 0], "goal": [1.02, 0]})");
+  const CSpace cspace(world);
+  const Query& q = world.queries[0];
+  const auto exact = tethered(cspace, q, "1.7");
+  ASSERT_TRUE(exact.found) << exact.why_not;
+  EXPECT_EQ(exact.path,
+            (std::vector<ExactPoint>{{0, 0}, {Rational(51, 100), Rational(17, 25)}, {Rational(51, 50), 0}}));
+  EXPECT_DOUBLE_EQ(exact.facts.at(TetherFacts::length), 1.7);
+  EXPECT_TRUE(tethered(cspace, q, "1.700000000000001").found);
+  const auto shorter = tethered(cspace, q, "1.699999999999999");
+  EXPECT_EQ(shorter.status, PlanStatus::no_path) << shorter.why_not;
+  EXPECT_NE(shorter.why_not.find("tether-length (1.699999999999999)"), std::string::npos) << shorter.why_not;
 }
 
 TEST(TetherPlanner, ATetherShorterThanEveryClassIsNoPath) {
