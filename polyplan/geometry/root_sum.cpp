@@ -97,6 +97,13 @@ Rational squared_distance(const ExactPoint& a, const ExactPoint& b) {
 
 LengthBounds distance_bounds(const ExactPoint& a, const ExactPoint& b) { return root_bounds(squared_distance(a, b)); }
 
+LengthBounds distance_bounds(double ax, double ay, double bx, double by) {
+  const double length = std::hypot(ax - bx, ay - by);
+  const double largest = std::max({std::abs(ax), std::abs(ay), std::abs(bx), std::abs(by)});
+  const double slack = std::ldexp(length + largest, -49);
+  return {std::max(0.0, std::nextafter(length - slack, -infinity)), std::nextafter(length + slack, infinity)};
+}
+
 RootSum RootSum::polyline(const std::vector<ExactPoint>& points) {
   RootSum sum;
   for (std::size_t i = 1; i < points.size(); ++i) sum.add(squared_distance(points[i - 1], points[i]));

@@ -32,6 +32,15 @@ int compare_bounds(const LengthBounds& a, const LengthBounds& b);
 Rational squared_distance(const ExactPoint& a, const ExactPoint& b);
 LengthBounds distance_bounds(const ExactPoint& a, const ExactPoint& b);
 
+// Bounds on the distance between two exact points from the doubles nearest their coordinates (a
+// search's), touching no exact number: ℓ = std::hypot of the doubles' differences, widened by
+// 2^-49 (ℓ + M), M the largest coordinate's magnitude. The error analysis (u = 2^-53): each
+// double is within uM of its coordinate; each difference of doubles, rounded, within
+// 2uM + u(|d| + 2uM) of the exact difference d; the error vector's norm is at most √2 times that;
+// std::hypot adds at most one unit in the last place (2uℓ; glibc's documented bound): in all
+// below 3uM + 4uℓ, and the slack of 16u covers the rounding of the widening itself.
+LengthBounds distance_bounds(double ax, double ay, double bx, double by);
+
 // A sum of square roots of rationals ≥ 0, Σ √squares[i], and bounds on it.
 class RootSum {
  public:

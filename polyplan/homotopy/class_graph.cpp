@@ -45,47 +45,16 @@ std::size_t ClassGraph::add_point(const ExactPoint& p) {
 ClassSearch::ClassSearch(const ClassGraph& graph, std::size_t source, Word word, std::optional<Rational> max_length,
                          std::size_t max_states, Admit admit)
     : graph_(&graph), max_length_(std::move(max_length)), max_states_(max_states), admit_(std::move(admit)) {
-  offer(source, std::move(word), Way{source, std::nullopt, {}});
+  offer(source, std::move(word), ChainLengths::source(graph.position(source)));
 }
 
-RootSum ClassSearch::exact(const Way& way) const {
-  RootSum sum;
-  std::size_t at = way.vertex;
-  for (std::optional<std::size_t> p = way.parent; p; p = states_[*p].parent) {
-    const std::size_t from = states_[*p].vertex;
-    sum.add(squared_distance(graph_->position(from), graph_->position(at)));
-    at = from;
-  }
-  return sum;
-}
-
-RootSum ClassSearch::exact_distance(std::size_t id) const { return exact(way_to(id)); }
-
-int ClassSearch::compare(const Way& a, const Way& b) const {
-  if (const int sign = compare_bounds(a.bounds, b.bounds)) return sign;
-  return polyplan::compare(exact(a), exact(b));
-}
-
-int ClassSearch::compare(const Way& a, const Rational& c) const {
-  if (const int sign = compare_bounds(a.bounds, rational_bounds(c))) return sign;
-  return polyplan::compare(exact(a), c);
-}
-
-bool ClassSearch::Shorter::operator()(std::size_t a, std::size_t b) const {
-  const int sign = search->compare(search->way_to(a), search->way_to(b));
-  return sign != 0 ? sign < 0 : a < b;
-}
-
-void ClassSearch::offer(std::size_t vertex, Word word, const Way& way) {
-  if ((max_length_ && compare(way, *max_length_) > 0) || (admit_ && !admit_(vertex, word))) return;
+void ClassSearch::offer(std::size_t vertex, Word word, const ChainLengths::Way& way) {
+  if ((max_length_ && chains_.compare(way, *max_length_) > 0) || (admit_ && !admit_(vertex, word))) return;
   auto key = std::make_pair(vertex, word);
   const auto found = ids_.find(key);
   if (found != ids_.end()) {
     const std::size_t id = found->second;
-    if (settled_[id] || compare(way, way_to(id)) >= 0) return;
-    open_.erase(id);  // before its length changes, which orders it
-    states_[id].distance = way.bounds, states_[id].parent = way.parent;
-    open_.insert(id);
+    if (!chains_.closed(id) && chains_.compare(way, chains_.way_to(id)) < 0) chains_.shorten(id, way);
     return;
   }
   if (states_.size() >= max_states_ || letters_ + word.size() > kLettersPerState * max_states_) {
@@ -94,28 +63,25 @@ void ClassSearch::offer(std::size_t vertex, Word word, const Way& way) {
   }
   letters_ += word.size();
   ids_.emplace(std::move(key), states_.size());
-  states_.push_back({vertex, std::move(word), way.bounds, way.parent});
-  settled_.push_back(false);
-  open_.insert(states_.size() - 1);
+  states_.push_back({vertex, std::move(word)});
+  chains_.add(way);
 }
 
 std::optional<std::size_t> ClassSearch::next() {
-  if (open_.empty()) return std::nullopt;
-  const std::size_t id = *open_.begin();
-  open_.erase(open_.begin());
-  settled_[id] = true;
-  const State s = states_[id];  // a copy: offer() may grow states_
+  const auto id = chains_.close_shortest();
+  if (!id) return std::nullopt;
+  const State s = states_[*id];  // a copy: offer() may grow states_
   for (const ClassGraph::Arc& arc : graph_->arcs(s.vertex)) {
     Word word = s.word;
     multiply(word, arc.word);
-    offer(arc.to, std::move(word), Way{arc.to, id, s.distance + arc.length});
+    offer(arc.to, std::move(word), chains_.step(*id, graph_->position(arc.to), arc.length));
   }
   return id;
 }
 
 std::vector<std::size_t> ClassSearch::chain_to(std::size_t id) const {
   std::vector<std::size_t> chain;
-  for (std::optional<std::size_t> at = id; at; at = states_[*at].parent) chain.push_back(*at);
+  for (std::optional<std::size_t> at = id; at; at = chains_.parent(*at)) chain.push_back(*at);
   std::reverse(chain.begin(), chain.end());
   return chain;
 }

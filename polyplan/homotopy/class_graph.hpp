@@ -7,7 +7,7 @@
 // vertex in that class. Its lengths are sums of square roots, compared exactly
 // (geometry/root_sum.hpp): the order of the classes and a bound such as the tether's length are
 // decided as exactly as the geometry, ties included.
-#include <polyplan/geometry/root_sum.hpp>
+#include <polyplan/geometry/chain_lengths.hpp>
 #include <polyplan/homotopy/h_signature.hpp>
 
 #include <cstddef>
@@ -15,7 +15,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -64,22 +63,17 @@ class ClassSearch {
   struct State {
     std::size_t vertex;
     Word word;
-    LengthBounds distance;  // bounds on the length of the chain to it (exactly: exact_distance)
-    std::optional<std::size_t> parent;
   };
   using Admit = std::function<bool(std::size_t vertex, const Word& word)>;
 
   ClassSearch(const ClassGraph& graph, std::size_t source, Word word, std::optional<Rational> max_length,
               std::size_t max_states, Admit admit = {});
-  // The open set orders states by their lengths through a pointer to the search.
-  ClassSearch(const ClassSearch&) = delete;
-  ClassSearch& operator=(const ClassSearch&) = delete;
 
   // The next state settled (its id), or nullopt when none is left.
   std::optional<std::size_t> next();
   const State& state(std::size_t id) const { return states_[id]; }
-  // The exact length of the chain from the source to the state.
-  RootSum exact_distance(std::size_t id) const;
+  // The length of the chain from the source to the state, exactly.
+  RootSum exact_distance(std::size_t id) const { return chains_.exact(chains_.way_to(id)); }
   // The states from the source to the state, and their vertices' positions.
   std::vector<std::size_t> chain_to(std::size_t id) const;
   std::vector<ExactPoint> path_to(std::size_t id) const;
@@ -90,25 +84,7 @@ class ClassSearch {
   bool truncated() const { return truncated_; }
 
  private:
-  // A way to `vertex`: the chain to `parent` and one arc on; its length's bounds.
-  struct Way {
-    std::size_t vertex;
-    std::optional<std::size_t> parent;
-    LengthBounds bounds;
-  };
-  // The sign of a's length − b's (bounds first, then exactly), and of a's length − c.
-  int compare(const Way& a, const Way& b) const;
-  int compare(const Way& a, const Rational& c) const;
-  RootSum exact(const Way& way) const;
-  Way way_to(std::size_t id) const { return {states_[id].vertex, states_[id].parent, states_[id].distance}; }
-  void offer(std::size_t vertex, Word word, const Way& way);
-
-  // Open states, shortest first (equal lengths: the older state first).
-  struct Shorter {
-    const ClassSearch* search;
-    bool operator()(std::size_t a, std::size_t b) const;
-  };
-
+  void offer(std::size_t vertex, Word word, const ChainLengths::Way& way);
   const ClassGraph* graph_;
   std::optional<Rational> max_length_;
   std::size_t max_states_;
@@ -116,9 +92,8 @@ class ClassSearch {
   Admit admit_;
   bool truncated_ = false;
   std::vector<State> states_;
-  std::vector<bool> settled_;
+  ChainLengths chains_;  // the states' lengths, the same ids
   std::map<std::pair<std::size_t, Word>, std::size_t> ids_;
-  std::set<std::size_t, Shorter> open_{Shorter{this}};
 };
 
 }  // namespace polyplan

@@ -243,7 +243,7 @@ class OptionTable {
     if constexpr (std::is_same_v<T, bool>) return "true or false";
     else if constexpr (std::is_integral_v<T>) return "whole number in " + range->text();
     else if constexpr (std::is_floating_point_v<T>) return "number in " + range->text();
-    else if constexpr (std::is_same_v<T, Rational>) return "exact number in " + range->text();
+    else if constexpr (std::is_same_v<T, Rational>) return "number in " + range->text() + " (exact)";
     else return "text";
   }
 

@@ -241,8 +241,9 @@ PlanReport<ExactPoint> TangentWalk<S>::plan(const Query& q, const QueryOptions& 
   const P goal = B::point(q.goal);
   BasicWalk<P> walk(B::point(q.start));
   P at = walk.path.front();
-  double travelled = 0;
-  std::optional<N> record;  // d_followed, squared
+  double travelled = 0;         // the walk's length, to print and to cut at max-distance
+  typename S::Travel travel{};  // the same, to decide max-distance (exactly on polygons)
+  std::optional<N> record;      // d_followed, squared
   std::size_t stops = 0;
   std::vector<std::vector<ExactPoint>> sensed;
   const auto followed = [&] { return std::sqrt(measure(*record)); };
@@ -259,7 +260,7 @@ PlanReport<ExactPoint> TangentWalk<S>::plan(const Query& q, const QueryOptions& 
   const auto out_of_distance = [&](const std::string& doing) {
     facts.set(QueryFacts::stopped_by, "distance limit");
     const std::string why_followed = record ? ", d_followed " + detail::show_number(followed()) : "";
-    report.fail(PlanStatus::limit, "the walk reached max-distance (" + detail::show_number(options.max_distance) +
+    report.fail(PlanStatus::limit, "the walk reached max-distance (" + detail::show_exact(options.max_distance) +
                                        ") at " + text(at) + doing + why_followed);
     return finish(false);
   };
@@ -282,13 +283,14 @@ PlanReport<ExactPoint> TangentWalk<S>::plan(const Query& q, const QueryOptions& 
     derived = computed;
     if (!along) came_in = P{p.x - at.x, p.y - at.y};
     const double d = walked(at, p, along);
-    if (travelled + d > options.max_distance) {
-      at = senses.cut(at, p, (options.max_distance - travelled) / d, along);
+    if (S::beyond(travel, at, p, d, options.max_distance)) {
+      at = senses.cut(at, p, std::clamp((to_double(options.max_distance) - travelled) / d, 0.0, 1.0), along);
       if (along) walk.follow(at, along->edge, along->forward);
       else walk.to(at);
       return false;
     }
     travelled += d;
+    S::extend(travel, at, p, d);
     if (along) walk.follow(p, along->edge, along->forward);
     else walk.to(p);
     at = p;

@@ -42,7 +42,7 @@ namespace polyplan {
 
 struct TangentBugOptions {
   std::string sensor_range = "inf";  // a number >= 0, or inf
-  double max_distance = 10000;       // the walk's length before status limit
+  Rational max_distance = 10000;     // the walk's length before status limit (exactly, on polygon worlds)
   std::size_t max_stops = 10000;     // stops (each a sensing) before status limit
 };
 

@@ -8,6 +8,7 @@
 #include <polyplan/plan/plan_trace.hpp>
 #include <polyplan/plan/query_tally.hpp>
 #include <polyplan/plan/stopwatch.hpp>
+#include <polyplan/search/exact_shortest_path.hpp>
 #include <polyplan/search/shortest_path.hpp>
 
 #include <algorithm>
@@ -164,6 +165,9 @@ struct VisibilityGraph::Impl {
     connect(start_slot, query.start);
     connect(goal_slot, query.goal);
     auto result = shortest_path(roadmap, start_slot, goal_slot, searching, workspace);
+    // A* and Dijkstra call their path shortest: the exact pass makes it so where doubles tie.
+    if (result.found && (searching.algorithm == Search::astar || searching.algorithm == Search::dijkstra))
+      result.path = exactly_shortest_path(roadmap, result.path);
     for (RoadmapVertexId v : result.expanded_order) expanded.push_back(roadmap[v].exact);
     boost::clear_vertex(start_slot, roadmap);
     boost::clear_vertex(goal_slot, roadmap);

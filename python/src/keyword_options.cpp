@@ -22,7 +22,7 @@ std::string option_text(const std::string& owner, const OptionInfo& option, cons
   if (py::isinstance<py::str>(value)) return text_of(value, where);
   // An integer as the exact reader takes it: within its digits (str() itself refuses 4300 digits).
   if (PyIndex_Check(value.ptr()) && !py::isinstance<py::array>(value)) return to_string(exact_number(value, where));
-  const bool exact_option = option.kind.rfind("exact number", 0) == 0;
+  const bool exact_option = option.kind.find(" (exact)") != std::string::npos;
   if (exact_option && (py::isinstance(value, py::module_::import("numbers").attr("Rational")) ||
                        py::isinstance(value, py::module_::import("decimal").attr("Decimal"))))
     return to_string(exact_number(value, where));

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace polyplan {
 namespace {
@@ -57,6 +58,25 @@ TEST(RootSum, BoundsHoldTheValue) {
   EXPECT_EQ(std::nextafter(two.lower, 2.0), two.upper);
   EXPECT_EQ(root_bounds(4).lower, 2);
   EXPECT_EQ(root_bounds(4).upper, 2);
+}
+
+// Bounds from the doubles nearest the coordinates hold the exact distance: points with decimal
+// coordinates far from the origin and close together, where the rounding of the coordinates
+// dominates.
+TEST(RootSum, BoundsFromRoundedCoordinatesHoldTheExactDistance) {
+  std::mt19937_64 random(7);
+  std::uniform_int_distribution<long> digits(-999999999, 999999999);
+  for (int i = 0; i < 20000; ++i) {
+    const int scale = i % 3 == 0 ? 1 : (i % 3 == 1 ? 1000 : 1000000000);
+    const Rational offset(digits(random), 1000);  // far from the origin: 1e6 or so
+    const ExactPoint a{offset + Rational(digits(random), scale * 1000L), Rational(digits(random), scale)};
+    const ExactPoint b{a.x + Rational(digits(random) % 1000, scale * 1000L),
+                       a.y + Rational(digits(random) % 1000, scale)};
+    const LengthBounds bounds = distance_bounds(to_double(a.x), to_double(a.y), to_double(b.x), to_double(b.y));
+    const Rational square = squared_distance(a, b);
+    ASSERT_LE(Rational(bounds.lower) * Rational(bounds.lower), square) << i;
+    ASSERT_GE(Rational(bounds.upper) * Rational(bounds.upper), square) << i;
+  }
 }
 
 }  // namespace

@@ -141,6 +141,28 @@ TEST(TangentBug, AGoalInsideAClosedRingIsNoPath) {
   }
 }
 
+// Round the apex (0.51, 0.68) of a triangle the walk is 0.85 + 0.85 = 1.7 long exactly, which
+// doubles make 1.7000000000000002: max-distance = 1.7 lets it arrive, 1e-15 less stops it.
+TEST(TangentBug, MaxDistanceIsComparedExactly) {
+  const World world = test::world_from(R"({"bounds": [-0.5, -1, 1.5, 1.5],
+    "obstacles": [[[0.51, 0.68], [0.31, -1], [0.71, -1]]], "start": [0, 0], "goal": [1.02, 0]})");
+  const CSpace cspace(world);
+  const auto walk = [&](const char* most) {
+    return planners<TranslatingRobot>()
+        .find("tangent-bug")
+        ->make(cspace, {{"max-distance", most}})
+        ->plan(world.queries[0]);
+  };
+  const auto exact = walk("1.7");
+  ASSERT_TRUE(exact.found) << exact.why_not;
+  EXPECT_EQ(exact.path,
+            (std::vector<ExactPoint>{{0, 0}, {Rational(51, 100), Rational(17, 25)}, {Rational(51, 50), 0}}));
+  EXPECT_TRUE(walk("1.700000000000001").found);
+  const auto short_of = walk("1.699999999999999");
+  EXPECT_EQ(short_of.status, PlanStatus::limit) << short_of.why_not;
+  EXPECT_NE(short_of.why_not.find("max-distance (1.699999999999999)"), std::string::npos) << short_of.why_not;
+}
+
 TEST(TangentBug, ABadSensorRangeIsNamed) {
   const World world = shipped("u_trap");
   const CSpace cspace(world);

@@ -2,6 +2,7 @@
 // boundary vertices joined when check_path accepts the segment, then Dijkstra), on the exactness
 // worlds, and on the MovingAI maps against Polyanya's Euclidean lengths (data/movingai).
 #include <polyplan/geometry/path_check.hpp>
+#include <polyplan/geometry/root_sum.hpp>
 #include <polyplan/io/movingai_map.hpp>
 #include <polyplan/io/movingai_scenario.hpp>
 #include <polyplan/io/world_reader.hpp>
@@ -373,4 +374,31 @@ TEST(VisibilityGraph, WithoutBoundsAQueryBeyondTheFrameIsFramedAnew) {
   const Report near = graph.plan(between(pt("1", "5"), pt("9", "5")));
   ASSERT_TRUE(near.found);
   EXPECT_NEAR(near.length, 2 * std::sqrt(10.0) + 2, 1e-12);
+}
+
+// A thin diamond between (0, 0) and (1.02, 0): over the apex (0.51, 0.68) the path is 0.85 + 0.85
+// = 1.7, under the other apex 1.6e-16 longer or shorter — the same sum of doubles, so a search in
+// doubles takes either. A* and Dijkstra return the exactly shorter; at an exact tie, a shortest.
+TEST(VisibilityGraph, PathsThatDoublesTieAreRankedExactly) {
+  const auto diamond = [](const char* top, const char* bottom) {
+    return world_from(std::string(R"({"bounds": [-0.5, -1, 1.5, 1], "obstacles": [[[0.51, )") + top +
+                      "], [0.41, 0], [0.51, -" + bottom + R"(], [0.61, 0]]], "start": [0, 0], "goal": [1.02, 0]})");
+  };
+  for (const char* search : {"astar", "dijkstra"}) {
+    for (const bool top_shorter : {true, false}) {
+      const World world = top_shorter ? diamond("0.68", "0.6800000000000001") : diamond("0.6800000000000001", "0.68");
+      const CSpace cspace(world);
+      SearchOptions options;
+      options.algorithm = *search_from_string(search);
+      const Report plan = VisibilityGraph(cspace, VisibilityKind::reduced, options).plan(world.queries[0]);
+      ASSERT_TRUE(plan.found) << search;
+      ASSERT_EQ(plan.path.size(), 3u);
+      EXPECT_EQ(sgn(plan.path[1].y), top_shorter ? 1 : -1) << search << ": the exactly shorter side";
+      EXPECT_EQ(compare(RootSum::polyline(plan.path), Rational(17, 10)), 0);
+    }
+    const World tie = diamond("0.68", "0.68");
+    const Report plan = VisibilityGraph(CSpace(tie), VisibilityKind::reduced).plan(tie.queries[0]);
+    ASSERT_TRUE(plan.found);
+    EXPECT_EQ(compare(RootSum::polyline(plan.path), Rational(17, 10)), 0);
+  }
 }

@@ -16,6 +16,7 @@
 //                  fractions of the way to the goal a few ulps within it.
 //
 // Only tangent_bug_planner.cpp and the two senses' units include this header (CORE, CGAL).
+#include <polyplan/geometry/root_sum.hpp>
 #include <polyplan/reactive/boundary_walk.hpp>
 #include <polyplan/reactive/detail/arc_boundary.hpp>
 #include <polyplan/reactive/visibility_region.hpp>
@@ -59,6 +60,22 @@ class PolygonSenses : public RangeSensor<Boundary> {
  public:
   PolygonSenses(const Boundary& boundary, double range);
 
+  // The walk's length so far, which decides max-distance: exactly, a sum of square roots, since
+  // every point of a polygon walk is rational (`walked`, its double, is not needed).
+  using Travel = RootSum;
+  static void extend(Travel& travel, const Point& a, const Point& b, double) {
+    travel.add(Boundary::squared_distance(a, b));
+  }
+  // Whether going on from a to b would take the walk beyond `most`: copied and summed exactly
+  // only where the bounds cannot tell.
+  static bool beyond(const Travel& travel, const Point& a, const Point& b, double, const Rational& most) {
+    const Rational square = Boundary::squared_distance(a, b);
+    if (const int sign = compare_bounds(travel.bounds() + root_bounds(square), rational_bounds(most))) return sign > 0;
+    Travel further = travel;
+    further.add(square);
+    return compare(further, most) > 0;
+  }
+
   // The points that may be discontinuities of the robot's sensed region at x, and whether one is
   // (sensed, seen, the sight running on past it): asked only of those a decision needs. `from_x`:
   // whether to include points computed from x (ArcSenses' touching points).
@@ -87,6 +104,14 @@ class PolygonSenses : public RangeSensor<Boundary> {
 class ArcSenses : public RangeSensor<ArcBoundary> {
  public:
   ArcSenses(const ArcBoundary& boundary, double range);
+
+  // The walk's length so far: an arc's length is not algebraic, so CORE cannot compare it; in
+  // doubles, as the walk measures its pieces (docs/exactness.md).
+  using Travel = double;
+  static void extend(Travel& travel, const AP&, const AP&, double walked) { travel += walked; }
+  static bool beyond(Travel travel, const AP&, const AP&, double walked, const Rational& most) {
+    return travel + walked > to_double(most);
+  }
 
   std::vector<Sighting<AP>> candidates(const AP& x, bool from_x) const;
   bool discontinuity(const AP& x, const AP& o) const;
