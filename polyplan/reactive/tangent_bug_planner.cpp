@@ -241,8 +241,7 @@ PlanReport<ExactPoint> TangentWalk<S>::plan(const Query& q, const QueryOptions& 
   const P goal = B::point(q.goal);
   BasicWalk<P> walk(B::point(q.start));
   P at = walk.path.front();
-  double travelled = 0;         // the walk's length, to print and to cut at max-distance
-  typename S::Travel travel{};  // the same, to decide max-distance (exactly on polygons)
+  typename S::Travel travel{};  // the walk's length, to decide max-distance (exactly on polygons)
   std::optional<N> record;      // d_followed, squared
   std::size_t stops = 0;
   std::vector<std::vector<ExactPoint>> sensed;
@@ -284,12 +283,12 @@ PlanReport<ExactPoint> TangentWalk<S>::plan(const Query& q, const QueryOptions& 
     if (!along) came_in = P{p.x - at.x, p.y - at.y};
     const double d = walked(at, p, along);
     if (S::beyond(travel, at, p, d, options.max_distance)) {
-      at = senses.cut(at, p, std::clamp((to_double(options.max_distance) - travelled) / d, 0.0, 1.0), along);
+      at = senses.cut(at, p, std::clamp((to_double(options.max_distance) - S::walked_so_far(travel)) / d, 0.0, 1.0),
+                      along);
       if (along) walk.follow(at, along->edge, along->forward);
       else walk.to(at);
       return false;
     }
-    travelled += d;
     S::extend(travel, at, p, d);
     if (along) walk.follow(p, along->edge, along->forward);
     else walk.to(p);

@@ -68,6 +68,7 @@ class PolygonSenses : public RangeSensor<Boundary> {
   }
   // Whether going on from a to b would take the walk beyond `most`: copied and summed exactly
   // only where the bounds cannot tell.
+  static double walked_so_far(const Travel& travel) { return travel.approximate(); }
   static bool beyond(const Travel& travel, const Point& a, const Point& b, double, const Rational& most) {
     const Rational square = Boundary::squared_distance(a, b);
     if (const int sign = compare_bounds(travel.bounds() + root_bounds(square), rational_bounds(most))) return sign > 0;
@@ -109,6 +110,7 @@ class ArcSenses : public RangeSensor<ArcBoundary> {
   // doubles, as the walk measures its pieces (docs/exactness.md).
   using Travel = double;
   static void extend(Travel& travel, const AP&, const AP&, double walked) { travel += walked; }
+  static double walked_so_far(Travel travel) { return travel; }
   static bool beyond(Travel travel, const AP&, const AP&, double walked, const Rational& most) {
     return travel + walked > to_double(most);
   }
